@@ -1,0 +1,71 @@
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "sweetspot/mass_properties.hpp"
+
+namespace sweetspot {
+
+// A uniform slice of an implement. Sections are listed butt to tip.
+struct Section {
+  double length_m = 0.0;          // [m], > 0
+  double mass_kg = 0.0;           // [kg], >= 0
+  std::optional<double> EI_N_m2;  // bending stiffness [N m^2], > 0; only the modes need it
+};
+
+// Measured industry specifications of a frame: they fix its rigid-body
+// properties but not its mass distribution.
+struct IndustrySpecs {
+  double length_m = 0.0;             // [m], > 0
+  double mass_kg = 0.0;              // [kg], > 0
+  double balance_from_butt_m = 0.0;  // [m], in (0, L)
+  double swingweight_kg_m2 = 0.0;    // [kg m^2] about the axis 10 cm from the butt
+};
+
+// An implement (racquet, bat, beam) from butt (x = 0) to tip (x = L): a frame
+// plus point masses. Immutable; every factory validates its arguments and throws
+// std::invalid_argument naming the argument and its value.
+class Implement {
+ public:
+  // Piecewise-uniform sections, butt to tip; a uniform beam is one section.
+  static Implement from_sections(std::vector<Section> sections,
+                                 std::vector<PointMass> point_masses = {});
+
+  // Cross (2004) Table I racquet: two halves of equal length, each uniform,
+  // head mass M1 and handle mass M2 with M1/M2 = head_to_handle_mass_ratio (> 0).
+  static Implement paper_racquet(double length_m, double mass_kg,
+                                 double head_to_handle_mass_ratio,
+                                 std::vector<PointMass> point_masses = {});
+
+  // Measured specs. The swingweight must be physically possible for a body of
+  // that length: M (B - 0.1)^2 < SW <= M (B - 0.1)^2 + M B (L - B).
+  static Implement from_specs(const IndustrySpecs& specs,
+                              std::vector<PointMass> point_masses = {});
+
+  double length_m() const { return length_m_; }
+
+  // Rigid-body properties of the frame alone (no point masses).
+  const MassProperties& frame_mass_properties() const { return frame_; }
+  // Rigid-body properties of frame plus point masses.
+  const MassProperties& mass_properties() const { return total_; }
+
+  // The mass distribution, butt to tip; empty when built from specs.
+  const std::vector<Section>& sections() const { return sections_; }
+  const std::vector<PointMass>& point_masses() const { return point_masses_; }
+  bool has_mass_distribution() const { return !sections_.empty(); }
+
+ private:
+  Implement() = default;
+  double length_m_ = 0.0;
+  std::vector<Section> sections_;
+  std::vector<PointMass> point_masses_;
+  MassProperties frame_;
+  MassProperties total_;
+};
+
+// Mass properties of piecewise-uniform sections laid end to end from the butt.
+// Throws std::invalid_argument for an empty list, a length <= 0 or a mass < 0.
+MassProperties section_mass_properties(const std::vector<Section>& sections);
+
+}  // namespace sweetspot

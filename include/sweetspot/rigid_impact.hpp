@@ -1,0 +1,98 @@
+#pragma once
+
+// The rigid-body impact model of Cross (2004), "Center of percussion of
+// hand-held implements", Am. J. Phys. 72, 622. Every equation of the paper is
+// implemented by exactly one function here, which cites it.
+//
+// Conventions: positions x are measured along the implement from the butt
+// (handle end, x = 0) towards the tip. The wrist is at the butt. An impulse J
+// (or force F) acts at the impact point, transverse to the implement. A
+// position that the physics puts at infinity (an impact through the centre of
+// mass leaves the body translating without rotation) is std::nullopt.
+
+#include <optional>
+
+#include "sweetspot/mass_properties.hpp"
+
+namespace sweetspot {
+
+// Motion of a free body per unit transverse impulse at `impact_from_butt_m`.
+struct RigidKick {
+  double com_velocity_per_impulse = 0.0;  // V_cm / J  [m s^-1 per N s]
+  double angular_velocity_per_impulse = 0.0;  // omega / J [rad s^-1 per N s], positive when
+                                              // the tip side moves with the impulse
+};
+
+// Cross (2004) Eqs. (1)-(2): V_cm = J / M_b and omega = J b / I_0 with b the
+// impact's distance from the centre of mass (positive towards the tip).
+RigidKick free_kick(const MassProperties& body, double impact_from_butt_m);
+
+// Cross (2004) Eqs. (3)-(4): velocity of the point P per unit impulse,
+//   v / J = 1/M_b - A b / I_0,  A = x_cm - x_P  (P opposite the impact: A > 0).
+// [m s^-1 per N s]; zero when P is the rotation axis conjugate to the impact.
+double point_velocity_per_impulse(const MassProperties& body, double impact_from_butt_m,
+                                  double point_from_butt_m);
+
+// Cross (2004) Eq. (5): the conjugate of a point of a free body, b = I_0 / (A M_b).
+// For an axis at x, the centre of percussion; for an impact at x, the rotation
+// axis (the relation is symmetric). Returns its position from the butt [m],
+// std::nullopt when x is the centre of mass (conjugate at infinity).
+std::optional<double> free_conjugate_from_butt(const MassProperties& body, double from_butt_m);
+
+// Cross (2004) Eq. (6) generalised to any two observation points p and q:
+// v_p / v_q = (1 - M A_p b / I_0) / (1 - M A_q b / I_0) for an impact at x.
+// std::nullopt when v_q = 0 (the impact is at q's centre of percussion).
+std::optional<double> velocity_ratio(const MassProperties& body, double impact_from_butt_m,
+                                     double p_from_butt_m, double q_from_butt_m);
+
+// Cross (2004) Eq. (7): the forearm of mass M_F pivoting at the elbow acts at
+// the wrist as the equivalent mass M_e = M_F / 3 [kg].
+double forearm_equivalent_mass(double forearm_mass_kg);
+
+// Cross (2004) Eq. (13): the centre of percussion of the hand-held implement,
+// for which the wrist force vanishes: b = I_cm / (M h), returned as h + b from the
+// butt [m]. `system` is implement plus hand (with_point_mass), whose centre of
+// mass h must be > 0. std::nullopt when h = 0.
+std::optional<double> hand_held_cop_from_butt(const MassProperties& system);
+
+// Cross (2004) Eq. (11): F_w / F = (M b h - I_cm) / (M h^2 + I_cm (1 + M / M_e)),
+// with M, I_cm, h of implement plus hand and b = x - h. Evaluated as
+// M_e M h (x - x_cop) / (M_e M h^2 + I_cm (M_e + M)), which is exactly zero for
+// an impact at the centre of percussion and finite for every M_e >= 0
+// (M_e = 0: no forearm, no force). Positive: the wrist is pushed along the
+// impulse (impacts tip-side of the COP). Dimensionless.
+double wrist_force_ratio(const MassProperties& system, double forearm_equivalent_mass_kg,
+                         double impact_from_butt_m);
+
+// Cross (2004) Eq. (12): the rotation axis of the hand-held implement,
+//   A = (I_cm + M_e h (h + b)) / (M b + M_e (h + b)),
+// returned as s = h - A, its position from the butt [m] (negative: beyond the
+// butt, towards the elbow). With M_e = 0 it is the free axis of implement plus
+// hand. std::nullopt when the denominator vanishes (pure translation).
+std::optional<double> hand_held_rotation_axis_from_butt(const MassProperties& system,
+                                                        double forearm_equivalent_mass_kg,
+                                                        double impact_from_butt_m);
+
+// Cross (2004) Eq. (12) solved for b: the impact point that makes the hand-held
+// implement rotate about `axis_from_butt_m` (the paper's b = -0.77 m for an axis
+// 16 cm from the handle end). Returns the impact position from the butt [m],
+// std::nullopt when no impact gives that axis.
+std::optional<double> hand_held_impact_for_axis(const MassProperties& system,
+                                                double forearm_equivalent_mass_kg,
+                                                double axis_from_butt_m);
+
+// Cross (2004) Eq. (17): effective mass of the implement at the impact point,
+// M_eff = M_b / (1 + M_b b^2 / I_cm) [kg]; M_eff <= M_b, equal at the centre of mass.
+double effective_mass(const MassProperties& body, double impact_from_butt_m);
+
+// Cross (2004) Eq. (16): apparent coefficient of restitution
+// e_A = (e M_eff - m) / (M_eff + m), the ball's rebound speed over its incident
+// speed when the implement is initially at rest. In (-1, 1].
+double apparent_cor(double cor, double effective_mass_kg, double ball_mass_kg);
+
+// Cross (2004) Eq. (15): peak of a half-sine force F0 sin(pi t / T) carrying the
+// impulse m v1 (1 + e_A): F0 = (1 + e_A) pi m v1 / (2 T) [N].
+double peak_impact_force(double ball_mass_kg, double ball_speed_m_s, double apparent_cor,
+                         double impact_duration_s);
+
+}  // namespace sweetspot

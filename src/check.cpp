@@ -1,0 +1,55 @@
+#include "check.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <stdexcept>
+
+namespace sweetspot::detail {
+
+std::string format_number(double value) {
+  if (std::isnan(value)) return "nan";
+  if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
+  char buffer[32];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+  return std::string(buffer, result.ptr);
+}
+
+namespace {
+[[noreturn]] void fail(std::string_view name, const std::string& expected, double value,
+                       std::string_view unit) {
+  std::string message(name);
+  message += ": must be " + expected;
+  message += ", got " + format_number(value);
+  if (!unit.empty() && std::isfinite(value)) message += " " + std::string(unit);
+  throw std::invalid_argument(message);
+}
+}  // namespace
+
+void require_finite(std::string_view name, double value) {
+  if (!std::isfinite(value)) fail(name, "a finite number", value, "");
+}
+
+void require_positive(std::string_view name, double value, std::string_view unit) {
+  if (!std::isfinite(value) || value <= 0.0) {
+    fail(name, "> 0" + (unit.empty() ? "" : " " + std::string(unit)), value, unit);
+  }
+}
+
+void require_at_least(std::string_view name, double value, double min, std::string_view unit) {
+  if (!std::isfinite(value) || value < min) {
+    fail(name, ">= " + format_number(min) + (unit.empty() ? "" : " " + std::string(unit)), value,
+         unit);
+  }
+}
+
+void require_in_range(std::string_view name, double value, double min, double max,
+                      std::string_view unit) {
+  if (!std::isfinite(value) || value < min || value > max) {
+    fail(name,
+         "in [" + format_number(min) + ", " + format_number(max) + "]" +
+             (unit.empty() ? "" : " " + std::string(unit)),
+         value, unit);
+  }
+}
+
+}  // namespace sweetspot::detail

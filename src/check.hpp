@@ -1,0 +1,20 @@
+#pragma once
+
+// Argument checks shared by the physics core. Each throws std::invalid_argument
+// with a message that names the argument, what was expected and the value.
+
+#include <string>
+#include <string_view>
+
+namespace sweetspot::detail {
+
+// Shortest round-trip text of a double ("0.25", "1e-09", "inf").
+std::string format_number(double value);
+
+void require_finite(std::string_view name, double value);
+void require_positive(std::string_view name, double value, std::string_view unit);
+void require_at_least(std::string_view name, double value, double min, std::string_view unit);
+void require_in_range(std::string_view name, double value, double min, double max,
+                      std::string_view unit);
+
+}  // namespace sweetspot::detail

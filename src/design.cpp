@@ -1,0 +1,31 @@
+#include "sweetspot/design.hpp"
+
+#include <stdexcept>
+
+#include "check.hpp"
+
+namespace sweetspot {
+
+void validate(const Design& d) {
+  const double L = d.implement.length_m();
+  detail::require_in_range("frame/cor", d.cor, 0.0, 1.0, "");
+  detail::require_positive("strings/impact_duration_s", d.impact_duration_s, "s");
+  detail::require_at_least("hand/mass_kg", d.hand.mass_kg, 0.0, "kg");
+  detail::require_in_range("hand/center_from_butt_m", d.hand.center_from_butt_m, 0.0, L, "m");
+  detail::require_at_least("forearm/equivalent_mass_kg", d.forearm_equivalent_mass_kg, 0.0, "kg");
+  detail::require_positive("ball/mass_kg", d.ball.mass_kg, "kg");
+  detail::require_positive("ball/speed_m_s", d.ball.speed_m_s, "m/s");
+  detail::require_in_range("impact/from_butt_m", d.impact_from_butt_m, 0.0, L, "m");
+  if (!(hand_held_system(d).com_from_butt_m > 0.0)) {
+    throw std::invalid_argument(
+        "hand/center_from_butt_m: implement and hand have all their mass at the butt; the wrist "
+        "force (Cross 2004 Eq. 11) needs a centre of mass beyond the wrist");
+  }
+}
+
+MassProperties hand_held_system(const Design& d) {
+  return with_point_mass(d.implement.mass_properties(),
+                         PointMass{d.hand.center_from_butt_m, d.hand.mass_kg});
+}
+
+}  // namespace sweetspot

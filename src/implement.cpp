@@ -1,0 +1,121 @@
+#include "sweetspot/implement.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "check.hpp"
+
+namespace sweetspot {
+namespace {
+
+// Argument names are relative JSON pointers so that the JSON layer can prefix
+// the path of the implement object and report exactly where the value was.
+std::string indexed(std::string_view list, std::size_t index, std::string_view field) {
+  return std::string(list) + "/" + std::to_string(index) + "/" + std::string(field);
+}
+
+void validate_point_masses(const std::vector<PointMass>& point_masses, double length_m) {
+  for (std::size_t i = 0; i < point_masses.size(); ++i) {
+    detail::require_in_range(indexed("point_masses", i, "from_butt_m"),
+                             point_masses[i].from_butt_m, 0.0, length_m, "m");
+    detail::require_at_least(indexed("point_masses", i, "mass_kg"), point_masses[i].mass_kg, 0.0,
+                             "kg");
+  }
+}
+
+MassProperties add_all(MassProperties body, const std::vector<PointMass>& point_masses) {
+  for (const PointMass& point : point_masses) body = with_point_mass(body, point);
+  return body;
+}
+
+}  // namespace
+
+MassProperties section_mass_properties(const std::vector<Section>& sections) {
+  if (sections.empty()) throw std::invalid_argument("sections: must list at least one section");
+  double mass = 0.0;
+  double first_moment = 0.0;
+  double x_start = 0.0;
+  for (std::size_t i = 0; i < sections.size(); ++i) {
+    const Section& s = sections[i];
+    detail::require_positive(indexed("sections", i, "length_m"), s.length_m, "m");
+    detail::require_at_least(indexed("sections", i, "mass_kg"), s.mass_kg, 0.0, "kg");
+    if (s.EI_N_m2) detail::require_positive(indexed("sections", i, "EI_N_m2"), *s.EI_N_m2, "N m^2");
+    mass += s.mass_kg;
+    first_moment += s.mass_kg * (x_start + 0.5 * s.length_m);
+    x_start += s.length_m;
+  }
+  if (!(mass > 0.0)) {
+    throw std::invalid_argument("sections: total mass must be > 0 kg, got " +
+                                detail::format_number(mass) + " kg");
+  }
+  const double com = first_moment / mass;
+  double I_cm = 0.0;
+  x_start = 0.0;
+  for (const Section& s : sections) {
+    const double arm = x_start + 0.5 * s.length_m - com;
+    I_cm += s.mass_kg * (s.length_m * s.length_m / 12.0 + arm * arm);
+    x_start += s.length_m;
+  }
+  return MassProperties{mass, com, I_cm};
+}
+
+Implement Implement::from_sections(std::vector<Section> sections,
+                                   std::vector<PointMass> point_masses) {
+  Implement implement;
+  implement.frame_ = section_mass_properties(sections);
+  for (const Section& s : sections) implement.length_m_ += s.length_m;
+  validate_point_masses(point_masses, implement.length_m_);
+  implement.total_ = add_all(implement.frame_, point_masses);
+  implement.sections_ = std::move(sections);
+  implement.point_masses_ = std::move(point_masses);
+  return implement;
+}
+
+Implement Implement::paper_racquet(double length_m, double mass_kg,
+                                   double head_to_handle_mass_ratio,
+                                   std::vector<PointMass> point_masses) {
+  detail::require_positive("length_m", length_m, "m");
+  detail::require_positive("mass_kg", mass_kg, "kg");
+  detail::require_positive("head_to_handle_mass_ratio", head_to_handle_mass_ratio, "");
+  // M1 / M2 = ratio and M1 + M2 = M  =>  M2 = M / (1 + ratio).
+  const double handle_kg = mass_kg / (1.0 + head_to_handle_mass_ratio);
+  const double head_kg = mass_kg - handle_kg;
+  return from_sections({Section{0.5 * length_m, handle_kg, {}}, Section{0.5 * length_m, head_kg, {}}},
+                       std::move(point_masses));
+}
+
+Implement Implement::from_specs(const IndustrySpecs& specs, std::vector<PointMass> point_masses) {
+  const double L = specs.length_m;
+  const double M = specs.mass_kg;
+  const double B = specs.balance_from_butt_m;
+  detail::require_positive("length_m", L, "m");
+  detail::require_positive("mass_kg", M, "kg");
+  if (!std::isfinite(B) || B <= 0.0 || B >= L) {
+    throw std::invalid_argument("balance_from_butt_m: must lie inside the length (0, " +
+                                detail::format_number(L) + ") m, got " + detail::format_number(B) +
+                                " m");
+  }
+  detail::require_positive("swingweight_kg_m2", specs.swingweight_kg_m2, "kg m^2");
+  // A body on [0, L] with its centre of mass at B has 0 < I_cm <= M B (L - B)
+  // (the upper bound puts all the mass at the two ends).
+  const double arm = B - kSwingweightAxisFromButt_m;
+  const double sw_min = M * arm * arm;
+  const double sw_max = sw_min + M * B * (L - B);
+  if (!(specs.swingweight_kg_m2 > sw_min) || specs.swingweight_kg_m2 > sw_max) {
+    throw std::invalid_argument(
+        "swingweight_kg_m2: must be in (" + detail::format_number(sw_min) + ", " +
+        detail::format_number(sw_max) + "] kg m^2 for this mass, balance and length, got " +
+        detail::format_number(specs.swingweight_kg_m2) + " kg m^2");
+  }
+  Implement implement;
+  implement.length_m_ = L;
+  implement.frame_ = from_swingweight(M, B, specs.swingweight_kg_m2);
+  validate_point_masses(point_masses, L);
+  implement.total_ = add_all(implement.frame_, point_masses);
+  implement.point_masses_ = std::move(point_masses);
+  return implement;
+}
+
+}  // namespace sweetspot

@@ -1,0 +1,99 @@
+#include "sweetspot/rigid_impact.hpp"
+
+#include <numbers>
+
+#include "check.hpp"
+
+namespace sweetspot {
+
+RigidKick free_kick(const MassProperties& body, double impact_from_butt_m) {
+  const double b = impact_from_butt_m - body.com_from_butt_m;
+  return RigidKick{1.0 / body.mass_kg, b / body.I_cm_kg_m2};  // Eqs. (1), (2)
+}
+
+double point_velocity_per_impulse(const MassProperties& body, double impact_from_butt_m,
+                                  double point_from_butt_m) {
+  const RigidKick kick = free_kick(body, impact_from_butt_m);
+  const double A = body.com_from_butt_m - point_from_butt_m;
+  return kick.com_velocity_per_impulse - A * kick.angular_velocity_per_impulse;  // Eq. (3)
+}
+
+std::optional<double> free_conjugate_from_butt(const MassProperties& body, double from_butt_m) {
+  const double A = body.com_from_butt_m - from_butt_m;
+  if (A == 0.0) return std::nullopt;
+  return body.com_from_butt_m + body.I_cm_kg_m2 / (A * body.mass_kg);  // Eq. (5)
+}
+
+std::optional<double> velocity_ratio(const MassProperties& body, double impact_from_butt_m,
+                                     double p_from_butt_m, double q_from_butt_m) {
+  const double v_q = point_velocity_per_impulse(body, impact_from_butt_m, q_from_butt_m);
+  if (v_q == 0.0) return std::nullopt;
+  return point_velocity_per_impulse(body, impact_from_butt_m, p_from_butt_m) / v_q;  // Eq. (6)
+}
+
+double forearm_equivalent_mass(double forearm_mass_kg) {
+  detail::require_at_least("forearm mass_kg", forearm_mass_kg, 0.0, "kg");
+  return forearm_mass_kg / 3.0;  // Eq. (7)
+}
+
+std::optional<double> hand_held_cop_from_butt(const MassProperties& system) {
+  const double h = system.com_from_butt_m;
+  if (h == 0.0) return std::nullopt;
+  return h + system.I_cm_kg_m2 / (system.mass_kg * h);  // Eq. (13)
+}
+
+double wrist_force_ratio(const MassProperties& system, double forearm_equivalent_mass_kg,
+                         double impact_from_butt_m) {
+  const double M = system.mass_kg;
+  const double I = system.I_cm_kg_m2;
+  const double h = system.com_from_butt_m;
+  const double Me = forearm_equivalent_mass_kg;
+  // Eq. (11) multiplied through by M_e, with M b h - I_cm = M h (x - x_cop) from Eq. (13).
+  const double x_cop = h + I / (M * h);
+  return Me * M * h * (impact_from_butt_m - x_cop) / (Me * M * h * h + I * (Me + M));
+}
+
+std::optional<double> hand_held_rotation_axis_from_butt(const MassProperties& system,
+                                                        double forearm_equivalent_mass_kg,
+                                                        double impact_from_butt_m) {
+  const double M = system.mass_kg;
+  const double h = system.com_from_butt_m;
+  const double Me = forearm_equivalent_mass_kg;
+  const double b = impact_from_butt_m - h;  // so h + b is the impact's distance from the wrist
+  const double denominator = M * b + Me * impact_from_butt_m;
+  if (denominator == 0.0) return std::nullopt;
+  const double A = (system.I_cm_kg_m2 + Me * h * impact_from_butt_m) / denominator;  // Eq. (12)
+  return h - A;
+}
+
+std::optional<double> hand_held_impact_for_axis(const MassProperties& system,
+                                                double forearm_equivalent_mass_kg,
+                                                double axis_from_butt_m) {
+  const double M = system.mass_kg;
+  const double h = system.com_from_butt_m;
+  const double Me = forearm_equivalent_mass_kg;
+  const double A = h - axis_from_butt_m;
+  // Eq. (12) is linear in b: b (A (M + M_e) - M_e h) = I_cm + M_e h (h - A).
+  const double coefficient = A * (M + Me) - Me * h;
+  if (coefficient == 0.0) return std::nullopt;
+  const double b = (system.I_cm_kg_m2 + Me * h * (h - A)) / coefficient;
+  return h + b;
+}
+
+double effective_mass(const MassProperties& body, double impact_from_butt_m) {
+  const double b = impact_from_butt_m - body.com_from_butt_m;
+  return body.mass_kg / (1.0 + body.mass_kg * b * b / body.I_cm_kg_m2);  // Eq. (17)
+}
+
+double apparent_cor(double cor, double effective_mass_kg, double ball_mass_kg) {
+  return (cor * effective_mass_kg - ball_mass_kg) / (effective_mass_kg + ball_mass_kg);  // (16)
+}
+
+double peak_impact_force(double ball_mass_kg, double ball_speed_m_s, double apparent_cor,
+                         double impact_duration_s) {
+  detail::require_positive("impact_duration_s", impact_duration_s, "s");
+  return (1.0 + apparent_cor) * std::numbers::pi * ball_mass_kg * ball_speed_m_s /
+         (2.0 * impact_duration_s);  // Eq. (15)
+}
+
+}  // namespace sweetspot

@@ -1,0 +1,104 @@
+// Cross (2004) Table I: the force on the strings F0 and on the arm F_w for a
+// 70 cm racquet struck 5 cm from the tip by a 57 g ball at 50 m/s.
+#include "sweetspot/evaluate.hpp"
+
+#include <cmath>
+
+#include <catch2/catch.hpp>
+
+namespace sweetspot {
+namespace {
+
+// The paper prints forces rounded to whole newtons.
+constexpr double kPrintedForceTolerance_N = 1.0;
+
+struct TableRow {
+  double mass_kg, ratio, cor, duration_ms, hand_kg, forearm_kg, F0_N, Fw_N;
+};
+
+// Transcribed from Table I of the paper.
+constexpr TableRow kTableI[] = {
+    {0.25, 0.8, 0.8, 4.0, 0.5, 0.5, 1117, 568}, {0.40, 0.8, 0.8, 4.0, 0.5, 0.5, 1341, 524},
+    {0.25, 1.2, 0.8, 4.0, 0.5, 0.5, 1198, 521}, {0.25, 0.8, 0.6, 4.0, 0.5, 0.5, 993, 504},
+    {0.25, 0.8, 0.8, 6.0, 0.5, 0.5, 744, 378},  {0.25, 0.8, 0.8, 4.0, 0.4, 0.5, 1117, 550},
+    {0.25, 0.8, 0.8, 4.0, 0.5, 0.4, 1117, 511}, {0.40, 1.2, 0.6, 6.0, 0.4, 0.4, 837, 250},
+};
+
+Design table_design(const TableRow& row) {
+  return Design{Implement::paper_racquet(0.70, row.mass_kg, row.ratio),
+                row.cor,
+                row.duration_ms / 1000.0,
+                Hand{row.hand_kg, 0.07},
+                row.forearm_kg,
+                Ball{0.057, 50.0},
+                0.70 - 0.05};
+}
+
+TEST_CASE("Table I: every row's F0 and F_w within 1 N of the printed values") {
+  int row_number = 1;
+  for (const TableRow& row : kTableI) {
+    INFO("Table I row " << row_number++);
+    const Evaluation e = evaluate(table_design(row));
+    CHECK(e.peak_impact_force_N == Approx(row.F0_N).margin(kPrintedForceTolerance_N));
+    CHECK(e.peak_wrist_force_N == Approx(row.Fw_N).margin(kPrintedForceTolerance_N));
+  }
+}
+
+TEST_CASE("The Table I top row has the largest arm force and the bottom row the smallest") {
+  double top = evaluate(table_design(kTableI[0])).peak_wrist_force_N;
+  double bottom = evaluate(table_design(kTableI[7])).peak_wrist_force_N;
+  for (const TableRow& row : kTableI) {
+    const double Fw = evaluate(table_design(row)).peak_wrist_force_N;
+    CHECK(Fw <= top);
+    CHECK(Fw >= bottom);
+  }
+}
+
+TEST_CASE("The hand and forearm change neither F0 nor the apparent COR") {
+  // Section VI: the ball leaves before the wave reflected off the hand returns.
+  Design a = table_design(kTableI[0]);
+  Design b = a;
+  b.hand = Hand{0.0, 0.07};
+  b.forearm_equivalent_mass_kg = 0.0;
+  CHECK(evaluate(a).peak_impact_force_N == evaluate(b).peak_impact_force_N);
+  CHECK(evaluate(b).peak_wrist_force_N == 0.0);
+}
+
+TEST_CASE("Evaluating at the hand-held COP gives zero wrist force and the wrist as the axis") {
+  Design d = table_design(kTableI[0]);
+  d.impact_from_butt_m = *evaluate(d).cop_hand_from_butt_m;
+  const Evaluation e = evaluate(d);
+  CHECK(e.peak_wrist_force_N == 0.0);
+  REQUIRE(e.rotation_axis_hand_from_butt_m);
+  CHECK(*e.rotation_axis_hand_from_butt_m == Approx(0.0).margin(1e-12));
+}
+
+TEST_CASE("An impact at the centre of mass of a free racquet reports the axis at infinity") {
+  Design d = table_design(kTableI[0]);
+  d.hand = Hand{0.0, 0.07};
+  d.forearm_equivalent_mass_kg = 0.0;
+  d.impact_from_butt_m = d.implement.mass_properties().com_from_butt_m;
+  const Evaluation e = evaluate(d);
+  CHECK_FALSE(e.rotation_axis_free_from_butt_m.has_value());
+  CHECK_FALSE(e.rotation_axis_hand_from_butt_m.has_value());
+  CHECK(e.effective_mass_kg == e.mass_kg);
+  CHECK(std::isfinite(e.peak_impact_force_N));
+}
+
+TEST_CASE("Out-of-range design values are refused with their JSON path") {
+  Design d = table_design(kTableI[0]);
+  d.cor = 1.5;
+  CHECK_THROWS_WITH(evaluate(d), Catch::StartsWith("frame/cor"));
+  d = table_design(kTableI[0]);
+  d.impact_from_butt_m = 0.71;
+  CHECK_THROWS_WITH(evaluate(d), Catch::StartsWith("impact/from_butt_m"));
+  d = table_design(kTableI[0]);
+  d.hand.mass_kg = -0.5;
+  CHECK_THROWS_WITH(evaluate(d), Catch::StartsWith("hand/mass_kg") && Catch::Contains("-0.5"));
+  d = table_design(kTableI[0]);
+  d.impact_duration_s = std::nan("");
+  CHECK_THROWS_WITH(evaluate(d), Catch::StartsWith("strings/impact_duration_s"));
+}
+
+}  // namespace
+}  // namespace sweetspot

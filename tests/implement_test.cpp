@@ -1,0 +1,86 @@
+#include "sweetspot/implement.hpp"
+
+#include <catch2/catch.hpp>
+
+namespace sweetspot {
+namespace {
+
+constexpr double kRoundOff = 1e-13;
+
+void check_same_body(const MassProperties& a, const MassProperties& b) {
+  CHECK(a.mass_kg == Approx(b.mass_kg).epsilon(kRoundOff));
+  CHECK(a.com_from_butt_m == Approx(b.com_from_butt_m).epsilon(kRoundOff));
+  CHECK(a.I_cm_kg_m2 == Approx(b.I_cm_kg_m2).epsilon(kRoundOff));
+}
+
+TEST_CASE("A uniform beam has I_cm = M L^2 / 12 and its centre in the middle") {
+  const Implement beam = Implement::from_sections({Section{0.72, 0.328, {}}});
+  CHECK(beam.mass_properties().com_from_butt_m == Approx(0.36).epsilon(kRoundOff));
+  // Section V.B prints 0.0142 kg m^2.
+  CHECK(beam.mass_properties().I_cm_kg_m2 == Approx(0.328 * 0.72 * 0.72 / 12).epsilon(kRoundOff));
+  CHECK(beam.mass_properties().I_cm_kg_m2 == Approx(0.0142).margin(0.5e-4));
+}
+
+TEST_CASE("The paper's racquet is two uniform halves with M1/M2 = ratio") {
+  const Implement racquet = Implement::paper_racquet(0.70, 0.25, 0.8);
+  REQUIRE(racquet.sections().size() == 2);
+  CHECK(racquet.sections()[1].mass_kg / racquet.sections()[0].mass_kg == Approx(0.8));
+  // Centre of mass: (M2 L/4 + M1 3L/4) / M in closed form.
+  const double M2 = 0.25 / 1.8, M1 = 0.25 - M2;
+  CHECK(racquet.mass_properties().com_from_butt_m ==
+        Approx((M2 * 0.175 + M1 * 0.525) / 0.25).epsilon(kRoundOff));
+  // A ratio of 1 is the uniform beam.
+  check_same_body(Implement::paper_racquet(0.72, 0.328, 1.0).mass_properties(),
+                  Implement::from_sections({Section{0.72, 0.328, {}}}).mass_properties());
+}
+
+TEST_CASE("The three implement forms agree where they describe the same body") {
+  const std::vector<PointMass> tape{{0.68, 0.006}, {0.02, 0.010}};
+  const Implement paper = Implement::paper_racquet(0.70, 0.30, 1.1, tape);
+  const Implement sections = Implement::from_sections(
+      {Section{0.35, 0.30 / 2.1, {}}, Section{0.35, 0.30 * 1.1 / 2.1, {}}}, tape);
+  const MassProperties frame = paper.frame_mass_properties();
+  const Implement specs = Implement::from_specs(
+      IndustrySpecs{0.70, frame.mass_kg, frame.com_from_butt_m, swingweight_kg_m2(frame)}, tape);
+  check_same_body(paper.mass_properties(), sections.mass_properties());
+  check_same_body(paper.mass_properties(), specs.mass_properties());
+  CHECK_FALSE(specs.has_mass_distribution());
+}
+
+TEST_CASE("Point masses add by the parallel-axis theorem, in any order") {
+  const MassProperties beam = Implement::from_sections({Section{0.72, 0.328, {}}}).mass_properties();
+  const MassProperties ab = with_point_mass(with_point_mass(beam, {0.1, 0.2}), {0.6, 0.05});
+  const MassProperties ba = with_point_mass(with_point_mass(beam, {0.6, 0.05}), {0.1, 0.2});
+  check_same_body(ab, ba);
+  // Direct sum of second moments about the butt.
+  const double I_butt = 0.328 * 0.72 * 0.72 / 3 + 0.2 * 0.01 + 0.05 * 0.36;
+  CHECK(inertia_about(ab, 0.0) == Approx(I_butt).epsilon(kRoundOff));
+}
+
+TEST_CASE("Swingweight and balance round-trip through from_swingweight") {
+  const MassProperties body{0.300, 0.32, 0.0150};
+  const MassProperties back = from_swingweight(0.300, 0.32, swingweight_kg_m2(body));
+  check_same_body(body, back);
+}
+
+TEST_CASE("Impossible implements are refused with the argument named") {
+  CHECK_THROWS_WITH(Implement::from_sections({}), Catch::Contains("sections"));
+  CHECK_THROWS_WITH(Implement::from_sections({Section{-0.1, 0.3, {}}}),
+                    Catch::Contains("sections/0/length_m"));
+  CHECK_THROWS_WITH(Implement::from_sections({Section{0.7, 0.3, {}}}, {{0.8, 0.01}}),
+                    Catch::Contains("point_masses/0/from_butt_m"));
+  CHECK_THROWS_WITH(Implement::paper_racquet(0.7, 0.3, 0.0),
+                    Catch::Contains("head_to_handle_mass_ratio"));
+  // Balance outside the length, and a swingweight below what the mass at its
+  // balance point alone gives (0.3 kg at 0.32 m: 0.3 * 0.22^2 = 0.01452 kg m^2).
+  CHECK_THROWS_WITH(Implement::from_specs({0.686, 0.3, 0.70, 0.032}),
+                    Catch::Contains("balance_from_butt_m"));
+  CHECK_THROWS_WITH(Implement::from_specs({0.686, 0.3, 0.32, 0.0145}),
+                    Catch::Contains("swingweight_kg_m2"));
+  // Nor above what all the mass at the two ends gives: M B (L - B) more.
+  CHECK_THROWS_WITH(Implement::from_specs({0.686, 0.3, 0.32, 0.01452 + 0.3 * 0.32 * 0.366 + 1e-6}),
+                    Catch::Contains("swingweight_kg_m2"));
+}
+
+}  // namespace
+}  // namespace sweetspot
