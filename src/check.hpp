@@ -10,6 +10,8 @@ namespace sweetspot::detail {
 
 // Shortest round-trip text of a double ("0.25", "1e-09", "inf").
 std::string format_number(double value);
+// Six significant digits, for computed bounds in messages.
+std::string format_significant(double value);
 
 void require_finite(std::string_view name, double value);
 void require_positive(std::string_view name, double value, std::string_view unit);

@@ -105,8 +105,8 @@ Implement Implement::from_specs(const IndustrySpecs& specs, std::vector<PointMas
   const double sw_max = sw_min + M * B * (L - B);
   if (!(specs.swingweight_kg_m2 > sw_min) || specs.swingweight_kg_m2 > sw_max) {
     throw std::invalid_argument(
-        "swingweight_kg_m2: must be in (" + detail::format_number(sw_min) + ", " +
-        detail::format_number(sw_max) + "] kg m^2 for this mass, balance and length, got " +
+        "swingweight_kg_m2: must be in (" + detail::format_significant(sw_min) + ", " +
+        detail::format_significant(sw_max) + "] kg m^2 for this mass, balance and length, got " +
         detail::format_number(specs.swingweight_kg_m2) + " kg m^2");
   }
   Implement implement;

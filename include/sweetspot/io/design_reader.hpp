@@ -1,0 +1,41 @@
+#pragma once
+
+// Design files: JSON in SI units with the unit in the key name, industry units
+// accepted by suffix (mass_g, length_in, balance_cm, balance_pts_hl,
+// swingweight_kg_cm2, impact_duration_ms). The format is documented in
+// README.md and schema/design.schema.json.
+
+#include <map>
+#include <string>
+
+#include "sweetspot/design.hpp"
+#include "sweetspot/io/json_reader.hpp"
+
+namespace sweetspot::io {
+
+// 1 point head-light = 1/8 inch from the middle of the length towards the butt.
+inline constexpr double kPointHeadLight_m = 0.0254 / 8.0;
+
+struct DesignFile {
+  std::string source;   // the file, or the study that holds it inline
+  std::string name;     // "name", or the source when absent
+  Design design;
+  // How the implement was described: "head_to_handle_mass_ratio", "sections" or "specs".
+  std::string implement_form;
+  // For each input (canonical SI name, e.g. "hand/mass_kg"): "given" or "default".
+  std::map<std::string, std::string> provenance;
+  // Published values to compare with ("reference": {"source": ..., output: value}).
+  Json reference;
+};
+
+// Reads a design from a parsed document. Throws InputError naming `source`,
+// the JSON pointer, the value and what was expected.
+DesignFile read_design(const Json& document, const std::string& source);
+
+// Reads a design file.
+DesignFile load_design(const std::string& path);
+
+// The design as a complete design file in SI units (what `evaluate` accepts).
+Json design_to_json(const DesignFile& design);
+
+}  // namespace sweetspot::io

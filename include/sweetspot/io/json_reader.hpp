@@ -1,0 +1,87 @@
+#pragma once
+
+// Strict JSON input: a parser that refuses duplicate keys, deep nesting,
+// empty and binary files; and a reader for one JSON object that converts
+// units by key suffix and refuses unknown keys. Every error is an InputError
+// naming the source and the JSON pointer.
+
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace sweetspot::io {
+
+using Json = nlohmann::json;
+
+// Deepest nesting accepted; real designs and studies use 4 or 5 levels.
+inline constexpr int kMaxJsonDepth = 64;
+
+// Parses `text` as one JSON document. Throws InputError for empty or binary
+// (NUL byte) input, syntax errors (with line and column), duplicate keys and
+// nesting deeper than kMaxJsonDepth.
+Json parse_json(std::string_view text, const std::string& source);
+
+// Reads and parses a file; a missing or unreadable file is an InputError too.
+Json read_json_file(const std::string& path);
+
+// Text for a JSON value in an error message, shortened to ~60 characters.
+std::string brief(const Json& value);
+
+// A physical dimension and the unit suffixes accepted for it, each with its
+// factor to SI ("_cm" length -> 0.01 m).
+enum class Dimension { kLength, kMass, kTime, kSpeed, kInertia, kForce, kStiffness, kFrequency };
+
+// Every key that spells `base` in a unit of `dimension` ("mass" -> mass_kg, mass_g).
+std::vector<std::string> spellings(std::string_view base, Dimension dimension);
+
+// Where each value was found: canonical SI name ("hand/mass_kg") -> the JSON
+// pointer the user wrote ("/hand/mass_g"), so errors found later by the
+// physics core point at the user's own key.
+using KeyMap = std::map<std::string, std::string>;
+
+class ObjectReader {
+ public:
+  // `canonical` is the SI-named path of this object relative to the document
+  // ("hand", "implement/sections/0"); `pointer` is its JSON pointer.
+  ObjectReader(const Json& value, std::string pointer, std::string canonical,
+               const std::string& source, KeyMap* keys);
+
+  bool has(std::string_view key) const;
+  const std::string& pointer() const { return pointer_; }
+  std::string pointer_of(std::string_view key) const;
+  const std::string& source() const { return source_; }
+
+  // A finite number under `key`; std::nullopt when absent.
+  std::optional<double> number(std::string_view key);
+  // A quantity given under `base` + one unit suffix of `dimension`
+  // ("mass" -> "mass_kg" | "mass_g"), converted to SI. Two spellings at once is
+  // a contradiction. The canonical SI key is recorded in the KeyMap.
+  std::optional<double> quantity(std::string_view base, Dimension dimension);
+  // Which of several alternative keys is present (at most one); "" when none.
+  std::string one_of(const std::vector<std::string>& keys) const;
+  std::optional<std::string> string(std::string_view key);
+  // A child object or array; marks the key as read.
+  const Json* child(std::string_view key);
+  // Records that canonical SI name `canonical_key` came from `key`.
+  void record(std::string_view canonical_key, std::string_view key);
+
+  // Throws for any key not read (an unknown key), naming the expected keys.
+  void finish(const std::vector<std::string>& expected) const;
+
+  [[noreturn]] void fail(std::string_view key, const std::string& detail) const;
+
+ private:
+  const Json& object_;
+  std::string pointer_;
+  std::string canonical_;
+  std::string source_;
+  KeyMap* keys_;
+  std::set<std::string, std::less<>> read_;
+};
+
+}  // namespace sweetspot::io

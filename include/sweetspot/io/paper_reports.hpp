@@ -1,0 +1,58 @@
+#pragma once
+
+// The paper's Table I and Figs. 5 and 11, computed from design files and
+// written as Markdown, CSV and PNG into reports/.
+
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "sweetspot/evaluate.hpp"
+#include "sweetspot/io/design_reader.hpp"
+#include "sweetspot/io/format.hpp"
+#include "sweetspot/io/plot.hpp"
+
+namespace sweetspot::io {
+
+inline constexpr int kTableIRows = 8;
+
+struct Table1Row {
+  int row = 0;
+  DesignFile design;
+  Evaluation evaluation;
+  std::optional<double> paper_F0_N;  // from the design's "reference"
+  std::optional<double> paper_Fw_N;
+};
+
+// Evaluates DIR/row1.json ... DIR/row8.json.
+std::vector<Table1Row> compute_table1(const std::string& dir);
+std::string table1_report(const std::vector<Table1Row>& rows, Format format);
+
+// A figure's data as CSV, its plot and a sentence comparing it with the paper.
+struct Figure {
+  std::string csv;
+  Plot plot;
+  std::string summary;
+};
+
+// Fig. 5: v2/v16 against the impact distance d from the free end for the free
+// beam, Eq. (6), with observation points 2 and 16 cm from the handle end.
+Figure figure5(const DesignFile& beam);
+
+// Where the free and hand-held rotation axes of Fig. 11 coincide.
+struct AxesCrossing {
+  double d_m = 0.0;  // impact distance from the free end
+  double s_m = 0.0;  // rotation axis from the handle end
+};
+std::optional<AxesCrossing> figure11_crossing(const DesignFile& beam);
+
+// Fig. 11: rotation axis s = h - A against d, free (Eq. 5) and hand-held (Eq. 12).
+Figure figure11(const DesignFile& beam);
+
+// Writes table1.md, table1.csv, fig5.csv, fig5.png, fig11.csv, fig11.png and
+// README.md into `out_dir` from the designs in `designs_dir`; logs what it wrote.
+void write_paper_reports(const std::string& designs_dir, const std::string& out_dir,
+                         std::ostream& log);
+
+}  // namespace sweetspot::io

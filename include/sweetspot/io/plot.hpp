@@ -1,0 +1,44 @@
+#pragma once
+
+// Line plots rendered to PNG by gnuplot (Debian package gnuplot-nox). The
+// plot is described as data; gnuplot_script() is pure and testable.
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace sweetspot::io {
+
+struct PlotSeries {
+  std::string title;
+  std::vector<double> x;
+  std::vector<std::optional<double>> y;  // std::nullopt (and points off the y range) break the line
+  std::string style = "lines lw 2";
+};
+
+struct PlotMarker {
+  double x = 0.0;
+  double y = 0.0;
+  std::string label;
+};
+
+struct Plot {
+  std::string title;
+  std::string x_label;  // with the unit, e.g. "impact distance d from the free end (cm)"
+  std::string y_label;
+  std::optional<std::pair<double, double>> x_range;
+  std::optional<std::pair<double, double>> y_range;
+  std::vector<PlotSeries> series;
+  std::vector<PlotMarker> markers;
+  std::vector<std::pair<double, std::string>> vertical_lines;  // x and label
+};
+
+// The gnuplot script that draws `plot` into `png_path`.
+std::string gnuplot_script(const Plot& plot, const std::string& png_path);
+
+// Renders `plot` to `png_path` atomically. Returns false (and why) when
+// gnuplot is missing or fails; the PNG is then left as it was.
+bool render_png(const Plot& plot, const std::string& png_path, std::string* why);
+
+}  // namespace sweetspot::io

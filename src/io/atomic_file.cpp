@@ -1,0 +1,61 @@
+#include "sweetspot/io/atomic_file.hpp"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <stdexcept>
+#include <vector>
+
+namespace sweetspot::io {
+namespace {
+[[noreturn]] void fail(const std::string& path, const std::string& what) {
+  throw std::runtime_error("cannot write " + path + ": " + what);
+}
+}  // namespace
+
+std::string temporary_path_for(const std::string& path) {
+  std::string pattern = path + ".tmp.XXXXXX";
+  std::vector<char> buffer(pattern.begin(), pattern.end());
+  buffer.push_back('\0');
+  const int fd = mkstemp(buffer.data());
+  if (fd < 0) fail(path, std::strerror(errno));
+  close(fd);
+  return std::string(buffer.data());
+}
+
+void commit_file(const std::string& temporary, const std::string& path) {
+  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+    const std::string reason = std::strerror(errno);
+    std::remove(temporary.c_str());
+    fail(path, reason);
+  }
+}
+
+void discard_file(const std::string& temporary) { std::remove(temporary.c_str()); }
+
+void write_file_atomically(const std::string& path, std::string_view content) {
+  const std::string temporary = temporary_path_for(path);
+  FILE* file = std::fopen(temporary.c_str(), "wb");
+  if (!file) {
+    discard_file(temporary);
+    fail(path, std::strerror(errno));
+  }
+  const bool written = std::fwrite(content.data(), 1, content.size(), file) == content.size();
+  const bool flushed = std::fflush(file) == 0 && fsync(fileno(file)) == 0;
+  const bool closed = std::fclose(file) == 0;
+  if (!written || !flushed || !closed) {
+    discard_file(temporary);
+    fail(path, "write failed");
+  }
+  // mkstemp creates 0600; reports are for everyone to read.
+  std::filesystem::permissions(temporary,
+                               std::filesystem::perms::owner_read | std::filesystem::perms::owner_write |
+                                   std::filesystem::perms::group_read | std::filesystem::perms::others_read);
+  commit_file(temporary, path);
+}
+
+}  // namespace sweetspot::io

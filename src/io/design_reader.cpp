@@ -1,0 +1,306 @@
+#include "sweetspot/io/design_reader.hpp"
+
+#include <optional>
+#include <stdexcept>
+#include <utility>
+
+#include "sweetspot/io/input_error.hpp"
+#include "sweetspot/io/outputs.hpp"
+#include "sweetspot/rigid_impact.hpp"
+
+namespace sweetspot::io {
+namespace {
+
+// The physics core names a bad argument by its canonical SI path relative to
+// the document ("hand/mass_kg: must be ..."); point the error at the key the
+// user actually wrote.
+[[noreturn]] void rethrow_at(const std::invalid_argument& error, const std::string& prefix,
+                             const KeyMap& keys, const std::string& source,
+                             const std::string& fallback_pointer) {
+  const std::string message = error.what();
+  const auto colon = message.find(": ");
+  if (colon != std::string::npos) {
+    const std::string name = prefix + message.substr(0, colon);
+    const auto it = keys.find(name);
+    if (it != keys.end()) {
+      std::string detail = message.substr(colon + 2);
+      // The core speaks SI; say so when the file used another unit.
+      const std::string si_key = name.substr(name.rfind('/') + 1);
+      const std::string user_key = it->second.substr(it->second.rfind('/') + 1);
+      if (si_key != user_key) detail += " (" + user_key + " converted to SI)";
+      throw InputError(source, it->second, detail);
+    }
+  }
+  throw InputError(source, fallback_pointer, message);
+}
+
+Section read_section(ObjectReader& r) {
+  Section section;
+  const auto length = r.quantity("length", Dimension::kLength);
+  const auto mass = r.quantity("mass", Dimension::kMass);
+  if (!length) r.fail("", "missing length_m (or length_cm, length_in)");
+  if (!mass) r.fail("", "missing mass_kg (or mass_g)");
+  section.length_m = *length;
+  section.mass_kg = *mass;
+  section.EI_N_m2 = r.quantity("EI", Dimension::kStiffness);
+  r.finish({"length_m", "mass_kg", "EI_N_m2"});
+  return section;
+}
+
+std::vector<PointMass> read_point_masses(ObjectReader& implement, const std::string& source,
+                                         KeyMap* keys) {
+  std::vector<PointMass> points;
+  const Json* list = implement.child("point_masses");
+  if (!list) return points;
+  const std::string pointer = implement.pointer_of("point_masses");
+  if (!list->is_array()) throw InputError(source, pointer, "expected an array, got " + brief(*list));
+  for (std::size_t i = 0; i < list->size(); ++i) {
+    const std::string index = std::to_string(i);
+    ObjectReader r((*list)[i], pointer + "/" + index, "implement/point_masses/" + index, source,
+                   keys);
+    const auto at = r.quantity("from_butt", Dimension::kLength);
+    const auto mass = r.quantity("mass", Dimension::kMass);
+    if (!at) r.fail("", "missing from_butt_m (or from_butt_cm, from_butt_in)");
+    if (!mass) r.fail("", "missing mass_kg (or mass_g)");
+    r.finish({"from_butt_m", "mass_kg"});
+    points.push_back(PointMass{*at, *mass});
+  }
+  return points;
+}
+
+struct ImplementRead {
+  Implement implement;
+  std::string form;
+};
+
+ImplementRead read_implement(const Json& document, const std::string& source, KeyMap* keys) {
+  const auto it = document.find("implement");
+  if (it == document.end()) throw InputError(source, "/implement", "missing: every design needs an implement");
+  ObjectReader r(*it, "/implement", "implement", source, keys);
+  std::vector<PointMass> points = read_point_masses(r, source, keys);
+  try {
+    if (r.has("sections")) {
+      const Json* list = r.child("sections");
+      if (!list->is_array() || list->empty()) {
+        r.fail("sections", "expected a non-empty array of sections, got " + brief(*list));
+      }
+      std::vector<Section> sections;
+      for (std::size_t i = 0; i < list->size(); ++i) {
+        const std::string index = std::to_string(i);
+        ObjectReader s((*list)[i], r.pointer_of("sections") + "/" + index,
+                       "implement/sections/" + index, source, keys);
+        sections.push_back(read_section(s));
+      }
+      r.finish({"sections", "point_masses"});
+      return {Implement::from_sections(std::move(sections), std::move(points)), "sections"};
+    }
+    const auto length = r.quantity("length", Dimension::kLength);
+    const auto mass = r.quantity("mass", Dimension::kMass);
+    if (!length) r.fail("", "missing length_m (or length_in, length_cm), or give sections");
+    if (!mass) r.fail("", "missing mass_kg (or mass_g), or give sections");
+    if (r.has("head_to_handle_mass_ratio")) {
+      const double ratio = *r.number("head_to_handle_mass_ratio");
+      r.finish({"length_m", "mass_kg", "head_to_handle_mass_ratio", "point_masses"});
+      return {Implement::paper_racquet(*length, *mass, ratio, std::move(points)),
+              "head_to_handle_mass_ratio"};
+    }
+    const std::string balance_key = r.one_of({"balance_from_butt_m", "balance_cm", "balance_pts_hl"});
+    if (balance_key.empty()) {
+      r.fail("", "missing the mass distribution: give head_to_handle_mass_ratio, sections, or "
+                 "balance_from_butt_m (or balance_cm, balance_pts_hl) with swingweight_kg_cm2");
+    }
+    double balance = *r.number(balance_key);
+    if (balance_key == "balance_cm") balance *= 0.01;
+    if (balance_key == "balance_pts_hl") {
+      const double limit = 0.5 * *length / kPointHeadLight_m;
+      if (!(balance > -limit && balance < limit)) {
+        r.fail(balance_key, "must put the balance inside the length, |points| < " +
+                                std::to_string(limit) + ", got " + brief(Json(balance)));
+      }
+      balance = 0.5 * *length - balance * kPointHeadLight_m;
+    }
+    r.record("balance_from_butt_m", balance_key);
+    const auto swingweight = r.quantity("swingweight", Dimension::kInertia);
+    if (!swingweight) r.fail("", "missing swingweight_kg_cm2 (with the balance it fixes the inertia)");
+    r.finish({"length_m", "mass_kg", "balance_from_butt_m", "balance_cm", "balance_pts_hl",
+              "swingweight_kg_cm2", "point_masses"});
+    return {Implement::from_specs(IndustrySpecs{*length, *mass, balance, *swingweight},
+                                  std::move(points)),
+            "specs"};
+  } catch (const std::invalid_argument& error) {
+    rethrow_at(error, "implement/", *keys, source, "/implement");
+  }
+}
+
+// Reads one optional section of the design ("hand": {...}) with defaults.
+class Part {
+ public:
+  Part(ObjectReader& document, const char* name, KeyMap* keys,
+       std::map<std::string, std::string>* provenance)
+      : name_(name), provenance_(provenance) {
+    static const Json kEmpty = Json::object();
+    const Json* part = document.child(name);
+    reader_.emplace(part ? *part : kEmpty, std::string("/") + name, name, document.source(), keys);
+  }
+  ObjectReader& reader() { return *reader_; }
+
+  // The quantity, or `fallback` when absent; records where it came from.
+  double get(std::string_view base, Dimension dimension, std::string_view si_key, double fallback) {
+    const auto value = reader_->quantity(base, dimension);
+    (*provenance_)[name_ + "/" + std::string(si_key)] = value ? "given" : "default";
+    return value.value_or(fallback);
+  }
+  double get_number(std::string_view key, double fallback) {
+    const auto value = reader_->number(key);
+    (*provenance_)[name_ + "/" + std::string(key)] = value ? "given" : "default";
+    return value.value_or(fallback);
+  }
+
+ private:
+  std::string name_;
+  std::map<std::string, std::string>* provenance_;
+  std::optional<ObjectReader> reader_;
+};
+
+}  // namespace
+
+DesignFile read_design(const Json& document, const std::string& source) {
+  KeyMap keys;
+  ObjectReader top(document, "", "", source, &keys);
+  const std::string name = top.string("name").value_or(source);
+  top.string("description");
+  top.string("$schema");
+  ImplementRead implement = read_implement(document, source, &keys);
+  top.child("implement");
+  const double L = implement.implement.length_m();
+
+  std::map<std::string, std::string> provenance;
+  const Design defaults{implement.implement};
+  Design design = defaults;
+
+  Part frame(top, "frame", &keys, &provenance);
+  design.cor = frame.get_number("cor", defaults.cor);
+  frame.reader().finish({"cor"});
+
+  Part strings(top, "strings", &keys, &provenance);
+  design.impact_duration_s =
+      strings.get("impact_duration", Dimension::kTime, "impact_duration_s", defaults.impact_duration_s);
+  strings.reader().finish({"impact_duration_s", "impact_duration_ms"});
+
+  Part hand(top, "hand", &keys, &provenance);
+  design.hand.mass_kg = hand.get("mass", Dimension::kMass, "mass_kg", defaults.hand.mass_kg);
+  design.hand.center_from_butt_m = hand.get("center_from_butt", Dimension::kLength,
+                                            "center_from_butt_m", defaults.hand.center_from_butt_m);
+  hand.reader().finish({"mass_kg", "center_from_butt_m"});
+
+  Part forearm(top, "forearm", &keys, &provenance);
+  {
+    ObjectReader& r = forearm.reader();
+    const std::string key = r.one_of({"equivalent_mass_kg", "equivalent_mass_g", "mass_kg", "mass_g"});
+    if (key.starts_with("mass")) {
+      const double forearm_mass = *r.quantity("mass", Dimension::kMass);
+      try {
+        design.forearm_equivalent_mass_kg = forearm_equivalent_mass(forearm_mass);  // Eq. (7)
+      } catch (const std::invalid_argument&) {
+        r.fail(key, "must be >= 0 kg, got " + brief(Json(forearm_mass)) + " kg");
+      }
+      r.record("equivalent_mass_kg", key);
+      provenance["forearm/equivalent_mass_kg"] = "derived from forearm/mass_kg (Eq. 7)";
+    } else {
+      design.forearm_equivalent_mass_kg = forearm.get(
+          "equivalent_mass", Dimension::kMass, "equivalent_mass_kg", defaults.forearm_equivalent_mass_kg);
+    }
+    r.finish({"equivalent_mass_kg", "mass_kg"});
+  }
+
+  Part ball(top, "ball", &keys, &provenance);
+  design.ball.mass_kg = ball.get("mass", Dimension::kMass, "mass_kg", defaults.ball.mass_kg);
+  design.ball.speed_m_s = ball.get("speed", Dimension::kSpeed, "speed_m_s", defaults.ball.speed_m_s);
+  ball.reader().finish({"mass_kg", "speed_m_s"});
+
+  Part impact(top, "impact", &keys, &provenance);
+  {
+    ObjectReader& r = impact.reader();
+    const auto from_tip = r.quantity("from_tip", Dimension::kLength);
+    const auto from_butt = r.quantity("from_butt", Dimension::kLength);
+    if (from_tip && from_butt) r.fail("", "give the impact point once: from_tip_m or from_butt_m");
+    if (from_tip) {
+      if (!(*from_tip >= 0.0 && *from_tip <= L)) {
+        r.fail(r.one_of(spellings("from_tip", Dimension::kLength)),
+               "must be in [0, " + brief(Json(L)) + "] m (on the implement), got " +
+                   brief(Json(*from_tip)) + " m");
+      }
+      design.impact_from_butt_m = L - *from_tip;
+      provenance["impact/from_butt_m"] = "given (from the tip)";
+    } else if (from_butt) {
+      design.impact_from_butt_m = *from_butt;
+      provenance["impact/from_butt_m"] = "given";
+    } else {
+      design.impact_from_butt_m = L - 0.05;
+      provenance["impact/from_butt_m"] = "default (5 cm from the tip)";
+    }
+    r.finish({"from_tip_m", "from_butt_m"});
+  }
+
+  Json reference;
+  if (const Json* given = top.child("reference")) {
+    ObjectReader r(*given, "/reference", "reference", source, nullptr);
+    r.string("source");
+    std::vector<std::string> expected{"source"};
+    for (const OutputSpec& output : output_specs()) {
+      expected.emplace_back(output.name);
+      r.number(output.name);
+    }
+    r.finish(expected);
+    reference = *given;
+  }
+  top.finish({"$schema", "name", "description", "implement", "frame", "strings", "hand", "forearm",
+              "ball", "impact", "reference"});
+
+  try {
+    validate(design);
+  } catch (const std::invalid_argument& error) {
+    rethrow_at(error, "", keys, source, "");
+  }
+  return DesignFile{source, name, std::move(design), implement.form, std::move(provenance),
+                    std::move(reference)};
+}
+
+DesignFile load_design(const std::string& path) { return read_design(read_json_file(path), path); }
+
+Json design_to_json(const DesignFile& file) {
+  const Design& d = file.design;
+  const Implement& implement = d.implement;
+  Json j;
+  j["name"] = file.name;
+  Json& impl = j["implement"];
+  if (implement.has_mass_distribution()) {
+    impl["sections"] = Json::array();
+    for (const Section& s : implement.sections()) {
+      Json section{{"length_m", s.length_m}, {"mass_kg", s.mass_kg}};
+      if (s.EI_N_m2) section["EI_N_m2"] = *s.EI_N_m2;
+      impl["sections"].push_back(section);
+    }
+  } else {
+    const MassProperties& frame = implement.frame_mass_properties();
+    impl["length_m"] = implement.length_m();
+    impl["mass_kg"] = frame.mass_kg;
+    impl["balance_from_butt_m"] = frame.com_from_butt_m;
+    impl["swingweight_kg_cm2"] = swingweight_kg_m2(frame) * 1e4;
+  }
+  if (!implement.point_masses().empty()) {
+    impl["point_masses"] = Json::array();
+    for (const PointMass& p : implement.point_masses()) {
+      impl["point_masses"].push_back({{"from_butt_m", p.from_butt_m}, {"mass_kg", p.mass_kg}});
+    }
+  }
+  j["frame"] = {{"cor", d.cor}};
+  j["strings"] = {{"impact_duration_s", d.impact_duration_s}};
+  j["hand"] = {{"mass_kg", d.hand.mass_kg}, {"center_from_butt_m", d.hand.center_from_butt_m}};
+  j["forearm"] = {{"equivalent_mass_kg", d.forearm_equivalent_mass_kg}};
+  j["ball"] = {{"mass_kg", d.ball.mass_kg}, {"speed_m_s", d.ball.speed_m_s}};
+  j["impact"] = {{"from_butt_m", d.impact_from_butt_m}};
+  return j;
+}
+
+}  // namespace sweetspot::io

@@ -1,0 +1,114 @@
+#include "sweetspot/io/format.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "sweetspot/io/outputs.hpp"
+
+namespace sweetspot::io {
+
+std::optional<Format> parse_format(std::string_view text) {
+  if (text == "md") return Format::kMarkdown;
+  if (text == "json") return Format::kJson;
+  if (text == "csv") return Format::kCsv;
+  return std::nullopt;
+}
+
+std::string significant(double value, int digits) {
+  if (value == 0.0) return "0";  // no "-0"
+  return fmt::format("{:.{}g}", value, digits);
+}
+
+std::string exact(double value) { return value == 0.0 ? "0" : fmt::format("{}", value); }
+
+std::string md_cell(std::string_view text) {
+  std::string cell;
+  for (const char c : text) cell += c == '|' ? std::string("\\|") : std::string(1, c);
+  return cell;
+}
+
+std::string csv_field(std::string_view text) {
+  if (text.find_first_of(",\"\n\r") == std::string_view::npos) return std::string(text);
+  std::string quoted = "\"";
+  for (const char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
+
+namespace {
+
+Json inputs_json(const DesignFile& file) {
+  const Design& d = file.design;
+  const auto input = [&](const char* name, double value, const char* unit) {
+    const auto it = file.provenance.find(name);
+    return Json{{"value", value},
+                {"unit", unit},
+                {"provenance", it == file.provenance.end() ? "given" : it->second}};
+  };
+  Json inputs;
+  inputs["implement/form"] = file.implement_form;
+  inputs["frame/cor"] = input("frame/cor", d.cor, "");
+  inputs["strings/impact_duration_s"] = input("strings/impact_duration_s", d.impact_duration_s, "s");
+  inputs["hand/mass_kg"] = input("hand/mass_kg", d.hand.mass_kg, "kg");
+  inputs["hand/center_from_butt_m"] =
+      input("hand/center_from_butt_m", d.hand.center_from_butt_m, "m");
+  inputs["forearm/equivalent_mass_kg"] =
+      input("forearm/equivalent_mass_kg", d.forearm_equivalent_mass_kg, "kg");
+  inputs["ball/mass_kg"] = input("ball/mass_kg", d.ball.mass_kg, "kg");
+  inputs["ball/speed_m_s"] = input("ball/speed_m_s", d.ball.speed_m_s, "m/s");
+  inputs["impact/from_butt_m"] = input("impact/from_butt_m", d.impact_from_butt_m, "m");
+  return inputs;
+}
+
+}  // namespace
+
+Json evaluation_json(const DesignFile& file, const Evaluation& e) {
+  Json j;
+  j["name"] = file.name;
+  j["fidelity"] = "rigid";
+  j["inputs"] = inputs_json(file);
+  Json& outputs = j["outputs"];
+  Json notes = Json::object();
+  for (const OutputSpec& output : output_specs()) {
+    const auto value = output.value(e);
+    outputs[std::string(output.name)] = value ? Json(*value) : Json(nullptr);
+    if (!value) notes[std::string(output.name)] = output.when_absent;
+  }
+  j["notes"] = notes;
+  return j;
+}
+
+std::string evaluation_report(const DesignFile& file, const Evaluation& e, Format format) {
+  if (format == Format::kJson) return evaluation_json(file, e).dump(2) + "\n";
+  if (format == Format::kCsv) {
+    std::string header = "name";
+    std::string row = csv_field(file.name);
+    for (const OutputSpec& output : output_specs()) {
+      header += "," + std::string(output.name);
+      const auto value = output.value(e);
+      row += "," + (value ? exact(*value) : std::string());
+    }
+    return header + "\n" + row + "\n";
+  }
+  std::string md = fmt::format("# {}\n\nRigid-body model of Cross (2004); source `{}`.\n\n",
+                               md_cell(file.name), file.source);
+  md += "| output | value | unit | meaning |\n|---|---:|---|---|\n";
+  for (const OutputSpec& output : output_specs()) {
+    const auto value = output.value(e);
+    md += fmt::format("| `{}` | {} | {} | {} |\n", output.name,
+                      value ? significant(*value) : std::string("—"), output.unit,
+                      md_cell(value ? std::string(output.description)
+                                    : std::string(output.description) + "; " +
+                                          std::string(output.when_absent)));
+  }
+  md += "\nInputs (SI; *default* values are Cross (2004) Table I, top row):\n\n";
+  const Json inputs = inputs_json(file);
+  for (const auto& [name, input] : inputs.items()) {
+    if (!input.is_object()) continue;
+    md += fmt::format("- `{}` = {} {} ({})\n", name, significant(input["value"].get<double>()),
+                      input["unit"].get<std::string>(), input["provenance"].get<std::string>());
+  }
+  return md;
+}
+
+}  // namespace sweetspot::io

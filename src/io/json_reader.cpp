@@ -1,0 +1,298 @@
+#include "sweetspot/io/json_reader.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <utility>
+
+#include "sweetspot/io/input_error.hpp"
+
+namespace sweetspot::io {
+namespace {
+
+std::string escape_pointer_token(std::string_view token) {
+  std::string out;
+  for (const char c : token) {
+    if (c == '~') out += "~0";
+    else if (c == '/') out += "~1";
+    else out += c;
+  }
+  return out;
+}
+
+// Builds the document while parsing, so that duplicate keys and depth are
+// seen with the exact JSON pointer where they occur.
+class StrictBuilder : public nlohmann::json_sax<Json> {
+ public:
+  explicit StrictBuilder(const std::string& source) : source_(source) {}
+
+  Json take() { return std::move(root_); }
+
+  bool null() override { return add(Json(nullptr)); }
+  bool boolean(bool v) override { return add(Json(v)); }
+  bool number_integer(number_integer_t v) override { return add(Json(v)); }
+  bool number_unsigned(number_unsigned_t v) override { return add(Json(v)); }
+  bool number_float(number_float_t v, const string_t& text) override {
+    if (!std::isfinite(v)) fail("number " + text + " is out of range, expected a finite number");
+    return add(Json(v));
+  }
+  bool string(string_t& v) override { return add(Json(std::move(v))); }
+  bool binary(binary_t&) override { fail("binary values are not JSON text"); }
+  bool start_object(std::size_t) override { return open(Json::object()); }
+  bool key(string_t& k) override {
+    Json& object = *stack_.back().value;
+    if (object.contains(k)) fail("duplicate key \"" + k + "\" (each key may appear once)", k);
+    stack_.back().key = k;
+    return true;
+  }
+  bool end_object() override { return close(); }
+  bool start_array(std::size_t) override { return open(Json::array()); }
+  bool end_array() override { return close(); }
+  bool parse_error(std::size_t, const std::string& token,
+                   const nlohmann::detail::exception& e) override {
+    constexpr int kNumberOverflow = 406;  // nlohmann's id for a number beyond double
+    if (e.id == kNumberOverflow) fail("number " + token + " is out of range, expected a finite number");
+    // The line and column say where; a pointer would name the last complete value.
+    throw InputError(source_, "", invalid_json_message(e.what()));
+  }
+
+ private:
+  struct Open {
+    Json* value;
+    std::string key;      // pending key (objects)
+  };
+
+  // Pointer of the innermost open container: each open container is the last
+  // child inserted into the one before it.
+  std::string container_pointer() const {
+    std::string pointer;
+    for (std::size_t i = 0; i + 1 < stack_.size(); ++i) {
+      const Open& parent = stack_[i];
+      pointer += "/" + (parent.value->is_object() ? escape_pointer_token(parent.key)
+                                                  : std::to_string(parent.value->size() - 1));
+    }
+    return pointer;
+  }
+
+  // Pointer of the slot about to be filled, or of `key` in the innermost object.
+  std::string current_pointer(std::string_view key = {}) const {
+    if (stack_.empty()) return "";
+    const Open& inner = stack_.back();
+    std::string token = !key.empty()                ? escape_pointer_token(key)
+                        : inner.value->is_object() ? escape_pointer_token(inner.key)
+                                                   : std::to_string(inner.value->size());
+    return container_pointer() + "/" + token;
+  }
+
+  [[noreturn]] void fail(const std::string& detail, std::string_view key = {}) const {
+    throw InputError(source_, current_pointer(key), detail);
+  }
+
+  static std::string invalid_json_message(const std::string& what) {
+    // nlohmann: "[json.exception.parse_error.101] parse error at line 3, column 5: syntax error ..."
+    const auto at = what.find("] ");
+    std::string text = at == std::string::npos ? what : what.substr(at + 2);
+    return "not valid JSON: " + text;
+  }
+
+  Json* insert(Json value) {
+    if (stack_.empty()) {
+      root_ = std::move(value);
+      return &root_;
+    }
+    Json& parent = *stack_.back().value;
+    if (parent.is_object()) return &(parent[stack_.back().key] = std::move(value));
+    parent.push_back(std::move(value));
+    return &parent.back();
+  }
+
+  bool add(Json value) {
+    insert(std::move(value));
+    return true;
+  }
+
+  bool open(Json container) {
+    if (static_cast<int>(stack_.size()) >= kMaxJsonDepth) {
+      fail("nesting deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+    }
+    Json* value = insert(std::move(container));
+    stack_.push_back(Open{value, {}});
+    return true;
+  }
+
+  bool close() {
+    stack_.pop_back();
+    return true;
+  }
+
+  const std::string& source_;
+  Json root_;
+  std::vector<Open> stack_;
+};
+
+}  // namespace
+
+Json parse_json(std::string_view text, const std::string& source) {
+  if (text.find_first_not_of(" \t\r\n") == std::string_view::npos) {
+    throw InputError(source, "", "the file is empty, expected a JSON object");
+  }
+  if (text.find('\0') != std::string_view::npos) {
+    throw InputError(source, "", "the file is binary (it contains NUL bytes), expected JSON text");
+  }
+  StrictBuilder builder(source);
+  Json::sax_parse(text, &builder, nlohmann::json::input_format_t::json, true);
+  return builder.take();
+}
+
+Json read_json_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, "", "cannot open the file for reading");
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  if (in.bad()) throw InputError(path, "", "cannot read the file");
+  return parse_json(buffer.str(), path);
+}
+
+std::string brief(const Json& value) {
+  std::string text = value.dump(-1, ' ', false, Json::error_handler_t::replace);
+  if (text.size() > 60) text = text.substr(0, 57) + "...";
+  return text;
+}
+
+namespace {
+
+struct Unit {
+  std::string_view suffix;
+  double to_si;
+};
+
+const std::vector<Unit>& units(Dimension dimension) {
+  static const std::vector<Unit> length{{"_m", 1.0}, {"_cm", 0.01}, {"_mm", 0.001}, {"_in", 0.0254}};
+  static const std::vector<Unit> mass{{"_kg", 1.0}, {"_g", 0.001}};
+  static const std::vector<Unit> time{{"_s", 1.0}, {"_ms", 0.001}};
+  static const std::vector<Unit> speed{{"_m_s", 1.0}, {"_km_h", 1.0 / 3.6}, {"_mph", 0.44704}};
+  static const std::vector<Unit> inertia{{"_kg_m2", 1.0}, {"_kg_cm2", 1e-4}};
+  static const std::vector<Unit> force{{"_N", 1.0}, {"_lb", 4.4482216152605}, {"_kg", 9.80665}};
+  static const std::vector<Unit> stiffness{{"_N_m2", 1.0}};
+  static const std::vector<Unit> frequency{{"_Hz", 1.0}};
+  switch (dimension) {
+    case Dimension::kLength: return length;
+    case Dimension::kMass: return mass;
+    case Dimension::kTime: return time;
+    case Dimension::kSpeed: return speed;
+    case Dimension::kInertia: return inertia;
+    case Dimension::kForce: return force;
+    case Dimension::kStiffness: return stiffness;
+    case Dimension::kFrequency: return frequency;
+  }
+  return length;
+}
+
+}  // namespace
+
+std::vector<std::string> spellings(std::string_view base, Dimension dimension) {
+  std::vector<std::string> keys;
+  for (const Unit& unit : units(dimension)) keys.push_back(std::string(base) + std::string(unit.suffix));
+  return keys;
+}
+
+namespace {
+
+std::string join(const std::vector<std::string>& items) {
+  std::string text;
+  for (const auto& item : items) text += (text.empty() ? "" : ", ") + item;
+  return text;
+}
+
+}  // namespace
+
+ObjectReader::ObjectReader(const Json& value, std::string pointer, std::string canonical,
+                           const std::string& source, KeyMap* keys)
+    : object_(value),
+      pointer_(std::move(pointer)),
+      canonical_(std::move(canonical)),
+      source_(source),
+      keys_(keys) {
+  if (!object_.is_object()) {
+    throw InputError(source_, pointer_.empty() ? "/" : pointer_,
+                     "expected a JSON object, got " + brief(object_));
+  }
+}
+
+bool ObjectReader::has(std::string_view key) const { return object_.contains(key); }
+
+std::string ObjectReader::pointer_of(std::string_view key) const {
+  return pointer_ + "/" + escape_pointer_token(key);
+}
+
+void ObjectReader::fail(std::string_view key, const std::string& detail) const {
+  throw InputError(source_, key.empty() ? pointer_ : pointer_of(key), detail);
+}
+
+void ObjectReader::record(std::string_view canonical_key, std::string_view key) {
+  if (keys_) {
+    const std::string name =
+        canonical_.empty() ? std::string(canonical_key) : canonical_ + "/" + std::string(canonical_key);
+    (*keys_)[name] = pointer_of(key);
+  }
+}
+
+std::optional<double> ObjectReader::number(std::string_view key) {
+  const auto it = object_.find(key);
+  if (it == object_.end()) return std::nullopt;
+  read_.emplace(key);
+  record(key, key);
+  if (!it->is_number()) fail(key, "expected a number, got " + brief(*it));
+  const double value = it->get<double>();
+  if (!std::isfinite(value)) fail(key, "expected a finite number, got " + brief(*it));
+  return value;
+}
+
+std::optional<double> ObjectReader::quantity(std::string_view base, Dimension dimension) {
+  std::optional<double> result;
+  std::string found;
+  for (const Unit& unit : units(dimension)) {
+    const std::string key = std::string(base) + std::string(unit.suffix);
+    if (!has(key)) continue;
+    if (!found.empty()) {
+      fail(key, "contradicts " + pointer_of(found) + ": give the quantity once, in one unit");
+    }
+    found = key;
+    result = *number(key) * unit.to_si;
+  }
+  if (result) record(std::string(base) + std::string(units(dimension).front().suffix), found);
+  return result;
+}
+
+std::string ObjectReader::one_of(const std::vector<std::string>& keys) const {
+  std::string found;
+  for (const auto& key : keys) {
+    if (!has(key)) continue;
+    if (!found.empty()) fail(key, "contradicts " + pointer_of(found) + ": give only one of them");
+    found = key;
+  }
+  return found;
+}
+
+std::optional<std::string> ObjectReader::string(std::string_view key) {
+  const auto it = object_.find(key);
+  if (it == object_.end()) return std::nullopt;
+  read_.emplace(key);
+  if (!it->is_string()) fail(key, "expected a string, got " + brief(*it));
+  return it->get<std::string>();
+}
+
+const Json* ObjectReader::child(std::string_view key) {
+  const auto it = object_.find(key);
+  if (it == object_.end()) return nullptr;
+  read_.emplace(key);
+  return &*it;
+}
+
+void ObjectReader::finish(const std::vector<std::string>& expected) const {
+  for (const auto& [key, value] : object_.items()) {
+    if (!read_.contains(key)) fail(key, "unknown key (expected one of: " + join(expected) + ")");
+  }
+}
+
+}  // namespace sweetspot::io

@@ -1,0 +1,91 @@
+#include "sweetspot/io/outputs.hpp"
+
+#include <array>
+
+namespace sweetspot::io {
+namespace {
+
+constexpr double kCm2PerM2 = 1e4;
+constexpr std::string_view kAxisAtInfinity =
+    "at infinity: the impact is through the centre of mass, so the body translates without "
+    "rotating";
+
+std::optional<double> from_tip(const Evaluation& e, const std::optional<double>& from_butt) {
+  if (!from_butt) return std::nullopt;
+  return e.length_m - *from_butt;
+}
+
+const std::array kOutputs{
+    OutputSpec{"length_m", "m", "length, butt to tip",
+               [](const Evaluation& e) -> std::optional<double> { return e.length_m; }, ""},
+    OutputSpec{"mass_kg", "kg", "mass with point masses",
+               [](const Evaluation& e) -> std::optional<double> { return e.mass_kg; }, ""},
+    OutputSpec{"balance_from_butt_m", "m", "balance point (centre of mass) from the butt",
+               [](const Evaluation& e) -> std::optional<double> { return e.balance_from_butt_m; }, ""},
+    OutputSpec{"I_cm_kg_m2", "kg m^2", "moment of inertia about the centre of mass, I_0",
+               [](const Evaluation& e) -> std::optional<double> { return e.I_cm_kg_m2; }, ""},
+    OutputSpec{"swingweight_kg_cm2", "kg cm^2", "inertia about the axis 10 cm from the butt",
+               [](const Evaluation& e) -> std::optional<double> {
+                 return e.swingweight_kg_m2 * kCm2PerM2;
+               },
+               ""},
+    OutputSpec{"recoil_weight_kg_cm2", "kg cm^2", "inertia about the centre of mass",
+               [](const Evaluation& e) -> std::optional<double> { return e.I_cm_kg_m2 * kCm2PerM2; },
+               ""},
+    OutputSpec{"impact_from_tip_m", "m", "impact point from the tip",
+               [](const Evaluation& e) -> std::optional<double> {
+                 return e.length_m - e.impact_from_butt_m;
+               },
+               ""},
+    OutputSpec{"impact_from_com_m", "m", "impact point from the centre of mass, b (Eq. 17)",
+               [](const Evaluation& e) -> std::optional<double> { return e.impact_from_com_m; }, ""},
+    OutputSpec{"effective_mass_kg", "kg", "effective mass at the impact point, M_eff (Eq. 17)",
+               [](const Evaluation& e) -> std::optional<double> { return e.effective_mass_kg; }, ""},
+    OutputSpec{"apparent_cor", "", "apparent COR e_A, rebound over incident speed (Eq. 16)",
+               [](const Evaluation& e) -> std::optional<double> { return e.apparent_cor; }, ""},
+    OutputSpec{"rebound_speed_m_s", "m/s", "ball rebound speed e_A v1",
+               [](const Evaluation& e) -> std::optional<double> { return e.rebound_speed_m_s; }, ""},
+    OutputSpec{"impulse_N_s", "N s", "impulse on the implement, m v1 (1 + e_A)",
+               [](const Evaluation& e) -> std::optional<double> { return e.impulse_N_s; }, ""},
+    OutputSpec{"peak_impact_force_N", "N", "peak force on the strings, F0 (Eq. 15)",
+               [](const Evaluation& e) -> std::optional<double> { return e.peak_impact_force_N; }, ""},
+    OutputSpec{"wrist_force_ratio", "",
+               "F_w / F (Eq. 11); > 0 pushes the wrist along with the ball, < 0 back",
+               [](const Evaluation& e) -> std::optional<double> { return e.wrist_force_ratio; }, ""},
+    OutputSpec{"peak_wrist_force_N", "N", "peak shock force on the wrist, |F_w / F| F0",
+               [](const Evaluation& e) -> std::optional<double> { return e.peak_wrist_force_N; }, ""},
+    OutputSpec{"cop_free_from_tip_m", "m",
+               "COP of the free implement for an axis through the butt (Eq. 5)",
+               [](const Evaluation& e) { return from_tip(e, e.cop_free_from_butt_m); },
+               "at infinity: the centre of mass is at the butt"},
+    OutputSpec{"cop_hand_from_tip_m", "m", "COP of the hand-held implement (Eq. 13)",
+               [](const Evaluation& e) { return from_tip(e, e.cop_hand_from_butt_m); },
+               "at infinity: implement and hand have their centre of mass at the wrist"},
+    OutputSpec{"rotation_axis_free_from_butt_m", "m",
+               "rotation axis of the free implement for this impact (Eq. 5); < 0 beyond the butt",
+               [](const Evaluation& e) { return e.rotation_axis_free_from_butt_m; }, kAxisAtInfinity},
+    OutputSpec{"rotation_axis_hand_from_butt_m", "m",
+               "rotation axis of the hand-held implement, s = h - A (Eq. 12); < 0 beyond the butt",
+               [](const Evaluation& e) { return e.rotation_axis_hand_from_butt_m; },
+               "at infinity: implement, hand and forearm translate without rotating"},
+    OutputSpec{"system_mass_kg", "kg", "implement plus hand, M",
+               [](const Evaluation& e) -> std::optional<double> { return e.system_mass_kg; }, ""},
+    OutputSpec{"system_com_from_butt_m", "m", "centre of mass of implement plus hand, h (Eq. 14)",
+               [](const Evaluation& e) -> std::optional<double> { return e.system_com_from_butt_m; },
+               ""},
+    OutputSpec{"system_I_cm_kg_m2", "kg m^2", "inertia of implement plus hand about h, I_cm",
+               [](const Evaluation& e) -> std::optional<double> { return e.system_I_cm_kg_m2; }, ""},
+};
+
+}  // namespace
+
+std::span<const OutputSpec> output_specs() { return kOutputs; }
+
+const OutputSpec* find_output(std::string_view name) {
+  for (const OutputSpec& output : kOutputs) {
+    if (output.name == name) return &output;
+  }
+  return nullptr;
+}
+
+}  // namespace sweetspot::io

@@ -1,0 +1,284 @@
+#include "sweetspot/io/paper_reports.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include "sweetspot/io/atomic_file.hpp"
+#include "sweetspot/io/input_error.hpp"
+#include "sweetspot/rigid_impact.hpp"
+#include "sweetspot/roots.hpp"
+
+namespace sweetspot::io {
+namespace {
+
+// The accelerometers of Section II: 2 and 16 cm from the handle end.
+constexpr double kDisk2_m = 0.02;
+constexpr double kDisk16_m = 0.16;
+// Resolution of the figures' curves along the beam.
+constexpr double kFigureStep_m = 0.005;
+// Where to look for the crossing of Fig. 11 and how precisely.
+constexpr double kCrossingSearchLo_m = 0.10;
+constexpr double kCrossingSearchHi_m = 0.30;
+constexpr double kCrossingTolerance_m = 1e-9;
+
+std::optional<double> reference(const DesignFile& file, const char* name) {
+  if (!file.reference.is_object() || !file.reference.contains(name)) return std::nullopt;
+  return file.reference[name].get<double>();
+}
+
+std::optional<double> head_to_handle_ratio(const Implement& implement) {
+  const auto& s = implement.sections();
+  if (s.size() != 2 || s[0].mass_kg == 0.0) return std::nullopt;
+  return s[1].mass_kg / s[0].mass_kg;
+}
+
+std::vector<double> impact_distances(double length_m) {
+  std::vector<double> d;
+  const int steps = static_cast<int>(std::lround(length_m / kFigureStep_m));
+  for (int i = 0; i <= steps; ++i) d.push_back(std::min(length_m, i * kFigureStep_m));
+  return d;
+}
+
+std::string optional_csv(const std::optional<double>& value) {
+  return value ? exact(*value) : std::string();
+}
+
+std::optional<double> diff(double ours, const std::optional<double>& paper) {
+  if (!paper) return std::nullopt;
+  return ours - *paper;
+}
+
+}  // namespace
+
+std::vector<Table1Row> compute_table1(const std::string& dir) {
+  std::vector<Table1Row> rows;
+  for (int row = 1; row <= kTableIRows; ++row) {
+    DesignFile file = load_design(fmt::format("{}/row{}.json", dir, row));
+    const Evaluation evaluation = evaluate(file.design);
+    const auto F0 = reference(file, "peak_impact_force_N");
+    const auto Fw = reference(file, "peak_wrist_force_N");
+    rows.push_back(Table1Row{row, std::move(file), evaluation, F0, Fw});
+  }
+  return rows;
+}
+
+std::string table1_report(const std::vector<Table1Row>& rows, Format format) {
+  if (format == Format::kJson) {
+    Json j = Json::array();
+    for (const Table1Row& r : rows) {
+      j.push_back({{"row", r.row},
+                   {"name", r.design.name},
+                   {"peak_impact_force_N", r.evaluation.peak_impact_force_N},
+                   {"peak_wrist_force_N", r.evaluation.peak_wrist_force_N},
+                   {"paper_F0_N", r.paper_F0_N ? Json(*r.paper_F0_N) : Json(nullptr)},
+                   {"paper_Fw_N", r.paper_Fw_N ? Json(*r.paper_Fw_N) : Json(nullptr)}});
+    }
+    return j.dump(2) + "\n";
+  }
+  if (format == Format::kCsv) {
+    std::string csv =
+        "row,mass_kg,head_to_handle_mass_ratio,cor,impact_duration_s,hand_mass_kg,"
+        "forearm_equivalent_mass_kg,effective_mass_kg,apparent_cor,peak_impact_force_N,"
+        "peak_wrist_force_N,paper_F0_N,paper_Fw_N,diff_F0_N,diff_Fw_N\n";
+    for (const Table1Row& r : rows) {
+      const Design& d = r.design.design;
+      const Evaluation& e = r.evaluation;
+      csv += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", r.row, exact(e.mass_kg),
+                         optional_csv(head_to_handle_ratio(d.implement)), exact(d.cor),
+                         exact(d.impact_duration_s), exact(d.hand.mass_kg),
+                         exact(d.forearm_equivalent_mass_kg), exact(e.effective_mass_kg),
+                         exact(e.apparent_cor), exact(e.peak_impact_force_N),
+                         exact(e.peak_wrist_force_N), optional_csv(r.paper_F0_N),
+                         optional_csv(r.paper_Fw_N),
+                         optional_csv(diff(e.peak_impact_force_N, r.paper_F0_N)),
+                         optional_csv(diff(e.peak_wrist_force_N, r.paper_Fw_N)));
+    }
+    return csv;
+  }
+  std::string md =
+      "# Table I of Cross (2004), recomputed\n\n"
+      "A 70 cm racquet struck 5 cm from the tip by a 57 g ball at 50 m/s relative to the "
+      "strings; hand centre 7 cm from the butt, wrist at the butt. Masses in kg, T in ms, forces "
+      "in N. F0 is Eq. (15) with Eqs. (16)-(17); F_w is Eq. (11) times F0. The paper prints "
+      "whole newtons.\n\n"
+      "| row | M_b | M1/M2 | e | T | M_h | M_e | M_eff | e_A | F0 | paper F0 | ΔF0 | F_w | "
+      "paper F_w | ΔF_w |\n"
+      "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  double worst_F0 = 0.0, worst_Fw = 0.0;
+  for (const Table1Row& r : rows) {
+    const Design& d = r.design.design;
+    const Evaluation& e = r.evaluation;
+    const auto dF0 = diff(e.peak_impact_force_N, r.paper_F0_N);
+    const auto dFw = diff(e.peak_wrist_force_N, r.paper_Fw_N);
+    if (dF0) worst_F0 = std::max(worst_F0, std::abs(*dF0));
+    if (dFw) worst_Fw = std::max(worst_Fw, std::abs(*dFw));
+    const auto ratio = head_to_handle_ratio(d.implement);
+    const auto show = [](const std::optional<double>& v, const char* spec) {
+      return v ? fmt::format(fmt::runtime(spec), *v) : std::string("—");
+    };
+    md += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {:.4f} | {:.4f} | {:.1f} | {} | {} | "
+                      "{:.1f} | {} | {} |\n",
+                      r.row, significant(e.mass_kg), show(ratio, "{:.2g}"), significant(d.cor),
+                      significant(d.impact_duration_s * 1000.0), significant(d.hand.mass_kg),
+                      significant(d.forearm_equivalent_mass_kg), e.effective_mass_kg,
+                      e.apparent_cor, e.peak_impact_force_N, show(r.paper_F0_N, "{:.0f}"),
+                      show(dF0, "{:+.2f}"), e.peak_wrist_force_N, show(r.paper_Fw_N, "{:.0f}"),
+                      show(dFw, "{:+.2f}"));
+  }
+  md += fmt::format(
+      "\nLargest difference from the printed values: {:.2f} N in F0 and {:.2f} N in F_w, "
+      "within the paper's rounding to whole newtons (row 5's F0 = 744.8 N is printed 744, "
+      "truncated rather than rounded).\n",
+      worst_F0, worst_Fw);
+  return md;
+}
+
+Figure figure5(const DesignFile& beam) {
+  const MassProperties& body = beam.design.implement.mass_properties();
+  const double L = beam.design.implement.length_m();
+  Figure figure;
+  figure.csv = "d_from_free_end_m,impact_from_butt_m,v2_over_v16\n";
+  PlotSeries curve{"Eq. (6), free beam", {}, {}};
+  for (const double d : impact_distances(L)) {
+    const double x = L - d;
+    const auto ratio = velocity_ratio(body, x, kDisk2_m, kDisk16_m);
+    figure.csv += fmt::format("{},{},{}\n", exact(d), exact(x), optional_csv(ratio));
+    curve.x.push_back(d * 100.0);
+    curve.y.push_back(ratio);
+  }
+  const auto zero = free_conjugate_from_butt(body, kDisk2_m);
+  const auto pole = free_conjugate_from_butt(body, kDisk16_m);
+  figure.plot = Plot{"Fig. 5: velocity ratio v2/v16 of the free beam (Cross 2004, Eq. 6)",
+                     "impact distance d from the free end (cm)",
+                     "v2 / v16 (dimensionless)",
+                     std::pair{0.0, L * 100.0},
+                     std::pair{-4.0, 4.0},
+                     {curve},
+                     {PlotMarker{(L - body.com_from_butt_m) * 100.0, 1.0, "centre: v2/v16 = 1"}},
+                     {}};
+  if (zero) figure.plot.vertical_lines.push_back({(L - *zero) * 100.0, "COP for the 2 cm disk"});
+  if (pole) figure.plot.vertical_lines.push_back({(L - *pole) * 100.0, "COP for the 16 cm disk"});
+  figure.summary = fmt::format(
+      "v2/v16 is 0 at d = {:.1f} cm (paper: COP 23.3 cm from the end), has its pole at d = "
+      "{:.1f} cm (paper: 14.4 cm) and is 1 at the centre, d = {:.0f} cm (paper: 36 cm).",
+      zero ? (L - *zero) * 100.0 : NAN, pole ? (L - *pole) * 100.0 : NAN,
+      (L - body.com_from_butt_m) * 100.0);
+  return figure;
+}
+
+namespace {
+std::optional<double> free_axis(const DesignFile& beam, double d) {
+  const Implement& implement = beam.design.implement;
+  return free_conjugate_from_butt(implement.mass_properties(), implement.length_m() - d);
+}
+std::optional<double> hand_axis(const DesignFile& beam, double d) {
+  const Implement& implement = beam.design.implement;
+  return hand_held_rotation_axis_from_butt(hand_held_system(beam.design),
+                                           beam.design.forearm_equivalent_mass_kg,
+                                           implement.length_m() - d);
+}
+}  // namespace
+
+std::optional<AxesCrossing> figure11_crossing(const DesignFile& beam) {
+  const auto gap = [&](double d) {
+    const auto free = free_axis(beam, d);
+    const auto hand = hand_axis(beam, d);
+    return free && hand ? *free - *hand : NAN;
+  };
+  const auto d = bisect(gap, kCrossingSearchLo_m, kCrossingSearchHi_m, kCrossingTolerance_m);
+  if (!d) return std::nullopt;
+  return AxesCrossing{*d, *hand_axis(beam, *d)};
+}
+
+Figure figure11(const DesignFile& beam) {
+  const double L = beam.design.implement.length_m();
+  Figure figure;
+  figure.csv = "d_from_free_end_m,s_free_m,s_hand_m\n";
+  PlotSeries free{"free beam (Eq. 5)", {}, {}};
+  PlotSeries hand{fmt::format("hand-held, M_h = {} kg, M_e = {} kg (Eq. 12)",
+                              significant(beam.design.hand.mass_kg),
+                              significant(beam.design.forearm_equivalent_mass_kg)),
+                  {},
+                  {}};
+  for (const double d : impact_distances(L)) {
+    const auto s_free = free_axis(beam, d);
+    const auto s_hand = hand_axis(beam, d);
+    figure.csv += fmt::format("{},{},{}\n", exact(d), optional_csv(s_free), optional_csv(s_hand));
+    free.x.push_back(d * 100.0);
+    hand.x.push_back(d * 100.0);
+    free.y.push_back(s_free ? std::optional(*s_free * 100.0) : std::nullopt);
+    hand.y.push_back(s_hand ? std::optional(*s_hand * 100.0) : std::nullopt);
+  }
+  figure.plot = Plot{"Fig. 11: rotation axis s against impact point d (Cross 2004)",
+                     "impact distance d from the free end (cm)",
+                     "rotation axis s from the handle end (cm)",
+                     std::pair{0.0, L * 100.0},
+                     std::pair{-30.0, 40.0},
+                     {free, hand},
+                     {},
+                     {}};
+  const auto crossing = figure11_crossing(beam);
+  if (crossing) {
+    figure.plot.markers.push_back(PlotMarker{
+        crossing->d_m * 100.0, crossing->s_m * 100.0,
+        fmt::format("d = {:.1f} cm, s = {:.1f} cm", crossing->d_m * 100.0, crossing->s_m * 100.0)});
+    figure.summary = fmt::format(
+        "The free and hand-held axes coincide at d = {:.1f} cm with the axis {:.1f} cm from the "
+        "handle end (paper: 22.8 cm and 3.2 cm).",
+        crossing->d_m * 100.0, crossing->s_m * 100.0);
+  } else {
+    figure.summary = "The free and hand-held axes do not coincide between d = 10 and 30 cm.";
+  }
+  return figure;
+}
+
+void write_paper_reports(const std::string& designs_dir, const std::string& out_dir,
+                         std::ostream& log) {
+  // Read and compute everything before writing anything.
+  const std::vector<Table1Row> rows = compute_table1(designs_dir + "/table1");
+  const DesignFile beam = load_design(designs_dir + "/paper-beam.json");
+  const Figure fig5 = figure5(beam);
+  const Figure fig11 = figure11(beam);
+
+  std::filesystem::create_directories(out_dir);
+  const auto write = [&](const std::string& name, const std::string& content) {
+    write_file_atomically(out_dir + "/" + name, content);
+    log << "wrote " << out_dir << "/" << name << "\n";
+  };
+  const std::string table_md = table1_report(rows, Format::kMarkdown);
+  write("table1.md", table_md);
+  write("table1.csv", table1_report(rows, Format::kCsv));
+  write("fig5.csv", fig5.csv);
+  write("fig11.csv", fig11.csv);
+  for (const auto& [name, figure] : {std::pair{"fig5.png", &fig5}, std::pair{"fig11.png", &fig11}}) {
+    std::string why;
+    if (render_png(figure->plot, out_dir + "/" + name, &why)) {
+      log << "wrote " << out_dir << "/" << name << "\n";
+    } else {
+      log << "skipped " << out_dir << "/" << name << ": " << why << "\n";
+    }
+  }
+  const std::string last_line = table_md.substr(table_md.rfind("\nLargest") + 1);
+  write("README.md",
+        "# sweetspot reports\n\n"
+        "Written by `scripts/run` (that is, `sweetspot report`); do not edit by hand. A test "
+        "regenerates every `.md` and `.csv` here and fails when they differ from what is "
+        "committed. The PNG plots are rendered by gnuplot from the same data.\n\n"
+        "| file | what it shows |\n|---|---|\n"
+        "| [table1.md](table1.md), [table1.csv](table1.csv) | Table I of the paper: peak force on "
+        "the strings F0 and on the wrist F_w for eight racquet/player combinations, next to the "
+        "printed values. |\n"
+        "| [fig5.csv](fig5.csv), [fig5.png](fig5.png) | Fig. 5: velocity ratio v2/v16 of the "
+        "free 72 cm beam against the impact distance d from the free end (Eq. 6). |\n"
+        "| [fig11.csv](fig11.csv), [fig11.png](fig11.png) | Fig. 11: rotation axis s (from the "
+        "handle end) against d, for the free beam and the beam held in the hand. |\n\n"
+        "## Against the paper\n\n"
+        "- Table I: " + last_line +
+        "- Fig. 5: " + fig5.summary + "\n"
+        "- Fig. 11: " + fig11.summary + "\n");
+}
+
+}  // namespace sweetspot::io

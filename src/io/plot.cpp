@@ -1,0 +1,101 @@
+#include "sweetspot/io/plot.hpp"
+
+#include <sys/wait.h>
+
+#include <cstdio>
+
+#include <fmt/format.h>
+
+#include "sweetspot/io/atomic_file.hpp"
+
+namespace sweetspot::io {
+namespace {
+
+std::string quoted(const std::string& text) {
+  std::string out = "\"";
+  for (const char c : text) {
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out + "\"";
+}
+
+bool on_plot(const Plot& plot, double y) {
+  return !plot.y_range || (y >= plot.y_range->first && y <= plot.y_range->second);
+}
+
+}  // namespace
+
+std::string gnuplot_script(const Plot& plot, const std::string& png_path) {
+  std::string s;
+  s += "set terminal pngcairo size 960,640 enhanced font 'DejaVu Sans,11'\n";
+  s += "set output " + quoted(png_path) + "\n";
+  s += "set title " + quoted(plot.title) + "\n";
+  s += "set xlabel " + quoted(plot.x_label) + "\n";
+  s += "set ylabel " + quoted(plot.y_label) + "\n";
+  s += "set grid\nset key top right box opaque\n";
+  if (plot.x_range) s += fmt::format("set xrange [{}:{}]\n", plot.x_range->first, plot.x_range->second);
+  if (plot.y_range) s += fmt::format("set yrange [{}:{}]\n", plot.y_range->first, plot.y_range->second);
+  int tag = 1;
+  for (const auto& [x, label] : plot.vertical_lines) {
+    s += fmt::format("set arrow {} from {},graph 0 to {},graph 1 nohead dt 2 lc rgb 'gray40'\n", tag,
+                     x, x);
+    // Stagger the labels so that neighbouring lines do not overwrite each other.
+    s += fmt::format("set label {} {} at {},graph {} left offset 0.5,0 tc rgb 'gray30'\n", tag,
+                     quoted(label), x, 0.96 - 0.06 * (tag - 1));
+    ++tag;
+  }
+  for (const PlotMarker& m : plot.markers) {
+    s += fmt::format("set label {} {} at {},{} left offset 1,-1 point pt 7 ps 1.2\n", tag++,
+                     quoted(m.label), m.x, m.y);
+  }
+  for (std::size_t i = 0; i < plot.series.size(); ++i) {
+    const PlotSeries& series = plot.series[i];
+    s += fmt::format("$series{} << EOD\n", i);
+    bool broken = true;
+    for (std::size_t k = 0; k < series.x.size(); ++k) {
+      const auto& y = series.y[k];
+      if (!y || !on_plot(plot, *y)) {
+        if (!broken) s += "\n";
+        broken = true;
+        continue;
+      }
+      s += fmt::format("{} {}\n", series.x[k], *y);
+      broken = false;
+    }
+    s += "EOD\n";
+  }
+  s += "plot ";
+  for (std::size_t i = 0; i < plot.series.size(); ++i) {
+    if (i) s += ", \\\n     ";
+    s += fmt::format("$series{} using 1:2 with {} title {}", i, plot.series[i].style,
+                     quoted(plot.series[i].title));
+  }
+  return s + "\n";
+}
+
+bool render_png(const Plot& plot, const std::string& png_path, std::string* why) {
+  const std::string temporary = temporary_path_for(png_path);
+  FILE* pipe = popen("gnuplot 2>&1 >/dev/null", "w");
+  if (!pipe) {
+    discard_file(temporary);
+    if (why) *why = "cannot start gnuplot";
+    return false;
+  }
+  const std::string script = gnuplot_script(plot, temporary);
+  std::fwrite(script.data(), 1, script.size(), pipe);
+  const int status = pclose(pipe);
+  if (status != 0) {
+    discard_file(temporary);
+    if (why) {
+      *why = WIFEXITED(status) && WEXITSTATUS(status) == 127
+                 ? "gnuplot is not installed (apt-get install gnuplot-nox)"
+                 : "gnuplot failed";
+    }
+    return false;
+  }
+  commit_file(temporary, png_path);
+  return true;
+}
+
+}  // namespace sweetspot::io

@@ -1,0 +1,216 @@
+// The command line as a user meets it: every class of bad input gets one line
+// on stderr naming the file and the JSON path, exit status 2, and no output
+// file. SWEETSPOT_CLI is the path of the built executable.
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Run {
+  int status = -1;
+  std::string out;
+  std::string err;
+};
+
+std::string slurp(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+class Sandbox {
+ public:
+  Sandbox() : dir_(fs::temp_directory_path() / ("sweetspot-cli-" + std::to_string(::getpid()))) {
+    fs::create_directories(dir_);
+  }
+  ~Sandbox() { fs::remove_all(dir_); }
+  fs::path file(const std::string& name, const std::string& content) const {
+    std::ofstream(dir_ / name, std::ios::binary) << content;
+    return dir_ / name;
+  }
+  fs::path path(const std::string& name) const { return dir_ / name; }
+
+  Run run(const std::string& arguments) const {
+    const std::string command = std::string("\"") + SWEETSPOT_CLI + "\" " + arguments + " >\"" +
+                                (dir_ / "stdout").string() + "\" 2>\"" + (dir_ / "stderr").string() +
+                                "\" </dev/null";
+    const int raw = std::system(command.c_str());
+    return Run{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(dir_ / "stdout"),
+               slurp(dir_ / "stderr")};
+  }
+
+ private:
+  fs::path dir_;
+};
+
+constexpr const char* kImplement =
+    R"("implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8})";
+
+std::string with_implement(const std::string& rest) {
+  return std::string("{") + kImplement + (rest.empty() ? "" : ", " + rest) + "}";
+}
+
+struct BadInput {
+  const char* what;
+  std::string content;
+  const char* pointer;   // must appear in the message ("" for whole-file errors)
+  const char* expected;  // must appear in the message too
+};
+
+TEST_CASE("Every class of bad design input exits 2 with one line naming file and JSON path") {
+  const Sandbox box;
+  const std::string deep = std::string(100, '[') + std::string(100, ']');
+  const BadInput cases[] = {
+      {"unknown key", with_implement(R"("colour": "red")"), "/colour", "unknown key"},
+      {"unknown nested key", with_implement(R"("hand": {"mass_kg": 0.5, "grip": "firm"})"),
+       "/hand/grip", "unknown key"},
+      {"missing implement", R"({"frame": {"cor": 0.8}})", "/implement", "missing"},
+      {"missing mass", R"({"implement": {"length_m": 0.7, "head_to_handle_mass_ratio": 1}})",
+       "/implement", "missing mass_kg"},
+      {"missing mass distribution", R"({"implement": {"length_m": 0.7, "mass_kg": 0.3}})",
+       "/implement", "head_to_handle_mass_ratio, sections"},
+      {"wrong type", R"({"implement": {"length_m": 0.7, "mass_kg": "heavy",
+        "head_to_handle_mass_ratio": 1}})", "/implement/mass_kg", "expected a number, got \"heavy\""},
+      {"wrong container type", with_implement(R"("hand": [0.5])"), "/hand", "expected a JSON object"},
+      {"out of range", with_implement(R"("hand": {"mass_kg": -0.5})"), "/hand/mass_kg",
+       "must be >= 0 kg, got -0.5"},
+      {"out of range COR", with_implement(R"("frame": {"cor": 1.2})"), "/frame/cor",
+       "must be in [0, 1], got 1.2"},
+      {"non-finite number", with_implement(R"("ball": {"speed_m_s": 1e999})"), "/ball/speed_m_s",
+       "finite"},
+      {"negative duration in ms", with_implement(R"("strings": {"impact_duration_ms": -4})"),
+       "/strings/impact_duration_ms", "must be > 0 s"},
+      {"contradictory units", R"({"implement": {"length_m": 0.7, "mass_kg": 0.25, "mass_g": 250,
+        "head_to_handle_mass_ratio": 0.8}})", "/implement/mass_g", "contradicts /implement/mass_kg"},
+      {"contradictory forearm", with_implement(R"("forearm": {"mass_kg": 1.5,
+        "equivalent_mass_kg": 0.5})"), "/forearm/", "give only one"},
+      {"contradictory impact", with_implement(R"("impact": {"from_tip_m": 0.05,
+        "from_butt_m": 0.6})"), "/impact", "once"},
+      {"duplicate key", R"({"implement": {"length_m": 0.7, "mass_kg": 0.25, "mass_kg": 0.3,
+        "head_to_handle_mass_ratio": 0.8}})", "/implement/mass_kg", "duplicate key"},
+      {"point mass beyond the tip", R"({"implement": {"length_m": 0.7, "mass_kg": 0.25,
+        "head_to_handle_mass_ratio": 0.8, "point_masses": [{"from_butt_m": 0.75, "mass_g": 5}]}})",
+       "/implement/point_masses/0/from_butt_m", "must be in [0, 0.7] m, got 0.75"},
+      {"balance outside the length", R"({"implement": {"length_in": 27, "mass_g": 300,
+        "balance_cm": 80, "swingweight_kg_cm2": 320}})", "/implement/balance_cm",
+       "inside the length"},
+      {"swingweight below mass at balance", R"({"implement": {"length_in": 27, "mass_g": 300,
+        "balance_cm": 32, "swingweight_kg_cm2": 100}})", "/implement/swingweight_kg_cm2",
+       "must be in"},
+      {"impact off the implement", with_implement(R"("impact": {"from_tip_m": 0.9})"),
+       "/impact/from_tip_m", "must be in [0, 0.7] m"},
+      {"zero-length section", R"({"implement": {"sections": [{"length_m": 0, "mass_kg": 0.3}]}})",
+       "/implement/sections/0/length_m", "must be > 0 m"},
+      {"non-positive EI", R"({"implement": {"sections": [{"length_m": 0.7, "mass_kg": 0.3,
+        "EI_N_m2": -5}]}})", "/implement/sections/0/EI_N_m2", "must be > 0 N m^2"},
+      {"unknown reference output", with_implement(R"("reference": {"peak_force": 3})"),
+       "/reference/peak_force", "unknown key"},
+      {"malformed JSON", R"({"implement": {"length_m": 0.7,, }})", "", "not valid JSON"},
+      {"truncated JSON", R"({"implement": {"length_m": 0.7, "mass_kg": 0.25)", "", "not valid JSON"},
+      {"not an object", "[1, 2, 3]", "/", "expected a JSON object"},
+      {"empty file", "", "", "empty"},
+      {"binary file", std::string("\x7f" "ELF\0\0\x01", 7), "", "binary"},
+      {"invalid UTF-8", with_implement("\"name\": \"\xff\xfe\""), "", "not valid JSON"},
+      {"deep nesting", with_implement("\"name\": " + deep), "/name", "nesting deeper"},
+  };
+  for (const BadInput& c : cases) {
+    INFO(c.what << ": " << c.content);
+    const fs::path design = box.file("design.json", c.content);
+    const fs::path output = box.path("out.json");
+    const Run run = box.run("evaluate \"" + design.string() + "\" --format json --output \"" +
+                            output.string() + "\"");
+    INFO("stderr: " << run.err);
+    CHECK(run.status == 2);
+    CHECK(run.out.empty());
+    CHECK(run.err.find(design.string() + ": " + c.pointer) != std::string::npos);
+    CHECK(run.err.find(c.expected) != std::string::npos);
+    CHECK(std::count(run.err.begin(), run.err.end(), '\n') == 1);
+    CHECK_FALSE(fs::exists(output));
+  }
+}
+
+TEST_CASE("A missing design file is bad input, not a crash") {
+  const Sandbox box;
+  const Run run = box.run("evaluate \"" + box.path("nowhere.json").string() + "\"");
+  CHECK(run.status == 2);
+  CHECK(run.err.find("cannot open") != std::string::npos);
+}
+
+TEST_CASE("Bad input never clobbers an existing output file, and no temporary is left") {
+  const Sandbox box;
+  const fs::path output = box.file("report.md", "previous report\n");
+  const fs::path design = box.file("bad.json", with_implement(R"("frame": {"cor": -1})"));
+  CHECK(box.run("evaluate \"" + design.string() + "\" --output \"" + output.string() + "\"").status ==
+        2);
+  CHECK(slurp(output) == "previous report\n");
+  const fs::path good = box.file("good.json", with_implement(""));
+  CHECK(box.run("evaluate \"" + good.string() + "\" --output \"" + output.string() + "\"").status == 0);
+  CHECK(slurp(output).find("peak_wrist_force_N") != std::string::npos);
+  for (const auto& entry : fs::directory_iterator(output.parent_path())) {
+    CHECK(entry.path().filename().string().find(".tmp.") == std::string::npos);
+  }
+}
+
+TEST_CASE("evaluate --format json carries every output the issue names") {
+  const Sandbox box;
+  const fs::path design = box.file("d.json", with_implement(""));
+  const Run run = box.run("evaluate \"" + design.string() + "\" --format json");
+  REQUIRE(run.status == 0);
+  for (const char* key :
+       {"\"mass_kg\"", "\"balance_from_butt_m\"", "\"I_cm_kg_m2\"", "\"swingweight_kg_cm2\"",
+        "\"recoil_weight_kg_cm2\"", "\"effective_mass_kg\"", "\"apparent_cor\"",
+        "\"peak_impact_force_N\"", "\"wrist_force_ratio\"", "\"peak_wrist_force_N\"",
+        "\"cop_free_from_tip_m\"", "\"cop_hand_from_tip_m\"", "\"rotation_axis_free_from_butt_m\"",
+        "\"rotation_axis_hand_from_butt_m\"", "\"system_com_from_butt_m\"", "\"system_I_cm_kg_m2\""}) {
+    INFO(key);
+    CHECK(run.out.find(key) != std::string::npos);
+  }
+}
+
+TEST_CASE("An axis at infinity is null in JSON with the reason beside it") {
+  const Sandbox box;
+  // A uniform 0.7 m beam with no hand, struck at its centre.
+  const fs::path design = box.file("c.json", R"({"implement": {"sections": [{"length_m": 0.7,
+      "mass_kg": 0.3}]}, "hand": {"mass_kg": 0}, "forearm": {"equivalent_mass_kg": 0},
+      "impact": {"from_butt_m": 0.35}})");
+  const Run run = box.run("evaluate \"" + design.string() + "\" --format json");
+  REQUIRE(run.status == 0);
+  CHECK(run.out.find("\"rotation_axis_free_from_butt_m\": null") != std::string::npos);
+  CHECK(run.out.find("at infinity") != std::string::npos);
+  // Every null output carries its reason: no NaN slipped out as a bare null.
+  const nlohmann::json j = nlohmann::json::parse(run.out);
+  for (const auto& [name, value] : j["outputs"].items()) {
+    INFO(name);
+    CHECK((!value.is_null() || j["notes"].contains(name)));
+  }
+}
+
+TEST_CASE("Usage errors exit 2 and --help, --version exit 0") {
+  const Sandbox box;
+  CHECK(box.run("").status == 2);
+  CHECK(box.run("frobnicate").status == 2);
+  CHECK(box.run("evaluate").status == 2);
+  CHECK(box.run("figure 7").status == 2);
+  CHECK(box.run("evaluate x.json --format xml").status == 2);
+  const Run help = box.run("--help");
+  CHECK(help.status == 0);
+  CHECK(help.out.find("evaluate") != std::string::npos);
+  CHECK(box.run("evaluate --help").status == 0);
+  const Run version = box.run("--version");
+  CHECK(version.status == 0);
+  CHECK(version.out.find("sweetspot ") != std::string::npos);
+}
+
+}  // namespace
