@@ -5,6 +5,9 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <unistd.h>
+
+#include <fstream>
 #include <iostream>
 #include <string>
 
@@ -14,6 +17,7 @@
 #include "sweetspot/io/format.hpp"
 #include "sweetspot/io/input_error.hpp"
 #include "sweetspot/io/paper_reports.hpp"
+#include "sweetspot/io/study.hpp"
 
 namespace {
 
@@ -40,6 +44,101 @@ struct OutputOptions {
     } else {
       sweetspot::io::write_file_atomically(output, text);
     }
+  }
+};
+
+// Renders a plot, or says on stderr why it could not.
+int render_or_warn(const sweetspot::io::Plot& plot, const std::string& png) {
+  std::string why;
+  if (sweetspot::io::render_png(plot, png, &why)) return 0;
+  std::cerr << "sweetspot: " << png << ": " << why << "\n";
+  return kExitRuntimeError;
+}
+
+struct OptimizeCommand {
+  CLI::App* command = nullptr;
+  std::string study_path;
+  std::string plot;
+  OutputOptions out;
+
+  void add_to(CLI::App& app) {
+    command = app.add_subcommand(
+        "optimize", "Search a study's variables for the best design under its constraints (NLopt)");
+    command->add_option("study", study_path, "Study file (JSON)")->required();
+    command->add_option("--plot", plot, "Also render the convergence plot to this PNG file");
+    out.add_to(command);
+  }
+
+  int run() const {
+    const auto study = sweetspot::io::load_study(study_path);
+    const auto result = sweetspot::io::run_optimization(study);
+    out.emit(sweetspot::io::optimization_report(study, result, out.parsed(), true));
+    if (out.parsed() == Format::kMarkdown && !out.output.empty()) {
+      std::cerr << result.summary.brief_report() << "\n";
+    }
+    return plot.empty() ? 0 : render_or_warn(sweetspot::io::convergence_plot(study, result), plot);
+  }
+};
+
+struct SweepCommand {
+  CLI::App* command = nullptr;
+  std::string study_path;
+  std::string csv_path;
+  std::string plot;
+  bool quiet = false;
+
+  void add_to(CLI::App& app) {
+    command = app.add_subcommand(
+        "sweep", "What-if grid over one or two of a study's variables: every output at every point (CSV)");
+    command->add_option("study", study_path, "Study file (JSON) with variables, grid and outputs")
+        ->required();
+    command->add_option("--output,-o", csv_path, "Write the CSV to FILE (atomically) instead of stdout");
+    command->add_option("--plot", plot,
+                        "Also render plots: FILE.png, or FILE-<output>.png for several outputs");
+    command->add_flag("--quiet,-q", quiet, "No progress on the terminal");
+  }
+
+  int run() const {
+    const auto study = sweetspot::io::load_study(study_path);
+    const bool show_progress = !quiet && isatty(fileno(stderr));
+    const auto progress = [&](std::size_t done, std::size_t total) {
+      if (show_progress) std::cerr << fmt::format("\r{}/{} designs", done, total) << std::flush;
+      if (show_progress && done == total) std::cerr << "\n";
+    };
+    std::vector<sweetspot::io::Plot> plots;
+    if (csv_path.empty()) {
+      plots = sweetspot::io::run_sweep(study, std::cout, progress);
+    } else {
+      // Stream into a temporary file beside the target; rename when complete.
+      const std::string temporary = sweetspot::io::temporary_path_for(csv_path);
+      try {
+        std::ofstream file(temporary, std::ios::binary);
+        plots = sweetspot::io::run_sweep(study, file, progress);
+        file.close();
+        if (!file) throw std::runtime_error("cannot write " + csv_path);
+        sweetspot::io::commit_file(temporary, csv_path);
+      } catch (...) {
+        sweetspot::io::discard_file(temporary);
+        throw;
+      }
+    }
+    if (plot.empty()) return 0;
+    if (plots.empty()) {
+      std::cerr << "sweetspot: no plot: the grid has more than " << sweetspot::io::kMaxPlotPoints
+                << " points\n";
+      return 0;
+    }
+    int status = 0;
+    for (std::size_t k = 0; k < plots.size(); ++k) {
+      std::string png = plot;
+      if (plots.size() > 1) {
+        const auto dot = png.rfind(".png");
+        png = (dot == std::string::npos ? png : png.substr(0, dot)) + "-" +
+              std::string(study.sweep_outputs[k]->name) + ".png";
+      }
+      status = std::max(status, render_or_warn(plots[k], png));
+    }
+    return status;
   }
 };
 
@@ -84,6 +183,11 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   report->add_option("--out", report_dir, "Folder to write")->capture_default_str();
 
+  OptimizeCommand optimize_cmd;
+  optimize_cmd.add_to(app);
+  SweepCommand sweep_cmd;
+  sweep_cmd.add_to(app);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -124,6 +228,10 @@ int main(int argc, char** argv) {
       }
     } else if (*report) {
       sweetspot::io::write_paper_reports(report_designs, report_dir, std::cout);
+    } else if (*optimize_cmd.command) {
+      return optimize_cmd.run();
+    } else if (*sweep_cmd.command) {
+      return sweep_cmd.run();
     }
   } catch (const sweetspot::io::InputError& e) {
     std::cerr << "sweetspot: " << e.what() << "\n";

@@ -18,6 +18,7 @@ struct OutputSpec {
   std::string_view description;  // one line, citing the paper's equation
   std::optional<double> (*value)(const Evaluation&);
   std::string_view when_absent;  // why the value can be null ("" if never)
+  bool kinked = false;           // has a kink (an absolute value): not smooth everywhere
 };
 
 // Every output, in report order.

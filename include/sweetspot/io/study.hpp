@@ -1,0 +1,121 @@
+#pragma once
+
+// Study files: what to change (design fields addressed by JSON pointer, with
+// bounds), what to minimise, under which constraints; run as an optimisation
+// (`sweetspot optimize`) or as a grid of what-ifs (`sweetspot sweep`).
+// The format is documented in README.md.
+
+#include <functional>
+#include <optional>
+#include <ostream>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "sweetspot/io/design_reader.hpp"
+#include "sweetspot/io/format.hpp"
+#include "sweetspot/io/outputs.hpp"
+#include "sweetspot/io/plot.hpp"
+#include "sweetspot/optimize.hpp"
+
+namespace sweetspot::io {
+
+// Stands in for an output the physics puts at infinity (or a design a
+// variable made invalid) inside an objective or constraint: large, finite.
+inline constexpr double kPenalty = 1e12;
+
+struct StudyVariable {
+  std::string pointer;  // JSON pointer into the design, e.g. "/implement/mass_kg"
+  double min = 0.0;
+  double max = 0.0;
+  double start = 0.0;   // "start", else the design's value if inside the bounds, else the middle
+  std::vector<double> values;  // sweep: the grid along this variable
+};
+
+enum class Goal { kMinimize, kMaximize, kTarget };
+
+struct ObjectiveTerm {
+  const OutputSpec* output = nullptr;
+  Goal goal = Goal::kMinimize;
+  double target = 0.0;  // for kTarget: the term is weight * (value - target)^2
+  double weight = 1.0;
+};
+
+// Players do not hit one point: evaluate the objective at `points` impacts
+// evenly spread from `from_tip_lo_m` to `from_tip_hi_m` and reduce.
+struct ImpactSpread {
+  double from_tip_lo_m = 0.0;
+  double from_tip_hi_m = 0.0;
+  int points = 2;
+  enum class Reduce { kMax, kMean } reduce = Reduce::kMax;
+};
+
+struct StudyConstraint {
+  const OutputSpec* output = nullptr;
+  std::optional<double> min, max, equals;
+  double tolerance = 0.0;  // how far outside a limit still counts as on it
+};
+
+struct Study {
+  std::string source;  // the study file
+  std::string name;
+  std::string question;  // optional: the question in a coach's words
+  Json design_document;  // the design as written, variables set by pointer
+  std::string design_source;
+  std::vector<StudyVariable> variables;
+  std::vector<ObjectiveTerm> objective;
+  std::optional<ImpactSpread> over_impacts;
+  std::vector<StudyConstraint> constraints;
+  OptimizeOptions options;
+  std::vector<const OutputSpec*> sweep_outputs;  // outputs a sweep writes
+};
+
+// Reads a study file; `design` paths are relative to the study's folder.
+// Throws InputError naming the study file and the JSON path.
+Study load_study(const std::string& path);
+Study read_study(const Json& document, const std::string& source, const std::string& folder);
+
+// The design with the variables set to x. Throws InputError when x makes it invalid.
+DesignFile design_at(const Study& study, std::span<const double> x);
+
+// The objective (to minimise) of a design: the weighted terms, reduced over
+// the impact spread when the study has one.
+double objective_of(const Study& study, const DesignFile& design);
+
+// The study as an optimisation problem for sweetspot::minimize.
+Problem make_problem(const Study& study);
+
+struct ConstraintReport {
+  std::string name;  // "swingweight_kg_cm2 <= 330"
+  double value = 0.0;
+  bool satisfied = false;
+  bool active = false;  // on its limit: removing it would change the optimum
+};
+
+struct OptimizationResult {
+  Summary summary;
+  std::vector<double> start_x;
+  DesignFile start;
+  DesignFile best;
+  double start_objective = 0.0;
+  std::vector<ConstraintReport> constraints;
+};
+
+OptimizationResult run_optimization(const Study& study);
+
+// The report: a sentence, then the numbers. `with_timing` adds the wall time
+// (left out of committed reports so that they are reproducible).
+std::string optimization_report(const Study& study, const OptimizationResult& result, Format format,
+                                bool with_timing);
+Plot convergence_plot(const Study& study, const OptimizationResult& result);
+
+// A sweep over the grid of the study's variables (one or two), streaming one
+// CSV row per point to `csv` in grid order (the first variable fastest);
+// `progress(done, total)` is called now and then. Returns one plot per output
+// against the first variable, a line per value of the second; plot data is
+// kept only for grids up to kMaxPlotPoints (memory stays bounded).
+inline constexpr std::size_t kMaxPlotPoints = 100000;
+std::vector<Plot> run_sweep(const Study& study, std::ostream& csv,
+                            const std::function<void(std::size_t, std::size_t)>& progress);
+
+}  // namespace sweetspot::io

@@ -1,0 +1,455 @@
+#include "sweetspot/optimize.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <nlopt.hpp>
+#include <numeric>
+#include <optional>
+#include <random>
+#include <sstream>
+#include <stdexcept>
+
+#include "check.hpp"
+
+namespace sweetspot {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Thrown from inside NLopt callbacks when the evaluation budget is spent;
+// NLopt turns it into a forced stop.
+struct BudgetSpent {};
+
+std::optional<nlopt::algorithm> algorithm_from_name(const std::string& name) {
+  for (int i = 0; i < NLOPT_NUM_ALGORITHMS; ++i) {
+    const auto a = static_cast<nlopt_algorithm>(i);
+    if (name == nlopt_algorithm_to_string(a)) return static_cast<nlopt::algorithm>(a);
+  }
+  return std::nullopt;
+}
+
+std::string result_name(nlopt::result r) {
+  return nlopt_result_to_string(static_cast<nlopt_result>(r));
+}
+
+// Evaluates the problem with a one-point cache (NLopt asks for the objective
+// and the constraints at the same x in separate calls), difference gradients
+// of all of them from one set of evaluations, the evaluation budget, and the
+// best point seen.
+class Evaluator {
+ public:
+  Evaluator(const Problem& problem, const OptimizeOptions& options)
+      : problem_(problem), options_(options), n_(problem.lower.size()),
+        m_(problem.constraints.size()), start_(Clock::now()) {}
+
+  // [objective, constraint 0, ...] at x.
+  const std::vector<double>& values(std::span<const double> x) {
+    if (!cache_x_.empty() && std::equal(x.begin(), x.end(), cache_x_.begin())) return cache_values_;
+    cache_x_.assign(x.begin(), x.end());
+    cache_values_ = evaluate(x);
+    cache_jacobian_.clear();
+    return cache_values_;
+  }
+
+  // Rows [objective, constraint 0, ...], each of size n: central differences.
+  const std::vector<std::vector<double>>& jacobian(std::span<const double> x) {
+    values(x);
+    if (!cache_jacobian_.empty()) return cache_jacobian_;
+    std::vector<std::vector<double>> rows(1 + m_, std::vector<double>(n_));
+    std::vector<double> probe(x.begin(), x.end());
+    for (std::size_t i = 0; i < n_; ++i) {
+      const double h = options_.difference_step_rel * (problem_.upper[i] - problem_.lower[i]);
+      const double lo = std::max(problem_.lower[i], x[i] - h);
+      const double hi = std::min(problem_.upper[i], x[i] + h);
+      probe[i] = hi;
+      const std::vector<double> plus = evaluate(probe);
+      probe[i] = lo;
+      const std::vector<double> minus = evaluate(probe);
+      probe[i] = x[i];
+      for (std::size_t k = 0; k <= m_; ++k) rows[k][i] = (plus[k] - minus[k]) / (hi - lo);
+    }
+    cache_jacobian_ = std::move(rows);
+    return cache_jacobian_;
+  }
+
+  double violation(const std::vector<double>& v) const {
+    double worst = 0.0;
+    for (std::size_t k = 0; k < m_; ++k) {
+      const ConstraintInfo& c = problem_.constraints[k];
+      const double excess = c.kind == ConstraintKind::kZero ? std::abs(v[1 + k]) : v[1 + k];
+      worst = std::max(worst, excess / c.tolerance);
+    }
+    return worst;  // <= 1: feasible
+  }
+
+  // Orders points: feasible before infeasible, then by objective or violation.
+  bool better(const std::vector<double>& a, const std::vector<double>& b) const {
+    const double va = violation(a), vb = violation(b);
+    const bool fa = va <= 1.0, fb = vb <= 1.0;
+    if (fa != fb) return fa;
+    return fa ? a[0] < b[0] : va < vb;
+  }
+
+  int evaluations() const { return evaluations_; }
+  const std::vector<double>& best_x() const { return best_x_; }
+  const std::vector<double>& best_values() const { return best_values_; }
+  std::vector<double>& history() { return history_; }
+  double seconds() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
+  bool spent() const {
+    return evaluations_ >= options_.max_evaluations || seconds() >= options_.max_seconds;
+  }
+
+ private:
+  std::vector<double> evaluate(std::span<const double> x) {
+    if (spent()) throw BudgetSpent{};
+    std::vector<double> v(1 + m_);
+    problem_.evaluate(x, v[0], std::span<double>(v).subspan(1));
+    for (double& value : v) {
+      if (!std::isfinite(value)) value = std::numeric_limits<double>::max() / 4;  // never NaN to NLopt
+    }
+    ++evaluations_;
+    if (best_x_.empty() || better(v, best_values_)) {
+      best_x_.assign(x.begin(), x.end());
+      best_values_ = v;
+    }
+    history_.push_back(best_values_[0]);
+    return v;
+  }
+
+  const Problem& problem_;
+  const OptimizeOptions& options_;
+  std::size_t n_, m_;
+  Clock::time_point start_;
+  int evaluations_ = 0;
+  std::vector<double> cache_x_, cache_values_;
+  std::vector<std::vector<double>> cache_jacobian_;
+  std::vector<double> best_x_, best_values_, history_;
+};
+
+// NLopt works on the unit box u in [0, 1]^n (x = lower + u (upper - lower))
+// with the objective divided by its size at the run's start and each
+// constraint by its own: gradient methods (SLSQP in particular) then behave
+// the same whatever the units of the design variables and outputs.
+struct Scaling {
+  std::vector<double> lower, range;
+  double objective = 1.0;
+  std::vector<double> constraint;
+
+  std::vector<double> to_x(const double* u) const {
+    std::vector<double> x(lower.size());
+    for (std::size_t i = 0; i < x.size(); ++i) x[i] = lower[i] + u[i] * range[i];
+    return x;
+  }
+  std::vector<double> to_u(std::span<const double> x) const {
+    std::vector<double> u(lower.size());
+    for (std::size_t i = 0; i < u.size(); ++i) u[i] = std::clamp((x[i] - lower[i]) / range[i], 0.0, 1.0);
+    return u;
+  }
+};
+
+struct Callback {
+  Evaluator* evaluator;
+  const Scaling* scaling;
+  std::vector<std::size_t> indices;  // constraint indices for an mconstraint
+};
+
+double objective_callback(unsigned n, const double* u, double* grad, void* data) {
+  auto* cb = static_cast<Callback*>(data);
+  const Scaling& s = *cb->scaling;
+  const std::vector<double> x = s.to_x(u);
+  try {
+    const double f = cb->evaluator->values(x)[0] / s.objective;
+    if (grad) {
+      const auto& row = cb->evaluator->jacobian(x)[0];
+      for (unsigned i = 0; i < n; ++i) grad[i] = row[i] * s.range[i] / s.objective;
+    }
+    return f;
+  } catch (const BudgetSpent&) {
+    throw nlopt::forced_stop();
+  }
+}
+
+void constraints_callback(unsigned m, double* result, unsigned n, const double* u, double* grad,
+                          void* data) {
+  auto* cb = static_cast<Callback*>(data);
+  const Scaling& s = *cb->scaling;
+  const std::vector<double> x = s.to_x(u);
+  try {
+    const auto& v = cb->evaluator->values(x);
+    for (unsigned k = 0; k < m; ++k) {
+      const std::size_t c = cb->indices[k];
+      result[k] = v[1 + c] / s.constraint[c];
+    }
+    if (grad) {
+      const auto& rows = cb->evaluator->jacobian(x);
+      for (unsigned k = 0; k < m; ++k) {
+        const std::size_t c = cb->indices[k];
+        for (unsigned i = 0; i < n; ++i) grad[k * n + i] = rows[1 + c][i] * s.range[i] / s.constraint[c];
+      }
+    }
+  } catch (const BudgetSpent&) {
+    throw nlopt::forced_stop();
+  }
+}
+
+struct RunResult {
+  std::string termination;
+};
+
+// One NLopt run from x0. Constraints are added when the algorithm takes them.
+RunResult run_nlopt(nlopt::algorithm algorithm, std::optional<nlopt::algorithm> local,
+                    const Problem& problem, const OptimizeOptions& options, Evaluator& evaluator,
+                    std::vector<double> x0) {
+  const unsigned n = static_cast<unsigned>(problem.lower.size());
+  Scaling scaling;
+  scaling.lower = problem.lower;
+  for (unsigned i = 0; i < n; ++i) scaling.range.push_back(problem.upper[i] - problem.lower[i]);
+  const std::vector<double>& at_start = evaluator.values(x0);
+  scaling.objective = std::abs(at_start[0]) > 0 ? std::abs(at_start[0]) : 1.0;
+  for (std::size_t k = 0; k < problem.constraints.size(); ++k) {
+    // Never scale a constraint's tolerance below a thousandth.
+    scaling.constraint.push_back(
+        std::max(std::abs(at_start[1 + k]), 1e3 * problem.constraints[k].tolerance));
+  }
+
+  nlopt::opt opt(algorithm, n);
+  opt.set_lower_bounds(std::vector<double>(n, 0.0));
+  opt.set_upper_bounds(std::vector<double>(n, 1.0));
+  Callback objective{&evaluator, &scaling, {}};
+  Callback inequalities{&evaluator, &scaling, {}};
+  Callback equalities{&evaluator, &scaling, {}};
+  for (std::size_t k = 0; k < problem.constraints.size(); ++k) {
+    (problem.constraints[k].kind == ConstraintKind::kZero ? equalities : inequalities).indices.push_back(k);
+  }
+  opt.set_min_objective(objective_callback, &objective);
+  const auto tolerances = [&](const Callback& cb) {
+    std::vector<double> tol;
+    for (const std::size_t k : cb.indices) tol.push_back(problem.constraints[k].tolerance / scaling.constraint[k]);
+    return tol;
+  };
+  try {
+    if (!inequalities.indices.empty()) {
+      opt.add_inequality_mconstraint(constraints_callback, &inequalities, tolerances(inequalities));
+    }
+    if (!equalities.indices.empty()) {
+      opt.add_equality_mconstraint(constraints_callback, &equalities, tolerances(equalities));
+    }
+  } catch (const std::invalid_argument&) {
+    throw std::invalid_argument(
+        std::string("algorithm: ") + nlopt_algorithm_to_string(static_cast<nlopt_algorithm>(algorithm)) +
+        " does not take nonlinear constraints; use auto, LD_SLSQP, LN_COBYLA, GN_ISRES or AUGLAG");
+  }
+  const std::vector<double> x_tolerance(n, options.x_tolerance_rel);
+  if (local) {
+    nlopt::opt local_opt(*local, n);
+    local_opt.set_xtol_abs(x_tolerance);
+    local_opt.set_ftol_rel(options.f_tolerance_rel);
+    opt.set_local_optimizer(local_opt);
+  }
+  opt.set_xtol_abs(x_tolerance);
+  opt.set_ftol_rel(options.f_tolerance_rel);
+  opt.set_maxeval(std::max(1, options.max_evaluations - evaluator.evaluations()));
+  opt.set_maxtime(std::max(1e-3, options.max_seconds - evaluator.seconds()));
+  opt.set_initial_step(std::vector<double>(n, 0.1));
+  double f = 0.0;
+  std::vector<double> u0 = scaling.to_u(x0);
+  try {
+    return {result_name(opt.optimize(u0, f))};
+  } catch (const nlopt::forced_stop&) {
+    return {evaluator.spent() ? "MAXEVAL_REACHED (sweetspot's budget, including differences)"
+                              : "FORCESTOP"};
+  } catch (const nlopt::roundoff_limited&) {
+    return {"ROUNDOFF_LIMITED"};
+  } catch (const std::invalid_argument& e) {
+    return {std::string("INVALID_ARGS: ") + e.what()};
+  } catch (const std::runtime_error& e) {
+    return {std::string("FAILURE: ") + e.what()};
+  }
+}
+
+// Halton points in [0,1)^n, shifted by a seeded random vector (mod 1).
+std::vector<std::vector<double>> halton(std::size_t count, std::size_t n, unsigned long seed) {
+  static constexpr int kPrimes[] = {2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47, 53};
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  std::vector<double> shift(n);
+  for (double& s : shift) s = uniform(rng);
+  std::vector<std::vector<double>> points(count, std::vector<double>(n));
+  for (std::size_t k = 0; k < count; ++k) {
+    for (std::size_t d = 0; d < n; ++d) {
+      const int base = kPrimes[d % std::size(kPrimes)];
+      double f = 1.0, r = 0.0;
+      for (std::size_t i = k + 1; i > 0; i /= base) {
+        f /= base;
+        r += f * static_cast<double>(i % base);
+      }
+      points[k][d] = std::fmod(r + shift[d], 1.0);
+    }
+  }
+  return points;
+}
+
+void validate_problem(const Problem& p) {
+  const std::size_t n = p.lower.size();
+  if (n == 0) throw std::invalid_argument("variables: need at least one");
+  if (p.upper.size() != n || p.start.size() != n) {
+    throw std::invalid_argument("variables: lower, upper and start must have the same size");
+  }
+  if (!p.evaluate) throw std::invalid_argument("evaluate: no function given");
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::string at = "variables/" + std::to_string(i);
+    detail::require_finite(at + "/min", p.lower[i]);
+    detail::require_finite(at + "/max", p.upper[i]);
+    if (!(p.lower[i] < p.upper[i])) {
+      throw std::invalid_argument(at + ": min must be < max, got min " +
+                                  detail::format_number(p.lower[i]) + " and max " +
+                                  detail::format_number(p.upper[i]));
+    }
+    detail::require_in_range(at + "/start", p.start[i], p.lower[i], p.upper[i], "");
+  }
+  for (std::size_t k = 0; k < p.constraints.size(); ++k) {
+    detail::require_positive("constraints/" + std::to_string(k) + "/tolerance",
+                             p.constraints[k].tolerance, "");
+  }
+}
+
+}  // namespace
+
+std::string OptimizeOptions::validate() const {
+  if (!is_known_algorithm(algorithm)) return "algorithm: unknown NLopt algorithm \"" + algorithm + "\"";
+  if (!is_known_algorithm(local_algorithm)) {
+    return "local_algorithm: unknown NLopt algorithm \"" + local_algorithm + "\"";
+  }
+  const auto positive = [](const char* name, double value) -> std::string {
+    return std::isfinite(value) && value > 0 ? "" : std::string(name) + ": must be > 0, got " +
+                                                        detail::format_number(value);
+  };
+  for (const auto& message : {positive("x_tolerance_rel", x_tolerance_rel),
+                              positive("f_tolerance_rel", f_tolerance_rel),
+                              positive("max_seconds", max_seconds),
+                              positive("difference_step_rel", difference_step_rel)}) {
+    if (!message.empty()) return message;
+  }
+  if (max_evaluations < 1) return "max_evaluations: must be >= 1, got " + std::to_string(max_evaluations);
+  if (samples_per_variable < 1) {
+    return "samples_per_variable: must be >= 1, got " + std::to_string(samples_per_variable);
+  }
+  if (local_starts < 1) return "local_starts: must be >= 1, got " + std::to_string(local_starts);
+  return "";
+}
+
+bool is_known_algorithm(const std::string& name) {
+  return name == "auto" || algorithm_from_name(name).has_value();
+}
+
+std::string Summary::brief_report() const {
+  std::ostringstream out;
+  out << "objective " << objective << (feasible ? " (feasible)" : " (INFEASIBLE)") << " after "
+      << evaluations << " evaluations in " << seconds * 1e3 << " ms; " << algorithm << ": "
+      << termination;
+  return out.str();
+}
+
+void difference_gradient(const std::function<double(std::span<const double>)>& f,
+                         std::span<const double> x, std::span<const double> lower,
+                         std::span<const double> upper, double step_rel, std::span<double> grad) {
+  Problem problem;
+  problem.lower.assign(lower.begin(), lower.end());
+  problem.upper.assign(upper.begin(), upper.end());
+  problem.evaluate = [&](std::span<const double> at, double& value, std::span<double>) {
+    value = f(at);
+  };
+  OptimizeOptions options;
+  options.difference_step_rel = step_rel;
+  Evaluator evaluator(problem, options);
+  const auto& row = evaluator.jacobian(x)[0];
+  std::copy(row.begin(), row.end(), grad.begin());
+}
+
+Summary minimize(const Problem& problem, const OptimizeOptions& options) {
+  validate_problem(problem);
+  if (const std::string why = options.validate(); !why.empty()) throw std::invalid_argument(why);
+  Evaluator evaluator(problem, options);
+  const std::size_t n = problem.lower.size();
+  std::string algorithm_used;
+  std::string termination;
+
+  const auto default_local = [&] {
+    return problem.smooth ? nlopt::LD_SLSQP : nlopt::LN_COBYLA;
+  };
+  const auto local_choice = [&]() -> nlopt::algorithm {
+    return options.local_algorithm == "auto" ? default_local()
+                                             : *algorithm_from_name(options.local_algorithm);
+  };
+
+  try {
+    if (options.algorithm == "auto") {
+      // Global stage: low-discrepancy samples of the box, the start first.
+      const std::size_t count = std::max<std::size_t>(8, options.samples_per_variable * n);
+      std::vector<std::vector<double>> candidates{problem.start};
+      for (const auto& unit : halton(count, n, options.seed)) {
+        std::vector<double> x(n);
+        for (std::size_t i = 0; i < n; ++i) {
+          x[i] = problem.lower[i] + unit[i] * (problem.upper[i] - problem.lower[i]);
+        }
+        candidates.push_back(std::move(x));
+      }
+      std::vector<std::vector<double>> scored;  // values, for ranking
+      for (const auto& x : candidates) scored.push_back(evaluator.values(x));
+      std::vector<std::size_t> order(candidates.size());
+      std::iota(order.begin(), order.end(), 0);
+      std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+        return evaluator.better(scored[a], scored[b]);
+      });
+      // Local stage from the best few.
+      const nlopt::algorithm local = local_choice();
+      const int starts = std::min<int>(options.local_starts, static_cast<int>(order.size()));
+      for (int s = 0; s < starts && !evaluator.spent(); ++s) {
+        termination = run_nlopt(local, std::nullopt, problem, options, evaluator,
+                                candidates[order[s]]).termination;
+      }
+      algorithm_used = "auto: " + std::to_string(candidates.size()) + " Halton samples + " +
+                       nlopt_algorithm_to_string(static_cast<nlopt_algorithm>(local)) + " from the best " +
+                       std::to_string(starts);
+    } else {
+      const nlopt::algorithm chosen = *algorithm_from_name(options.algorithm);
+      const std::string name = options.algorithm;
+      const bool needs_local = name.starts_with("G_MLSL") || name.starts_with("AUGLAG");
+      std::optional<nlopt::algorithm> local;
+      if (needs_local) local = local_choice();
+      nlopt::srand(options.seed);
+      termination = run_nlopt(chosen, local, problem, options, evaluator, problem.start).termination;
+      algorithm_used = name;
+      if (local) {
+        algorithm_used += std::string(" with ") +
+                          nlopt_algorithm_to_string(static_cast<nlopt_algorithm>(*local));
+      }
+      // Global algorithms stop on the budget, not on a tolerance: polish locally.
+      if (name.starts_with("GN_") && !evaluator.spent()) {
+        const nlopt::algorithm polish = default_local();
+        termination = run_nlopt(polish, std::nullopt, problem, options, evaluator,
+                                evaluator.best_x()).termination;
+        algorithm_used += std::string(" + ") +
+                          nlopt_algorithm_to_string(static_cast<nlopt_algorithm>(polish)) + " polish";
+      }
+    }
+  } catch (const BudgetSpent&) {
+    termination = "MAXEVAL_REACHED (sweetspot's budget, including differences)";
+  }
+
+  Summary summary;
+  summary.x = evaluator.best_x();
+  summary.objective = evaluator.best_values()[0];
+  summary.constraints.assign(evaluator.best_values().begin() + 1, evaluator.best_values().end());
+  summary.feasible = evaluator.violation(evaluator.best_values()) <= 1.0;
+  summary.evaluations = evaluator.evaluations();
+  summary.seconds = evaluator.seconds();
+  summary.algorithm = algorithm_used;
+  summary.termination = termination;
+  summary.history = std::move(evaluator.history());
+  return summary;
+}
+
+}  // namespace sweetspot

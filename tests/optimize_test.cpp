@@ -1,0 +1,193 @@
+// Test problems with known optima, stated with their formula.
+#include "sweetspot/optimize.hpp"
+
+#include <cmath>
+
+#include <catch2/catch.hpp>
+
+namespace sweetspot {
+namespace {
+
+constexpr double kOptimumTolerance = 1e-5;  // on x, for x_tolerance_rel = 1e-7 and O(1) optima
+
+// Rosenbrock: f = (1 - x)^2 + 100 (y - x^2)^2, minimum 0 at (1, 1).
+Problem rosenbrock() {
+  Problem p;
+  p.lower = {-2.0, -1.0};
+  p.upper = {2.0, 3.0};
+  p.start = {-1.2, 1.0};
+  p.evaluate = [](std::span<const double> x, double& f, std::span<double>) {
+    f = (1 - x[0]) * (1 - x[0]) + 100 * (x[1] - x[0] * x[0]) * (x[1] - x[0] * x[0]);
+  };
+  return p;
+}
+
+TEST_CASE("Rosenbrock's curved valley is followed to (1, 1) by auto, SLSQP and BOBYQA") {
+  // MMA and COBYLA crawl along this valley and stop on their step tolerances
+  // well short of the end; they are checked on a quadratic below.
+  for (const char* algorithm : {"auto", "LD_SLSQP", "LN_BOBYQA"}) {
+    INFO(algorithm);
+    OptimizeOptions options;
+    options.algorithm = algorithm;
+    options.x_tolerance_rel = 1e-10;
+    options.f_tolerance_rel = 1e-14;
+    const Summary s = minimize(rosenbrock(), options);
+    CHECK(s.x[0] == Approx(1.0).margin(1e-3));
+    CHECK(s.x[1] == Approx(1.0).margin(2e-3));
+    CHECK(s.feasible);
+    CHECK(s.history.size() == static_cast<std::size_t>(s.evaluations));
+  }
+}
+
+TEST_CASE("Every local algorithm finds the minimum of a tilted quadratic bowl at (0.3, -0.4)") {
+  // f = (x - 0.3)^2 + 3 (y + 0.4)^2 + (x - 0.3)(y + 0.4): positive definite, minimum 0.
+  Problem p;
+  p.lower = {-1, -1};
+  p.upper = {1, 1};
+  p.start = {0.9, 0.8};
+  p.evaluate = [](std::span<const double> x, double& f, std::span<double>) {
+    const double u = x[0] - 0.3, v = x[1] + 0.4;
+    f = u * u + 3 * v * v + u * v;
+  };
+  for (const char* algorithm :
+       {"auto", "LD_SLSQP", "LD_MMA", "LD_LBFGS", "LN_BOBYQA", "LN_COBYLA", "LN_NELDERMEAD"}) {
+    INFO(algorithm);
+    OptimizeOptions options;
+    options.algorithm = algorithm;
+    options.x_tolerance_rel = 1e-10;
+    options.f_tolerance_rel = 1e-15;
+    const Summary s = minimize(p, options);
+    CHECK(s.x[0] == Approx(0.3).margin(kOptimumTolerance));
+    CHECK(s.x[1] == Approx(-0.4).margin(kOptimumTolerance));
+  }
+}
+
+TEST_CASE("A linear objective on the unit disc stops on the boundary at (-1/√2, -1/√2)") {
+  // min x + y subject to x^2 + y^2 - 1 <= 0: KKT gives x = y = -1/sqrt(2).
+  Problem p;
+  p.lower = {-2, -2};
+  p.upper = {2, 2};
+  p.start = {0.5, 0.5};
+  p.constraints = {{"disc", ConstraintKind::kAtMostZero, 1e-10}};
+  p.evaluate = [](std::span<const double> x, double& f, std::span<double> c) {
+    f = x[0] + x[1];
+    c[0] = x[0] * x[0] + x[1] * x[1] - 1.0;
+  };
+  for (const char* algorithm : {"auto", "LD_SLSQP", "LN_COBYLA"}) {
+    INFO(algorithm);
+    OptimizeOptions options;
+    options.algorithm = algorithm;
+    const Summary s = minimize(p, options);
+    CHECK(s.x[0] == Approx(-std::sqrt(0.5)).margin(kOptimumTolerance));
+    CHECK(s.x[1] == Approx(-std::sqrt(0.5)).margin(kOptimumTolerance));
+    CHECK(s.feasible);
+  }
+}
+
+TEST_CASE("An equality constraint x + y = 1 with f = x^2 + y^2 gives (1/2, 1/2)") {
+  Problem p;
+  p.lower = {-3, -3};
+  p.upper = {3, 3};
+  p.start = {2, -1};
+  p.constraints = {{"line", ConstraintKind::kZero, 1e-10}};
+  p.evaluate = [](std::span<const double> x, double& f, std::span<double> c) {
+    f = x[0] * x[0] + x[1] * x[1];
+    c[0] = x[0] + x[1] - 1.0;
+  };
+  const Summary s = minimize(p, OptimizeOptions{});
+  CHECK(s.x[0] == Approx(0.5).margin(kOptimumTolerance));
+  CHECK(s.x[1] == Approx(0.5).margin(kOptimumTolerance));
+  CHECK(std::abs(s.constraints[0]) <= 1e-10);
+}
+
+TEST_CASE("Difference gradients match the analytic gradient, one-sided at a bound") {
+  // f = sin(x) e^y, grad = (cos(x) e^y, sin(x) e^y).
+  const auto f = [](std::span<const double> x) { return std::sin(x[0]) * std::exp(x[1]); };
+  const std::vector<double> lower{-1, -1}, upper{1, 1};
+  for (const std::vector<double>& x : {std::vector<double>{0.3, -0.2}, std::vector<double>{1.0, -1.0}}) {
+    std::vector<double> grad(2);
+    difference_gradient(f, x, lower, upper, 1e-6, grad);
+    // Central differences err by O(h^2) = 1e-12, one-sided by O(h) = 1e-6.
+    const bool on_bound = x[0] == 1.0;
+    const double tolerance = on_bound ? 1e-5 : 1e-8;
+    CHECK(grad[0] == Approx(std::cos(x[0]) * std::exp(x[1])).margin(tolerance));
+    CHECK(grad[1] == Approx(std::sin(x[0]) * std::exp(x[1])).margin(tolerance));
+  }
+}
+
+TEST_CASE("The evaluation budget counts difference evaluations and is never exceeded") {
+  OptimizeOptions options;
+  options.max_evaluations = 25;
+  const Summary s = minimize(rosenbrock(), options);
+  CHECK(s.evaluations <= 25);
+  CHECK(s.termination.find("MAXEVAL") != std::string::npos);
+}
+
+TEST_CASE("A flat objective terminates at a finite point") {
+  Problem p = rosenbrock();
+  p.evaluate = [](std::span<const double>, double& f, std::span<double>) { f = 3.0; };
+  const Summary s = minimize(p, OptimizeOptions{});
+  CHECK(s.objective == 3.0);
+  CHECK(std::isfinite(s.x[0]));
+  CHECK(s.evaluations < OptimizeOptions{}.max_evaluations);
+}
+
+TEST_CASE("An infeasible problem reports the least violating point as infeasible") {
+  // x >= 3 asked of x in [0, 1]: the best is x = 1, still infeasible.
+  Problem p;
+  p.lower = {0};
+  p.upper = {1};
+  p.start = {0.5};
+  p.constraints = {{"x >= 3", ConstraintKind::kAtMostZero, 1e-9}};
+  p.evaluate = [](std::span<const double> x, double& f, std::span<double> c) {
+    f = x[0];
+    c[0] = 3.0 - x[0];
+  };
+  const Summary s = minimize(p, OptimizeOptions{});
+  CHECK_FALSE(s.feasible);
+  CHECK(s.x[0] == Approx(1.0).margin(kOptimumTolerance));
+}
+
+TEST_CASE("A start on a bound is accepted and an optimum on that bound is kept") {
+  // min (x - 2)^2 on [0, 1] from x = 1: the optimum is the bound itself.
+  Problem p;
+  p.lower = {0};
+  p.upper = {1};
+  p.start = {1};
+  p.evaluate = [](std::span<const double> x, double& f, std::span<double>) {
+    f = (x[0] - 2) * (x[0] - 2);
+  };
+  const Summary s = minimize(p, OptimizeOptions{});
+  CHECK(s.x[0] == 1.0);
+}
+
+TEST_CASE("The same seed gives the same search, evaluation for evaluation") {
+  OptimizeOptions options;
+  options.algorithm = "GN_ISRES";
+  options.max_evaluations = 400;
+  options.seed = 7;
+  const Summary a = minimize(rosenbrock(), options);
+  const Summary b = minimize(rosenbrock(), options);
+  CHECK(a.x == b.x);
+  CHECK(a.evaluations == b.evaluations);
+}
+
+TEST_CASE("Bad problems and options are refused with the argument named") {
+  Problem p = rosenbrock();
+  OptimizeOptions options;
+  options.algorithm = "LD_NONSENSE";
+  CHECK_THROWS_WITH(minimize(p, options), Catch::Contains("algorithm") && Catch::Contains("LD_NONSENSE"));
+  p.start = {5.0, 0.0};
+  CHECK_THROWS_WITH(minimize(p, OptimizeOptions{}), Catch::Contains("variables/0/start"));
+  p = rosenbrock();
+  p.lower[1] = 4.0;
+  CHECK_THROWS_WITH(minimize(p, OptimizeOptions{}), Catch::Contains("variables/1: min must be < max"));
+  p = rosenbrock();
+  p.constraints = {{"c", ConstraintKind::kAtMostZero, 1e-9}};
+  options.algorithm = "LN_BOBYQA";  // bounds only
+  p.evaluate = [](std::span<const double>, double& f, std::span<double> c) { f = 0; c[0] = -1; };
+  CHECK_THROWS_WITH(minimize(p, options), Catch::Contains("does not take nonlinear constraints"));
+}
+
+}  // namespace
+}  // namespace sweetspot
