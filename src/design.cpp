@@ -16,6 +16,17 @@ void validate(const Design& d) {
   detail::require_positive("ball/mass_kg", d.ball.mass_kg, "kg");
   detail::require_positive("ball/speed_m_s", d.ball.speed_m_s, "m/s");
   detail::require_in_range("impact/from_butt_m", d.impact_from_butt_m, 0.0, L, "m");
+  detail::require_positive("hand/grip_length_m", d.hand.grip_length_m, "m");
+  detail::require_at_least("hand/grip_stiffness_N_m2", d.hand.grip_stiffness_N_m2, 0.0, "N/m^2");
+  detail::require_at_least("hand/grip_damping_N_s_m2", d.hand.grip_damping_N_s_m2, 0.0, "N s/m^2");
+  const FrameStiffness& k = d.stiffness;
+  if (k.EI_N_m2) detail::require_positive("frame/EI_N_m2", *k.EI_N_m2, "N m^2");
+  if (k.fundamental_free_Hz) detail::require_positive("frame/fundamental_free_Hz", *k.fundamental_free_Hz, "Hz");
+  if (k.shear_modulus_Pa) {
+    detail::require_positive("frame/cross_section/shear_modulus_Pa", *k.shear_modulus_Pa, "Pa");
+    detail::require_positive("frame/cross_section/width_m", k.width_m, "m");
+    detail::require_positive("frame/cross_section/thickness_m", k.thickness_m, "m");
+  }
   if (!(hand_held_system(d).com_from_butt_m > 0.0)) {
     throw std::invalid_argument(
         "hand/center_from_butt_m: implement and hand have all their mass at the butt; the wrist "

@@ -11,6 +11,12 @@ Evaluation evaluate(const Design& design) {
   return evaluate_unchecked(design);
 }
 
+Evaluation evaluate(const Design& design, Fidelity fidelity, double rel_tol) {
+  Evaluation e = evaluate(design);
+  if (fidelity == Fidelity::kModal) e.modal = evaluate_modes(design, rel_tol);
+  return e;
+}
+
 Evaluation evaluate_unchecked(const Design& d) {
   const MassProperties& body = d.implement.mass_properties();
   const double x = d.impact_from_butt_m;

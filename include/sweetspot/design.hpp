@@ -3,14 +3,35 @@
 // A design: an implement, the player holding it and the ball that hits it.
 // Defaults are the conditions of Cross (2004) Table I, top row.
 
+#include <optional>
+
+#include "sweetspot/beam_modes.hpp"
 #include "sweetspot/implement.hpp"
 
 namespace sweetspot {
 
 // The hand, a point mass on the handle (Cross 2004: 0.07 m from the butt).
+// For the vibration modes it grips the handle over `grip_length_m` centred on
+// `center_from_butt_m` through a distributed spring and dashpot (beam_modes.hpp).
 struct Hand {
   double mass_kg = 0.5;              // [kg], >= 0 (0: a free implement)
   double center_from_butt_m = 0.07;  // [m], in [0, L]
+  double grip_length_m = 0.10;       // [m], > 0, the grip inside [0, L]
+  double grip_stiffness_N_m2 = kCalibratedGripStiffness_N_m2;  // [N/m per m], >= 0
+  double grip_damping_N_s_m2 = kCalibratedGripDamping_N_s_m2;  // [N s/m per m], >= 0
+};
+
+// How stiff the frame is in bending: EI per section (Section::EI_N_m2), one EI
+// for every section without its own, or the measured free fundamental from
+// which one scale factor for every EI is solved. Only the modes need it.
+struct FrameStiffness {
+  std::optional<double> EI_N_m2;              // [N m^2], > 0
+  std::optional<double> fundamental_free_Hz;  // [Hz], > 0
+  // Timoshenko theory (shear and rotary inertia) when given: a solid
+  // rectangle of this shear modulus and size for every section.
+  std::optional<double> shear_modulus_Pa;
+  double width_m = 0.0;      // [m], > 0 with shear_modulus_Pa
+  double thickness_m = 0.0;  // [m], > 0 with shear_modulus_Pa, the bending direction
 };
 
 struct Ball {
@@ -26,6 +47,7 @@ struct Design {
   double forearm_equivalent_mass_kg = 0.5;   // M_e = M_F / 3 at the wrist [kg], >= 0
   Ball ball{};
   double impact_from_butt_m = 0.65;          // [m], in [0, L]
+  FrameStiffness stiffness{};                // for the modes only
 };
 
 // Throws std::invalid_argument if any value is out of range. The message

@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "sweetspot/design.hpp"
+#include "sweetspot/frame_modes.hpp"
 
 namespace sweetspot {
 
@@ -37,11 +38,22 @@ struct Evaluation {
   std::optional<double> rotation_axis_hand_from_butt_m;   // s = h - A, Eq. (12)
   double wrist_force_ratio = 0.0;     // F_w / F, Eq. (11)
   double peak_wrist_force_N = 0.0;    // |F_w / F| F0
+
+  // The flexible frame, when evaluated with Fidelity::kModal.
+  std::optional<ModalOutputs> modal;
 };
+
+// How much model an evaluation uses: the rigid body of the paper alone, or
+// also the vibration modes of the flexible frame (which need its stiffness).
+enum class Fidelity { kRigid, kModal };
 
 // Evaluates every quantity for a valid design (validate() first: evaluate()
 // calls it and throws std::invalid_argument the same way).
 Evaluation evaluate(const Design& design);
+
+// The same with the modes too when `fidelity` is kModal, the hand-held ones
+// to `rel_tol` (the frequency's relative error).
+Evaluation evaluate(const Design& design, Fidelity fidelity, double rel_tol = 1e-6);
 
 // The same without validation, for callers that validated once and evaluate
 // many impacts or variants in a loop. No allocation.

@@ -17,6 +17,7 @@
 #include "sweetspot/io/format.hpp"
 #include "sweetspot/io/input_error.hpp"
 #include "sweetspot/io/paper_reports.hpp"
+#include "sweetspot/io/modes_report.hpp"
 #include "sweetspot/io/study.hpp"
 
 namespace {
@@ -77,6 +78,40 @@ struct OptimizeCommand {
       std::cerr << result.summary.brief_report() << "\n";
     }
     return plot.empty() ? 0 : render_or_warn(sweetspot::io::convergence_plot(study, result), plot);
+  }
+};
+
+struct ModesCommand {
+  CLI::App* command = nullptr;
+  std::string design_path;
+  int modes = 3;
+  double tolerance = 1e-6;
+  std::string method = "exact";
+  std::string plot;
+  OutputOptions out;
+
+  void add_to(CLI::App& app) {
+    command = app.add_subcommand(
+        "modes", "Vibration modes free and hand-held: frequencies, damping, nodes, shapes (csv)");
+    command->add_option("design", design_path, "Design file (JSON) with the frame's stiffness")->required();
+    command->add_option("--modes,-n", modes, "How many flexible modes")->check(CLI::Range(1, 6))->capture_default_str();
+    command->add_option("--tol", tolerance, "Relative error allowed in the finite-element frequencies")
+        ->check(CLI::Range(1e-8, 0.1))
+        ->capture_default_str();
+    command->add_option("--method", method, "Free modes: exact (transfer matrices) or fe")
+        ->check(CLI::IsMember({"exact", "fe"}))
+        ->capture_default_str();
+    command->add_option("--plot", plot, "Also render the mode shapes to this PNG file");
+    out.add_to(command);
+  }
+
+  int run() const {
+    const auto design = sweetspot::io::load_design(design_path);
+    const auto data = sweetspot::io::compute_modes(
+        design, modes, tolerance,
+        method == "fe" ? sweetspot::ModeOptions::Method::kFiniteElement : sweetspot::ModeOptions::Method::kExact);
+    out.emit(sweetspot::io::modes_report(data, out.parsed()));
+    return plot.empty() ? 0 : render_or_warn(sweetspot::io::modes_plot(data), plot);
   }
 };
 
@@ -154,8 +189,18 @@ int main(int argc, char** argv) {
 
   OutputOptions evaluate_out;
   std::string design_path;
+  std::string fidelity = "auto";
+  double tolerance = 1e-6;
   CLI::App* evaluate = app.add_subcommand("evaluate", "Every quantity of the paper for one design");
   evaluate->add_option("design", design_path, "Design file (JSON)")->required();
+  evaluate->add_option("--fidelity", fidelity,
+                       "rigid: the paper's rigid body; modal: also the vibration modes (needs the "
+                       "frame's stiffness); auto: modal when the stiffness is given")
+      ->check(CLI::IsMember({"rigid", "modal", "auto"}))
+      ->capture_default_str();
+  evaluate->add_option("--tol", tolerance, "Relative error allowed in the hand-held frequency")
+      ->check(CLI::Range(1e-8, 0.1))
+      ->capture_default_str();
   evaluate_out.add_to(evaluate);
 
   OutputOptions table_out;
@@ -187,6 +232,8 @@ int main(int argc, char** argv) {
   optimize_cmd.add_to(app);
   SweepCommand sweep_cmd;
   sweep_cmd.add_to(app);
+  ModesCommand modes_cmd;
+  modes_cmd.add_to(app);
 
   try {
     app.parse(argc, argv);
@@ -204,7 +251,15 @@ int main(int argc, char** argv) {
   try {
     if (*evaluate) {
       const auto design = sweetspot::io::load_design(design_path);
-      const auto result = sweetspot::evaluate(design.design);
+      const bool modal = fidelity == "modal" || (fidelity == "auto" && sweetspot::has_stiffness(design.design));
+      sweetspot::Evaluation result;
+      try {
+        result = sweetspot::evaluate(design.design,
+                                     modal ? sweetspot::Fidelity::kModal : sweetspot::Fidelity::kRigid,
+                                     tolerance);
+      } catch (const std::invalid_argument& e) {
+        sweetspot::io::rethrow_in(design, e);
+      }
       evaluate_out.emit(sweetspot::io::evaluation_report(design, result, evaluate_out.parsed()));
     } else if (*table1) {
       const auto rows = sweetspot::io::compute_table1(table_dir);
@@ -232,6 +287,8 @@ int main(int argc, char** argv) {
       return optimize_cmd.run();
     } else if (*sweep_cmd.command) {
       return sweep_cmd.run();
+    } else if (*modes_cmd.command) {
+      return modes_cmd.run();
     }
   } catch (const sweetspot::io::InputError& e) {
     std::cerr << "sweetspot: " << e.what() << "\n";

@@ -30,6 +30,10 @@ namespace {
       if (si_key != user_key) detail += " (" + user_key + " converted to SI)";
       throw InputError(source, it->second, detail);
     }
+    // A value the file left to its default is still named by its pointer.
+    if (name.find(' ') == std::string::npos) {
+      throw InputError(source, "/" + name, message.substr(colon + 2));
+    }
   }
   throw InputError(source, fallback_pointer, message);
 }
@@ -180,7 +184,27 @@ DesignFile read_design(const Json& document, const std::string& source) {
 
   Part frame(top, "frame", &keys, &provenance);
   design.cor = frame.get_number("cor", defaults.cor);
-  frame.reader().finish({"cor"});
+  {
+    ObjectReader& r = frame.reader();
+    design.stiffness.EI_N_m2 = r.quantity("EI", Dimension::kStiffness);
+    design.stiffness.fundamental_free_Hz = r.quantity("fundamental_free", Dimension::kFrequency);
+    if (design.stiffness.EI_N_m2 && design.stiffness.fundamental_free_Hz) {
+      r.fail("fundamental_free_Hz", "contradicts /frame/EI_N_m2: give the stiffness once");
+    }
+    if (const Json* section = r.child("cross_section")) {
+      ObjectReader c(*section, "/frame/cross_section", "frame/cross_section", source, &keys);
+      design.stiffness.shear_modulus_Pa = c.number("shear_modulus_Pa");
+      const auto width = c.quantity("width", Dimension::kLength);
+      const auto thickness = c.quantity("thickness", Dimension::kLength);
+      if (!design.stiffness.shear_modulus_Pa || !width || !thickness) {
+        c.fail("", "give shear_modulus_Pa, width_m and thickness_m (for Timoshenko theory)");
+      }
+      design.stiffness.width_m = *width;
+      design.stiffness.thickness_m = *thickness;
+      c.finish({"shear_modulus_Pa", "width_m", "thickness_m"});
+    }
+    r.finish({"cor", "EI_N_m2", "fundamental_free_Hz", "cross_section"});
+  }
 
   Part strings(top, "strings", &keys, &provenance);
   design.impact_duration_s =
@@ -191,7 +215,14 @@ DesignFile read_design(const Json& document, const std::string& source) {
   design.hand.mass_kg = hand.get("mass", Dimension::kMass, "mass_kg", defaults.hand.mass_kg);
   design.hand.center_from_butt_m = hand.get("center_from_butt", Dimension::kLength,
                                             "center_from_butt_m", defaults.hand.center_from_butt_m);
-  hand.reader().finish({"mass_kg", "center_from_butt_m"});
+  design.hand.grip_length_m =
+      hand.get("grip_length", Dimension::kLength, "grip_length_m", defaults.hand.grip_length_m);
+  design.hand.grip_stiffness_N_m2 = hand.get("grip_stiffness", Dimension::kStiffness, "grip_stiffness_N_m2",
+                                             defaults.hand.grip_stiffness_N_m2);
+  design.hand.grip_damping_N_s_m2 = hand.get("grip_damping", Dimension::kDamping, "grip_damping_N_s_m2",
+                                             defaults.hand.grip_damping_N_s_m2);
+  hand.reader().finish({"mass_kg", "center_from_butt_m", "grip_length_m", "grip_stiffness_N_m2",
+                        "grip_damping_N_s_m2"});
 
   Part forearm(top, "forearm", &keys, &provenance);
   {
@@ -263,7 +294,11 @@ DesignFile read_design(const Json& document, const std::string& source) {
     rethrow_at(error, "", keys, source, "");
   }
   return DesignFile{source, name, std::move(design), implement.form, std::move(provenance),
-                    std::move(reference)};
+                    std::move(reference), std::move(keys)};
+}
+
+void rethrow_in(const DesignFile& design, const std::invalid_argument& error) {
+  rethrow_at(error, "", design.keys, design.source, "");
 }
 
 DesignFile load_design(const std::string& path) { return read_design(read_json_file(path), path); }
@@ -295,8 +330,19 @@ Json design_to_json(const DesignFile& file) {
     }
   }
   j["frame"] = {{"cor", d.cor}};
+  if (d.stiffness.EI_N_m2) j["frame"]["EI_N_m2"] = *d.stiffness.EI_N_m2;
+  if (d.stiffness.fundamental_free_Hz) j["frame"]["fundamental_free_Hz"] = *d.stiffness.fundamental_free_Hz;
+  if (d.stiffness.shear_modulus_Pa) {
+    j["frame"]["cross_section"] = {{"shear_modulus_Pa", *d.stiffness.shear_modulus_Pa},
+                                   {"width_m", d.stiffness.width_m},
+                                   {"thickness_m", d.stiffness.thickness_m}};
+  }
   j["strings"] = {{"impact_duration_s", d.impact_duration_s}};
-  j["hand"] = {{"mass_kg", d.hand.mass_kg}, {"center_from_butt_m", d.hand.center_from_butt_m}};
+  j["hand"] = {{"mass_kg", d.hand.mass_kg},
+               {"center_from_butt_m", d.hand.center_from_butt_m},
+               {"grip_length_m", d.hand.grip_length_m},
+               {"grip_stiffness_N_m2", d.hand.grip_stiffness_N_m2},
+               {"grip_damping_N_s_m2", d.hand.grip_damping_N_s_m2}};
   j["forearm"] = {{"equivalent_mass_kg", d.forearm_equivalent_mass_kg}};
   j["ball"] = {{"mass_kg", d.ball.mass_kg}, {"speed_m_s", d.ball.speed_m_s}};
   j["impact"] = {{"from_butt_m", d.impact_from_butt_m}};

@@ -65,7 +65,8 @@ Json inputs_json(const DesignFile& file) {
 Json evaluation_json(const DesignFile& file, const Evaluation& e) {
   Json j;
   j["name"] = file.name;
-  j["fidelity"] = "rigid";
+  j["fidelity"] = e.modal ? "modal" : "rigid";
+  if (e.modal) j["mass_distribution"] = e.modal->mass_distribution_fitted ? "fitted to the specs (quadratic density)" : "given";
   j["inputs"] = inputs_json(file);
   Json& outputs = j["outputs"];
   Json notes = Json::object();
@@ -90,16 +91,24 @@ std::string evaluation_report(const DesignFile& file, const Evaluation& e, Forma
     }
     return header + "\n" + row + "\n";
   }
-  std::string md = fmt::format("# {}\n\nRigid-body model of Cross (2004); source `{}`.\n\n",
-                               md_cell(file.name), file.source);
+  std::string md = fmt::format(
+      "# {}\n\n{} of Cross (2004); source `{}`.{}\n\n", md_cell(file.name),
+      e.modal ? "Rigid-body model and vibration modes" : "Rigid-body model", file.source,
+      e.modal && e.modal->mass_distribution_fitted
+          ? " The mass distribution for the modes was fitted to the specs (quadratic density)."
+          : "");
   md += "| output | value | unit | meaning |\n|---|---:|---|---|\n";
   for (const OutputSpec& output : output_specs()) {
+    if (output.needs_modes && !e.modal) continue;
     const auto value = output.value(e);
     md += fmt::format("| `{}` | {} | {} | {} |\n", output.name,
                       value ? significant(*value) : std::string("—"), output.unit,
                       md_cell(value ? std::string(output.description)
                                     : std::string(output.description) + "; " +
                                           std::string(output.when_absent)));
+  }
+  if (!e.modal) {
+    md += "\nVibration modes: not evaluated (rigid fidelity; they need the frame's stiffness).\n";
   }
   md += "\nInputs (SI; *default* values are Cross (2004) Table I, top row):\n\n";
   const Json inputs = inputs_json(file);

@@ -174,6 +174,7 @@ const std::vector<Unit>& units(Dimension dimension) {
   static const std::vector<Unit> inertia{{"_kg_m2", 1.0}, {"_kg_cm2", 1e-4}};
   static const std::vector<Unit> force{{"_N", 1.0}, {"_lb", 4.4482216152605}, {"_kg", 9.80665}};
   static const std::vector<Unit> stiffness{{"_N_m2", 1.0}};
+  static const std::vector<Unit> damping{{"_N_s_m2", 1.0}};
   static const std::vector<Unit> frequency{{"_Hz", 1.0}};
   switch (dimension) {
     case Dimension::kLength: return length;
@@ -183,6 +184,7 @@ const std::vector<Unit>& units(Dimension dimension) {
     case Dimension::kInertia: return inertia;
     case Dimension::kForce: return force;
     case Dimension::kStiffness: return stiffness;
+    case Dimension::kDamping: return damping;
     case Dimension::kFrequency: return frequency;
   }
   return length;

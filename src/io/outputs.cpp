@@ -10,6 +10,10 @@ constexpr std::string_view kAxisAtInfinity =
     "at infinity: the impact is through the centre of mass, so the body translates without "
     "rotating";
 
+constexpr std::string_view kNeedsModes =
+    "needs the modal model: give the frame's stiffness (frame EI_N_m2 or fundamental_free_Hz) "
+    "and evaluate with --fidelity modal or auto";
+
 std::optional<double> from_tip(const Evaluation& e, const std::optional<double>& from_butt) {
   if (!from_butt) return std::nullopt;
   return e.length_m - *from_butt;
@@ -69,6 +73,43 @@ const std::array kOutputs{
                "rotation axis of the hand-held implement, s = h - A (Eq. 12); < 0 beyond the butt",
                [](const Evaluation& e) { return e.rotation_axis_hand_from_butt_m; },
                "at infinity: implement, hand and forearm translate without rotating"},
+    OutputSpec{"fundamental_free_Hz", "Hz", "fundamental bending frequency of the free implement",
+               [](const Evaluation& e) -> std::optional<double> {
+                 if (!e.modal) return std::nullopt;
+                 return e.modal->fundamental_free_Hz;
+               },
+               kNeedsModes, false, true},
+    OutputSpec{"node_free_from_tip_m", "m", "node of the free fundamental nearest the tip",
+               [](const Evaluation& e) -> std::optional<double> {
+                 if (!e.modal) return std::nullopt;
+                 return from_tip(e, e.modal->node_free_from_butt_m);
+               },
+               kNeedsModes, false, true},
+    OutputSpec{"fundamental_hand_Hz", "Hz", "damped fundamental of the hand-held implement",
+               [](const Evaluation& e) -> std::optional<double> {
+                 if (!e.modal) return std::nullopt;
+                 return e.modal->fundamental_hand_Hz;
+               },
+               kNeedsModes, false, true},
+    OutputSpec{"hand_damping_ratio", "", "damping ratio of the hand-held fundamental",
+               [](const Evaluation& e) -> std::optional<double> {
+                 if (!e.modal) return std::nullopt;
+                 return e.modal->hand_damping_ratio;
+               },
+               kNeedsModes, false, true},
+    OutputSpec{"node_hand_from_tip_m", "m", "node of the hand-held fundamental nearest the tip",
+               [](const Evaluation& e) -> std::optional<double> {
+                 if (!e.modal) return std::nullopt;
+                 return from_tip(e, e.modal->node_hand_from_butt_m);
+               },
+               kNeedsModes, false, true},
+    OutputSpec{"cop_node_gap_m", "m",
+               "hand-held COP minus node, both from the tip (> 0: the COP is nearer the hand)",
+               [](const Evaluation& e) -> std::optional<double> {
+                 if (!e.modal || !e.modal->node_hand_from_butt_m || !e.cop_hand_from_butt_m) return std::nullopt;
+                 return *e.modal->node_hand_from_butt_m - *e.cop_hand_from_butt_m;
+               },
+               kNeedsModes, false, true},
     OutputSpec{"system_mass_kg", "kg", "implement plus hand, M",
                [](const Evaluation& e) -> std::optional<double> { return e.system_mass_kg; }, ""},
     OutputSpec{"system_com_from_butt_m", "m", "centre of mass of implement plus hand, h (Eq. 14)",

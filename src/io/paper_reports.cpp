@@ -188,7 +188,7 @@ std::optional<AxesCrossing> figure11_crossing(const DesignFile& beam) {
     const auto hand = hand_axis(beam, d);
     return free && hand ? *free - *hand : NAN;
   };
-  const auto d = bisect(gap, kCrossingSearchLo_m, kCrossingSearchHi_m, kCrossingTolerance_m);
+  const auto d = find_root(gap, kCrossingSearchLo_m, kCrossingSearchHi_m, kCrossingTolerance_m);
   if (!d) return std::nullopt;
   return AxesCrossing{*d, *hand_axis(beam, *d)};
 }

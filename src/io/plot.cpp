@@ -33,7 +33,7 @@ std::string gnuplot_script(const Plot& plot, const std::string& png_path) {
   s += "set title " + quoted(plot.title) + "\n";
   s += "set xlabel " + quoted(plot.x_label) + "\n";
   s += "set ylabel " + quoted(plot.y_label) + "\n";
-  s += "set grid\nset key top right box opaque\n";
+  s += "set grid\nset key " + plot.key_position + " box opaque\n";
   if (plot.x_range) s += fmt::format("set xrange [{}:{}]\n", plot.x_range->first, plot.x_range->second);
   if (plot.y_range) s += fmt::format("set yrange [{}:{}]\n", plot.y_range->first, plot.y_range->second);
   int tag = 1;

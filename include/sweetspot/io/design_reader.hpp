@@ -26,7 +26,14 @@ struct DesignFile {
   std::map<std::string, std::string> provenance;
   // Published values to compare with ("reference": {"source": ..., output: value}).
   Json reference;
+  // Where each input came from in the file (canonical SI name -> JSON pointer).
+  KeyMap keys;
 };
+
+// The physics core's complaint about this design (its message starts with the
+// canonical name, "hand/grip_length_m: ...") as an InputError at the JSON
+// pointer the file used.
+[[noreturn]] void rethrow_in(const DesignFile& design, const std::invalid_argument& error);
 
 // Reads a design from a parsed document. Throws InputError naming `source`,
 // the JSON pointer, the value and what was expected.

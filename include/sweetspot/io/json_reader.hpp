@@ -34,7 +34,7 @@ std::string brief(const Json& value);
 
 // A physical dimension and the unit suffixes accepted for it, each with its
 // factor to SI ("_cm" length -> 0.01 m).
-enum class Dimension { kLength, kMass, kTime, kSpeed, kInertia, kForce, kStiffness, kFrequency };
+enum class Dimension { kLength, kMass, kTime, kSpeed, kInertia, kForce, kStiffness, kDamping, kFrequency };
 
 // Every key that spells `base` in a unit of `dimension` ("mass" -> mass_kg, mass_g).
 std::vector<std::string> spellings(std::string_view base, Dimension dimension);

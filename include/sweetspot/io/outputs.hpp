@@ -19,6 +19,7 @@ struct OutputSpec {
   std::optional<double> (*value)(const Evaluation&);
   std::string_view when_absent;  // why the value can be null ("" if never)
   bool kinked = false;           // has a kink (an absolute value): not smooth everywhere
+  bool needs_modes = false;      // only a modal evaluation (Fidelity::kModal) gives it
 };
 
 // Every output, in report order.

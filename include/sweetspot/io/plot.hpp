@@ -32,6 +32,7 @@ struct Plot {
   std::vector<PlotSeries> series;
   std::vector<PlotMarker> markers;
   std::vector<std::pair<double, std::string>> vertical_lines;  // x and label
+  std::string key_position = "top right";  // gnuplot's words: "bottom left", "outside right", ...
 };
 
 // The gnuplot script that draws `plot` into `png_path`.

@@ -1,0 +1,204 @@
+#pragma once
+
+// Transverse bending modes of a slender implement treated as a flexible beam:
+// free (suspended on strings) or held in one hand. Positions are measured from
+// the butt (x = 0) to the tip (x = L); sections are listed butt to tip.
+//
+// Free vibration of an Euler-Bernoulli beam, EI w'''' = mu omega^2 w, with
+// piecewise-constant EI and mass per length mu = m_i / L_i, plus point masses.
+// Two independent solvers:
+//  * kExact: transfer matrices of the closed-form solution in each uniform
+//    segment; the frequency equation is the determinant that makes moment and
+//    shear vanish at the tip for a free butt. Euler-Bernoulli only.
+//  * kFiniteElement: two-node cubic elements (Hermite for Euler-Bernoulli, the
+//    shear-deformable "interdependent interpolation" element for Timoshenko),
+//    consistent mass, with the two rigid-body modes deflated exactly.
+// The hand-held beam (Cross 2004, Sec. IV) is finite-element only.
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "sweetspot/implement.hpp"
+#include "sweetspot/mass_properties.hpp"
+
+namespace sweetspot {
+
+// Shear coefficient kappa of a solid rectangular cross-section.
+inline constexpr double kRectangularShearCoefficient = 5.0 / 6.0;
+
+// Timoshenko data of one section: shear stiffness kappa G A and the radius of
+// gyration r = sqrt(I / A) of the cross-section about the bending axis (rotary
+// inertia per length is mu r^2).
+struct TimoshenkoSection {
+  double shear_stiffness_N = 0.0;     // kappa G A [N], > 0
+  double radius_of_gyration_m = 0.0;  // r [m], >= 0
+};
+
+// A solid rectangle of `width_m` bending across its `thickness_m`:
+// kappa = 5/6, A = width * thickness, r = thickness / sqrt(12).
+// Throws std::invalid_argument for a non-positive argument.
+TimoshenkoSection rectangular_timoshenko_section(double shear_modulus_Pa, double width_m,
+                                                 double thickness_m);
+
+struct ModeOptions {
+  enum class Method { kExact, kFiniteElement };
+  enum class Theory { kEulerBernoulli, kTimoshenko };
+
+  int modes = 3;          // flexible modes wanted (rigid-body modes never count), >= 1
+  double rel_tol = 1e-6;  // FE: target relative error of f1 when `elements` == 0, in [1e-8, 0.1]
+                          // (round-off of the assembled stiffness floors FE near 1e-8).
+                          // The exact solver always refines roots to ~1e-12.
+  Method method = Method::kExact;
+  Theory theory = Theory::kEulerBernoulli;  // kTimoshenko needs kFiniteElement
+  int elements = 0;        // FE: total element count; 0 = choose from rel_tol
+  int shape_samples = 0;   // points in ModalResult's shape table (0 = none, else >= 2)
+  // One entry per section when theory == kTimoshenko, ignored otherwise.
+  std::vector<TimoshenkoSection> timoshenko;
+
+  // Empty if the options are consistent, otherwise the first problem found,
+  // naming the field and its value.
+  std::string validate() const;
+};
+
+// One piece of a mode shape on [start_m, end_m]. With xi = x - start_m and
+// z = wavenumber_per_m * xi:
+//   w(x) = w S(z) + w' xi T(z)/z + w'' xi^2 U(z)/z^2 + w''' xi^3 V(z)/z^3,
+// where S, T, U, V = (cosh z +- cos z)/2, (sinh z +- sin z)/2 are Krylov's
+// functions: the exact solution of w'''' = beta^4 w from its value and
+// derivatives at the start. With wavenumber 0 it is the cubic Taylor polynomial
+// (finite elements).
+struct ShapePiece {
+  double start_m = 0.0;
+  double end_m = 0.0;
+  double wavenumber_per_m = 0.0;           // beta >= 0
+  std::array<double, 4> derivatives{};     // w, w', w'', w''' at start_m
+};
+
+struct Mode {
+  // Damped natural frequency Im(s)/2pi [Hz]; equals the undamped one when free.
+  double frequency_Hz = 0.0;
+  // |s|/2pi [Hz].
+  double undamped_frequency_Hz = 0.0;
+  // -Re(s)/|s|, 0 for the free beam.
+  double damping_ratio = 0.0;
+  // Interior zeros of w(x), butt to tip [m], located on the analytic shape.
+  std::vector<double> nodes_from_butt_m;
+  // w(x) butt to tip, normalised to max |w| = 1 (sampled) with w(L) > 0.
+  // For the hand-held beam: the complex shape turned to be as real as possible.
+  std::vector<ShapePiece> shape;
+  // Hand-held only: hand translation in the same normalisation.
+  double hand_displacement = 0.0;  // [same units as w]
+  // Hand-held only: |Im| / |Re| of the turned complex shape (0 = real mode).
+  double complexity = 0.0;
+  // Hand-held only: share of the mode's kinetic energy in the hand, in [0, 1]
+  // (near 1 for the hand rocking on the grip, small for bending modes).
+  double hand_energy_fraction = 0.0;
+  // FE only: the eigenvector, DOFs (w_0, theta_0, w_1, theta_1, ...) at
+  // BeamMatrices::node_positions_m, then (hand translation, hand rotation) when
+  // hand held; mass-normalised (phi^T M phi = 1). Empty for the exact solver.
+  std::vector<double> fe_dofs;
+};
+
+// Displacement of `mode` at `x_m` (same normalisation as Mode::shape).
+// Throws std::invalid_argument if x_m is outside the beam.
+double mode_shape_at(const Mode& mode, double x_m);
+
+struct ModalResult {
+  std::vector<Mode> modes;  // ascending frequency; fewer than asked if !complete
+  ModeOptions::Method method = ModeOptions::Method::kExact;
+  ModeOptions::Theory theory = ModeOptions::Theory::kEulerBernoulli;
+  int elements_used = 0;    // FE only
+  bool complete = true;     // false: fewer modes than asked, see message
+  std::string message;
+  // Plotting table (ModeOptions::shape_samples points, butt to tip):
+  // shape_w[k][i] = w of modes[k] at shape_x_m[i].
+  std::vector<double> shape_x_m;
+  std::vector<std::vector<double>> shape_w;
+};
+
+// Free-free bending modes of piecewise-uniform sections plus point masses.
+// The exact solver gives up to 6 modes (cosh(beta L) conditioning) and is
+// accurate to ~1e-12; FE to about options.rel_tol on f1, higher modes
+// (beta_k / beta_1)^4 times worse. Rigid-body modes are never reported.
+// Every section needs EI > 0 and length > 0, mass >= 0 (> 0 for FE); point
+// masses >= 0 within [0, L]. Throws std::invalid_argument naming the offending
+// argument (e.g. "sections[1].EI_N_m2") and its value, or for invalid options.
+ModalResult free_modes(const std::vector<Section>& sections,
+                       const std::vector<PointMass>& point_masses,
+                       const ModeOptions& options = {});
+
+// The hand as a rigid body (Cross 2004 Sec. IV: "gripped firmly by one hand"),
+// joined to the handle over [grip_start_m, grip_start_m + grip_length_m] by a
+// distributed transverse spring k and dashpot c acting on the relative
+// displacement w(x) - u_h - phi_h (x - x_c), x_c the grip centre. The hand
+// translates (u_h) and rotates (phi_h); the arm is not modelled.
+struct HandCoupling {
+  double mass_kg = 0.5;        // M_h [kg], > 0 (Cross 2004 Sec. V uses 0.5 kg)
+  double grip_start_m = 0.02;  // [m] from the butt, >= 0
+  double grip_length_m = 0.10; // [m], > 0; default centre 0.07 m as in Cross 2004 Sec. V
+  double stiffness_N_m2 = 0.0; // k [N/m per m of grip], >= 0
+  double damping_N_s_m2 = 0.0; // c [N s/m per m of grip], >= 0
+  // Rotary inertia about the grip centre [kg m^2], > 0; default M_h Lg^2 / 12
+  // (the hand's mass spread evenly along the grip).
+  std::optional<double> rotary_inertia_kg_m2;
+};
+
+// Grip stiffness and damping calibrated on Cross (2004)'s beam (0.72 m,
+// 0.328 kg, uniform, EI from the free f1 = 193 Hz) held by a 0.5 kg hand over
+// 0.02-0.12 m (centre 0.07 m, Sec. V). One measured number, the hand-held
+// f1 = 171 Hz (Sec. III), fixes one parameter: k is set to a typical order for
+// hand tissue (2e4 N/m in total over the 10 cm grip) and c is solved so the
+// damped fundamental is 171 Hz. The result is "strongly damped" as observed:
+// damping ratio 0.10, free-end node 16.9 cm from the tip (free: 16.1 cm), the
+// handle-end node moved under the hand (10.8 cm from the butt).
+inline constexpr double kCalibratedGripStiffness_N_m2 = 2.0e5;
+inline constexpr double kCalibratedGripDamping_N_s_m2 = 1.30e3;
+
+// The calibrated hand: 0.5 kg, grip 0.02-0.12 m, k and c as above.
+HandCoupling calibrated_hand();
+
+// Damped modes of the beam held in the hand: the first-order (state-space)
+// complex eigenproblem of M q'' + C q' + K q = 0 with the rigid-body motion
+// of beam plus hand deflated. Only oscillatory modes (Im s > 0) are reported,
+// ascending in damped frequency; they include the hand rocking on the grip
+// (Mode::hand_energy_fraction near 1), so the beam's fundamental is the first
+// mode with a small hand share. Requires options.method == kFiniteElement.
+// Throws std::invalid_argument as free_modes(), or for a grip outside the beam
+// or a negative k or c.
+ModalResult hand_held_modes(const std::vector<Section>& sections,
+                            const std::vector<PointMass>& point_masses,
+                            const HandCoupling& hand, const ModeOptions& options);
+
+// Copies of `sections` with every EI multiplied by one factor so that the free
+// fundamental equals `f1_Hz`. For Euler-Bernoulli f is proportional to sqrt(EI),
+// so this is closed form after one solve; for Timoshenko the factor is iterated
+// (shear stiffness is held fixed). Every section must already have EI > 0.
+// Throws std::invalid_argument for f1_Hz <= 0 or bad sections.
+std::vector<Section> scale_EI_to_fundamental(const std::vector<Section>& sections,
+                                             const std::vector<PointMass>& point_masses,
+                                             double f1_Hz, const ModeOptions& options = {});
+
+// The single EI [N m^2] which, given to every section, makes the free
+// Euler-Bernoulli fundamental `f1_Hz` (any EI already in `sections` is ignored).
+double uniform_EI_for_fundamental(const std::vector<Section>& sections,
+                                  const std::vector<PointMass>& point_masses, double f1_Hz);
+
+// Assembled finite-element matrices of the free beam (and hand, when given),
+// dense, row-major, size x size. DOFs: (w_i, theta_i) at each node, then
+// (u_h, phi_h) for the hand. The mesh is the one free_modes / hand_held_modes
+// use for the same arguments.
+struct BeamMatrices {
+  std::vector<double> node_positions_m;
+  int size = 0;
+  std::vector<double> stiffness;  // K [N/m, N, N m]
+  std::vector<double> mass;       // M [kg, kg m, kg m^2]
+  std::vector<double> damping;    // C [N s/m, ...]; zero without a hand
+};
+BeamMatrices assemble_beam_matrices(const std::vector<Section>& sections,
+                                    const std::vector<PointMass>& point_masses,
+                                    const ModeOptions& options,
+                                    const std::optional<HandCoupling>& hand = std::nullopt);
+
+}  // namespace sweetspot

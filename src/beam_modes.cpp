@@ -1,0 +1,986 @@
+#include "sweetspot/beam_modes.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include <Eigen/Cholesky>
+#include <Eigen/Dense>
+#include <Eigen/Eigenvalues>
+#include <Eigen/QR>
+
+#include "check.hpp"
+#include "sweetspot/roots.hpp"
+
+namespace sweetspot {
+namespace {
+
+using detail::format_number;
+
+constexpr double kPi = 3.14159265358979323846;
+
+// The exact solver refines each root to this relative tolerance (in beta L).
+constexpr double kExactRootRelTol = 1e-13;
+// Bracketing step in total phase lambda = sum beta_i l_i. Roots of a uniform
+// free-free beam are pi apart; 1/16 of that leaves room for non-uniform beams.
+constexpr double kScanStep = kPi / 16.0;
+// Start of the scan. The frequency function is normalised by omega^4, so the
+// double rigid-body root at omega = 0 is divided out and any small start works.
+constexpr double kScanStart = 1e-3;
+// cosh(beta L) grows; beyond the 6th mode the unscaled determinant loses more
+// than ~1e-8 of relative accuracy, so the exact solver stops there.
+constexpr int kMaxExactModes = 6;
+constexpr int kMaxModes = 50;
+constexpr int kMaxElements = 4000;
+// Nodes of a mode shape are located to this absolute tolerance [m].
+constexpr double kNodeTol_m = 1e-13;
+// Relative f1 error of the consistent Hermite element sized to beta h:
+// (beta h)^4 / kHermiteErrorConstant (fitted on the uniform free-free beam).
+constexpr double kHermiteErrorConstant = 1440.0;
+// Elements are sized for this fraction of the requested tolerance (safety).
+constexpr double kToleranceSafety = 0.5;
+
+[[noreturn]] void fail(const std::string& name, const std::string& expected, double value) {
+  throw std::invalid_argument(name + ": must be " + expected + ", got " + format_number(value));
+}
+
+std::string indexed(const char* vector_name, std::size_t i, const char* field) {
+  return std::string(vector_name) + "[" + std::to_string(i) + "]." + field;
+}
+
+// ---------------------------------------------------------------- validation
+
+double validated_length(const std::vector<Section>& sections, bool need_mass) {
+  if (sections.empty()) throw std::invalid_argument("sections: must not be empty");
+  double length = 0.0;
+  for (std::size_t i = 0; i < sections.size(); ++i) {
+    const Section& s = sections[i];
+    detail::require_positive(indexed("sections", i, "length_m"), s.length_m, "m");
+    if (need_mass) {
+      detail::require_positive(indexed("sections", i, "mass_kg"), s.mass_kg, "kg");
+    } else {
+      detail::require_at_least(indexed("sections", i, "mass_kg"), s.mass_kg, 0.0, "kg");
+    }
+    if (!s.EI_N_m2) {
+      throw std::invalid_argument(indexed("sections", i, "EI_N_m2") +
+                                  ": must be given for the bending modes, got none");
+    }
+    detail::require_positive(indexed("sections", i, "EI_N_m2"), *s.EI_N_m2, "N m^2");
+    length += s.length_m;
+  }
+  return length;
+}
+
+void validate_point_masses(const std::vector<PointMass>& point_masses, double length_m) {
+  for (std::size_t i = 0; i < point_masses.size(); ++i) {
+    detail::require_in_range(indexed("point_masses", i, "from_butt_m"),
+                             point_masses[i].from_butt_m, 0.0, length_m, "m");
+    detail::require_at_least(indexed("point_masses", i, "mass_kg"), point_masses[i].mass_kg, 0.0,
+                             "kg");
+  }
+}
+
+void validate_options(const ModeOptions& options, std::size_t section_count) {
+  const std::string why = options.validate();
+  if (!why.empty()) throw std::invalid_argument("options." + why);
+  if (options.theory == ModeOptions::Theory::kTimoshenko &&
+      options.timoshenko.size() != section_count) {
+    fail("options.timoshenko.size()", "the number of sections (" +
+                                          std::to_string(section_count) + ")",
+         static_cast<double>(options.timoshenko.size()));
+  }
+}
+
+// ------------------------------------------------------- piecewise segments
+
+// A uniform piece of the beam between consecutive breakpoints (section
+// boundaries, point masses, grip ends).
+struct Segment {
+  double start_m = 0.0;
+  double length_m = 0.0;
+  double mu_kg_m = 0.0;
+  double EI_N_m2 = 0.0;
+  std::size_t section = 0;
+  double mass_at_start_kg = 0.0;  // point masses at start_m
+};
+
+struct Segmentation {
+  std::vector<Segment> segments;
+  double tip_mass_kg = 0.0;
+  double length_m = 0.0;
+};
+
+Segmentation segment(const std::vector<Section>& sections,
+                     const std::vector<PointMass>& point_masses,
+                     std::vector<double> extra_breaks = {}) {
+  Segmentation out;
+  std::vector<double> section_ends;
+  double x = 0.0;
+  for (const Section& s : sections) section_ends.push_back(x += s.length_m);
+  out.length_m = x;
+  const double eps = 1e-12 * x;
+
+  std::vector<double> breaks{0.0};
+  breaks.insert(breaks.end(), section_ends.begin(), section_ends.end());
+  for (const PointMass& p : point_masses) breaks.push_back(p.from_butt_m);
+  breaks.insert(breaks.end(), extra_breaks.begin(), extra_breaks.end());
+  std::sort(breaks.begin(), breaks.end());
+  std::vector<double> unique;
+  for (double b : breaks) {
+    if (unique.empty() || b - unique.back() > eps) unique.push_back(b);
+  }
+  unique.back() = out.length_m;
+
+  std::size_t section = 0;
+  for (std::size_t i = 0; i + 1 < unique.size(); ++i) {
+    const double mid = 0.5 * (unique[i] + unique[i + 1]);
+    while (section + 1 < sections.size() && mid > section_ends[section]) ++section;
+    const Section& s = sections[section];
+    Segment seg;
+    seg.start_m = unique[i];
+    seg.length_m = unique[i + 1] - unique[i];
+    seg.mu_kg_m = s.mass_kg / s.length_m;
+    seg.EI_N_m2 = *s.EI_N_m2;
+    seg.section = section;
+    out.segments.push_back(seg);
+  }
+  for (const PointMass& p : point_masses) {
+    if (p.from_butt_m >= out.length_m - eps) {
+      out.tip_mass_kg += p.mass_kg;
+      continue;
+    }
+    auto it = std::min_element(out.segments.begin(), out.segments.end(),
+                               [&](const Segment& a, const Segment& b) {
+                                 return std::abs(a.start_m - p.from_butt_m) <
+                                        std::abs(b.start_m - p.from_butt_m);
+                               });
+    it->mass_at_start_kg += p.mass_kg;
+  }
+  return out;
+}
+
+// ------------------------------------------------------ Krylov functions
+
+// S(z), T(z)/z, U(z)/z^2, V(z)/z^3 with S, U = (cosh z +- cos z)/2 and
+// T, V = (sinh z +- sin z)/2: finite at z = 0 (1, 1, 1/2, 1/6).
+struct Krylov {
+  double s, t1, u2, v3;
+};
+
+Krylov krylov(double z) {
+  if (z < 1.5) {
+    // Taylor series in q = z^4; the terms after q^6 are below 1e-19 here.
+    const double q = z * z * z * z;
+    auto series = [q](const double* c) {
+      double sum = c[6];
+      for (int k = 5; k >= 0; --k) sum = sum * q + c[k];
+      return sum;
+    };
+    static const auto kCoefficients = [] {
+      // kCoefficients[j][k] = 1/(4k + j)!, j = 0..3 for S, T1, U2, V3.
+      std::array<std::array<double, 7>, 4> c{};
+      for (int j = 0; j < 4; ++j) {
+        for (int k = 0; k < 7; ++k) {
+          double factorial = 1.0;
+          for (int n = 2; n <= 4 * k + j; ++n) factorial *= n;
+          c[j][k] = 1.0 / factorial;
+        }
+      }
+      return c;
+    }();
+    const double* kS = kCoefficients[0].data();
+    const double* kT = kCoefficients[1].data();
+    const double* kU = kCoefficients[2].data();
+    const double* kV = kCoefficients[3].data();
+    return {series(kS), series(kT), series(kU), series(kV)};
+  }
+  const double e = std::exp(z);
+  const double ch = 0.5 * (e + 1.0 / e);
+  const double sh = 0.5 * (e - 1.0 / e);
+  const double c = std::cos(z);
+  const double s = std::sin(z);
+  const double z2 = z * z;
+  return {0.5 * (ch + c), 0.5 * (sh + s) / z, 0.5 * (ch - c) / z2, 0.5 * (sh - s) / (z2 * z)};
+}
+
+// w at xi from a piece's start values (see ShapePiece).
+double evaluate_piece(const ShapePiece& p, double xi) {
+  const Krylov k = krylov(p.wavenumber_per_m * xi);
+  const auto& d = p.derivatives;
+  return d[0] * k.s + xi * (d[1] * k.t1 + xi * (d[2] * k.u2 + xi * d[3] * k.v3));
+}
+
+// ----------------------------------------------- mode shape post-processing
+
+// Scales `mode.shape` to max |w| = 1 (sampled) with w(L) > 0 and locates its
+// interior zeros on the analytic pieces. Returns the factor applied.
+double normalise_and_find_nodes(Mode& mode) {
+  struct Sample {
+    std::size_t piece;
+    double xi, w;
+  };
+  std::vector<Sample> samples;
+  double w_max = 0.0;
+  for (std::size_t i = 0; i < mode.shape.size(); ++i) {
+    const ShapePiece& p = mode.shape[i];
+    const double length = p.end_m - p.start_m;
+    const int intervals =
+        std::max(2, static_cast<int>(std::ceil(p.wavenumber_per_m * length / (kPi / 8.0))));
+    for (int j = 0; j <= intervals; ++j) {
+      const double xi = length * j / intervals;
+      const double w = evaluate_piece(p, xi);
+      samples.push_back({i, xi, w});
+      w_max = std::max(w_max, std::abs(w));
+    }
+  }
+  const double w_tip = samples.back().w;
+  double scale = 1.0 / w_max;
+  if (w_tip < 0.0) scale = -scale;
+  for (ShapePiece& p : mode.shape) {
+    for (double& d : p.derivatives) d *= scale;
+  }
+  mode.nodes_from_butt_m.clear();
+  const double x_end = mode.shape.back().end_m;
+  auto add_node = [&](double x) {
+    if (x <= 0.0 || x >= x_end) return;
+    if (!mode.nodes_from_butt_m.empty() && x - mode.nodes_from_butt_m.back() < 1e-9) return;
+    mode.nodes_from_butt_m.push_back(x);
+  };
+  for (std::size_t k = 0; k + 1 < samples.size(); ++k) {
+    const Sample& a = samples[k];
+    const Sample& b = samples[k + 1];
+    const ShapePiece& p = mode.shape[a.piece];
+    if (a.w == 0.0) add_node(p.start_m + a.xi);
+    if (a.piece != b.piece) continue;  // the same point, end of one piece and start of next
+    if ((a.w < 0.0 && b.w > 0.0) || (a.w > 0.0 && b.w < 0.0)) {
+      const double xi =
+          brent_root([&](double t) { return evaluate_piece(p, t); }, a.xi, b.xi, a.w * scale,
+                     b.w * scale, kNodeTol_m);
+      add_node(p.start_m + xi);
+    }
+  }
+  return scale;
+}
+
+void fill_shape_table(ModalResult& result, double length_m, int samples) {
+  if (samples <= 0) return;
+  result.shape_x_m.resize(samples);
+  for (int i = 0; i < samples; ++i) result.shape_x_m[i] = length_m * i / (samples - 1);
+  for (const Mode& m : result.modes) {
+    std::vector<double> w(samples);
+    for (int i = 0; i < samples; ++i) w[i] = mode_shape_at(m, result.shape_x_m[i]);
+    result.shape_w.push_back(std::move(w));
+  }
+}
+
+// ------------------------------------------------------------ exact solver
+
+// Transfer matrices for the dimensionless state (w, theta L, M L^2/EI0,
+// V L^3/EI0), with M = EI w'' and V = EI w''' (V jumps by m omega^2 w at a
+// point mass). In a uniform segment of length l, EI = r EI0, P = mu omega^2
+// L^4 / EI, a = l/L, z = P^(1/4) a:
+//   [ S          a T1        a^2 U2/r   a^3 V3/r ]
+//   [ P a^3 V3   S           a T1/r     a^2 U2/r ]
+//   [ r P a^2 U2 r P a^3 V3  S          a T1     ]
+//   [ r P a T1   r P a^2 U2  P a^3 V3   S        ]
+// with S, T1, U2, V3 from krylov(z); every entry is finite at omega = 0.
+class TransferModel {
+ public:
+  explicit TransferModel(const Segmentation& seg) : seg_(seg) {
+    L_ = seg.length_m;
+    for (const Segment& s : seg.segments) EI0_ = std::max(EI0_, s.EI_N_m2);
+    double mass = seg.tip_mass_kg;
+    for (const Segment& s : seg.segments) {
+      mass += s.mu_kg_m * s.length_m + s.mass_at_start_kg;
+      phase_per_root_omega_ += std::pow(s.mu_kg_m / s.EI_N_m2, 0.25) * s.length_m;
+    }
+    mu_bar_ = mass / L_;
+    if (phase_per_root_omega_ == 0.0) phase_per_root_omega_ = std::pow(mu_bar_ / EI0_, 0.25) * L_;
+  }
+
+  // omega [rad/s] for a total phase lambda = sum beta_i l_i.
+  double omega(double lambda) const {
+    const double r = lambda / phase_per_root_omega_;
+    return r * r;
+  }
+
+  // Frequency function: det of the tip (moment, shear) block over the two
+  // free-butt states, divided by (mu_bar omega^2 L^4 / EI0)^2 so that the
+  // double root at omega = 0 is removed.
+  double frequency_function(double omega) const {
+    using State = std::array<double, 4>;
+    State s1{1, 0, 0, 0}, s2{0, 1, 0, 0};
+    const double w2 = omega * omega;
+    for (const Segment& s : seg_.segments) {
+      const double jump = s.mass_at_start_kg * w2 * L_ * L_ * L_ / EI0_;
+      s1[3] += jump * s1[0];
+      s2[3] += jump * s2[0];
+      double m[4][4];
+      matrix(s, w2, m);
+      s1 = apply(m, s1);
+      s2 = apply(m, s2);
+    }
+    const double jump = seg_.tip_mass_kg * w2 * L_ * L_ * L_ / EI0_;
+    s1[3] += jump * s1[0];
+    s2[3] += jump * s2[0];
+    const double det = s1[2] * s2[3] - s2[2] * s1[3];
+    const double scale = mu_bar_ * w2 * L_ * L_ * L_ * L_ / EI0_;
+    return det / (scale * scale);
+  }
+
+  // The exact shape at a root omega of the frequency function.
+  std::vector<ShapePiece> shape(double omega) const {
+    using State = std::array<double, 4>;
+    const double w2 = omega * omega;
+    // Null vector of the tip block from the row of larger norm.
+    State s1{1, 0, 0, 0}, s2{0, 1, 0, 0};
+    for (const Segment& s : seg_.segments) {
+      const double jump = s.mass_at_start_kg * w2 * L_ * L_ * L_ / EI0_;
+      s1[3] += jump * s1[0];
+      s2[3] += jump * s2[0];
+      double m[4][4];
+      matrix(s, w2, m);
+      s1 = apply(m, s1);
+      s2 = apply(m, s2);
+    }
+    const double jump_tip = seg_.tip_mass_kg * w2 * L_ * L_ * L_ / EI0_;
+    s1[3] += jump_tip * s1[0];
+    s2[3] += jump_tip * s2[0];
+    double c1, c2;
+    if (std::hypot(s1[2], s2[2]) >= std::hypot(s1[3], s2[3])) {
+      c1 = s2[2];
+      c2 = -s1[2];
+    } else {
+      c1 = s2[3];
+      c2 = -s1[3];
+    }
+    State s{c1, c2, 0, 0};
+    std::vector<ShapePiece> pieces;
+    for (const Segment& seg : seg_.segments) {
+      s[3] += seg.mass_at_start_kg * w2 * L_ * L_ * L_ / EI0_ * s[0];
+      const double r = seg.EI_N_m2 / EI0_;
+      ShapePiece p;
+      p.start_m = seg.start_m;
+      p.end_m = seg.start_m + seg.length_m;
+      p.wavenumber_per_m = std::pow(seg.mu_kg_m * w2 / seg.EI_N_m2, 0.25);
+      p.derivatives = {s[0], s[1] / L_, s[2] / (r * L_ * L_), s[3] / (r * L_ * L_ * L_)};
+      pieces.push_back(p);
+      double m[4][4];
+      matrix(seg, w2, m);
+      s = apply(m, s);
+    }
+    return pieces;
+  }
+
+ private:
+  void matrix(const Segment& s, double w2, double m[4][4]) const {
+    const double r = s.EI_N_m2 / EI0_;
+    const double P = s.mu_kg_m * w2 * L_ * L_ * L_ * L_ / s.EI_N_m2;
+    const double a = s.length_m / L_;
+    const double a2 = a * a, a3 = a2 * a;
+    const Krylov k = krylov(std::sqrt(std::sqrt(P)) * a);
+    const double T = a * k.t1, U = a2 * k.u2, V = a3 * k.v3;
+    m[0][0] = k.s;       m[0][1] = T;         m[0][2] = U / r;     m[0][3] = V / r;
+    m[1][0] = P * V;     m[1][1] = k.s;       m[1][2] = T / r;     m[1][3] = U / r;
+    m[2][0] = r * P * U; m[2][1] = r * P * V; m[2][2] = k.s;       m[2][3] = T;
+    m[3][0] = r * P * T; m[3][1] = r * P * U; m[3][2] = P * V;     m[3][3] = k.s;
+  }
+
+  static std::array<double, 4> apply(const double m[4][4], const std::array<double, 4>& s) {
+    std::array<double, 4> out{};
+    for (int i = 0; i < 4; ++i) {
+      out[i] = m[i][0] * s[0] + m[i][1] * s[1] + m[i][2] * s[2] + m[i][3] * s[3];
+    }
+    return out;
+  }
+
+  const Segmentation& seg_;
+  double L_ = 0.0;
+  double EI0_ = 0.0;
+  double mu_bar_ = 0.0;
+  double phase_per_root_omega_ = 0.0;
+};
+
+ModalResult exact_free_modes(const Segmentation& seg, const ModeOptions& options) {
+  ModalResult result;
+  result.method = ModeOptions::Method::kExact;
+  result.theory = ModeOptions::Theory::kEulerBernoulli;
+  const TransferModel model(seg);
+  auto f = [&](double lambda) { return model.frequency_function(model.omega(lambda)); };
+
+  const double lambda_max = kPi * (2.0 * options.modes + 6.0);
+  double a = kScanStart;
+  double fa = f(a);
+  while (static_cast<int>(result.modes.size()) < options.modes && a < lambda_max) {
+    const double b = a + kScanStep;
+    const double fb = f(b);
+    if (fa == 0.0 || (fa < 0.0) != (fb < 0.0)) {
+      const double lambda = brent_root(f, a, b, fa, fb, kExactRootRelTol * b);
+      const double omega = model.omega(lambda);
+      Mode mode;
+      mode.frequency_Hz = mode.undamped_frequency_Hz = omega / (2.0 * kPi);
+      mode.shape = model.shape(omega);
+      normalise_and_find_nodes(mode);
+      result.modes.push_back(std::move(mode));
+    }
+    a = b;
+    fa = fb;
+  }
+  if (static_cast<int>(result.modes.size()) < options.modes) {
+    result.complete = false;
+    result.message = "found " + std::to_string(result.modes.size()) + " of " +
+                     std::to_string(options.modes) + " modes below beta L = " +
+                     format_number(lambda_max);
+  } else {
+    result.message = "exact transfer-matrix solution";
+  }
+  return result;
+}
+
+// ------------------------------------------------------------ finite elements
+
+using Eigen::Matrix4d;
+using Eigen::MatrixXd;
+using Eigen::Vector4d;
+using Eigen::VectorXd;
+
+// One two-node element on [x0, x0 + h]. With g = EI/(kappa G A) (0 for
+// Euler-Bernoulli) the static solution of the Timoshenko beam is
+//   w = a0 + a1 xi + a2 xi^2 + a3 xi^3,  theta = w' + 6 g a3,
+// shear strain w' - theta = -6 g a3, and the nodal DOFs (w1, theta1, w2,
+// theta2) = C a. g = 0 gives the Hermite cubic element.
+struct Element {
+  double x0 = 0.0, h = 0.0;
+  double EI = 0.0, mu = 0.0, rotary = 0.0, g = 0.0;  // rotary = mu r^2
+  Matrix4d c_inv;                                    // a = c_inv * DOFs
+
+  Element(double x0_, double h_, double EI_, double mu_, double rotary_, double g_)
+      : x0(x0_), h(h_), EI(EI_), mu(mu_), rotary(rotary_), g(g_) {
+    Matrix4d c;
+    c << 1, 0, 0, 0,                              //
+        0, 1, 0, 6 * g,                           //
+        1, h, h * h, h * h * h,                   //
+        0, 1, 2 * h, 3 * h * h + 6 * g;
+    c_inv = c.inverse();
+  }
+
+  // Integral of xi^n over the element.
+  double moment(int n) const { return std::pow(h, n + 1) / (n + 1); }
+
+  Matrix4d stiffness() const {
+    // Bending EI theta'^2 with theta' = 2 a2 + 6 a3 xi, plus shear
+    // kappa G A (6 g a3)^2 = 36 EI g a3^2.
+    Matrix4d ka = Matrix4d::Zero();
+    ka(2, 2) = 4 * h;
+    ka(2, 3) = ka(3, 2) = 6 * h * h;
+    ka(3, 3) = 12 * h * h * h + 36 * g * h;
+    return c_inv.transpose() * (EI * ka) * c_inv;
+  }
+
+  // Integral of N_w^T N_w (times 1), the pattern of mass, grip springs and dashpots.
+  Matrix4d gram() const {
+    Matrix4d ga;
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) ga(i, j) = moment(i + j);
+    return c_inv.transpose() * ga * c_inv;
+  }
+
+  Matrix4d mass() const {
+    Matrix4d m = mu * gram();
+    if (rotary > 0.0) {
+      // theta = (0, 1, 2 xi, 3 xi^2 + 6 g) . a
+      const double I0 = moment(0), I1 = moment(1), I2 = moment(2), I3 = moment(3),
+                   I4 = moment(4);
+      Matrix4d ta = Matrix4d::Zero();
+      ta(1, 1) = I0;
+      ta(1, 2) = ta(2, 1) = 2 * I1;
+      ta(1, 3) = ta(3, 1) = 3 * I2 + 6 * g * I0;
+      ta(2, 2) = 4 * I2;
+      ta(2, 3) = ta(3, 2) = 6 * I3 + 12 * g * I1;
+      ta(3, 3) = 9 * I4 + 36 * g * I2 + 36 * g * g * I0;
+      m += rotary * c_inv.transpose() * ta * c_inv;
+    }
+    return m;
+  }
+
+  // Integral of N_w^T (xi + x0 - xc)^p for p = 0, 1.
+  Vector4d load(int p, double xc) const {
+    Vector4d la;
+    for (int i = 0; i < 4; ++i) la(i) = p == 0 ? moment(i) : moment(i + 1) + (x0 - xc) * moment(i);
+    return c_inv.transpose() * la;
+  }
+
+  // Shape piece from nodal DOFs: derivatives of the cubic at x0.
+  ShapePiece piece(const Vector4d& dofs) const {
+    const Vector4d a = c_inv * dofs;
+    ShapePiece p;
+    p.start_m = x0;
+    p.end_m = x0 + h;
+    p.derivatives = {a(0), a(1), 2 * a(2), 6 * a(3)};
+    return p;
+  }
+};
+
+struct Mesh {
+  std::vector<Element> elements;
+  std::vector<double> nodes_m;
+  std::vector<double> nodal_mass_kg;  // point masses lumped at the nodes
+  double length_m = 0.0;
+};
+
+Mesh build_mesh(const Segmentation& seg, const std::vector<int>& counts,
+                const ModeOptions& options) {
+  Mesh mesh;
+  mesh.length_m = seg.length_m;
+  mesh.nodes_m.push_back(0.0);
+  mesh.nodal_mass_kg.push_back(0.0);
+  const bool timoshenko = options.theory == ModeOptions::Theory::kTimoshenko;
+  for (std::size_t i = 0; i < seg.segments.size(); ++i) {
+    const Segment& s = seg.segments[i];
+    mesh.nodal_mass_kg.back() += s.mass_at_start_kg;
+    double g = 0.0, rotary = 0.0;
+    if (timoshenko) {
+      const TimoshenkoSection& t = options.timoshenko[s.section];
+      g = s.EI_N_m2 / t.shear_stiffness_N;
+      rotary = s.mu_kg_m * t.radius_of_gyration_m * t.radius_of_gyration_m;
+    }
+    const double h = s.length_m / counts[i];
+    for (int e = 0; e < counts[i]; ++e) {
+      mesh.elements.emplace_back(s.start_m + e * h, h, s.EI_N_m2, s.mu_kg_m, rotary, g);
+      mesh.nodes_m.push_back(e + 1 == counts[i] ? s.start_m + s.length_m : s.start_m + (e + 1) * h);
+      mesh.nodal_mass_kg.push_back(0.0);
+    }
+  }
+  mesh.nodal_mass_kg.back() += seg.tip_mass_kg;
+  return mesh;
+}
+
+struct Assembled {
+  MatrixXd K, M, C;
+  int beam_dofs = 0;
+};
+
+Assembled assemble(const Mesh& mesh, const HandCoupling* hand) {
+  const int beam_dofs = 2 * static_cast<int>(mesh.nodes_m.size());
+  const int n = beam_dofs + (hand ? 2 : 0);
+  Assembled out;
+  out.beam_dofs = beam_dofs;
+  out.K = MatrixXd::Zero(n, n);
+  out.M = MatrixXd::Zero(n, n);
+  out.C = MatrixXd::Zero(n, n);
+  double grip_start = 0, grip_end = 0, xc = 0;
+  if (hand) {
+    grip_start = hand->grip_start_m;
+    grip_end = hand->grip_start_m + hand->grip_length_m;
+    xc = 0.5 * (grip_start + grip_end);
+  }
+  const double eps = 1e-12 * mesh.length_m;
+  for (std::size_t e = 0; e < mesh.elements.size(); ++e) {
+    const Element& el = mesh.elements[e];
+    const int i0 = 2 * static_cast<int>(e);
+    out.K.block<4, 4>(i0, i0) += el.stiffness();
+    out.M.block<4, 4>(i0, i0) += el.mass();
+    const double mid = el.x0 + 0.5 * el.h;
+    if (hand && mid > grip_start - eps && mid < grip_end + eps) {
+      // 1/2 int k (w - u - phi (x - xc))^2 dx, and the same with c for the dashpots.
+      const Matrix4d gram = el.gram();
+      const Vector4d l0 = el.load(0, xc), l1 = el.load(1, xc);
+      const double r0 = el.h;
+      const double r1 = el.h * (el.x0 + 0.5 * el.h - xc);
+      const double d0 = el.x0 - xc, d1 = d0 + el.h;
+      const double r2 = (d1 * d1 * d1 - d0 * d0 * d0) / 3.0;
+      const int u = beam_dofs, phi = beam_dofs + 1;
+      auto add = [&](MatrixXd& A, double k) {
+        A.block<4, 4>(i0, i0) += k * gram;
+        A.block<4, 1>(i0, u) -= k * l0;
+        A.block<1, 4>(u, i0) -= k * l0.transpose();
+        A.block<4, 1>(i0, phi) -= k * l1;
+        A.block<1, 4>(phi, i0) -= k * l1.transpose();
+        A(u, u) += k * r0;
+        A(u, phi) += k * r1;
+        A(phi, u) += k * r1;
+        A(phi, phi) += k * r2;
+      };
+      add(out.K, hand->stiffness_N_m2);
+      add(out.C, hand->damping_N_s_m2);
+    }
+  }
+  for (std::size_t i = 0; i < mesh.nodes_m.size(); ++i) out.M(2 * i, 2 * i) += mesh.nodal_mass_kg[i];
+  if (hand) {
+    out.M(beam_dofs, beam_dofs) = hand->mass_kg;
+    out.M(beam_dofs + 1, beam_dofs + 1) =
+        hand->rotary_inertia_kg_m2.value_or(hand->mass_kg * hand->grip_length_m *
+                                            hand->grip_length_m / 12.0);
+  }
+  return out;
+}
+
+// Basis of the M-orthogonal complement of the rigid-body motions (translation
+// and rotation of beam and hand together): K and C vanish on the rigid motions,
+// so q = Q b decouples them exactly and the reduced problem has no zero modes.
+MatrixXd flexible_basis(const Mesh& mesh, const Assembled& a, const HandCoupling* hand) {
+  const int n = static_cast<int>(a.M.rows());
+  MatrixXd R = MatrixXd::Zero(n, 2);
+  for (std::size_t i = 0; i < mesh.nodes_m.size(); ++i) {
+    R(2 * i, 0) = 1.0;
+    R(2 * i, 1) = mesh.nodes_m[i];
+    R(2 * i + 1, 1) = 1.0;
+  }
+  if (hand) {
+    R(a.beam_dofs, 0) = 1.0;
+    R(a.beam_dofs, 1) = hand->grip_start_m + 0.5 * hand->grip_length_m;
+    R(a.beam_dofs + 1, 1) = 1.0;
+  }
+  const Eigen::HouseholderQR<MatrixXd> qr(a.M * R);
+  const MatrixXd Q = qr.householderQ() * MatrixXd::Identity(n, n);
+  return Q.rightCols(n - 2);
+}
+
+std::vector<int> counts_for(const Segmentation& seg, double per_phase_weight) {
+  std::vector<int> counts;
+  for (const Segment& s : seg.segments) {
+    const double phase = std::pow(s.mu_kg_m / s.EI_N_m2, 0.25) * s.length_m;
+    counts.push_back(std::max(1, static_cast<int>(std::ceil(per_phase_weight * phase - 1e-9))));
+  }
+  return counts;
+}
+
+double total_phase_weight(const Segmentation& seg) {
+  double sum = 0.0;
+  for (const Segment& s : seg.segments) sum += std::pow(s.mu_kg_m / s.EI_N_m2, 0.25) * s.length_m;
+  return sum;
+}
+
+// Lowest flexible omega^2 eigenvalues and M-normalised eigenvectors.
+std::pair<VectorXd, MatrixXd> free_spectrum(const Mesh& mesh) {
+  const Assembled a = assemble(mesh, nullptr);
+  const MatrixXd Q = flexible_basis(mesh, a, nullptr);
+  const MatrixXd Kr = Q.transpose() * a.K * Q;
+  const MatrixXd Mr = Q.transpose() * a.M * Q;
+  // Kr is positive definite once the rigid-body modes are gone, so solve the
+  // inverted pencil Mr b = (1/omega^2) Kr b: its largest eigenvalues, the low
+  // modes, come out with relative (not ~cond(K) times worse) accuracy.
+  const Eigen::GeneralizedSelfAdjointEigenSolver<MatrixXd> es(Mr, Kr);
+  const int m = static_cast<int>(Kr.rows());
+  VectorXd omega2(m);
+  MatrixXd vectors(a.M.rows(), m);
+  for (int k = 0; k < m; ++k) {
+    const int j = m - 1 - k;
+    omega2(k) = 1.0 / es.eigenvalues()(j);
+    const VectorXd b = es.eigenvectors().col(j);
+    vectors.col(k) = Q * (b / std::sqrt(b.dot(Mr * b)));
+  }
+  return {omega2, vectors};
+}
+
+// Elements per segment: explicit total, or sized so the f1 error is about
+// rel_tol from the h^4 convergence of the cubic element, (beta h)^4 / 1440,
+// with beta from a coarse first estimate of f1.
+std::vector<int> element_counts(const Segmentation& seg, const ModeOptions& options) {
+  const double weight = total_phase_weight(seg);
+  if (options.elements > 0) return counts_for(seg, options.elements / weight);
+  // Coarse estimate: ~2 elements per radian of phase at the first mode.
+  ModeOptions coarse = options;
+  const std::vector<int> coarse_counts = counts_for(seg, 2.0 * 4.73 / weight);
+  const Mesh mesh = build_mesh(seg, coarse_counts, coarse);
+  const double omega1 = std::sqrt(std::max(free_spectrum(mesh).first(0), 0.0));
+  const double beta_h =
+      std::pow(kHermiteErrorConstant * kToleranceSafety * options.rel_tol, 0.25);
+  std::vector<int> counts = counts_for(seg, std::sqrt(omega1) / beta_h);
+  int total = 0;
+  for (int c : counts) total += c;
+  if (total < options.modes + 2) counts = counts_for(seg, (options.modes + 2) / weight);
+  return counts;
+}
+
+int total_elements(const std::vector<int>& counts) {
+  int total = 0;
+  for (int c : counts) total += c;
+  return total;
+}
+
+// The mode of FE eigenvector q; also returns the factor between its shape and q.
+std::pair<Mode, double> fe_mode(const Mesh& mesh, const VectorXd& q, double omega) {
+  Mode mode;
+  mode.frequency_Hz = mode.undamped_frequency_Hz = omega / (2.0 * kPi);
+  for (std::size_t e = 0; e < mesh.elements.size(); ++e) {
+    mode.shape.push_back(mesh.elements[e].piece(q.segment<4>(2 * e)));
+  }
+  const double scale = normalise_and_find_nodes(mode);
+  mode.fe_dofs.assign(q.data(), q.data() + q.size());
+  if (scale < 0.0) {
+    for (double& v : mode.fe_dofs) v = -v;
+  }
+  return {std::move(mode), scale};
+}
+
+ModalResult fe_free_modes(const Segmentation& seg, const ModeOptions& options) {
+  ModalResult result;
+  result.method = ModeOptions::Method::kFiniteElement;
+  result.theory = options.theory;
+  const std::vector<int> counts = element_counts(seg, options);
+  const Mesh mesh = build_mesh(seg, counts, options);
+  result.elements_used = total_elements(counts);
+  const auto [omega2, vectors] = free_spectrum(mesh);
+  const int available = static_cast<int>(omega2.size());
+  for (int k = 0; k < std::min(options.modes, available); ++k) {
+    result.modes.push_back(
+        fe_mode(mesh, vectors.col(k), std::sqrt(std::max(omega2(k), 0.0))).first);
+  }
+  result.complete = static_cast<int>(result.modes.size()) == options.modes;
+  result.message = "finite elements: " + std::to_string(result.elements_used) + " elements";
+  return result;
+}
+
+void validate_hand(const HandCoupling& hand, double length_m) {
+  detail::require_positive("hand.mass_kg", hand.mass_kg, "kg");
+  detail::require_in_range("hand.grip_start_m", hand.grip_start_m, 0.0, length_m, "m");
+  detail::require_in_range("hand.grip_length_m", hand.grip_length_m, 0.0,
+                           length_m - hand.grip_start_m, "m");
+  detail::require_positive("hand.grip_length_m", hand.grip_length_m, "m");
+  detail::require_at_least("hand.stiffness_N_m2", hand.stiffness_N_m2, 0.0, "N/m^2");
+  detail::require_at_least("hand.damping_N_s_m2", hand.damping_N_s_m2, 0.0, "N s/m^2");
+  if (hand.rotary_inertia_kg_m2) {
+    detail::require_positive("hand.rotary_inertia_kg_m2", *hand.rotary_inertia_kg_m2, "kg m^2");
+  }
+}
+
+Segmentation hand_segmentation(const std::vector<Section>& sections,
+                               const std::vector<PointMass>& point_masses,
+                               const HandCoupling& hand) {
+  return segment(sections, point_masses,
+                 {hand.grip_start_m, hand.grip_start_m + hand.grip_length_m});
+}
+
+}  // namespace
+
+// ======================================================================= API
+
+TimoshenkoSection rectangular_timoshenko_section(double shear_modulus_Pa, double width_m,
+                                                 double thickness_m) {
+  detail::require_positive("shear_modulus_Pa", shear_modulus_Pa, "Pa");
+  detail::require_positive("width_m", width_m, "m");
+  detail::require_positive("thickness_m", thickness_m, "m");
+  return {kRectangularShearCoefficient * shear_modulus_Pa * width_m * thickness_m,
+          thickness_m / std::sqrt(12.0)};
+}
+
+std::string ModeOptions::validate() const {
+  auto bad = [](const std::string& name, const std::string& expected, double value) {
+    return name + ": must be " + expected + ", got " + format_number(value);
+  };
+  const int max_modes = method == Method::kExact ? kMaxExactModes : kMaxModes;
+  if (modes < 1 || modes > max_modes) {
+    return bad("modes", "in [1, " + std::to_string(max_modes) + "]", modes);
+  }
+  // Below ~1e-8 the round-off of the assembled stiffness (cond ~ (L/h)^4) dominates.
+  if (!(rel_tol >= 1e-8 && rel_tol <= 0.1)) return bad("rel_tol", "in [1e-8, 0.1]", rel_tol);
+  if (elements < 0 || elements > kMaxElements) {
+    return bad("elements", "in [0, " + std::to_string(kMaxElements) + "]", elements);
+  }
+  if (shape_samples < 0 || shape_samples == 1) {
+    return bad("shape_samples", "0 or >= 2", shape_samples);
+  }
+  if (theory == Theory::kTimoshenko) {
+    if (method != Method::kFiniteElement) {
+      return "theory: Timoshenko needs method kFiniteElement, got kExact";
+    }
+    for (std::size_t i = 0; i < timoshenko.size(); ++i) {
+      const TimoshenkoSection& t = timoshenko[i];
+      if (!(t.shear_stiffness_N > 0.0 && std::isfinite(t.shear_stiffness_N))) {
+        return bad(indexed("timoshenko", i, "shear_stiffness_N"), "> 0 N", t.shear_stiffness_N);
+      }
+      if (!(t.radius_of_gyration_m >= 0.0 && std::isfinite(t.radius_of_gyration_m))) {
+        return bad(indexed("timoshenko", i, "radius_of_gyration_m"), ">= 0 m",
+                   t.radius_of_gyration_m);
+      }
+    }
+  }
+  return {};
+}
+
+double mode_shape_at(const Mode& mode, double x_m) {
+  if (mode.shape.empty()) throw std::invalid_argument("mode: has no shape");
+  const double length = mode.shape.back().end_m;
+  const double eps = 1e-12 * length;
+  if (!(x_m >= -eps && x_m <= length + eps)) fail("x_m", "in [0, " + format_number(length) + "] m", x_m);
+  auto it = std::upper_bound(mode.shape.begin(), mode.shape.end(), x_m,
+                             [](double x, const ShapePiece& p) { return x < p.end_m; });
+  if (it == mode.shape.end()) --it;
+  return evaluate_piece(*it, std::clamp(x_m - it->start_m, 0.0, it->end_m - it->start_m));
+}
+
+ModalResult free_modes(const std::vector<Section>& sections,
+                       const std::vector<PointMass>& point_masses, const ModeOptions& options) {
+  const bool fe = options.method == ModeOptions::Method::kFiniteElement;
+  const double length = validated_length(sections, fe);
+  validate_point_masses(point_masses, length);
+  validate_options(options, sections.size());
+  const Segmentation seg = segment(sections, point_masses);
+  ModalResult result = fe ? fe_free_modes(seg, options) : exact_free_modes(seg, options);
+  fill_shape_table(result, length, options.shape_samples);
+  return result;
+}
+
+BeamMatrices assemble_beam_matrices(const std::vector<Section>& sections,
+                                    const std::vector<PointMass>& point_masses,
+                                    const ModeOptions& options,
+                                    const std::optional<HandCoupling>& hand) {
+  const double length = validated_length(sections, true);
+  validate_point_masses(point_masses, length);
+  validate_options(options, sections.size());
+  if (hand) validate_hand(*hand, length);
+  const Segmentation seg =
+      hand ? hand_segmentation(sections, point_masses, *hand) : segment(sections, point_masses);
+  const Mesh mesh = build_mesh(seg, element_counts(seg, options), options);
+  const Assembled a = assemble(mesh, hand ? &*hand : nullptr);
+  BeamMatrices out;
+  out.node_positions_m = mesh.nodes_m;
+  out.size = static_cast<int>(a.K.rows());
+  auto row_major = [](const MatrixXd& m) {
+    std::vector<double> v(m.size());
+    Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
+        v.data(), m.rows(), m.cols()) = m;
+    return v;
+  };
+  out.stiffness = row_major(a.K);
+  out.mass = row_major(a.M);
+  out.damping = row_major(a.C);
+  return out;
+}
+
+ModalResult hand_held_modes(const std::vector<Section>& sections,
+                            const std::vector<PointMass>& point_masses, const HandCoupling& hand,
+                            const ModeOptions& options) {
+  const double length = validated_length(sections, true);
+  validate_point_masses(point_masses, length);
+  validate_options(options, sections.size());
+  if (options.method != ModeOptions::Method::kFiniteElement) {
+    throw std::invalid_argument("options.method: the hand-held beam needs kFiniteElement, got kExact");
+  }
+  validate_hand(hand, length);
+
+  ModalResult result;
+  result.method = ModeOptions::Method::kFiniteElement;
+  result.theory = options.theory;
+  const Segmentation seg = hand_segmentation(sections, point_masses, hand);
+  const std::vector<int> counts = element_counts(seg, options);
+  const Mesh mesh = build_mesh(seg, counts, options);
+  result.elements_used = total_elements(counts);
+  const Assembled a = assemble(mesh, &hand);
+  const MatrixXd Q = flexible_basis(mesh, a, &hand);
+  const MatrixXd Kr = Q.transpose() * a.K * Q;
+  const MatrixXd Cr = Q.transpose() * a.C * Q;
+  const MatrixXd Mr = Q.transpose() * a.M * Q;
+  const int m = static_cast<int>(Mr.rows());
+
+  // y = L^T b with Mr = L L^T: y'' + Ct y' + Kt y = 0, then the state space
+  // x = (y, y'), x' = A x, A = [0 I; -Kt -Ct].
+  const Eigen::LLT<MatrixXd> llt(Mr);
+  const MatrixXd Kt = llt.matrixL().solve(MatrixXd(llt.matrixL().solve(Kr)).transpose());
+  const MatrixXd Ct = llt.matrixL().solve(MatrixXd(llt.matrixL().solve(Cr)).transpose());
+  // Balance: x = (sigma y, y') with sigma ~ the highest natural frequency
+  // makes both off-diagonal blocks O(sigma) instead of O(1) and O(sigma^2),
+  // so the low eigenvalues keep relative accuracy.
+  const double sigma = std::sqrt(std::max(Kt.diagonal().maxCoeff(), 1e-300));
+  MatrixXd A = MatrixXd::Zero(2 * m, 2 * m);
+  A.topRightCorner(m, m) = sigma * MatrixXd::Identity(m, m);
+  A.bottomLeftCorner(m, m) = -Kt / sigma;
+  A.bottomRightCorner(m, m) = -Ct;
+  const Eigen::EigenSolver<MatrixXd> es(A, true);
+
+  using Complex = std::complex<double>;
+  std::vector<int> order;
+  int overdamped = 0;
+  for (int j = 0; j < 2 * m; ++j) {
+    const Complex s = es.eigenvalues()(j);
+    // A hand joined by nothing (k = c = 0) adds defective zero roots, perturbed
+    // to ~sqrt(eps) sigma by round-off: they are not vibration modes.
+    if (std::abs(s) < 1e-6 * sigma) continue;
+    if (s.imag() > 1e-9 * std::abs(s)) order.push_back(j);
+    if (std::abs(s.imag()) <= 1e-9 * std::abs(s)) ++overdamped;
+  }
+  std::sort(order.begin(), order.end(), [&](int i, int j) {
+    return es.eigenvalues()(i).imag() < es.eigenvalues()(j).imag();
+  });
+  for (int j : order) {
+    if (static_cast<int>(result.modes.size()) == options.modes) break;
+    const Complex s = es.eigenvalues()(j);
+    const Eigen::VectorXcd y = es.eigenvectors().col(j).head(m) / sigma;
+    const VectorXd b_re = llt.matrixU().solve(y.real());
+    const VectorXd b_im = llt.matrixU().solve(y.imag());
+    Eigen::VectorXcd q = (Q * b_re).cast<Complex>() + Complex(0, 1) * (Q * b_im).cast<Complex>();
+    // Turn the shape to be as real as possible: maximise |Re(e^{i a} w)|.
+    Complex sum_sq = 0.0;
+    for (int i = 0; i < a.beam_dofs; i += 2) sum_sq += q(i) * q(i);
+    q *= std::exp(Complex(0, -0.5 * std::arg(sum_sq)));
+    double re2 = 0.0, im2 = 0.0;
+    for (int i = 0; i < a.beam_dofs; i += 2) {
+      re2 += q(i).real() * q(i).real();
+      im2 += q(i).imag() * q(i).imag();
+    }
+    VectorXd re = q.real();
+    re /= std::sqrt(re.dot(a.M * re));
+    auto [mode, scale] = fe_mode(mesh, re, std::abs(s));
+    mode.frequency_Hz = s.imag() / (2.0 * kPi);
+    mode.damping_ratio = -s.real() / std::abs(s);
+    mode.complexity = std::sqrt(im2 / re2);
+    mode.hand_displacement = scale * re(a.beam_dofs);
+    const int u = a.beam_dofs;
+    mode.hand_energy_fraction = a.M(u, u) * re(u) * re(u) + a.M(u + 1, u + 1) * re(u + 1) * re(u + 1);
+    result.modes.push_back(std::move(mode));
+  }
+  result.complete = static_cast<int>(result.modes.size()) == options.modes;
+  result.message = "finite elements: " + std::to_string(result.elements_used) +
+                   " elements, state-space eigenproblem; " + std::to_string(overdamped) +
+                   " overdamped (real) roots not reported";
+  fill_shape_table(result, length, options.shape_samples);
+  return result;
+}
+
+HandCoupling calibrated_hand() {
+  HandCoupling hand;
+  hand.stiffness_N_m2 = kCalibratedGripStiffness_N_m2;
+  hand.damping_N_s_m2 = kCalibratedGripDamping_N_s_m2;
+  return hand;
+}
+
+std::vector<Section> scale_EI_to_fundamental(const std::vector<Section>& sections,
+                                             const std::vector<PointMass>& point_masses,
+                                             double f1_Hz, const ModeOptions& options) {
+  detail::require_positive("f1_Hz", f1_Hz, "Hz");
+  ModeOptions one = options;
+  one.modes = 1;
+  one.shape_samples = 0;
+  std::vector<Section> scaled = sections;
+  // Euler-Bernoulli: f ~ sqrt(EI) exactly, one step. Timoshenko: the shear
+  // stiffness does not scale, so repeat the step until f1 matches.
+  const int steps = options.theory == ModeOptions::Theory::kTimoshenko ? 30 : 1;
+  for (int i = 0; i < steps; ++i) {
+    const ModalResult r = free_modes(scaled, point_masses, one);
+    if (r.modes.empty()) throw std::invalid_argument("sections: no flexible mode found");
+    const double ratio = f1_Hz / r.modes[0].frequency_Hz;
+    for (Section& s : scaled) s.EI_N_m2 = *s.EI_N_m2 * ratio * ratio;
+    if (std::abs(ratio - 1.0) < 1e-13) break;
+  }
+  return scaled;
+}
+
+double uniform_EI_for_fundamental(const std::vector<Section>& sections,
+                                  const std::vector<PointMass>& point_masses, double f1_Hz) {
+  detail::require_positive("f1_Hz", f1_Hz, "Hz");
+  std::vector<Section> unit = sections;
+  for (Section& s : unit) s.EI_N_m2 = 1.0;
+  ModeOptions one;
+  one.modes = 1;
+  const ModalResult r = free_modes(unit, point_masses, one);
+  if (r.modes.empty()) throw std::invalid_argument("sections: no flexible mode found");
+  const double ratio = f1_Hz / r.modes[0].frequency_Hz;
+  return ratio * ratio;
+}
+
+}  // namespace sweetspot

@@ -1,0 +1,475 @@
+// Oracles: the closed-form free-free beam, agreement of two independent
+// solvers (transfer matrices vs finite elements), Cross (2004)'s measured beam,
+// limits of the hand-held model, and FE identities.
+#include "sweetspot/beam_modes.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+#include <Eigen/Dense>
+#include <Eigen/Eigenvalues>
+#include <catch2/catch.hpp>
+
+namespace sweetspot {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Roots of cos(z) cosh(z) = 1 (free-free Euler-Bernoulli), 8 digits.
+constexpr double kFreeFreeBetaL[3] = {4.7300408, 7.8532046, 10.9956079};
+// Node of the fundamental of a uniform free-free beam, as a fraction of L.
+constexpr double kFreeFreeNode = 0.22416;
+// The roots above carry 8 digits: ~1e-8 relative, so (beta L)^2 ~2e-8.
+constexpr double kClosedFormDigits = 3e-8;
+constexpr double kNodeDigits = 5e-6;        // the node fraction carries 5 digits
+constexpr double kExactTol = 1e-9;          // exact solver vs an exact closed form
+constexpr double kDefaultFeTol = 1e-6;      // ModeOptions::rel_tol default
+constexpr double kSubMicrometre_m = 1e-7;
+// The state-space (nonsymmetric) eigensolver against the symmetric one on the
+// same matrices: round-off grows with omega_max / omega_1 of the mesh.
+constexpr double kStateSpaceRoundOff = 1e-9;
+
+// Cross (2004) Sec. II: 72 cm x 40 mm x 19 mm wood beam of 328 g, free f1 = 193 Hz
+// with nodes 15.8 cm from each end; modes at 506 and 962 Hz (Sec. III).
+constexpr double kPaperLength_m = 0.72;
+constexpr double kPaperMass_kg = 0.328;
+constexpr double kPaperWidth_m = 0.040;
+constexpr double kPaperThickness_m = 0.019;
+constexpr double kPaperF1_Hz = 193.0;
+constexpr double kPaperHandHeldF1_Hz = 171.0;
+constexpr double kPaperNode_m = 0.158;
+constexpr double kPaperF2_Hz = 506.0;
+constexpr double kPaperF3_Hz = 962.0;
+// Shear modulus of the wood, G ~ E_L / 16 (USDA Wood Handbook FPL-GTR-190,
+// Table 5-1: G_LR / E_L and G_LT / E_L are 0.05-0.1 for hardwoods; E_L here is
+// 15.7 GPa from the 193 Hz fundamental). Not fitted to the measured modes.
+constexpr double kWoodShearModulus_Pa = 1.0e9;
+
+double f_closed_form(double beta_L, double L, double EI, double mu) {
+  return beta_L * beta_L / (2 * kPi * L * L) * std::sqrt(EI / mu);
+}
+
+ModeOptions exact(int modes = 3) {
+  ModeOptions o;
+  o.modes = modes;
+  return o;
+}
+
+ModeOptions fe(int modes = 3, double rel_tol = kDefaultFeTol) {
+  ModeOptions o;
+  o.modes = modes;
+  o.method = ModeOptions::Method::kFiniteElement;
+  o.rel_tol = rel_tol;
+  return o;
+}
+
+std::vector<Section> paper_beam() {
+  std::vector<Section> beam{{kPaperLength_m, kPaperMass_kg, 1.0}};
+  beam[0].EI_N_m2 = uniform_EI_for_fundamental(beam, {}, kPaperF1_Hz);
+  return beam;
+}
+
+// A two-section racquet: stiff light head, softer heavier handle, lead tape.
+std::vector<Section> racquet() { return {{0.34, 0.15, 180.0}, {0.345, 0.17, 95.0}}; }
+std::vector<PointMass> racquet_masses() { return {{0.50, 0.012}, {0.685, 0.006}}; }
+
+// The fundamental of the hand-held beam: the lowest bending mode (not the hand
+// rocking on the grip) with a node in the free half.
+const Mode* hand_held_fundamental(const ModalResult& r, double L) {
+  for (const Mode& m : r.modes) {
+    if (m.hand_energy_fraction > 0.5) continue;
+    for (double x : m.nodes_from_butt_m) {
+      if (x > 0.5 * L) return &m;
+    }
+  }
+  return nullptr;
+}
+
+Eigen::MatrixXd to_matrix(const std::vector<double>& v, int n) {
+  return Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
+      v.data(), n, n);
+}
+
+// ------------------------------------------------------------------- uniform
+
+TEST_CASE("The exact solver reproduces the closed-form free-free frequencies") {
+  const double L = 0.7, m = 0.35, EI = 250.0;
+  const ModalResult r = free_modes({{L, m, EI}}, {}, exact(3));
+  REQUIRE(r.complete);
+  REQUIRE(r.modes.size() == 3);
+  for (int k = 0; k < 3; ++k) {
+    const double f = f_closed_form(kFreeFreeBetaL[k], L, EI, m / L);
+    CHECK(r.modes[k].frequency_Hz == Approx(f).epsilon(kClosedFormDigits));
+    CHECK(r.modes[k].nodes_from_butt_m.size() == static_cast<std::size_t>(k + 2));
+  }
+}
+
+TEST_CASE("The exact solver agrees with cos(z) cosh(z) = 1 to 1e-9") {
+  // Root of the closed-form equation refined here by Newton, independent of the solver.
+  double z = 4.73;
+  for (int i = 0; i < 50; ++i) {
+    const double g = std::cos(z) * std::cosh(z) - 1.0;
+    const double dg = -std::sin(z) * std::cosh(z) + std::cos(z) * std::sinh(z);
+    z -= g / dg;
+  }
+  const double L = 1.0, m = 1.0, EI = 1.0;
+  const ModalResult r = free_modes({{L, m, EI}}, {}, exact(1));
+  CHECK(r.modes[0].frequency_Hz == Approx(f_closed_form(z, L, EI, m / L)).epsilon(kExactTol));
+}
+
+TEST_CASE("The fundamental of a uniform free beam has nodes 0.22416 L from each end") {
+  const double L = 0.72;
+  const ModalResult r = free_modes({{L, 0.3, 300.0}}, {}, exact(1));
+  const auto& nodes = r.modes[0].nodes_from_butt_m;
+  REQUIRE(nodes.size() == 2);
+  CHECK(nodes[0] == Approx(kFreeFreeNode * L).margin(kNodeDigits * L));
+  CHECK(L - nodes[1] == Approx(kFreeFreeNode * L).margin(kNodeDigits * L));
+  CHECK(nodes[0] == Approx(L - nodes[1]).margin(kSubMicrometre_m));  // symmetry
+  CHECK(std::abs(mode_shape_at(r.modes[0], nodes[0])) < 1e-9);
+}
+
+TEST_CASE("Finite elements at the default resolution get f1 of a uniform beam to 1e-6") {
+  const double L = 0.7, m = 0.35, EI = 250.0;
+  const ModalResult r = free_modes({{L, m, EI}}, {}, fe(3));
+  const double f1 = f_closed_form(kFreeFreeBetaL[0], L, EI, m / L);
+  const double error = r.modes[0].frequency_Hz / f1 - 1.0;
+  CHECK(error >= 0.0);  // consistent mass: Rayleigh-Ritz upper bound
+  CHECK(error <= kDefaultFeTol);
+  INFO("elements used " << r.elements_used << ", f1 error " << error);
+  CHECK(r.modes[0].nodes_from_butt_m[0] == Approx(kFreeFreeNode * L).margin(kNodeDigits * L));
+}
+
+TEST_CASE("A looser finite-element tolerance uses fewer elements and still meets it") {
+  const double L = 0.7, m = 0.35, EI = 250.0;
+  const double f1 = f_closed_form(kFreeFreeBetaL[0], L, EI, m / L);
+  int previous = 1 << 30;
+  for (double tol : {1e-8, 1e-6, 1e-4, 1e-3}) {
+    const ModalResult r = free_modes({{L, m, EI}}, {}, fe(1, tol));
+    CHECK(r.modes[0].frequency_Hz / f1 - 1.0 <= tol + kClosedFormDigits);
+    CHECK(r.elements_used <= previous);
+    previous = r.elements_used;
+  }
+}
+
+TEST_CASE("The finite-element f1 error falls as h^4 (Hermite cubic)") {
+  const double L = 1.0, m = 1.0, EI = 1.0;
+  const double f1 = f_closed_form(kFreeFreeBetaL[0], L, EI, m / L);
+  auto error = [&](int n) {
+    ModeOptions o = fe(1);
+    o.elements = n;
+    return free_modes({{L, m, EI}}, {}, o).modes[0].frequency_Hz / f1 - 1.0;
+  };
+  const double order = std::log2(error(8) / error(16));
+  CHECK(order == Approx(4.0).margin(0.1));
+  const double order_fine = std::log2(error(16) / error(32));
+  CHECK(order_fine == Approx(4.0).margin(0.1));
+}
+
+// --------------------------------------------------- two solvers, one racquet
+
+TEST_CASE("Exact and finite-element solvers agree on a two-section racquet with point masses") {
+  const ModalResult e = free_modes(racquet(), racquet_masses(), exact(3));
+  const ModalResult f = free_modes(racquet(), racquet_masses(), fe(3, 1e-8));
+  REQUIRE(e.modes.size() == 3);
+  REQUIRE(f.modes.size() == 3);
+  // FE sized for 1e-8 on f1; mode k converges (beta_k / beta_1)^4 times slower.
+  const double kModeTol[3] = {2e-8, 2e-7, 1e-6};
+  for (int k = 0; k < 3; ++k) {
+    CHECK(f.modes[k].frequency_Hz == Approx(e.modes[k].frequency_Hz).epsilon(kModeTol[k]));
+    REQUIRE(f.modes[k].nodes_from_butt_m.size() == e.modes[k].nodes_from_butt_m.size());
+    for (std::size_t j = 0; j < e.modes[k].nodes_from_butt_m.size(); ++j) {
+      CHECK(f.modes[k].nodes_from_butt_m[j] ==
+            Approx(e.modes[k].nodes_from_butt_m[j]).margin(1e-6));
+    }
+    for (double x : {0.0, 0.2, 0.5, 0.685}) {
+      CHECK(mode_shape_at(f.modes[k], x) == Approx(mode_shape_at(e.modes[k], x)).margin(1e-5));
+    }
+  }
+}
+
+TEST_CASE("A point mass at the tip lowers the fundamental and matches finite elements") {
+  const std::vector<Section> beam{{0.7, 0.3, 200.0}};
+  const double free = free_modes(beam, {}, exact(1)).modes[0].frequency_Hz;
+  const std::vector<PointMass> tip{{0.7, 0.05}};
+  const double loaded = free_modes(beam, tip, exact(1)).modes[0].frequency_Hz;
+  CHECK(loaded < free);
+  CHECK(free_modes(beam, tip, fe(1, 1e-8)).modes[0].frequency_Hz ==
+        Approx(loaded).epsilon(2e-8));
+}
+
+TEST_CASE("Scaling EI to a measured fundamental hits it and scales every section alike") {
+  const std::vector<Section> scaled = scale_EI_to_fundamental(racquet(), racquet_masses(), 150.0);
+  CHECK(free_modes(scaled, racquet_masses(), exact(1)).modes[0].frequency_Hz ==
+        Approx(150.0).epsilon(1e-11));
+  CHECK(*scaled[0].EI_N_m2 / *scaled[1].EI_N_m2 ==
+        Approx(*racquet()[0].EI_N_m2 / *racquet()[1].EI_N_m2).epsilon(1e-14));
+}
+
+// -------------------------------------------------------------- FE identities
+
+TEST_CASE("The finite-element spectrum has two rigid-body modes at zero frequency") {
+  const BeamMatrices mats = assemble_beam_matrices(racquet(), racquet_masses(), fe(3));
+  const Eigen::MatrixXd K = to_matrix(mats.stiffness, mats.size);
+  const Eigen::MatrixXd M = to_matrix(mats.mass, mats.size);
+  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(K, M);
+  const double w1 = 2 * kPi * free_modes(racquet(), racquet_masses(), exact(1)).modes[0].frequency_Hz;
+  // Rigid modes are zero up to the round-off of K (~cond(K) eps of the first flexible one).
+  CHECK(std::abs(es.eigenvalues()(0)) < 1e-5 * w1 * w1);
+  CHECK(std::abs(es.eigenvalues()(1)) < 1e-5 * w1 * w1);
+  CHECK(std::sqrt(es.eigenvalues()(2)) == Approx(w1).epsilon(1e-5));
+}
+
+TEST_CASE("Finite-element modes are mass-orthogonal") {
+  const ModeOptions o = fe(4);
+  const BeamMatrices mats = assemble_beam_matrices(racquet(), racquet_masses(), o);
+  const Eigen::MatrixXd M = to_matrix(mats.mass, mats.size);
+  const Eigen::MatrixXd K = to_matrix(mats.stiffness, mats.size);
+  const ModalResult r = free_modes(racquet(), racquet_masses(), o);
+  REQUIRE(r.modes.size() == 4);
+  for (std::size_t i = 0; i < r.modes.size(); ++i) {
+    const Eigen::Map<const Eigen::VectorXd> pi(r.modes[i].fe_dofs.data(), mats.size);
+    for (std::size_t j = 0; j < r.modes.size(); ++j) {
+      const Eigen::Map<const Eigen::VectorXd> pj(r.modes[j].fe_dofs.data(), mats.size);
+      CHECK(pi.dot(M * pj) == Approx(i == j ? 1.0 : 0.0).margin(1e-10));
+    }
+    // Rayleigh quotient = omega^2.
+    const double w = 2 * kPi * r.modes[i].frequency_Hz;
+    CHECK(pi.dot(K * pi) == Approx(w * w).epsilon(1e-9));
+  }
+}
+
+// ------------------------------------------------------- Cross (2004) beam
+
+TEST_CASE("The paper's beam tuned to 193 Hz has nodes near 16 cm from each end") {
+  const std::vector<Section> beam = paper_beam();
+  const ModalResult r = free_modes(beam, {}, exact(3));
+  REQUIRE(r.modes[0].frequency_Hz == Approx(kPaperF1_Hz).epsilon(1e-12));
+  const auto& nodes = r.modes[0].nodes_from_butt_m;
+  REQUIRE(nodes.size() == 2);
+  // Euler-Bernoulli: 0.22416 L = 16.14 cm; measured 15.8 cm, within the 0.5 cm
+  // the paper's "16 cm" nodes (Sec. III) imply.
+  CHECK(nodes[0] == Approx(kPaperNode_m).margin(0.005));
+  CHECK(kPaperLength_m - nodes[1] == Approx(kPaperNode_m).margin(0.005));
+  // Modes 2 and 3 scale as (beta L)^2: 532 and 1043 Hz.
+  CHECK(r.modes[1].frequency_Hz == Approx(532.0).margin(0.5));
+  CHECK(r.modes[2].frequency_Hz == Approx(1043.0).margin(0.5));
+}
+
+TEST_CASE("Timoshenko theory with wood's shear modulus moves modes 2 and 3 toward 506 and 962 Hz") {
+  const std::vector<Section> eb_beam = paper_beam();
+  const ModalResult eb = free_modes(eb_beam, {}, exact(3));
+  ModeOptions t = fe(3);
+  t.theory = ModeOptions::Theory::kTimoshenko;
+  t.timoshenko = {rectangular_timoshenko_section(kWoodShearModulus_Pa, kPaperWidth_m,
+                                                 kPaperThickness_m)};
+  // Refit EI so the Timoshenko f1 is still the measured 193 Hz.
+  const std::vector<Section> beam = scale_EI_to_fundamental(eb_beam, {}, kPaperF1_Hz, t);
+  const ModalResult r = free_modes(beam, {}, t);
+  CHECK(r.modes[0].frequency_Hz == Approx(kPaperF1_Hz).epsilon(1e-8));
+  CHECK(*beam[0].EI_N_m2 > *eb_beam[0].EI_N_m2);  // shear takes some of the compliance
+  for (int k = 1; k < 3; ++k) {
+    const double measured = k == 1 ? kPaperF2_Hz : kPaperF3_Hz;
+    CHECK(r.modes[k].frequency_Hz < eb.modes[k].frequency_Hz);
+    CHECK(std::abs(r.modes[k].frequency_Hz - measured) <
+          std::abs(eb.modes[k].frequency_Hz - measured));
+    WARN("mode " << k + 1 << ": Euler-Bernoulli " << eb.modes[k].frequency_Hz
+                 << " Hz, Timoshenko " << r.modes[k].frequency_Hz << " Hz, measured "
+                 << measured << " Hz");
+  }
+}
+
+TEST_CASE("Timoshenko elements reduce to Euler-Bernoulli as the shear stiffness grows") {
+  ModeOptions t = fe(3, 1e-8);
+  t.theory = ModeOptions::Theory::kTimoshenko;
+  t.timoshenko = {{1e15, 0.0}, {1e15, 0.0}};
+  const ModalResult r = free_modes(racquet(), racquet_masses(), t);
+  const ModalResult e = free_modes(racquet(), racquet_masses(), exact(3));
+  CHECK(r.modes[0].frequency_Hz == Approx(e.modes[0].frequency_Hz).epsilon(1e-7));
+  CHECK(r.modes[2].frequency_Hz == Approx(e.modes[2].frequency_Hz).epsilon(2e-6));
+}
+
+// ------------------------------------------------------------- hand held
+
+TEST_CASE("The calibrated hand lowers the paper's beam to 171 Hz and damps it") {
+  const std::vector<Section> beam = paper_beam();
+  const ModalResult free = free_modes(beam, {}, exact(1));
+  const ModalResult r = hand_held_modes(beam, {}, calibrated_hand(), fe(4));
+  const Mode* m = hand_held_fundamental(r, kPaperLength_m);
+  REQUIRE(m != nullptr);
+  CHECK(m->frequency_Hz == Approx(kPaperHandHeldF1_Hz).margin(0.5));
+  CHECK(m->damping_ratio > 0.05);  // "strongly damped" (Sec. III)
+  WARN("hand-held f1 " << m->frequency_Hz << " Hz, damping ratio " << m->damping_ratio
+                       << ", complexity " << m->complexity);
+  // The node near the free end stays within 1 cm (Sec. III (b)) ...
+  const double free_node = free.modes[0].nodes_from_butt_m.back();
+  CHECK(m->nodes_from_butt_m.back() == Approx(free_node).margin(0.01));
+  // ... and the handle-end node moves under the hand (Sec. III (c)).
+  const HandCoupling hand = calibrated_hand();
+  CHECK(m->nodes_from_butt_m.front() < hand.grip_start_m + hand.grip_length_m);
+  CHECK(m->nodes_from_butt_m.front() > hand.grip_start_m);
+}
+
+TEST_CASE("A hand joined by no spring or dashpot leaves the free beam") {
+  const std::vector<Section> beam = paper_beam();
+  HandCoupling hand;  // k = c = 0
+  const ModalResult r = hand_held_modes(beam, {}, hand, fe(3));
+  // Massless markers at the grip ends give the free beam the same mesh.
+  const std::vector<PointMass> grip_marks{{hand.grip_start_m, 0.0},
+                                          {hand.grip_start_m + hand.grip_length_m, 0.0}};
+  const ModalResult free = free_modes(beam, grip_marks, fe(3));
+  REQUIRE(r.elements_used == free.elements_used);
+  REQUIRE(r.modes.size() == 3);
+  for (int k = 0; k < 3; ++k) {
+    CHECK(r.modes[k].frequency_Hz == Approx(free.modes[k].frequency_Hz).epsilon(kStateSpaceRoundOff));
+    CHECK(r.modes[k].damping_ratio == Approx(0.0).margin(kStateSpaceRoundOff));
+    CHECK(r.modes[k].hand_energy_fraction == Approx(0.0).margin(1e-10));
+  }
+}
+
+TEST_CASE("A vanishing hand mass tends to the free beam") {
+  const std::vector<Section> beam = paper_beam();
+  const double free = free_modes(beam, {}, exact(1)).modes[0].frequency_Hz;
+  HandCoupling hand = calibrated_hand();
+  double previous_gap = 1e9;
+  for (double mass : {0.5, 0.05, 0.005}) {
+    hand.mass_kg = mass;
+    // Spring and dashpot scaled with the mass: the hand's own dynamics stay
+    // the same while its load on the beam vanishes.
+    hand.stiffness_N_m2 = kCalibratedGripStiffness_N_m2 * mass / 0.5;
+    hand.damping_N_s_m2 = kCalibratedGripDamping_N_s_m2 * mass / 0.5;
+    const ModalResult r = hand_held_modes(beam, {}, hand, fe(4));
+    const Mode* m = hand_held_fundamental(r, kPaperLength_m);
+    REQUIRE(m != nullptr);
+    const double gap = std::abs(m->frequency_Hz / free - 1.0);
+    CHECK(gap < previous_gap);
+    previous_gap = gap;
+  }
+  CHECK(previous_gap < 1e-3);
+}
+
+TEST_CASE("A very stiff grip tends to the hand's mass rigidly fixed over the grip") {
+  const std::vector<Section> beam = paper_beam();
+  const double EI = *beam[0].EI_N_m2, mu = kPaperMass_kg / kPaperLength_m;
+  HandCoupling hand = calibrated_hand();
+  hand.damping_N_s_m2 = 0.0;
+  // Limit: the grip carries the hand's mass spread evenly (inertia M_h Lg^2/12,
+  // the hand's default) and cannot bend (rigid hand): EI there x 1e6.
+  const double g0 = hand.grip_start_m, lg = hand.grip_length_m;
+  const std::vector<Section> limit{{g0, mu * g0, EI},
+                                   {lg, mu * lg + hand.mass_kg, EI * 1e6},
+                                   {kPaperLength_m - g0 - lg, mu * (kPaperLength_m - g0 - lg), EI}};
+  const ModalResult e = free_modes(limit, {}, exact(2));
+  // The grip is a beam on an elastic foundation: bending boundary layers of
+  // length (EI/k)^(1/4) at its ends, so f(k) = f_limit - A k^(-1/4).
+  // Two stiffnesses a factor 100 apart extrapolate that away.
+  auto solve = [&](double k) {
+    hand.stiffness_N_m2 = k;
+    return hand_held_modes(beam, {}, hand, fe(2, 1e-7));
+  };
+  const ModalResult soft = solve(1e11), stiff = solve(1e13);
+  const double q = std::pow(100.0, -0.25);
+  const double kExtrapolationTol[2] = {1e-4, 1e-3};
+  for (int k = 0; k < 2; ++k) {
+    const double f_soft = soft.modes[k].frequency_Hz, f_stiff = stiff.modes[k].frequency_Hz;
+    CHECK(f_soft < f_stiff);
+    CHECK(f_stiff < e.modes[k].frequency_Hz);
+    const double extrapolated = (f_stiff - q * f_soft) / (1.0 - q);
+    CHECK(extrapolated == Approx(e.modes[k].frequency_Hz).epsilon(kExtrapolationTol[k]));
+    CHECK(stiff.modes[k].damping_ratio == Approx(0.0).margin(1e-10));
+  }
+  // A flexible grip carrying the smeared mass is close but a little lower.
+  std::vector<Section> flexible = limit;
+  flexible[1].EI_N_m2 = EI;
+  const double f_flexible = free_modes(flexible, {}, exact(1)).modes[0].frequency_Hz;
+  CHECK(f_flexible < e.modes[0].frequency_Hz);
+  CHECK(f_flexible == Approx(e.modes[0].frequency_Hz).epsilon(0.02));
+}
+
+TEST_CASE("Damping ratios and damped frequencies are consistent") {
+  const ModalResult r = hand_held_modes(paper_beam(), {}, calibrated_hand(), fe(3));
+  for (const Mode& m : r.modes) {
+    CHECK(m.damping_ratio > 0.0);
+    CHECK(m.damping_ratio < 1.0);
+    CHECK(m.frequency_Hz ==
+          Approx(m.undamped_frequency_Hz * std::sqrt(1 - m.damping_ratio * m.damping_ratio))
+              .epsilon(1e-12));
+    CHECK(m.hand_energy_fraction >= 0.0);
+    CHECK(m.hand_energy_fraction <= 1.0 + 1e-12);
+  }
+}
+
+// ------------------------------------------------------------ bad input
+
+TEST_CASE("Bad input throws std::invalid_argument naming the argument") {
+  const std::vector<Section> ok{{0.7, 0.3, 200.0}};
+  auto message = [](auto&& f) {
+    try {
+      f();
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("no throw");
+  };
+  CHECK_THAT(message([] { free_modes({{0.7, 0.3, {}}}, {}); }),
+             Catch::Contains("sections[0].EI_N_m2"));
+  CHECK_THAT(message([] { free_modes({{0.7, 0.3, -5.0}}, {}); }),
+             Catch::Contains("sections[0].EI_N_m2") && Catch::Contains("-5"));
+  CHECK_THAT(message([] { free_modes({{0.7, 0.3, 1.0}, {0.0, 0.1, 1.0}}, {}); }),
+             Catch::Contains("sections[1].length_m"));
+  CHECK_THAT(message([] { free_modes({{0.7, -0.3, 1.0}}, {}); }),
+             Catch::Contains("sections[0].mass_kg"));
+  CHECK_THAT(message([] { free_modes({}, {}); }), Catch::Contains("sections"));
+  CHECK_THAT(message([&] { free_modes(ok, {{0.8, 0.01}}); }),
+             Catch::Contains("point_masses[0].from_butt_m") && Catch::Contains("0.8"));
+  CHECK_THAT(message([&] { free_modes(ok, {{0.3, -0.01}}); }),
+             Catch::Contains("point_masses[0].mass_kg"));
+  ModeOptions bad_modes;
+  bad_modes.modes = 0;
+  CHECK_THAT(message([&] { free_modes(ok, {}, bad_modes); }), Catch::Contains("options.modes"));
+  ModeOptions bad_tol = fe();
+  bad_tol.rel_tol = 0.0;
+  CHECK_THAT(message([&] { free_modes(ok, {}, bad_tol); }), Catch::Contains("options.rel_tol"));
+  ModeOptions exact_timoshenko;
+  exact_timoshenko.theory = ModeOptions::Theory::kTimoshenko;
+  CHECK_THAT(message([&] { free_modes(ok, {}, exact_timoshenko); }),
+             Catch::Contains("options.theory"));
+  ModeOptions missing_shear = fe();
+  missing_shear.theory = ModeOptions::Theory::kTimoshenko;
+  CHECK_THAT(message([&] { free_modes(ok, {}, missing_shear); }),
+             Catch::Contains("options.timoshenko"));
+  CHECK_THAT(message([&] { free_modes({{0.7, 0.0, 1.0}}, {}, fe()); }),
+             Catch::Contains("sections[0].mass_kg"));
+  HandCoupling hand = calibrated_hand();
+  CHECK_THAT(message([&] { hand_held_modes(ok, {}, hand, exact()); }),
+             Catch::Contains("options.method"));
+  hand.mass_kg = 0.0;
+  CHECK_THAT(message([&] { hand_held_modes(ok, {}, hand, fe()); }), Catch::Contains("hand.mass_kg"));
+  hand = calibrated_hand();
+  hand.grip_length_m = 1.0;
+  CHECK_THAT(message([&] { hand_held_modes(ok, {}, hand, fe()); }),
+             Catch::Contains("hand.grip_length_m"));
+  hand = calibrated_hand();
+  hand.damping_N_s_m2 = -1.0;
+  CHECK_THAT(message([&] { hand_held_modes(ok, {}, hand, fe()); }),
+             Catch::Contains("hand.damping_N_s_m2"));
+  CHECK_THAT(message([&] { scale_EI_to_fundamental(ok, {}, -3.0); }), Catch::Contains("f1_Hz"));
+  CHECK_THAT(message([] { rectangular_timoshenko_section(0.0, 0.04, 0.019); }),
+             Catch::Contains("shear_modulus_Pa"));
+  const Mode m = free_modes(ok, {}).modes[0];
+  CHECK_THAT(message([&] { mode_shape_at(m, 0.71); }), Catch::Contains("x_m"));
+}
+
+TEST_CASE("The shape table samples every mode butt to tip") {
+  ModeOptions o = exact(2);
+  o.shape_samples = 11;
+  const ModalResult r = free_modes(racquet(), racquet_masses(), o);
+  REQUIRE(r.shape_x_m.size() == 11);
+  REQUIRE(r.shape_w.size() == 2);
+  CHECK(r.shape_x_m.back() == Approx(0.685));
+  CHECK(r.shape_w[0].back() > 0.0);  // w(L) > 0 normalisation
+  CHECK(r.shape_w[1][5] == Approx(mode_shape_at(r.modes[1], r.shape_x_m[5])));
+}
+
+}  // namespace
+}  // namespace sweetspot
