@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <string>
 #include <utility>
+#include <cstdio>
+#include <cstdlib>
 
 #include <Eigen/Cholesky>
 #include <Eigen/Dense>
@@ -756,6 +758,354 @@ Segmentation hand_segmentation(const std::vector<Section>& sections,
                  {hand.grip_start_m, hand.grip_start_m + hand.grip_length_m});
 }
 
+// ------------------------------------------------------ damped eigenproblem
+
+using Complex = std::complex<double>;
+using Eigen::VectorXcd;
+
+// Elements per requested mode for the coarse mesh that locates the hand-held
+// modes: beta h <= 1.5 at the highest requested bending mode, (1.5)^4 / 1440 =
+// 0.4 % in frequency, far inside the gaps between modes.
+constexpr double kCoarseBetaH = 1.5;
+// Rayleigh-functional iteration: at most this many steps per mode ...
+constexpr int kMaxRefineSteps = 12;
+// ... and a mode is accepted when the relative residual of
+// (s^2 M + s C + K) q = 0 is below this (round-off is ~1e-14 here).
+constexpr double kRefineResidualTol = 1e-9;
+// It stops at round-off: a residual below kRefineResidualDone, or s moving
+// less than kRefineStall relative from one step to the next.
+constexpr double kRefineResidualDone = 1e-11;
+constexpr double kRefineStall = 1e-13;
+// A refined mode must lie nearer its coarse estimate than this fraction of
+// the distance to the nearest other coarse mode, or the match is ambiguous.
+constexpr double kMatchFraction = 0.25;
+
+// An eigenpair of (s^2 M + s C + K) q = 0, q over every DOF of the mesh.
+struct DampedPair {
+  Complex s;
+  VectorXcd q;
+};
+
+struct DampedSpectrum {
+  std::vector<DampedPair> pairs;  // Im s > 0, ascending Im s
+  int overdamped = 0;             // real roots (not reported)
+};
+
+// The lowest `wanted` oscillatory modes from every eigenvalue of the dense
+// state matrix: O(n^3), the reference.
+DampedSpectrum dense_damped_spectrum(const Mesh& mesh, const Assembled& a, const HandCoupling& hand,
+                                     int wanted) {
+  const MatrixXd Q = flexible_basis(mesh, a, &hand);
+  const MatrixXd Kr = Q.transpose() * a.K * Q;
+  const MatrixXd Cr = Q.transpose() * a.C * Q;
+  const MatrixXd Mr = Q.transpose() * a.M * Q;
+  const int m = static_cast<int>(Mr.rows());
+
+  // y = L^T b with Mr = L L^T: y'' + Ct y' + Kt y = 0, then the state space
+  // x = (y, y'), x' = A x, A = [0 I; -Kt -Ct].
+  const Eigen::LLT<MatrixXd> llt(Mr);
+  const MatrixXd Kt = llt.matrixL().solve(MatrixXd(llt.matrixL().solve(Kr)).transpose());
+  const MatrixXd Ct = llt.matrixL().solve(MatrixXd(llt.matrixL().solve(Cr)).transpose());
+  // Balance: x = (sigma y, y') with sigma ~ the highest natural frequency
+  // makes both off-diagonal blocks O(sigma) instead of O(1) and O(sigma^2),
+  // so the low eigenvalues keep relative accuracy.
+  const double sigma = std::sqrt(std::max(Kt.diagonal().maxCoeff(), 1e-300));
+  MatrixXd A = MatrixXd::Zero(2 * m, 2 * m);
+  A.topRightCorner(m, m) = sigma * MatrixXd::Identity(m, m);
+  A.bottomLeftCorner(m, m) = -Kt / sigma;
+  A.bottomRightCorner(m, m) = -Ct;
+  const Eigen::EigenSolver<MatrixXd> es(A, true);
+
+  DampedSpectrum out;
+  std::vector<int> order;
+  for (int j = 0; j < 2 * m; ++j) {
+    const Complex s = es.eigenvalues()(j);
+    // A hand joined by nothing (k = c = 0) adds defective zero roots, perturbed
+    // to ~sqrt(eps) sigma by round-off: they are not vibration modes.
+    if (std::abs(s) < 1e-6 * sigma) continue;
+    if (s.imag() > 1e-9 * std::abs(s)) order.push_back(j);
+    if (std::abs(s.imag()) <= 1e-9 * std::abs(s)) ++out.overdamped;
+  }
+  std::sort(order.begin(), order.end(), [&](int i, int j) {
+    return es.eigenvalues()(i).imag() < es.eigenvalues()(j).imag();
+  });
+  for (int j : order) {
+    if (static_cast<int>(out.pairs.size()) == wanted) break;
+    const VectorXcd y = es.eigenvectors().col(j).head(m) / sigma;
+    const VectorXd b_re = llt.matrixU().solve(y.real());
+    const VectorXd b_im = llt.matrixU().solve(y.imag());
+    VectorXcd q = (Q * b_re).cast<Complex>() + Complex(0, 1) * (Q * b_im).cast<Complex>();
+    out.pairs.push_back({es.eigenvalues()(j), std::move(q)});
+  }
+  return out;
+}
+
+// The reported mode of a damped eigenpair: the complex shape turned to be as
+// real as possible, its real part mass-normalised.
+Mode damped_mode(const Mesh& mesh, const Assembled& a, Complex s, VectorXcd q) {
+  // Turn the shape to be as real as possible: maximise |Re(e^{i a} w)|.
+  Complex sum_sq = 0.0;
+  for (int i = 0; i < a.beam_dofs; i += 2) sum_sq += q(i) * q(i);
+  q *= std::exp(Complex(0, -0.5 * std::arg(sum_sq)));
+  double re2 = 0.0, im2 = 0.0;
+  for (int i = 0; i < a.beam_dofs; i += 2) {
+    re2 += q(i).real() * q(i).real();
+    im2 += q(i).imag() * q(i).imag();
+  }
+  VectorXd re = q.real();
+  re /= std::sqrt(re.dot(a.M * re));
+  auto [mode, scale] = fe_mode(mesh, re, std::abs(s));
+  mode.frequency_Hz = s.imag() / (2.0 * kPi);
+  mode.damping_ratio = -s.real() / std::abs(s);
+  mode.complexity = std::sqrt(im2 / re2);
+  mode.hand_displacement = scale * re(a.beam_dofs);
+  const int u = a.beam_dofs;
+  mode.hand_energy_fraction =
+      a.M(u, u) * re(u) * re(u) + a.M(u + 1, u + 1) * re(u + 1) * re(u + 1);
+  return mode;
+}
+
+// T(s) = s^2 M + s C + K of a hand-held mesh, stored by structure: the beam
+// DOFs are banded (half-bandwidth 3, one element joins two nodes) and the two
+// hand DOFs, last, couple only to the grip. With T = [A B; B^T D] (complex
+// symmetric), A gets a banded LU with partial pivoting and the hand a 2 x 2
+// Schur complement: O(n) per factorisation and solve.
+class QuadraticPencil {
+ public:
+  static constexpr int kBand = 3;
+  static constexpr int kLd = 3 * kBand + 1;  // LU rows per column (fill-in kBand above)
+
+  explicit QuadraticPencil(const Assembled& a) : n_(a.beam_dofs) {
+    const MatrixXd* src[3] = {&a.K, &a.C, &a.M};
+    for (int m = 0; m < 3; ++m) {
+      band_[m].assign(static_cast<std::size_t>(n_) * (2 * kBand + 1), 0.0);
+      for (int j = 0; j < n_; ++j) {
+        for (int i = std::max(0, j - kBand); i <= std::min(n_ - 1, j + kBand); ++i) {
+          band_[m][j * (2 * kBand + 1) + (i - j + kBand)] = (*src[m])(i, j);
+        }
+      }
+      border_[m] = src[m]->block(0, n_, n_, 2);
+      corner_[m] = src[m]->block(n_, n_, 2, 2);
+    }
+  }
+
+  // (c0 K + c1 C + c2 M) q.
+  VectorXcd apply(Complex c0, Complex c1, Complex c2, const VectorXcd& q) const {
+    VectorXcd out = VectorXcd::Zero(n_ + 2);
+    const Complex c[3] = {c0, c1, c2};
+    for (int m = 0; m < 3; ++m) {
+      if (c[m] == 0.0) continue;
+      for (int j = 0; j < n_; ++j) {
+        const Complex cq = c[m] * q(j);
+        for (int i = std::max(0, j - kBand); i <= std::min(n_ - 1, j + kBand); ++i) {
+          out(i) += band_[m][j * (2 * kBand + 1) + (i - j + kBand)] * cq;
+        }
+      }
+      out.head(n_) += c[m] * (border_[m].cast<Complex>() * q.tail(2));
+      out.tail(2) += c[m] * (border_[m].transpose().cast<Complex>() * q.head(n_) +
+                             corner_[m].cast<Complex>() * q.tail(2));
+    }
+    return out;
+  }
+
+  // Factorises T(s); false when a pivot vanishes (s is an eigenvalue of A or T).
+  bool factorize(Complex s) {
+    const Complex c[3] = {1.0, s, s * s};
+    lu_.assign(static_cast<std::size_t>(n_) * kLd, 0.0);
+    pivots_.assign(n_, 0);
+    inverse_pivots_.assign(n_, 0.0);
+    for (int j = 0; j < n_; ++j) {
+      for (int i = std::max(0, j - kBand); i <= std::min(n_ - 1, j + kBand); ++i) {
+        Complex v = 0.0;
+        for (int m = 0; m < 3; ++m) v += c[m] * band_[m][j * (2 * kBand + 1) + (i - j + kBand)];
+        at(i, j) = v;
+      }
+    }
+    for (int k = 0; k < n_; ++k) {
+      const int last_row = std::min(n_ - 1, k + kBand);
+      const int last_col = std::min(n_ - 1, k + 2 * kBand);
+      int p = k;
+      // |Re| + |Im| as in LAPACK: no hypot in the inner loop.
+      auto size = [](Complex z) { return std::abs(z.real()) + std::abs(z.imag()); };
+      for (int i = k + 1; i <= last_row; ++i) {
+        if (size(at(i, k)) > size(at(p, k))) p = i;
+      }
+      pivots_[k] = p;
+      if (at(p, k) == 0.0) return false;
+      if (p != k) {
+        for (int j = k; j <= last_col; ++j) std::swap(at(k, j), at(p, j));
+      }
+      const Complex inv = 1.0 / at(k, k);
+      inverse_pivots_[k] = inv;
+      for (int i = k + 1; i <= last_row; ++i) {
+        const Complex l = at(i, k) * inv;
+        at(i, k) = l;
+        if (l == 0.0) continue;
+        for (int j = k + 1; j <= last_col; ++j) at(i, j) -= l * at(k, j);
+      }
+    }
+    border_s_ = Eigen::MatrixX2cd(n_, 2);
+    Eigen::Matrix2cd corner = Eigen::Matrix2cd::Zero();
+    border_s_.setZero();
+    for (int m = 0; m < 3; ++m) {
+      border_s_ += c[m] * border_[m].cast<Complex>();
+      corner += c[m] * corner_[m].cast<Complex>();
+    }
+    solved_border_ = border_s_;
+    for (int col = 0; col < 2; ++col) {
+      VectorXcd v = solved_border_.col(col);
+      band_solve(v);
+      solved_border_.col(col) = v;
+    }
+    schur_ = corner - border_s_.transpose() * solved_border_;
+    const Complex det = schur_.determinant();
+    if (det == 0.0) return false;
+    schur_inverse_ = schur_.inverse();
+    return true;
+  }
+
+  // x with T(s) x = r for the last factorised s.
+  VectorXcd solve(const VectorXcd& r) const {
+    VectorXcd xb = r.head(n_);
+    band_solve(xb);
+    const Eigen::Vector2cd xh = schur_inverse_ * (r.tail(2) - border_s_.transpose() * xb);
+    VectorXcd x(n_ + 2);
+    x.head(n_) = xb - solved_border_ * xh;
+    x.tail(2) = xh;
+    return x;
+  }
+
+ private:
+  Complex& at(int i, int j) { return lu_[j * kLd + (i - j + 2 * kBand)]; }
+  const Complex& at(int i, int j) const { return lu_[j * kLd + (i - j + 2 * kBand)]; }
+
+  void band_solve(VectorXcd& b) const {
+    for (int k = 0; k < n_; ++k) {
+      if (pivots_[k] != k) std::swap(b(k), b(pivots_[k]));
+      for (int i = k + 1; i <= std::min(n_ - 1, k + kBand); ++i) b(i) -= at(i, k) * b(k);
+    }
+    for (int k = n_ - 1; k >= 0; --k) {
+      Complex sum = b(k);
+      for (int j = k + 1; j <= std::min(n_ - 1, k + 2 * kBand); ++j) sum -= at(k, j) * b(j);
+      b(k) = sum * inverse_pivots_[k];
+    }
+  }
+
+  int n_ = 0;
+  std::vector<double> band_[3];  // K, C, M of the beam DOFs, column-major band
+  Eigen::MatrixX2d border_[3];   // beam-hand coupling
+  Eigen::Matrix2d corner_[3];    // hand-hand
+  std::vector<Complex> lu_;
+  std::vector<int> pivots_;
+  std::vector<Complex> inverse_pivots_;
+  Eigen::MatrixX2cd border_s_, solved_border_;
+  Eigen::Matrix2cd schur_, schur_inverse_;
+};
+
+// Converges an estimate (s, q) to an eigenpair of T(s) q = 0 by
+// Rayleigh-functional iteration: s <- the root of q^T T(s) q = 0 nearest s,
+// q <- T(s)^-1 T'(s) q. T is complex symmetric, so q is its own left
+// eigenvector and the iteration converges cubically. Empty if it does not
+// reach kRefineResidualTol.
+std::optional<DampedPair> refine_damped_pair(QuadraticPencil& t, Complex s, VectorXcd q) {
+  auto form = [](const VectorXcd& u, const VectorXcd& v) { return (u.transpose() * v)(0); };
+  q /= q.norm();
+  double residual = 1.0;
+  Complex previous = s;
+  for (int step = 0; step <= kMaxRefineSteps; ++step) {
+    const VectorXcd Kq = t.apply(1.0, 0.0, 0.0, q);
+    const VectorXcd Cq = t.apply(0.0, 1.0, 0.0, q);
+    const VectorXcd Mq = t.apply(0.0, 0.0, 1.0, q);
+    const Complex a2 = form(q, Mq), a1 = form(q, Cq), a0 = form(q, Kq);
+    const Complex root = std::sqrt(a1 * a1 - 4.0 * a2 * a0);
+    const Complex s1 = (-a1 + root) / (2.0 * a2), s2 = (-a1 - root) / (2.0 * a2);
+    s = std::abs(s1 - s) <= std::abs(s2 - s) ? s1 : s2;
+    const double scale = Kq.norm() + std::abs(s) * Cq.norm() + std::norm(s) * Mq.norm();
+    residual = (Kq + s * Cq + s * s * Mq).norm() / scale;
+    if (std::getenv("SS_DEBUG")) fprintf(stderr, "step %d s %.15g %.15g res %g\n", step, s.real(), s.imag(), residual);
+    const bool stalled = step > 0 && std::abs(s - previous) <= kRefineStall * std::abs(s);
+    if (residual < kRefineResidualDone || stalled || step == kMaxRefineSteps) break;
+    previous = s;
+    if (!t.factorize(s)) break;  // s is an eigenvalue to working precision
+    const VectorXcd x = t.solve(2.0 * s * Mq + Cq);
+    const double norm = x.norm();
+    if (!(norm > 0.0) || !std::isfinite(norm)) return std::nullopt;
+    q = x / norm;
+  }
+  if (!(residual < kRefineResidualTol)) return std::nullopt;
+  return DampedPair{s, std::move(q)};
+}
+
+// Coarse DOFs carried to the nodes of `fine` through the coarse elements'
+// interpolation (w and theta of the cubic), hand DOFs as they are.
+VectorXcd interpolate_dofs(const Mesh& coarse, const VectorXcd& q, const Mesh& fine,
+                           int fine_size) {
+  VectorXcd out = VectorXcd::Zero(fine_size);
+  const int coarse_beam = 2 * static_cast<int>(coarse.nodes_m.size());
+  const int fine_beam = 2 * static_cast<int>(fine.nodes_m.size());
+  std::size_t e = 0;
+  for (std::size_t i = 0; i < fine.nodes_m.size(); ++i) {
+    const double x = fine.nodes_m[i];
+    while (e + 1 < coarse.elements.size() && x > coarse.elements[e].x0 + coarse.elements[e].h) ++e;
+    const Element& el = coarse.elements[e];
+    const Eigen::Vector4cd c = el.c_inv.cast<Complex>() * q.segment<4>(2 * e);
+    const double xi = std::clamp(x - el.x0, 0.0, el.h);
+    out(2 * i) = c(0) + xi * (c(1) + xi * (c(2) + xi * c(3)));
+    out(2 * i + 1) = c(1) + xi * (2.0 * c(2) + xi * 3.0 * c(3)) + 6.0 * el.g * c(3);
+  }
+  out.tail(fine_size - fine_beam) = q.tail(q.size() - coarse_beam);
+  return out;
+}
+
+// The lowest `wanted` modes on `mesh` located on a coarse mesh and refined;
+// empty with a reason in `why` when a mode cannot be matched.
+std::optional<DampedSpectrum> refined_damped_spectrum(const Segmentation& seg, const Mesh& mesh,
+                                                      const Assembled& a, const HandCoupling& hand,
+                                                      const ModeOptions& options, int* coarse_elements,
+                                                      std::string* why) {
+  const double weight = total_phase_weight(seg);
+  const std::vector<int> coarse_counts =
+      counts_for(seg, (options.modes + 0.5) * kPi / (kCoarseBetaH * weight));
+  *coarse_elements = total_elements(coarse_counts);
+  if (*coarse_elements >= static_cast<int>(mesh.elements.size())) {
+    *why = "mesh no finer than the coarse one";
+    return std::nullopt;
+  }
+  const Mesh coarse = build_mesh(seg, coarse_counts, options);
+  const Assembled ca = assemble(coarse, &hand);
+  // One more than wanted, to check the last wanted one is matched unambiguously.
+  const DampedSpectrum guess = dense_damped_spectrum(coarse, ca, hand, options.modes + 1);
+  if (static_cast<int>(guess.pairs.size()) <= options.modes) {
+    *why = "coarse mesh has too few oscillatory modes";
+    return std::nullopt;
+  }
+  const int count = options.modes;
+  QuadraticPencil pencil(a);
+  DampedSpectrum out;
+  out.overdamped = guess.overdamped;
+  for (int k = 0; k < count; ++k) {
+    const Complex s0 = guess.pairs[k].s;
+    double gap = std::numeric_limits<double>::infinity();
+    for (std::size_t j = 0; j < guess.pairs.size(); ++j) {
+      if (static_cast<int>(j) != k) gap = std::min(gap, std::abs(guess.pairs[j].s - s0));
+    }
+    // The conjugate root is a neighbour too (and the overdamped real axis between).
+    gap = std::min(gap, 2.0 * s0.imag());
+    std::optional<DampedPair> pair = refine_damped_pair(
+        pencil, s0, interpolate_dofs(coarse, guess.pairs[k].q, mesh, static_cast<int>(a.M.rows())));
+    if (!pair) {
+      *why = "mode " + std::to_string(k + 1) + " did not converge";
+      return std::nullopt;
+    }
+    if (!(std::abs(pair->s - s0) < kMatchFraction * gap)) {
+      *why = "mode " + std::to_string(k + 1) + " moved too far from its coarse estimate";
+      return std::nullopt;
+    }
+    out.pairs.push_back(std::move(*pair));
+  }
+  return out;
+}
+
 }  // namespace
 
 // ======================================================================= API
@@ -872,71 +1222,26 @@ ModalResult hand_held_modes(const std::vector<Section>& sections,
   const Mesh mesh = build_mesh(seg, counts, options);
   result.elements_used = total_elements(counts);
   const Assembled a = assemble(mesh, &hand);
-  const MatrixXd Q = flexible_basis(mesh, a, &hand);
-  const MatrixXd Kr = Q.transpose() * a.K * Q;
-  const MatrixXd Cr = Q.transpose() * a.C * Q;
-  const MatrixXd Mr = Q.transpose() * a.M * Q;
-  const int m = static_cast<int>(Mr.rows());
 
-  // y = L^T b with Mr = L L^T: y'' + Ct y' + Kt y = 0, then the state space
-  // x = (y, y'), x' = A x, A = [0 I; -Kt -Ct].
-  const Eigen::LLT<MatrixXd> llt(Mr);
-  const MatrixXd Kt = llt.matrixL().solve(MatrixXd(llt.matrixL().solve(Kr)).transpose());
-  const MatrixXd Ct = llt.matrixL().solve(MatrixXd(llt.matrixL().solve(Cr)).transpose());
-  // Balance: x = (sigma y, y') with sigma ~ the highest natural frequency
-  // makes both off-diagonal blocks O(sigma) instead of O(1) and O(sigma^2),
-  // so the low eigenvalues keep relative accuracy.
-  const double sigma = std::sqrt(std::max(Kt.diagonal().maxCoeff(), 1e-300));
-  MatrixXd A = MatrixXd::Zero(2 * m, 2 * m);
-  A.topRightCorner(m, m) = sigma * MatrixXd::Identity(m, m);
-  A.bottomLeftCorner(m, m) = -Kt / sigma;
-  A.bottomRightCorner(m, m) = -Ct;
-  const Eigen::EigenSolver<MatrixXd> es(A, true);
-
-  using Complex = std::complex<double>;
-  std::vector<int> order;
-  int overdamped = 0;
-  for (int j = 0; j < 2 * m; ++j) {
-    const Complex s = es.eigenvalues()(j);
-    // A hand joined by nothing (k = c = 0) adds defective zero roots, perturbed
-    // to ~sqrt(eps) sigma by round-off: they are not vibration modes.
-    if (std::abs(s) < 1e-6 * sigma) continue;
-    if (s.imag() > 1e-9 * std::abs(s)) order.push_back(j);
-    if (std::abs(s.imag()) <= 1e-9 * std::abs(s)) ++overdamped;
+  std::optional<DampedSpectrum> spectrum;
+  std::string how;
+  if (options.damped_solver == ModeOptions::DampedSolver::kRefined) {
+    int coarse_elements = 0;
+    std::string why;
+    spectrum = refined_damped_spectrum(seg, mesh, a, hand, options, &coarse_elements, &why);
+    how = spectrum ? "quadratic eigenproblem refined from a " + std::to_string(coarse_elements) +
+                         "-element state-space solve"
+                   : "dense state-space eigenproblem (refinement skipped: " + why + ")";
+  } else {
+    how = "dense state-space eigenproblem";
   }
-  std::sort(order.begin(), order.end(), [&](int i, int j) {
-    return es.eigenvalues()(i).imag() < es.eigenvalues()(j).imag();
-  });
-  for (int j : order) {
-    if (static_cast<int>(result.modes.size()) == options.modes) break;
-    const Complex s = es.eigenvalues()(j);
-    const Eigen::VectorXcd y = es.eigenvectors().col(j).head(m) / sigma;
-    const VectorXd b_re = llt.matrixU().solve(y.real());
-    const VectorXd b_im = llt.matrixU().solve(y.imag());
-    Eigen::VectorXcd q = (Q * b_re).cast<Complex>() + Complex(0, 1) * (Q * b_im).cast<Complex>();
-    // Turn the shape to be as real as possible: maximise |Re(e^{i a} w)|.
-    Complex sum_sq = 0.0;
-    for (int i = 0; i < a.beam_dofs; i += 2) sum_sq += q(i) * q(i);
-    q *= std::exp(Complex(0, -0.5 * std::arg(sum_sq)));
-    double re2 = 0.0, im2 = 0.0;
-    for (int i = 0; i < a.beam_dofs; i += 2) {
-      re2 += q(i).real() * q(i).real();
-      im2 += q(i).imag() * q(i).imag();
-    }
-    VectorXd re = q.real();
-    re /= std::sqrt(re.dot(a.M * re));
-    auto [mode, scale] = fe_mode(mesh, re, std::abs(s));
-    mode.frequency_Hz = s.imag() / (2.0 * kPi);
-    mode.damping_ratio = -s.real() / std::abs(s);
-    mode.complexity = std::sqrt(im2 / re2);
-    mode.hand_displacement = scale * re(a.beam_dofs);
-    const int u = a.beam_dofs;
-    mode.hand_energy_fraction = a.M(u, u) * re(u) * re(u) + a.M(u + 1, u + 1) * re(u + 1) * re(u + 1);
-    result.modes.push_back(std::move(mode));
+  if (!spectrum) spectrum = dense_damped_spectrum(mesh, a, hand, options.modes);
+  for (const DampedPair& pair : spectrum->pairs) {
+    result.modes.push_back(damped_mode(mesh, a, pair.s, pair.q));
   }
   result.complete = static_cast<int>(result.modes.size()) == options.modes;
-  result.message = "finite elements: " + std::to_string(result.elements_used) +
-                   " elements, state-space eigenproblem; " + std::to_string(overdamped) +
+  result.message = "finite elements: " + std::to_string(result.elements_used) + " elements, " +
+                   how + "; " + std::to_string(spectrum->overdamped) +
                    " overdamped (real) roots not reported";
   fill_shape_table(result, length, options.shape_samples);
   return result;

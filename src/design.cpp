@@ -9,12 +9,16 @@ namespace sweetspot {
 void validate(const Design& d) {
   const double L = d.implement.length_m();
   detail::require_in_range("frame/cor", d.cor, 0.0, 1.0, "");
-  detail::require_positive("strings/impact_duration_s", d.impact_duration_s, "s");
-  detail::require_at_least("hand/mass_kg", d.hand.mass_kg, 0.0, "kg");
+  detail::require_in_range("strings/impact_duration_s", d.impact_duration_s, kMinDuration_s,
+                           kMaxDuration_s, "s");
+  detail::require_in_range("hand/mass_kg", d.hand.mass_kg, 0.0, kMaxMass_kg, "kg");
   detail::require_in_range("hand/center_from_butt_m", d.hand.center_from_butt_m, 0.0, L, "m");
-  detail::require_at_least("forearm/equivalent_mass_kg", d.forearm_equivalent_mass_kg, 0.0, "kg");
+  detail::require_in_range("forearm/equivalent_mass_kg", d.forearm_equivalent_mass_kg, 0.0,
+                           kMaxForearmMass_kg, "kg");
   detail::require_positive("ball/mass_kg", d.ball.mass_kg, "kg");
+  detail::require_in_range("ball/mass_kg", d.ball.mass_kg, 0.0, kMaxMass_kg, "kg");
   detail::require_positive("ball/speed_m_s", d.ball.speed_m_s, "m/s");
+  detail::require_in_range("ball/speed_m_s", d.ball.speed_m_s, 0.0, kMaxSpeed_m_s, "m/s");
   detail::require_in_range("impact/from_butt_m", d.impact_from_butt_m, 0.0, L, "m");
   detail::require_positive("hand/grip_length_m", d.hand.grip_length_m, "m");
   detail::require_at_least("hand/grip_stiffness_N_m2", d.hand.grip_stiffness_N_m2, 0.0, "N/m^2");

@@ -1,6 +1,7 @@
 #include "sweetspot/evaluate.hpp"
 
 #include <cmath>
+#include <stdexcept>
 
 #include "sweetspot/rigid_impact.hpp"
 
@@ -8,7 +9,17 @@ namespace sweetspot {
 
 Evaluation evaluate(const Design& design) {
   validate(design);
-  return evaluate_unchecked(design);
+  Evaluation e = evaluate_unchecked(design);
+  // validate() bounds every input, so this is a backstop: never hand out inf or NaN.
+  for (const double value : {e.mass_kg, e.I_cm_kg_m2, e.swingweight_kg_m2, e.effective_mass_kg,
+                             e.apparent_cor, e.impulse_N_s, e.peak_impact_force_N,
+                             e.system_I_cm_kg_m2, e.wrist_force_ratio, e.peak_wrist_force_N}) {
+    if (!std::isfinite(value)) {
+      throw std::invalid_argument("implement: the inputs are outside the range the model can represent "
+                                  "(a result is not finite)");
+    }
+  }
+  return e;
 }
 
 Evaluation evaluate(const Design& design, Fidelity fidelity, double rel_tol) {
@@ -34,7 +45,7 @@ Evaluation evaluate_unchecked(const Design& d) {
   e.effective_mass_kg = effective_mass(body, x);
   e.apparent_cor = apparent_cor(d.cor, e.effective_mass_kg, d.ball.mass_kg);
   e.rebound_speed_m_s = e.apparent_cor * d.ball.speed_m_s;
-  e.impulse_N_s = d.ball.mass_kg * d.ball.speed_m_s * (1.0 + e.apparent_cor);
+  e.impulse_N_s = d.ball.mass_kg * (1.0 + e.apparent_cor) * d.ball.speed_m_s;
   e.peak_impact_force_N =
       peak_impact_force(d.ball.mass_kg, d.ball.speed_m_s, e.apparent_cor, d.impact_duration_s);
 

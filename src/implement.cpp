@@ -1,6 +1,7 @@
 #include "sweetspot/implement.hpp"
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -50,6 +51,8 @@ MassProperties section_mass_properties(const std::vector<Section>& sections) {
     throw std::invalid_argument("sections: total mass must be > 0 kg, got " +
                                 detail::format_number(mass) + " kg");
   }
+  detail::require_in_range("sections total length", x_start, 0.0, kMaxLength_m, "m");
+  detail::require_in_range("sections total mass", mass, 0.0, kMaxMass_kg, "kg");
   const double com = first_moment / mass;
   double I_cm = 0.0;
   x_start = 0.0;
@@ -57,6 +60,10 @@ MassProperties section_mass_properties(const std::vector<Section>& sections) {
     const double arm = x_start + 0.5 * s.length_m - com;
     I_cm += s.mass_kg * (s.length_m * s.length_m / 12.0 + arm * arm);
     x_start += s.length_m;
+  }
+  if (!(I_cm >= std::numeric_limits<double>::min())) {
+    throw std::invalid_argument("sections: the moment of inertia underflows (" + detail::format_number(I_cm) +
+                                " kg m^2); the implement is too small or too light to model");
   }
   return MassProperties{mass, com, I_cm};
 }
@@ -81,7 +88,7 @@ Implement Implement::paper_racquet(double length_m, double mass_kg,
   detail::require_positive("head_to_handle_mass_ratio", head_to_handle_mass_ratio, "");
   // M1 / M2 = ratio and M1 + M2 = M  =>  M2 = M / (1 + ratio).
   const double handle_kg = mass_kg / (1.0 + head_to_handle_mass_ratio);
-  const double head_kg = mass_kg - handle_kg;
+  const double head_kg = mass_kg * head_to_handle_mass_ratio / (1.0 + head_to_handle_mass_ratio);
   return from_sections({Section{0.5 * length_m, handle_kg, {}}, Section{0.5 * length_m, head_kg, {}}},
                        std::move(point_masses));
 }
@@ -92,6 +99,8 @@ Implement Implement::from_specs(const IndustrySpecs& specs, std::vector<PointMas
   const double B = specs.balance_from_butt_m;
   detail::require_positive("length_m", L, "m");
   detail::require_positive("mass_kg", M, "kg");
+  detail::require_in_range("length_m", L, 0.0, kMaxLength_m, "m");
+  detail::require_in_range("mass_kg", M, 0.0, kMaxMass_kg, "kg");
   if (!std::isfinite(B) || B <= 0.0 || B >= L) {
     throw std::invalid_argument("balance_from_butt_m: must lie inside the length (0, " +
                                 detail::format_number(L) + ") m, got " + detail::format_number(B) +
@@ -103,7 +112,9 @@ Implement Implement::from_specs(const IndustrySpecs& specs, std::vector<PointMas
   const double arm = B - kSwingweightAxisFromButt_m;
   const double sw_min = M * arm * arm;
   const double sw_max = sw_min + M * B * (L - B);
-  if (!(specs.swingweight_kg_m2 > sw_min) || specs.swingweight_kg_m2 > sw_max) {
+  // I_cm = SW - M (B - 0.1)^2 must also be a normal number, not an underflow.
+  if (!(specs.swingweight_kg_m2 - sw_min >= std::numeric_limits<double>::min()) ||
+      specs.swingweight_kg_m2 > sw_max) {
     throw std::invalid_argument(
         "swingweight_kg_m2: must be in (" + detail::format_significant(sw_min) + ", " +
         detail::format_significant(sw_max) + "] kg m^2 for this mass, balance and length, got " +

@@ -48,6 +48,7 @@ double wrist_force_ratio(const MassProperties& system, double forearm_equivalent
   const double I = system.I_cm_kg_m2;
   const double h = system.com_from_butt_m;
   const double Me = forearm_equivalent_mass_kg;
+  if (Me == 0.0) return 0.0;  // no forearm to push against: no force, whatever the body
   // Eq. (11) multiplied through by M_e, with M b h - I_cm = M h (x - x_cop) from Eq. (13).
   const double x_cop = h + I / (M * h);
   return Me * M * h * (impact_from_butt_m - x_cop) / (Me * M * h * h + I * (Me + M));
@@ -62,8 +63,9 @@ std::optional<double> hand_held_rotation_axis_from_butt(const MassProperties& sy
   const double b = impact_from_butt_m - h;  // so h + b is the impact's distance from the wrist
   const double denominator = M * b + Me * impact_from_butt_m;
   if (denominator == 0.0) return std::nullopt;
-  const double A = (system.I_cm_kg_m2 + Me * h * impact_from_butt_m) / denominator;  // Eq. (12)
-  return h - A;
+  // Eq. (12): A = (I_cm + M_e h (h + b)) / denominator; s = h - A written without
+  // the cancellation of h - A when the axis is near the wrist.
+  return (M * b * h - system.I_cm_kg_m2) / denominator;
 }
 
 std::optional<double> hand_held_impact_for_axis(const MassProperties& system,
@@ -82,6 +84,7 @@ std::optional<double> hand_held_impact_for_axis(const MassProperties& system,
 
 double effective_mass(const MassProperties& body, double impact_from_butt_m) {
   const double b = impact_from_butt_m - body.com_from_butt_m;
+  if (b == 0.0) return body.mass_kg;
   return body.mass_kg / (1.0 + body.mass_kg * b * b / body.I_cm_kg_m2);  // Eq. (17)
 }
 

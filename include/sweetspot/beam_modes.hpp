@@ -57,6 +57,18 @@ struct ModeOptions {
   // One entry per section when theory == kTimoshenko, ignored otherwise.
   std::vector<TimoshenkoSection> timoshenko;
 
+  // hand_held_modes only: how the damped eigenproblem (s^2 M + s C + K) q = 0
+  // is solved on the mesh. Both give the same modes to round-off.
+  //  * kRefined: a dense state-space solve on a coarse mesh (~2.6 elements per
+  //    requested mode) finds and orders the modes; each is then converged on
+  //    the full mesh by Rayleigh-functional iteration with a banded
+  //    factorisation of s^2 M + s C + K, O(n) per step. Falls back to
+  //    kDenseStateSpace (saying so in ModalResult::message) when a coarse mode
+  //    cannot be matched unambiguously.
+  //  * kDenseStateSpace: every eigenvalue of the 2n x 2n state matrix, O(n^3).
+  enum class DampedSolver { kRefined, kDenseStateSpace };
+  DampedSolver damped_solver = DampedSolver::kRefined;
+
   // Empty if the options are consistent, otherwise the first problem found,
   // naming the field and its value.
   std::string validate() const;

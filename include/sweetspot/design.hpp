@@ -10,6 +10,14 @@
 
 namespace sweetspot {
 
+// The rest of the model's range (see kMaxLength_m): a forearm may stand for a
+// wall (the fixed-pivot limit), a ball may not outrun a rifle bullet, and an
+// impact lasts between a microsecond and ten seconds.
+inline constexpr double kMaxForearmMass_kg = 1e12;
+inline constexpr double kMaxSpeed_m_s = 1e4;
+inline constexpr double kMinDuration_s = 1e-9;
+inline constexpr double kMaxDuration_s = 10.0;
+
 // The hand, a point mass on the handle (Cross 2004: 0.07 m from the butt).
 // For the vibration modes it grips the handle over `grip_length_m` centred on
 // `center_from_butt_m` through a distributed spring and dashpot (beam_modes.hpp).

@@ -7,6 +7,11 @@
 
 namespace sweetspot {
 
+// The model's range: larger values are refused rather than left to overflow
+// (a bat is about 1 m and 1 kg; these leave every real implement far inside).
+inline constexpr double kMaxLength_m = 100.0;
+inline constexpr double kMaxMass_kg = 1e6;
+
 // A uniform slice of an implement. Sections are listed butt to tip.
 struct Section {
   double length_m = 0.0;          // [m], > 0

@@ -18,6 +18,7 @@
 #include "sweetspot/io/input_error.hpp"
 #include "sweetspot/io/paper_reports.hpp"
 #include "sweetspot/io/modes_report.hpp"
+#include "sweetspot/io/reports.hpp"
 #include "sweetspot/io/study.hpp"
 
 namespace {
@@ -223,7 +224,7 @@ int main(int argc, char** argv) {
   std::string report_designs = "designs";
   std::string report_dir = "reports";
   CLI::App* report =
-      app.add_subcommand("report", "Reproduce Table I and Figs. 5 and 11 into a folder");
+      app.add_subcommand("report", "Reproduce Table I and Figs. 5 and 11, the beam's modes and the shipped studies into a folder");
   report->add_option("--designs", report_designs, "Folder holding table1/ and paper-beam.json")
       ->capture_default_str();
   report->add_option("--out", report_dir, "Folder to write")->capture_default_str();
@@ -282,7 +283,7 @@ int main(int argc, char** argv) {
         }
       }
     } else if (*report) {
-      sweetspot::io::write_paper_reports(report_designs, report_dir, std::cout);
+      sweetspot::io::write_reports(report_designs, report_dir, std::cout);
     } else if (*optimize_cmd.command) {
       return optimize_cmd.run();
     } else if (*sweep_cmd.command) {

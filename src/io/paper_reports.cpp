@@ -235,50 +235,33 @@ Figure figure11(const DesignFile& beam) {
   return figure;
 }
 
-void write_paper_reports(const std::string& designs_dir, const std::string& out_dir,
-                         std::ostream& log) {
+std::vector<ReportEntry> write_paper_reports(const std::string& designs_dir, const std::string& out_dir,
+                                             const ReportWriter& write) {
   // Read and compute everything before writing anything.
   const std::vector<Table1Row> rows = compute_table1(designs_dir + "/table1");
   const DesignFile beam = load_design(designs_dir + "/paper-beam.json");
   const Figure fig5 = figure5(beam);
   const Figure fig11 = figure11(beam);
-
-  std::filesystem::create_directories(out_dir);
-  const auto write = [&](const std::string& name, const std::string& content) {
-    write_file_atomically(out_dir + "/" + name, content);
-    log << "wrote " << out_dir << "/" << name << "\n";
-  };
   const std::string table_md = table1_report(rows, Format::kMarkdown);
-  write("table1.md", table_md);
-  write("table1.csv", table1_report(rows, Format::kCsv));
-  write("fig5.csv", fig5.csv);
-  write("fig11.csv", fig11.csv);
-  for (const auto& [name, figure] : {std::pair{"fig5.png", &fig5}, std::pair{"fig11.png", &fig11}}) {
-    std::string why;
-    if (render_png(figure->plot, out_dir + "/" + name, &why)) {
-      log << "wrote " << out_dir << "/" << name << "\n";
-    } else {
-      log << "skipped " << out_dir << "/" << name << ": " << why << "\n";
-    }
-  }
+  write.text("table1.md", table_md);
+  write.text("table1.csv", table1_report(rows, Format::kCsv));
+  write.text("fig5.csv", fig5.csv);
+  write.text("fig11.csv", fig11.csv);
+  write.plot("fig5.png", fig5.plot);
+  write.plot("fig11.png", fig11.plot);
+  (void)out_dir;
   const std::string last_line = table_md.substr(table_md.rfind("\nLargest") + 1);
-  write("README.md",
-        "# sweetspot reports\n\n"
-        "Written by `scripts/run` (that is, `sweetspot report`); do not edit by hand. A test "
-        "regenerates every `.md` and `.csv` here and fails when they differ from what is "
-        "committed. The PNG plots are rendered by gnuplot from the same data.\n\n"
-        "| file | what it shows |\n|---|---|\n"
-        "| [table1.md](table1.md), [table1.csv](table1.csv) | Table I of the paper: peak force on "
-        "the strings F0 and on the wrist F_w for eight racquet/player combinations, next to the "
-        "printed values. |\n"
-        "| [fig5.csv](fig5.csv), [fig5.png](fig5.png) | Fig. 5: velocity ratio v2/v16 of the "
-        "free 72 cm beam against the impact distance d from the free end (Eq. 6). |\n"
-        "| [fig11.csv](fig11.csv), [fig11.png](fig11.png) | Fig. 11: rotation axis s (from the "
-        "handle end) against d, for the free beam and the beam held in the hand. |\n\n"
-        "## Against the paper\n\n"
-        "- Table I: " + last_line +
-        "- Fig. 5: " + fig5.summary + "\n"
-        "- Fig. 11: " + fig11.summary + "\n");
+  return {
+      {"[table1.md](table1.md), [table1.csv](table1.csv)",
+       "Table I of the paper: peak force on the strings F0 and on the wrist F_w for eight "
+       "racquet/player combinations, next to the printed values. " + last_line.substr(0, last_line.size() - 1)},
+      {"[fig5.csv](fig5.csv), [fig5.png](fig5.png)",
+       "Fig. 5: velocity ratio v2/v16 of the free 72 cm beam against the impact distance d from the "
+       "free end (Eq. 6). " + fig5.summary},
+      {"[fig11.csv](fig11.csv), [fig11.png](fig11.png)",
+       "Fig. 11: rotation axis s (from the handle end) against d, for the free beam and the beam held "
+       "in the hand. " + fig11.summary},
+  };
 }
 
 }  // namespace sweetspot::io

@@ -14,6 +14,8 @@ namespace {
 
 // Default grid resolution of a sweep variable.
 constexpr int kDefaultGridPoints = 21;
+// A target met to this fraction counts as reached.
+constexpr double kTargetReached = 1e-4;
 // A constraint within this fraction of its limit counts as active.
 constexpr double kActiveFraction = 1e-4;
 
@@ -27,12 +29,6 @@ const OutputSpec* read_output_name(ObjectReader& r, std::string_view key) {
     r.fail(key, "unknown output \"" + *name + "\" (known: " + known + ")");
   }
   return output;
-}
-
-double required_number(ObjectReader& r, std::string_view key) {
-  const auto value = r.number(key);
-  if (!value) r.fail("", "missing \"" + std::string(key) + "\"");
-  return *value;
 }
 
 const Json& array_at(ObjectReader& r, std::string_view key, bool required) {
@@ -362,16 +358,44 @@ Study read_study(const Json& document, const std::string& source, const std::str
     }
     study.sweep_outputs.push_back(find_output(outputs[i].get<std::string>()));
   }
+  const std::string fidelity = top.string("fidelity").value_or("auto");
+  if (fidelity == "modal") {
+    study.fidelity = Fidelity::kModal;
+  } else if (fidelity == "auto") {
+    bool modes = false;
+    for (const ObjectiveTerm& t : study.objective) modes = modes || t.output->needs_modes;
+    for (const StudyConstraint& c : study.constraints) modes = modes || c.output->needs_modes;
+    for (const OutputSpec* o : study.sweep_outputs) modes = modes || o->needs_modes;
+    study.fidelity = modes ? Fidelity::kModal : Fidelity::kRigid;
+  } else if (fidelity != "rigid") {
+    top.fail("fidelity", "expected \"rigid\", \"modal\" or \"auto\", got \"" + fidelity + "\"");
+  }
+  if (const auto tolerance = top.number("modal_tolerance")) {
+    if (!(*tolerance >= 1e-8 && *tolerance <= 0.1)) {
+      top.fail("modal_tolerance", "must be in [1e-8, 0.1], got " + brief(Json(*tolerance)));
+    }
+    study.modal_tolerance = *tolerance;
+  }
   top.finish({"$schema", "name", "question", "description", "design", "variables", "objective",
-              "constraints", "algorithm", "local_algorithm", "seed", "tolerances", "grid", "outputs"});
+              "constraints", "algorithm", "local_algorithm", "seed", "tolerances", "grid", "outputs",
+              "fidelity", "modal_tolerance"});
 
   // The start must be a valid design.
   std::vector<double> start;
   for (const StudyVariable& v : study.variables) start.push_back(v.start);
-  try {
-    design_at(study, start);
-  } catch (const InputError& e) {
-    throw InputError(source, "/variables", "the start point is not a valid design: " + std::string(e.what()));
+  DesignFile at_start = [&] {
+    try {
+      return design_at(study, start);
+    } catch (const InputError& e) {
+      throw InputError(source, "/variables", "the start point is not a valid design: " + std::string(e.what()));
+    }
+  }();
+  if (study.fidelity == Fidelity::kModal) {
+    try {
+      evaluate_in(study, at_start);
+    } catch (const std::invalid_argument& e) {
+      rethrow_in(at_start, e);
+    }
   }
   return study;
 }
@@ -379,6 +403,10 @@ Study read_study(const Json& document, const std::string& source, const std::str
 Study load_study(const std::string& path) {
   const std::string folder = std::filesystem::path(path).parent_path().string();
   return read_study(read_json_file(path), path, folder.empty() ? "." : folder);
+}
+
+Evaluation evaluate_in(const Study& study, const DesignFile& design) {
+  return evaluate(design.design, study.fidelity, study.modal_tolerance);
 }
 
 DesignFile design_at(const Study& study, std::span<const double> x) {
@@ -390,7 +418,7 @@ DesignFile design_at(const Study& study, std::span<const double> x) {
 }
 
 double objective_of(const Study& study, const DesignFile& design) {
-  if (!study.over_impacts) return terms_value(study, evaluate(design.design));
+  if (!study.over_impacts) return terms_value(study, evaluate_in(study, design));
   const ImpactSpread& spread = *study.over_impacts;
   Design d = design.design;
   const double L = d.implement.length_m();
@@ -401,7 +429,7 @@ double objective_of(const Study& study, const DesignFile& design) {
     d.impact_from_butt_m = L - from_tip;
     double value = kPenalty;
     try {
-      value = terms_value(study, evaluate(d));
+      value = terms_value(study, evaluate(d, study.fidelity, study.modal_tolerance));
     } catch (const std::invalid_argument&) {
       // an impact off the implement: the penalty stands
     }
@@ -440,7 +468,7 @@ Problem make_problem(const Study& study) {
                                                    std::span<double> c) {
     try {
       const DesignFile design = design_at(study, x);
-      const Evaluation e = evaluate(design.design);
+      const Evaluation e = evaluate_in(study, design);
       f = study.over_impacts ? objective_of(study, design) : terms_value(study, e);
       if (square) f *= f;
       for (std::size_t k = 0; k < constraints.size(); ++k) c[k] = constraint_value(constraints[k], e);
@@ -464,7 +492,7 @@ OptimizationResult run_optimization(const Study& study) {
   DesignFile best = design_at(study, summary.x);
   const double start_objective = objective_of(study, start);
   std::vector<ConstraintReport> reports;
-  const Evaluation e = evaluate(best.design);
+  const Evaluation e = evaluate_in(study, best);
   const std::vector<ProblemConstraint> constraints = expand_constraints(study);
   for (const ProblemConstraint& pc : constraints) {
     const double value = constraint_value(pc, e);
@@ -481,8 +509,8 @@ OptimizationResult run_optimization(const Study& study) {
 
 std::string optimization_report(const Study& study, const OptimizationResult& r, Format format,
                                 bool with_timing) {
-  const Evaluation start = evaluate(r.start.design);
-  const Evaluation best = evaluate(r.best.design);
+  const Evaluation start = evaluate_in(study, r.start);
+  const Evaluation best = evaluate_in(study, r.best);
   const ObjectiveTerm& lead = study.objective.front();
   const auto lead_value = [&](const Evaluation& e) { return lead.output->value(e); };
 
@@ -555,6 +583,12 @@ std::string optimization_report(const Study& study, const OptimizationResult& r,
                     changes,
                     active.empty() ? " No constraint is active." : " Active constraints: " + active + ".",
                     r.summary.feasible ? "" : " **No feasible design was found; this is the least infeasible.**");
+  if (lead.goal == Goal::kTarget && study.objective.size() == 1 && !study.over_impacts && best_lead &&
+      std::abs(*best_lead - lead.target) > kTargetReached * std::max(1.0, std::abs(lead.target))) {
+    md += fmt::format("The target {} cannot be reached within the variables' bounds: {} {} is as close as "
+                      "these designs get.\n\n",
+                      significant(lead.target), significant(*best_lead, 4), lead.output->unit);
+  }
   md += "## Variables\n\n| path | min | max | start | best |\n|---|---:|---:|---:|---:|\n";
   for (std::size_t i = 0; i < study.variables.size(); ++i) {
     const StudyVariable& v = study.variables[i];
@@ -639,7 +673,7 @@ std::vector<Plot> run_sweep(const Study& study, std::ostream& csv,
       std::string error;
       std::optional<Evaluation> e;
       try {
-        e = evaluate(design_at(study, x).design);
+        e = evaluate_in(study, design_at(study, x));
       } catch (const std::exception& ex) {
         error = ex.what();
       }

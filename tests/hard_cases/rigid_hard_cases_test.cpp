@@ -5,8 +5,6 @@
 // a stated error of an exact or limiting answer, or is refused with
 // std::invalid_argument naming the argument. Never NaN, never a crash.
 //
-// Cases tagged [!mayfail] document a defect of the library that is still
-// open: they report the failure without failing the suite.
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -257,7 +255,7 @@ TEST_CASE("A forearm of 1e-9 kg leaves implement and hand nearly free") {
           Approx(axis_closed_form(s, kMe, x)).epsilon(kRelRoundOff));
     const double free_axis = *free_conjugate_from_butt(s, x);
     CHECK(*e.rotation_axis_hand_from_butt_m ==
-          Approx(free_axis).epsilon(2.0 * kMe * x / (M * std::abs(b))));
+          Approx(free_axis).epsilon(2.0 * kMe * x / (M * std::abs(b)) + kRelRoundOff));
   }
 }
 
@@ -612,14 +610,12 @@ TEST_CASE("A swingweight one ulp above its minimum gives a tiny positive I_cm an
                     Catch::StartsWith("swingweight: must be >="));
 }
 
-// ------------------------------------------------------------ open defects
+// ------------------------------------------------ formerly open defects
 
-TEST_CASE("The hand-held axis near the wrist keeps its relative accuracy", "[!mayfail]") {
+TEST_CASE("The hand-held axis near the wrist keeps its relative accuracy") {
   // Exact: s = (M b h - I) / (M b + M_e x), about 1e-10 m for M_e = 1e9 kg.
-  // The library forms s = h - A with A = h - s, which cancels: its absolute
-  // error is a few ulps of h (~1e-17 m), its relative error ~ eps h / |s|,
-  // 1e-7 at M_e = 1e9 kg and 1e-3 at 1e12 kg. Finite and harmless for a
-  // position in metres, but a ratio of two such axes would be wrong.
+  // Formed as h - A it would cancel (relative error eps h / |s| ~ 1e-7);
+  // the library evaluates this form directly.
   constexpr double kMe = 1e9;
   const MassProperties s = hand_held_system(Design{table_racquet()});
   for (const double x : {0.05, 0.4, 0.65}) {
@@ -629,58 +625,42 @@ TEST_CASE("The hand-held axis near the wrist keeps its relative accuracy", "[!ma
   }
 }
 
-TEST_CASE("A denormal I_cm without hand or forearm gives a finite wrist force", "[!mayfail]") {
+TEST_CASE("Without a forearm the wrist force is exactly zero, even for a denormal inertia") {
+  // Eq. (11) with M_e = 0: nothing to push against, F_w = 0 for every body,
+  // including one whose I_cm M underflows (0 / 0 if evaluated as a fraction).
+  const MassProperties speck{0.3, 0.1, std::numeric_limits<double>::denorm_min()};
+  CHECK(wrist_force_ratio(speck, 0.0, 0.635) == 0.0);
+}
+
+TEST_CASE("A swingweight that leaves a denormal I_cm is refused, not turned into NaN") {
   // Balance on the swingweight axis (B = 0.1 m) makes SW_min = 0, so the
-  // smallest positive swingweight (4.9e-324 kg m^2) is accepted and I_cm is that
-  // denormal. With M_h = 0 and M_e = 0, Eq. (11) times M_e is 0 / (I_cm M), and
-  // I_cm M underflows to 0 for M < 0.5 kg. Expected: F_w / F = 0 (no forearm, no
-  // force), as for every other body. Also Eq. (1)-(3): omega / J = b / I_cm
-  // overflows to inf, and at the centre of mass v / J = 1/M - 0 * inf = NaN.
+  // smallest positive swingweight would give I_cm = 4.9e-324 kg m^2 and
+  // omega / J = b / I_cm = inf (Eqs. 1-3). No real frame has it: refused.
   const double sw = std::numeric_limits<double>::denorm_min();
-  const Implement implement = Implement::from_specs(IndustrySpecs{0.685, 0.300, 0.1, sw});
-  Design d = design_with_impact(implement, 0.635);
-  d.hand.mass_kg = 0.0;
-  d.forearm_equivalent_mass_kg = 0.0;
-  const Evaluation e = evaluate(d);
-  CHECK(non_finite_fields(e) == "");
-  CHECK(e.wrist_force_ratio == 0.0);
-  const MassProperties body = implement.mass_properties();
-  CHECK(std::isfinite(point_velocity_per_impulse(body, 0.635, body.com_from_butt_m)));
+  CHECK_THROWS_WITH(Implement::from_specs(IndustrySpecs{0.685, 0.300, 0.1, sw}),
+                    Catch::StartsWith("swingweight_kg_m2"));
 }
 
-TEST_CASE("A zero I_cm through underflow is refused or finite, never NaN", "[!mayfail]") {
+TEST_CASE("A zero I_cm through underflow is refused, and M_eff at the centre is M") {
   // A section 1e-20 m long of 1e-300 kg has I_cm = m L^2 / 12 = 0 after
-  // underflow; section_mass_properties() accepts it (mass > 0, length > 0).
-  // Struck at its centre of mass, Eq. (17) evaluates M b^2 / I_cm = 0 / 0.
-  // Expected: refused (I_cm must be > 0) or M_eff = M (b = 0), never NaN.
-  const Implement speck = Implement::from_sections({Section{1e-20, 1e-300, {}}});
-  Design d = design_with_impact(speck, speck.mass_properties().com_from_butt_m);
-  d.hand = Hand{0.0, 0.0};
-  try {
-    CHECK(non_finite_fields(evaluate(d)) == "");
-  } catch (const std::invalid_argument& refused) {
-    SUCCEED("refused: " << refused.what());
-  }
+  // underflow: refused. Eq. (17) at b = 0 is M exactly whatever I_cm.
+  CHECK_THROWS_WITH(Implement::from_sections({Section{1e-20, 1e-300, {}}}),
+                    Catch::Contains("moment of inertia underflows"));
+  const MassProperties body{0.3, 0.35, 0.01};
+  CHECK(effective_mass(body, 0.35) == 0.3);
 }
 
-TEST_CASE("Accepted inputs whose products overflow are refused or finite, never inf/NaN",
-          "[!mayfail]") {
-  // validate() accepts any finite positive magnitude, but the model multiplies
-  // them: a 1e200 m implement has L^2 = inf so I_cm = inf and Eq. (11) is
-  // inf / inf; a 1e200 kg ball at 1e200 m/s has the impulse m v1 = inf.
-  // Expected: refused with std::invalid_argument (out of the range the model
-  // can represent) or finite.
-  const auto refused_or_finite = [](const Design& d) {
-    try {
-      CHECK(non_finite_fields(evaluate(d)) == "");
-    } catch (const std::invalid_argument& refused) {
-      SUCCEED("refused: " << refused.what());
-    }
-  };
-  refused_or_finite(Design{Implement::from_sections({Section{1e200, 0.3, {}}})});
+TEST_CASE("Inputs whose products would overflow are refused with the argument named") {
+  // A 1e200 m implement has L^2 = inf; a 1e200 kg ball at 1e200 m/s an
+  // infinite impulse. The model's range (kMaxLength_m, kMaxMass_kg,
+  // kMaxSpeed_m_s) refuses them before any product is formed.
+  CHECK_THROWS_WITH(Implement::from_sections({Section{1e200, 0.3, {}}}),
+                    Catch::Contains("total length"));
   Design fast = design_with_impact(table_racquet(), 0.65);
   fast.ball = Ball{1e200, 1e200};
-  refused_or_finite(fast);
+  CHECK_THROWS_WITH(evaluate(fast), Catch::StartsWith("ball/mass_kg"));
+  fast.ball = Ball{0.057, 1e200};
+  CHECK_THROWS_WITH(evaluate(fast), Catch::StartsWith("ball/speed_m_s"));
 }
 
 }  // namespace

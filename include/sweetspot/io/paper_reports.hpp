@@ -3,6 +3,7 @@
 // The paper's Table I and Figs. 5 and 11, computed from design files and
 // written as Markdown, CSV and PNG into reports/.
 
+#include <functional>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -50,9 +51,22 @@ std::optional<AxesCrossing> figure11_crossing(const DesignFile& beam);
 // Fig. 11: rotation axis s = h - A against d, free (Eq. 5) and hand-held (Eq. 12).
 Figure figure11(const DesignFile& beam);
 
-// Writes table1.md, table1.csv, fig5.csv, fig5.png, fig11.csv, fig11.png and
-// README.md into `out_dir` from the designs in `designs_dir`; logs what it wrote.
-void write_paper_reports(const std::string& designs_dir, const std::string& out_dir,
-                         std::ostream& log);
+// One line of the reports' index: the files and what they show.
+struct ReportEntry {
+  std::string files;  // Markdown links
+  std::string says;
+};
+
+// Writes into the reports folder: text atomically, plots through gnuplot
+// (a missing gnuplot skips the plot and says so).
+struct ReportWriter {
+  std::function<void(const std::string& name, const std::string& content)> text;
+  std::function<void(const std::string& name, const Plot& plot)> plot;
+};
+
+// Table I and Figs. 5 and 11 from the designs in `designs_dir`: table1.md,
+// table1.csv, fig5.csv, fig5.png, fig11.csv, fig11.png. Returns their index entries.
+std::vector<ReportEntry> write_paper_reports(const std::string& designs_dir, const std::string& out_dir,
+                                             const ReportWriter& write);
 
 }  // namespace sweetspot::io

@@ -68,7 +68,15 @@ struct Study {
   std::vector<StudyConstraint> constraints;
   OptimizeOptions options;
   std::vector<const OutputSpec*> sweep_outputs;  // outputs a sweep writes
+  // The model every evaluation uses: "fidelity" rigid, modal or auto (the
+  // default: modal exactly when an objective, constraint or swept output needs
+  // the modes), and the hand-held modes' relative frequency error.
+  Fidelity fidelity = Fidelity::kRigid;
+  double modal_tolerance = 1e-6;
 };
+
+// Evaluates `design` with the study's fidelity. Throws like evaluate().
+Evaluation evaluate_in(const Study& study, const DesignFile& design);
 
 // Reads a study file; `design` paths are relative to the study's folder.
 // Throws InputError naming the study file and the JSON path.

@@ -1,0 +1,113 @@
+#include "sweetspot/io/reports.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "sweetspot/io/atomic_file.hpp"
+#include "sweetspot/io/modes_report.hpp"
+#include "sweetspot/io/paper_reports.hpp"
+#include "sweetspot/io/study.hpp"
+
+namespace sweetspot::io {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The first sentence after "**Answer.**" in a study report.
+std::string answer_of(const std::string& md) {
+  const auto at = md.find("**Answer.** ");
+  if (at == std::string::npos) return "";
+  const auto start = at + 12;
+  return md.substr(start, md.find('\n', start) - start);
+}
+
+std::vector<fs::path> study_files(const std::string& designs_dir) {
+  std::vector<fs::path> files;
+  const fs::path folder = fs::path(designs_dir) / "studies";
+  if (!fs::exists(folder)) return files;
+  for (const auto& entry : fs::directory_iterator(folder)) {
+    if (entry.path().extension() != ".json") continue;
+    // Designs used by the studies live beside them; a study has variables.
+    if (read_json_file(entry.path().string()).contains("variables")) files.push_back(entry.path());
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+}  // namespace
+
+void write_reports(const std::string& designs_dir, const std::string& out_dir, std::ostream& log) {
+  fs::create_directories(fs::path(out_dir) / "studies");
+  const ReportWriter write{
+      [&](const std::string& name, const std::string& content) {
+        write_file_atomically(out_dir + "/" + name, content);
+        log << "wrote " << out_dir << "/" << name << "\n";
+      },
+      [&](const std::string& name, const Plot& plot) {
+        std::string why;
+        if (render_png(plot, out_dir + "/" + name, &why)) {
+          log << "wrote " << out_dir << "/" << name << "\n";
+        } else {
+          log << "skipped " << out_dir << "/" << name << ": " << why << "\n";
+        }
+      }};
+
+  std::vector<ReportEntry> entries = write_paper_reports(designs_dir, out_dir, write);
+
+  const DesignFile beam = load_design(designs_dir + "/paper-beam.json");
+  const ModesData modes = compute_modes(beam, 3, 1e-6, ModeOptions::Method::kExact);
+  write.text("modes-paper-beam.md", modes_report(modes, Format::kMarkdown));
+  write.text("modes-paper-beam.csv", modes_report(modes, Format::kCsv));
+  write.plot("modes-paper-beam.png", modes_plot(modes));
+  entries.push_back(
+      {"[modes-paper-beam.md](modes-paper-beam.md), [.csv](modes-paper-beam.csv), "
+       "[.png](modes-paper-beam.png)",
+       fmt::format("Vibration modes of the paper's beam, free and hand-held (paper: 193 Hz free, 171 Hz "
+                   "held, nodes 15.8 cm from each end): {:.1f} Hz free with its node {:.1f} cm from the "
+                   "end; {:.1f} Hz held (damping ratio {:.3f}).",
+                   modes.free.modes[0].frequency_Hz,
+                   100 * (beam.design.implement.length_m() - modes.free.modes[0].nodes_from_butt_m.back()),
+                   hand_held_fundamental(modes.held)->frequency_Hz,
+                   hand_held_fundamental(modes.held)->damping_ratio)});
+
+  for (const fs::path& path : study_files(designs_dir)) {
+    const Study study = load_study(path.string());
+    const std::string stem = "studies/" + path.stem().string();
+    if (!study.objective.empty()) {
+      const OptimizationResult result = run_optimization(study);
+      const std::string md = optimization_report(study, result, Format::kMarkdown, false);
+      write.text(stem + ".md", md);
+      write.plot(stem + ".png", convergence_plot(study, result));
+      entries.push_back({fmt::format("[{0}.md]({0}.md), [.png]({0}.png)", stem),
+                         study.name + ": " + answer_of(md)});
+    } else {
+      std::ostringstream csv;
+      const std::vector<Plot> plots = run_sweep(study, csv, [](std::size_t, std::size_t) {});
+      write.text(stem + ".csv", csv.str());
+      std::string links = fmt::format("[{0}.csv]({0}.csv)", stem);
+      for (std::size_t k = 0; k < plots.size(); ++k) {
+        const std::string png = fmt::format("{}-{}.png", stem, study.sweep_outputs[k]->name);
+        write.plot(png, plots[k]);
+        links += fmt::format(", [{}]({})", study.sweep_outputs[k]->name, png);
+      }
+      entries.push_back({links, study.name + (study.question.empty() ? "" : ": " + study.question)});
+    }
+  }
+
+  std::string index =
+      "# sweetspot reports\n\n"
+      "Written by `scripts/run` (that is, `sweetspot report`); do not edit by hand. A test "
+      "regenerates every `.md` and `.csv` here and fails when they differ from what is committed. "
+      "PNG plots are rendered by gnuplot from the same data. Timings are not in these files (they "
+      "would never reproduce); they are in the benchmark reports.\n\n"
+      "| files | what they show |\n|---|---|\n";
+  for (const ReportEntry& e : entries) index += "| " + e.files + " | " + md_cell(e.says) + " |\n";
+  write.text("README.md", index);
+  log << "\nSummary (index: " << out_dir << "/README.md):\n";
+  for (const ReportEntry& e : entries) log << "- " << e.says << "\n";
+}
+
+}  // namespace sweetspot::io

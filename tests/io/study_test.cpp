@@ -1,0 +1,224 @@
+// Evidence that the optimum is right: every shipped study against brute force
+// on a grid of the same model, gradients against central differences, KKT
+// conditions at the optimum, and agreement from several starts.
+#include "sweetspot/io/study.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include <catch2/catch.hpp>
+
+#include "sweetspot/io/input_error.hpp"
+#include "sweetspot/roots.hpp"
+
+namespace sweetspot::io {
+namespace {
+
+std::string studies() { return std::string(SWEETSPOT_SOURCE_DIR) + "/designs/studies/"; }
+
+double objective_at(const Study& study, std::vector<double> x) { return objective_of(study, design_at(study, x)); }
+
+// The optimizer may beat a grid (it is continuous) but never lose to it by
+// more than its own convergence tolerance, relative to the objective.
+constexpr double kBeatsGridTolerance = 1e-6;
+
+// Brute force: the best objective over a full grid of `points` per variable,
+// keeping only points that satisfy `feasible`.
+template <class Feasible>
+double grid_minimum(const Study& study, int points, Feasible&& feasible) {
+  const std::size_t n = study.variables.size();
+  std::vector<int> index(n, 0);
+  double best = std::numeric_limits<double>::infinity();
+  while (true) {
+    std::vector<double> x(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const StudyVariable& v = study.variables[i];
+      x[i] = v.min + (v.max - v.min) * index[i] / (points - 1);
+    }
+    const DesignFile d = design_at(study, x);
+    if (feasible(d)) best = std::min(best, objective_of(study, d));
+    std::size_t i = 0;
+    while (i < n && ++index[i] == points) index[i++] = 0;
+    if (i == n) break;
+  }
+  return best;
+}
+
+TEST_CASE("Study 1: the optimizer agrees with a 5^6 grid and the paper's bottom row of Table I") {
+  const Study study = load_study(studies() + "1-lowest-wrist-force-table1-ranges.json");
+  const OptimizationResult r = run_optimization(study);
+  const double grid = grid_minimum(study, 5, [](const DesignFile&) { return true; });
+  CHECK(r.summary.objective <= grid * (1 + kBeatsGridTolerance));
+  // The optimum is a corner of the box, which the grid contains.
+  CHECK(r.summary.objective == Approx(grid).epsilon(kBeatsGridTolerance));
+  // Table I, bottom row: 250 N, printed to the newton.
+  CHECK(r.summary.objective == Approx(250.0).margin(1.0));
+}
+
+TEST_CASE("Study 1: every variable sits on the bound its derivative points to (KKT)") {
+  const Study study = load_study(studies() + "1-lowest-wrist-force-table1-ranges.json");
+  const OptimizationResult r = run_optimization(study);
+  const Problem problem = make_problem(study);
+  std::vector<double> grad(r.summary.x.size());
+  difference_gradient([&](std::span<const double> x) { return objective_at(study, {x.begin(), x.end()}); },
+                      r.summary.x, problem.lower, problem.upper, 1e-6, grad);
+  for (std::size_t i = 0; i < grad.size(); ++i) {
+    INFO(study.variables[i].pointer << ": gradient " << grad[i]);
+    const StudyVariable& v = study.variables[i];
+    const double slack = 1e-6 * (v.max - v.min);
+    if (r.summary.x[i] <= v.min + slack) CHECK(grad[i] >= 0.0);        // at the lower bound: f rises inward
+    else if (r.summary.x[i] >= v.max - slack) CHECK(grad[i] <= 0.0);   // at the upper bound: f falls outward
+    else CHECK(std::abs(grad[i]) <= 1e-3 * std::abs(r.summary.objective));
+  }
+}
+
+TEST_CASE("Study 1: an inactive constraint changes nothing") {
+  Study study = load_study(studies() + "1-lowest-wrist-force-table1-ranges.json");
+  const OptimizationResult free = run_optimization(study);
+  study.constraints.push_back(StudyConstraint{find_output("swingweight_kg_cm2"), std::nullopt, 1000.0,
+                                              std::nullopt, 1e-6});
+  const OptimizationResult constrained = run_optimization(study);
+  CHECK(constrained.summary.objective == Approx(free.summary.objective).epsilon(kBeatsGridTolerance));
+  REQUIRE(constrained.constraints.size() == 1);
+  CHECK_FALSE(constrained.constraints[0].active);
+}
+
+TEST_CASE("Study 2: fixed mass and swingweight, against a grid that solves the two equalities") {
+  const Study study = load_study(studies() + "2-lowest-wrist-force-fixed-feel.json");
+  const OptimizationResult r = run_optimization(study);
+  REQUIRE(r.summary.feasible);
+  CHECK(r.constraints[0].value == Approx(0.305).epsilon(1e-6));
+  CHECK(r.constraints[1].value == Approx(320.0).epsilon(1e-6));
+  // Brute force over (ratio, tape position); the total mass fixes the frame
+  // mass from the tape mass, and the swingweight then fixes the tape mass.
+  const StudyVariable& ratio = study.variables[1];
+  const StudyVariable& position = study.variables[2];
+  constexpr int kPoints = 41;
+  double best = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < kPoints; ++i) {
+    for (int j = 0; j < kPoints; ++j) {
+      const double q = ratio.min + (ratio.max - ratio.min) * i / (kPoints - 1);
+      const double p = position.min + (position.max - position.min) * j / (kPoints - 1);
+      const auto x_for = [&](double tape) { return std::vector<double>{0.305 - tape, q, p, tape}; };
+      const auto swingweight_gap = [&](double tape) {
+        return *find_output("swingweight_kg_cm2")->value(evaluate_in(study, design_at(study, x_for(tape)))) - 320.0;
+      };
+      const auto tape = find_root(swingweight_gap, study.variables[3].min, study.variables[3].max, 1e-12);
+      if (!tape || 0.305 - *tape < study.variables[0].min || 0.305 - *tape > study.variables[0].max) continue;
+      best = std::min(best, objective_at(study, x_for(*tape)));
+    }
+  }
+  REQUIRE(std::isfinite(best));
+  CHECK(r.summary.objective <= best * (1 + kBeatsGridTolerance));
+  // A 41 x 41 grid lands within 0.5 % of a smooth optimum.
+  CHECK(r.summary.objective == Approx(best).epsilon(5e-3));
+}
+
+TEST_CASE("Study 2: the same optimum from several seeds") {
+  Study study = load_study(studies() + "2-lowest-wrist-force-fixed-feel.json");
+  const double reference = run_optimization(study).summary.objective;
+  for (const unsigned long seed : {2ul, 17ul, 123ul}) {
+    study.options.seed = seed;
+    CHECK(run_optimization(study).summary.objective == Approx(reference).epsilon(1e-6));
+  }
+}
+
+TEST_CASE("Studies 3: the COP cannot be put on the node; the optimizer finds the closest corner") {
+  for (const char* name : {"3a-cop-on-node-table1-racquet.json", "3b-cop-on-node-paper-beam.json"}) {
+    INFO(name);
+    const Study study = load_study(studies() + name);
+    CHECK(study.fidelity == Fidelity::kModal);
+    const OptimizationResult r = run_optimization(study);
+    const double grid = grid_minimum(study, 5, [](const DesignFile&) { return true; });
+    CHECK(r.summary.objective <= grid * (1 + kBeatsGridTolerance));
+    CHECK(r.summary.objective == Approx(grid).epsilon(1e-4));
+  }
+}
+
+TEST_CASE("Study 4: the robust optimum against a grid, and its swingweight limit is active") {
+  Study study = load_study(studies() + "4-robust-lowest-worst-wrist-force.json");
+  const OptimizationResult r = run_optimization(study);
+  REQUIRE(r.summary.feasible);
+  const double grid = grid_minimum(study, 61, [&](const DesignFile& d) {
+    return *find_output("swingweight_kg_cm2")->value(evaluate(d.design)) <= 330.0;
+  });
+  CHECK(r.summary.objective <= grid * (1 + kBeatsGridTolerance));
+  // On a 61 x 61 grid the constraint boundary is resolved to about 1/60 of a range.
+  CHECK(r.summary.objective == Approx(grid).epsilon(2e-3));
+  REQUIRE(r.constraints.size() == 1);
+  CHECK(r.constraints[0].active);
+  // Active means binding: without it the worst-case force falls further.
+  study.constraints.clear();
+  CHECK(run_optimization(study).summary.objective < r.summary.objective * (1 - 1e-3));
+}
+
+TEST_CASE("The worst case over impacts is the largest of the per-impact values") {
+  const Study study = load_study(studies() + "4-robust-lowest-worst-wrist-force.json");
+  const DesignFile d = design_at(study, std::vector<double>{0.3, 1.0});
+  double worst = 0.0;
+  for (int k = 0; k < 13; ++k) {
+    Design at = d.design;
+    at.impact_from_butt_m = at.implement.length_m() - (0.10 + 0.12 * k / 12);
+    worst = std::max(worst, evaluate(at).peak_wrist_force_N);
+  }
+  CHECK(objective_of(study, d) == worst);
+}
+
+TEST_CASE("Study gradients agree with a wide-step Richardson central difference") {
+  const Study study = load_study(studies() + "2-lowest-wrist-force-fixed-feel.json");
+  const Problem problem = make_problem(study);
+  std::vector<double> x{0.29, 1.05, 0.6, 0.01};
+  std::vector<double> grad(4);
+  const auto f = [&](std::span<const double> y) { return objective_at(study, {y.begin(), y.end()}); };
+  difference_gradient(f, x, problem.lower, problem.upper, 1e-6, grad);
+  for (std::size_t i = 0; i < 4; ++i) {
+    const double h = 1e-3 * (problem.upper[i] - problem.lower[i]);
+    const auto central = [&](double step) {
+      std::vector<double> a = x, b = x;
+      a[i] += step;
+      b[i] -= step;
+      return (f(a) - f(b)) / (2 * step);
+    };
+    // Richardson: (4 D(h/2) - D(h)) / 3 cancels the h^2 term.
+    const double richardson = (4 * central(h / 2) - central(h)) / 3;
+    CHECK(grad[i] == Approx(richardson).epsilon(1e-5));
+  }
+}
+
+TEST_CASE("Bad studies are refused with the study's JSON path") {
+  const auto error_of = [](const char* text) {
+    try {
+      read_study(nlohmann::json::parse(text), "study.json", studies());
+    } catch (const InputError& e) {
+      return e.pointer() + ": " + e.detail();
+    }
+    return std::string("(no error)");
+  };
+  CHECK_THAT(error_of(R"({"design": "../table1/row1.json", "variables": [{"path": "/implement/nope",
+              "min": 0, "max": 1}]})"), Catch::StartsWith("/variables/0/path") && Catch::Contains("not in the design"));
+  CHECK_THAT(error_of(R"({"design": "../table1/row1.json", "variables": [{"path": "/name",
+              "min": 0, "max": 1}]})"), Catch::StartsWith("/variables/0/path") && Catch::Contains("expected a number"));
+  CHECK_THAT(error_of(R"({"design": "../table1/row1.json", "variables": [{"path": "/frame/cor",
+              "min": 0.9, "max": 0.6}]})"), Catch::StartsWith("/variables/0/min") && Catch::Contains("must be < max"));
+  CHECK_THAT(error_of(R"({"design": "../table1/row1.json", "variables": [{"path": "/frame/cor",
+              "min": 0.6, "max": 0.8}], "objective": {"output": "happiness"}})"),
+             Catch::StartsWith("/objective/output") && Catch::Contains("unknown output"));
+  CHECK_THAT(error_of(R"({"design": "../table1/row1.json", "variables": [{"path": "/frame/cor",
+              "min": 0.6, "max": 0.8}], "algorithm": "LD_MAGIC"})"), Catch::StartsWith("/algorithm"));
+  CHECK_THAT(error_of(R"({"design": "nowhere.json", "variables": []})"), Catch::StartsWith("/design"));
+  CHECK_THAT(error_of(R"({"design": "../table1/row1.json", "variables": [{"path": "/frame/cor",
+              "min": 0.6, "max": 0.8}], "constraints": [{"output": "mass_kg"}]})"),
+             Catch::StartsWith("/constraints/0"));
+}
+
+TEST_CASE("An infeasible study says so and returns the least violating design") {
+  Study study = load_study(studies() + "4-robust-lowest-worst-wrist-force.json");
+  study.constraints[0].max = 100.0;  // no racquet in the box swings that lightly
+  const OptimizationResult r = run_optimization(study);
+  CHECK_FALSE(r.summary.feasible);
+  CHECK_FALSE(r.constraints[0].satisfied);
+  CHECK(optimization_report(study, r, Format::kMarkdown, false).find("No feasible design") != std::string::npos);
+}
+
+}  // namespace
+}  // namespace sweetspot::io
