@@ -214,3 +214,74 @@ TEST_CASE("Usage errors exit 2 and --help, --version exit 0") {
 }
 
 }  // namespace
+
+namespace {
+
+TEST_CASE("optimize --format json carries the keys the issue names") {
+  const Sandbox box;
+  const Run run = box.run(std::string("optimize \"") + SWEETSPOT_SOURCE_DIR +
+                          "/designs/studies/4-robust-lowest-worst-wrist-force.json\" --format json");
+  REQUIRE(run.status == 0);
+  const nlohmann::json j = nlohmann::json::parse(run.out);
+  for (const char* key : {"best_design", "objective_value", "evaluations", "termination", "seconds"}) {
+    INFO(key);
+    CHECK(j.contains(key));
+  }
+  // The best design is a complete design file that evaluate accepts.
+  const fs::path best = box.file("best.json", j["best_design"].dump());
+  CHECK(box.run("evaluate \"" + best.string() + "\"").status == 0);
+}
+
+TEST_CASE("A bad study exits 2 naming the study file and its JSON path") {
+  const Sandbox box;
+  const std::string design = std::string(SWEETSPOT_SOURCE_DIR) + "/designs/table1/row1.json";
+  struct Case {
+    std::string study;
+    const char* pointer;
+  } cases[] = {
+      {R"({"design": ")" + design + R"(", "variables": [{"path": "/implement/colour", "min": 0, "max": 1}],
+          "objective": {"output": "peak_wrist_force_N"}})", "/variables/0/path"},
+      {R"({"design": ")" + design + R"(", "variables": [{"path": "/frame/cor", "min": 0.8, "max": 0.6}],
+          "objective": {"output": "peak_wrist_force_N"}})", "/variables/0/min"},
+      {R"({"design": ")" + design + R"(", "variables": [{"path": "/frame/cor", "min": 0.6, "max": 0.8}],
+          "objective": {"output": "comfort"}})", "/objective/output"},
+      {R"({"design": ")" + design + R"(", "variables": [{"path": "/frame/cor", "min": 0.6, "max": 0.8}],
+          "objective": {"output": "peak_wrist_force_N"}, "algorithm": "GN_GUESS"})", "/algorithm"},
+      {R"({"design": ")" + design + R"(", "variables": [{"path": "/frame/cor", "min": 0.6, "max": 0.8}]})",
+       "/objective"},
+  };
+  for (const Case& c : cases) {
+    INFO(c.study);
+    const fs::path study = box.file("study.json", c.study);
+    const Run run = box.run("optimize \"" + study.string() + "\"");
+    INFO(run.err);
+    CHECK(run.status == 2);
+    CHECK(run.err.find(study.string() + ": " + c.pointer) != std::string::npos);
+  }
+}
+
+TEST_CASE("sweep streams one CSV row per grid point, first variable fastest") {
+  const Sandbox box;
+  const fs::path csv = box.path("sweep.csv");
+  const Run run = box.run(std::string("sweep \"") + SWEETSPOT_SOURCE_DIR +
+                          "/designs/studies/5b-sweep-wrist-force-forearm-mass.json\" --output \"" +
+                          csv.string() + "\" --quiet");
+  REQUIRE(run.status == 0);
+  const std::string text = slurp(csv);
+  // 81 impact points x 5 forearm masses, plus the header.
+  CHECK(std::count(text.begin(), text.end(), '\n') == 81 * 5 + 1);
+  CHECK(text.rfind("/impact/from_tip_m,/forearm/equivalent_mass_kg,peak_wrist_force_N,error\n", 0) == 0);
+}
+
+TEST_CASE("modes reports the beam's fundamental and refuses a design without stiffness") {
+  const Sandbox box;
+  const Run run = box.run(std::string("modes \"") + SWEETSPOT_SOURCE_DIR + "/designs/paper-beam.json\" --format json");
+  REQUIRE(run.status == 0);
+  const nlohmann::json j = nlohmann::json::parse(run.out);
+  CHECK(j["free"][0]["frequency_Hz"].get<double>() == Approx(193.0).epsilon(1e-9));
+  const Run bad = box.run(std::string("modes \"") + SWEETSPOT_SOURCE_DIR + "/designs/table1/row1.json\"");
+  CHECK(bad.status == 2);
+  CHECK(bad.err.find("/frame/EI_N_m2") != std::string::npos);
+}
+
+}  // namespace
