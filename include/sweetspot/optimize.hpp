@@ -56,7 +56,7 @@ struct OptimizeOptions {
   double difference_step_rel = 1e-6;
   // "auto": samples per variable in the global stage and local searches run.
   int samples_per_variable = 8;
-  int local_starts = 3;
+  int local_starts = 2;
 
   // Empty when valid, else what is wrong ("max_evaluations: must be >= 1, got 0").
   std::string validate() const;

@@ -13,6 +13,7 @@
 
 #include "sweetspot/evaluate.hpp"
 #include "sweetspot/io/atomic_file.hpp"
+#include "sweetspot/io/bench.hpp"
 #include "sweetspot/io/design_reader.hpp"
 #include "sweetspot/io/format.hpp"
 #include "sweetspot/io/input_error.hpp"
@@ -236,6 +237,19 @@ int main(int argc, char** argv) {
   ModesCommand modes_cmd;
   modes_cmd.add_to(app);
 
+  sweetspot::io::BenchOptions bench_options;
+  std::string bench_what = "all";
+  CLI::App* bench = app.add_subcommand(
+      "bench", "Speed against error on this machine (median of repeated runs) into reports/");
+  bench->add_option("what", bench_what, "optimize, or all")
+      ->check(CLI::IsMember({"optimize", "all"}))
+      ->capture_default_str();
+  bench->add_option("--designs", bench_options.designs_dir, "Folder holding studies/")->capture_default_str();
+  bench->add_option("--out", bench_options.out_dir, "Folder to write")->capture_default_str();
+  bench->add_option("--repeats", bench_options.repeats, "Runs per figure (the median is reported)")
+      ->check(CLI::Range(1, 1000))
+      ->capture_default_str();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -290,6 +304,8 @@ int main(int argc, char** argv) {
       return sweep_cmd.run();
     } else if (*modes_cmd.command) {
       return modes_cmd.run();
+    } else if (*bench) {
+      sweetspot::io::bench_optimize(bench_options, std::cout);
     }
   } catch (const sweetspot::io::InputError& e) {
     std::cerr << "sweetspot: " << e.what() << "\n";

@@ -1,0 +1,28 @@
+#pragma once
+
+// `sweetspot bench`: speed against error, measured on this machine. A careful
+// harness rather than a test: every figure is the median of repeated runs on
+// one core, with the machine and compiler stated. Not part of the reports'
+// reproducibility check (timings never reproduce).
+
+#include <ostream>
+#include <string>
+
+namespace sweetspot::io {
+
+struct BenchOptions {
+  std::string designs_dir = "designs";
+  std::string out_dir = "reports";
+  int repeats = 5;  // runs per figure; the median is reported
+};
+
+// The machine, compiler and flags, for the head of every benchmark report.
+std::string machine_description();
+
+// Rigid evaluations per second through the library (evaluate_unchecked) and
+// per study: every shipped optimisation with "auto" and with each NLopt
+// algorithm that fits it (evaluations, median wall time, objective reached).
+// Writes speed-vs-error.md and speed-vs-error.csv into out_dir; logs a summary.
+void bench_optimize(const BenchOptions& options, std::ostream& log);
+
+}  // namespace sweetspot::io

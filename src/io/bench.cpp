@@ -1,0 +1,159 @@
+#include "sweetspot/io/bench.hpp"
+
+#include <sys/utsname.h>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <optional>
+#include <thread>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "sweetspot/evaluate.hpp"
+#include "sweetspot/io/atomic_file.hpp"
+#include "sweetspot/io/format.hpp"
+#include "sweetspot/io/study.hpp"
+
+namespace sweetspot::io {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+template <class F>
+double median_seconds(int repeats, F&& run) {
+  std::vector<double> seconds;
+  for (int i = 0; i < repeats; ++i) {
+    const auto start = Clock::now();
+    run();
+    seconds.push_back(std::chrono::duration<double>(Clock::now() - start).count());
+  }
+  return median(seconds);
+}
+
+std::string cpu_model() {
+  std::ifstream in("/proc/cpuinfo");
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
+  }
+  return "unknown CPU";
+}
+
+// Which algorithms make sense for a study: constraint-taking ones only when
+// it has constraints; derivative-based ones only when it is smooth.
+std::vector<std::string> algorithms_for(const Study& study, const Problem& problem) {
+  std::vector<std::string> list{"auto"};
+  const bool constrained = !study.constraints.empty();
+  const bool equality = std::any_of(study.constraints.begin(), study.constraints.end(),
+                                    [](const StudyConstraint& c) { return c.equals.has_value(); });
+  if (problem.smooth) list.push_back("LD_SLSQP");
+  if (problem.smooth && !equality) list.push_back("LD_MMA");
+  list.push_back("LN_COBYLA");
+  if (!constrained) list.insert(list.end(), {"LN_BOBYQA", "GN_DIRECT_L"});
+  list.push_back("GN_ISRES");
+  return list;
+}
+
+}  // namespace
+
+std::string machine_description() {
+  utsname u{};
+  uname(&u);
+  return fmt::format("{} ({} cores visible), Linux {}; {} {}, flags: {}", cpu_model(),
+                     std::max(1u, std::thread::hardware_concurrency()), u.release,
+#if defined(__clang__)
+                     "clang++", __clang_version__,
+#else
+                     "g++", __VERSION__,
+#endif
+                     SWEETSPOT_CXX_FLAGS);
+}
+
+void bench_optimize(const BenchOptions& options, std::ostream& log) {
+  // Rigid evaluations through the library, one core, no allocation.
+  Design design{Implement::paper_racquet(0.70, 0.25, 0.8)};
+  validate(design);
+  constexpr int kEvaluations = 5'000'000;
+  double sink = 0.0;
+  const double rigid_seconds = median_seconds(options.repeats, [&] {
+    for (int i = 0; i < kEvaluations; ++i) {
+      design.impact_from_butt_m = 0.30 + (i & 1023) * 3e-4;
+      sink += evaluate_unchecked(design).peak_wrist_force_N;
+    }
+  });
+  const double rigid_ns = rigid_seconds / kEvaluations * 1e9;
+
+  std::string csv = "study,algorithm,evaluations,median_ms,objective,feasible,excess_over_best\n";
+  std::string md = fmt::format(
+      "# Speed against error\n\nMeasured by `sweetspot bench optimize` on {}. Every time is the median of "
+      "{} runs on one core.\n\n## Rigid model\n\n{:.1f} ns per evaluation of a design "
+      "(`evaluate_unchecked`: every quantity of the paper), {:.1f} million evaluations per second.\n\n"
+      "## Optimizer: evaluations, wall time and the objective reached, per study and algorithm\n\n"
+      "`excess` is how far the objective lands above the best any algorithm found for that study "
+      "(relative); an infeasible end is marked.\n\n"
+      "| study | algorithm | evaluations | median time (ms) | objective | excess |\n"
+      "|---|---|---:|---:|---:|---:|\n",
+      machine_description(), options.repeats, rigid_ns, 1e3 / rigid_ns);
+
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::directory_iterator(fs::path(options.designs_dir) / "studies")) {
+    if (entry.path().extension() == ".json") files.push_back(entry.path());
+  }
+  std::sort(files.begin(), files.end());
+  for (const fs::path& path : files) {
+    if (!read_json_file(path.string()).contains("objective")) continue;
+    Study study = load_study(path.string());
+    const Problem problem = make_problem(study);
+    struct Row {
+      std::string algorithm;
+      int evaluations;
+      double ms, objective;
+      bool feasible;
+    };
+    std::vector<Row> rows;
+    for (const std::string& algorithm : algorithms_for(study, problem)) {
+      study.options.algorithm = algorithm;
+      std::optional<OptimizationResult> result;
+      const double seconds = median_seconds(options.repeats, [&] { result.emplace(run_optimization(study)); });
+      rows.push_back({algorithm, result->summary.evaluations, seconds * 1e3, result->summary.objective,
+                      result->summary.feasible});
+    }
+    double best = std::numeric_limits<double>::infinity();
+    for (const Row& r : rows) {
+      if (r.feasible) best = std::min(best, r.objective);
+    }
+    for (const Row& r : rows) {
+      const double excess = (r.objective - best) / std::max(std::abs(best), 1e-300);
+      csv += fmt::format("{},{},{},{},{},{},{}\n", path.stem().string(), r.algorithm, r.evaluations,
+                         exact(r.ms), exact(r.objective), r.feasible ? "yes" : "no", exact(excess));
+      md += fmt::format("| {} | {} | {} | {:.2f} | {} | {} |\n", path.stem().string(), r.algorithm,
+                        r.evaluations, r.ms, significant(r.objective),
+                        r.feasible ? fmt::format("{:.1e}", excess) : std::string("infeasible"));
+      if (r.algorithm == "auto") {
+        log << fmt::format("{}: auto {} evaluations, {:.2f} ms\n", path.stem().string(), r.evaluations, r.ms);
+      }
+    }
+  }
+  md += fmt::format(
+      "\nTargets (issue: optimizer): rigid-model studies in at most 5 ms, the COP-on-node study with the "
+      "modal model in the loop in at most 50 ms.\n\n(checksum {:.3g})\n",
+      sink);
+  fs::create_directories(options.out_dir);
+  write_file_atomically(options.out_dir + "/speed-vs-error.md", md);
+  write_file_atomically(options.out_dir + "/speed-vs-error.csv", csv);
+  log << fmt::format("rigid: {:.1f} ns per evaluation\nwrote {}/speed-vs-error.md and .csv\n", rigid_ns,
+                     options.out_dir);
+}
+
+}  // namespace sweetspot::io
