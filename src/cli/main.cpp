@@ -8,11 +8,13 @@
 #include <unistd.h>
 
 #include <fstream>
+#include <thread>
 #include <iostream>
 #include <string>
 
 #include "sweetspot/evaluate.hpp"
 #include "sweetspot/io/atomic_file.hpp"
+#include "sweetspot/io/batch.hpp"
 #include "sweetspot/io/bench.hpp"
 #include "sweetspot/io/design_reader.hpp"
 #include "sweetspot/io/format.hpp"
@@ -179,6 +181,40 @@ struct SweepCommand {
   }
 };
 
+// evaluate --batch: exit 0 when every row evaluated, 1 when some failed.
+int run_batch_command(const std::string& path, const std::string& base, int threads,
+                      const std::string& fidelity, const OutputOptions& out) {
+  sweetspot::io::BatchOptions options;
+  options.csv_input = path.size() >= 4 && path.compare(path.size() - 4, 4, ".csv") == 0;
+  if (!base.empty()) options.base = sweetspot::io::read_json_file(base);
+  options.format = out.parsed() == Format::kJson ? Format::kJson : Format::kCsv;
+  options.threads = threads;
+  options.fidelity = fidelity;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw sweetspot::io::InputError(path, "", "cannot open the file for reading");
+  sweetspot::io::BatchSummary summary;
+  if (out.output.empty()) {
+    summary = sweetspot::io::run_batch(in, path, options, std::cout);
+  } else {
+    const std::string temporary = sweetspot::io::temporary_path_for(out.output);
+    try {
+      std::ofstream file(temporary, std::ios::binary);
+      summary = sweetspot::io::run_batch(in, path, options, file);
+      file.close();
+      if (!file) throw std::runtime_error("cannot write " + out.output);
+      sweetspot::io::commit_file(temporary, out.output);
+    } catch (...) {
+      sweetspot::io::discard_file(temporary);
+      throw;
+    }
+  }
+  if (summary.failed > 0) {
+    std::cerr << "sweetspot: " << summary.failed << " of " << summary.rows << " rows failed (see their error column)\n";
+    return kExitRuntimeError;
+  }
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -194,7 +230,17 @@ int main(int argc, char** argv) {
   std::string fidelity = "auto";
   double tolerance = 1e-6;
   CLI::App* evaluate = app.add_subcommand("evaluate", "Every quantity of the paper for one design");
-  evaluate->add_option("design", design_path, "Design file (JSON)")->required();
+  std::string batch_path;
+  std::string batch_base;
+  int threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  evaluate->add_option("design", design_path, "Design file (JSON)");
+  evaluate->add_option("--batch", batch_path,
+                       "Evaluate a catalogue instead: JSON Lines (.jsonl, one design per line) or CSV "
+                       "whose header names design fields (implement.mass_g,impact.from_butt_m,...); "
+                       "output CSV (or JSON Lines with --format json), one row per input in order");
+  evaluate->add_option("--base", batch_base, "With --batch: a design file giving every row's defaults");
+  evaluate->add_option("--threads", threads, "With --batch: threads to use (default: all cores)")
+      ->check(CLI::Range(1, 1024));
   evaluate->add_option("--fidelity", fidelity,
                        "rigid: the paper's rigid body; modal: also the vibration modes (needs the "
                        "frame's stiffness); auto: modal when the stiffness is given")
@@ -264,7 +310,11 @@ int main(int argc, char** argv) {
   }
 
   try {
-    if (*evaluate) {
+    if (*evaluate && !batch_path.empty()) {
+      if (!design_path.empty()) throw CLI::ValidationError("give a design file or --batch, not both");
+      return run_batch_command(batch_path, batch_base, threads, fidelity, evaluate_out);
+    } else if (*evaluate) {
+      if (design_path.empty()) throw CLI::ValidationError("design: a design file (or --batch FILE) is required");
       const auto design = sweetspot::io::load_design(design_path);
       const bool modal = fidelity == "modal" || (fidelity == "auto" && sweetspot::has_stiffness(design.design));
       sweetspot::Evaluation result;
@@ -307,6 +357,9 @@ int main(int argc, char** argv) {
     } else if (*bench) {
       sweetspot::io::bench_optimize(bench_options, std::cout);
     }
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return kExitBadInput;
   } catch (const sweetspot::io::InputError& e) {
     std::cerr << "sweetspot: " << e.what() << "\n";
     return kExitBadInput;

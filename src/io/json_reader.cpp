@@ -1,5 +1,6 @@
 #include "sweetspot/io/json_reader.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -196,6 +197,78 @@ std::vector<std::string> spellings(std::string_view base, Dimension dimension) {
   std::vector<std::string> keys;
   for (const Unit& unit : units(dimension)) keys.push_back(std::string(base) + std::string(unit.suffix));
   return keys;
+}
+
+std::vector<std::string> alternative_spellings(std::string_view key) {
+  // Quantities that can be given in more than one form, not just another unit.
+  static const std::vector<std::vector<std::string>> kForms{
+      {"balance_from_butt_m", "balance_cm", "balance_pts_hl"},
+      {"from_tip", "from_butt"},
+      {"mass", "equivalent_mass"},  // the forearm: M_F or M_e
+      {"EI", "fundamental_free"},   // the frame's stiffness
+  };
+  std::vector<std::string> out;
+  const auto add_all_units = [&](std::string_view base) {
+    for (const Dimension d : {Dimension::kLength, Dimension::kMass, Dimension::kTime, Dimension::kSpeed,
+                              Dimension::kInertia, Dimension::kStiffness, Dimension::kFrequency}) {
+      for (const std::string& k : spellings(base, d)) {
+        if (k != key && std::find(out.begin(), out.end(), k) == out.end()) out.push_back(k);
+      }
+    }
+  };
+  for (const Dimension d : {Dimension::kLength, Dimension::kMass, Dimension::kTime, Dimension::kSpeed,
+                            Dimension::kInertia, Dimension::kStiffness, Dimension::kFrequency}) {
+    for (const Unit& unit : units(d)) {
+      if (key.size() <= unit.suffix.size() || !key.ends_with(unit.suffix)) continue;
+      const std::string base(key.substr(0, key.size() - unit.suffix.size()));
+      add_all_units(base);
+      for (const auto& form : kForms) {
+        if (std::find(form.begin(), form.end(), base) == form.end()) continue;
+        for (const std::string& other : form) add_all_units(other);
+      }
+    }
+  }
+  for (const auto& form : kForms) {
+    if (std::find(form.begin(), form.end(), std::string(key)) == form.end()) continue;
+    for (const std::string& other : form) {
+      if (other != key) out.push_back(other);
+    }
+  }
+  return out;
+}
+
+void override_field(Json& document, const std::string& pointer, Json value) {
+  const Json::json_pointer at(pointer);
+  const std::string key = at.back();
+  Json& parent = document[at.parent_pointer()];
+  if (parent.is_object()) {
+    for (const std::string& other : alternative_spellings(key)) parent.erase(other);
+  }
+  document[at] = std::move(value);
+}
+
+namespace {
+
+void override_below(Json& document, const Json& patch, const std::string& pointer) {
+  for (const auto& [key, value] : patch.items()) {
+    const std::string at = pointer + "/" + escape_pointer_token(key);
+    if (value.is_object() && !value.empty()) {
+      override_below(document, value, at);
+    } else {
+      override_field(document, at, value);
+    }
+  }
+}
+
+}  // namespace
+
+void override_fields(Json& document, const Json& patch) {
+  if (!patch.is_object()) {
+    document = patch;
+    return;
+  }
+  if (!document.is_object()) document = Json::object();
+  override_below(document, patch, "");
 }
 
 namespace {

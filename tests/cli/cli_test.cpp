@@ -285,3 +285,55 @@ TEST_CASE("modes reports the beam's fundamental and refuses a design without sti
 }
 
 }  // namespace
+
+namespace {
+
+TEST_CASE("evaluate --batch streams rows in input order, a bad row is an error row and the exit status 1") {
+  const Sandbox box;
+  const fs::path catalogue = box.file("catalogue.csv",
+                                      "name,implement.length_in,implement.mass_g,implement.balance_cm,"
+                                      "implement.swingweight_kg_cm2,impact.from_butt_m\n"
+                                      "\"A, tour\",27,305,32.5,320,0.52\n"
+                                      "B,27,300,80,320,0.5\n"
+                                      "C,27.5,265,35.5,305,0.53\n");
+  const fs::path base = box.file("base.json", R"({"implement": {"length_m": 0.7, "mass_kg": 0.3,
+      "balance_cm": 33, "swingweight_kg_cm2": 320}})");
+  for (const char* threads : {"1", "2"}) {
+    INFO("threads " << threads);
+    const Run run = box.run("evaluate --batch \"" + catalogue.string() + "\" --base \"" + base.string() +
+                            "\" --threads " + threads);
+    CHECK(run.status == 1);
+    std::istringstream rows(run.out);
+    std::string header, a, b, c;
+    std::getline(rows, header);
+    std::getline(rows, a);
+    std::getline(rows, b);
+    std::getline(rows, c);
+    CHECK(a.rfind("2,\"A, tour\",0.6858,0.305,", 0) == 0);
+    CHECK(b.rfind("3,,", 0) == 0);
+    CHECK(b.find("catalogue.csv:3: /implement/balance_cm") != std::string::npos);
+    CHECK(c.rfind("4,C,", 0) == 0);
+    CHECK(run.err.find("1 of 3 rows failed") != std::string::npos);
+  }
+}
+
+TEST_CASE("evaluate --batch reads JSON Lines merged over the base") {
+  const Sandbox box;
+  const fs::path lines = box.file("designs.jsonl", R"({"name": "light", "implement": {"mass_kg": 0.25}}
+{"name": "heavy", "implement": {"mass_kg": 0.40}}
+)");
+  const fs::path base = box.file("base.json", R"({"implement": {"length_m": 0.7, "mass_kg": 0.3,
+      "head_to_handle_mass_ratio": 0.8}})");
+  const Run run = box.run("evaluate --batch \"" + lines.string() + "\" --base \"" + base.string() +
+                          "\" --format json");
+  REQUIRE(run.status == 0);
+  std::istringstream rows(run.out);
+  std::string first, second;
+  std::getline(rows, first);
+  std::getline(rows, second);
+  // Table I rows 1 and 2: F0 = 1117 and 1341 N.
+  CHECK(nlohmann::json::parse(first)["outputs"]["peak_impact_force_N"].get<double>() == Approx(1117).margin(1));
+  CHECK(nlohmann::json::parse(second)["outputs"]["peak_impact_force_N"].get<double>() == Approx(1341).margin(1));
+}
+
+}  // namespace

@@ -123,7 +123,7 @@ TEST_CASE("Study 2: the same optimum from several seeds") {
   }
 }
 
-TEST_CASE("Studies 3: the COP cannot be put on the node; the optimizer finds the closest corner") {
+TEST_CASE("Studies 3: the COP cannot be put on the node, and the optimizer finds the closest corner") {
   for (const char* name : {"3a-cop-on-node-table1-racquet.json", "3b-cop-on-node-paper-beam.json"}) {
     INFO(name);
     const Study study = load_study(studies() + name);

@@ -39,6 +39,19 @@ enum class Dimension { kLength, kMass, kTime, kSpeed, kInertia, kForce, kStiffne
 // Every key that spells `base` in a unit of `dimension` ("mass" -> mass_kg, mass_g).
 std::vector<std::string> spellings(std::string_view base, Dimension dimension);
 
+// The other keys that give the same quantity as `key` in another unit or form
+// ("mass_g" -> mass_kg; "balance_cm" -> balance_from_butt_m, balance_pts_hl;
+// "from_tip_m" -> from_butt_m, ...). Empty for a key of no known quantity.
+std::vector<std::string> alternative_spellings(std::string_view key);
+
+// Sets document[pointer] = value, first removing the alternative spellings of
+// the same quantity beside it, so that an override never contradicts a default.
+void override_field(Json& document, const std::string& pointer, Json value);
+
+// override_field() for every leaf of `patch` (objects are descended, anything
+// else replaces): a design row laid over a base design.
+void override_fields(Json& document, const Json& patch);
+
 // Where each value was found: canonical SI name ("hand/mass_kg") -> the JSON
 // pointer the user wrote ("/hand/mass_g"), so errors found later by the
 // physics core point at the user's own key.
