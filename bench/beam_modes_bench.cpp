@@ -75,7 +75,24 @@ void BM_HandHeld(benchmark::State& state) {
   }
   state.counters["elements"] = elements;
 }
-BENCHMARK(BM_HandHeld)->Arg(4)->Arg(6)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_HandHeld)->Arg(4)->Arg(6)->Arg(8)->Unit(benchmark::kMicrosecond);
+
+// The O(n^3) reference the refined solver replaces.
+void BM_HandHeldDenseStateSpace(benchmark::State& state) {
+  ModeOptions o;
+  o.modes = 3;
+  o.method = ModeOptions::Method::kFiniteElement;
+  o.damped_solver = ModeOptions::DampedSolver::kDenseStateSpace;
+  o.rel_tol = std::pow(10.0, -static_cast<double>(state.range(0)));
+  int elements = 0;
+  for (auto _ : state) {
+    auto r = sweetspot::hand_held_modes(kRacquet, kTape, sweetspot::calibrated_hand(), o);
+    elements = r.elements_used;
+    benchmark::DoNotOptimize(r.modes[0].frequency_Hz);
+  }
+  state.counters["elements"] = elements;
+}
+BENCHMARK(BM_HandHeldDenseStateSpace)->Arg(4)->Arg(6)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 

@@ -7,8 +7,6 @@
 #include <stdexcept>
 #include <string>
 #include <utility>
-#include <cstdio>
-#include <cstdlib>
 
 #include <Eigen/Cholesky>
 #include <Eigen/Dense>
@@ -471,7 +469,11 @@ struct Element {
   }
 
   // Integral of xi^n over the element.
-  double moment(int n) const { return std::pow(h, n + 1) / (n + 1); }
+  double moment(int n) const {
+    double power = h;
+    for (int i = 0; i < n; ++i) power *= h;
+    return power / (n + 1);
+  }
 
   Matrix4d stiffness() const {
     // Bending EI theta'^2 with theta' = 2 a2 + 6 a3 xi, plus shear
@@ -679,6 +681,16 @@ std::pair<VectorXd, MatrixXd> free_spectrum(const Mesh& mesh) {
   return {omega2, vectors};
 }
 
+// The lowest flexible omega^2 (eigenvalues only, as free_spectrum).
+double lowest_free_omega2(const Mesh& mesh) {
+  const Assembled a = assemble(mesh, nullptr);
+  const MatrixXd Q = flexible_basis(mesh, a, nullptr);
+  const MatrixXd Kr = Q.transpose() * a.K * Q;
+  const MatrixXd Mr = Q.transpose() * a.M * Q;
+  const Eigen::GeneralizedSelfAdjointEigenSolver<MatrixXd> es(Mr, Kr, Eigen::EigenvaluesOnly);
+  return 1.0 / es.eigenvalues().maxCoeff();
+}
+
 // Elements per segment: explicit total, or sized so the f1 error is about
 // rel_tol from the h^4 convergence of the cubic element, (beta h)^4 / 1440,
 // with beta from a coarse first estimate of f1.
@@ -689,7 +701,7 @@ std::vector<int> element_counts(const Segmentation& seg, const ModeOptions& opti
   ModeOptions coarse = options;
   const std::vector<int> coarse_counts = counts_for(seg, 2.0 * 4.73 / weight);
   const Mesh mesh = build_mesh(seg, coarse_counts, coarse);
-  const double omega1 = std::sqrt(std::max(free_spectrum(mesh).first(0), 0.0));
+  const double omega1 = std::sqrt(std::max(lowest_free_omega2(mesh), 0.0));
   const double beta_h =
       std::pow(kHermiteErrorConstant * kToleranceSafety * options.rel_tol, 0.25);
   std::vector<int> counts = counts_for(seg, std::sqrt(omega1) / beta_h);
@@ -764,18 +776,20 @@ using Complex = std::complex<double>;
 using Eigen::VectorXcd;
 
 // Elements per requested mode for the coarse mesh that locates the hand-held
-// modes: beta h <= 1.5 at the highest requested bending mode, (1.5)^4 / 1440 =
-// 0.4 % in frequency, far inside the gaps between modes.
-constexpr double kCoarseBetaH = 1.5;
+// modes: beta h <= 2 at the highest requested bending mode, 2^4 / 1440 =
+// 1 % in frequency, far inside the gaps between modes.
+constexpr double kCoarseBetaH = 2.0;
+// The coarse damped problem is solved in the basis of this many undamped
+// modes more than requested.
+constexpr int kExtraBasisModes = 4;
 // Rayleigh-functional iteration: at most this many steps per mode ...
 constexpr int kMaxRefineSteps = 12;
-// ... and a mode is accepted when the relative residual of
-// (s^2 M + s C + K) q = 0 is below this (round-off is ~1e-14 here).
-constexpr double kRefineResidualTol = 1e-9;
-// It stops at round-off: a residual below kRefineResidualDone, or s moving
-// less than kRefineStall relative from one step to the next.
-constexpr double kRefineResidualDone = 1e-11;
-constexpr double kRefineStall = 1e-13;
+// ... and a mode is accepted when its backward error (relative to the norms
+// of K, C and M) is below kRefineAccept. It stops at round-off: a backward
+// error below kRefineDone or one that no longer falls by kRefineStall.
+constexpr double kRefineAccept = 1e-11;
+constexpr double kRefineDone = 1e-14;
+constexpr double kRefineStall = 0.1;
 // A refined mode must lie nearer its coarse estimate than this fraction of
 // the distance to the nearest other coarse mode, or the match is ambiguous.
 constexpr double kMatchFraction = 0.25;
@@ -840,18 +854,65 @@ DampedSpectrum dense_damped_spectrum(const Mesh& mesh, const Assembled& a, const
   return out;
 }
 
+// The lowest `wanted` oscillatory modes in the basis of the lowest `basis`
+// undamped flexible modes (grip springs included): a 2 basis x 2 basis state
+// matrix. Estimates only (modal truncation), refined on the full mesh.
+DampedSpectrum modal_damped_spectrum(const Mesh& mesh, const Assembled& a, const HandCoupling& hand,
+                                     int wanted, int basis) {
+  const MatrixXd Q = flexible_basis(mesh, a, &hand);
+  const MatrixXd Kr = Q.transpose() * a.K * Q;
+  const MatrixXd Mr = Q.transpose() * a.M * Q;
+  // Inverted pencil as in free_spectrum: the low modes keep relative accuracy.
+  const Eigen::GeneralizedSelfAdjointEigenSolver<MatrixXd> es(Mr, Kr);
+  const int n = static_cast<int>(Kr.rows());
+  const int r = std::min(basis, n);
+  MatrixXd phi(n, r);
+  VectorXd omega2(r);
+  for (int k = 0; k < r; ++k) {
+    const int j = n - 1 - k;
+    omega2(k) = 1.0 / es.eigenvalues()(j);
+    const VectorXd b = es.eigenvectors().col(j);
+    phi.col(k) = b / std::sqrt(b.dot(Mr * b));
+  }
+  const MatrixXd QPhi = Q * phi;
+  const MatrixXd Cm = QPhi.transpose() * a.C * QPhi;
+  const double sigma = std::sqrt(std::max(omega2(r - 1), 1e-300));
+  MatrixXd A = MatrixXd::Zero(2 * r, 2 * r);
+  A.topRightCorner(r, r) = sigma * MatrixXd::Identity(r, r);
+  A.bottomLeftCorner(r, r).diagonal() = -omega2 / sigma;
+  A.bottomRightCorner(r, r) = -Cm;
+  const Eigen::EigenSolver<MatrixXd> ses(A, true);
+  DampedSpectrum out;
+  std::vector<int> order;
+  for (int j = 0; j < 2 * r; ++j) {
+    const Complex s = ses.eigenvalues()(j);
+    if (s.imag() > 1e-9 * std::abs(s)) order.push_back(j);
+    if (std::abs(s.imag()) <= 1e-9 * std::abs(s)) ++out.overdamped;
+  }
+  std::sort(order.begin(), order.end(), [&](int i, int j) {
+    return ses.eigenvalues()(i).imag() < ses.eigenvalues()(j).imag();
+  });
+  for (int j : order) {
+    if (static_cast<int>(out.pairs.size()) == wanted) break;
+    const VectorXcd y = ses.eigenvectors().col(j).head(r);
+    out.pairs.push_back({ses.eigenvalues()(j), QPhi.cast<Complex>() * y});
+  }
+  return out;
+}
+
 // The reported mode of a damped eigenpair: the complex shape turned to be as
 // real as possible, its real part mass-normalised.
 Mode damped_mode(const Mesh& mesh, const Assembled& a, Complex s, VectorXcd q) {
-  // Turn the shape to be as real as possible: maximise |Re(e^{i a} w)|.
-  Complex sum_sq = 0.0;
-  for (int i = 0; i < a.beam_dofs; i += 2) sum_sq += q(i) * q(i);
+  // Turn the shape to be as real as possible: maximise the beam's kinetic
+  // energy norm of Re(e^{i a} q), i.e. make q_b^T M_b q_b real and positive.
+  // Mass-weighted rather than a sum over nodes, so the angle (and the nodes
+  // of the turned shape) converge with the mesh at the element's rate.
+  const int nb = a.beam_dofs;
+  const auto Mb = a.M.topLeftCorner(nb, nb);
+  const Complex sum_sq = (q.head(nb).transpose() * (Mb.cast<Complex>() * q.head(nb)))(0);
   q *= std::exp(Complex(0, -0.5 * std::arg(sum_sq)));
-  double re2 = 0.0, im2 = 0.0;
-  for (int i = 0; i < a.beam_dofs; i += 2) {
-    re2 += q(i).real() * q(i).real();
-    im2 += q(i).imag() * q(i).imag();
-  }
+  const VectorXd q_re = q.head(nb).real(), q_im = q.head(nb).imag();
+  const double re2 = q_re.dot(Mb * q_re), im2 = q_im.dot(Mb * q_im);
   VectorXd re = q.real();
   re /= std::sqrt(re.dot(a.M * re));
   auto [mode, scale] = fe_mode(mesh, re, std::abs(s));
@@ -887,6 +948,20 @@ class QuadraticPencil {
       border_[m] = src[m]->block(0, n_, n_, 2);
       corner_[m] = src[m]->block(n_, n_, 2, 2);
     }
+  }
+
+  // Infinity norm of K (m = 0), C (1) or M (2).
+  double norm(int m) const {
+    VectorXd rows = VectorXd::Zero(n_ + 2);
+    for (int j = 0; j < n_; ++j) {
+      for (int i = std::max(0, j - kBand); i <= std::min(n_ - 1, j + kBand); ++i) {
+        rows(i) += std::abs(band_[m][j * (2 * kBand + 1) + (i - j + kBand)]);
+      }
+    }
+    rows.head(n_) += border_[m].cwiseAbs().rowwise().sum();
+    rows.tail(2) += border_[m].cwiseAbs().colwise().sum().transpose() +
+                    corner_[m].cwiseAbs().rowwise().sum();
+    return rows.maxCoeff();
   }
 
   // (c0 K + c1 C + c2 M) q.
@@ -1006,12 +1081,12 @@ class QuadraticPencil {
 // Rayleigh-functional iteration: s <- the root of q^T T(s) q = 0 nearest s,
 // q <- T(s)^-1 T'(s) q. T is complex symmetric, so q is its own left
 // eigenvector and the iteration converges cubically. Empty if it does not
-// reach kRefineResidualTol.
+// reach kRefineAccept.
 std::optional<DampedPair> refine_damped_pair(QuadraticPencil& t, Complex s, VectorXcd q) {
   auto form = [](const VectorXcd& u, const VectorXcd& v) { return (u.transpose() * v)(0); };
+  const double norm_K = t.norm(0), norm_C = t.norm(1), norm_M = t.norm(2);
   q /= q.norm();
-  double residual = 1.0;
-  Complex previous = s;
+  double error = std::numeric_limits<double>::infinity();
   for (int step = 0; step <= kMaxRefineSteps; ++step) {
     const VectorXcd Kq = t.apply(1.0, 0.0, 0.0, q);
     const VectorXcd Cq = t.apply(0.0, 1.0, 0.0, q);
@@ -1019,20 +1094,21 @@ std::optional<DampedPair> refine_damped_pair(QuadraticPencil& t, Complex s, Vect
     const Complex a2 = form(q, Mq), a1 = form(q, Cq), a0 = form(q, Kq);
     const Complex root = std::sqrt(a1 * a1 - 4.0 * a2 * a0);
     const Complex s1 = (-a1 + root) / (2.0 * a2), s2 = (-a1 - root) / (2.0 * a2);
-    s = std::abs(s1 - s) <= std::abs(s2 - s) ? s1 : s2;
-    const double scale = Kq.norm() + std::abs(s) * Cq.norm() + std::norm(s) * Mq.norm();
-    residual = (Kq + s * Cq + s * s * Mq).norm() / scale;
-    if (std::getenv("SS_DEBUG")) fprintf(stderr, "step %d s %.15g %.15g res %g\n", step, s.real(), s.imag(), residual);
-    const bool stalled = step > 0 && std::abs(s - previous) <= kRefineStall * std::abs(s);
-    if (residual < kRefineResidualDone || stalled || step == kMaxRefineSteps) break;
-    previous = s;
+    const Complex next = std::abs(s1 - s) <= std::abs(s2 - s) ? s1 : s2;
+    // Backward error of (s, q): the relative change of K, C, M that makes it exact.
+    const double next_error = (Kq + next * Cq + next * next * Mq).norm() /
+                              (norm_K + std::abs(next) * norm_C + std::norm(next) * norm_M);
+    const bool stalled = step > 0 && !(next_error < kRefineStall * error);
+    if (!stalled) s = next;
+    error = std::min(error, next_error);
+    if (error < kRefineDone || stalled || step == kMaxRefineSteps) break;
     if (!t.factorize(s)) break;  // s is an eigenvalue to working precision
     const VectorXcd x = t.solve(2.0 * s * Mq + Cq);
     const double norm = x.norm();
     if (!(norm > 0.0) || !std::isfinite(norm)) return std::nullopt;
     q = x / norm;
   }
-  if (!(residual < kRefineResidualTol)) return std::nullopt;
+  if (!(error < kRefineAccept)) return std::nullopt;
   return DampedPair{s, std::move(q)};
 }
 
@@ -1074,7 +1150,8 @@ std::optional<DampedSpectrum> refined_damped_spectrum(const Segmentation& seg, c
   const Mesh coarse = build_mesh(seg, coarse_counts, options);
   const Assembled ca = assemble(coarse, &hand);
   // One more than wanted, to check the last wanted one is matched unambiguously.
-  const DampedSpectrum guess = dense_damped_spectrum(coarse, ca, hand, options.modes + 1);
+  const DampedSpectrum guess =
+      modal_damped_spectrum(coarse, ca, hand, options.modes + 1, options.modes + kExtraBasisModes);
   if (static_cast<int>(guess.pairs.size()) <= options.modes) {
     *why = "coarse mesh has too few oscillatory modes";
     return std::nullopt;

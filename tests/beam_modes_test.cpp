@@ -29,6 +29,10 @@ constexpr double kSubMicrometre_m = 1e-7;
 // The state-space (nonsymmetric) eigensolver against the symmetric one on the
 // same matrices: round-off grows with omega_max / omega_1 of the mesh.
 constexpr double kStateSpaceRoundOff = 1e-9;
+// ... and ~3e-9 on the strongly damped (zeta 0.65) 25 Hz hand mode, where
+// omega_max / omega is larger still. The refined solver's backward error is
+// below 1e-14, so differences at this level are the dense solve's.
+constexpr double kStateSpaceRoundOffHandMode = 1e-8;
 
 // Cross (2004) Sec. II: 72 cm x 40 mm x 19 mm wood beam of 328 g, free f1 = 193 Hz
 // with nodes 15.8 cm from each end; modes at 506 and 962 Hz (Sec. III).
@@ -397,6 +401,54 @@ TEST_CASE("Damping ratios and damped frequencies are consistent") {
     CHECK(m.hand_energy_fraction >= 0.0);
     CHECK(m.hand_energy_fraction <= 1.0 + 1e-12);
   }
+}
+
+TEST_CASE("The refined hand-held solver gives the dense state-space modes to round-off") {
+  // Two-section racquet of the optimizer's study: 0.70 m, 0.25 kg, head/handle
+  // mass 0.8, uniform EI for a free f1 of 150 Hz, 6 g at 0.68 m.
+  std::vector<Section> beam{{0.35, 0.25 / 1.8, 1.0}, {0.35, 0.25 - 0.25 / 1.8, 1.0}};
+  const std::vector<PointMass> tape{{0.68, 0.006}};
+  const double EI = uniform_EI_for_fundamental(beam, tape, 150.0);
+  for (Section& s : beam) s.EI_N_m2 = EI;
+  for (double grip_start : {0.0, 0.02, 0.06}) {
+    HandCoupling hand = calibrated_hand();
+    hand.grip_start_m = grip_start;
+    for (double tol : {1e-4, 1e-6}) {
+      ModeOptions o = fe(4, tol);
+      const ModalResult refined = hand_held_modes(beam, tape, hand, o);
+      o.damped_solver = ModeOptions::DampedSolver::kDenseStateSpace;
+      const ModalResult dense = hand_held_modes(beam, tape, hand, o);
+      INFO("grip start " << grip_start << " m, rel_tol " << tol << ": " << refined.message);
+      CHECK_THAT(refined.message, Catch::Contains("refined"));
+      REQUIRE(refined.elements_used == dense.elements_used);
+      REQUIRE(refined.modes.size() == dense.modes.size());
+      for (std::size_t k = 0; k < dense.modes.size(); ++k) {
+        const Mode& r = refined.modes[k];
+        const Mode& d = dense.modes[k];
+        const double tol =
+            d.hand_energy_fraction > 0.5 ? kStateSpaceRoundOffHandMode : kStateSpaceRoundOff;
+        CHECK(r.frequency_Hz == Approx(d.frequency_Hz).epsilon(tol));
+        CHECK(r.damping_ratio == Approx(d.damping_ratio).margin(tol));
+        CHECK(r.hand_energy_fraction == Approx(d.hand_energy_fraction).margin(1e-8));
+        CHECK(r.complexity == Approx(d.complexity).margin(1e-7));
+        REQUIRE(r.nodes_from_butt_m.size() == d.nodes_from_butt_m.size());
+        for (std::size_t j = 0; j < d.nodes_from_butt_m.size(); ++j) {
+          CHECK(r.nodes_from_butt_m[j] == Approx(d.nodes_from_butt_m[j]).margin(kSubMicrometre_m));
+        }
+        for (double x : {0.0, 0.1, 0.35, 0.7}) {
+          CHECK(mode_shape_at(r, x) == Approx(mode_shape_at(d, x)).margin(1e-7));
+        }
+      }
+    }
+  }
+}
+
+TEST_CASE("A mesh no finer than the coarse one is solved densely and says so") {
+  ModeOptions o = fe(3);
+  o.elements = 4;
+  const ModalResult r = hand_held_modes(paper_beam(), {}, calibrated_hand(), o);
+  CHECK_THAT(r.message, Catch::Contains("dense state-space") && Catch::Contains("skipped"));
+  CHECK(r.modes.size() == 3);
 }
 
 // ------------------------------------------------------------ bad input

@@ -98,11 +98,13 @@ struct Mode {
   // Interior zeros of w(x), butt to tip [m], located on the analytic shape.
   std::vector<double> nodes_from_butt_m;
   // w(x) butt to tip, normalised to max |w| = 1 (sampled) with w(L) > 0.
-  // For the hand-held beam: the complex shape turned to be as real as possible.
+  // For the hand-held beam: the complex shape turned to be as real as possible
+  // (q_b^T M_b q_b real and positive over the beam's DOFs).
   std::vector<ShapePiece> shape;
   // Hand-held only: hand translation in the same normalisation.
   double hand_displacement = 0.0;  // [same units as w]
-  // Hand-held only: |Im| / |Re| of the turned complex shape (0 = real mode).
+  // Hand-held only: |Im| / |Re| of the turned complex shape in the beam's
+  // mass norm (0 = real mode).
   double complexity = 0.0;
   // Hand-held only: share of the mode's kinetic energy in the hand, in [0, 1]
   // (near 1 for the hand rocking on the grip, small for bending modes).

@@ -287,8 +287,8 @@ int main(int argc, char** argv) {
   std::string bench_what = "all";
   CLI::App* bench = app.add_subcommand(
       "bench", "Speed against error on this machine (median of repeated runs) into reports/");
-  bench->add_option("what", bench_what, "optimize, or all")
-      ->check(CLI::IsMember({"optimize", "all"}))
+  bench->add_option("what", bench_what, "optimize, modes, or all")
+      ->check(CLI::IsMember({"optimize", "modes", "all"}))
       ->capture_default_str();
   bench->add_option("--designs", bench_options.designs_dir, "Folder holding studies/")->capture_default_str();
   bench->add_option("--out", bench_options.out_dir, "Folder to write")->capture_default_str();
@@ -355,7 +355,8 @@ int main(int argc, char** argv) {
     } else if (*modes_cmd.command) {
       return modes_cmd.run();
     } else if (*bench) {
-      sweetspot::io::bench_optimize(bench_options, std::cout);
+      if (bench_what != "modes") sweetspot::io::bench_optimize(bench_options, std::cout);
+      if (bench_what != "optimize") sweetspot::io::bench_modes(bench_options, std::cout);
     }
   } catch (const CLI::ParseError& e) {
     app.exit(e);

@@ -6,6 +6,8 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <sstream>
 #include <limits>
 #include <optional>
 #include <thread>
@@ -16,6 +18,7 @@
 #include "sweetspot/evaluate.hpp"
 #include "sweetspot/io/atomic_file.hpp"
 #include "sweetspot/io/format.hpp"
+#include "sweetspot/io/plot.hpp"
 #include "sweetspot/io/study.hpp"
 
 namespace sweetspot::io {
@@ -154,6 +157,70 @@ void bench_optimize(const BenchOptions& options, std::ostream& log) {
   write_file_atomically(options.out_dir + "/speed-vs-error.csv", csv);
   log << fmt::format("rigid: {:.1f} ns per evaluation\nwrote {}/speed-vs-error.md and .csv\n", rigid_ns,
                      options.out_dir);
+}
+
+void bench_modes(const BenchOptions& options, std::ostream& log) {
+  constexpr double kBudgetPerRow_ms = 150.0;
+  const std::string csv = speed_vs_error_modes_csv(kBudgetPerRow_ms);
+  std::istringstream lines(csv);
+  std::string line;
+  std::getline(lines, line);  // header
+  std::string table =
+      "| method | resolution | elements | time per solve (us) | f1 relative error | node error (m) | "
+      "observed order | reference |\n|---|---|---:|---:|---:|---:|---:|---|\n";
+  std::map<std::string, PlotSeries> series;
+  std::vector<std::string> order;
+  while (std::getline(lines, line)) {
+    std::vector<std::string> f;
+    std::stringstream cells(line);
+    std::string cell;
+    while (std::getline(cells, cell, ',')) f.push_back(cell);
+    f.resize(10);
+    table += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} |\n", f[0], f[1], f[2], f[3], f[5], f[7],
+                         f[8], f[9]);
+    if (!series.count(f[0])) {
+      order.push_back(f[0]);
+      series[f[0]] = PlotSeries{f[0], {}, {}, "linespoints lw 2 pt 7"};
+    }
+    series[f[0]].x.push_back(std::stod(f[3]));
+    series[f[0]].y.push_back(std::stod(f[5]));
+  }
+  Plot plot{"Speed against error of the modal solvers (f1 of the study racquet)",
+            "wall time per solve (us, one core)", "relative error of f1", std::nullopt, std::nullopt,
+            {}, {}, {}};
+  plot.log_x = plot.log_y = true;
+  plot.key_position = "outside right";
+  for (const std::string& name : order) {
+    if (name != "exact") plot.series.push_back(series[name]);
+  }
+  const std::string md =
+      "# Speed against error: vibration modes\n\nMeasured by `sweetspot bench modes` on " +
+      machine_description() +
+      ". Each time is the median of repeated calls on one core. The test racquet is the optimizer's: "
+      "two sections of 0.35 m (head/handle mass 0.8, 0.25 kg), one EI giving a free Euler-Bernoulli "
+      "fundamental of 150 Hz, 6 g of lead at 0.68 m; held with the calibrated hand.\n\n" +
+      table +
+      "\nReading it:\n\n"
+      "- **Free, Euler-Bernoulli:** the exact transfer-matrix solver gives f1 and the node to round-off "
+      "in a few microseconds (target: f1 to 1e-6 and the node to 0.1 mm in at most 10 us). Finite "
+      "elements converge at order 4 (Hermite cubics) until round-off in the assembled stiffness stops "
+      "them near 1e-9 (about 128 elements); past that the error grows again, which is why `rel_tol` has "
+      "a floor of 1e-8 and the solver never refines further than it needs.\n"
+      "- **Hand-held:** the damped problem is solved on a coarse undamped basis, then each wanted mode "
+      "is refined on the full mesh with a banded complex LU (`refined`); `dense` is the full complex "
+      "state-space eigen-solve it replaced, kept as the reference and the fallback. They agree to "
+      "round-off.\n"
+      "- **Timoshenko:** converges more slowly (about order 2 in these rows); use it where shear "
+      "matters (the paper's wood beam), not in an optimizer's loop.\n"
+      "- `order` is log2 of the error ratio between consecutive meshes (mesh doubled).\n";
+  fs::create_directories(options.out_dir);
+  write_file_atomically(options.out_dir + "/speed-vs-error-modes.csv", csv);
+  write_file_atomically(options.out_dir + "/speed-vs-error-modes.md", md);
+  std::string why;
+  if (!render_png(plot, options.out_dir + "/speed-vs-error-modes.png", &why)) {
+    log << "skipped the plot: " << why << "\n";
+  }
+  log << "wrote " << options.out_dir << "/speed-vs-error-modes.md, .csv and .png\n";
 }
 
 }  // namespace sweetspot::io

@@ -90,7 +90,7 @@ std::string modes_report(const ModesData& data, Format format) {
   }
   if (!data.held.modes.empty()) {
     md += fmt::format(
-        "\n## Held in the hand (finite elements, {} elements; damped, state-space complex modes)\n\n"
+        "\n## Held in the hand (finite elements, {} elements; damped complex modes)\n\n"
         "| mode | frequency (Hz) | damping ratio | hand's share of the energy | nodes from the tip (m) |\n"
         "|---:|---:|---:|---:|---|\n",
         data.held.elements_used);

@@ -34,6 +34,8 @@ std::string gnuplot_script(const Plot& plot, const std::string& png_path) {
   s += "set xlabel " + quoted(plot.x_label) + "\n";
   s += "set ylabel " + quoted(plot.y_label) + "\n";
   s += "set grid\nset key " + plot.key_position + " box opaque\n";
+  if (plot.log_x) s += "set logscale x\nset format x '10^{%L}'\n";
+  if (plot.log_y) s += "set logscale y\nset format y '10^{%L}'\n";
   if (plot.x_range) s += fmt::format("set xrange [{}:{}]\n", plot.x_range->first, plot.x_range->second);
   if (plot.y_range) s += fmt::format("set yrange [{}:{}]\n", plot.y_range->first, plot.y_range->second);
   int tag = 1;
@@ -55,7 +57,8 @@ std::string gnuplot_script(const Plot& plot, const std::string& png_path) {
     bool broken = true;
     for (std::size_t k = 0; k < series.x.size(); ++k) {
       const auto& y = series.y[k];
-      if (!y || !on_plot(plot, *y)) {
+      const bool off_log = (plot.log_y && y && *y <= 0) || (plot.log_x && series.x[k] <= 0);
+      if (!y || !on_plot(plot, *y) || off_log) {
         if (!broken) s += "\n";
         broken = true;
         continue;

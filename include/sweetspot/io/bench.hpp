@@ -25,4 +25,14 @@ std::string machine_description();
 // Writes speed-vs-error.md and speed-vs-error.csv into out_dir; logs a summary.
 void bench_optimize(const BenchOptions& options, std::ostream& log);
 
+// Speed against error of every modal solver on the optimizer's study racquet
+// (two sections, f1 = 150 Hz, 6 g of tape at 0.68 m; hand-held with the
+// calibrated hand), as CSV: method, resolution, elements, median_us, f1_Hz,
+// f1_rel_error, node_m, node_abs_error_m, order, reference. About
+// `budget_ms` of timing per row.
+std::string speed_vs_error_modes_csv(double budget_ms);
+
+// Writes speed-vs-error-modes.md, .csv and .png into out_dir; logs a summary.
+void bench_modes(const BenchOptions& options, std::ostream& log);
+
 }  // namespace sweetspot::io

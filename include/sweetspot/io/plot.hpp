@@ -32,7 +32,9 @@ struct Plot {
   std::vector<PlotSeries> series;
   std::vector<PlotMarker> markers;
   std::vector<std::pair<double, std::string>> vertical_lines;  // x and label
-  std::string key_position = "top right";  // gnuplot's words: "bottom left", "outside right", ...
+  std::string key_position = "top right";
+  bool log_x = false;
+  bool log_y = false;  // gnuplot's words: "bottom left", "outside right", ...
 };
 
 // The gnuplot script that draws `plot` into `png_path`.
