@@ -23,6 +23,12 @@ void validate(const Design& d) {
   detail::require_positive("hand/grip_length_m", d.hand.grip_length_m, "m");
   detail::require_at_least("hand/grip_stiffness_N_m2", d.hand.grip_stiffness_N_m2, 0.0, "N/m^2");
   detail::require_at_least("hand/grip_damping_N_s_m2", d.hand.grip_damping_N_s_m2, 0.0, "N s/m^2");
+  if (d.cor_rigid) detail::require_in_range("frame/cor_rigid", *d.cor_rigid, 0.0, 1.0, "");
+  if (d.strings) {
+    if (const std::string why = d.strings->validate(); !why.empty()) {
+      throw std::invalid_argument("strings/" + why);
+    }
+  }
   const FrameStiffness& k = d.stiffness;
   if (k.EI_N_m2) detail::require_positive("frame/EI_N_m2", *k.EI_N_m2, "N m^2");
   if (k.fundamental_free_Hz) detail::require_positive("frame/fundamental_free_Hz", *k.fundamental_free_Hz, "Hz");

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "sweetspot/impact_response.hpp"
 #include "sweetspot/rigid_impact.hpp"
 
 namespace sweetspot {
@@ -22,9 +23,51 @@ Evaluation evaluate(const Design& design) {
   return e;
 }
 
+Fidelity needed_fidelity(const Design& design) {
+  if (design.cor_rigid) return Fidelity::kResponse;
+  return has_stiffness(design) ? Fidelity::kModal : Fidelity::kRigid;
+}
+
 Evaluation evaluate(const Design& design, Fidelity fidelity, double rel_tol) {
-  Evaluation e = evaluate(design);
-  if (fidelity == Fidelity::kModal) e.modal = evaluate_modes(design, rel_tol);
+  if (design.cor_rigid && fidelity != Fidelity::kResponse) {
+    throw std::invalid_argument(
+        "frame/cor_rigid: a COR derived from the frame's vibration needs the response model "
+        "(fidelity response or auto)");
+  }
+  Design resolved = design;
+  validate(resolved);
+  bool duration_derived = false;
+  if (design.strings) {
+    // The duration depends on M_eff only (Eq. 17), not on the COR.
+    const MassProperties& body = design.implement.mass_properties();
+    resolved.impact_duration_s =
+        tension_impact_duration(*design.strings, design.ball.mass_kg,
+                                effective_mass(body, design.impact_from_butt_m))
+            .duration_s;
+    duration_derived = true;
+  }
+  std::optional<DerivedCor> derived;
+  std::optional<double> vibration_energy;
+  if (fidelity == Fidelity::kResponse) {
+    const ResponseModel model = response_model(resolved, ResponseOptions{});
+    // With a given COR, the vibration energy follows from the impulse.
+    derived = derive_cor(model, resolved.impact_from_butt_m, design.cor_rigid.value_or(resolved.cor),
+                         resolved.ball, resolved.impact_duration_s);
+    if (design.cor_rigid) {
+      resolved.cor = derived->cor;
+    } else {
+      const double J = evaluate_unchecked(resolved).impulse_N_s;
+      vibration_energy = 0.5 * J * J * derived->vibration_compliance_per_kg;
+    }
+  }
+  Evaluation e = evaluate(resolved);
+  e.impact_duration_derived = duration_derived;
+  if (fidelity != Fidelity::kRigid) e.modal = evaluate_modes(resolved, rel_tol);
+  if (derived) {
+    e.cor_derived = design.cor_rigid.has_value();
+    e.vibration_energy_J = design.cor_rigid ? derived->vibration_energy_J : *vibration_energy;
+    e.vibration_share = *e.vibration_energy_J / derived->collision_energy_J;
+  }
   return e;
 }
 
@@ -32,6 +75,8 @@ Evaluation evaluate_unchecked(const Design& d) {
   const MassProperties& body = d.implement.mass_properties();
   const double x = d.impact_from_butt_m;
   Evaluation e;
+  e.cor = d.cor;
+  e.impact_duration_s = d.impact_duration_s;
   e.length_m = d.implement.length_m();
   e.mass_kg = body.mass_kg;
   e.balance_from_butt_m = body.com_from_butt_m;

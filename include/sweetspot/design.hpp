@@ -7,6 +7,7 @@
 
 #include "sweetspot/beam_modes.hpp"
 #include "sweetspot/implement.hpp"
+#include "sweetspot/string_bed.hpp"
 
 namespace sweetspot {
 
@@ -56,6 +57,11 @@ struct Design {
   Ball ball{};
   double impact_from_butt_m = 0.65;          // [m], in [0, L]
   FrameStiffness stiffness{};                // for the modes only
+  // When given, the COR is derived (impact response): the COR the ball and
+  // strings would have on a rigid frame, in [0, 1].
+  std::optional<double> cor_rigid{};
+  // When given, the impact duration is derived from the string tension.
+  std::optional<StringBed> strings{};
 };
 
 // Throws std::invalid_argument if any value is out of range. The message

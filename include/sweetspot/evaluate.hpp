@@ -39,20 +39,39 @@ struct Evaluation {
   double wrist_force_ratio = 0.0;     // F_w / F, Eq. (11)
   double peak_wrist_force_N = 0.0;    // |F_w / F| F0
 
-  // The flexible frame, when evaluated with Fidelity::kModal.
+  // The flexible frame, when evaluated with Fidelity::kModal or kResponse.
   std::optional<ModalOutputs> modal;
+
+  // What the evaluation used: given, or derived (the COR from cor_rigid and the
+  // frame's vibration, the duration from the string tension).
+  double cor = 0.0;
+  bool cor_derived = false;
+  double impact_duration_s = 0.0;
+  bool impact_duration_derived = false;
+  // Energy the frame keeps as vibration after the impact (free implement),
+  // Fidelity::kResponse only [J], and its share of the ball's kinetic energy.
+  std::optional<double> vibration_energy_J;
+  std::optional<double> vibration_share;
 };
 
-// How much model an evaluation uses: the rigid body of the paper alone, or
-// also the vibration modes of the flexible frame (which need its stiffness).
-enum class Fidelity { kRigid, kModal };
+// How much model an evaluation uses: the rigid body of the paper alone; also
+// the vibration modes of the flexible frame (which need its stiffness); or
+// also the frame's response to the ball (vibration energy, a derived COR).
+enum class Fidelity { kRigid, kModal, kResponse };
+
+// The cheapest fidelity that answers everything the design asks: kResponse
+// when the COR is to be derived, kModal when the stiffness is given, else kRigid.
+Fidelity needed_fidelity(const Design& design);
 
 // Evaluates every quantity for a valid design (validate() first: evaluate()
 // calls it and throws std::invalid_argument the same way).
 Evaluation evaluate(const Design& design);
 
-// The same with the modes too when `fidelity` is kModal, the hand-held ones
-// to `rel_tol` (the frequency's relative error).
+// The same with the modes too when `fidelity` is kModal or kResponse (the
+// hand-held ones to `rel_tol`, the frequency's relative error) and the impact
+// response with kResponse. A design whose COR is to be derived (cor_rigid)
+// needs kResponse: anything less throws std::invalid_argument naming
+// "frame/cor_rigid".
 Evaluation evaluate(const Design& design, Fidelity fidelity, double rel_tol = 1e-6);
 
 // The same without validation, for callers that validated once and evaluate

@@ -22,6 +22,7 @@
 #include "sweetspot/io/paper_reports.hpp"
 #include "sweetspot/io/modes_report.hpp"
 #include "sweetspot/io/reports.hpp"
+#include "sweetspot/io/response_report.hpp"
 #include "sweetspot/io/study.hpp"
 
 namespace {
@@ -51,6 +52,13 @@ struct OutputOptions {
     }
   }
 };
+
+sweetspot::Fidelity fidelity_of(const std::string& name, const sweetspot::Design& design) {
+  if (name == "rigid") return sweetspot::Fidelity::kRigid;
+  if (name == "modal") return sweetspot::Fidelity::kModal;
+  if (name == "response") return sweetspot::Fidelity::kResponse;
+  return sweetspot::needed_fidelity(design);
+}
 
 // Renders a plot, or says on stderr why it could not.
 int render_or_warn(const sweetspot::io::Plot& plot, const std::string& png) {
@@ -116,6 +124,57 @@ struct ModesCommand {
         method == "fe" ? sweetspot::ModeOptions::Method::kFiniteElement : sweetspot::ModeOptions::Method::kExact);
     out.emit(sweetspot::io::modes_report(data, out.parsed()));
     return plot.empty() ? 0 : render_or_warn(sweetspot::io::modes_plot(data), plot);
+  }
+};
+
+struct ResponseCommand {
+  CLI::App* command = nullptr;
+  std::string design_path;
+  std::vector<double> at{0.02, 0.16};
+  std::vector<double> impacts;
+  bool held = false;
+  double until_ms = 20.0;
+  std::string csv_path;
+  std::string plot;
+
+  void add_to(CLI::App& app) {
+    command = app.add_subcommand(
+        "response", "Velocity of points of the implement after the impact: rigid (dc) and vibration (ac) parts");
+    command->add_option("design", design_path, "Design file (JSON) with the frame's stiffness")->required();
+    command->add_option("--at", at, "Observation points, m from the butt")->delimiter(',')->capture_default_str();
+    command->add_option("--impacts", impacts, "Impact points, m from the butt (default: the design's)")
+        ->delimiter(',');
+    command->add_flag("--held", held, "Held in the hand (default: free, as the paper's suspended beam)");
+    command->add_option("--until-ms", until_ms, "Time window after the impact starts")
+        ->check(CLI::Range(0.01, 1000.0))
+        ->capture_default_str();
+    command->add_option("--output,-o", csv_path, "Write the CSV to FILE instead of stdout");
+    command->add_option("--plot", plot, "Also plot: FILE-at-<cm>cm.png per observation point");
+  }
+
+  int run() const {
+    const auto design = sweetspot::io::load_design(design_path);
+    sweetspot::io::ResponseRequest request;
+    request.points_from_butt_m = at;
+    request.impacts_from_butt_m = impacts;
+    request.hand_held = held;
+    request.until_s = until_ms / 1e3;
+    const auto data = sweetspot::io::compute_response(design, request);
+    const std::string csv = sweetspot::io::response_csv(data);
+    if (csv_path.empty()) {
+      std::cout << csv;
+    } else {
+      sweetspot::io::write_file_atomically(csv_path, csv);
+    }
+    if (plot.empty()) return 0;
+    const auto plots = sweetspot::io::response_plots(data);
+    const auto dot = plot.rfind(".png");
+    const std::string stem = dot == std::string::npos ? plot : plot.substr(0, dot);
+    int status = 0;
+    for (std::size_t k = 0; k < plots.size(); ++k) {
+      status = std::max(status, render_or_warn(plots[k], fmt::format("{}-at-{:g}cm.png", stem, at[k] * 100)));
+    }
+    return status;
   }
 };
 
@@ -243,8 +302,9 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 1024));
   evaluate->add_option("--fidelity", fidelity,
                        "rigid: the paper's rigid body; modal: also the vibration modes (needs the "
-                       "frame's stiffness); auto: modal when the stiffness is given")
-      ->check(CLI::IsMember({"rigid", "modal", "auto"}))
+                       "frame's stiffness); response: also the frame's response to the ball (vibration "
+                       "energy, a COR derived from cor_rigid); auto: the cheapest that answers the design")
+      ->check(CLI::IsMember({"rigid", "modal", "response", "auto"}))
       ->capture_default_str();
   evaluate->add_option("--tol", tolerance, "Relative error allowed in the hand-held frequency")
       ->check(CLI::Range(1e-8, 0.1))
@@ -282,6 +342,8 @@ int main(int argc, char** argv) {
   sweep_cmd.add_to(app);
   ModesCommand modes_cmd;
   modes_cmd.add_to(app);
+  ResponseCommand response_cmd;
+  response_cmd.add_to(app);
 
   sweetspot::io::BenchOptions bench_options;
   std::string bench_what = "all";
@@ -316,12 +378,9 @@ int main(int argc, char** argv) {
     } else if (*evaluate) {
       if (design_path.empty()) throw CLI::ValidationError("design: a design file (or --batch FILE) is required");
       const auto design = sweetspot::io::load_design(design_path);
-      const bool modal = fidelity == "modal" || (fidelity == "auto" && sweetspot::has_stiffness(design.design));
       sweetspot::Evaluation result;
       try {
-        result = sweetspot::evaluate(design.design,
-                                     modal ? sweetspot::Fidelity::kModal : sweetspot::Fidelity::kRigid,
-                                     tolerance);
+        result = sweetspot::evaluate(design.design, fidelity_of(fidelity, design.design), tolerance);
       } catch (const std::invalid_argument& e) {
         sweetspot::io::rethrow_in(design, e);
       }
@@ -354,6 +413,8 @@ int main(int argc, char** argv) {
       return sweep_cmd.run();
     } else if (*modes_cmd.command) {
       return modes_cmd.run();
+    } else if (*response_cmd.command) {
+      return response_cmd.run();
     } else if (*bench) {
       if (bench_what != "modes") sweetspot::io::bench_optimize(bench_options, std::cout);
       if (bench_what != "optimize") sweetspot::io::bench_modes(bench_options, std::cout);

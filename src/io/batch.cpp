@@ -95,10 +95,12 @@ class Evaluator {
       }
       const DesignFile design = read_design(document, where);
       row.name = design.name;
-      const bool modal = options_.fidelity == "modal" ||
-                         (options_.fidelity == "auto" && has_stiffness(design.design));
+      const Fidelity fidelity = options_.fidelity == "rigid"      ? Fidelity::kRigid
+                                : options_.fidelity == "modal"    ? Fidelity::kModal
+                                : options_.fidelity == "response" ? Fidelity::kResponse
+                                                                  : needed_fidelity(design.design);
       try {
-        row.evaluation = evaluate(design.design, modal ? Fidelity::kModal : Fidelity::kRigid);
+        row.evaluation = evaluate(design.design, fidelity);
       } catch (const std::invalid_argument& e) {
         rethrow_in(design, e);
       }

@@ -1,5 +1,6 @@
 #include "sweetspot/io/design_reader.hpp"
 
+#include <cmath>
 #include <optional>
 #include <stdexcept>
 #include <utility>
@@ -186,6 +187,11 @@ DesignFile read_design(const Json& document, const std::string& source) {
   design.cor = frame.get_number("cor", defaults.cor);
   {
     ObjectReader& r = frame.reader();
+    design.cor_rigid = r.number("cor_rigid");
+    if (design.cor_rigid && r.has("cor")) {
+      r.fail("cor_rigid", "contradicts /frame/cor: give the COR, or cor_rigid to derive it from the frame's vibration");
+    }
+    if (design.cor_rigid) provenance["frame/cor"] = "derived from cor_rigid and the frame's vibration";
     design.stiffness.EI_N_m2 = r.quantity("EI", Dimension::kStiffness);
     design.stiffness.fundamental_free_Hz = r.quantity("fundamental_free", Dimension::kFrequency);
     if (design.stiffness.EI_N_m2 && design.stiffness.fundamental_free_Hz) {
@@ -203,13 +209,36 @@ DesignFile read_design(const Json& document, const std::string& source) {
       design.stiffness.thickness_m = *thickness;
       c.finish({"shear_modulus_Pa", "width_m", "thickness_m"});
     }
-    r.finish({"cor", "EI_N_m2", "fundamental_free_Hz", "cross_section"});
+    r.finish({"cor", "cor_rigid", "EI_N_m2", "fundamental_free_Hz", "cross_section"});
   }
 
   Part strings(top, "strings", &keys, &provenance);
   design.impact_duration_s =
       strings.get("impact_duration", Dimension::kTime, "impact_duration_s", defaults.impact_duration_s);
-  strings.reader().finish({"impact_duration_s", "impact_duration_ms"});
+  {
+    ObjectReader& r = strings.reader();
+    if (const auto tension = r.quantity("tension", Dimension::kForce)) {
+      if (r.has("impact_duration_s") || r.has("impact_duration_ms")) {
+        r.fail(r.one_of(spellings("tension", Dimension::kForce)),
+               "contradicts the impact duration: give the duration, or the tension to derive it");
+      }
+      StringBed bed;
+      bed.tension_N = *tension;
+      bed.string_spacing_m = r.quantity("string_spacing", Dimension::kLength).value_or(bed.string_spacing_m);
+      const std::string head = r.one_of({"head_size_in2", "head_size_cm2"});
+      if (!head.empty()) {
+        const double area_m2 = *r.number(head) * (head == "head_size_in2" ? 0.0254 * 0.0254 : 1e-4);
+        if (!(area_m2 > 0)) r.fail(head, "must be > 0, got " + brief(Json(*r.number(head))));
+        bed.head_radius_m = std::sqrt(area_m2 / 3.141592653589793);
+        r.record("head_radius_m", head);
+      }
+      bed.contact_radius_m = r.quantity("contact_radius", Dimension::kLength).value_or(bed.contact_radius_m);
+      design.strings = bed;
+      provenance["strings/impact_duration_s"] = "derived from the string tension";
+    }
+    r.finish({"impact_duration_s", "impact_duration_ms", "tension_N", "tension_lb", "tension_kg",
+              "string_spacing_m", "string_spacing_mm", "head_size_in2", "head_size_cm2", "contact_radius_m"});
+  }
 
   Part hand(top, "hand", &keys, &provenance);
   design.hand.mass_kg = hand.get("mass", Dimension::kMass, "mass_kg", defaults.hand.mass_kg);
@@ -329,7 +358,7 @@ Json design_to_json(const DesignFile& file) {
       impl["point_masses"].push_back({{"from_butt_m", p.from_butt_m}, {"mass_kg", p.mass_kg}});
     }
   }
-  j["frame"] = {{"cor", d.cor}};
+  j["frame"] = d.cor_rigid ? Json{{"cor_rigid", *d.cor_rigid}} : Json{{"cor", d.cor}};
   if (d.stiffness.EI_N_m2) j["frame"]["EI_N_m2"] = *d.stiffness.EI_N_m2;
   if (d.stiffness.fundamental_free_Hz) j["frame"]["fundamental_free_Hz"] = *d.stiffness.fundamental_free_Hz;
   if (d.stiffness.shear_modulus_Pa) {
@@ -337,7 +366,14 @@ Json design_to_json(const DesignFile& file) {
                                    {"width_m", d.stiffness.width_m},
                                    {"thickness_m", d.stiffness.thickness_m}};
   }
-  j["strings"] = {{"impact_duration_s", d.impact_duration_s}};
+  if (d.strings) {
+    j["strings"] = {{"tension_N", d.strings->tension_N},
+                    {"string_spacing_m", d.strings->string_spacing_m},
+                    {"head_size_cm2", 3.141592653589793 * d.strings->head_radius_m * d.strings->head_radius_m * 1e4},
+                    {"contact_radius_m", d.strings->contact_radius_m}};
+  } else {
+    j["strings"] = {{"impact_duration_s", d.impact_duration_s}};
+  }
   j["hand"] = {{"mass_kg", d.hand.mass_kg},
                {"center_from_butt_m", d.hand.center_from_butt_m},
                {"grip_length_m", d.hand.grip_length_m},

@@ -37,7 +37,7 @@ std::string csv_field(std::string_view text) {
 
 namespace {
 
-Json inputs_json(const DesignFile& file) {
+Json inputs_json(const DesignFile& file, const Evaluation& e) {
   const Design& d = file.design;
   const auto input = [&](const char* name, double value, const char* unit) {
     const auto it = file.provenance.find(name);
@@ -47,8 +47,10 @@ Json inputs_json(const DesignFile& file) {
   };
   Json inputs;
   inputs["implement/form"] = file.implement_form;
-  inputs["frame/cor"] = input("frame/cor", d.cor, "");
-  inputs["strings/impact_duration_s"] = input("strings/impact_duration_s", d.impact_duration_s, "s");
+  inputs["frame/cor"] = input("frame/cor", e.cor, "");
+  inputs["strings/impact_duration_s"] = input("strings/impact_duration_s", e.impact_duration_s, "s");
+  if (d.cor_rigid) inputs["frame/cor_rigid"] = input("frame/cor_rigid", *d.cor_rigid, "");
+  if (d.strings) inputs["strings/tension_N"] = input("strings/tension_N", d.strings->tension_N, "N");
   inputs["hand/mass_kg"] = input("hand/mass_kg", d.hand.mass_kg, "kg");
   inputs["hand/center_from_butt_m"] =
       input("hand/center_from_butt_m", d.hand.center_from_butt_m, "m");
@@ -65,9 +67,9 @@ Json inputs_json(const DesignFile& file) {
 Json evaluation_json(const DesignFile& file, const Evaluation& e) {
   Json j;
   j["name"] = file.name;
-  j["fidelity"] = e.modal ? "modal" : "rigid";
+  j["fidelity"] = e.vibration_energy_J ? "response" : e.modal ? "modal" : "rigid";
   if (e.modal) j["mass_distribution"] = e.modal->mass_distribution_fitted ? "fitted to the specs (quadratic density)" : "given";
-  j["inputs"] = inputs_json(file);
+  j["inputs"] = inputs_json(file, e);
   Json& outputs = j["outputs"];
   Json notes = Json::object();
   for (const OutputSpec& output : output_specs()) {
@@ -93,13 +95,16 @@ std::string evaluation_report(const DesignFile& file, const Evaluation& e, Forma
   }
   std::string md = fmt::format(
       "# {}\n\n{} of Cross (2004); source `{}`.{}\n\n", md_cell(file.name),
-      e.modal ? "Rigid-body model and vibration modes" : "Rigid-body model", file.source,
+      e.vibration_energy_J ? "Rigid-body model, vibration modes and impact response"
+      : e.modal            ? "Rigid-body model and vibration modes"
+                           : "Rigid-body model",
+      file.source,
       e.modal && e.modal->mass_distribution_fitted
           ? " The mass distribution for the modes was fitted to the specs (quadratic density)."
           : "");
   md += "| output | value | unit | meaning |\n|---|---:|---|---|\n";
   for (const OutputSpec& output : output_specs()) {
-    if (output.needs_modes && !e.modal) continue;
+    if (output.needs_modes && !output.value(e)) continue;
     const auto value = output.value(e);
     md += fmt::format("| `{}` | {} | {} | {} |\n", output.name,
                       value ? significant(*value) : std::string("—"), output.unit,
@@ -111,7 +116,7 @@ std::string evaluation_report(const DesignFile& file, const Evaluation& e, Forma
     md += "\nVibration modes: not evaluated (rigid fidelity; they need the frame's stiffness).\n";
   }
   md += "\nInputs (SI; *default* values are Cross (2004) Table I, top row):\n\n";
-  const Json inputs = inputs_json(file);
+  const Json inputs = inputs_json(file, e);
   for (const auto& [name, input] : inputs.items()) {
     if (!input.is_object()) continue;
     md += fmt::format("- `{}` = {} {} ({})\n", name, significant(input["value"].get<double>()),

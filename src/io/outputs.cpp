@@ -14,6 +14,10 @@ constexpr std::string_view kNeedsModes =
     "needs the modal model: give the frame's stiffness (frame EI_N_m2 or fundamental_free_Hz) "
     "and evaluate with --fidelity modal or auto";
 
+constexpr std::string_view kNeedsResponse =
+    "needs the response model: give the frame's stiffness and evaluate with --fidelity response "
+    "(or auto with frame cor_rigid)";
+
 std::optional<double> from_tip(const Evaluation& e, const std::optional<double>& from_butt) {
   if (!from_butt) return std::nullopt;
   return e.length_m - *from_butt;
@@ -43,6 +47,10 @@ const std::array kOutputs{
                ""},
     OutputSpec{"impact_from_com_m", "m", "impact point from the centre of mass, b (Eq. 17)",
                [](const Evaluation& e) -> std::optional<double> { return e.impact_from_com_m; }, ""},
+    OutputSpec{"cor", "", "COR e used at the impact point (given, or derived from cor_rigid)",
+               [](const Evaluation& e) -> std::optional<double> { return e.cor; }, ""},
+    OutputSpec{"impact_duration_s", "s", "impact duration T used (given, or derived from the tension)",
+               [](const Evaluation& e) -> std::optional<double> { return e.impact_duration_s; }, ""},
     OutputSpec{"effective_mass_kg", "kg", "effective mass at the impact point, M_eff (Eq. 17)",
                [](const Evaluation& e) -> std::optional<double> { return e.effective_mass_kg; }, ""},
     OutputSpec{"apparent_cor", "", "apparent COR e_A, rebound over incident speed (Eq. 16)",
@@ -110,6 +118,10 @@ const std::array kOutputs{
                  return *e.modal->node_hand_from_butt_m - *e.cop_hand_from_butt_m;
                },
                kNeedsModes, false, true},
+    OutputSpec{"vibration_energy_J", "J", "energy the free frame keeps as vibration after the impact",
+               [](const Evaluation& e) { return e.vibration_energy_J; }, kNeedsResponse, false, true, true},
+    OutputSpec{"vibration_share", "", "vibration energy over the ball's incident kinetic energy",
+               [](const Evaluation& e) { return e.vibration_share; }, kNeedsResponse, false, true, true},
     OutputSpec{"system_mass_kg", "kg", "implement plus hand, M",
                [](const Evaluation& e) -> std::optional<double> { return e.system_mass_kg; }, ""},
     OutputSpec{"system_com_from_butt_m", "m", "centre of mass of implement plus hand, h (Eq. 14)",

@@ -9,6 +9,7 @@
 #include "sweetspot/io/atomic_file.hpp"
 #include "sweetspot/io/modes_report.hpp"
 #include "sweetspot/io/paper_reports.hpp"
+#include "sweetspot/io/response_report.hpp"
 #include "sweetspot/io/study.hpp"
 
 namespace sweetspot::io {
@@ -72,6 +73,8 @@ void write_reports(const std::string& designs_dir, const std::string& out_dir, s
                    100 * (beam.design.implement.length_m() - modes.free.modes[0].nodes_from_butt_m.back()),
                    hand_held_fundamental(modes.held)->frequency_Hz,
                    hand_held_fundamental(modes.held)->damping_ratio)});
+
+  for (ReportEntry& entry : write_response_reports(designs_dir, write)) entries.push_back(std::move(entry));
 
   for (const fs::path& path : study_files(designs_dir)) {
     const Study study = load_study(path.string());

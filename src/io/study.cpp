@@ -361,14 +361,19 @@ Study read_study(const Json& document, const std::string& source, const std::str
   const std::string fidelity = top.string("fidelity").value_or("auto");
   if (fidelity == "modal") {
     study.fidelity = Fidelity::kModal;
+  } else if (fidelity == "response") {
+    study.fidelity = Fidelity::kResponse;
   } else if (fidelity == "auto") {
-    bool modes = false;
-    for (const ObjectiveTerm& t : study.objective) modes = modes || t.output->needs_modes;
-    for (const StudyConstraint& c : study.constraints) modes = modes || c.output->needs_modes;
-    for (const OutputSpec* o : study.sweep_outputs) modes = modes || o->needs_modes;
-    study.fidelity = modes ? Fidelity::kModal : Fidelity::kRigid;
+    std::vector<const OutputSpec*> used = study.sweep_outputs;
+    for (const ObjectiveTerm& t : study.objective) used.push_back(t.output);
+    for (const StudyConstraint& c : study.constraints) used.push_back(c.output);
+    study.fidelity = needed_fidelity(read_design(study.design_document, study.design_source).design);
+    for (const OutputSpec* o : used) {
+      if (o->needs_response) study.fidelity = Fidelity::kResponse;
+      if (o->needs_modes && study.fidelity == Fidelity::kRigid) study.fidelity = Fidelity::kModal;
+    }
   } else if (fidelity != "rigid") {
-    top.fail("fidelity", "expected \"rigid\", \"modal\" or \"auto\", got \"" + fidelity + "\"");
+    top.fail("fidelity", "expected \"rigid\", \"modal\", \"response\" or \"auto\", got \"" + fidelity + "\"");
   }
   if (const auto tolerance = top.number("modal_tolerance")) {
     if (!(*tolerance >= 1e-8 && *tolerance <= 0.1)) {

@@ -337,3 +337,55 @@ TEST_CASE("evaluate --batch reads JSON Lines merged over the base") {
 }
 
 }  // namespace
+
+namespace {
+
+TEST_CASE("response writes every impact, time and point, with zero dc velocity where the paper says") {
+  const Sandbox box;
+  const std::string beam = std::string(SWEETSPOT_SOURCE_DIR) + "/designs/paper-beam.json";
+  // The paper's COP for the disk 2 cm from the end is 23.3 cm from the other end:
+  // x = 0.72 - 0.2333 from the butt (Eq. 5 exactly: 0.36 + I/(M 0.34)).
+  const double cop = 0.36 + 0.72 * 0.72 / 12 / 0.34;
+  const Run run = box.run("response \"" + beam + "\" --at 0.02 --impacts " + std::to_string(cop) + " --until-ms 10");
+  REQUIRE(run.status == 0);
+  std::istringstream rows(run.out);
+  std::string line;
+  std::getline(rows, line);
+  CHECK(line == "impact_from_butt_m,t_s,point_from_butt_m,v_dc_m_s,v_ac_m_s,v_m_s");
+  int count = 0;
+  double last_dc = 1.0;
+  while (std::getline(rows, line)) {
+    ++count;
+    std::vector<double> cells;
+    std::stringstream fields(line);
+    std::string cell;
+    while (std::getline(fields, cell, ',')) cells.push_back(std::stod(cell));
+    last_dc = cells[3];
+  }
+  CHECK(count == 401);
+  // std::to_string keeps 6 decimals of the impact point: a 1e-6 m miss moves v_dc by ~1e-6 of its scale.
+  CHECK(std::abs(last_dc) < 1e-5);
+  const Run bad = box.run(std::string("response \"") + SWEETSPOT_SOURCE_DIR + "/designs/table1/row1.json\"");
+  CHECK(bad.status == 2);
+  CHECK(bad.err.find("/frame/EI_N_m2") != std::string::npos);
+}
+
+TEST_CASE("evaluate asks for the response model when the COR is to be derived") {
+  const Sandbox box;
+  const fs::path design = box.file("d.json", R"({"implement": {"length_m": 0.7, "mass_kg": 0.25,
+      "head_to_handle_mass_ratio": 0.8}, "frame": {"cor_rigid": 0.85, "fundamental_free_Hz": 150}})");
+  const Run rigid = box.run("evaluate \"" + design.string() + "\" --fidelity rigid");
+  CHECK(rigid.status == 2);
+  CHECK(rigid.err.find("/frame/cor_rigid") != std::string::npos);
+  const Run run = box.run("evaluate \"" + design.string() + "\" --format json");
+  REQUIRE(run.status == 0);
+  const nlohmann::json j = nlohmann::json::parse(run.out);
+  CHECK(j["fidelity"] == "response");
+  for (const char* key : {"cor", "impact_duration_s", "vibration_energy_J"}) {
+    INFO(key);
+    CHECK(j["outputs"][key].is_number());
+  }
+  CHECK(j["inputs"]["frame/cor"]["provenance"].get<std::string>().find("derived") != std::string::npos);
+}
+
+}  // namespace

@@ -4,6 +4,9 @@
 
 #include "sweetspot/evaluate.hpp"
 #include "sweetspot/io/input_error.hpp"
+#include "sweetspot/string_bed.hpp"
+
+#include <cmath>
 
 namespace sweetspot::io {
 namespace {
@@ -108,6 +111,52 @@ TEST_CASE("JSON errors name the pointer where they are") {
   CHECK(pointer_of(R"({"implement": {"length_m": 0.7, "mass_kg": 0.3,
                       "head_to_handle_mass_ratio": 1}, "hand": {"center_from_butt_in": 30}})") ==
         "/hand/center_from_butt_in");
+}
+
+}  // namespace
+}  // namespace sweetspot::io
+
+namespace sweetspot::io {
+namespace {
+
+TEST_CASE("cor_rigid and a string tension are read, and contradict a given COR or duration") {
+  const DesignFile d = read(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8},
+      "frame": {"cor_rigid": 0.85, "fundamental_free_Hz": 150},
+      "strings": {"tension_lb": 55, "head_size_in2": 100, "string_spacing_mm": 16.5}})");
+  REQUIRE(d.design.cor_rigid);
+  CHECK(*d.design.cor_rigid == 0.85);
+  REQUIRE(d.design.strings);
+  CHECK(d.design.strings->tension_N == Approx(55 * 4.4482216152605).epsilon(1e-12));
+  // 100 in^2 as the circle of the same area.
+  CHECK(d.design.strings->head_radius_m == Approx(std::sqrt(100 * 0.0254 * 0.0254 / 3.141592653589793)).epsilon(1e-12));
+  CHECK(d.design.strings->string_spacing_m == Approx(0.0165).epsilon(1e-12));
+  CHECK(d.provenance.at("frame/cor").find("derived") != std::string::npos);
+  CHECK_THROWS_WITH(read(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8},
+      "frame": {"cor": 0.8, "cor_rigid": 0.85}})"), Catch::Contains("/frame/cor_rigid: contradicts"));
+  CHECK_THROWS_WITH(read(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8},
+      "strings": {"impact_duration_ms": 4, "tension_N": 250}})"), Catch::Contains("/strings/tension_N: contradicts"));
+  CHECK_THROWS_WITH(read(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8},
+      "strings": {"tension_N": -250}})"), Catch::Contains("/strings/tension_N"));
+}
+
+TEST_CASE("A derived COR is below cor_rigid and the tension sets the duration the evaluation uses") {
+  const DesignFile d = read(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8},
+      "frame": {"cor_rigid": 0.85, "fundamental_free_Hz": 150}, "strings": {"tension_N": 250}})");
+  CHECK(needed_fidelity(d.design) == Fidelity::kResponse);
+  CHECK_THROWS_WITH(evaluate(d.design, Fidelity::kModal), Catch::StartsWith("frame/cor_rigid"));
+  const Evaluation e = evaluate(d.design, Fidelity::kResponse);
+  CHECK(e.cor_derived);
+  CHECK(e.cor < 0.85);
+  CHECK(e.cor > 0.0);
+  REQUIRE(e.vibration_energy_J);
+  CHECK(*e.vibration_energy_J > 0.0);
+  // The energy balance of the derived COR: (1 - e^2) = (1 - e_r^2) + 2 E_vib / (mu v1^2).
+  const double mu = 0.057 * e.effective_mass_kg / (0.057 + e.effective_mass_kg);
+  CHECK(1 - e.cor * e.cor == Approx(1 - 0.85 * 0.85 + 2 * *e.vibration_energy_J / (mu * 50 * 50)).epsilon(1e-9));
+  CHECK(e.impact_duration_derived);
+  const StringBed bed{250.0};
+  CHECK(e.impact_duration_s ==
+        Approx(tension_impact_duration(bed, 0.057, e.effective_mass_kg).duration_s).epsilon(1e-12));
 }
 
 }  // namespace

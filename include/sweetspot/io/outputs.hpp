@@ -20,6 +20,7 @@ struct OutputSpec {
   std::string_view when_absent;  // why the value can be null ("" if never)
   bool kinked = false;           // has a kink (an absolute value): not smooth everywhere
   bool needs_modes = false;      // only a modal evaluation (Fidelity::kModal) gives it
+  bool needs_response = false;   // only the response model (Fidelity::kResponse) gives it
 };
 
 // Every output, in report order.
