@@ -1,6 +1,7 @@
 #include "sweetspot/evaluate.hpp"
 
 #include <cmath>
+#include <string>
 #include <stdexcept>
 
 #include "sweetspot/impact_response.hpp"
@@ -48,8 +49,10 @@ Evaluation evaluate(const Design& design, Fidelity fidelity, double rel_tol) {
   }
   std::optional<DerivedCor> derived;
   std::optional<double> vibration_energy;
+  std::vector<double> mode_frequencies_Hz;
   if (fidelity == Fidelity::kResponse) {
     const ResponseModel model = response_model(resolved, ResponseOptions{});
+    for (const ResponseMode& m : model.modes) mode_frequencies_Hz.push_back(m.mode.frequency_Hz);
     // With a given COR, the vibration energy follows from the impulse.
     derived = derive_cor(model, resolved.impact_from_butt_m, design.cor_rigid.value_or(resolved.cor),
                          resolved.ball, resolved.impact_duration_s);
@@ -63,7 +66,25 @@ Evaluation evaluate(const Design& design, Fidelity fidelity, double rel_tol) {
   Evaluation e = evaluate(resolved);
   e.impact_duration_derived = duration_derived;
   if (fidelity != Fidelity::kRigid) e.modal = evaluate_modes(resolved, rel_tol);
+  if (e.modal) {
+    // Cross (2004) Sec. III: a half-sine of duration T excites modes up to about 1.5/T.
+    const double limit_Hz = 1.5 / resolved.impact_duration_s;
+    const double f1 = e.modal->fundamental_free_Hz;
+    if (f1 > limit_Hz) {
+      const double x = 2.0 * f1 * resolved.impact_duration_s;
+      e.fidelity_note = "the free fundamental (" + std::to_string(static_cast<int>(std::lround(f1))) +
+                        " Hz) is above 1.5/T = " + std::to_string(static_cast<int>(std::lround(limit_Hz))) +
+                        " Hz: the impact barely excites the frame (every mode keeps at most " +
+                        std::to_string(1.0 / ((x * x - 1) * (x * x - 1))) +
+                        " of its impulse-limit energy), so the rigid model answers this design";
+    }
+  }
   if (derived) {
+    for (std::size_t k = 0; k < derived->mode_energy_J.size(); ++k) {
+      // With a given COR the energies scale with the impulse squared, as the total does.
+      const double scale = design.cor_rigid ? 1.0 : *vibration_energy / derived->vibration_energy_J;
+      e.vibration_modes.emplace_back(mode_frequencies_Hz[k], derived->mode_energy_J[k] * scale);
+    }
     e.cor_derived = design.cor_rigid.has_value();
     e.vibration_energy_J = design.cor_rigid ? derived->vibration_energy_J : *vibration_energy;
     e.vibration_share = *e.vibration_energy_J / derived->collision_energy_J;

@@ -3,6 +3,9 @@
 // Every quantity of the rigid-body model of Cross (2004) for one design.
 
 #include <optional>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "sweetspot/design.hpp"
 #include "sweetspot/frame_modes.hpp"
@@ -52,6 +55,11 @@ struct Evaluation {
   // Fidelity::kResponse only [J], and its share of the ball's kinetic energy.
   std::optional<double> vibration_energy_J;
   std::optional<double> vibration_share;
+  // Per mode of the free frame (response): damped frequency [Hz] and the energy it keeps [J].
+  std::vector<std::pair<double, double>> vibration_modes;
+  // Why a cheaper model would have done (empty when nothing to say), e.g. a
+  // fundamental above 1.5/T, which the impact barely excites.
+  std::string fidelity_note;
 };
 
 // How much model an evaluation uses: the rigid body of the paper alone; also

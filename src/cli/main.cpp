@@ -89,7 +89,14 @@ struct OptimizeCommand {
     if (out.parsed() == Format::kMarkdown && !out.output.empty()) {
       std::cerr << result.summary.brief_report() << "\n";
     }
-    return plot.empty() ? 0 : render_or_warn(sweetspot::io::convergence_plot(study, result), plot);
+    const int plotted = plot.empty() ? 0 : render_or_warn(sweetspot::io::convergence_plot(study, result), plot);
+    if (!result.summary.feasible) {
+      // The report (the least infeasible design) is complete; the study is what is wrong.
+      std::cerr << "sweetspot: " << study.source
+                << ": /constraints: no design within the variables' bounds satisfies them all\n";
+      return kExitBadInput;
+    }
+    return plotted;
   }
 };
 
@@ -380,7 +387,9 @@ int main(int argc, char** argv) {
       const auto design = sweetspot::io::load_design(design_path);
       sweetspot::Evaluation result;
       try {
-        result = sweetspot::evaluate(design.design, fidelity_of(fidelity, design.design), tolerance);
+        // The command line's --fidelity wins over the file's "fidelity".
+        const std::string chosen = evaluate->count("--fidelity") ? fidelity : design.fidelity;
+        result = sweetspot::evaluate(design.design, fidelity_of(chosen, design.design), tolerance);
       } catch (const std::invalid_argument& e) {
         sweetspot::io::rethrow_in(design, e);
       }

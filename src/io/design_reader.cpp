@@ -175,6 +175,10 @@ DesignFile read_design(const Json& document, const std::string& source) {
   const std::string name = top.string("name").value_or(source);
   top.string("description");
   top.string("$schema");
+  const std::string fidelity = top.string("fidelity").value_or("auto");
+  if (fidelity != "rigid" && fidelity != "modal" && fidelity != "response" && fidelity != "auto") {
+    top.fail("fidelity", "expected \"rigid\", \"modal\", \"response\" or \"auto\", got \"" + fidelity + "\"");
+  }
   ImplementRead implement = read_implement(document, source, &keys);
   top.child("implement");
   const double L = implement.implement.length_m();
@@ -314,7 +318,7 @@ DesignFile read_design(const Json& document, const std::string& source) {
     r.finish(expected);
     reference = *given;
   }
-  top.finish({"$schema", "name", "description", "implement", "frame", "strings", "hand", "forearm",
+  top.finish({"$schema", "name", "description", "fidelity", "implement", "frame", "strings", "hand", "forearm",
               "ball", "impact", "reference"});
 
   try {
@@ -323,7 +327,7 @@ DesignFile read_design(const Json& document, const std::string& source) {
     rethrow_at(error, "", keys, source, "");
   }
   return DesignFile{source, name, std::move(design), implement.form, std::move(provenance),
-                    std::move(reference), std::move(keys)};
+                    std::move(reference), std::move(keys), fidelity};
 }
 
 void rethrow_in(const DesignFile& design, const std::invalid_argument& error) {

@@ -389,3 +389,33 @@ TEST_CASE("evaluate asks for the response model when the COR is to be derived") 
 }
 
 }  // namespace
+
+namespace {
+
+TEST_CASE("An infeasible study writes its report and exits 2 naming /constraints") {
+  const Sandbox box;
+  const fs::path study = box.file("infeasible.json", std::string(R"({"design": ")") + SWEETSPOT_SOURCE_DIR +
+                                                         R"(/designs/table1/row1.json",
+      "variables": [{"path": "/implement/mass_kg", "min": 0.25, "max": 0.40}],
+      "objective": {"output": "peak_wrist_force_N"},
+      "constraints": [{"output": "swingweight_kg_cm2", "max": 100}]})");
+  const fs::path report = box.path("report.md");
+  const Run run = box.run("optimize \"" + study.string() + "\" --output \"" + report.string() + "\"");
+  CHECK(run.status == 2);
+  CHECK(run.err.find(study.string() + ": /constraints: no design") != std::string::npos);
+  CHECK(slurp(report).find("No feasible design was found") != std::string::npos);
+}
+
+TEST_CASE("A design's own fidelity is used unless the command line says otherwise") {
+  const Sandbox box;
+  const fs::path design = box.file("d.json", std::string(R"({"fidelity": "rigid", "implement": {"sections":
+      [{"length_m": 0.72, "mass_kg": 0.328}]}, "frame": {"fundamental_free_Hz": 193}})"));
+  const Run rigid = box.run("evaluate \"" + design.string() + "\" --format json");
+  REQUIRE(rigid.status == 0);
+  CHECK(nlohmann::json::parse(rigid.out)["fidelity"] == "rigid");
+  const Run modal = box.run("evaluate \"" + design.string() + "\" --format json --fidelity modal");
+  REQUIRE(modal.status == 0);
+  CHECK(nlohmann::json::parse(modal.out)["fidelity"] == "modal");
+}
+
+}  // namespace

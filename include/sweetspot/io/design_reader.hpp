@@ -28,6 +28,8 @@ struct DesignFile {
   Json reference;
   // Where each input came from in the file (canonical SI name -> JSON pointer).
   KeyMap keys;
+  // "fidelity": rigid, modal, response or auto (the command line's --fidelity wins).
+  std::string fidelity = "auto";
 };
 
 // The physics core's complaint about this design (its message starts with the
