@@ -48,9 +48,6 @@ constexpr double kToleranceSafety = 0.5;
   throw std::invalid_argument(name + ": must be " + expected + ", got " + format_number(value));
 }
 
-std::string indexed(const char* vector_name, std::size_t i, const char* field) {
-  return std::string(vector_name) + "[" + std::to_string(i) + "]." + field;
-}
 
 // ---------------------------------------------------------------- validation
 
@@ -59,29 +56,20 @@ double validated_length(const std::vector<Section>& sections, bool need_mass) {
   double length = 0.0;
   for (std::size_t i = 0; i < sections.size(); ++i) {
     const Section& s = sections[i];
-    detail::require_positive(indexed("sections", i, "length_m"), s.length_m, "m");
+    detail::require_positive(detail::indexed("sections", i, "length_m"), s.length_m, "m");
     if (need_mass) {
-      detail::require_positive(indexed("sections", i, "mass_kg"), s.mass_kg, "kg");
+      detail::require_positive(detail::indexed("sections", i, "mass_kg"), s.mass_kg, "kg");
     } else {
-      detail::require_at_least(indexed("sections", i, "mass_kg"), s.mass_kg, 0.0, "kg");
+      detail::require_at_least(detail::indexed("sections", i, "mass_kg"), s.mass_kg, 0.0, "kg");
     }
     if (!s.EI_N_m2) {
-      throw std::invalid_argument(indexed("sections", i, "EI_N_m2") +
+      throw std::invalid_argument(detail::indexed("sections", i, "EI_N_m2") +
                                   ": must be given for the bending modes, got none");
     }
-    detail::require_positive(indexed("sections", i, "EI_N_m2"), *s.EI_N_m2, "N m^2");
+    detail::require_positive(detail::indexed("sections", i, "EI_N_m2"), *s.EI_N_m2, "N m^2");
     length += s.length_m;
   }
   return length;
-}
-
-void validate_point_masses(const std::vector<PointMass>& point_masses, double length_m) {
-  for (std::size_t i = 0; i < point_masses.size(); ++i) {
-    detail::require_in_range(indexed("point_masses", i, "from_butt_m"),
-                             point_masses[i].from_butt_m, 0.0, length_m, "m");
-    detail::require_at_least(indexed("point_masses", i, "mass_kg"), point_masses[i].mass_kg, 0.0,
-                             "kg");
-  }
 }
 
 void validate_options(const ModeOptions& options, std::size_t section_count) {
@@ -308,10 +296,9 @@ class TransferModel {
     return r * r;
   }
 
-  // Frequency function: det of the tip (moment, shear) block over the two
-  // free-butt states, divided by (mu_bar omega^2 L^4 / EI0)^2 so that the
-  // double root at omega = 0 is removed.
-  double frequency_function(double omega) const {
+  // The two free-butt states (unit displacement, unit slope) carried through
+  // every segment and point mass to the tip.
+  std::pair<std::array<double, 4>, std::array<double, 4>> tip_states(double omega) const {
     using State = std::array<double, 4>;
     State s1{1, 0, 0, 0}, s2{0, 1, 0, 0};
     const double w2 = omega * omega;
@@ -327,7 +314,16 @@ class TransferModel {
     const double jump = seg_.tip_mass_kg * w2 * L_ * L_ * L_ / EI0_;
     s1[3] += jump * s1[0];
     s2[3] += jump * s2[0];
+    return {s1, s2};
+  }
+
+  // Frequency function: det of the tip (moment, shear) block over the two
+  // free-butt states, divided by (mu_bar omega^2 L^4 / EI0)^2 so that the
+  // double root at omega = 0 is removed.
+  double frequency_function(double omega) const {
+    const auto [s1, s2] = tip_states(omega);
     const double det = s1[2] * s2[3] - s2[2] * s1[3];
+    const double w2 = omega * omega;
     const double scale = mu_bar_ * w2 * L_ * L_ * L_ * L_ / EI0_;
     return det / (scale * scale);
   }
@@ -337,19 +333,7 @@ class TransferModel {
     using State = std::array<double, 4>;
     const double w2 = omega * omega;
     // Null vector of the tip block from the row of larger norm.
-    State s1{1, 0, 0, 0}, s2{0, 1, 0, 0};
-    for (const Segment& s : seg_.segments) {
-      const double jump = s.mass_at_start_kg * w2 * L_ * L_ * L_ / EI0_;
-      s1[3] += jump * s1[0];
-      s2[3] += jump * s2[0];
-      double m[4][4];
-      matrix(s, w2, m);
-      s1 = apply(m, s1);
-      s2 = apply(m, s2);
-    }
-    const double jump_tip = seg_.tip_mass_kg * w2 * L_ * L_ * L_ / EI0_;
-    s1[3] += jump_tip * s1[0];
-    s2[3] += jump_tip * s2[0];
+    const auto [s1, s2] = tip_states(omega);
     double c1, c2;
     if (std::hypot(s1[2], s2[2]) >= std::hypot(s1[3], s2[3])) {
       c1 = s2[2];
@@ -1219,10 +1203,10 @@ std::string ModeOptions::validate() const {
     for (std::size_t i = 0; i < timoshenko.size(); ++i) {
       const TimoshenkoSection& t = timoshenko[i];
       if (!(t.shear_stiffness_N > 0.0 && std::isfinite(t.shear_stiffness_N))) {
-        return bad(indexed("timoshenko", i, "shear_stiffness_N"), "> 0 N", t.shear_stiffness_N);
+        return bad(detail::indexed("timoshenko", i, "shear_stiffness_N"), "> 0 N", t.shear_stiffness_N);
       }
       if (!(t.radius_of_gyration_m >= 0.0 && std::isfinite(t.radius_of_gyration_m))) {
-        return bad(indexed("timoshenko", i, "radius_of_gyration_m"), ">= 0 m",
+        return bad(detail::indexed("timoshenko", i, "radius_of_gyration_m"), ">= 0 m",
                    t.radius_of_gyration_m);
       }
     }
@@ -1245,7 +1229,7 @@ ModalResult free_modes(const std::vector<Section>& sections,
                        const std::vector<PointMass>& point_masses, const ModeOptions& options) {
   const bool fe = options.method == ModeOptions::Method::kFiniteElement;
   const double length = validated_length(sections, fe);
-  validate_point_masses(point_masses, length);
+  detail::validate_point_masses(point_masses, length);
   validate_options(options, sections.size());
   const Segmentation seg = segment(sections, point_masses);
   ModalResult result = fe ? fe_free_modes(seg, options) : exact_free_modes(seg, options);
@@ -1258,7 +1242,7 @@ BeamMatrices assemble_beam_matrices(const std::vector<Section>& sections,
                                     const ModeOptions& options,
                                     const std::optional<HandCoupling>& hand) {
   const double length = validated_length(sections, true);
-  validate_point_masses(point_masses, length);
+  detail::validate_point_masses(point_masses, length);
   validate_options(options, sections.size());
   if (hand) validate_hand(*hand, length);
   const Segmentation seg =
@@ -1284,7 +1268,7 @@ ModalResult hand_held_modes(const std::vector<Section>& sections,
                             const std::vector<PointMass>& point_masses, const HandCoupling& hand,
                             const ModeOptions& options) {
   const double length = validated_length(sections, true);
-  validate_point_masses(point_masses, length);
+  detail::validate_point_masses(point_masses, length);
   validate_options(options, sections.size());
   if (options.method != ModeOptions::Method::kFiniteElement) {
     throw std::invalid_argument("options.method: the hand-held beam needs kFiniteElement, got kExact");

@@ -1,5 +1,7 @@
 #include "check.hpp"
 
+#include "sweetspot/mass_properties.hpp"
+
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -13,6 +15,17 @@ std::string format_number(double value) {
   char buffer[32];
   const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
   return std::string(buffer, result.ptr);
+}
+
+std::string indexed(std::string_view list, std::size_t index, std::string_view field) {
+  return std::string(list) + "/" + std::to_string(index) + "/" + std::string(field);
+}
+
+void validate_point_masses(const std::vector<PointMass>& point_masses, double length_m) {
+  for (std::size_t i = 0; i < point_masses.size(); ++i) {
+    require_in_range(indexed("point_masses", i, "from_butt_m"), point_masses[i].from_butt_m, 0.0, length_m, "m");
+    require_at_least(indexed("point_masses", i, "mass_kg"), point_masses[i].mass_kg, 0.0, "kg");
+  }
 }
 
 std::string format_significant(double value) {

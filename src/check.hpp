@@ -5,6 +5,11 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
+
+namespace sweetspot {
+struct PointMass;
+}
 
 namespace sweetspot::detail {
 
@@ -12,6 +17,13 @@ namespace sweetspot::detail {
 std::string format_number(double value);
 // Six significant digits, for computed bounds in messages.
 std::string format_significant(double value);
+
+// The name of a field of a list element as a relative JSON pointer,
+// "point_masses/1/mass_kg", so the JSON layer can point at the file's key.
+std::string indexed(std::string_view list, std::size_t index, std::string_view field);
+
+// Point masses must lie on [0, length_m] and weigh >= 0 kg.
+void validate_point_masses(const std::vector<PointMass>& point_masses, double length_m);
 
 void require_finite(std::string_view name, double value);
 void require_positive(std::string_view name, double value, std::string_view unit);

@@ -11,21 +11,6 @@
 namespace sweetspot {
 namespace {
 
-// Argument names are relative JSON pointers so that the JSON layer can prefix
-// the path of the implement object and report exactly where the value was.
-std::string indexed(std::string_view list, std::size_t index, std::string_view field) {
-  return std::string(list) + "/" + std::to_string(index) + "/" + std::string(field);
-}
-
-void validate_point_masses(const std::vector<PointMass>& point_masses, double length_m) {
-  for (std::size_t i = 0; i < point_masses.size(); ++i) {
-    detail::require_in_range(indexed("point_masses", i, "from_butt_m"),
-                             point_masses[i].from_butt_m, 0.0, length_m, "m");
-    detail::require_at_least(indexed("point_masses", i, "mass_kg"), point_masses[i].mass_kg, 0.0,
-                             "kg");
-  }
-}
-
 MassProperties add_all(MassProperties body, const std::vector<PointMass>& point_masses) {
   for (const PointMass& point : point_masses) body = with_point_mass(body, point);
   return body;
@@ -40,9 +25,9 @@ MassProperties section_mass_properties(const std::vector<Section>& sections) {
   double x_start = 0.0;
   for (std::size_t i = 0; i < sections.size(); ++i) {
     const Section& s = sections[i];
-    detail::require_positive(indexed("sections", i, "length_m"), s.length_m, "m");
-    detail::require_at_least(indexed("sections", i, "mass_kg"), s.mass_kg, 0.0, "kg");
-    if (s.EI_N_m2) detail::require_positive(indexed("sections", i, "EI_N_m2"), *s.EI_N_m2, "N m^2");
+    detail::require_positive(detail::indexed("sections", i, "length_m"), s.length_m, "m");
+    detail::require_at_least(detail::indexed("sections", i, "mass_kg"), s.mass_kg, 0.0, "kg");
+    if (s.EI_N_m2) detail::require_positive(detail::indexed("sections", i, "EI_N_m2"), *s.EI_N_m2, "N m^2");
     mass += s.mass_kg;
     first_moment += s.mass_kg * (x_start + 0.5 * s.length_m);
     x_start += s.length_m;
@@ -73,7 +58,7 @@ Implement Implement::from_sections(std::vector<Section> sections,
   Implement implement;
   implement.frame_ = section_mass_properties(sections);
   for (const Section& s : sections) implement.length_m_ += s.length_m;
-  validate_point_masses(point_masses, implement.length_m_);
+  detail::validate_point_masses(point_masses, implement.length_m_);
   implement.total_ = add_all(implement.frame_, point_masses);
   implement.sections_ = std::move(sections);
   implement.point_masses_ = std::move(point_masses);
@@ -123,7 +108,7 @@ Implement Implement::from_specs(const IndustrySpecs& specs, std::vector<PointMas
   Implement implement;
   implement.length_m_ = L;
   implement.frame_ = from_swingweight(M, B, specs.swingweight_kg_m2);
-  validate_point_masses(point_masses, L);
+  detail::validate_point_masses(point_masses, L);
   implement.total_ = add_all(implement.frame_, point_masses);
   implement.point_masses_ = std::move(point_masses);
   return implement;
