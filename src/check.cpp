@@ -1,6 +1,6 @@
 #include "check.hpp"
 
-#include "sweetspot/mass_properties.hpp"
+#include "sweetspot/implement.hpp"
 
 #include <charconv>
 #include <cmath>
@@ -24,7 +24,7 @@ std::string indexed(std::string_view list, std::size_t index, std::string_view f
 void validate_point_masses(const std::vector<PointMass>& point_masses, double length_m) {
   for (std::size_t i = 0; i < point_masses.size(); ++i) {
     require_in_range(indexed("point_masses", i, "from_butt_m"), point_masses[i].from_butt_m, 0.0, length_m, "m");
-    require_at_least(indexed("point_masses", i, "mass_kg"), point_masses[i].mass_kg, 0.0, "kg");
+    require_in_range(indexed("point_masses", i, "mass_kg"), point_masses[i].mass_kg, 0.0, kMaxMass_kg, "kg");
   }
 }
 

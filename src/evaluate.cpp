@@ -8,8 +8,10 @@
 #include "sweetspot/rigid_impact.hpp"
 
 namespace sweetspot {
+namespace {
 
-Evaluation evaluate(const Design& design) {
+// The rigid evaluation of a design whose COR and duration are settled.
+Evaluation evaluate_settled(const Design& design) {
   validate(design);
   Evaluation e = evaluate_unchecked(design);
   // validate() bounds every input, so this is a backstop: never hand out inf or NaN.
@@ -23,6 +25,10 @@ Evaluation evaluate(const Design& design) {
   }
   return e;
 }
+
+}  // namespace
+
+Evaluation evaluate(const Design& design) { return evaluate(design, Fidelity::kRigid); }
 
 Fidelity needed_fidelity(const Design& design) {
   if (design.cor_rigid) return Fidelity::kResponse;
@@ -63,7 +69,7 @@ Evaluation evaluate(const Design& design, Fidelity fidelity, double rel_tol) {
       vibration_energy = 0.5 * J * J * derived->vibration_compliance_per_kg;
     }
   }
-  Evaluation e = evaluate(resolved);
+  Evaluation e = evaluate_settled(resolved);
   e.impact_duration_derived = duration_derived;
   if (fidelity != Fidelity::kRigid) e.modal = evaluate_modes(resolved, rel_tol);
   if (e.modal) {

@@ -1,5 +1,7 @@
 #include "sweetspot/impact_response.hpp"
 
+#include "sweetspot/string_bed.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -438,7 +440,7 @@ DerivedCor derive_cor(const ResponseModel& model, double impact_from_butt_m, dou
   out.cor_rigid = cor_rigid;
   const double m = ball.mass_kg, v1 = ball.speed_m_s;
   out.effective_mass_kg = effective_mass(model.rigid_body, impact_from_butt_m);  // Eq. (17)
-  out.reduced_mass_kg = m * out.effective_mass_kg / (m + out.effective_mass_kg);
+  out.reduced_mass_kg = reduced_mass(m, out.effective_mass_kg);
   std::vector<double> per_mode;  // 2 E_k / J^2
   for (const ResponseMode& mode : model.modes) {
     per_mode.push_back(mode_energy_per_impulse_squared(

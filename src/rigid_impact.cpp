@@ -49,9 +49,12 @@ double wrist_force_ratio(const MassProperties& system, double forearm_equivalent
   const double h = system.com_from_butt_m;
   const double Me = forearm_equivalent_mass_kg;
   if (Me == 0.0) return 0.0;  // no forearm to push against: no force, whatever the body
-  // Eq. (11) multiplied through by M_e, with M b h - I_cm = M h (x - x_cop) from Eq. (13).
-  const double x_cop = h + I / (M * h);
-  return Me * M * h * (impact_from_butt_m - x_cop) / (Me * M * h * h + I * (Me + M));
+  const double denominator = Me * M * h * h + I * (Me + M);
+  // Eq. (11) multiplied through by M_e. Its numerator M b h - I_cm is M h (x - x_cop)
+  // with x_cop the COP of Eq. (13), which makes it exactly zero at the COP.
+  const auto x_cop = hand_held_cop_from_butt(system);
+  if (!x_cop) return -Me * I / denominator;  // h = 0: M b h - I_cm = -I_cm
+  return Me * M * h * (impact_from_butt_m - *x_cop) / denominator;
 }
 
 std::optional<double> hand_held_rotation_axis_from_butt(const MassProperties& system,

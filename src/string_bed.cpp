@@ -20,18 +20,19 @@ void require_valid(const StringBed& bed) {
   if (!why.empty()) throw std::invalid_argument("bed." + why);
 }
 
-double reduced_mass(double ball_mass_kg, double effective_mass_kg) {
-  detail::require_positive("ball_mass_kg", ball_mass_kg, "kg");
-  detail::require_positive("effective_mass_kg", effective_mass_kg, "kg");
-  return ball_mass_kg * effective_mass_kg / (ball_mass_kg + effective_mass_kg);
-}
 
-// ln(R / r0) / (2 pi d): string-bed compliance times tension [1/m].
+// d ln(R / r0) / (2 pi): the string bed's compliance times the tension [m].
 double compliance_tension_factor(const StringBed& bed) {
   return std::log(bed.head_radius_m / bed.contact_radius_m) / (2.0 * kPi) * bed.string_spacing_m;
 }
 
 }  // namespace
+
+double reduced_mass(double ball_mass_kg, double effective_mass_kg) {
+  detail::require_positive("ball_mass_kg", ball_mass_kg, "kg");
+  detail::require_positive("effective_mass_kg", effective_mass_kg, "kg");
+  return ball_mass_kg * effective_mass_kg / (ball_mass_kg + effective_mass_kg);
+}
 
 std::string StringBed::validate() const {
   if (!(std::isfinite(tension_N) && tension_N > 0.0)) return bad("tension_N", "> 0 N", tension_N);

@@ -121,7 +121,7 @@ TEST_CASE("The wrist force vanishes exactly at the hand-held COP, where the axis
   }
 }
 
-TEST_CASE("The wrist force changes sign across the COP: tip-side impacts push the wrist along") {
+TEST_CASE("The wrist force changes sign across the COP: tip-side impacts jerk the forearm towards the outgoing ball") {
   const MassProperties system = with_point_mass(paper_beam().mass_properties(), {0.07, 0.5});
   const double cop = *hand_held_cop_from_butt(system);
   CHECK(wrist_force_ratio(system, 0.5, cop + 0.05) > 0.0);
@@ -179,6 +179,12 @@ TEST_CASE("The half-sine peak force carries the impulse m v1 (1 + e_A)") {
   const double F0 = peak_impact_force(0.057, 50.0, 0.4, 0.004);
   CHECK(2.0 * F0 * 0.004 / 3.141592653589793 == Approx(0.057 * 50.0 * 1.4).epsilon(1e-14));
   CHECK_THROWS_AS(peak_impact_force(0.057, 50.0, 0.4, 0.0), std::invalid_argument);
+}
+
+TEST_CASE("With all the mass at the wrist the wrist force is finite: -M_e / (M_e + M)") {
+  // h = 0: Eq. (11) is (M b h - I) / (M h^2 + I (1 + M / M_e)) = -I / (I (1 + M / M_e)).
+  const MassProperties at_wrist{0.8, 0.0, 0.01};
+  CHECK(wrist_force_ratio(at_wrist, 0.5, 0.3) == Approx(-0.5 / 1.3).epsilon(1e-15));
 }
 
 TEST_CASE("The forearm acts at the wrist as a third of its mass") {

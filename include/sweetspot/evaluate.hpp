@@ -71,8 +71,10 @@ enum class Fidelity { kRigid, kModal, kResponse };
 // when the COR is to be derived, kModal when the stiffness is given, else kRigid.
 Fidelity needed_fidelity(const Design& design);
 
-// Evaluates every quantity for a valid design (validate() first: evaluate()
-// calls it and throws std::invalid_argument the same way).
+// Evaluates every quantity of the rigid model for a valid design (validate()
+// first: evaluate() calls it and throws std::invalid_argument the same way):
+// evaluate(design, Fidelity::kRigid). A string tension sets the duration; a
+// COR to be derived (cor_rigid) needs Fidelity::kResponse and throws here.
 Evaluation evaluate(const Design& design);
 
 // The same with the modes too when `fidelity` is kModal or kResponse (the
@@ -82,8 +84,9 @@ Evaluation evaluate(const Design& design);
 // "frame/cor_rigid".
 Evaluation evaluate(const Design& design, Fidelity fidelity, double rel_tol = 1e-6);
 
-// The same without validation, for callers that validated once and evaluate
-// many impacts or variants in a loop. No allocation.
+// The rigid model without validation and with the design's cor and
+// impact_duration_s as they stand (no tension, no cor_rigid), for callers that
+// validated once and evaluate many impacts or variants in a loop. No allocation.
 Evaluation evaluate_unchecked(const Design& design);
 
 }  // namespace sweetspot

@@ -59,8 +59,10 @@ std::optional<double> hand_held_cop_from_butt(const MassProperties& system);
 // with M, I_cm, h of implement plus hand and b = x - h. Evaluated as
 // M_e M h (x - x_cop) / (M_e M h^2 + I_cm (M_e + M)), which is exactly zero for
 // an impact at the centre of percussion and finite for every M_e >= 0
-// (M_e = 0: no forearm, no force). Positive: the wrist is pushed along the
-// impulse (impacts tip-side of the COP). Dimensionless.
+// (M_e = 0: no forearm, no force). F_w is the wrist's force on the hand,
+// counted along F; the hand pushes the forearm the other way, so a positive
+// ratio jerks the forearm towards the outgoing ball (impacts tip-side of the
+// COP), a negative one away from it (Sec. V.B). Dimensionless.
 double wrist_force_ratio(const MassProperties& system, double forearm_equivalent_mass_kg,
                          double impact_from_butt_m);
 

@@ -57,6 +57,11 @@ struct StringBed {
 // std::invalid_argument naming the field of an invalid bed.
 double string_bed_stiffness(const StringBed& bed);
 
+// Reduced mass of the ball and the implement's effective mass at the impact
+// point, mu = m M_eff / (m + M_eff) [kg]: the mass of their relative motion in
+// the collision. Both > 0.
+double reduced_mass(double ball_mass_kg, double effective_mass_kg);
+
 // Springs in series: 1/k = 1/k_ball + 1/k_strings [N/m]; both > 0.
 double series_stiffness(double ball_stiffness_N_m, double string_bed_stiffness_N_m);
 

@@ -249,13 +249,20 @@ struct SweepCommand {
 
 // evaluate --batch: exit 0 when every row evaluated, 1 when some failed.
 int run_batch_command(const std::string& path, const std::string& base, int threads,
-                      const std::string& fidelity, const OutputOptions& out) {
+                      const std::string& fidelity, double tolerance, const OutputOptions& out) {
   sweetspot::io::BatchOptions options;
   options.csv_input = path.size() >= 4 && path.compare(path.size() - 4, 4, ".csv") == 0;
-  if (!base.empty()) options.base = sweetspot::io::read_json_file(base);
+  if (!base.empty()) {
+    options.base = sweetspot::io::read_json_file(base);
+    // A base that is not a valid design on its own is the caller's error, not every row's.
+    if (!options.base->contains("implement")) {
+      throw sweetspot::io::InputError(base, "/implement", "missing: the base design needs an implement");
+    }
+  }
   options.format = out.parsed() == Format::kJson ? Format::kJson : Format::kCsv;
   options.threads = threads;
   options.fidelity = fidelity;
+  options.modal_tolerance = tolerance;
   std::ifstream in(path, std::ios::binary);
   if (!in) throw sweetspot::io::InputError(path, "", "cannot open the file for reading");
   sweetspot::io::BatchSummary summary;
@@ -374,14 +381,17 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    app.exit(e);
+    std::cerr << "sweetspot: " << e.what() << " (see --help)\n";
     return kExitBadInput;
   }
 
+  int status = 0;
   try {
+    status = [&]() -> int {
     if (*evaluate && !batch_path.empty()) {
       if (!design_path.empty()) throw CLI::ValidationError("give a design file or --batch, not both");
-      return run_batch_command(batch_path, batch_base, threads, fidelity, evaluate_out);
+      return run_batch_command(batch_path, batch_base, threads,
+                               evaluate->count("--fidelity") ? fidelity : std::string(), tolerance, evaluate_out);
     } else if (*evaluate) {
       if (design_path.empty()) throw CLI::ValidationError("design: a design file (or --batch FILE) is required");
       const auto design = sweetspot::io::load_design(design_path);
@@ -428,8 +438,10 @@ int main(int argc, char** argv) {
       if (bench_what != "modes") sweetspot::io::bench_optimize(bench_options, std::cout);
       if (bench_what != "optimize") sweetspot::io::bench_modes(bench_options, std::cout);
     }
+    return 0;
+    }();
   } catch (const CLI::ParseError& e) {
-    app.exit(e);
+    std::cerr << "sweetspot: " << e.what() << "\n";
     return kExitBadInput;
   } catch (const sweetspot::io::InputError& e) {
     std::cerr << "sweetspot: " << e.what() << "\n";
@@ -441,5 +453,10 @@ int main(int argc, char** argv) {
     std::cerr << "sweetspot: " << e.what() << "\n";
     return kExitRuntimeError;
   }
-  return 0;
+  std::cout.flush();
+  if (!std::cout) {
+    std::cerr << "sweetspot: cannot write to standard output\n";
+    return kExitRuntimeError;
+  }
+  return status;
 }

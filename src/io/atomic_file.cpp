@@ -28,6 +28,12 @@ std::string temporary_path_for(const std::string& path) {
 }
 
 void commit_file(const std::string& temporary, const std::string& path) {
+  // mkstemp creates 0600; outputs are for everyone to read.
+  std::error_code ignored;
+  std::filesystem::permissions(temporary,
+                               std::filesystem::perms::owner_read | std::filesystem::perms::owner_write |
+                                   std::filesystem::perms::group_read | std::filesystem::perms::others_read,
+                               ignored);
   if (std::rename(temporary.c_str(), path.c_str()) != 0) {
     const std::string reason = std::strerror(errno);
     std::remove(temporary.c_str());
@@ -51,10 +57,6 @@ void write_file_atomically(const std::string& path, std::string_view content) {
     discard_file(temporary);
     fail(path, "write failed");
   }
-  // mkstemp creates 0600; reports are for everyone to read.
-  std::filesystem::permissions(temporary,
-                               std::filesystem::perms::owner_read | std::filesystem::perms::owner_write |
-                                   std::filesystem::perms::group_read | std::filesystem::perms::others_read);
   commit_file(temporary, path);
 }
 

@@ -95,12 +95,13 @@ class Evaluator {
       }
       const DesignFile design = read_design(document, where);
       row.name = design.name;
-      const Fidelity fidelity = options_.fidelity == "rigid"      ? Fidelity::kRigid
-                                : options_.fidelity == "modal"    ? Fidelity::kModal
-                                : options_.fidelity == "response" ? Fidelity::kResponse
-                                                                  : needed_fidelity(design.design);
+      const std::string& chosen = options_.fidelity.empty() ? design.fidelity : options_.fidelity;
+      const Fidelity fidelity = chosen == "rigid"      ? Fidelity::kRigid
+                                : chosen == "modal"    ? Fidelity::kModal
+                                : chosen == "response" ? Fidelity::kResponse
+                                                       : needed_fidelity(design.design);
       try {
-        row.evaluation = evaluate(design.design, fidelity);
+        row.evaluation = evaluate(design.design, fidelity, options_.modal_tolerance);
       } catch (const std::invalid_argument& e) {
         rethrow_in(design, e);
       }

@@ -167,8 +167,10 @@ void bench_optimize(const BenchOptions& options, std::ostream& log) {
         "| fidelity | time per evaluation (us) | COR used | peak wrist force (N) | error in F_w |\n"
         "|---|---:|---:|---:|---:|\n";
   csv += "\nfidelity,median_us,cor,peak_wrist_force_N,relative_error_Fw\n";
-  for (const auto& [name, fidelity] : {std::pair{"rigid", Fidelity::kRigid}, std::pair{"modal", Fidelity::kModal},
-                                       std::pair{"response", Fidelity::kResponse}}) {
+  for (const auto& level : {std::pair{"rigid", Fidelity::kRigid}, std::pair{"modal", Fidelity::kModal},
+                            std::pair{"response", Fidelity::kResponse}}) {
+    const char* name = level.first;
+    const Fidelity fidelity = level.second;  // a variable, not a binding: lambdas capture it everywhere
     const Design& d = fidelity == Fidelity::kResponse ? flexible : assumed;
     constexpr int kCalls = 200;
     Evaluation e = evaluate(d, fidelity);

@@ -62,7 +62,7 @@ const std::array kOutputs{
     OutputSpec{"peak_impact_force_N", "N", "peak force on the strings, F0 (Eq. 15)",
                [](const Evaluation& e) -> std::optional<double> { return e.peak_impact_force_N; }, ""},
     OutputSpec{"wrist_force_ratio", "",
-               "F_w / F (Eq. 11); > 0 pushes the wrist along with the ball, < 0 back",
+               "F_w / F (Eq. 11); > 0 jerks the forearm towards the outgoing ball, < 0 away",
                [](const Evaluation& e) -> std::optional<double> { return e.wrist_force_ratio; }, ""},
     OutputSpec{"peak_wrist_force_N", "N", "peak shock force on the wrist, |F_w / F| F0",
                [](const Evaluation& e) -> std::optional<double> { return e.peak_wrist_force_N; }, "",

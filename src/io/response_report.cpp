@@ -12,6 +12,9 @@
 namespace sweetspot::io {
 namespace {
 
+// One pound-force [N], for tensions as stringers quote them.
+constexpr double kNewtonsPerPoundForce = 4.4482216152605;
+
 // Modes summed in the response (the paper saw one; the rest show 1.5/T at work).
 constexpr int kResponseModes = 6;
 
@@ -197,9 +200,9 @@ std::vector<ReportEntry> write_response_reports(const std::string& designs_dir, 
     StringBed b = bed;
     b.tension_N = t;
     const TensionDuration r = tension_impact_duration(b, d.ball.mass_kg, M_eff);
-    tcsv += fmt::format("{},{},{},{}\n", exact(t), exact(t / 4.4482216152605), exact(r.duration_s),
+    tcsv += fmt::format("{},{},{},{}\n", exact(t), exact(t / kNewtonsPerPoundForce), exact(r.duration_s),
                         exact(r.string_bed_stiffness_N_m));
-    tmd += fmt::format("| {:.0f} | {:.0f} | {:.2f} | {:.1f} |\n", t, t / 4.4482216152605, r.duration_s * 1e3,
+    tmd += fmt::format("| {:.0f} | {:.0f} | {:.2f} | {:.1f} |\n", t, t / kNewtonsPerPoundForce, r.duration_s * 1e3,
                        r.string_bed_stiffness_N_m / 1e3);
     series.x.push_back(t);
     series.y.push_back(r.duration_s * 1e3);
@@ -207,7 +210,7 @@ std::vector<ReportEntry> write_response_reports(const std::string& designs_dir, 
   const auto t4 = tension_for_duration(bed, 0.004, d.ball.mass_kg, M_eff);
   const auto t6 = tension_for_duration(bed, 0.006, d.ball.mass_kg, M_eff);
   const auto show = [](const std::optional<double>& t) {
-    return t ? fmt::format("{:.0f} N ({:.0f} lb)", *t, *t / 4.4482216152605) : std::string("no tension");
+    return t ? fmt::format("{:.0f} N ({:.0f} lb)", *t, *t / kNewtonsPerPoundForce) : std::string("no tension");
   };
   const std::string where = fmt::format("T = 4 ms at {}, T = 6 ms at {}", show(t4), show(t6));
   tmd += "\nTable I's durations: " + where +

@@ -12,8 +12,11 @@
 namespace sweetspot::io {
 namespace {
 
-// Default grid resolution of a sweep variable.
+// Default grid resolution of a sweep variable, and the limits of a grid
+// (points per variable, and in all: a sweep streams, but time is finite).
 constexpr int kDefaultGridPoints = 21;
+constexpr double kMaxGridPoints = 1e7;
+constexpr double kMaxGridTotal = 1e8;
 // A target met to this fraction counts as reached.
 constexpr double kTargetReached = 1e-4;
 // A constraint within this fraction of its limit counts as active.
@@ -61,6 +64,7 @@ StudyVariable read_variable(ObjectReader& r, const Json& design, int grid_points
   } catch (const Json::exception&) {
     r.fail("path", "\"" + v.pointer + "\" is not a JSON pointer (it starts with /)");
   }
+  if (v.pointer.rfind("/reference", 0) == 0) r.fail("path", "\"" + v.pointer + "\" is a published value, not an input");
   if (v.pointer.empty() || !design.contains(pointer)) {
     r.fail("path", "\"" + v.pointer + "\" is not in the design");
   }
@@ -89,8 +93,8 @@ StudyVariable read_variable(ObjectReader& r, const Json& design, int grid_points
     v.max = *std::max_element(v.values.begin(), v.values.end());
   }
   const auto points = r.number("points");
-  if (points && !(*points >= 1 && *points == std::floor(*points))) {
-    r.fail("points", "must be a whole number >= 1, got " + brief(Json(*points)));
+  if (points && !(*points >= 1 && *points <= kMaxGridPoints && *points == std::floor(*points))) {
+    r.fail("points", "must be a whole number in [1, 1e7], got " + brief(Json(*points)));
   }
   if (v.values.empty()) v.values = linspace(v.min, v.max, points ? static_cast<int>(*points) : grid_points);
   const auto start = r.number("start");
@@ -252,8 +256,8 @@ Study read_study(const Json& document, const std::string& source, const std::str
   if (const Json* grid = top.child("grid")) {
     ObjectReader g(*grid, "/grid", "grid", source, nullptr);
     const auto points = g.number("points");
-    if (points && !(*points >= 1 && *points == std::floor(*points))) {
-      g.fail("points", "must be a whole number >= 1, got " + brief(Json(*points)));
+    if (points && !(*points >= 1 && *points <= kMaxGridPoints && *points == std::floor(*points))) {
+      g.fail("points", "must be a whole number in [1, 1e7], got " + brief(Json(*points)));
     }
     if (points) grid_points = static_cast<int>(*points);
     g.finish({"points"});
@@ -261,6 +265,7 @@ Study read_study(const Json& document, const std::string& source, const std::str
 
   const Json& variables = array_at(top, "variables", true);
   if (variables.empty()) top.fail("variables", "expected at least one variable");
+  if (variables.size() > 64) top.fail("variables", "at most 64 variables, got " + std::to_string(variables.size()));
   for (std::size_t i = 0; i < variables.size(); ++i) {
     ObjectReader r(variables[i], "/variables/" + std::to_string(i), "", source, nullptr);
     study.variables.push_back(read_variable(r, study.design_document, grid_points));
@@ -269,6 +274,14 @@ Study read_study(const Json& document, const std::string& source, const std::str
         r.fail("path", "repeats /variables/" + std::to_string(j) + "/path");
       }
     }
+  }
+
+  double total = 1.0;
+  for (std::size_t i = 0; i < std::min<std::size_t>(2, study.variables.size()); ++i) {
+    total *= static_cast<double>(study.variables[i].values.size());
+  }
+  if (total > kMaxGridTotal) {
+    top.fail("variables", "a grid of " + brief(Json(total)) + " points is more than 1e8");
   }
 
   if (const Json* objective = top.child("objective")) {
@@ -333,7 +346,9 @@ Study read_study(const Json& document, const std::string& source, const std::str
     top.fail("local_algorithm", "unknown algorithm \"" + o.local_algorithm + "\"");
   }
   if (const auto seed = top.number("seed")) {
-    if (!(*seed >= 0 && *seed == std::floor(*seed))) top.fail("seed", "must be a whole number >= 0");
+    if (!(*seed >= 0 && *seed <= 4294967295.0 && *seed == std::floor(*seed))) {
+      top.fail("seed", "must be a whole number in [0, 4294967295], got " + brief(Json(*seed)));
+    }
     o.seed = static_cast<unsigned long>(*seed);
   }
   if (const Json* tolerances = top.child("tolerances")) {
@@ -374,6 +389,19 @@ Study read_study(const Json& document, const std::string& source, const std::str
     }
   } else if (fidelity != "rigid") {
     top.fail("fidelity", "expected \"rigid\", \"modal\", \"response\" or \"auto\", got \"" + fidelity + "\"");
+  }
+  {
+    std::vector<const OutputSpec*> used = study.sweep_outputs;
+    for (const ObjectiveTerm& t : study.objective) used.push_back(t.output);
+    for (const StudyConstraint& c : study.constraints) used.push_back(c.output);
+    for (const OutputSpec* o : used) {
+      const bool too_low = (o->needs_response && study.fidelity != Fidelity::kResponse) ||
+                           (o->needs_modes && study.fidelity == Fidelity::kRigid);
+      if (too_low) {
+        top.fail("fidelity", "\"" + fidelity + "\" cannot give " + std::string(o->name) +
+                                 "; use \"auto\" or a higher fidelity");
+      }
+    }
   }
   if (const auto tolerance = top.number("modal_tolerance")) {
     if (!(*tolerance >= 1e-8 && *tolerance <= 0.1)) {
@@ -504,7 +532,7 @@ OptimizationResult run_optimization(const Study& study) {
     const double limit = limit_of(pc);
     const bool equality = pc.which == ProblemConstraint::kEquals;
     reports.push_back(ConstraintReport{
-        constraint_name(pc), *pc.source->output->value(e),
+        constraint_name(pc), pc.source->output->value(e).value_or(std::nan("")),
         equality ? std::abs(value) <= pc.source->tolerance : value <= pc.source->tolerance,
         equality || std::abs(value) <= std::max(pc.source->tolerance, kActiveFraction * std::max(1.0, std::abs(limit)))});
   }
@@ -539,7 +567,10 @@ std::string optimization_report(const Study& study, const OptimizationResult& r,
     }
     j["constraints"] = Json::array();
     for (const ConstraintReport& c : r.constraints) {
-      j["constraints"].push_back({{"constraint", c.name}, {"value", c.value}, {"satisfied", c.satisfied}, {"active", c.active}});
+      j["constraints"].push_back({{"constraint", c.name},
+                                  {"value", std::isnan(c.value) ? Json(nullptr) : Json(c.value)},
+                                  {"satisfied", c.satisfied},
+                                  {"active", c.active}});
     }
     for (const OutputSpec& o : output_specs()) {
       const auto a = o.value(start), b = o.value(best);
@@ -603,7 +634,8 @@ std::string optimization_report(const Study& study, const OptimizationResult& r,
   if (!r.constraints.empty()) {
     md += "\n## Constraints\n\n| constraint | value at the optimum | satisfied | active |\n|---|---:|---|---|\n";
     for (const ConstraintReport& c : r.constraints) {
-      md += fmt::format("| `{}` | {} | {} | {} |\n", c.name, significant(c.value), c.satisfied ? "yes" : "**no**",
+      md += fmt::format("| `{}` | {} | {} | {} |\n", c.name,
+                        std::isnan(c.value) ? std::string("—") : significant(c.value), c.satisfied ? "yes" : "**no**",
                         c.active ? "yes" : "no");
     }
   }

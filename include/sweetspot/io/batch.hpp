@@ -26,7 +26,8 @@ struct BatchOptions {
   std::optional<Json> base;       // defaults for every row ("--base DESIGN.json")
   Format format = Format::kCsv;   // kCsv or kJson (JSON Lines out)
   int threads = 1;                // >= 1
-  std::string fidelity = "auto";  // rigid, modal or auto
+  std::string fidelity;           // rigid, modal, response or auto; empty: each design's own
+  double modal_tolerance = 1e-6;  // the hand-held modes' relative frequency error
 };
 
 struct BatchSummary {
