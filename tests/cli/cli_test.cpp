@@ -419,3 +419,59 @@ TEST_CASE("A design's own fidelity is used unless the command line says otherwis
 }
 
 }  // namespace
+
+namespace {
+
+TEST_CASE("A usage error is one line on stderr, prefixed, exit 2") {
+  const Sandbox box;
+  for (const char* args : {"evaluate", "bogus", "evaluate x.json --threads 0", "response x.json --until-ms -5"}) {
+    INFO(args);
+    const Run run = box.run(args);
+    CHECK(run.status == 2);
+    CHECK(run.err.rfind("sweetspot: ", 0) == 0);
+    CHECK(std::count(run.err.begin(), run.err.end(), '\n') == 1);
+  }
+}
+
+TEST_CASE("Output that cannot be written exits 1, and streamed files are readable by all") {
+  const Sandbox box;
+  const std::string full = std::string("\"") + SWEETSPOT_CLI + "\" evaluate \"" + SWEETSPOT_SOURCE_DIR +
+                           "/designs/table1/row1.json\" >/dev/full 2>/dev/null";
+  const int raw = std::system(full.c_str());
+  CHECK((WIFEXITED(raw) && WEXITSTATUS(raw) == 1));
+  const fs::path csv = box.path("sweep.csv");
+  REQUIRE(box.run(std::string("sweep \"") + SWEETSPOT_SOURCE_DIR +
+                  "/designs/studies/5b-sweep-wrist-force-forearm-mass.json\" -q -o \"" + csv.string() + "\"")
+              .status == 0);
+  CHECK((fs::status(csv).permissions() & fs::perms::others_read) != fs::perms::none);
+}
+
+TEST_CASE("A study whose fidelity cannot give its outputs, or whose grid is absurd, exits 2") {
+  const Sandbox box;
+  const std::string design = std::string(SWEETSPOT_SOURCE_DIR) + "/designs/studies/table1-racquet-flexible.json";
+  const fs::path rigid = box.file("rigid.json", R"({"design": ")" + design + R"(", "fidelity": "rigid",
+      "variables": [{"path": "/implement/mass_kg", "min": 0.25, "max": 0.4}],
+      "objective": {"output": "peak_wrist_force_N"},
+      "constraints": [{"output": "fundamental_free_Hz", "min": 100}]})");
+  const Run a = box.run("optimize \"" + rigid.string() + "\"");
+  CHECK(a.status == 2);
+  CHECK(a.err.find(rigid.string() + ": /fidelity") != std::string::npos);
+  const fs::path huge = box.file("huge.json", R"({"design": ")" + design + R"(",
+      "variables": [{"path": "/implement/mass_kg", "min": 0.25, "max": 0.4, "points": 1e10}],
+      "outputs": ["peak_wrist_force_N"]})");
+  const Run b = box.run("sweep \"" + huge.string() + "\"");
+  CHECK(b.status == 2);
+  CHECK(b.err.find(huge.string() + ": /variables/0/points") != std::string::npos);
+}
+
+TEST_CASE("evaluate --batch uses each design's own fidelity unless --fidelity is given") {
+  const Sandbox box;
+  const fs::path lines = box.file("d.jsonl", R"({"fidelity": "modal", "implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8}}
+)");
+  const Run own = box.run("evaluate --batch \"" + lines.string() + "\" --format json");
+  CHECK(own.status == 1);  // modal without a stiffness: that row fails
+  CHECK(own.out.find("/frame/EI_N_m2") != std::string::npos);
+  CHECK(box.run("evaluate --batch \"" + lines.string() + "\" --fidelity rigid").status == 0);
+}
+
+}  // namespace
