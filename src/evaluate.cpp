@@ -98,9 +98,10 @@ Evaluation evaluate(const Design& design, Fidelity fidelity, double rel_tol) {
   return e;
 }
 
-Evaluation evaluate_unchecked(const Design& d) {
-  const MassProperties& body = d.implement.mass_properties();
-  const double x = d.impact_from_butt_m;
+namespace {
+
+// The parts of the rigid evaluation that do not depend on the impact point.
+Evaluation design_part(const Design& d, const MassProperties& body, const MassProperties& system) {
   Evaluation e;
   e.cor = d.cor;
   e.impact_duration_s = d.impact_duration_s;
@@ -109,27 +110,55 @@ Evaluation evaluate_unchecked(const Design& d) {
   e.balance_from_butt_m = body.com_from_butt_m;
   e.I_cm_kg_m2 = body.I_cm_kg_m2;
   e.swingweight_kg_m2 = swingweight_kg_m2(body);
+  e.cop_free_from_butt_m = free_conjugate_from_butt(body, 0.0);
+  e.system_mass_kg = system.mass_kg;
+  e.system_com_from_butt_m = system.com_from_butt_m;
+  e.system_I_cm_kg_m2 = system.I_cm_kg_m2;
+  e.cop_hand_from_butt_m = hand_held_cop_from_butt(system);
+  return e;
+}
+
+// The parts that do: Eqs. (5), (11), (12), (15)-(17) at x.
+void impact_part(const Design& d, const MassProperties& body, const MassProperties& system, double x,
+                 Evaluation& e) {
   e.impact_from_butt_m = x;
   e.impact_from_com_m = x - body.com_from_butt_m;
-  e.cop_free_from_butt_m = free_conjugate_from_butt(body, 0.0);
   e.rotation_axis_free_from_butt_m = free_conjugate_from_butt(body, x);
-
   e.effective_mass_kg = effective_mass(body, x);
   e.apparent_cor = apparent_cor(d.cor, e.effective_mass_kg, d.ball.mass_kg);
   e.rebound_speed_m_s = e.apparent_cor * d.ball.speed_m_s;
   e.impulse_N_s = d.ball.mass_kg * (1.0 + e.apparent_cor) * d.ball.speed_m_s;
   e.peak_impact_force_N =
       peak_impact_force(d.ball.mass_kg, d.ball.speed_m_s, e.apparent_cor, d.impact_duration_s);
-
-  const MassProperties system = hand_held_system(d);
-  e.system_mass_kg = system.mass_kg;
-  e.system_com_from_butt_m = system.com_from_butt_m;
-  e.system_I_cm_kg_m2 = system.I_cm_kg_m2;
-  e.cop_hand_from_butt_m = hand_held_cop_from_butt(system);
   e.rotation_axis_hand_from_butt_m =
       hand_held_rotation_axis_from_butt(system, d.forearm_equivalent_mass_kg, x);
   e.wrist_force_ratio = wrist_force_ratio(system, d.forearm_equivalent_mass_kg, x);
   e.peak_wrist_force_N = std::abs(e.wrist_force_ratio) * e.peak_impact_force_N;
+}
+
+}  // namespace
+
+Evaluation evaluate_unchecked(const Design& d) {
+  const MassProperties& body = d.implement.mass_properties();
+  const MassProperties system = hand_held_system(d);
+  Evaluation e = design_part(d, body, system);
+  impact_part(d, body, system, d.impact_from_butt_m, e);
+  return e;
+}
+
+ImpactSweep::ImpactSweep(const Design& design)
+    : design_(design), system_(hand_held_system(design)) {
+  if (design.cor_rigid || design.strings) {
+    throw std::invalid_argument(
+        "frame/cor_rigid: ImpactSweep evaluates the rigid model with a given COR and duration");
+  }
+  validate(design_);
+  base_ = design_part(design_, design_.implement.mass_properties(), system_);
+}
+
+Evaluation ImpactSweep::at(double impact_from_butt_m) const {
+  Evaluation e = base_;
+  impact_part(design_, design_.implement.mass_properties(), system_, impact_from_butt_m, e);
   return e;
 }
 

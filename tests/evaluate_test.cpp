@@ -102,3 +102,29 @@ TEST_CASE("Out-of-range design values are refused with their JSON path") {
 
 }  // namespace
 }  // namespace sweetspot
+
+namespace sweetspot {
+namespace {
+
+TEST_CASE("An impact sweep gives exactly what evaluating each impact gives") {
+  for (const TableRow& row : kTableI) {
+    const Design d = table_design(row);
+    const ImpactSweep sweep(d);
+    for (double x = 0.0; x <= 0.70; x += 0.035) {
+      Design at = d;
+      at.impact_from_butt_m = x;
+      const Evaluation a = sweep.at(x);
+      const Evaluation b = evaluate_unchecked(at);
+      CHECK(a.peak_wrist_force_N == b.peak_wrist_force_N);
+      CHECK(a.peak_impact_force_N == b.peak_impact_force_N);
+      CHECK(a.rotation_axis_hand_from_butt_m == b.rotation_axis_hand_from_butt_m);
+      CHECK(a.cop_hand_from_butt_m == b.cop_hand_from_butt_m);
+    }
+  }
+  Design derived = table_design(kTableI[0]);
+  derived.cor_rigid = 0.85;
+  CHECK_THROWS_AS(ImpactSweep(derived), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace sweetspot

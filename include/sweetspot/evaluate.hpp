@@ -89,4 +89,21 @@ Evaluation evaluate(const Design& design, Fidelity fidelity, double rel_tol = 1e
 // validated once and evaluate many impacts or variants in a loop. No allocation.
 Evaluation evaluate_unchecked(const Design& design);
 
+// The rigid model of one design at many impact points (a player's spread of
+// hits, a sweep along the strings): what does not depend on the impact point
+// is computed once. at() allocates nothing and does not check the impact
+// point (keep it on the implement). The design's COR and duration are used as
+// given: a design with cor_rigid or a string tension is refused.
+class ImpactSweep {
+ public:
+  // Validates the design; throws std::invalid_argument like evaluate().
+  explicit ImpactSweep(const Design& design);
+  Evaluation at(double impact_from_butt_m) const;
+
+ private:
+  Design design_;
+  MassProperties system_;
+  Evaluation base_;
+};
+
 }  // namespace sweetspot

@@ -455,16 +455,26 @@ double objective_of(const Study& study, const DesignFile& design) {
   const ImpactSpread& spread = *study.over_impacts;
   Design d = design.design;
   const double L = d.implement.length_m();
+  const auto from_butt = [&](int k) {
+    return L - (spread.from_tip_lo_m + (spread.from_tip_hi_m - spread.from_tip_lo_m) * k / (spread.points - 1));
+  };
+  // The rigid model at many impacts shares everything but the impact (ImpactSweep).
+  std::optional<ImpactSweep> rigid;
+  if (study.fidelity == Fidelity::kRigid && !d.cor_rigid && !d.strings) rigid.emplace(d);
   double reduced = spread.reduce == ImpactSpread::Reduce::kMax ? -kPenalty : 0.0;
   for (int k = 0; k < spread.points; ++k) {
-    const double from_tip = spread.from_tip_lo_m + (spread.from_tip_hi_m - spread.from_tip_lo_m) * k /
-                                                       (spread.points - 1);
-    d.impact_from_butt_m = L - from_tip;
-    double value = kPenalty;
-    try {
-      value = terms_value(study, evaluate(d, study.fidelity, study.modal_tolerance));
-    } catch (const std::invalid_argument&) {
-      // an impact off the implement: the penalty stands
+    const double x = from_butt(k);
+    double value = kPenalty;  // an impact off the implement keeps the penalty
+    if (x >= 0.0 && x <= L) {
+      if (rigid) {
+        value = terms_value(study, rigid->at(x));
+      } else {
+        d.impact_from_butt_m = x;
+        try {
+          value = terms_value(study, evaluate(d, study.fidelity, study.modal_tolerance));
+        } catch (const std::invalid_argument&) {
+        }
+      }
     }
     reduced = spread.reduce == ImpactSpread::Reduce::kMax ? std::max(reduced, value) : reduced + value / spread.points;
   }
