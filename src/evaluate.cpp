@@ -78,7 +78,8 @@ Evaluation evaluate(const Design& design, Fidelity fidelity, double rel_tol) {
     const double f1 = e.modal->fundamental_free_Hz;
     if (f1 > limit_Hz) {
       const double x = 2.0 * f1 * resolved.impact_duration_s;
-      e.fidelity_note = "the free fundamental (" + std::to_string(static_cast<int>(std::lround(f1))) +
+      if (!e.details) e.details.emplace();
+      e.details->fidelity_note = "the free fundamental (" + std::to_string(static_cast<int>(std::lround(f1))) +
                         " Hz) is above 1.5/T = " + std::to_string(static_cast<int>(std::lround(limit_Hz))) +
                         " Hz: the impact barely excites the frame (every mode keeps at most " +
                         std::to_string(1.0 / ((x * x - 1) * (x * x - 1))) +
@@ -89,7 +90,8 @@ Evaluation evaluate(const Design& design, Fidelity fidelity, double rel_tol) {
     for (std::size_t k = 0; k < derived->mode_energy_J.size(); ++k) {
       // With a given COR the energies scale with the impulse squared, as the total does.
       const double scale = design.cor_rigid ? 1.0 : *vibration_energy / derived->vibration_energy_J;
-      e.vibration_modes.emplace_back(mode_frequencies_Hz[k], derived->mode_energy_J[k] * scale);
+      if (!e.details) e.details.emplace();
+      e.details->vibration_modes.emplace_back(mode_frequencies_Hz[k], derived->mode_energy_J[k] * scale);
     }
     e.cor_derived = design.cor_rigid.has_value();
     e.vibration_energy_J = design.cor_rigid ? derived->vibration_energy_J : *vibration_energy;

@@ -55,11 +55,16 @@ struct Evaluation {
   // Fidelity::kResponse only [J], and its share of the ball's kinetic energy.
   std::optional<double> vibration_energy_J;
   std::optional<double> vibration_share;
-  // Per mode of the free frame (response): damped frequency [Hz] and the energy it keeps [J].
-  std::vector<std::pair<double, double>> vibration_modes;
-  // Why a cheaper model would have done (empty when nothing to say), e.g. a
-  // fundamental above 1.5/T, which the impact barely excites.
-  std::string fidelity_note;
+  // What only the modal and response models add beyond numbers; absent for the
+  // rigid model, so that a rigid Evaluation copies as plain data.
+  struct Details {
+    // Per mode of the free frame (response): damped frequency [Hz] and the energy it keeps [J].
+    std::vector<std::pair<double, double>> vibration_modes;
+    // Why a cheaper model would have done (empty when nothing to say), e.g. a
+    // fundamental above 1.5/T, which the impact barely excites.
+    std::string fidelity_note;
+  };
+  std::optional<Details> details;
 };
 
 // How much model an evaluation uses: the rigid body of the paper alone; also

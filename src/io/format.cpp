@@ -77,11 +77,12 @@ Json evaluation_json(const DesignFile& file, const Evaluation& e) {
     outputs[std::string(output.name)] = value ? Json(*value) : Json(nullptr);
     if (!value) notes[std::string(output.name)] = output.when_absent;
   }
-  if (!e.fidelity_note.empty()) notes["fidelity"] = e.fidelity_note;
+  const Evaluation::Details details = e.details.value_or(Evaluation::Details{});
+  if (!details.fidelity_note.empty()) notes["fidelity"] = details.fidelity_note;
   j["notes"] = notes;
-  if (!e.vibration_modes.empty()) {
+  if (!details.vibration_modes.empty()) {
     j["vibration_modes"] = Json::array();
-    for (const auto& [frequency, energy] : e.vibration_modes) {
+    for (const auto& [frequency, energy] : details.vibration_modes) {
       j["vibration_modes"].push_back({{"frequency_Hz", frequency}, {"energy_J", energy}});
     }
   }
@@ -122,14 +123,15 @@ std::string evaluation_report(const DesignFile& file, const Evaluation& e, Forma
   if (!e.modal) {
     md += "\nVibration modes: not evaluated (rigid fidelity; they need the frame's stiffness).\n";
   }
-  if (!e.vibration_modes.empty()) {
+  const Evaluation::Details details = e.details.value_or(Evaluation::Details{});
+  if (!details.vibration_modes.empty()) {
     md += "\nEnergy each mode of the free frame keeps after the impact:\n\n| mode | frequency (Hz) | energy (J) |\n|---:|---:|---:|\n";
-    for (std::size_t k = 0; k < e.vibration_modes.size(); ++k) {
-      md += fmt::format("| {} | {:.1f} | {} |\n", k + 1, e.vibration_modes[k].first,
-                        significant(e.vibration_modes[k].second, 4));
+    for (std::size_t k = 0; k < details.vibration_modes.size(); ++k) {
+      md += fmt::format("| {} | {:.1f} | {} |\n", k + 1, details.vibration_modes[k].first,
+                        significant(details.vibration_modes[k].second, 4));
     }
   }
-  if (!e.fidelity_note.empty()) md += "\nNote: " + e.fidelity_note + ".\n";
+  if (!details.fidelity_note.empty()) md += "\nNote: " + details.fidelity_note + ".\n";
   md += "\nInputs (SI; *default* values are Cross (2004) Table I, top row):\n\n";
   const Json inputs = inputs_json(file, e);
   for (const auto& [name, input] : inputs.items()) {
