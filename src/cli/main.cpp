@@ -214,18 +214,8 @@ struct SweepCommand {
     if (csv_path.empty()) {
       plots = sweetspot::io::run_sweep(study, std::cout, progress);
     } else {
-      // Stream into a temporary file beside the target; rename when complete.
-      const std::string temporary = sweetspot::io::temporary_path_for(csv_path);
-      try {
-        std::ofstream file(temporary, std::ios::binary);
-        plots = sweetspot::io::run_sweep(study, file, progress);
-        file.close();
-        if (!file) throw std::runtime_error("cannot write " + csv_path);
-        sweetspot::io::commit_file(temporary, csv_path);
-      } catch (...) {
-        sweetspot::io::discard_file(temporary);
-        throw;
-      }
+      sweetspot::io::write_stream_atomically(
+          csv_path, [&](std::ostream& file) { plots = sweetspot::io::run_sweep(study, file, progress); });
     }
     if (plot.empty()) return 0;
     if (plots.empty()) {
@@ -269,17 +259,8 @@ int run_batch_command(const std::string& path, const std::string& base, int thre
   if (out.output.empty()) {
     summary = sweetspot::io::run_batch(in, path, options, std::cout);
   } else {
-    const std::string temporary = sweetspot::io::temporary_path_for(out.output);
-    try {
-      std::ofstream file(temporary, std::ios::binary);
-      summary = sweetspot::io::run_batch(in, path, options, file);
-      file.close();
-      if (!file) throw std::runtime_error("cannot write " + out.output);
-      sweetspot::io::commit_file(temporary, out.output);
-    } catch (...) {
-      sweetspot::io::discard_file(temporary);
-      throw;
-    }
+    sweetspot::io::write_stream_atomically(
+        out.output, [&](std::ostream& file) { summary = sweetspot::io::run_batch(in, path, options, file); });
   }
   if (summary.failed > 0) {
     std::cerr << "sweetspot: " << summary.failed << " of " << summary.rows << " rows failed (see their error column)\n";

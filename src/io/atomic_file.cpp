@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <stdexcept>
 #include <vector>
 
@@ -42,6 +43,20 @@ void commit_file(const std::string& temporary, const std::string& path) {
 }
 
 void discard_file(const std::string& temporary) { std::remove(temporary.c_str()); }
+
+void write_stream_atomically(const std::string& path, const std::function<void(std::ostream&)>& write) {
+  const std::string temporary = temporary_path_for(path);
+  try {
+    std::ofstream file(temporary, std::ios::binary);
+    write(file);
+    file.close();
+    if (!file) fail(path, "write failed");
+    commit_file(temporary, path);
+  } catch (...) {
+    discard_file(temporary);
+    throw;
+  }
+}
 
 void write_file_atomically(const std::string& path, std::string_view content) {
   const std::string temporary = temporary_path_for(path);

@@ -23,6 +23,20 @@ std::optional<double> from_tip(const Evaluation& e, const std::optional<double>&
   return e.length_m - *from_butt;
 }
 
+// A number of the modal outputs, absent without them.
+template <double ModalOutputs::*Field>
+std::optional<double> modal(const Evaluation& e) {
+  if (!e.modal) return std::nullopt;
+  return (*e.modal).*Field;
+}
+
+// A node of the modal outputs, measured from the tip.
+template <std::optional<double> ModalOutputs::*Field>
+std::optional<double> modal_from_tip(const Evaluation& e) {
+  if (!e.modal) return std::nullopt;
+  return from_tip(e, (*e.modal).*Field);
+}
+
 const std::array kOutputs{
     OutputSpec{"length_m", "m", "length, butt to tip",
                [](const Evaluation& e) -> std::optional<double> { return e.length_m; }, ""},
@@ -82,34 +96,19 @@ const std::array kOutputs{
                [](const Evaluation& e) { return e.rotation_axis_hand_from_butt_m; },
                "at infinity: implement, hand and forearm translate without rotating"},
     OutputSpec{"fundamental_free_Hz", "Hz", "fundamental bending frequency of the free implement",
-               [](const Evaluation& e) -> std::optional<double> {
-                 if (!e.modal) return std::nullopt;
-                 return e.modal->fundamental_free_Hz;
-               },
+               &modal<&ModalOutputs::fundamental_free_Hz>,
                kNeedsModes, false, true},
     OutputSpec{"node_free_from_tip_m", "m", "node of the free fundamental nearest the tip",
-               [](const Evaluation& e) -> std::optional<double> {
-                 if (!e.modal) return std::nullopt;
-                 return from_tip(e, e.modal->node_free_from_butt_m);
-               },
+               &modal_from_tip<&ModalOutputs::node_free_from_butt_m>,
                kNeedsModes, false, true},
     OutputSpec{"fundamental_hand_Hz", "Hz", "damped fundamental of the hand-held implement",
-               [](const Evaluation& e) -> std::optional<double> {
-                 if (!e.modal) return std::nullopt;
-                 return e.modal->fundamental_hand_Hz;
-               },
+               &modal<&ModalOutputs::fundamental_hand_Hz>,
                kNeedsModes, false, true},
     OutputSpec{"hand_damping_ratio", "", "damping ratio of the hand-held fundamental",
-               [](const Evaluation& e) -> std::optional<double> {
-                 if (!e.modal) return std::nullopt;
-                 return e.modal->hand_damping_ratio;
-               },
+               &modal<&ModalOutputs::hand_damping_ratio>,
                kNeedsModes, false, true},
     OutputSpec{"node_hand_from_tip_m", "m", "node of the hand-held fundamental nearest the tip",
-               [](const Evaluation& e) -> std::optional<double> {
-                 if (!e.modal) return std::nullopt;
-                 return from_tip(e, e.modal->node_hand_from_butt_m);
-               },
+               &modal_from_tip<&ModalOutputs::node_hand_from_butt_m>,
                kNeedsModes, false, true},
     OutputSpec{"cop_node_gap_m", "m",
                "hand-held COP minus node, both from the tip (> 0: the COP is nearer the hand)",

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <functional>
+#include <ostream>
 #include <string>
 #include <string_view>
 
@@ -10,6 +12,11 @@ namespace sweetspot::io {
 // it, and a failed run leaves an existing file untouched. Throws
 // std::runtime_error naming the path when the file cannot be written.
 void write_file_atomically(const std::string& path, std::string_view content);
+
+// The same for output produced as a stream (a sweep, a batch): `write` fills
+// a temporary file beside `path`, which replaces `path` only when complete.
+// If `write` throws, the temporary is removed and the exception goes on.
+void write_stream_atomically(const std::string& path, const std::function<void(std::ostream&)>& write);
 
 // A temporary path beside `path` for a writer that is not ours (gnuplot);
 // commit_file() renames it over `path`, discard_file() removes it.
