@@ -11,6 +11,7 @@
 namespace sweetspot::io {
 namespace {
 
+// A double-quoted gnuplot string (a file name: taken as it is).
 std::string quoted(const std::string& text) {
   std::string out = "\"";
   for (const char c : text) {
@@ -18,6 +19,17 @@ std::string quoted(const std::string& text) {
     out += c;
   }
   return out + "\"";
+}
+
+// A double-quoted label that the enhanced text mode prints as it is: an
+// underscore is a literal (output names are snake_case), not a subscript.
+std::string label(const std::string& text) {
+  std::string escaped;
+  for (const char c : text) {
+    if (c == '_' || c == '^') escaped += '\\';
+    escaped += c;
+  }
+  return quoted(escaped);
 }
 
 bool on_plot(const Plot& plot, double y) {
@@ -30,26 +42,26 @@ std::string gnuplot_script(const Plot& plot, const std::string& png_path) {
   std::string s;
   s += "set terminal pngcairo size 960,640 enhanced font 'DejaVu Sans,11'\n";
   s += "set output " + quoted(png_path) + "\n";
-  s += "set title " + quoted(plot.title) + "\n";
-  s += "set xlabel " + quoted(plot.x_label) + "\n";
-  s += "set ylabel " + quoted(plot.y_label) + "\n";
+  s += "set title " + label(plot.title) + "\n";
+  s += "set xlabel " + label(plot.x_label) + "\n";
+  s += "set ylabel " + label(plot.y_label) + "\n";
   s += "set grid\nset key " + plot.key_position + " box opaque\n";
   if (plot.log_x) s += "set logscale x\nset format x '10^{%L}'\n";
   if (plot.log_y) s += "set logscale y\nset format y '10^{%L}'\n";
   if (plot.x_range) s += fmt::format("set xrange [{}:{}]\n", plot.x_range->first, plot.x_range->second);
   if (plot.y_range) s += fmt::format("set yrange [{}:{}]\n", plot.y_range->first, plot.y_range->second);
   int tag = 1;
-  for (const auto& [x, label] : plot.vertical_lines) {
+  for (const auto& [x, text] : plot.vertical_lines) {
     s += fmt::format("set arrow {} from {},graph 0 to {},graph 1 nohead dt 2 lc rgb 'gray40'\n", tag,
                      x, x);
     // Stagger the labels so that neighbouring lines do not overwrite each other.
     s += fmt::format("set label {} {} at {},graph {} left offset 0.5,0 tc rgb 'gray30'\n", tag,
-                     quoted(label), x, 0.96 - 0.06 * (tag - 1));
+                     label(text), x, 0.96 - 0.06 * (tag - 1));
     ++tag;
   }
   for (const PlotMarker& m : plot.markers) {
     s += fmt::format("set label {} {} at {},{} left offset 1,-1 point pt 7 ps 1.2\n", tag++,
-                     quoted(m.label), m.x, m.y);
+                     label(m.label), m.x, m.y);
   }
   for (std::size_t i = 0; i < plot.series.size(); ++i) {
     const PlotSeries& series = plot.series[i];
@@ -72,7 +84,7 @@ std::string gnuplot_script(const Plot& plot, const std::string& png_path) {
   for (std::size_t i = 0; i < plot.series.size(); ++i) {
     if (i) s += ", \\\n     ";
     s += fmt::format("$series{} using 1:2 with {} title {}", i, plot.series[i].style,
-                     quoted(plot.series[i].title));
+                     label(plot.series[i].title));
   }
   return s + "\n";
 }
