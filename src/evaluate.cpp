@@ -129,9 +129,8 @@ void impact_part(const Design& d, const MassProperties& body, const MassProperti
   e.effective_mass_kg = effective_mass(body, x);
   e.apparent_cor = apparent_cor(d.cor, e.effective_mass_kg, d.ball.mass_kg);
   e.rebound_speed_m_s = e.apparent_cor * d.ball.speed_m_s;
-  e.impulse_N_s = d.ball.mass_kg * (1.0 + e.apparent_cor) * d.ball.speed_m_s;
-  e.peak_impact_force_N =
-      peak_impact_force(d.ball.mass_kg, d.ball.speed_m_s, e.apparent_cor, d.impact_duration_s);
+  e.impulse_N_s = ball_impulse(d.ball.mass_kg, d.ball.speed_m_s, e.apparent_cor);
+  e.peak_impact_force_N = half_sine_peak_force(e.impulse_N_s, d.impact_duration_s);  // Eq. (15)
   e.rotation_axis_hand_from_butt_m =
       hand_held_rotation_axis_from_butt(system, d.forearm_equivalent_mass_kg, x);
   e.wrist_force_ratio = wrist_force_ratio(system, d.forearm_equivalent_mass_kg, x);

@@ -133,19 +133,6 @@ double fe_normalisation(const Mode& mode) {
   return mode.fe_dofs[2 * best] / mode.shape[best].derivatives[0];
 }
 
-MassProperties implement_mass_properties(const std::vector<Section>& sections,
-                                         const std::vector<PointMass>& point_masses) {
-  MassProperties body = section_mass_properties(sections);
-  for (const PointMass& p : point_masses) body = with_point_mass(body, p);
-  return body;
-}
-
-double total_length(const std::vector<Section>& sections) {
-  double length = 0.0;
-  for (const Section& s : sections) length += s.length_m;
-  return length;
-}
-
 ResponseMode prepare_mode(const Mode& mode, double normalisation) {
   ResponseMode out;
   out.mode = mode;
@@ -158,7 +145,7 @@ ResponseMode prepare_mode(const Mode& mode, double normalisation) {
 // 2 E_k / J^2 for mode k hit at x_F by a pulse of duration T: the closed form at t = T.
 double mode_energy_per_impulse_squared(const ResponseMode& mode, double phi_at_impact,
                                        double duration_s) {
-  const double unit_peak = kPi / (2.0 * duration_s);  // F0 of the unit impulse
+  const double unit_peak = half_sine_peak_force(1.0, duration_s);  // F0 of the unit impulse
   const ModalState s = half_sine_modal_response(mode.omega_rad_s, mode.damping_ratio,
                                                 unit_peak * phi_at_impact, duration_s, duration_s);
   return s.q_dot * s.q_dot + mode.omega_rad_s * mode.omega_rad_s * s.q * s.q;
@@ -186,7 +173,7 @@ double half_sine_impulse_until(const HalfSinePulse& pulse, double t_s) {
 HalfSinePulse half_sine_with_impulse(double impulse_N_s, double duration_s) {
   detail::require_at_least("impulse_N_s", impulse_N_s, 0.0, "N s");
   detail::require_positive("duration_s", duration_s, "s");
-  return {kPi * impulse_N_s / (2.0 * duration_s), duration_s};
+  return {half_sine_peak_force(impulse_N_s, duration_s), duration_s};
 }
 
 double half_sine_spectrum_ratio(double omega_rad_s, double duration_s) {
@@ -257,8 +244,9 @@ ResponseModel free_response_model(const std::vector<Section>& sections,
                                 detail::format_number(damping_ratio));
   }
   ResponseModel model;
-  model.rigid_body = implement_mass_properties(sections, point_masses);
-  model.length_m = total_length(sections);
+  const Implement implement = Implement::from_sections(sections, point_masses);
+  model.rigid_body = implement.mass_properties();
+  model.length_m = implement.length_m();
   for (const Mode& mode : free.modes) {
     if (mode.shape.empty() || std::abs(mode.shape.back().end_m - model.length_m) > 1e-9 * model.length_m) {
       throw std::invalid_argument("free.modes: shape does not span the sections' length " +
@@ -278,13 +266,14 @@ ResponseModel hand_held_response_model(const std::vector<Section>& sections,
                                        const std::vector<PointMass>& point_masses,
                                        const HandCoupling& hand, const ModalResult& hand_held) {
   detail::require_positive("hand.mass_kg", hand.mass_kg, "kg");
+  const Implement implement = Implement::from_sections(sections, point_masses);
   ResponseModel model;
   model.hand_held = true;
-  model.length_m = total_length(sections);
+  model.length_m = implement.length_m();
   const double grip_centre = hand.grip_start_m + 0.5 * hand.grip_length_m;
   require_on_implement("hand.grip centre", grip_centre, model.length_m);
   // The rigid-body motions hand_held_modes deflates: implement and hand moving together.
-  model.rigid_body = with_point_mass(implement_mass_properties(sections, point_masses),
+  model.rigid_body = with_point_mass(implement.mass_properties(),
                                      {grip_centre, hand.mass_kg});
   model.rigid_body.I_cm_kg_m2 += hand.rotary_inertia_kg_m2.value_or(
       hand.mass_kg * hand.grip_length_m * hand.grip_length_m / 12.0);
@@ -458,7 +447,7 @@ DerivedCor derive_cor(const ResponseModel& model, double impact_from_butt_m, dou
   }
   out.apparent_cor = apparent_cor(out.cor, out.effective_mass_kg, m);  // Eq. (16)
   out.pulse = {peak_impact_force(m, v1, out.apparent_cor, duration_s), duration_s};  // Eq. (15)
-  out.impulse_N_s = m * v1 * (1.0 + out.apparent_cor);
+  out.impulse_N_s = ball_impulse(m, v1, out.apparent_cor);
   const double j2 = out.impulse_N_s * out.impulse_N_s;
   out.collision_energy_J = 0.5 * m * v1 * v1;
   out.vibration_energy_J = 0.5 * j2 * out.vibration_compliance_per_kg;

@@ -95,11 +95,19 @@ double apparent_cor(double cor, double effective_mass_kg, double ball_mass_kg) {
   return (cor * effective_mass_kg - ball_mass_kg) / (effective_mass_kg + ball_mass_kg);  // (16)
 }
 
+double ball_impulse(double ball_mass_kg, double ball_speed_m_s, double apparent_cor) {
+  return ball_mass_kg * (1.0 + apparent_cor) * ball_speed_m_s;
+}
+
+double half_sine_peak_force(double impulse_N_s, double impact_duration_s) {
+  detail::require_positive("impact_duration_s", impact_duration_s, "s");
+  return std::numbers::pi * impulse_N_s / (2.0 * impact_duration_s);
+}
+
 double peak_impact_force(double ball_mass_kg, double ball_speed_m_s, double apparent_cor,
                          double impact_duration_s) {
-  detail::require_positive("impact_duration_s", impact_duration_s, "s");
-  return (1.0 + apparent_cor) * std::numbers::pi * ball_mass_kg * ball_speed_m_s /
-         (2.0 * impact_duration_s);  // Eq. (15)
+  return half_sine_peak_force(ball_impulse(ball_mass_kg, ball_speed_m_s, apparent_cor),
+                              impact_duration_s);  // Eq. (15)
 }
 
 }  // namespace sweetspot

@@ -92,8 +92,15 @@ double effective_mass(const MassProperties& body, double impact_from_butt_m);
 // speed when the implement is initially at rest. In (-1, 1].
 double apparent_cor(double cor, double effective_mass_kg, double ball_mass_kg);
 
-// Cross (2004) Eq. (15): peak of a half-sine force F0 sin(pi t / T) carrying the
-// impulse m v1 (1 + e_A): F0 = (1 + e_A) pi m v1 / (2 T) [N].
+// The impulse the ball gives the implement, J = integral of F dt = m v1 (1 + e_A)
+// (Cross 2004, Sec. VI) [N s].
+double ball_impulse(double ball_mass_kg, double ball_speed_m_s, double apparent_cor);
+
+// Peak of the half-sine force F0 sin(pi t / T) that carries the impulse J:
+// F0 = pi J / (2 T) [N]. Throws std::invalid_argument for T <= 0.
+double half_sine_peak_force(double impulse_N_s, double impact_duration_s);
+
+// Cross (2004) Eq. (15): the two above together, F0 = (1 + e_A) pi m v1 / (2 T) [N].
 double peak_impact_force(double ball_mass_kg, double ball_speed_m_s, double apparent_cor,
                          double impact_duration_s);
 
