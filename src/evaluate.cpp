@@ -26,6 +26,15 @@ Evaluation evaluate_settled(const Design& design) {
   return e;
 }
 
+// The impact duration: given, or derived from the string tension. The
+// duration depends on M_eff only (Eq. 17), not on the COR.
+double settled_duration(const Design& design) {
+  if (!design.strings) return design.impact_duration_s;
+  return tension_impact_duration(*design.strings, design.ball.mass_kg,
+                                 effective_mass(design.implement.mass_properties(), design.impact_from_butt_m))
+      .duration_s;
+}
+
 }  // namespace
 
 Evaluation evaluate(const Design& design) { return evaluate(design, Fidelity::kRigid); }
@@ -43,16 +52,8 @@ Evaluation evaluate(const Design& design, Fidelity fidelity, double rel_tol) {
   }
   Design resolved = design;
   validate(resolved);
-  bool duration_derived = false;
-  if (design.strings) {
-    // The duration depends on M_eff only (Eq. 17), not on the COR.
-    const MassProperties& body = design.implement.mass_properties();
-    resolved.impact_duration_s =
-        tension_impact_duration(*design.strings, design.ball.mass_kg,
-                                effective_mass(body, design.impact_from_butt_m))
-            .duration_s;
-    duration_derived = true;
-  }
+  const bool duration_derived = design.strings.has_value();
+  resolved.impact_duration_s = settled_duration(design);
   std::optional<DerivedCor> derived;
   std::optional<double> vibration_energy;
   std::vector<double> mode_frequencies_Hz;
@@ -120,21 +121,36 @@ Evaluation design_part(const Design& d, const MassProperties& body, const MassPr
   return e;
 }
 
+// The design's numbers as the rigid model reads them, unchecked.
+RigidCase case_of(const Design& d, double impact_duration_s) {
+  return RigidCase{d.implement.mass_properties(),
+                   PointMass{d.hand.center_from_butt_m, d.hand.mass_kg},
+                   d.forearm_equivalent_mass_kg,
+                   d.ball.mass_kg,
+                   d.ball.speed_m_s,
+                   d.cor,
+                   impact_duration_s,
+                   d.impact_from_butt_m};
+}
+
 // The parts that do: Eqs. (5), (11), (12), (15)-(17) at x.
 void impact_part(const Design& d, const MassProperties& body, const MassProperties& system, double x,
                  Evaluation& e) {
+  RigidCase c = case_of(d, d.impact_duration_s);
+  c.impact_from_butt_m = x;
+  const RigidOutcome o = rigid_outcome(c);
   e.impact_from_butt_m = x;
   e.impact_from_com_m = x - body.com_from_butt_m;
   e.rotation_axis_free_from_butt_m = free_conjugate_from_butt(body, x);
-  e.effective_mass_kg = effective_mass(body, x);
-  e.apparent_cor = apparent_cor(d.cor, e.effective_mass_kg, d.ball.mass_kg);
-  e.rebound_speed_m_s = e.apparent_cor * d.ball.speed_m_s;
-  e.impulse_N_s = ball_impulse(d.ball.mass_kg, d.ball.speed_m_s, e.apparent_cor);
-  e.peak_impact_force_N = half_sine_peak_force(e.impulse_N_s, d.impact_duration_s);  // Eq. (15)
+  e.effective_mass_kg = o.effective_mass_kg;
+  e.apparent_cor = o.apparent_cor;
+  e.rebound_speed_m_s = o.apparent_cor * d.ball.speed_m_s;
+  e.impulse_N_s = o.impulse_N_s;
+  e.peak_impact_force_N = o.peak_impact_force_N;
   e.rotation_axis_hand_from_butt_m =
       hand_held_rotation_axis_from_butt(system, d.forearm_equivalent_mass_kg, x);
-  e.wrist_force_ratio = wrist_force_ratio(system, d.forearm_equivalent_mass_kg, x);
-  e.peak_wrist_force_N = std::abs(e.wrist_force_ratio) * e.peak_impact_force_N;
+  e.wrist_force_ratio = o.wrist_force_ratio;
+  e.peak_wrist_force_N = o.peak_wrist_force_N;
 }
 
 }  // namespace
@@ -145,6 +161,15 @@ Evaluation evaluate_unchecked(const Design& d) {
   Evaluation e = design_part(d, body, system);
   impact_part(d, body, system, d.impact_from_butt_m, e);
   return e;
+}
+
+RigidCase rigid_case(const Design& design) {
+  if (design.cor_rigid) {
+    throw std::invalid_argument(
+        "frame/cor_rigid: a COR derived from the frame's vibration needs the response model, not a rigid case");
+  }
+  validate(design);
+  return case_of(design, settled_duration(design));
 }
 
 ImpactSweep::ImpactSweep(const Design& design)

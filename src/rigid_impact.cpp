@@ -1,6 +1,9 @@
 #include "sweetspot/rigid_impact.hpp"
 
+#include <cmath>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 
 #include "check.hpp"
 
@@ -108,6 +111,27 @@ double peak_impact_force(double ball_mass_kg, double ball_speed_m_s, double appa
                          double impact_duration_s) {
   return half_sine_peak_force(ball_impulse(ball_mass_kg, ball_speed_m_s, apparent_cor),
                               impact_duration_s);  // Eq. (15)
+}
+
+RigidOutcome rigid_outcome(const RigidCase& c) {
+  const MassProperties system = with_point_mass(c.body, c.hand);
+  RigidOutcome o;
+  o.effective_mass_kg = effective_mass(c.body, c.impact_from_butt_m);
+  o.apparent_cor = apparent_cor(c.cor, o.effective_mass_kg, c.ball_mass_kg);
+  o.impulse_N_s = ball_impulse(c.ball_mass_kg, c.ball_speed_m_s, o.apparent_cor);
+  o.peak_impact_force_N = half_sine_peak_force(o.impulse_N_s, c.impact_duration_s);
+  o.cop_hand_from_butt_m = hand_held_cop_from_butt(system).value_or(0.0);  // h > 0 in a valid case
+  o.wrist_force_ratio = wrist_force_ratio(system, c.forearm_equivalent_mass_kg, c.impact_from_butt_m);
+  o.peak_wrist_force_N = std::abs(o.wrist_force_ratio) * o.peak_impact_force_N;
+  return o;
+}
+
+void rigid_outcomes(std::span<const RigidCase> cases, std::span<RigidOutcome> out) {
+  if (cases.size() != out.size()) {
+    throw std::invalid_argument("rigid_outcomes: " + std::to_string(cases.size()) + " cases but room for " +
+                                std::to_string(out.size()) + " outcomes");
+  }
+  for (std::size_t i = 0; i < cases.size(); ++i) out[i] = rigid_outcome(cases[i]);
 }
 
 }  // namespace sweetspot

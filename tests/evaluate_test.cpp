@@ -1,8 +1,10 @@
 // Cross (2004) Table I: the force on the strings F0 and on the arm F_w for a
 // 70 cm racquet struck 5 cm from the tip by a 57 g ball at 50 m/s.
 #include "sweetspot/evaluate.hpp"
+#include "sweetspot/string_bed.hpp"
 
 #include <cmath>
+#include <vector>
 
 #include <catch2/catch.hpp>
 
@@ -124,6 +126,51 @@ TEST_CASE("An impact sweep gives exactly what evaluating each impact gives") {
   Design derived = table_design(kTableI[0]);
   derived.cor_rigid = 0.85;
   CHECK_THROWS_AS(ImpactSweep(derived), std::invalid_argument);
+}
+
+TEST_CASE("Many rigid cases at once give exactly what evaluating each design gives") {
+  // The oracle is evaluate() of the same design: rigid_outcomes() must be the
+  // same arithmetic, bit for bit, whatever the row, hand or impact.
+  std::vector<Design> designs;
+  for (const TableRow& row : kTableI) {
+    for (const double from_tip : {0.0, 0.05, 0.20, 0.45}) {
+      Design d = table_design(row);
+      d.impact_from_butt_m = d.implement.length_m() - from_tip;
+      designs.push_back(d);
+    }
+  }
+  Design strung = table_design(kTableI[0]);
+  strung.strings = StringBed{};  // the duration is derived from the tension, as evaluate() does
+  designs.push_back(strung);
+  std::vector<RigidCase> cases;
+  for (const Design& d : designs) cases.push_back(rigid_case(d));
+  std::vector<RigidOutcome> out(cases.size());
+  rigid_outcomes(cases, out);
+  for (std::size_t i = 0; i < designs.size(); ++i) {
+    INFO("design " << i);
+    const Evaluation e = evaluate(designs[i]);
+    CHECK(out[i].effective_mass_kg == e.effective_mass_kg);
+    CHECK(out[i].apparent_cor == e.apparent_cor);
+    CHECK(out[i].impulse_N_s == e.impulse_N_s);
+    CHECK(out[i].peak_impact_force_N == e.peak_impact_force_N);
+    CHECK(out[i].cop_hand_from_butt_m == e.cop_hand_from_butt_m.value());
+    CHECK(out[i].wrist_force_ratio == e.wrist_force_ratio);
+    CHECK(out[i].peak_wrist_force_N == e.peak_wrist_force_N);
+    CHECK(cases[i].impact_duration_s == e.impact_duration_s);
+  }
+  CHECK(cases.back().impact_duration_s != kTableI[0].duration_ms / 1000.0);
+}
+
+TEST_CASE("Rigid cases refuse a derived COR, a bad design and a short output span") {
+  Design derived = table_design(kTableI[0]);
+  derived.cor_rigid = 0.85;
+  CHECK_THROWS_WITH(rigid_case(derived), Catch::Contains("frame/cor_rigid"));
+  Design bad = table_design(kTableI[0]);
+  bad.ball.speed_m_s = -1.0;
+  CHECK_THROWS_WITH(rigid_case(bad), Catch::Contains("ball/speed_m_s"));
+  const std::vector<RigidCase> cases(3, rigid_case(table_design(kTableI[0])));
+  std::vector<RigidOutcome> out(2);
+  CHECK_THROWS_WITH(rigid_outcomes(cases, out), Catch::Contains("3 cases but room for 2"));
 }
 
 }  // namespace

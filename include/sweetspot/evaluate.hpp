@@ -9,6 +9,7 @@
 
 #include "sweetspot/design.hpp"
 #include "sweetspot/frame_modes.hpp"
+#include "sweetspot/rigid_impact.hpp"
 
 namespace sweetspot {
 
@@ -93,6 +94,11 @@ Evaluation evaluate(const Design& design, Fidelity fidelity, double rel_tol = 1e
 // impact_duration_s as they stand (no tension, no cor_rigid), for callers that
 // validated once and evaluate many impacts or variants in a loop. No allocation.
 Evaluation evaluate_unchecked(const Design& design);
+
+// The design as a RigidCase for rigid_outcomes(): validated like evaluate(),
+// with the duration derived from a string tension. A COR to be derived
+// (cor_rigid) needs the response model and throws std::invalid_argument.
+RigidCase rigid_case(const Design& design);
 
 // The rigid model of one design at many impact points (a player's spread of
 // hits, a sweep along the strings): what does not depend on the impact point

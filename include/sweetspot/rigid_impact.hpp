@@ -11,6 +11,7 @@
 // mass leaves the body translating without rotation) is std::nullopt.
 
 #include <optional>
+#include <span>
 
 #include "sweetspot/mass_properties.hpp"
 
@@ -103,5 +104,42 @@ double half_sine_peak_force(double impulse_N_s, double impact_duration_s);
 // Cross (2004) Eq. (15): the two above together, F0 = (1 + e_A) pi m v1 / (2 T) [N].
 double peak_impact_force(double ball_mass_kg, double ball_speed_m_s, double apparent_cor,
                          double impact_duration_s);
+
+// ------------------------------------------------------------------ many at once
+// The whole rigid model of one impact reduced to numbers, for evaluating
+// millions of designs: the implement's mass properties (with its point masses),
+// the hand, the forearm, the ball, the frame's COR, the impact duration and the
+// impact point. Plain data (88 bytes); a Design makes one with rigid_case().
+struct RigidCase {
+  MassProperties body;                       // the implement with its point masses
+  PointMass hand;                            // the hand's mass at its centre
+  double forearm_equivalent_mass_kg = 0.0;   // M_e, Eq. (7)
+  double ball_mass_kg = 0.0;
+  double ball_speed_m_s = 0.0;
+  double cor = 0.0;                          // e of Eq. (16)
+  double impact_duration_s = 0.0;            // T of Eq. (15), > 0
+  double impact_from_butt_m = 0.0;
+};
+
+// What the paper asks of one impact, as plain numbers (56 bytes).
+struct RigidOutcome {
+  double effective_mass_kg = 0.0;     // Eq. (17)
+  double apparent_cor = 0.0;          // Eq. (16)
+  double impulse_N_s = 0.0;           // m v1 (1 + e_A)
+  double peak_impact_force_N = 0.0;   // Eq. (15)
+  double cop_hand_from_butt_m = 0.0;  // Eq. (13)
+  double wrist_force_ratio = 0.0;     // Eq. (11)
+  double peak_wrist_force_N = 0.0;    // |F_w / F| F0
+};
+
+// Evaluates one case with the functions above. The case must be valid as
+// rigid_case() leaves it (implement plus hand with its centre of mass beyond
+// the butt, T > 0); nothing is checked or allocated.
+RigidOutcome rigid_outcome(const RigidCase& c);
+
+// rigid_outcome() for every case, into `out` (the same size: throws
+// std::invalid_argument otherwise). No allocation; the loop the library's
+// throughput figure (sweetspot bench) measures.
+void rigid_outcomes(std::span<const RigidCase> cases, std::span<RigidOutcome> out);
 
 }  // namespace sweetspot
