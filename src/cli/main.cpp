@@ -8,7 +8,6 @@
 #include <unistd.h>
 
 #include <fstream>
-#include <thread>
 #include <iostream>
 #include <string>
 
@@ -21,6 +20,7 @@
 #include "sweetspot/io/input_error.hpp"
 #include "sweetspot/io/paper_reports.hpp"
 #include "sweetspot/io/modes_report.hpp"
+#include "sweetspot/io/parallel.hpp"
 #include "sweetspot/io/reports.hpp"
 #include "sweetspot/io/response_report.hpp"
 #include "sweetspot/io/study.hpp"
@@ -191,6 +191,7 @@ struct SweepCommand {
   std::string csv_path;
   std::string plot;
   bool quiet = false;
+  int threads = sweetspot::io::all_cores();
 
   void add_to(CLI::App& app) {
     command = app.add_subcommand(
@@ -201,10 +202,13 @@ struct SweepCommand {
     command->add_option("--plot", plot,
                         "Also render plots: FILE.png, or FILE-<output>.png for several outputs");
     command->add_flag("--quiet,-q", quiet, "No progress on the terminal");
+    command->add_option("--threads", threads, "Threads to use (default: all cores); rows stay in grid order")
+        ->check(CLI::Range(1, 1024));
   }
 
   int run() const {
     const auto study = sweetspot::io::load_study(study_path);
+    const sweetspot::io::SweepOptions options{threads};
     const bool show_progress = !quiet && isatty(fileno(stderr));
     const auto progress = [&](std::size_t done, std::size_t total) {
       if (show_progress) std::cerr << fmt::format("\r{}/{} designs", done, total) << std::flush;
@@ -212,10 +216,10 @@ struct SweepCommand {
     };
     std::vector<sweetspot::io::Plot> plots;
     if (csv_path.empty()) {
-      plots = sweetspot::io::run_sweep(study, std::cout, progress);
+      plots = sweetspot::io::run_sweep(study, std::cout, progress, options);
     } else {
       sweetspot::io::write_stream_atomically(
-          csv_path, [&](std::ostream& file) { plots = sweetspot::io::run_sweep(study, file, progress); });
+          csv_path, [&](std::ostream& file) { plots = sweetspot::io::run_sweep(study, file, progress, options); });
     }
     if (plot.empty()) return 0;
     if (plots.empty()) {
@@ -286,7 +290,7 @@ int main(int argc, char** argv) {
   CLI::App* evaluate = app.add_subcommand("evaluate", "Every quantity of the paper for one design");
   std::string batch_path;
   std::string batch_base;
-  int threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  int threads = sweetspot::io::all_cores();
   evaluate->add_option("design", design_path, "Design file (JSON)");
   evaluate->add_option("--batch", batch_path,
                        "Evaluate a catalogue instead: JSON Lines (.jsonl, one design per line) or CSV "

@@ -1,7 +1,6 @@
 #include "sweetspot/io/batch.hpp"
 
 #include <charconv>
-#include <thread>
 #include <vector>
 
 #include <fmt/format.h>
@@ -11,6 +10,7 @@
 #include "sweetspot/io/design_reader.hpp"
 #include "sweetspot/io/input_error.hpp"
 #include "sweetspot/io/outputs.hpp"
+#include "sweetspot/io/parallel.hpp"
 
 namespace sweetspot::io {
 namespace {
@@ -120,7 +120,7 @@ class Evaluator {
   std::vector<bool> pointer_ok_;
 };
 
-void write_row(const Row& row, Format format, std::ostream& out) {
+void write_row(const Row& row, Format format, std::string& out) {
   if (format == Format::kJson) {
     Json j{{"line", row.line}};
     if (row.evaluation) {
@@ -132,15 +132,21 @@ void write_row(const Row& row, Format format, std::ostream& out) {
     } else {
       j["error"] = row.error;
     }
-    out << j.dump(-1, ' ', false, Json::error_handler_t::replace) << "\n";
+    out += j.dump(-1, ' ', false, Json::error_handler_t::replace);
+    out += "\n";
     return;
   }
-  out << row.line << "," << csv_field(row.name);
+  out += std::to_string(row.line);
+  out += ",";
+  out += csv_field(row.name);
   for (const OutputSpec& o : output_specs()) {
     const auto value = row.evaluation ? o.value(*row.evaluation) : std::nullopt;
-    out << "," << (value ? exact(*value) : "");
+    out += ",";
+    if (value) out += exact(*value);
   }
-  out << "," << csv_field(row.error) << "\n";
+  out += ",";
+  out += csv_field(row.error);
+  out += "\n";
 }
 
 }  // namespace
@@ -173,21 +179,19 @@ BatchSummary run_batch(std::istream& in, const std::string& source, const BatchO
   BatchSummary summary;
   std::vector<Row> chunk;
   chunk.reserve(kBatchChunkRows);
+  std::vector<std::string> texts(std::max(1, options.threads));
   const auto flush = [&] {
-    const std::size_t threads = std::min<std::size_t>(std::max(1, options.threads), chunk.size());
-    if (threads <= 1) {
-      for (Row& row : chunk) evaluator.evaluate_row(row);
-    } else {
-      std::vector<std::thread> pool;
-      for (std::size_t t = 0; t < threads; ++t) {
-        pool.emplace_back([&, t] {
-          for (std::size_t i = t; i < chunk.size(); i += threads) evaluator.evaluate_row(chunk[i]);
-        });
+    // Rows are read, evaluated and formatted by the threads, each into its
+    // own block of text; the blocks are written in order.
+    for (std::string& text : texts) text.clear();
+    for_blocks(chunk.size(), options.threads, [&](std::size_t t, std::size_t from, std::size_t to) {
+      for (std::size_t i = from; i < to; ++i) {
+        evaluator.evaluate_row(chunk[i]);
+        write_row(chunk[i], options.format, texts[t]);
       }
-      for (std::thread& thread : pool) thread.join();
-    }
+    });
+    for (const std::string& text : texts) out << text;
     for (const Row& row : chunk) {
-      write_row(row, options.format, out);
       ++summary.rows;
       if (!row.error.empty()) ++summary.failed;
     }

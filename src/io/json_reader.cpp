@@ -199,6 +199,14 @@ std::vector<std::string> spellings(std::string_view base, Dimension dimension) {
   return keys;
 }
 
+std::optional<double> unit_factor(std::string_view key, std::string_view base, Dimension dimension) {
+  if (!key.starts_with(base)) return std::nullopt;
+  for (const Unit& unit : units(dimension)) {
+    if (key.substr(base.size()) == unit.suffix) return unit.to_si;
+  }
+  return std::nullopt;
+}
+
 std::vector<std::string> alternative_spellings(std::string_view key) {
   // Quantities that can be given in more than one form, not just another unit.
   static const std::vector<std::vector<std::string>> kForms{

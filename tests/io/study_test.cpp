@@ -5,6 +5,10 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <sstream>
+#include <utility>
+#include <vector>
 
 #include <catch2/catch.hpp>
 
@@ -218,6 +222,47 @@ TEST_CASE("An infeasible study says so and returns the least violating design") 
   CHECK_FALSE(r.summary.feasible);
   CHECK_FALSE(r.constraints[0].satisfied);
   CHECK(optimization_report(study, r, Format::kMarkdown, false).find("No feasible design") != std::string::npos);
+}
+
+TEST_CASE("A sweep along the impact shares each row's design and writes what reading every point writes") {
+  // The oracle is the sweep that reads and evaluates every point on its own:
+  // sharing a row's design (ImpactSweep) and splitting the grid among threads
+  // must change no byte, including the rows that fail (off the implement, a
+  // negative ball speed) and a second sweep whose first variable is not the impact.
+  const char* texts[] = {
+      R"({"design": {"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8},
+                     "ball": {"speed_m_s": 50}, "impact": {"from_tip_cm": 5}},
+          "outputs": ["peak_wrist_force_N", "rotation_axis_free_from_butt_m"],
+          "variables": [{"path": "/impact/from_tip_cm", "min": -5, "max": 80, "points": 87},
+                        {"path": "/ball/speed_m_s", "values": [-1, 10, 50]}]})",
+      R"({"design": {"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8},
+                     "impact": {"from_butt_m": 0.3}},
+          "outputs": ["peak_impact_force_N"],
+          "variables": [{"path": "/impact/from_butt_m", "min": 0, "max": 0.7, "points": 30}]})",
+      R"({"design": "../table1/row1.json", "outputs": ["wrist_force_ratio"],
+          "variables": [{"path": "/hand/mass_kg", "min": 0, "max": 0.6, "points": 25},
+                        {"path": "/impact/from_tip_m", "values": [0.05, 0.8]}]})"};
+  for (const char* text : texts) {
+    const Study study = read_study(nlohmann::json::parse(text), "sweep.json", studies());
+    const auto sweep = [&](SweepOptions options) {
+      std::ostringstream csv;
+      const std::vector<Plot> plots = run_sweep(study, csv, [](std::size_t, std::size_t) {}, options);
+      std::vector<std::vector<std::optional<double>>> y;
+      for (const Plot& plot : plots) {
+        for (const PlotSeries& series : plot.series) y.push_back(series.y);
+      }
+      return std::pair{csv.str(), y};
+    };
+    const auto reference = sweep(SweepOptions{1, false});
+    const bool has_failed_rows = reference.first.find("must be") != std::string::npos;
+    CHECK(has_failed_rows == (text != texts[1]));  // the first and last grids reach bad points
+    for (const SweepOptions options : {SweepOptions{1, true}, SweepOptions{3, true}, SweepOptions{2, false}}) {
+      INFO(text << " with " << options.threads << " threads, sharing " << options.share_rows);
+      const auto result = sweep(options);
+      CHECK(result.first == reference.first);
+      CHECK(result.second == reference.second);
+    }
+  }
 }
 
 }  // namespace

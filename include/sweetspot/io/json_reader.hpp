@@ -39,6 +39,11 @@ enum class Dimension { kLength, kMass, kTime, kSpeed, kInertia, kForce, kStiffne
 // Every key that spells `base` in a unit of `dimension` ("mass" -> mass_kg, mass_g).
 std::vector<std::string> spellings(std::string_view base, Dimension dimension);
 
+// The factor to SI of `key` when it spells `base` in a unit of `dimension`
+// ("from_tip_cm", "from_tip", kLength -> 0.01), as ObjectReader::quantity()
+// applies it; std::nullopt when it does not.
+std::optional<double> unit_factor(std::string_view key, std::string_view base, Dimension dimension);
+
 // The other keys that give the same quantity as `key` in another unit or form
 // ("mass_g" -> mass_kg; "balance_cm" -> balance_from_butt_m, balance_pts_hl;
 // "from_tip_m" -> from_butt_m, ...). Empty for a key of no known quantity.
