@@ -133,12 +133,13 @@ RigidCase case_of(const Design& d, double impact_duration_s) {
                    d.impact_from_butt_m};
 }
 
-// The parts that do: Eqs. (5), (11), (12), (15)-(17) at x.
+// The parts that do: Eqs. (5), (11), (12), (15)-(17) at x: rigid_outcome()
+// and the rotation axes.
 void impact_part(const Design& d, const MassProperties& body, const MassProperties& system, double x,
                  Evaluation& e) {
   RigidCase c = case_of(d, d.impact_duration_s);
   c.impact_from_butt_m = x;
-  const RigidOutcome o = rigid_outcome(c);
+  const RigidOutcome o = rigid_outcome(c, system);
   e.impact_from_butt_m = x;
   e.impact_from_com_m = x - body.com_from_butt_m;
   e.rotation_axis_free_from_butt_m = free_conjugate_from_butt(body, x);

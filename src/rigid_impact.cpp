@@ -113,8 +113,9 @@ double peak_impact_force(double ball_mass_kg, double ball_speed_m_s, double appa
                               impact_duration_s);  // Eq. (15)
 }
 
-RigidOutcome rigid_outcome(const RigidCase& c) {
-  const MassProperties system = with_point_mass(c.body, c.hand);
+RigidOutcome rigid_outcome(const RigidCase& c) { return rigid_outcome(c, with_point_mass(c.body, c.hand)); }
+
+RigidOutcome rigid_outcome(const RigidCase& c, const MassProperties& system) {
   RigidOutcome o;
   o.effective_mass_kg = effective_mass(c.body, c.impact_from_butt_m);
   o.apparent_cor = apparent_cor(c.cor, o.effective_mass_kg, c.ball_mass_kg);

@@ -137,6 +137,10 @@ struct RigidOutcome {
 // the butt, T > 0); nothing is checked or allocated.
 RigidOutcome rigid_outcome(const RigidCase& c);
 
+// The same with implement plus hand (with_point_mass(c.body, c.hand)) formed
+// by the caller, who evaluates one design at many impact points.
+RigidOutcome rigid_outcome(const RigidCase& c, const MassProperties& system);
+
 // rigid_outcome() for every case, into `out` (the same size: throws
 // std::invalid_argument otherwise). No allocation; the loop the library's
 // throughput figure (sweetspot bench) measures.

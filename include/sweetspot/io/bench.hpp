@@ -5,8 +5,11 @@
 // one core, with the machine and compiler stated. Not part of the reports'
 // reproducibility check (timings never reproduce).
 
+#include <optional>
 #include <ostream>
 #include <string>
+
+#include "sweetspot/io/plot.hpp"
 
 namespace sweetspot::io {
 
@@ -14,16 +17,34 @@ struct BenchOptions {
   std::string designs_dir = "designs";
   std::string out_dir = "reports";
   int repeats = 5;  // runs per figure; the median is reported
+  // The sweetspot program, run end to end for the command-line figures
+  // (empty: those are skipped).
+  std::string executable;
 };
 
 // The machine, compiler and flags, for the head of every benchmark report.
 std::string machine_description();
 
-// Rigid evaluations per second through the library (evaluate_unchecked) and
-// per study: every shipped optimisation with "auto" and with each NLopt
-// algorithm that fits it (evaluations, median wall time, objective reached).
-// Writes speed-vs-error.md and speed-vs-error.csv into out_dir; logs a summary.
-void bench_optimize(const BenchOptions& options, std::ostream& log);
+// Everything in speed-vs-error.md (+ .csv, speed-vs-error-threads.png in
+// out_dir): rigid evaluations per second through the library (rigid_outcomes
+// on distinct designs, ImpactSweep, evaluate_unchecked); the command line end
+// to end (bench_throughput); every shipped optimisation with "auto" and with
+// each NLopt algorithm that fits it (evaluations, median wall time, objective
+// reached); the cost of each fidelity against its error. Logs a summary.
+void bench_speed(const BenchOptions& options, std::ostream& log);
+
+// The command line end to end: a one-million-point sweep along the impact, a
+// sweep that reads every point, and a 100 000-row CSV catalogue through
+// `evaluate --batch`, each on 1, 2, 4, ... and all cores: median wall time,
+// points per second, speed-up, peak resident memory.
+struct ThroughputReport {
+  std::string markdown;  // a section of speed-vs-error.md
+  std::string csv;       // its table
+  std::optional<Plot> plot;  // points per second against threads
+  double million_point_sweep_s = 0.0;   // on all cores
+  double million_point_sweep_MB = 0.0;
+};
+ThroughputReport bench_throughput(const BenchOptions& options, std::ostream& log);
 
 // Speed against error of every modal solver on the optimizer's study racquet
 // (two sections, f1 = 150 Hz, 6 g of tape at 0.68 m; hand-held with the
