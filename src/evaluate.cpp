@@ -7,6 +7,8 @@
 #include "sweetspot/impact_response.hpp"
 #include "sweetspot/rigid_impact.hpp"
 
+#include "check.hpp"
+
 namespace sweetspot {
 namespace {
 
@@ -30,9 +32,18 @@ Evaluation evaluate_settled(const Design& design) {
 // duration depends on M_eff only (Eq. 17), not on the COR.
 double settled_duration(const Design& design) {
   if (!design.strings) return design.impact_duration_s;
-  return tension_impact_duration(*design.strings, design.ball.mass_kg,
-                                 effective_mass(design.implement.mass_properties(), design.impact_from_butt_m))
-      .duration_s;
+  const double duration_s =
+      tension_impact_duration(*design.strings, design.ball.mass_kg,
+                              effective_mass(design.implement.mass_properties(), design.impact_from_butt_m))
+          .duration_s;
+  // Out of range, the tension is to blame: the duration is not the user's.
+  if (!(duration_s >= kMinDuration_s && duration_s <= kMaxDuration_s)) {
+    throw std::invalid_argument("strings/tension_N: " + detail::format_number(design.strings->tension_N) +
+                                " N gives an impact duration of " + detail::format_number(duration_s) +
+                                " s, outside [" + detail::format_number(kMinDuration_s) + ", " +
+                                detail::format_number(kMaxDuration_s) + "] s");
+  }
+  return duration_s;
 }
 
 }  // namespace

@@ -159,5 +159,28 @@ TEST_CASE("A derived COR is below cor_rigid and the tension sets the duration th
         Approx(tension_impact_duration(bed, 0.057, e.effective_mass_kg).duration_s).epsilon(1e-12));
 }
 
+TEST_CASE("A tension whose derived duration is out of range is blamed, at the key the file used") {
+  // 1e-9 lb of tension: a string bed so slack that the contact would last
+  // minutes; the duration was never given, so the error names the tension.
+  const DesignFile d = read(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8},
+      "strings": {"tension_lb": 1e-9}})");
+  const auto error_of = [&](auto&& call) {
+    try {
+      call();
+    } catch (const std::invalid_argument& e) {
+      try {
+        rethrow_in(d, e);
+      } catch (const InputError& in) {
+        return in.pointer() + ": " + in.detail();
+      }
+    }
+    return std::string("(no error)");
+  };
+  for (const std::string& error : {error_of([&] { evaluate(d.design); }), error_of([&] { rigid_case(d.design); })}) {
+    CHECK_THAT(error, Catch::StartsWith("/strings/tension_lb: ") && Catch::Contains("gives an impact duration of") &&
+                          Catch::Contains("outside [1e-09, 10] s"));
+  }
+}
+
 }  // namespace
 }  // namespace sweetspot::io
