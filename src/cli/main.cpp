@@ -149,9 +149,17 @@ struct ResponseCommand {
     command = app.add_subcommand(
         "response", "Velocity of points of the implement after the impact: rigid (dc) and vibration (ac) parts");
     command->add_option("design", design_path, "Design file (JSON) with the frame's stiffness")->required();
-    command->add_option("--at", at, "Observation points, m from the butt")->delimiter(',')->capture_default_str();
+    // CLI11 reads "" as 0: an empty point is refused, not observed at the butt.
+    const CLI::Validator a_number(
+        [](const std::string& value) { return value.empty() ? std::string("an empty point (expected metres)") : ""; },
+        "POINTS");
+    command->add_option("--at", at, "Observation points, m from the butt")
+        ->delimiter(',')
+        ->check(a_number)
+        ->capture_default_str();
     command->add_option("--impacts", impacts, "Impact points, m from the butt (default: the design's)")
-        ->delimiter(',');
+        ->delimiter(',')
+        ->check(a_number);
     command->add_flag("--held", held, "Held in the hand (default: free, as the paper's suspended beam)");
     command->add_option("--until-ms", until_ms, "Time window after the impact starts")
         ->check(CLI::Range(0.01, 1000.0))

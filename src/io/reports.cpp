@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "sweetspot/io/atomic_file.hpp"
+#include "sweetspot/io/input_error.hpp"
 #include "sweetspot/io/modes_report.hpp"
 #include "sweetspot/io/paper_reports.hpp"
 #include "sweetspot/io/response_report.hpp"
@@ -41,9 +42,14 @@ std::vector<fs::path> study_files(const std::string& designs_dir) {
 }  // namespace
 
 void write_reports(const std::string& designs_dir, const std::string& out_dir, std::ostream& log) {
-  fs::create_directories(fs::path(out_dir) / "studies");
+  // Nothing is created before the inputs are known to be there.
+  if (!fs::is_directory(designs_dir)) {
+    throw InputError(designs_dir, "", "not a folder of designs (expected table1/, paper-beam.json, studies/)");
+  }
   const ReportWriter write{
       [&](const std::string& name, const std::string& content) {
+        // Folders appear with their first file, so a run that fails early leaves none behind.
+        fs::create_directories(fs::path(out_dir + "/" + name).parent_path());
         write_file_atomically(out_dir + "/" + name, content);
         log << "wrote " << out_dir << "/" << name << "\n";
       },

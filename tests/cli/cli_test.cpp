@@ -474,4 +474,18 @@ TEST_CASE("evaluate --batch uses each design's own fidelity unless --fidelity is
   CHECK(box.run("evaluate --batch \"" + lines.string() + "\" --fidelity rigid").status == 0);
 }
 
+TEST_CASE("report with no designs folder and response with an empty point exit 2 and write nothing") {
+  const Sandbox box;
+  const fs::path out = box.path("reports");
+  const Run report = box.run("report --designs \"" + box.path("nowhere").string() + "\" --out \"" + out.string() + "\"");
+  CHECK(report.status == 2);
+  CHECK(report.err.find("not a folder of designs") != std::string::npos);
+  CHECK_FALSE(fs::exists(out));
+  // CLI11 would read "" as 0, the butt: refused instead.
+  const Run response = box.run(std::string("response \"") + SWEETSPOT_SOURCE_DIR + "/designs/paper-beam.json\" --at \"\"");
+  CHECK(response.status == 2);
+  CHECK(response.err.find("--at: an empty point") != std::string::npos);
+  CHECK(response.out.empty());
+}
+
 }  // namespace
