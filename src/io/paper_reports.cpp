@@ -51,6 +51,15 @@ std::optional<double> diff(double ours, const std::optional<double>& paper) {
   return ours - *paper;
 }
 
+// The paper's printed values, quoted only beside the paper's own beam (its
+// reference cites Cross 2004): another beam in their place must not be
+// compared with them.
+std::string paper_says(const DesignFile& beam, const std::string& printed) {
+  const bool paper_beam = beam.reference.is_object() && beam.reference.contains("source") &&
+                          beam.reference["source"].get<std::string>().rfind("Cross (2004)", 0) == 0;
+  return paper_beam ? " (paper: " + printed + ")" : "";
+}
+
 }  // namespace
 
 std::vector<Table1Row> compute_table1(const std::string& dir) {
@@ -161,11 +170,13 @@ Figure figure5(const DesignFile& beam) {
                      {}};
   if (zero) figure.plot.vertical_lines.push_back({(L - *zero) * 100.0, "COP for the 2 cm disk"});
   if (pole) figure.plot.vertical_lines.push_back({(L - *pole) * 100.0, "COP for the 16 cm disk"});
-  figure.summary = fmt::format(
-      "v2/v16 is 0 at d = {:.1f} cm (paper: COP 23.3 cm from the end), has its pole at d = "
-      "{:.1f} cm (paper: 14.4 cm) and is 1 at the centre, d = {:.0f} cm (paper: 36 cm).",
-      zero ? (L - *zero) * 100.0 : NAN, pole ? (L - *pole) * 100.0 : NAN,
-      (L - body.com_from_butt_m) * 100.0);
+  const auto at_d = [&](std::optional<double> from_butt_m) {
+    return from_butt_m ? fmt::format("at d = {:.1f} cm", (L - *from_butt_m) * 100.0) : std::string("nowhere");
+  };
+  figure.summary = fmt::format("v2/v16 is 0 {}{}, has its pole {}{} and is 1 at the centre, d = {:.0f} cm{}.",
+                               at_d(zero), paper_says(beam, "COP 23.3 cm from the end"), at_d(pole),
+                               paper_says(beam, "14.4 cm"), (L - body.com_from_butt_m) * 100.0,
+                               paper_says(beam, "36 cm"));
   return figure;
 }
 
@@ -227,8 +238,8 @@ Figure figure11(const DesignFile& beam) {
         fmt::format("d = {:.1f} cm, s = {:.1f} cm", crossing->d_m * 100.0, crossing->s_m * 100.0)});
     figure.summary = fmt::format(
         "The free and hand-held axes coincide at d = {:.1f} cm with the axis {:.1f} cm from the "
-        "handle end (paper: 22.8 cm and 3.2 cm).",
-        crossing->d_m * 100.0, crossing->s_m * 100.0);
+        "handle end{}.",
+        crossing->d_m * 100.0, crossing->s_m * 100.0, paper_says(beam, "22.8 cm and 3.2 cm"));
   } else {
     figure.summary = "The free and hand-held axes do not coincide between d = 10 and 30 cm.";
   }

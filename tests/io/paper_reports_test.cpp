@@ -53,5 +53,17 @@ TEST_CASE("The shipped Table I designs carry the printed values and reproduce th
   }
 }
 
+TEST_CASE("The figures quote the paper's numbers beside the paper's beam only") {
+  const DesignFile paper = beam();
+  CHECK(figure5(paper).summary.find("(paper: COP 23.3 cm from the end)") != std::string::npos);
+  CHECK(figure11(paper).summary.find("(paper: 22.8 cm and 3.2 cm)") != std::string::npos);
+  DesignFile other = paper;  // another beam in its place: nothing to compare with
+  other.reference = Json();
+  for (const std::string& summary : {figure5(other).summary, figure11(other).summary}) {
+    CHECK(summary.find("paper") == std::string::npos);
+    CHECK(summary.find("nan") == std::string::npos);
+  }
+}
+
 }  // namespace
 }  // namespace sweetspot::io
