@@ -55,14 +55,12 @@ class Evaluator {
       : source_(source), options_(options), header_(std::move(header)) {
     for (const std::string& field : header_) {
       pointers_.push_back(field_to_pointer(field));
-      bool ok = true;
+      std::optional<FieldOverride> column;
       try {
-        Json::json_pointer check(pointers_.back());
-        ok = !check.empty();
+        if (!Json::json_pointer(pointers_.back()).empty()) column.emplace(pointers_.back());
       } catch (const Json::exception&) {
-        ok = false;
       }
-      pointer_ok_.push_back(ok);
+      columns_.push_back(std::move(column));
     }
   }
 
@@ -82,13 +80,13 @@ class Evaluator {
             document["name"] = cells[k];
             continue;
           }
-          if (!pointer_ok_[k]) throw InputError(where, pointers_[k], "not a JSON pointer");
+          if (!columns_[k]) throw InputError(where, pointers_[k], "not a JSON pointer");
           double value = 0.0;
           const auto [end, error] = std::from_chars(cells[k].data(), cells[k].data() + cells[k].size(), value);
           if (error != std::errc() || end != cells[k].data() + cells[k].size()) {
             throw InputError(where, pointers_[k], "expected a number, got \"" + cells[k] + "\"");
           }
-          override_field(document, pointers_[k], value);
+          columns_[k]->apply(document, value);
         }
       } else {
         override_fields(document, parse_json(row.text, where));
@@ -117,7 +115,7 @@ class Evaluator {
   const BatchOptions& options_;
   std::vector<std::string> header_;
   std::vector<std::string> pointers_;
-  std::vector<bool> pointer_ok_;
+  std::vector<std::optional<FieldOverride>> columns_;  // empty: not a JSON pointer
 };
 
 void write_row(const Row& row, Format format, std::string& out) {

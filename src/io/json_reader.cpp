@@ -1,6 +1,7 @@
 #include "sweetspot/io/json_reader.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -245,14 +246,19 @@ std::vector<std::string> alternative_spellings(std::string_view key) {
   return out;
 }
 
-void override_field(Json& document, const std::string& pointer, Json value) {
-  const Json::json_pointer at(pointer);
-  const std::string key = at.back();
-  Json& parent = document[at.parent_pointer()];
+FieldOverride::FieldOverride(const std::string& pointer)
+    : at_(pointer), parent_(at_.parent_pointer()), alternatives_(alternative_spellings(at_.back())) {}
+
+void FieldOverride::apply(Json& document, Json value) const {
+  Json& parent = document[parent_];
   if (parent.is_object()) {
-    for (const std::string& other : alternative_spellings(key)) parent.erase(other);
+    for (const std::string& other : alternatives_) parent.erase(other);
   }
-  document[at] = std::move(value);
+  document[at_] = std::move(value);
+}
+
+void override_field(Json& document, const std::string& pointer, Json value) {
+  FieldOverride(pointer).apply(document, std::move(value));
 }
 
 namespace {
@@ -313,37 +319,59 @@ void ObjectReader::fail(std::string_view key, const std::string& detail) const {
 }
 
 void ObjectReader::record(std::string_view canonical_key, std::string_view key) {
-  if (keys_) {
-    const std::string name =
-        canonical_.empty() ? std::string(canonical_key) : canonical_ + "/" + std::string(canonical_key);
-    (*keys_)[name] = pointer_of(key);
-  }
+  if (!keys_) return;
+  std::string name;
+  name.reserve(canonical_.size() + 1 + canonical_key.size());
+  if (!canonical_.empty()) name.append(canonical_).append("/");
+  name.append(canonical_key);
+  keys_->insert_or_assign(std::move(name), pointer_of(key));
+}
+
+void ObjectReader::mark_read(const std::string& own_key) {
+  if (std::find(read_.begin(), read_.end(), own_key) == read_.end()) read_.push_back(own_key);
+}
+
+double ObjectReader::finite_number(const std::string& own_key, const Json& value) {
+  mark_read(own_key);
+  if (!value.is_number()) fail(own_key, "expected a number, got " + brief(value));
+  const double number = value.get<double>();
+  if (!std::isfinite(number)) fail(own_key, "expected a finite number, got " + brief(value));
+  return number;
 }
 
 std::optional<double> ObjectReader::number(std::string_view key) {
   const auto it = object_.find(key);
   if (it == object_.end()) return std::nullopt;
-  read_.emplace(key);
   record(key, key);
-  if (!it->is_number()) fail(key, "expected a number, got " + brief(*it));
-  const double value = it->get<double>();
-  if (!std::isfinite(value)) fail(key, "expected a finite number, got " + brief(*it));
-  return value;
+  return finite_number(it.key(), *it);
 }
 
 std::optional<double> ObjectReader::quantity(std::string_view base, Dimension dimension) {
-  std::optional<double> result;
-  std::string found;
-  for (const Unit& unit : units(dimension)) {
-    const std::string key = std::string(base) + std::string(unit.suffix);
-    if (!has(key)) continue;
-    if (!found.empty()) {
-      fail(key, "contradicts " + pointer_of(found) + ": give the quantity once, in one unit");
+  // The keys spelling `base` in a unit of `dimension`, found by one pass over
+  // the object (no key is built), then taken in the units' order.
+  const std::vector<Unit>& list = units(dimension);
+  std::array<const std::string*, 8> present{};
+  bool any = false;
+  for (auto it = object_.begin(); it != object_.end(); ++it) {
+    const std::string& key = it.key();
+    if (key.size() <= base.size() || std::string_view(key).substr(0, base.size()) != base) continue;
+    for (std::size_t u = 0; u < list.size() && u < present.size(); ++u) {
+      if (std::string_view(key).substr(base.size()) == list[u].suffix) {
+        present[u] = &key;
+        any = true;
+      }
     }
-    found = key;
-    result = *number(key) * unit.to_si;
   }
-  if (result) record(std::string(base) + std::string(units(dimension).front().suffix), found);
+  if (!any) return std::nullopt;
+  std::optional<double> result;
+  const std::string* found = nullptr;
+  for (std::size_t u = 0; u < list.size() && u < present.size(); ++u) {
+    if (!present[u]) continue;
+    if (found) fail(*present[u], "contradicts " + pointer_of(*found) + ": give the quantity once, in one unit");
+    found = present[u];
+    result = finite_number(*found, object_[*found]) * list[u].to_si;
+  }
+  record(std::string(base) + std::string(list.front().suffix), *found);
   return result;
 }
 
@@ -360,7 +388,7 @@ std::string ObjectReader::one_of(const std::vector<std::string>& keys) const {
 std::optional<std::string> ObjectReader::string(std::string_view key) {
   const auto it = object_.find(key);
   if (it == object_.end()) return std::nullopt;
-  read_.emplace(key);
+  mark_read(it.key());
   if (!it->is_string()) fail(key, "expected a string, got " + brief(*it));
   return it->get<std::string>();
 }
@@ -368,13 +396,13 @@ std::optional<std::string> ObjectReader::string(std::string_view key) {
 const Json* ObjectReader::child(std::string_view key) {
   const auto it = object_.find(key);
   if (it == object_.end()) return nullptr;
-  read_.emplace(key);
+  mark_read(it.key());
   return &*it;
 }
 
 void ObjectReader::finish(const std::vector<std::string>& expected) const {
   for (const auto& [key, value] : object_.items()) {
-    if (!read_.contains(key)) fail(key, "unknown key (expected one of: " + join(expected) + ")");
+    if (std::find(read_.begin(), read_.end(), key) == read_.end()) fail(key, "unknown key (expected one of: " + join(expected) + ")");
   }
 }
 

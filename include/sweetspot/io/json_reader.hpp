@@ -53,6 +53,20 @@ std::vector<std::string> alternative_spellings(std::string_view key);
 // the same quantity beside it, so that an override never contradicts a default.
 void override_field(Json& document, const std::string& pointer, Json value);
 
+// override_field() prepared once for a pointer set in many documents (a CSV
+// column of a batch): the pointer parsed and its alternative spellings listed.
+class FieldOverride {
+ public:
+  // Throws Json::exception when `pointer` is not a JSON pointer.
+  explicit FieldOverride(const std::string& pointer);
+  void apply(Json& document, Json value) const;
+
+ private:
+  Json::json_pointer at_;
+  Json::json_pointer parent_;
+  std::vector<std::string> alternatives_;
+};
+
 // override_field() for every leaf of `patch` (objects are descended, anything
 // else replaces): a design row laid over a base design.
 void override_fields(Json& document, const Json& patch);
@@ -99,7 +113,11 @@ class ObjectReader {
   std::string canonical_;
   std::string source_;
   KeyMap* keys_;
-  std::set<std::string, std::less<>> read_;
+  // The keys read, as views of the object's own keys (which outlive the reader).
+  std::vector<std::string_view> read_;
+  void mark_read(const std::string& own_key);
+  // The value under one of the object's own keys as a finite number, marked read.
+  double finite_number(const std::string& own_key, const Json& value);
 };
 
 }  // namespace sweetspot::io
