@@ -269,6 +269,57 @@ RunResult run_nlopt(nlopt::algorithm algorithm, std::optional<nlopt::algorithm> 
   }
 }
 
+// The least-violation stage: when no feasible point has been found, the
+// reported "least infeasible" design should be one. Minimises the evaluator's
+// violation, max_k excess_k / tolerance_k (kinked where two constraints
+// cross, hence derivative-free COBYLA, bounds only), from the best point so
+// far; the evaluator keeps whichever point violates least.
+struct ViolationCallback {
+  Evaluator* evaluator;
+  const Scaling* scaling;
+};
+
+double violation_callback(unsigned, const double* u, double*, void* data) {
+  auto* cb = static_cast<ViolationCallback*>(data);
+  try {
+    return cb->evaluator->violation(cb->evaluator->values(cb->scaling->to_x(u)));
+  } catch (const BudgetSpent&) {
+    throw nlopt::forced_stop();
+  }
+}
+
+std::string reduce_violation(const Problem& problem, const OptimizeOptions& options,
+                             Evaluator& evaluator) {
+  const unsigned n = static_cast<unsigned>(problem.lower.size());
+  Scaling scaling;
+  scaling.lower = problem.lower;
+  for (unsigned i = 0; i < n; ++i) scaling.range.push_back(problem.upper[i] - problem.lower[i]);
+  ViolationCallback callback{&evaluator, &scaling};
+  nlopt::opt opt(nlopt::LN_COBYLA, n);
+  opt.set_lower_bounds(std::vector<double>(n, 0.0));
+  opt.set_upper_bounds(std::vector<double>(n, 1.0));
+  opt.set_min_objective(violation_callback, &callback);
+  opt.set_xtol_abs(std::vector<double>(n, options.x_tolerance_rel));
+  opt.set_ftol_rel(options.f_tolerance_rel);
+  opt.set_maxeval(std::max(1, options.max_evaluations - evaluator.evaluations()));
+  opt.set_maxtime(std::max(1e-3, options.max_seconds - evaluator.seconds()));
+  opt.set_initial_step(std::vector<double>(n, 0.1));
+  std::vector<double> u = scaling.to_u(evaluator.best_x());
+  double f = 0.0;
+  try {
+    return result_name(opt.optimize(u, f));
+  } catch (const nlopt::forced_stop&) {
+    return evaluator.spent() ? "MAXEVAL_REACHED (sweetspot's budget, including differences)"
+                             : "FORCESTOP";
+  } catch (const nlopt::roundoff_limited&) {
+    return "ROUNDOFF_LIMITED";
+  } catch (const std::invalid_argument& e) {
+    return std::string("INVALID_ARGS: ") + e.what();
+  } catch (const std::runtime_error& e) {
+    return std::string("FAILURE: ") + e.what();
+  }
+}
+
 // Halton points in [0,1)^n, shifted by a seeded random vector (mod 1).
 std::vector<std::vector<double>> halton(std::size_t count, std::size_t n, unsigned long seed) {
   static constexpr int kPrimes[] = {2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47, 53};
@@ -437,6 +488,11 @@ Summary minimize(const Problem& problem, const OptimizeOptions& options) {
     }
   } catch (const BudgetSpent&) {
     termination = "MAXEVAL_REACHED (sweetspot's budget, including differences)";
+  }
+  if (!problem.constraints.empty() && evaluator.violation(evaluator.best_values()) > 1.0 &&
+      !evaluator.spent()) {
+    termination = reduce_violation(problem, options, evaluator);
+    algorithm_used += " + LN_COBYLA on the violation (no feasible point found)";
   }
 
   Summary summary;
