@@ -432,18 +432,38 @@ using Eigen::MatrixXd;
 using Eigen::Vector4d;
 using Eigen::VectorXd;
 
+// Integral of xi^n over [s, e].
+double moment_over(int n, double s, double e) {
+  double ps = s, pe = e;
+  for (int i = 0; i < n; ++i) {
+    ps *= s;
+    pe *= e;
+  }
+  return (pe - ps) / (n + 1);
+}
+
+// A uniform stretch of an Euler-Bernoulli element, [s, e] in element
+// coordinates (an element merged over a breakpoint has several).
+struct ElementPiece {
+  double s = 0.0, e = 0.0, EI = 0.0, mu = 0.0;
+  std::size_t section = 0;  // of the beam, for messages
+};
+
 // One two-node element on [x0, x0 + h]. With g = EI/(kappa G A) (0 for
 // Euler-Bernoulli) the static solution of the Timoshenko beam is
 //   w = a0 + a1 xi + a2 xi^2 + a3 xi^3,  theta = w' + 6 g a3,
 // shear strain w' - theta = -6 g a3, and the nodal DOFs (w1, theta1, w2,
-// theta2) = C a. g = 0 gives the Hermite cubic element.
+// theta2) = C a. g = 0 gives the Hermite cubic element, which may span
+// several uniform pieces and carry point masses inside (merge_tiny_elements).
 struct Element {
   double x0 = 0.0, h = 0.0;
-  double EI = 0.0, mu = 0.0, rotary = 0.0, g = 0.0;  // rotary = mu r^2
+  double EI = 0.0, mu = 0.0, rotary = 0.0, g = 0.0;  // rotary = mu r^2; EI, mu of the first piece
+  std::vector<ElementPiece> pieces;                  // covering [0, h]
+  std::vector<std::pair<double, double>> masses;     // point masses inside: xi, kg
   Matrix4d c_inv;                                    // a = c_inv * DOFs
 
   Element(double x0_, double h_, double EI_, double mu_, double rotary_, double g_)
-      : x0(x0_), h(h_), EI(EI_), mu(mu_), rotary(rotary_), g(g_) {
+      : x0(x0_), h(h_), EI(EI_), mu(mu_), rotary(rotary_), g(g_), pieces{{0.0, h_, EI_, mu_}} {
     Matrix4d c;
     c << 1, 0, 0, 0,                              //
         0, 1, 0, 6 * g,                           //
@@ -463,22 +483,48 @@ struct Element {
     // Bending EI theta'^2 with theta' = 2 a2 + 6 a3 xi, plus shear
     // kappa G A (6 g a3)^2 = 36 EI g a3^2.
     Matrix4d ka = Matrix4d::Zero();
-    ka(2, 2) = 4 * h;
-    ka(2, 3) = ka(3, 2) = 6 * h * h;
-    ka(3, 3) = 12 * h * h * h + 36 * g * h;
-    return c_inv.transpose() * (EI * ka) * c_inv;
+    if (pieces.size() == 1) {
+      ka(2, 2) = 4 * h;
+      ka(2, 3) = ka(3, 2) = 6 * h * h;
+      ka(3, 3) = 12 * h * h * h + 36 * g * h;
+      return c_inv.transpose() * (EI * ka) * c_inv;
+    }
+    for (const ElementPiece& p : pieces) {
+      ka(2, 2) += 4 * p.EI * moment_over(0, p.s, p.e);
+      ka(2, 3) += 12 * p.EI * moment_over(1, p.s, p.e);
+      ka(3, 3) += 36 * p.EI * moment_over(2, p.s, p.e);
+    }
+    ka(3, 2) = ka(2, 3);
+    return c_inv.transpose() * ka * c_inv;
   }
 
-  // Integral of N_w^T N_w (times 1), the pattern of mass, grip springs and dashpots.
-  Matrix4d gram() const {
+  // Integral of N_w^T N_w over [s, e] (the whole element by default), the
+  // pattern of mass, grip springs and dashpots.
+  Matrix4d gram() const { return gram(0.0, h); }
+  Matrix4d gram(double s, double e) const {
     Matrix4d ga;
     for (int i = 0; i < 4; ++i)
-      for (int j = 0; j < 4; ++j) ga(i, j) = moment(i + j);
+      for (int j = 0; j < 4; ++j) ga(i, j) = s == 0.0 && e == h ? moment(i + j) : moment_over(i + j, s, e);
     return c_inv.transpose() * ga * c_inv;
   }
 
   Matrix4d mass() const {
-    Matrix4d m = mu * gram();
+    Matrix4d m;
+    if (pieces.size() == 1) {
+      m = mu * gram();
+    } else {
+      Matrix4d ga = Matrix4d::Zero();
+      for (const ElementPiece& p : pieces) {
+        for (int i = 0; i < 4; ++i)
+          for (int j = 0; j < 4; ++j) ga(i, j) += p.mu * moment_over(i + j, p.s, p.e);
+      }
+      m = c_inv.transpose() * ga * c_inv;
+    }
+    for (const auto& [xi, kg] : masses) {
+      // A point mass where it is: kg N_w(xi)^T N_w(xi).
+      const Vector4d n = c_inv.transpose() * Vector4d(1.0, xi, xi * xi, xi * xi * xi);
+      m += kg * n * n.transpose();
+    }
     if (rotary > 0.0) {
       // theta = (0, 1, 2 xi, 3 xi^2 + 6 g) . a
       const double I0 = moment(0), I1 = moment(1), I2 = moment(2), I3 = moment(3),
@@ -495,10 +541,12 @@ struct Element {
     return m;
   }
 
-  // Integral of N_w^T (xi + x0 - xc)^p for p = 0, 1.
-  Vector4d load(int p, double xc) const {
+  // Integral of N_w^T (xi + x0 - xc)^p over [s, e], for p = 0, 1.
+  Vector4d load(int p, double xc, double s, double e) const {
+    const bool whole = s == 0.0 && e == h;
+    const auto mom = [&](int n) { return whole ? moment(n) : moment_over(n, s, e); };
     Vector4d la;
-    for (int i = 0; i < 4; ++i) la(i) = p == 0 ? moment(i) : moment(i + 1) + (x0 - xc) * moment(i);
+    for (int i = 0; i < 4; ++i) la(i) = p == 0 ? mom(i) : mom(i + 1) + (x0 - xc) * mom(i);
     return c_inv.transpose() * la;
   }
 
@@ -520,6 +568,93 @@ struct Mesh {
   double length_m = 0.0;
 };
 
+// An element far shorter than the mesh's sizing asks for (a sliver of a
+// section, a point mass a hair from a section boundary) makes K
+// ill-conditioned by (h_neighbour / h)^3: at 1e-6 m beside 1 cm elements the
+// frequencies came out wrong by a factor of 2. Elements are sized to equal
+// phase (mu/EI)^(1/4) h, so one whose phase is below kMergeRatio of its
+// neighbour's is merged into a neighbour, which then integrates both uniform
+// pieces exactly and carries the node's point mass where it is
+// (Element::pieces, masses). Round-off then stays below about
+// 1e4 eps / kMergeRatio^3 ~ 2e-9.
+constexpr double kMergeRatio = 0.1;
+// One cubic cannot bend differently on either side of a stiffness jump: a
+// merged element spanning EI_min..EI_max misstates the frame's compliance by
+// about (EI_max / EI_min - 1) h_short / L. Merges that would exceed this are
+// refused (the exact solver, free modes only, has no such limit).
+constexpr double kMergeTolerance = 1e-9;
+
+double phase(const Element& e) {
+  double sum = 0.0;
+  for (const ElementPiece& p : e.pieces) sum += std::pow(p.mu / p.EI, 0.25) * (p.e - p.s);
+  return sum;
+}
+
+double merge_error(const Element& a, const Element& b, double length_m) {
+  double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
+  for (const Element* e : {&a, &b}) {
+    for (const ElementPiece& p : e->pieces) {
+      lo = std::min(lo, p.EI);
+      hi = std::max(hi, p.EI);
+    }
+  }
+  return (hi / lo - 1.0) * std::min(a.h, b.h) / length_m;
+}
+
+void merge_tiny_elements(Mesh& mesh) {
+  while (mesh.elements.size() > 1) {
+    std::size_t tiny = 0;
+    double worst = kMergeRatio;
+    for (std::size_t e = 0; e < mesh.elements.size(); ++e) {
+      double neighbour = 0.0;
+      if (e > 0) neighbour = std::max(neighbour, phase(mesh.elements[e - 1]));
+      if (e + 1 < mesh.elements.size()) neighbour = std::max(neighbour, phase(mesh.elements[e + 1]));
+      const double ratio = phase(mesh.elements[e]) / neighbour;
+      if (ratio < worst) {
+        worst = ratio;
+        tiny = e;
+      }
+    }
+    if (!(worst < kMergeRatio)) return;
+    // Into the neighbour that misstates the stiffness least, else the longer in phase.
+    const std::size_t last = mesh.elements.size() - 1;
+    const double error_left =
+        tiny > 0 ? merge_error(mesh.elements[tiny - 1], mesh.elements[tiny], mesh.length_m)
+                 : std::numeric_limits<double>::infinity();
+    const double error_right =
+        tiny < last ? merge_error(mesh.elements[tiny], mesh.elements[tiny + 1], mesh.length_m)
+                    : std::numeric_limits<double>::infinity();
+    if (std::min(error_left, error_right) > kMergeTolerance) {
+      const ElementPiece& p = mesh.elements[tiny].pieces.front();
+      throw std::invalid_argument(
+          detail::indexed("sections", p.section, "length_m") + ": a stretch of " +
+          detail::format_number(mesh.elements[tiny].h) + " m at " +
+          detail::format_number(mesh.elements[tiny].x0) + " m from the butt, with EI " +
+          detail::format_number(p.EI) +
+          " N m^2 unlike its neighbours', is too short for finite elements to resolve (the hand-held "
+          "modes need them); lengthen it or give it its neighbours' EI");
+    }
+    const bool into_left =
+        error_left < error_right ||
+        (error_left == error_right && tiny > 0 &&
+         phase(mesh.elements[tiny - 1]) >= phase(mesh.elements[tiny + 1]));
+    const std::size_t left = into_left ? tiny - 1 : tiny;
+    const Element& a = mesh.elements[left];
+    const Element& b = mesh.elements[left + 1];
+    Element merged(a.x0, a.h + b.h, a.EI, a.mu, 0.0, 0.0);
+    merged.pieces = a.pieces;
+    merged.masses = a.masses;
+    for (const ElementPiece& p : b.pieces) merged.pieces.push_back({p.s + a.h, p.e + a.h, p.EI, p.mu, p.section});
+    merged.pieces.back().e = merged.h;
+    if (mesh.nodal_mass_kg[left + 1] > 0.0) merged.masses.emplace_back(a.h, mesh.nodal_mass_kg[left + 1]);
+    for (const auto& [xi, kg] : b.masses) merged.masses.emplace_back(xi + a.h, kg);
+    mesh.elements[left] = std::move(merged);
+    mesh.elements.erase(mesh.elements.begin() + static_cast<std::ptrdiff_t>(left) + 1);
+    mesh.nodes_m.erase(mesh.nodes_m.begin() + static_cast<std::ptrdiff_t>(left) + 1);
+    mesh.nodal_mass_kg.erase(mesh.nodal_mass_kg.begin() + static_cast<std::ptrdiff_t>(left) + 1);
+  }
+}
+
 Mesh build_mesh(const Segmentation& seg, const std::vector<int>& counts,
                 const ModeOptions& options) {
   Mesh mesh;
@@ -539,11 +674,13 @@ Mesh build_mesh(const Segmentation& seg, const std::vector<int>& counts,
     const double h = s.length_m / counts[i];
     for (int e = 0; e < counts[i]; ++e) {
       mesh.elements.emplace_back(s.start_m + e * h, h, s.EI_N_m2, s.mu_kg_m, rotary, g);
+      mesh.elements.back().pieces.front().section = s.section;
       mesh.nodes_m.push_back(e + 1 == counts[i] ? s.start_m + s.length_m : s.start_m + (e + 1) * h);
       mesh.nodal_mass_kg.push_back(0.0);
     }
   }
   mesh.nodal_mass_kg.back() += seg.tip_mass_kg;
+  if (!timoshenko) merge_tiny_elements(mesh);
   return mesh;
 }
 
@@ -572,14 +709,18 @@ Assembled assemble(const Mesh& mesh, const HandCoupling* hand) {
     const int i0 = 2 * static_cast<int>(e);
     out.K.block<4, 4>(i0, i0) += el.stiffness();
     out.M.block<4, 4>(i0, i0) += el.mass();
-    const double mid = el.x0 + 0.5 * el.h;
-    if (hand && mid > grip_start - eps && mid < grip_end + eps) {
+    // The part of the element under the grip, [s, e] in element coordinates
+    // (the whole element or none, unless merge_tiny_elements joined across a grip end).
+    const double s = std::max(0.0, grip_start - el.x0), e_end = std::min(el.h, grip_end - el.x0);
+    const bool whole = s <= eps && e_end >= el.h - eps;
+    if (hand && (whole || e_end - s > eps)) {
+      const double lo = whole ? 0.0 : s, hi = whole ? el.h : e_end;
       // 1/2 int k (w - u - phi (x - xc))^2 dx, and the same with c for the dashpots.
-      const Matrix4d gram = el.gram();
-      const Vector4d l0 = el.load(0, xc), l1 = el.load(1, xc);
-      const double r0 = el.h;
-      const double r1 = el.h * (el.x0 + 0.5 * el.h - xc);
-      const double d0 = el.x0 - xc, d1 = d0 + el.h;
+      const Matrix4d gram = el.gram(lo, hi);
+      const Vector4d l0 = el.load(0, xc, lo, hi), l1 = el.load(1, xc, lo, hi);
+      const double r0 = hi - lo;
+      const double r1 = r0 * (el.x0 + 0.5 * (lo + hi) - xc);
+      const double d0 = el.x0 + lo - xc, d1 = d0 + r0;
       const double r2 = (d1 * d1 * d1 - d0 * d0 * d0) / 3.0;
       const int u = beam_dofs, phi = beam_dofs + 1;
       auto add = [&](MatrixXd& A, double k) {
@@ -722,7 +863,7 @@ ModalResult fe_free_modes(const Segmentation& seg, const ModeOptions& options) {
   result.theory = options.theory;
   const std::vector<int> counts = element_counts(seg, options);
   const Mesh mesh = build_mesh(seg, counts, options);
-  result.elements_used = total_elements(counts);
+  result.elements_used = static_cast<int>(mesh.elements.size());  // after merge_tiny_elements
   const auto [omega2, vectors] = free_spectrum(mesh);
   const int available = static_cast<int>(omega2.size());
   for (int k = 0; k < std::min(options.modes, available); ++k) {
@@ -1281,7 +1422,7 @@ ModalResult hand_held_modes(const std::vector<Section>& sections,
   const Segmentation seg = hand_segmentation(sections, point_masses, hand);
   const std::vector<int> counts = element_counts(seg, options);
   const Mesh mesh = build_mesh(seg, counts, options);
-  result.elements_used = total_elements(counts);
+  result.elements_used = static_cast<int>(mesh.elements.size());  // after merge_tiny_elements
   const Assembled a = assemble(mesh, &hand);
 
   std::optional<DampedSpectrum> spectrum;
