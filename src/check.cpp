@@ -45,31 +45,20 @@ namespace {
 }
 }  // namespace
 
-void require_finite(std::string_view name, double value) {
-  if (!std::isfinite(value)) fail(name, "a finite number", value, "");
+void fail_finite(std::string_view name, double value) { fail(name, "a finite number", value, ""); }
+
+void fail_positive(std::string_view name, double value, std::string_view unit) {
+  fail(name, "> 0" + (unit.empty() ? "" : " " + std::string(unit)), value, unit);
 }
 
-void require_positive(std::string_view name, double value, std::string_view unit) {
-  if (!std::isfinite(value) || value <= 0.0) {
-    fail(name, "> 0" + (unit.empty() ? "" : " " + std::string(unit)), value, unit);
-  }
+void fail_at_least(std::string_view name, double value, double min, std::string_view unit) {
+  fail(name, ">= " + format_number(min) + (unit.empty() ? "" : " " + std::string(unit)), value, unit);
 }
 
-void require_at_least(std::string_view name, double value, double min, std::string_view unit) {
-  if (!std::isfinite(value) || value < min) {
-    fail(name, ">= " + format_number(min) + (unit.empty() ? "" : " " + std::string(unit)), value,
-         unit);
-  }
-}
-
-void require_in_range(std::string_view name, double value, double min, double max,
-                      std::string_view unit) {
-  if (!std::isfinite(value) || value < min || value > max) {
-    fail(name,
-         "in [" + format_number(min) + ", " + format_number(max) + "]" +
-             (unit.empty() ? "" : " " + std::string(unit)),
-         value, unit);
-  }
+void fail_in_range(std::string_view name, double value, double min, double max, std::string_view unit) {
+  fail(name,
+       "in [" + format_number(min) + ", " + format_number(max) + "]" + (unit.empty() ? "" : " " + std::string(unit)),
+       value, unit);
 }
 
 }  // namespace sweetspot::detail

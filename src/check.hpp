@@ -3,6 +3,7 @@
 // Argument checks shared by the physics core. Each throws std::invalid_argument
 // with a message that names the argument, what was expected and the value.
 
+#include <cmath>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -25,10 +26,26 @@ std::string indexed(std::string_view list, std::size_t index, std::string_view f
 // Point masses must lie on [0, length_m] and weigh >= 0 kg.
 void validate_point_masses(const std::vector<PointMass>& point_masses, double length_m);
 
-void require_finite(std::string_view name, double value);
-void require_positive(std::string_view name, double value, std::string_view unit);
-void require_at_least(std::string_view name, double value, double min, std::string_view unit);
-void require_in_range(std::string_view name, double value, double min, double max,
-                      std::string_view unit);
+// The messages, out of line; the checks below are inline so that a passing
+// check costs a comparison (they sit in the rigid model's hot path).
+[[noreturn]] void fail_finite(std::string_view name, double value);
+[[noreturn]] void fail_positive(std::string_view name, double value, std::string_view unit);
+[[noreturn]] void fail_at_least(std::string_view name, double value, double min, std::string_view unit);
+[[noreturn]] void fail_in_range(std::string_view name, double value, double min, double max,
+                                std::string_view unit);
+
+inline void require_finite(std::string_view name, double value) {
+  if (!std::isfinite(value)) [[unlikely]] fail_finite(name, value);
+}
+inline void require_positive(std::string_view name, double value, std::string_view unit) {
+  if (!std::isfinite(value) || value <= 0.0) [[unlikely]] fail_positive(name, value, unit);
+}
+inline void require_at_least(std::string_view name, double value, double min, std::string_view unit) {
+  if (!std::isfinite(value) || value < min) [[unlikely]] fail_at_least(name, value, min, unit);
+}
+inline void require_in_range(std::string_view name, double value, double min, double max,
+                             std::string_view unit) {
+  if (!std::isfinite(value) || value < min || value > max) [[unlikely]] fail_in_range(name, value, min, max, unit);
+}
 
 }  // namespace sweetspot::detail
