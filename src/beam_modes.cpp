@@ -389,6 +389,23 @@ class TransferModel {
   double phase_per_root_omega_ = 0.0;
 };
 
+// Roots of a free-free beam are about pi apart in total phase (pi / 16 per
+// scan step); consecutive roots found further apart than this may hide a
+// skipped pair, which the count below then checks.
+constexpr double kSuspectRootGap = 1.5 * kPi;
+
+// How many flexible modes a finite-element mesh finds below the highest of
+// `found` beyond those found (0 when none were missed, or when the beam has a
+// massless section the elements cannot take), and how many elements give
+// the `wanted`-th mode to rel_tol (the usual sizing looks at f1 only, which
+// here may be a near-rigid hinge mode).
+struct RootCount {
+  int missed = 0;
+  int elements = 0;
+};
+RootCount missed_roots(const Segmentation& seg, const ModalResult& found, int wanted, double rel_tol);
+ModalResult fe_free_modes(const Segmentation& seg, const ModeOptions& options);
+
 ModalResult exact_free_modes(const Segmentation& seg, const ModeOptions& options) {
   ModalResult result;
   result.method = ModeOptions::Method::kExact;
@@ -399,11 +416,15 @@ ModalResult exact_free_modes(const Segmentation& seg, const ModeOptions& options
   const double lambda_max = kPi * (2.0 * options.modes + 6.0);
   double a = kScanStart;
   double fa = f(a);
+  double last_lambda = 0.0;
+  bool wide_gap = false;
   while (static_cast<int>(result.modes.size()) < options.modes && a < lambda_max) {
     const double b = a + kScanStep;
     const double fb = f(b);
     if (fa == 0.0 || (fa < 0.0) != (fb < 0.0)) {
       const double lambda = brent_root(f, a, b, fa, fb, kExactRootRelTol * b);
+      if (!result.modes.empty() && lambda - last_lambda > kSuspectRootGap) wide_gap = true;
+      last_lambda = lambda;
       const double omega = model.omega(lambda);
       Mode mode;
       mode.frequency_Hz = mode.undamped_frequency_Hz = omega / (2.0 * kPi);
@@ -413,6 +434,23 @@ ModalResult exact_free_modes(const Segmentation& seg, const ModeOptions& options
     }
     a = b;
     fa = fb;
+  }
+  if (wide_gap) {
+    // Two roots inside one scan step change no sign and are skipped. Finite
+    // elements never count fewer modes below a frequency than there are
+    // (their frequencies are upper bounds), so more of them below the highest
+    // root found means roots were missed: the finite elements answer instead.
+    const RootCount count = missed_roots(seg, result, options.modes, options.rel_tol);
+    if (count.missed > 0) {
+      ModeOptions fe_options = options;
+      fe_options.method = ModeOptions::Method::kFiniteElement;
+      fe_options.elements = count.elements;
+      ModalResult fe = fe_free_modes(seg, fe_options);
+      fe.message = "the exact scan missed " + std::to_string(count.missed) +
+                   " nearly repeated root(s) below " + format_number(result.modes.back().frequency_Hz) +
+                   " Hz; " + fe.message;
+      return fe;
+    }
   }
   if (static_cast<int>(result.modes.size()) < options.modes) {
     result.complete = false;
@@ -855,6 +893,27 @@ std::pair<Mode, double> fe_mode(const Mesh& mesh, const VectorXd& q, double omeg
     for (double& v : mode.fe_dofs) v = -v;
   }
   return {std::move(mode), scale};
+}
+
+RootCount missed_roots(const Segmentation& seg, const ModalResult& found, int wanted, double rel_tol) {
+  for (const Segment& s : seg.segments) {
+    if (!(s.mu_kg_m > 0.0)) return {};
+  }
+  const double omega_top = 2.0 * kPi * found.modes.back().frequency_Hz;
+  // About 3 elements per radian of phase at the top root: its FE frequency
+  // within ~1e-4 of the exact one, lower modes closer still.
+  const std::vector<int> counts = counts_for(seg, 3.0 * std::sqrt(omega_top));
+  if (total_elements(counts) > kMaxElements) return {};
+  const Mesh mesh = build_mesh(seg, counts, ModeOptions{});
+  const VectorXd omega2 = free_spectrum(mesh).first;
+  const double below = omega_top * omega_top * (1.0 - 1e-6);
+  int count = 0;
+  for (int k = 0; k < omega2.size(); ++k) count += omega2(k) < below ? 1 : 0;
+  const int k_wanted = std::max(0, std::min(wanted, static_cast<int>(omega2.size())) - 1);
+  const double omega_wanted = std::sqrt(std::max(omega2(k_wanted), 0.0));
+  const double beta_h = std::pow(kHermiteErrorConstant * kToleranceSafety * rel_tol, 0.25);
+  return {std::max(0, count - (static_cast<int>(found.modes.size()) - 1)),
+          std::min(kMaxElements, total_elements(counts_for(seg, std::sqrt(omega_wanted) / beta_h)))};
 }
 
 ModalResult fe_free_modes(const Segmentation& seg, const ModeOptions& options) {
