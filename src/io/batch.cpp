@@ -91,7 +91,7 @@ class Evaluator {
       } else {
         override_fields(document, parse_json(row.text, where));
       }
-      const DesignFile design = read_design(document, where);
+      const DesignFile design = read_design_lean(document, where);
       row.name = design.name;
       const std::string& chosen = options_.fidelity.empty() ? design.fidelity : options_.fidelity;
       const Fidelity fidelity = chosen == "rigid"      ? Fidelity::kRigid
@@ -101,7 +101,7 @@ class Evaluator {
       try {
         row.evaluation = evaluate(design.design, fidelity, options_.modal_tolerance);
       } catch (const std::invalid_argument& e) {
-        rethrow_in(design, e);
+        rethrow_in(read_design(document, where), e);  // with the key map, to name the user's key
       }
     } catch (const InputError& e) {
       row.error = e.what();

@@ -133,6 +133,7 @@ ImplementRead read_implement(const Json& document, const std::string& source, Ke
                                   std::move(points)),
             "specs"};
   } catch (const std::invalid_argument& error) {
+    if (!keys) throw;  // a lean read: the caller reads again with the key map
     rethrow_at(error, "implement/", *keys, source, "/implement");
   }
 }
@@ -152,12 +153,12 @@ class Part {
   // The quantity, or `fallback` when absent; records where it came from.
   double get(std::string_view base, Dimension dimension, std::string_view si_key, double fallback) {
     const auto value = reader_->quantity(base, dimension);
-    (*provenance_)[name_ + "/" + std::string(si_key)] = value ? "given" : "default";
+    if (provenance_) (*provenance_)[name_ + "/" + std::string(si_key)] = value ? "given" : "default";
     return value.value_or(fallback);
   }
   double get_number(std::string_view key, double fallback) {
     const auto value = reader_->number(key);
-    (*provenance_)[name_ + "/" + std::string(key)] = value ? "given" : "default";
+    if (provenance_) (*provenance_)[name_ + "/" + std::string(key)] = value ? "given" : "default";
     return value.value_or(fallback);
   }
 
@@ -167,11 +168,18 @@ class Part {
   std::optional<ObjectReader> reader_;
 };
 
-}  // namespace
-
-DesignFile read_design(const Json& document, const std::string& source) {
-  KeyMap keys;
-  ObjectReader top(document, "", "", source, &keys);
+// With `bookkeeping`, the provenance of every input and the key map that
+// lets a later error name the user's own key; without, neither (a core error
+// is then rethrown as it is, for the caller to read again with them).
+DesignFile read_design_impl(const Json& document, const std::string& source, bool bookkeeping) {
+  KeyMap key_map;
+  KeyMap* const keys = bookkeeping ? &key_map : nullptr;
+  std::map<std::string, std::string> provenance_map;
+  std::map<std::string, std::string>* const provenance = bookkeeping ? &provenance_map : nullptr;
+  const auto note = [&](const char* input, const char* how) {
+    if (provenance) (*provenance)[input] = how;
+  };
+  ObjectReader top(document, "", "", source, keys);
   const std::string name = top.string("name").value_or(source);
   top.string("description");
   top.string("$schema");
@@ -179,15 +187,14 @@ DesignFile read_design(const Json& document, const std::string& source) {
   if (fidelity != "rigid" && fidelity != "modal" && fidelity != "response" && fidelity != "auto") {
     top.fail("fidelity", "expected \"rigid\", \"modal\", \"response\" or \"auto\", got \"" + fidelity + "\"");
   }
-  ImplementRead implement = read_implement(document, source, &keys);
+  ImplementRead implement = read_implement(document, source, keys);
   top.child("implement");
   const double L = implement.implement.length_m();
 
-  std::map<std::string, std::string> provenance;
   const Design defaults{implement.implement};
   Design design = defaults;
 
-  Part frame(top, "frame", &keys, &provenance);
+  Part frame(top, "frame", keys, provenance);
   design.cor = frame.get_number("cor", defaults.cor);
   {
     ObjectReader& r = frame.reader();
@@ -195,14 +202,14 @@ DesignFile read_design(const Json& document, const std::string& source) {
     if (design.cor_rigid && r.has("cor")) {
       r.fail("cor_rigid", "contradicts /frame/cor: give the COR, or cor_rigid to derive it from the frame's vibration");
     }
-    if (design.cor_rigid) provenance["frame/cor"] = "derived from cor_rigid and the frame's vibration";
+    if (design.cor_rigid) note("frame/cor", "derived from cor_rigid and the frame's vibration");
     design.stiffness.EI_N_m2 = r.quantity("EI", Dimension::kStiffness);
     design.stiffness.fundamental_free_Hz = r.quantity("fundamental_free", Dimension::kFrequency);
     if (design.stiffness.EI_N_m2 && design.stiffness.fundamental_free_Hz) {
       r.fail("fundamental_free_Hz", "contradicts /frame/EI_N_m2: give the stiffness once");
     }
     if (const Json* section = r.child("cross_section")) {
-      ObjectReader c(*section, "/frame/cross_section", "frame/cross_section", source, &keys);
+      ObjectReader c(*section, "/frame/cross_section", "frame/cross_section", source, keys);
       design.stiffness.shear_modulus_Pa = c.number("shear_modulus_Pa");
       const auto width = c.quantity("width", Dimension::kLength);
       const auto thickness = c.quantity("thickness", Dimension::kLength);
@@ -216,7 +223,7 @@ DesignFile read_design(const Json& document, const std::string& source) {
     r.finish({"cor", "cor_rigid", "EI_N_m2", "fundamental_free_Hz", "cross_section"});
   }
 
-  Part strings(top, "strings", &keys, &provenance);
+  Part strings(top, "strings", keys, provenance);
   design.impact_duration_s =
       strings.get("impact_duration", Dimension::kTime, "impact_duration_s", defaults.impact_duration_s);
   {
@@ -238,13 +245,13 @@ DesignFile read_design(const Json& document, const std::string& source) {
       }
       bed.contact_radius_m = r.quantity("contact_radius", Dimension::kLength).value_or(bed.contact_radius_m);
       design.strings = bed;
-      provenance["strings/impact_duration_s"] = "derived from the string tension";
+      note("strings/impact_duration_s", "derived from the string tension");
     }
     r.finish({"impact_duration_s", "impact_duration_ms", "tension_N", "tension_lb", "tension_kg",
               "string_spacing_m", "string_spacing_mm", "head_size_in2", "head_size_cm2", "contact_radius_m"});
   }
 
-  Part hand(top, "hand", &keys, &provenance);
+  Part hand(top, "hand", keys, provenance);
   design.hand.mass_kg = hand.get("mass", Dimension::kMass, "mass_kg", defaults.hand.mass_kg);
   design.hand.center_from_butt_m = hand.get("center_from_butt", Dimension::kLength,
                                             "center_from_butt_m", defaults.hand.center_from_butt_m);
@@ -257,7 +264,7 @@ DesignFile read_design(const Json& document, const std::string& source) {
   hand.reader().finish({"mass_kg", "center_from_butt_m", "grip_length_m", "grip_stiffness_N_m2",
                         "grip_damping_N_s_m2"});
 
-  Part forearm(top, "forearm", &keys, &provenance);
+  Part forearm(top, "forearm", keys, provenance);
   {
     ObjectReader& r = forearm.reader();
     const std::string key = r.one_of({"equivalent_mass_kg", "equivalent_mass_g", "mass_kg", "mass_g"});
@@ -269,7 +276,7 @@ DesignFile read_design(const Json& document, const std::string& source) {
         r.fail(key, "must be >= 0 kg, got " + brief(Json(forearm_mass)) + " kg");
       }
       r.record("equivalent_mass_kg", key);
-      provenance["forearm/equivalent_mass_kg"] = "derived from forearm/mass_kg (Eq. 7)";
+      note("forearm/equivalent_mass_kg", "derived from forearm/mass_kg (Eq. 7)");
     } else {
       design.forearm_equivalent_mass_kg = forearm.get(
           "equivalent_mass", Dimension::kMass, "equivalent_mass_kg", defaults.forearm_equivalent_mass_kg);
@@ -277,12 +284,12 @@ DesignFile read_design(const Json& document, const std::string& source) {
     r.finish({"equivalent_mass_kg", "mass_kg"});
   }
 
-  Part ball(top, "ball", &keys, &provenance);
+  Part ball(top, "ball", keys, provenance);
   design.ball.mass_kg = ball.get("mass", Dimension::kMass, "mass_kg", defaults.ball.mass_kg);
   design.ball.speed_m_s = ball.get("speed", Dimension::kSpeed, "speed_m_s", defaults.ball.speed_m_s);
   ball.reader().finish({"mass_kg", "speed_m_s"});
 
-  Part impact(top, "impact", &keys, &provenance);
+  Part impact(top, "impact", keys, provenance);
   {
     ObjectReader& r = impact.reader();
     const auto from_tip = r.quantity("from_tip", Dimension::kLength);
@@ -295,13 +302,13 @@ DesignFile read_design(const Json& document, const std::string& source) {
                    brief(Json(*from_tip)) + " m");
       }
       design.impact_from_butt_m = L - *from_tip;
-      provenance["impact/from_butt_m"] = "given (from the tip)";
+      note("impact/from_butt_m", "given (from the tip)");
     } else if (from_butt) {
       design.impact_from_butt_m = *from_butt;
-      provenance["impact/from_butt_m"] = "given";
+      note("impact/from_butt_m", "given");
     } else {
       design.impact_from_butt_m = L - 0.05;
-      provenance["impact/from_butt_m"] = "default (5 cm from the tip)";
+      note("impact/from_butt_m", "default (5 cm from the tip)");
     }
     r.finish({"from_tip_m", "from_butt_m"});
   }
@@ -324,10 +331,25 @@ DesignFile read_design(const Json& document, const std::string& source) {
   try {
     validate(design);
   } catch (const std::invalid_argument& error) {
-    rethrow_at(error, "", keys, source, "");
+    if (!bookkeeping) throw;
+    rethrow_at(error, "", key_map, source, "");
   }
-  return DesignFile{source, name, std::move(design), implement.form, std::move(provenance),
-                    std::move(reference), std::move(keys), fidelity};
+  return DesignFile{source, name, std::move(design), implement.form, std::move(provenance_map),
+                    std::move(reference), std::move(key_map), fidelity};
+}
+
+}  // namespace
+
+DesignFile read_design(const Json& document, const std::string& source) {
+  return read_design_impl(document, source, true);
+}
+
+DesignFile read_design_lean(const Json& document, const std::string& source) {
+  try {
+    return read_design_impl(document, source, false);
+  } catch (const std::invalid_argument&) {
+    return read_design_impl(document, source, true);  // throws the error at the user's key
+  }
 }
 
 void rethrow_in(const DesignFile& design, const std::invalid_argument& error) {

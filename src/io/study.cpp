@@ -731,7 +731,7 @@ class SweepWorker {
   Evaluation evaluate_here(double v, double y, std::size_t row) {
     document_[pointers_[0]] = v;
     if (pointers_.size() == 2) document_[pointers_[1]] = y;
-    const DesignFile design = read_design(document_, study_.design_source);
+    const DesignFile design = read_design_lean(document_, study_.design_source);
     Evaluation e = evaluate_in(study_, design);
     if (impact_ && !design.design.cor_rigid && !design.design.strings) {
       shared_.emplace(design.design);

@@ -182,5 +182,35 @@ TEST_CASE("A tension whose derived duration is out of range is blamed, at the ke
   }
 }
 
+TEST_CASE("A lean read gives the same design and the same errors, without provenance or key map") {
+  // The oracle is read_design itself: the same evaluation bit for bit, and
+  // the same message for a reader error, a core error at a converted key and
+  // a core error found only after reading.
+  const auto outcome = [](auto&& reader, const char* text) {
+    try {
+      const DesignFile d = reader(parse_json(text, "test.json"), "test.json");
+      return std::to_string(evaluate(d.design).peak_wrist_force_N) + " " + d.name;
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+  };
+  for (const char* text : {
+           R"({"name": "specs", "implement": {"length_in": 27, "mass_g": 305, "balance_cm": 32.5,
+               "swingweight_kg_cm2": 320}, "impact": {"from_tip_cm": 15}})",
+           R"({"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8},
+               "hand": {"mass_g": -5}})",
+           R"({"implement": {"length_in": 27, "mass_g": 305, "balance_cm": 80, "swingweight_kg_cm2": 320}})",
+           R"({"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8},
+               "impact": {"from_butt_m": 0.9}})"}) {
+    INFO(text);
+    const std::string full = outcome(read_design, text);
+    CHECK(outcome(read_design_lean, text) == full);
+  }
+  const DesignFile lean = read_design_lean(parse_json(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25,
+      "head_to_handle_mass_ratio": 0.8}})", "test.json"), "test.json");
+  CHECK(lean.provenance.empty());
+  CHECK(lean.keys.empty());
+}
+
 }  // namespace
 }  // namespace sweetspot::io

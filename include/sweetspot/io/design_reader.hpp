@@ -41,6 +41,11 @@ struct DesignFile {
 // the JSON pointer, the value and what was expected.
 DesignFile read_design(const Json& document, const std::string& source);
 
+// read_design() without the provenance and the key map (empty in the
+// result), for sweeps and batches that read a design per point; the design
+// and every error are the same (an error is found again with the key map).
+DesignFile read_design_lean(const Json& document, const std::string& source);
+
 // Reads a design file.
 DesignFile load_design(const std::string& path);
 
