@@ -151,9 +151,9 @@ void bench_speed(const BenchOptions& options, std::ostream& log) {
         "\nTarget: a sweep of one million designs in a few seconds and under 50 MB resident. Along the impact "
         "point: {:.2f} s and {:.1f} MB on all cores; a sweep whose first variable is the impact point reads one "
         "design per row and evaluates the rest with `ImpactSweep`. Any other sweep, and a batch, reads every "
-        "point's design from JSON (unit conversions, defaults, provenance, the key map that lets an error name "
-        "the user's own key), which is what its time per point is made of: {:.2f} s for a million such points "
-        "on all cores.\n",
+        "point's design from JSON (unit conversions, defaults, the implement rebuilt; the provenance and the key "
+        "map that names the user's own key only for a point that fails), which is what its time per point is "
+        "made of: {:.2f} s for a million such points on all cores.\n",
         cli.million_point_sweep_s, cli.million_point_sweep_MB, cli.every_point_sweep_s);
   }
   md += "\n## Optimizer: evaluations, wall time and the objective reached, per study and algorithm\n\n"
