@@ -320,6 +320,26 @@ TEST_CASE("A 1 micrometre section tends to the beam without it, plus its mass as
   }
 }
 
+// Two solvers, one answer: finite elements sized for rel_tol on f1 err by
+// about rel_tol (f_k / f_1)^2 on mode k (the h^4 rate scaled by
+// (beta_k / beta_1)^4) plus round-off 8.4 N^4 eps. Returns the exact modes.
+ModalResult fe_agrees_with_exact(const std::vector<Section>& beam, const std::vector<PointMass>& masses,
+                                 int modes) {
+  const ModalResult e = free_modes(beam, masses, exact(modes));
+  const ModalResult f = free_modes(beam, masses, fe(modes));
+  REQUIRE(non_finite_modes(e) == "");
+  REQUIRE(non_finite_modes(f) == "");
+  REQUIRE(static_cast<int>(e.modes.size()) == modes);
+  REQUIRE(static_cast<int>(f.modes.size()) == modes);
+  const double round_off = fe_round_off(f.elements_used);
+  for (int k = 0; k < modes; ++k) {
+    const double ratio = e.modes[k].frequency_Hz / e.modes[0].frequency_Hz;
+    CHECK(f.modes[k].frequency_Hz ==
+          Approx(e.modes[k].frequency_Hz).epsilon(kFeToleranceFloor * ratio * ratio + round_off));
+  }
+  return e;
+}
+
 TEST_CASE("Finite elements agree with the exact solver beside a micrometre sliver or a point mass a hair from a boundary") {
   // The exact transfer matrices are the oracle. Finite elements sized for
   // rel_tol on f1 err by about rel_tol (f_k / f_1)^2 on mode k plus round-off;
@@ -329,16 +349,7 @@ TEST_CASE("Finite elements agree with the exact solver beside a micrometre slive
   // frequencies wrong by up to a factor of 2).
   const std::vector<Section> halves{{0.35, 0.175, 250.0}, {0.35, 0.175, 250.0}};
   const auto agree = [](const std::vector<Section>& beam, const std::vector<PointMass>& masses) {
-    const ModalResult e = free_modes(beam, masses, exact(2));
-    const ModalResult f = free_modes(beam, masses, fe(2));
-    REQUIRE(non_finite_modes(f) == "");
-    REQUIRE(f.modes.size() == 2);
-    const double round_off = fe_round_off(f.elements_used);
-    for (int k = 0; k < 2; ++k) {
-      const double ratio = e.modes[k].frequency_Hz / e.modes[0].frequency_Hz;
-      CHECK(f.modes[k].frequency_Hz ==
-            Approx(e.modes[k].frequency_Hz).epsilon(kFeToleranceFloor * ratio * ratio + round_off));
-    }
+    fe_agrees_with_exact(beam, masses, 2);
   };
   for (const double delta : {1e-6, 1e-5, 1e-4}) {
     INFO("delta = " << delta << " m");
@@ -399,18 +410,7 @@ TEST_CASE("Mass ratios 1e-6 to 1e6 between two sections: exact and finite elemen
     INFO("m2 / m1 = " << r);
     const double m1 = kMass / (1.0 + r), m2 = kMass * r / (1.0 + r);
     const std::vector<Section> beam{{kLength, m1, kEI}, {kLength, m2, kEI}};
-    const ModalResult e = free_modes(beam, {}, exact(3));
-    const ModalResult f = free_modes(beam, {}, fe(3));
-    REQUIRE(non_finite_modes(e) == "");
-    REQUIRE(non_finite_modes(f) == "");
-    REQUIRE(e.modes.size() == 3);
-    REQUIRE(f.modes.size() == 3);
-    const double round_off = fe_round_off(f.elements_used);
-    for (int k = 0; k < 3; ++k) {
-      const double ratio = e.modes[k].frequency_Hz / e.modes[0].frequency_Hz;
-      CHECK(f.modes[k].frequency_Hz ==
-            Approx(e.modes[k].frequency_Hz).epsilon(kFeToleranceFloor * ratio * ratio + round_off));
-    }
+    const ModalResult e = fe_agrees_with_exact(beam, {}, 3);
     const ModalResult turned = free_modes({{kLength, m2, kEI}, {kLength, m1, kEI}}, {}, exact(3));
     for (int k = 0; k < 3; ++k) {
       CHECK(turned.modes[k].frequency_Hz ==
