@@ -916,6 +916,18 @@ RootCount missed_roots(const Segmentation& seg, const ModalResult& found, int wa
           std::min(kMaxElements, total_elements(counts_for(seg, std::sqrt(omega_wanted) / beta_h)))};
 }
 
+// Above this many elements the free beam's modes are not solved densely
+// (O(N^3): 2000 elements took 3 minutes) but located on a coarse mesh and
+// each refined on the full one with the banded solver of the hand-held modes.
+constexpr int kDenseFreeElements = 256;
+
+// The lowest options.modes free flexible omega^2 and M-normalised
+// eigenvectors on `mesh`, found on a coarse mesh and refined; empty with a
+// reason in `why` when a mode cannot be matched.
+std::optional<std::pair<VectorXd, MatrixXd>> refined_free_spectrum(const Segmentation& seg, const Mesh& mesh,
+                                                                   const ModeOptions& options,
+                                                                   int* coarse_elements, std::string* why);
+
 ModalResult fe_free_modes(const Segmentation& seg, const ModeOptions& options) {
   ModalResult result;
   result.method = ModeOptions::Method::kFiniteElement;
@@ -923,14 +935,23 @@ ModalResult fe_free_modes(const Segmentation& seg, const ModeOptions& options) {
   const std::vector<int> counts = element_counts(seg, options);
   const Mesh mesh = build_mesh(seg, counts, options);
   result.elements_used = static_cast<int>(mesh.elements.size());  // after merge_tiny_elements
-  const auto [omega2, vectors] = free_spectrum(mesh);
+  result.message = "finite elements: " + std::to_string(result.elements_used) + " elements";
+  std::optional<std::pair<VectorXd, MatrixXd>> spectrum;
+  if (result.elements_used > kDenseFreeElements) {
+    int coarse_elements = 0;
+    std::string why;
+    spectrum = refined_free_spectrum(seg, mesh, options, &coarse_elements, &why);
+    result.message += spectrum ? ", each mode refined from a " + std::to_string(coarse_elements) + "-element solve"
+                               : ", dense (refinement skipped: " + why + ")";
+  }
+  if (!spectrum) spectrum = free_spectrum(mesh);
+  const auto& [omega2, vectors] = *spectrum;
   const int available = static_cast<int>(omega2.size());
   for (int k = 0; k < std::min(options.modes, available); ++k) {
     result.modes.push_back(
         fe_mode(mesh, vectors.col(k), std::sqrt(std::max(omega2(k), 0.0))).first);
   }
   result.complete = static_cast<int>(result.modes.size()) == options.modes;
-  result.message = "finite elements: " + std::to_string(result.elements_used) + " elements";
   return result;
 }
 
@@ -1365,6 +1386,64 @@ std::optional<DampedSpectrum> refined_damped_spectrum(const Segmentation& seg, c
     out.pairs.push_back(std::move(*pair));
   }
   return out;
+}
+
+std::optional<std::pair<VectorXd, MatrixXd>> refined_free_spectrum(const Segmentation& seg, const Mesh& mesh,
+                                                                   const ModeOptions& options,
+                                                                   int* coarse_elements, std::string* why) {
+  const double weight = total_phase_weight(seg);
+  const std::vector<int> coarse_counts =
+      counts_for(seg, (options.modes + 0.5) * kPi / (kCoarseBetaH * weight));
+  const Mesh coarse = build_mesh(seg, coarse_counts, options);
+  *coarse_elements = static_cast<int>(coarse.elements.size());
+  const auto [coarse_omega2, coarse_vectors] = free_spectrum(coarse);
+  if (coarse_omega2.size() <= options.modes) {
+    *why = "coarse mesh has too few modes";
+    return std::nullopt;
+  }
+  // The beam's K and M with two unit masses on no spring in the hand's place:
+  // the banded pencil needs them, and they stay decoupled (their part of
+  // every vector is zero).
+  const Assembled beam = assemble(mesh, nullptr);
+  const int n = beam.beam_dofs;
+  Assembled a;
+  a.beam_dofs = n;
+  a.K = MatrixXd::Zero(n + 2, n + 2);
+  a.C = MatrixXd::Zero(n + 2, n + 2);
+  a.M = MatrixXd::Zero(n + 2, n + 2);
+  a.K.topLeftCorner(n, n) = beam.K;
+  a.M.topLeftCorner(n, n) = beam.M;
+  a.M(n, n) = a.M(n + 1, n + 1) = 1.0;
+  QuadraticPencil pencil(a);
+  VectorXd omega2(options.modes);
+  MatrixXd vectors(n, options.modes);
+  const int coarse_n = static_cast<int>(coarse_vectors.rows());
+  for (int k = 0; k < options.modes; ++k) {
+    const Complex s0(0.0, std::sqrt(std::max(coarse_omega2(k), 0.0)));
+    double gap = 2.0 * s0.imag();  // the conjugate root
+    for (int j = 0; j < coarse_omega2.size(); ++j) {
+      if (j != k) gap = std::min(gap, std::abs(std::sqrt(std::max(coarse_omega2(j), 0.0)) - s0.imag()));
+    }
+    VectorXcd q0 = VectorXcd::Zero(coarse_n + 2);
+    q0.head(coarse_n) = coarse_vectors.col(k).cast<Complex>();
+    std::optional<DampedPair> pair = refine_damped_pair(pencil, s0, interpolate_dofs(coarse, q0, mesh, n + 2));
+    if (!pair) {
+      *why = "mode " + std::to_string(k + 1) + " did not converge";
+      return std::nullopt;
+    }
+    if (!(std::abs(pair->s - s0) < kMatchFraction * gap)) {
+      *why = "mode " + std::to_string(k + 1) + " moved too far from its coarse estimate";
+      return std::nullopt;
+    }
+    // Undamped: the eigenvector is real up to one complex factor.
+    VectorXcd q = pair->q.head(n);
+    Eigen::Index largest = 0;
+    q.cwiseAbs().maxCoeff(&largest);
+    const VectorXd real = (q * (std::abs(q(largest)) / q(largest))).real();
+    omega2(k) = std::norm(pair->s);
+    vectors.col(k) = real / std::sqrt(real.dot(beam.M * real));
+  }
+  return std::pair{omega2, vectors};
 }
 
 }  // namespace
