@@ -198,14 +198,50 @@ struct RunResult {
   std::string termination;
 };
 
+// The problem's box mapped onto the unit cube (objective and constraint
+// scales are left at 1).
+Scaling box_scaling(const Problem& problem) {
+  Scaling scaling;
+  scaling.lower = problem.lower;
+  for (std::size_t i = 0; i < problem.lower.size(); ++i) scaling.range.push_back(problem.upper[i] - problem.lower[i]);
+  return scaling;
+}
+
+// The unit-cube bounds and the stopping rules every run shares: the
+// tolerances and what is left of the evaluation and time budgets.
+void set_box_and_stopping(nlopt::opt& opt, const OptimizeOptions& options, const Evaluator& evaluator) {
+  const unsigned n = opt.get_dimension();
+  opt.set_lower_bounds(std::vector<double>(n, 0.0));
+  opt.set_upper_bounds(std::vector<double>(n, 1.0));
+  opt.set_xtol_abs(std::vector<double>(n, options.x_tolerance_rel));
+  opt.set_ftol_rel(options.f_tolerance_rel);
+  opt.set_maxeval(std::max(1, options.max_evaluations - evaluator.evaluations()));
+  opt.set_maxtime(std::max(1e-3, options.max_seconds - evaluator.seconds()));
+  opt.set_initial_step(std::vector<double>(n, 0.1));
+}
+
+// Runs `opt` from u and says how it ended (NLopt's exceptions as words).
+std::string run_to_end(nlopt::opt& opt, std::vector<double> u, const Evaluator& evaluator) {
+  double f = 0.0;
+  try {
+    return result_name(opt.optimize(u, f));
+  } catch (const nlopt::forced_stop&) {
+    return evaluator.spent() ? "MAXEVAL_REACHED (sweetspot's budget, including differences)" : "FORCESTOP";
+  } catch (const nlopt::roundoff_limited&) {
+    return "ROUNDOFF_LIMITED";
+  } catch (const std::invalid_argument& e) {
+    return std::string("INVALID_ARGS: ") + e.what();
+  } catch (const std::runtime_error& e) {
+    return std::string("FAILURE: ") + e.what();
+  }
+}
+
 // One NLopt run from x0. Constraints are added when the algorithm takes them.
 RunResult run_nlopt(nlopt::algorithm algorithm, std::optional<nlopt::algorithm> local,
                     const Problem& problem, const OptimizeOptions& options, Evaluator& evaluator,
                     std::vector<double> x0) {
   const unsigned n = static_cast<unsigned>(problem.lower.size());
-  Scaling scaling;
-  scaling.lower = problem.lower;
-  for (unsigned i = 0; i < n; ++i) scaling.range.push_back(problem.upper[i] - problem.lower[i]);
+  Scaling scaling = box_scaling(problem);
   const std::vector<double>& at_start = evaluator.values(x0);
   scaling.objective = std::abs(at_start[0]) > 0 ? std::abs(at_start[0]) : 1.0;
   for (std::size_t k = 0; k < problem.constraints.size(); ++k) {
@@ -215,8 +251,7 @@ RunResult run_nlopt(nlopt::algorithm algorithm, std::optional<nlopt::algorithm> 
   }
 
   nlopt::opt opt(algorithm, n);
-  opt.set_lower_bounds(std::vector<double>(n, 0.0));
-  opt.set_upper_bounds(std::vector<double>(n, 1.0));
+  set_box_and_stopping(opt, options, evaluator);
   Callback objective{&evaluator, &scaling, {}};
   Callback inequalities{&evaluator, &scaling, {}};
   Callback equalities{&evaluator, &scaling, {}};
@@ -241,32 +276,13 @@ RunResult run_nlopt(nlopt::algorithm algorithm, std::optional<nlopt::algorithm> 
         std::string("algorithm: ") + nlopt_algorithm_to_string(static_cast<nlopt_algorithm>(algorithm)) +
         " does not take nonlinear constraints; use auto, LD_SLSQP, LN_COBYLA, GN_ISRES or AUGLAG");
   }
-  const std::vector<double> x_tolerance(n, options.x_tolerance_rel);
   if (local) {
     nlopt::opt local_opt(*local, n);
-    local_opt.set_xtol_abs(x_tolerance);
+    local_opt.set_xtol_abs(std::vector<double>(n, options.x_tolerance_rel));
     local_opt.set_ftol_rel(options.f_tolerance_rel);
     opt.set_local_optimizer(local_opt);
   }
-  opt.set_xtol_abs(x_tolerance);
-  opt.set_ftol_rel(options.f_tolerance_rel);
-  opt.set_maxeval(std::max(1, options.max_evaluations - evaluator.evaluations()));
-  opt.set_maxtime(std::max(1e-3, options.max_seconds - evaluator.seconds()));
-  opt.set_initial_step(std::vector<double>(n, 0.1));
-  double f = 0.0;
-  std::vector<double> u0 = scaling.to_u(x0);
-  try {
-    return {result_name(opt.optimize(u0, f))};
-  } catch (const nlopt::forced_stop&) {
-    return {evaluator.spent() ? "MAXEVAL_REACHED (sweetspot's budget, including differences)"
-                              : "FORCESTOP"};
-  } catch (const nlopt::roundoff_limited&) {
-    return {"ROUNDOFF_LIMITED"};
-  } catch (const std::invalid_argument& e) {
-    return {std::string("INVALID_ARGS: ") + e.what()};
-  } catch (const std::runtime_error& e) {
-    return {std::string("FAILURE: ") + e.what()};
-  }
+  return {run_to_end(opt, scaling.to_u(x0), evaluator)};
 }
 
 // The least-violation stage: when no feasible point has been found, the
@@ -290,34 +306,12 @@ double violation_callback(unsigned, const double* u, double*, void* data) {
 
 std::string reduce_violation(const Problem& problem, const OptimizeOptions& options,
                              Evaluator& evaluator) {
-  const unsigned n = static_cast<unsigned>(problem.lower.size());
-  Scaling scaling;
-  scaling.lower = problem.lower;
-  for (unsigned i = 0; i < n; ++i) scaling.range.push_back(problem.upper[i] - problem.lower[i]);
+  const Scaling scaling = box_scaling(problem);
   ViolationCallback callback{&evaluator, &scaling};
-  nlopt::opt opt(nlopt::LN_COBYLA, n);
-  opt.set_lower_bounds(std::vector<double>(n, 0.0));
-  opt.set_upper_bounds(std::vector<double>(n, 1.0));
+  nlopt::opt opt(nlopt::LN_COBYLA, static_cast<unsigned>(problem.lower.size()));
+  set_box_and_stopping(opt, options, evaluator);
   opt.set_min_objective(violation_callback, &callback);
-  opt.set_xtol_abs(std::vector<double>(n, options.x_tolerance_rel));
-  opt.set_ftol_rel(options.f_tolerance_rel);
-  opt.set_maxeval(std::max(1, options.max_evaluations - evaluator.evaluations()));
-  opt.set_maxtime(std::max(1e-3, options.max_seconds - evaluator.seconds()));
-  opt.set_initial_step(std::vector<double>(n, 0.1));
-  std::vector<double> u = scaling.to_u(evaluator.best_x());
-  double f = 0.0;
-  try {
-    return result_name(opt.optimize(u, f));
-  } catch (const nlopt::forced_stop&) {
-    return evaluator.spent() ? "MAXEVAL_REACHED (sweetspot's budget, including differences)"
-                             : "FORCESTOP";
-  } catch (const nlopt::roundoff_limited&) {
-    return "ROUNDOFF_LIMITED";
-  } catch (const std::invalid_argument& e) {
-    return std::string("INVALID_ARGS: ") + e.what();
-  } catch (const std::runtime_error& e) {
-    return std::string("FAILURE: ") + e.what();
-  }
+  return run_to_end(opt, scaling.to_u(evaluator.best_x()), evaluator);
 }
 
 // Halton points in [0,1)^n, shifted by a seeded random vector (mod 1).
