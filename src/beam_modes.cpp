@@ -102,6 +102,13 @@ struct Segmentation {
   double length_m = 0.0;
 };
 
+// The bending phase beta l of a uniform stretch per root omega:
+// (mu / EI)^(1/4) l, so that beta l = sqrt(omega) times it. Meshes are sized
+// to equal phase per element.
+double phase_weight(double mu_kg_m, double EI_N_m2, double length_m) {
+  return std::pow(mu_kg_m / EI_N_m2, 0.25) * length_m;
+}
+
 Segmentation segment(const std::vector<Section>& sections,
                      const std::vector<PointMass>& point_masses,
                      std::vector<double> extra_breaks = {}) {
@@ -284,10 +291,10 @@ class TransferModel {
     double mass = seg.tip_mass_kg;
     for (const Segment& s : seg.segments) {
       mass += s.mu_kg_m * s.length_m + s.mass_at_start_kg;
-      phase_per_root_omega_ += std::pow(s.mu_kg_m / s.EI_N_m2, 0.25) * s.length_m;
+      phase_per_root_omega_ += phase_weight(s.mu_kg_m, s.EI_N_m2, s.length_m);
     }
     mu_bar_ = mass / L_;
-    if (phase_per_root_omega_ == 0.0) phase_per_root_omega_ = std::pow(mu_bar_ / EI0_, 0.25) * L_;
+    if (phase_per_root_omega_ == 0.0) phase_per_root_omega_ = phase_weight(mu_bar_, EI0_, L_);
   }
 
   // omega [rad/s] for a total phase lambda = sum beta_i l_i.
@@ -624,7 +631,7 @@ constexpr double kMergeTolerance = 1e-9;
 
 double phase(const Element& e) {
   double sum = 0.0;
-  for (const ElementPiece& p : e.pieces) sum += std::pow(p.mu / p.EI, 0.25) * (p.e - p.s);
+  for (const ElementPiece& p : e.pieces) sum += phase_weight(p.mu, p.EI, p.e - p.s);
   return sum;
 }
 
@@ -640,14 +647,16 @@ double merge_error(const Element& a, const Element& b, double length_m) {
 }
 
 void merge_tiny_elements(Mesh& mesh) {
+  std::vector<double> phases;  // of each element, kept in step with the merges
+  for (const Element& e : mesh.elements) phases.push_back(phase(e));
   while (mesh.elements.size() > 1) {
     std::size_t tiny = 0;
     double worst = kMergeRatio;
     for (std::size_t e = 0; e < mesh.elements.size(); ++e) {
       double neighbour = 0.0;
-      if (e > 0) neighbour = std::max(neighbour, phase(mesh.elements[e - 1]));
-      if (e + 1 < mesh.elements.size()) neighbour = std::max(neighbour, phase(mesh.elements[e + 1]));
-      const double ratio = phase(mesh.elements[e]) / neighbour;
+      if (e > 0) neighbour = std::max(neighbour, phases[e - 1]);
+      if (e + 1 < mesh.elements.size()) neighbour = std::max(neighbour, phases[e + 1]);
+      const double ratio = phases[e] / neighbour;
       if (ratio < worst) {
         worst = ratio;
         tiny = e;
@@ -670,12 +679,11 @@ void merge_tiny_elements(Mesh& mesh) {
           detail::format_number(mesh.elements[tiny].x0) + " m from the butt, with EI " +
           detail::format_number(p.EI) +
           " N m^2 unlike its neighbours', is too short for finite elements to resolve (the hand-held "
-          "modes need them); lengthen it or give it its neighbours' EI");
+          "modes always use them); lengthen it or give it its neighbours' EI");
     }
     const bool into_left =
         error_left < error_right ||
-        (error_left == error_right && tiny > 0 &&
-         phase(mesh.elements[tiny - 1]) >= phase(mesh.elements[tiny + 1]));
+        (error_left == error_right && tiny > 0 && phases[tiny - 1] >= phases[tiny + 1]);
     const std::size_t left = into_left ? tiny - 1 : tiny;
     const Element& a = mesh.elements[left];
     const Element& b = mesh.elements[left + 1];
@@ -686,6 +694,8 @@ void merge_tiny_elements(Mesh& mesh) {
     merged.pieces.back().e = merged.h;
     if (mesh.nodal_mass_kg[left + 1] > 0.0) merged.masses.emplace_back(a.h, mesh.nodal_mass_kg[left + 1]);
     for (const auto& [xi, kg] : b.masses) merged.masses.emplace_back(xi + a.h, kg);
+    phases[left] += phases[left + 1];
+    phases.erase(phases.begin() + static_cast<std::ptrdiff_t>(left) + 1);
     mesh.elements[left] = std::move(merged);
     mesh.elements.erase(mesh.elements.begin() + static_cast<std::ptrdiff_t>(left) + 1);
     mesh.nodes_m.erase(mesh.nodes_m.begin() + static_cast<std::ptrdiff_t>(left) + 1);
@@ -810,7 +820,7 @@ MatrixXd flexible_basis(const Mesh& mesh, const Assembled& a, const HandCoupling
 std::vector<int> counts_for(const Segmentation& seg, double per_phase_weight) {
   std::vector<int> counts;
   for (const Segment& s : seg.segments) {
-    const double phase = std::pow(s.mu_kg_m / s.EI_N_m2, 0.25) * s.length_m;
+    const double phase = phase_weight(s.mu_kg_m, s.EI_N_m2, s.length_m);
     counts.push_back(std::max(1, static_cast<int>(std::ceil(per_phase_weight * phase - 1e-9))));
   }
   return counts;
@@ -818,7 +828,7 @@ std::vector<int> counts_for(const Segmentation& seg, double per_phase_weight) {
 
 double total_phase_weight(const Segmentation& seg) {
   double sum = 0.0;
-  for (const Segment& s : seg.segments) sum += std::pow(s.mu_kg_m / s.EI_N_m2, 0.25) * s.length_m;
+  for (const Segment& s : seg.segments) sum += phase_weight(s.mu_kg_m, s.EI_N_m2, s.length_m);
   return sum;
 }
 
@@ -922,11 +932,11 @@ RootCount missed_roots(const Segmentation& seg, const ModalResult& found, int wa
 constexpr int kDenseFreeElements = 256;
 
 // The lowest options.modes free flexible omega^2 and M-normalised
-// eigenvectors on `mesh`, found on a coarse mesh and refined; empty with a
+// eigenvectors on `mesh`, found on `coarse` and refined; empty with a
 // reason in `why` when a mode cannot be matched.
-std::optional<std::pair<VectorXd, MatrixXd>> refined_free_spectrum(const Segmentation& seg, const Mesh& mesh,
-                                                                   const ModeOptions& options,
-                                                                   int* coarse_elements, std::string* why);
+std::optional<std::pair<VectorXd, MatrixXd>> refined_free_spectrum(const Mesh& mesh, const ModeOptions& options,
+                                                                   const Mesh& coarse, std::string* why);
+Mesh coarse_mesh(const Segmentation& seg, const ModeOptions& options);
 
 ModalResult fe_free_modes(const Segmentation& seg, const ModeOptions& options) {
   ModalResult result;
@@ -938,10 +948,11 @@ ModalResult fe_free_modes(const Segmentation& seg, const ModeOptions& options) {
   result.message = "finite elements: " + std::to_string(result.elements_used) + " elements";
   std::optional<std::pair<VectorXd, MatrixXd>> spectrum;
   if (result.elements_used > kDenseFreeElements) {
-    int coarse_elements = 0;
+    const Mesh coarse = coarse_mesh(seg, options);
     std::string why;
-    spectrum = refined_free_spectrum(seg, mesh, options, &coarse_elements, &why);
-    result.message += spectrum ? ", each mode refined from a " + std::to_string(coarse_elements) + "-element solve"
+    spectrum = refined_free_spectrum(mesh, options, coarse, &why);
+    result.message += spectrum ? ", each mode refined from a " + std::to_string(coarse.elements.size()) +
+                                     "-element solve"
                                : ", dense (refinement skipped: " + why + ")";
   }
   if (!spectrum) spectrum = free_spectrum(mesh);
@@ -1338,43 +1349,32 @@ VectorXcd interpolate_dofs(const Mesh& coarse, const VectorXcd& q, const Mesh& f
   return out;
 }
 
-// The lowest `wanted` modes on `mesh` located on a coarse mesh and refined;
-// empty with a reason in `why` when a mode cannot be matched.
-std::optional<DampedSpectrum> refined_damped_spectrum(const Segmentation& seg, const Mesh& mesh,
-                                                      const Assembled& a, const HandCoupling& hand,
-                                                      const ModeOptions& options, int* coarse_elements,
-                                                      std::string* why) {
-  const double weight = total_phase_weight(seg);
-  const std::vector<int> coarse_counts =
-      counts_for(seg, (options.modes + 0.5) * kPi / (kCoarseBetaH * weight));
-  *coarse_elements = total_elements(coarse_counts);
-  if (*coarse_elements >= static_cast<int>(mesh.elements.size())) {
-    *why = "mesh no finer than the coarse one";
-    return std::nullopt;
-  }
-  const Mesh coarse = build_mesh(seg, coarse_counts, options);
-  const Assembled ca = assemble(coarse, &hand);
-  // One more than wanted, to check the last wanted one is matched unambiguously.
-  const DampedSpectrum guess =
-      modal_damped_spectrum(coarse, ca, hand, options.modes + 1, options.modes + kExtraBasisModes);
-  if (static_cast<int>(guess.pairs.size()) <= options.modes) {
-    *why = "coarse mesh has too few oscillatory modes";
-    return std::nullopt;
-  }
-  const int count = options.modes;
-  QuadraticPencil pencil(a);
-  DampedSpectrum out;
-  out.overdamped = guess.overdamped;
+// The coarse mesh on which the lowest `modes` are located before refinement:
+// kCoarseBetaH radians of phase per element at mode modes + 1/2.
+Mesh coarse_mesh(const Segmentation& seg, const ModeOptions& options) {
+  return build_mesh(seg, counts_for(seg, (options.modes + 0.5) * kPi / (kCoarseBetaH * total_phase_weight(seg))),
+                    options);
+}
+
+// Each of the first `count` coarse estimates (s, q on `coarse`; `guesses`
+// ascending, one more than wanted so the last is matched unambiguously)
+// refined on `mesh`. Each must stay within kMatchFraction of the distance to
+// its nearest neighbour (or its conjugate root); else empty with a reason.
+std::optional<std::vector<DampedPair>> refine_estimates(QuadraticPencil& pencil, const Mesh& coarse,
+                                                        const Mesh& mesh, int size,
+                                                        const std::vector<DampedPair>& guesses, int count,
+                                                        std::string* why) {
+  std::vector<DampedPair> out;
   for (int k = 0; k < count; ++k) {
-    const Complex s0 = guess.pairs[k].s;
+    const Complex s0 = guesses[k].s;
     double gap = std::numeric_limits<double>::infinity();
-    for (std::size_t j = 0; j < guess.pairs.size(); ++j) {
-      if (static_cast<int>(j) != k) gap = std::min(gap, std::abs(guess.pairs[j].s - s0));
+    for (std::size_t j = 0; j < guesses.size(); ++j) {
+      if (static_cast<int>(j) != k) gap = std::min(gap, std::abs(guesses[j].s - s0));
     }
     // The conjugate root is a neighbour too (and the overdamped real axis between).
     gap = std::min(gap, 2.0 * s0.imag());
-    std::optional<DampedPair> pair = refine_damped_pair(
-        pencil, s0, interpolate_dofs(coarse, guess.pairs[k].q, mesh, static_cast<int>(a.M.rows())));
+    std::optional<DampedPair> pair =
+        refine_damped_pair(pencil, s0, interpolate_dofs(coarse, guesses[k].q, mesh, size));
     if (!pair) {
       *why = "mode " + std::to_string(k + 1) + " did not converge";
       return std::nullopt;
@@ -1383,19 +1383,31 @@ std::optional<DampedSpectrum> refined_damped_spectrum(const Segmentation& seg, c
       *why = "mode " + std::to_string(k + 1) + " moved too far from its coarse estimate";
       return std::nullopt;
     }
-    out.pairs.push_back(std::move(*pair));
+    out.push_back(std::move(*pair));
   }
   return out;
 }
 
-std::optional<std::pair<VectorXd, MatrixXd>> refined_free_spectrum(const Segmentation& seg, const Mesh& mesh,
-                                                                   const ModeOptions& options,
-                                                                   int* coarse_elements, std::string* why) {
-  const double weight = total_phase_weight(seg);
-  const std::vector<int> coarse_counts =
-      counts_for(seg, (options.modes + 0.5) * kPi / (kCoarseBetaH * weight));
-  const Mesh coarse = build_mesh(seg, coarse_counts, options);
-  *coarse_elements = static_cast<int>(coarse.elements.size());
+// The lowest `wanted` modes on `mesh` located on a coarse mesh and refined;
+// empty with a reason in `why` when a mode cannot be matched.
+std::optional<DampedSpectrum> refined_damped_spectrum(const Mesh& mesh, const Assembled& a,
+                                                      const HandCoupling& hand, const ModeOptions& options,
+                                                      const Mesh& coarse, std::string* why) {
+  const Assembled ca = assemble(coarse, &hand);
+  const DampedSpectrum guess =
+      modal_damped_spectrum(coarse, ca, hand, options.modes + 1, options.modes + kExtraBasisModes);
+  if (static_cast<int>(guess.pairs.size()) <= options.modes) {
+    *why = "coarse mesh has too few oscillatory modes";
+    return std::nullopt;
+  }
+  QuadraticPencil pencil(a);
+  auto pairs = refine_estimates(pencil, coarse, mesh, static_cast<int>(a.M.rows()), guess.pairs, options.modes, why);
+  if (!pairs) return std::nullopt;
+  return DampedSpectrum{std::move(*pairs), guess.overdamped};
+}
+
+std::optional<std::pair<VectorXd, MatrixXd>> refined_free_spectrum(const Mesh& mesh, const ModeOptions& options,
+                                                                   const Mesh& coarse, std::string* why) {
   const auto [coarse_omega2, coarse_vectors] = free_spectrum(coarse);
   if (coarse_omega2.size() <= options.modes) {
     *why = "coarse mesh has too few modes";
@@ -1414,33 +1426,26 @@ std::optional<std::pair<VectorXd, MatrixXd>> refined_free_spectrum(const Segment
   a.K.topLeftCorner(n, n) = beam.K;
   a.M.topLeftCorner(n, n) = beam.M;
   a.M(n, n) = a.M(n + 1, n + 1) = 1.0;
-  QuadraticPencil pencil(a);
-  VectorXd omega2(options.modes);
-  MatrixXd vectors(n, options.modes);
+  // Undamped coarse modes as damped estimates: s = i omega.
   const int coarse_n = static_cast<int>(coarse_vectors.rows());
-  for (int k = 0; k < options.modes; ++k) {
-    const Complex s0(0.0, std::sqrt(std::max(coarse_omega2(k), 0.0)));
-    double gap = 2.0 * s0.imag();  // the conjugate root
-    for (int j = 0; j < coarse_omega2.size(); ++j) {
-      if (j != k) gap = std::min(gap, std::abs(std::sqrt(std::max(coarse_omega2(j), 0.0)) - s0.imag()));
-    }
+  std::vector<DampedPair> guesses;
+  for (int k = 0; k <= options.modes; ++k) {
     VectorXcd q0 = VectorXcd::Zero(coarse_n + 2);
     q0.head(coarse_n) = coarse_vectors.col(k).cast<Complex>();
-    std::optional<DampedPair> pair = refine_damped_pair(pencil, s0, interpolate_dofs(coarse, q0, mesh, n + 2));
-    if (!pair) {
-      *why = "mode " + std::to_string(k + 1) + " did not converge";
-      return std::nullopt;
-    }
-    if (!(std::abs(pair->s - s0) < kMatchFraction * gap)) {
-      *why = "mode " + std::to_string(k + 1) + " moved too far from its coarse estimate";
-      return std::nullopt;
-    }
+    guesses.push_back({Complex(0.0, std::sqrt(std::max(coarse_omega2(k), 0.0))), std::move(q0)});
+  }
+  QuadraticPencil pencil(a);
+  const auto pairs = refine_estimates(pencil, coarse, mesh, n + 2, guesses, options.modes, why);
+  if (!pairs) return std::nullopt;
+  VectorXd omega2(options.modes);
+  MatrixXd vectors(n, options.modes);
+  for (int k = 0; k < options.modes; ++k) {
     // Undamped: the eigenvector is real up to one complex factor.
-    VectorXcd q = pair->q.head(n);
+    const VectorXcd q = (*pairs)[k].q.head(n);
     Eigen::Index largest = 0;
     q.cwiseAbs().maxCoeff(&largest);
     const VectorXd real = (q * (std::abs(q(largest)) / q(largest))).real();
-    omega2(k) = std::norm(pair->s);
+    omega2(k) = std::norm((*pairs)[k].s);
     vectors.col(k) = real / std::sqrt(real.dot(beam.M * real));
   }
   return std::pair{omega2, vectors};
@@ -1566,10 +1571,12 @@ ModalResult hand_held_modes(const std::vector<Section>& sections,
   std::optional<DampedSpectrum> spectrum;
   std::string how;
   if (options.damped_solver == ModeOptions::DampedSolver::kRefined) {
-    int coarse_elements = 0;
-    std::string why;
-    spectrum = refined_damped_spectrum(seg, mesh, a, hand, options, &coarse_elements, &why);
-    how = spectrum ? "quadratic eigenproblem refined from a " + std::to_string(coarse_elements) +
+    const Mesh coarse = coarse_mesh(seg, options);
+    std::string why = "mesh no finer than the coarse one";
+    if (coarse.elements.size() < mesh.elements.size()) {
+      spectrum = refined_damped_spectrum(mesh, a, hand, options, coarse, &why);
+    }
+    how = spectrum ? "quadratic eigenproblem refined from a " + std::to_string(coarse.elements.size()) +
                          "-element state-space solve"
                    : "dense state-space eigenproblem (refinement skipped: " + why + ")";
   } else {
