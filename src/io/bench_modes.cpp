@@ -74,8 +74,7 @@ std::pair<double, Fundamental> time_it(const std::function<Fundamental()>& solve
     us.push_back(t);
     spent += t;
   }
-  std::nth_element(us.begin(), us.begin() + us.size() / 2, us.end());
-  return {us[us.size() / 2], last};
+  return {sweetspot::io::median(us), last};
 }
 
 struct Row {

@@ -159,8 +159,7 @@ ThroughputReport bench_throughput(const BenchOptions& options, std::ostream& log
           seconds.push_back(run.seconds);
           rss_MB = std::max(rss_MB, run.max_rss_MB);
         }
-        std::sort(seconds.begin(), seconds.end());
-        const double s = seconds[seconds.size() / 2];
+        const double s = median(seconds);
         if (threads == 1) one_thread_s = s;
         const double rate = w.points / s;
         report.csv += fmt::format("{},{},{},{},{},{},{},{}\n", w.name, w.points, threads, exact(s), exact(rate / 1e6),

@@ -8,6 +8,7 @@
 #include <optional>
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "sweetspot/io/plot.hpp"
 
@@ -21,6 +22,9 @@ struct BenchOptions {
   // (empty: those are skipped).
   std::string executable;
 };
+
+// The median of repeated timings (the mean of the middle two for an even count).
+double median(std::vector<double> values);
 
 // The machine, compiler and flags, for the head of every benchmark report.
 std::string machine_description();
