@@ -200,12 +200,24 @@ std::vector<std::string> spellings(std::string_view base, Dimension dimension) {
   return keys;
 }
 
-std::optional<double> unit_factor(std::string_view key, std::string_view base, Dimension dimension) {
+namespace {
+
+// Which of units(dimension) `key` spells `base` in, if any.
+std::optional<std::size_t> unit_index(std::string_view key, std::string_view base, Dimension dimension) {
   if (!key.starts_with(base)) return std::nullopt;
-  for (const Unit& unit : units(dimension)) {
-    if (key.substr(base.size()) == unit.suffix) return unit.to_si;
+  const std::vector<Unit>& list = units(dimension);
+  for (std::size_t u = 0; u < list.size(); ++u) {
+    if (key.substr(base.size()) == list[u].suffix) return u;
   }
   return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<double> unit_factor(std::string_view key, std::string_view base, Dimension dimension) {
+  const auto u = unit_index(key, base, dimension);
+  if (!u) return std::nullopt;
+  return units(dimension)[*u].to_si;
 }
 
 std::vector<std::string> alternative_spellings(std::string_view key) {
@@ -353,13 +365,10 @@ std::optional<double> ObjectReader::quantity(std::string_view base, Dimension di
   std::array<const std::string*, 8> present{};
   bool any = false;
   for (auto it = object_.begin(); it != object_.end(); ++it) {
-    const std::string& key = it.key();
-    if (key.size() <= base.size() || std::string_view(key).substr(0, base.size()) != base) continue;
-    for (std::size_t u = 0; u < list.size() && u < present.size(); ++u) {
-      if (std::string_view(key).substr(base.size()) == list[u].suffix) {
-        present[u] = &key;
-        any = true;
-      }
+    const auto u = unit_index(it.key(), base, dimension);
+    if (u && *u < present.size()) {
+      present[*u] = &it.key();
+      any = true;
     }
   }
   if (!any) return std::nullopt;
