@@ -23,9 +23,9 @@
 #include <string_view>
 
 #include "sweetspot/evaluate.hpp"
-#include "sweetspot/io/design_reader.hpp"
-#include "sweetspot/io/input_error.hpp"
-#include "sweetspot/io/json_reader.hpp"
+#include "io/design_reader.hpp"
+#include "io/input_error.hpp"
+#include "io/json_reader.hpp"
 
 namespace {
 

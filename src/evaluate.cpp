@@ -200,4 +200,32 @@ Evaluation ImpactSweep::at(double impact_from_butt_m) const {
   return e;
 }
 
+std::string_view to_string(Fidelity fidelity) {
+  switch (fidelity) {
+    case Fidelity::kRigid: return "rigid";
+    case Fidelity::kModal: return "modal";
+    case Fidelity::kResponse: return "response";
+  }
+  return "rigid";
+}
+
+std::optional<Fidelity> parse_fidelity(std::string_view name) {
+  for (const Fidelity f : {Fidelity::kRigid, Fidelity::kModal, Fidelity::kResponse}) {
+    if (name == to_string(f)) return f;
+  }
+  if (name == "auto") return std::nullopt;
+  throw std::invalid_argument("expected \"rigid\", \"modal\", \"response\" or \"auto\", got \"" +
+                              std::string(name) + "\"");
+}
+
+Fidelity resolve_fidelity(std::string_view name, const Design& design) {
+  return parse_fidelity(name).value_or(needed_fidelity(design));
+}
+
+Fidelity fidelity_of(const Evaluation& evaluation) {
+  return evaluation.vibration_energy_J ? Fidelity::kResponse
+         : evaluation.modal            ? Fidelity::kModal
+                                       : Fidelity::kRigid;
+}
+
 }  // namespace sweetspot

@@ -2,8 +2,10 @@
 
 // Every quantity of the rigid-body model of Cross (2004) for one design.
 
+#include <array>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -72,6 +74,24 @@ struct Evaluation {
 // the vibration modes of the flexible frame (which need its stiffness); or
 // also the frame's response to the ball (vibration energy, a derived COR).
 enum class Fidelity { kRigid, kModal, kResponse };
+
+// Every name a fidelity is asked by: the three levels and "auto" (the
+// cheapest that answers the design, needed_fidelity).
+inline constexpr std::array<std::string_view, 4> kFidelityNames{"rigid", "modal", "response", "auto"};
+
+// "rigid", "modal" or "response".
+std::string_view to_string(Fidelity fidelity);
+
+// The level `name` asks for; std::nullopt for "auto". Throws
+// std::invalid_argument naming the accepted names for any other.
+std::optional<Fidelity> parse_fidelity(std::string_view name);
+
+// The level to evaluate `design` at when `name` is asked ("auto" resolves to
+// needed_fidelity(design)). Throws like parse_fidelity.
+Fidelity resolve_fidelity(std::string_view name, const Design& design);
+
+// The level an evaluation was made at.
+Fidelity fidelity_of(const Evaluation& evaluation);
 
 // The cheapest fidelity that answers everything the design asks: kResponse
 // when the COR is to be derived, kModal when the stiffness is given, else kRigid.

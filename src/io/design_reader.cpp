@@ -1,12 +1,12 @@
-#include "sweetspot/io/design_reader.hpp"
+#include "io/design_reader.hpp"
 
 #include <cmath>
 #include <optional>
 #include <stdexcept>
 #include <utility>
 
-#include "sweetspot/io/input_error.hpp"
-#include "sweetspot/io/outputs.hpp"
+#include "io/input_error.hpp"
+#include "io/outputs.hpp"
 #include "sweetspot/rigid_impact.hpp"
 
 namespace sweetspot::io {
@@ -184,8 +184,10 @@ DesignFile read_design_impl(const Json& document, const std::string& source, boo
   top.string("description");
   top.string("$schema");
   const std::string fidelity = top.string("fidelity").value_or("auto");
-  if (fidelity != "rigid" && fidelity != "modal" && fidelity != "response" && fidelity != "auto") {
-    top.fail("fidelity", "expected \"rigid\", \"modal\", \"response\" or \"auto\", got \"" + fidelity + "\"");
+  try {
+    parse_fidelity(fidelity);
+  } catch (const std::invalid_argument& e) {
+    top.fail("fidelity", e.what());
   }
   ImplementRead implement = read_implement(document, source, keys);
   top.child("implement");
@@ -409,6 +411,15 @@ Json design_to_json(const DesignFile& file) {
   j["ball"] = {{"mass_kg", d.ball.mass_kg}, {"speed_m_s", d.ball.speed_m_s}};
   j["impact"] = {{"from_butt_m", d.impact_from_butt_m}};
   return j;
+}
+
+Evaluation evaluate_design_file(const DesignFile& file, std::string_view fidelity, double rel_tol) {
+  try {
+    const std::string_view name = fidelity.empty() ? std::string_view(file.fidelity) : fidelity;
+    return evaluate(file.design, resolve_fidelity(name, file.design), rel_tol);
+  } catch (const std::invalid_argument& e) {
+    rethrow_in(file, e);
+  }
 }
 
 }  // namespace sweetspot::io

@@ -1,10 +1,10 @@
-#include "sweetspot/io/format.hpp"
+#include "io/format.hpp"
 
 #include <fmt/format.h>
 
 #include <cmath>
 
-#include "sweetspot/io/outputs.hpp"
+#include "io/outputs.hpp"
 
 namespace sweetspot::io {
 
@@ -67,7 +67,7 @@ Json inputs_json(const DesignFile& file, const Evaluation& e) {
 Json evaluation_json(const DesignFile& file, const Evaluation& e) {
   Json j;
   j["name"] = file.name;
-  j["fidelity"] = e.vibration_energy_J ? "response" : e.modal ? "modal" : "rigid";
+  j["fidelity"] = to_string(fidelity_of(e));
   if (e.modal) j["mass_distribution"] = e.modal->mass_distribution_fitted ? "fitted to the specs (quadratic density)" : "given";
   j["inputs"] = inputs_json(file, e);
   Json& outputs = j["outputs"];

@@ -1,4 +1,4 @@
-#include "sweetspot/io/input_error.hpp"
+#include "io/input_error.hpp"
 
 #include <utility>
 

@@ -1,4 +1,4 @@
-#include "sweetspot/io/json_reader.hpp"
+#include "io/json_reader.hpp"
 
 #include <algorithm>
 #include <array>
@@ -7,7 +7,7 @@
 #include <sstream>
 #include <utility>
 
-#include "sweetspot/io/input_error.hpp"
+#include "io/input_error.hpp"
 
 namespace sweetspot::io {
 namespace {

@@ -1,4 +1,4 @@
-#include "sweetspot/io/outputs.hpp"
+#include "io/outputs.hpp"
 
 #include <array>
 

@@ -1,4 +1,4 @@
-#include "sweetspot/io/plot.hpp"
+#include "io/plot.hpp"
 
 #include <sys/wait.h>
 
@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "sweetspot/io/atomic_file.hpp"
+#include "io/atomic_file.hpp"
 
 namespace sweetspot::io {
 namespace {

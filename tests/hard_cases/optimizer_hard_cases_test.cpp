@@ -13,7 +13,10 @@
 #include <vector>
 
 #include "sweetspot/evaluate.hpp"
-#include "sweetspot/io/study.hpp"
+#include "reports/optimization_report.hpp"
+#include "studies/optimization.hpp"
+#include "studies/study.hpp"
+#include "studies/sweep.hpp"
 
 namespace sweetspot::io {
 namespace {

@@ -1,9 +1,9 @@
-#include "sweetspot/io/design_reader.hpp"
+#include "io/design_reader.hpp"
 
 #include <catch2/catch.hpp>
 
 #include "sweetspot/evaluate.hpp"
-#include "sweetspot/io/input_error.hpp"
+#include "io/input_error.hpp"
 #include "sweetspot/string_bed.hpp"
 
 #include <cmath>

@@ -1,6 +1,6 @@
 // The helpers the batch, the sweep and the benchmarks stand on: blocks of
-// work over threads, and the median of repeated timings.
-#include "sweetspot/io/parallel.hpp"
+// work over threads.
+#include "io/parallel.hpp"
 
 #include <algorithm>
 #include <numeric>
@@ -9,7 +9,6 @@
 
 #include <catch2/catch.hpp>
 
-#include "sweetspot/io/bench.hpp"
 
 namespace sweetspot::io {
 namespace {
@@ -49,11 +48,6 @@ TEST_CASE("for_blocks rethrows what a block throws, after every block has ended"
   CHECK(std::accumulate(done.begin(), done.end(), 0) == 4);
 }
 
-TEST_CASE("The median of timings is the middle one, or the mean of the middle two") {
-  CHECK(median({3.0, 1.0, 2.0}) == 2.0);
-  CHECK(median({4.0, 1.0, 3.0, 2.0}) == 2.5);
-  CHECK(median({7.0}) == 7.0);
-}
 
 }  // namespace
 }  // namespace sweetspot::io

@@ -1,4 +1,4 @@
-#include "sweetspot/io/plot.hpp"
+#include "io/plot.hpp"
 
 #include <filesystem>
 #include <fstream>

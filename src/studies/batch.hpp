@@ -13,8 +13,8 @@
 #include <ostream>
 #include <string>
 
-#include "sweetspot/io/format.hpp"
-#include "sweetspot/io/json_reader.hpp"
+#include "io/format.hpp"
+#include "io/json_reader.hpp"
 
 namespace sweetspot::io {
 
@@ -40,6 +40,9 @@ struct BatchSummary {
 // naming no field); everything else is per row.
 BatchSummary run_batch(std::istream& in, const std::string& source, const BatchOptions& options,
                        std::ostream& out);
+
+// Whether a catalogue is CSV (its name ends in ".csv"); else JSON Lines.
+bool is_csv_catalogue(const std::string& path);
 
 // "implement.point_masses.0.mass_g" -> "/implement/point_masses/0/mass_g".
 std::string field_to_pointer(const std::string& field);

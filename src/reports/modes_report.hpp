@@ -7,9 +7,9 @@
 
 #include "sweetspot/beam_modes.hpp"
 #include "sweetspot/evaluate.hpp"
-#include "sweetspot/io/design_reader.hpp"
-#include "sweetspot/io/format.hpp"
-#include "sweetspot/io/plot.hpp"
+#include "io/design_reader.hpp"
+#include "io/format.hpp"
+#include "io/plot.hpp"
 
 namespace sweetspot::io {
 

@@ -1,6 +1,6 @@
 // Figs. 5 and 11 of Cross (2004) from the shipped beam design, against the
 // numbers the paper prints in Sections III and V.B.
-#include "sweetspot/io/paper_reports.hpp"
+#include "reports/paper_reports.hpp"
 
 #include <catch2/catch.hpp>
 

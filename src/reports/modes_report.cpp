@@ -1,4 +1,4 @@
-#include "sweetspot/io/modes_report.hpp"
+#include "reports/modes_report.hpp"
 
 #include <fmt/format.h>
 

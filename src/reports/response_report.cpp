@@ -1,11 +1,11 @@
-#include "sweetspot/io/response_report.hpp"
+#include "reports/response_report.hpp"
 
 #include <cmath>
 
 #include <fmt/format.h>
 
 #include "sweetspot/evaluate.hpp"
-#include "sweetspot/io/format.hpp"
+#include "io/format.hpp"
 #include "sweetspot/rigid_impact.hpp"
 #include "sweetspot/string_bed.hpp"
 

@@ -1,4 +1,4 @@
-#include "sweetspot/io/bench.hpp"
+#include "bench/bench.hpp"
 
 #include <sys/utsname.h>
 
@@ -17,10 +17,13 @@
 #include <fmt/format.h>
 
 #include "sweetspot/evaluate.hpp"
-#include "sweetspot/io/atomic_file.hpp"
-#include "sweetspot/io/format.hpp"
-#include "sweetspot/io/plot.hpp"
-#include "sweetspot/io/study.hpp"
+#include "io/atomic_file.hpp"
+#include "io/format.hpp"
+#include "io/plot.hpp"
+#include "reports/optimization_report.hpp"
+#include "studies/optimization.hpp"
+#include "studies/study.hpp"
+#include "studies/sweep.hpp"
 
 namespace sweetspot::io {
 namespace {

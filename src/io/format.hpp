@@ -8,7 +8,7 @@
 #include <string_view>
 
 #include "sweetspot/evaluate.hpp"
-#include "sweetspot/io/design_reader.hpp"
+#include "io/design_reader.hpp"
 
 namespace sweetspot::io {
 

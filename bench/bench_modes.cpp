@@ -27,7 +27,7 @@
 #include <fmt/printf.h>
 
 #include "sweetspot/beam_modes.hpp"
-#include "sweetspot/io/bench.hpp"
+#include "bench/bench.hpp"
 
 namespace {
 

@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "sweetspot/impact_response.hpp"
-#include "sweetspot/io/design_reader.hpp"
-#include "sweetspot/io/paper_reports.hpp"
-#include "sweetspot/io/plot.hpp"
+#include "io/design_reader.hpp"
+#include "reports/paper_reports.hpp"
+#include "io/plot.hpp"
 
 namespace sweetspot::io {
 

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "sweetspot/io/plot.hpp"
+#include "io/plot.hpp"
 
 namespace sweetspot::io {
 

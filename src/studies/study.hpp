@@ -5,17 +5,14 @@
 // (`sweetspot optimize`) or as a grid of what-ifs (`sweetspot sweep`).
 // The format is documented in README.md.
 
-#include <functional>
 #include <optional>
-#include <ostream>
 #include <span>
 #include <string>
 #include <vector>
 
-#include "sweetspot/io/design_reader.hpp"
-#include "sweetspot/io/format.hpp"
-#include "sweetspot/io/outputs.hpp"
-#include "sweetspot/io/plot.hpp"
+#include "io/design_reader.hpp"
+#include "io/outputs.hpp"
+#include "sweetspot/evaluate.hpp"
 #include "sweetspot/optimize.hpp"
 
 namespace sweetspot::io {
@@ -90,51 +87,7 @@ DesignFile design_at(const Study& study, std::span<const double> x);
 // the impact spread when the study has one.
 double objective_of(const Study& study, const DesignFile& design);
 
-// The study as an optimisation problem for sweetspot::minimize.
-Problem make_problem(const Study& study);
-
-struct ConstraintReport {
-  std::string name;  // "swingweight_kg_cm2 <= 330"
-  double value = 0.0;
-  bool satisfied = false;
-  bool active = false;  // on its limit: removing it would change the optimum
-};
-
-struct OptimizationResult {
-  Summary summary;
-  std::vector<double> start_x;
-  DesignFile start;
-  DesignFile best;
-  double start_objective = 0.0;
-  std::vector<ConstraintReport> constraints;
-};
-
-OptimizationResult run_optimization(const Study& study);
-
-// The report: a sentence, then the numbers. `with_timing` adds the wall time
-// (left out of committed reports so that they are reproducible).
-std::string optimization_report(const Study& study, const OptimizationResult& result, Format format,
-                                bool with_timing);
-Plot convergence_plot(const Study& study, const OptimizationResult& result);
-
-struct SweepOptions {
-  int threads = 1;  // >= 1; the output is in grid order whatever the number
-  // Share a row's design when the first variable is the impact point and the
-  // study is rigid: one design read per row, then ImpactSweep. Off, every
-  // point is read and evaluated on its own (the reference the tests compare with).
-  bool share_rows = true;
-};
-
-// A sweep over the grid of the study's variables (one or two), streaming one
-// CSV row per point to `csv` in grid order (the first variable fastest);
-// `progress(done, total)` is called now and then. Returns one plot per output
-// against the first variable, a line per value of the second; plot data is
-// kept only for grids up to kMaxPlotPoints (memory stays bounded: points are
-// evaluated kSweepChunkPoints at a time, split among the threads).
-inline constexpr std::size_t kMaxPlotPoints = 100000;
-inline constexpr std::size_t kSweepChunkPoints = 8192;
-std::vector<Plot> run_sweep(const Study& study, std::ostream& csv,
-                            const std::function<void(std::size_t, std::size_t)>& progress,
-                            const SweepOptions& options = {});
+// The study's objective terms for one evaluation (kPenalty for an output at infinity).
+double terms_value(const Study& study, const Evaluation& evaluation);
 
 }  // namespace sweetspot::io

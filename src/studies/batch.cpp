@@ -1,4 +1,4 @@
-#include "sweetspot/io/batch.hpp"
+#include "studies/batch.hpp"
 
 #include <charconv>
 #include <vector>
@@ -7,10 +7,10 @@
 
 #include "sweetspot/evaluate.hpp"
 #include "sweetspot/frame_modes.hpp"
-#include "sweetspot/io/design_reader.hpp"
-#include "sweetspot/io/input_error.hpp"
-#include "sweetspot/io/outputs.hpp"
-#include "sweetspot/io/parallel.hpp"
+#include "io/design_reader.hpp"
+#include "io/input_error.hpp"
+#include "io/outputs.hpp"
+#include "io/parallel.hpp"
 
 namespace sweetspot::io {
 namespace {
@@ -93,12 +93,9 @@ class Evaluator {
       }
       const DesignFile design = read_design_lean(document, where);
       row.name = design.name;
-      const std::string& chosen = options_.fidelity.empty() ? design.fidelity : options_.fidelity;
-      const Fidelity fidelity = chosen == "rigid"      ? Fidelity::kRigid
-                                : chosen == "modal"    ? Fidelity::kModal
-                                : chosen == "response" ? Fidelity::kResponse
-                                                       : needed_fidelity(design.design);
       try {
+        const Fidelity fidelity = resolve_fidelity(
+            options_.fidelity.empty() ? std::string_view(design.fidelity) : options_.fidelity, design.design);
         row.evaluation = evaluate(design.design, fidelity, options_.modal_tolerance);
       } catch (const std::invalid_argument& e) {
         rethrow_in(read_design(document, where), e);  // with the key map, to name the user's key
@@ -203,6 +200,10 @@ BatchSummary run_batch(std::istream& in, const std::string& source, const BatchO
   }
   if (!chunk.empty()) flush();
   return summary;
+}
+
+bool is_csv_catalogue(const std::string& path) {
+  return path.size() >= 4 && path.compare(path.size() - 4, 4, ".csv") == 0;
 }
 
 }  // namespace sweetspot::io

@@ -1,4 +1,4 @@
-#include "sweetspot/io/reports.hpp"
+#include "reports/reports.hpp"
 
 #include <algorithm>
 #include <filesystem>
@@ -6,12 +6,15 @@
 
 #include <fmt/format.h>
 
-#include "sweetspot/io/atomic_file.hpp"
-#include "sweetspot/io/input_error.hpp"
-#include "sweetspot/io/modes_report.hpp"
-#include "sweetspot/io/paper_reports.hpp"
-#include "sweetspot/io/response_report.hpp"
-#include "sweetspot/io/study.hpp"
+#include "io/atomic_file.hpp"
+#include "io/input_error.hpp"
+#include "reports/modes_report.hpp"
+#include "reports/paper_reports.hpp"
+#include "reports/response_report.hpp"
+#include "reports/optimization_report.hpp"
+#include "studies/optimization.hpp"
+#include "studies/study.hpp"
+#include "studies/sweep.hpp"
 
 namespace sweetspot::io {
 namespace {

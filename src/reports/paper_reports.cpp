@@ -1,4 +1,4 @@
-#include "sweetspot/io/paper_reports.hpp"
+#include "reports/paper_reports.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,8 +6,8 @@
 
 #include <fmt/format.h>
 
-#include "sweetspot/io/atomic_file.hpp"
-#include "sweetspot/io/input_error.hpp"
+#include "io/atomic_file.hpp"
+#include "io/input_error.hpp"
 #include "sweetspot/rigid_impact.hpp"
 #include "sweetspot/roots.hpp"
 

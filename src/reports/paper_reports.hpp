@@ -3,16 +3,16 @@
 // The paper's Table I and Figs. 5 and 11, computed from design files and
 // written as Markdown, CSV and PNG into reports/.
 
-#include <functional>
 #include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
 
 #include "sweetspot/evaluate.hpp"
-#include "sweetspot/io/design_reader.hpp"
-#include "sweetspot/io/format.hpp"
-#include "sweetspot/io/plot.hpp"
+#include "io/design_reader.hpp"
+#include "io/format.hpp"
+#include "io/plot.hpp"
+#include "reports/report_writer.hpp"
 
 namespace sweetspot::io {
 
@@ -50,19 +50,6 @@ std::optional<AxesCrossing> figure11_crossing(const DesignFile& beam);
 
 // Fig. 11: rotation axis s = h - A against d, free (Eq. 5) and hand-held (Eq. 12).
 Figure figure11(const DesignFile& beam);
-
-// One line of the reports' index: the files and what they show.
-struct ReportEntry {
-  std::string files;  // Markdown links
-  std::string says;
-};
-
-// Writes into the reports folder: text atomically, plots through gnuplot
-// (a missing gnuplot skips the plot and says so).
-struct ReportWriter {
-  std::function<void(const std::string& name, const std::string& content)> text;
-  std::function<void(const std::string& name, const Plot& plot)> plot;
-};
 
 // Table I and Figs. 5 and 11 from the designs in `designs_dir`: table1.md,
 // table1.csv, fig5.csv, fig5.png, fig11.csv, fig11.png. Returns their index entries.

@@ -19,10 +19,10 @@
 
 #include <fmt/format.h>
 
-#include "sweetspot/io/bench.hpp"
-#include "sweetspot/io/format.hpp"
-#include "sweetspot/io/parallel.hpp"
-#include "sweetspot/io/plot.hpp"
+#include "bench/bench.hpp"
+#include "io/format.hpp"
+#include "io/parallel.hpp"
+#include "io/plot.hpp"
 
 extern char** environ;
 

@@ -7,9 +7,11 @@
 
 #include <map>
 #include <string>
+#include <string_view>
 
 #include "sweetspot/design.hpp"
-#include "sweetspot/io/json_reader.hpp"
+#include "sweetspot/evaluate.hpp"
+#include "io/json_reader.hpp"
 
 namespace sweetspot::io {
 
@@ -48,6 +50,12 @@ DesignFile read_design_lean(const Json& document, const std::string& source);
 
 // Reads a design file.
 DesignFile load_design(const std::string& path);
+
+// Evaluates a design file at the fidelity `fidelity` names ("rigid", "modal",
+// "response" or "auto"; empty: the file's own "fidelity"), the hand-held
+// modes to `rel_tol`. The core's complaints come back as InputError at the
+// JSON pointer the file used (rethrow_in).
+Evaluation evaluate_design_file(const DesignFile& file, std::string_view fidelity, double rel_tol);
 
 // The design as a complete design file in SI units (what `evaluate` accepts).
 Json design_to_json(const DesignFile& design);

@@ -1,0 +1,34 @@
+// `sweetspot bench`: speed against error on this machine.
+
+#include <filesystem>
+#include <iostream>
+
+#include "cli/commands.hpp"
+
+namespace sweetspot::cli {
+
+void BenchCommand::add_to(CLI::App& app) {
+  command = app.add_subcommand("bench", "Speed against error on this machine (median of repeated runs) into reports/");
+  command
+      ->add_option("what", what,
+                   "speed (the rigid model, the command line end to end, the optimizer, each fidelity), "
+                   "modes, or all")
+      ->check(CLI::IsMember({"speed", "modes", "all"}))
+      ->capture_default_str();
+  command->add_option("--designs", options.designs_dir, "Folder holding studies/")->capture_default_str();
+  command->add_option("--out", options.out_dir, "Folder to write")->capture_default_str();
+  command->add_option("--repeats", options.repeats, "Runs per figure (the median is reported)")
+      ->check(CLI::Range(1, 1000))
+      ->capture_default_str();
+}
+
+int BenchCommand::run() const {
+  io::BenchOptions with_exe = options;
+  std::error_code no_exe;  // the command-line figures run this very program
+  with_exe.executable = std::filesystem::read_symlink("/proc/self/exe", no_exe).string();
+  if (what != "modes") io::bench_speed(with_exe, std::cout);
+  if (what != "speed") io::bench_modes(with_exe, std::cout);
+  return kExitOk;
+}
+
+}  // namespace sweetspot::cli

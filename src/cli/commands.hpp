@@ -1,0 +1,119 @@
+#pragma once
+
+// The subcommands of `sweetspot`, one small unit each: `add_to` registers its
+// options, `run` calls the library and returns the exit status. Errors are
+// thrown (InputError, std::invalid_argument) and turned into one line and an
+// exit status by main().
+
+#include <CLI/CLI.hpp>
+
+#include <string>
+#include <vector>
+
+#include "bench/bench.hpp"
+#include "cli/output.hpp"
+
+namespace sweetspot::cli {
+
+struct EvaluateCommand {
+  CLI::App* command = nullptr;
+  std::string design_path;
+  std::string batch_path;
+  std::string batch_base;
+  std::string fidelity = "auto";
+  double tolerance = 1e-6;
+  int threads = 1;
+  OutputOptions out;
+
+  void add_to(CLI::App& app);
+  int run() const;
+};
+
+struct Table1Command {
+  CLI::App* command = nullptr;
+  std::string dir = "designs/table1";
+  OutputOptions out;
+
+  void add_to(CLI::App& app);
+  int run() const;
+};
+
+struct FigureCommand {
+  CLI::App* command = nullptr;
+  int number = 0;
+  std::string design = "designs/paper-beam.json";
+  std::string csv_path;
+  std::string png;
+
+  void add_to(CLI::App& app);
+  int run() const;
+};
+
+struct ReportCommand {
+  CLI::App* command = nullptr;
+  std::string designs = "designs";
+  std::string out_dir = "reports";
+
+  void add_to(CLI::App& app);
+  int run() const;
+};
+
+struct OptimizeCommand {
+  CLI::App* command = nullptr;
+  std::string study_path;
+  std::string plot;
+  OutputOptions out;
+
+  void add_to(CLI::App& app);
+  int run() const;
+};
+
+struct SweepCommand {
+  CLI::App* command = nullptr;
+  std::string study_path;
+  std::string csv_path;
+  std::string plot;
+  bool quiet = false;
+  int threads = 1;
+
+  void add_to(CLI::App& app);
+  int run() const;
+};
+
+struct ModesCommand {
+  CLI::App* command = nullptr;
+  std::string design_path;
+  int modes = 3;
+  double tolerance = 1e-6;
+  std::string method = "exact";
+  std::string plot;
+  OutputOptions out;
+
+  void add_to(CLI::App& app);
+  int run() const;
+};
+
+struct ResponseCommand {
+  CLI::App* command = nullptr;
+  std::string design_path;
+  std::vector<double> at{0.02, 0.16};
+  std::vector<double> impacts;
+  bool held = false;
+  double until_ms = 20.0;
+  std::string csv_path;
+  std::string plot;
+
+  void add_to(CLI::App& app);
+  int run() const;
+};
+
+struct BenchCommand {
+  CLI::App* command = nullptr;
+  std::string what = "all";
+  io::BenchOptions options;
+
+  void add_to(CLI::App& app);
+  int run() const;
+};
+
+}  // namespace sweetspot::cli

@@ -1,0 +1,79 @@
+// The flexible frame: `sweetspot modes DESIGN.json` and `sweetspot response DESIGN.json`.
+
+#include <algorithm>
+#include <iostream>
+
+#include <fmt/format.h>
+
+#include "cli/commands.hpp"
+#include "io/design_reader.hpp"
+#include "reports/modes_report.hpp"
+#include "reports/response_report.hpp"
+
+namespace sweetspot::cli {
+
+void ModesCommand::add_to(CLI::App& app) {
+  command = app.add_subcommand("modes", "Vibration modes free and hand-held: frequencies, damping, nodes, shapes (csv)");
+  command->add_option("design", design_path, "Design file (JSON) with the frame's stiffness")->required();
+  command->add_option("--modes,-n", modes, "How many flexible modes")->check(CLI::Range(1, 6))->capture_default_str();
+  command->add_option("--tol", tolerance, "Relative error allowed in the finite-element frequencies")
+      ->check(CLI::Range(1e-8, 0.1))
+      ->capture_default_str();
+  command->add_option("--method", method, "Free modes: exact (transfer matrices) or fe")
+      ->check(CLI::IsMember({"exact", "fe"}))
+      ->capture_default_str();
+  command->add_option("--plot", plot, "Also render the mode shapes to this PNG file");
+  out.add_to(command);
+}
+
+int ModesCommand::run() const {
+  const io::DesignFile design = io::load_design(design_path);
+  const auto data = io::compute_modes(
+      design, modes, tolerance,
+      method == "fe" ? ModeOptions::Method::kFiniteElement : ModeOptions::Method::kExact);
+  out.emit(io::modes_report(data, out.parsed()));
+  return plot.empty() ? kExitOk : render_or_warn(io::modes_plot(data), plot);
+}
+
+void ResponseCommand::add_to(CLI::App& app) {
+  command = app.add_subcommand(
+      "response", "Velocity of points of the implement after the impact: rigid (dc) and vibration (ac) parts");
+  command->add_option("design", design_path, "Design file (JSON) with the frame's stiffness")->required();
+  // CLI11 reads "" as 0: an empty point is refused, not observed at the butt.
+  const CLI::Validator a_number(
+      [](const std::string& value) { return value.empty() ? std::string("an empty point (expected metres)") : ""; },
+      "POINTS");
+  command->add_option("--at", at, "Observation points, m from the butt")
+      ->delimiter(',')
+      ->check(a_number)
+      ->capture_default_str();
+  command->add_option("--impacts", impacts, "Impact points, m from the butt (default: the design's)")
+      ->delimiter(',')
+      ->check(a_number);
+  command->add_flag("--held", held, "Held in the hand (default: free, as the paper's suspended beam)");
+  command->add_option("--until-ms", until_ms, "Time window after the impact starts")
+      ->check(CLI::Range(0.01, 1000.0))
+      ->capture_default_str();
+  command->add_option("--output,-o", csv_path, "Write the CSV to FILE instead of stdout");
+  command->add_option("--plot", plot, "Also plot: FILE-at-<cm>cm.png per observation point");
+}
+
+int ResponseCommand::run() const {
+  const io::DesignFile design = io::load_design(design_path);
+  io::ResponseRequest request;
+  request.points_from_butt_m = at;
+  request.impacts_from_butt_m = impacts;
+  request.hand_held = held;
+  request.until_s = until_ms / 1e3;
+  const auto data = io::compute_response(design, request);
+  OutputOptions{"csv", csv_path}.emit(io::response_csv(data));
+  if (plot.empty()) return kExitOk;
+  const auto plots = io::response_plots(data);
+  int status = kExitOk;
+  for (std::size_t k = 0; k < plots.size(); ++k) {
+    status = std::max(status, render_or_warn(plots[k], plot_file(plot, fmt::format("-at-{:g}cm", at[k] * 100))));
+  }
+  return status;
+}
+
+}  // namespace sweetspot::cli

@@ -1,0 +1,44 @@
+#pragma once
+
+// What every subcommand shares: the exit statuses, where its text goes
+// (standard output or a file written atomically) and how a plot is named and
+// rendered.
+
+#include <CLI/CLI.hpp>
+
+#include <functional>
+#include <ostream>
+#include <string>
+
+#include "io/format.hpp"
+#include "io/plot.hpp"
+
+namespace sweetspot::cli {
+
+// Exit statuses (README "Exit status").
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitRuntimeError = 1;  // not the input's fault: a file that cannot be written
+inline constexpr int kExitBadInput = 2;      // bad input or usage, one line on stderr
+
+// --format and --output of a subcommand: standard output, or FILE written
+// atomically (a temporary file renamed into place).
+struct OutputOptions {
+  std::string format = "md";
+  std::string output;  // "" = standard output
+
+  // Registers --format (with `formats` allowed) and --output/-o.
+  void add_to(CLI::App* command, std::vector<std::string> formats = {"md", "json", "csv"});
+  io::Format parsed() const;
+  // Writes `text` where the options say.
+  void emit(const std::string& text) const;
+  // Streams through `write` where the options say.
+  void emit_stream(const std::function<void(std::ostream&)>& write) const;
+};
+
+// "f.png" with suffix "-at-2cm" -> "f-at-2cm.png"; "f" -> "f-at-2cm.png".
+std::string plot_file(const std::string& png, const std::string& suffix);
+
+// Renders `plot` to `png`, or says on stderr why it could not: kExitOk or kExitRuntimeError.
+int render_or_warn(const io::Plot& plot, const std::string& png);
+
+}  // namespace sweetspot::cli

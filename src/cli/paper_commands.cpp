@@ -1,0 +1,52 @@
+// The paper's results: `sweetspot table1`, `sweetspot figure 5|11` and
+// `sweetspot report` (everything into a folder).
+
+#include <iostream>
+
+#include "cli/commands.hpp"
+#include "io/design_reader.hpp"
+#include "reports/paper_reports.hpp"
+#include "reports/reports.hpp"
+
+namespace sweetspot::cli {
+
+void Table1Command::add_to(CLI::App& app) {
+  command = app.add_subcommand("table1", "Table I of the paper from row1.json ... row8.json");
+  command->add_option("--dir", dir, "Folder with the eight row designs")->capture_default_str();
+  out.add_to(command);
+}
+
+int Table1Command::run() const {
+  out.emit(io::table1_report(io::compute_table1(dir), out.parsed()));
+  return kExitOk;
+}
+
+void FigureCommand::add_to(CLI::App& app) {
+  command = app.add_subcommand("figure", "Data (CSV) and plot (PNG) of Fig. 5 or Fig. 11");
+  command->add_option("number", number, "5 or 11")->required()->check(CLI::IsMember({5, 11}));
+  command->add_option("--design", design, "The beam")->capture_default_str();
+  command->add_option("--output,-o", csv_path, "Write the CSV to FILE instead of stdout");
+  command->add_option("--plot", png, "Also render the plot to this PNG file");
+}
+
+int FigureCommand::run() const {
+  const io::DesignFile beam = io::load_design(design);
+  const io::Figure data = number == 5 ? io::figure5(beam) : io::figure11(beam);
+  OutputOptions{"csv", csv_path}.emit(data.csv);
+  std::cerr << data.summary << "\n";
+  return png.empty() ? kExitOk : render_or_warn(data.plot, png);
+}
+
+void ReportCommand::add_to(CLI::App& app) {
+  command = app.add_subcommand(
+      "report", "Reproduce Table I and Figs. 5 and 11, the beam's modes and the shipped studies into a folder");
+  command->add_option("--designs", designs, "Folder holding table1/ and paper-beam.json")->capture_default_str();
+  command->add_option("--out", out_dir, "Folder to write")->capture_default_str();
+}
+
+int ReportCommand::run() const {
+  io::write_reports(designs, out_dir, std::cout);
+  return kExitOk;
+}
+
+}  // namespace sweetspot::cli

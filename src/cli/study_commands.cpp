@@ -1,0 +1,81 @@
+// Studies: `sweetspot optimize STUDY.json` and `sweetspot sweep STUDY.json`.
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <iostream>
+
+#include <fmt/format.h>
+
+#include "cli/commands.hpp"
+#include "io/parallel.hpp"
+#include "reports/optimization_report.hpp"
+#include "studies/optimization.hpp"
+#include "studies/study.hpp"
+#include "studies/sweep.hpp"
+
+namespace sweetspot::cli {
+
+void OptimizeCommand::add_to(CLI::App& app) {
+  command = app.add_subcommand(
+      "optimize", "Search a study's variables for the best design under its constraints (NLopt)");
+  command->add_option("study", study_path, "Study file (JSON)")->required();
+  command->add_option("--plot", plot, "Also render the convergence plot to this PNG file");
+  out.add_to(command);
+}
+
+int OptimizeCommand::run() const {
+  const io::Study study = io::load_study(study_path);
+  const io::OptimizationResult result = io::run_optimization(study);
+  out.emit(io::optimization_report(study, result, out.parsed(), true));
+  if (out.parsed() == io::Format::kMarkdown && !out.output.empty()) {
+    std::cerr << result.summary.brief_report() << "\n";
+  }
+  const int plotted = plot.empty() ? kExitOk : render_or_warn(io::convergence_plot(study, result), plot);
+  if (!result.summary.feasible) {
+    // The report (the least infeasible design) is complete; the study is what is wrong.
+    std::cerr << "sweetspot: " << study.source
+              << ": /constraints: no design within the variables' bounds satisfies them all\n";
+    return kExitBadInput;
+  }
+  return plotted;
+}
+
+void SweepCommand::add_to(CLI::App& app) {
+  command = app.add_subcommand(
+      "sweep", "What-if grid over one or two of a study's variables: every output at every point (CSV)");
+  threads = io::all_cores();
+  command->add_option("study", study_path, "Study file (JSON) with variables, grid and outputs")->required();
+  command->add_option("--output,-o", csv_path, "Write the CSV to FILE (atomically) instead of stdout");
+  command->add_option("--plot", plot, "Also render plots: FILE.png, or FILE-<output>.png for several outputs");
+  command->add_flag("--quiet,-q", quiet, "No progress on the terminal");
+  command->add_option("--threads", threads, "Threads to use (default: all cores); rows stay in grid order")
+      ->check(CLI::Range(1, 1024));
+}
+
+int SweepCommand::run() const {
+  const io::Study study = io::load_study(study_path);
+  const io::SweepOptions options{threads};
+  const bool show_progress = !quiet && isatty(fileno(stderr));
+  const auto progress = [&](std::size_t done, std::size_t total) {
+    if (show_progress) std::cerr << fmt::format("\r{}/{} designs", done, total) << std::flush;
+    if (show_progress && done == total) std::cerr << "\n";
+  };
+  std::vector<io::Plot> plots;
+  OutputOptions{"csv", csv_path}.emit_stream(
+      [&](std::ostream& csv) { plots = io::run_sweep(study, csv, progress, options); });
+  if (plot.empty()) return kExitOk;
+  if (plots.empty()) {
+    std::cerr << "sweetspot: no plot: the grid has more than " << io::kMaxPlotPoints << " points\n";
+    return kExitOk;
+  }
+  int status = kExitOk;
+  for (std::size_t k = 0; k < plots.size(); ++k) {
+    const std::string png =
+        plots.size() > 1 ? plot_file(plot, "-" + std::string(study.sweep_outputs[k]->name)) : plot;
+    status = std::max(status, render_or_warn(plots[k], png));
+  }
+  return status;
+}
+
+}  // namespace sweetspot::cli

@@ -1,0 +1,434 @@
+#include "studies/study.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include "io/input_error.hpp"
+#include "sweetspot/evaluate.hpp"
+
+namespace sweetspot::io {
+namespace {
+
+// Default grid resolution of a sweep variable, and the limits of a grid
+// (points per variable, and in all: a sweep streams, but time is finite).
+constexpr int kDefaultGridPoints = 21;
+constexpr double kMaxGridPoints = 1e7;
+constexpr double kMaxGridTotal = 1e8;
+
+const OutputSpec* read_output_name(ObjectReader& r, std::string_view key) {
+  const auto name = r.string(key);
+  if (!name) r.fail("", "missing \"" + std::string(key) + "\" (an output of sweetspot evaluate)");
+  const OutputSpec* output = find_output(*name);
+  if (!output) {
+    std::string known;
+    for (const OutputSpec& o : output_specs()) known += (known.empty() ? "" : ", ") + std::string(o.name);
+    r.fail(key, "unknown output \"" + *name + "\" (known: " + known + ")");
+  }
+  return output;
+}
+
+const Json& array_at(ObjectReader& r, std::string_view key, bool required) {
+  static const Json kEmpty = Json::array();
+  const Json* list = r.child(key);
+  if (!list) {
+    if (required) r.fail("", "missing \"" + std::string(key) + "\"");
+    return kEmpty;
+  }
+  if (!list->is_array()) r.fail(key, "expected an array, got " + brief(*list));
+  return *list;
+}
+
+std::vector<double> linspace(double lo, double hi, int points) {
+  std::vector<double> values(points);
+  for (int i = 0; i < points; ++i) {
+    values[i] = points == 1 ? lo : lo + (hi - lo) * static_cast<double>(i) / (points - 1);
+  }
+  return values;
+}
+
+StudyVariable read_variable(ObjectReader& r, const Json& design, int grid_points) {
+  StudyVariable v;
+  const auto path = r.string("path");
+  if (!path) r.fail("", "missing \"path\" (a JSON pointer into the design, e.g. /implement/mass_kg)");
+  v.pointer = *path;
+  Json::json_pointer pointer;
+  try {
+    pointer = Json::json_pointer(v.pointer);
+  } catch (const Json::exception&) {
+    r.fail("path", "\"" + v.pointer + "\" is not a JSON pointer (it starts with /)");
+  }
+  if (v.pointer.rfind("/reference", 0) == 0) r.fail("path", "\"" + v.pointer + "\" is a published value, not an input");
+  if (v.pointer.empty() || !design.contains(pointer)) {
+    r.fail("path", "\"" + v.pointer + "\" is not in the design");
+  }
+  if (!design.at(pointer).is_number()) {
+    r.fail("path", "\"" + v.pointer + "\" is " + brief(design.at(pointer)) + ", expected a number");
+  }
+  const double current = design.at(pointer).get<double>();
+  const Json& values = array_at(r, "values", false);
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (!values[i].is_number() || !std::isfinite(values[i].get<double>())) {
+      r.fail("values", "expected finite numbers, got " + brief(values[i]) + " at index " + std::to_string(i));
+    }
+    v.values.push_back(values[i].get<double>());
+  }
+  const auto min = r.number("min");
+  const auto max = r.number("max");
+  if (v.values.empty() || min || max) {
+    if (!min || !max) r.fail("", "missing \"min\" and \"max\" (the variable's bounds)");
+    if (!(*min < *max)) {
+      r.fail("min", "must be < max, got min " + brief(Json(*min)) + " and max " + brief(Json(*max)));
+    }
+    v.min = *min;
+    v.max = *max;
+  } else {
+    v.min = *std::min_element(v.values.begin(), v.values.end());
+    v.max = *std::max_element(v.values.begin(), v.values.end());
+  }
+  const auto points = r.number("points");
+  if (points && !(*points >= 1 && *points <= kMaxGridPoints && *points == std::floor(*points))) {
+    r.fail("points", "must be a whole number in [1, 1e7], got " + brief(Json(*points)));
+  }
+  if (v.values.empty()) v.values = linspace(v.min, v.max, points ? static_cast<int>(*points) : grid_points);
+  const auto start = r.number("start");
+  if (start && !(*start >= v.min && *start <= v.max)) {
+    r.fail("start", "must lie within [min, max] = [" + brief(Json(v.min)) + ", " + brief(Json(v.max)) +
+                        "], got " + brief(Json(*start)));
+  }
+  v.start = start ? *start : (current >= v.min && current <= v.max ? current : 0.5 * (v.min + v.max));
+  r.finish({"path", "min", "max", "start", "points", "values"});
+  return v;
+}
+
+ObjectiveTerm read_term(ObjectReader& r, bool allow_spread) {
+  ObjectiveTerm term;
+  term.output = read_output_name(r, "output");
+  const auto goal = r.string("goal").value_or("minimize");
+  if (goal == "minimize") term.goal = Goal::kMinimize;
+  else if (goal == "maximize") term.goal = Goal::kMaximize;
+  else if (goal == "target") term.goal = Goal::kTarget;
+  else r.fail("goal", "expected \"minimize\", \"maximize\" or \"target\", got \"" + goal + "\"");
+  const auto target = r.number("target");
+  if (term.goal == Goal::kTarget && !target) r.fail("", "goal \"target\" needs a \"target\" value");
+  if (term.goal != Goal::kTarget && target) r.fail("target", "only goal \"target\" takes a target");
+  term.target = target.value_or(0.0);
+  term.weight = r.number("weight").value_or(1.0);
+  if (!(term.weight > 0)) r.fail("weight", "must be > 0, got " + brief(Json(term.weight)));
+  std::vector<std::string> keys{"output", "goal", "target", "weight"};
+  if (allow_spread) keys.insert(keys.end(), {"over_impacts", "terms"});
+  r.finish(keys);
+  return term;
+}
+
+ImpactSpread read_spread(ObjectReader& r) {
+  ImpactSpread spread;
+  const Json* range = r.child("from_tip_m");
+  if (!range || !range->is_array() || range->size() != 2 || !(*range)[0].is_number() ||
+      !(*range)[1].is_number()) {
+    r.fail("from_tip_m", "expected [nearest, farthest] impact distances from the tip in m");
+  }
+  spread.from_tip_lo_m = (*range)[0].get<double>();
+  spread.from_tip_hi_m = (*range)[1].get<double>();
+  if (!(spread.from_tip_lo_m >= 0 && spread.from_tip_lo_m < spread.from_tip_hi_m)) {
+    r.fail("from_tip_m", "expected 0 <= nearest < farthest, got " + brief(*range));
+  }
+  const double points = r.number("points").value_or(8);
+  if (!(points >= 2 && points <= 1000 && points == std::floor(points))) {
+    r.fail("points", "must be a whole number in [2, 1000], got " + brief(Json(points)));
+  }
+  spread.points = static_cast<int>(points);
+  const auto reduce = r.string("reduce").value_or("max");
+  if (reduce == "max") spread.reduce = ImpactSpread::Reduce::kMax;
+  else if (reduce == "mean") spread.reduce = ImpactSpread::Reduce::kMean;
+  else r.fail("reduce", "expected \"max\" or \"mean\", got \"" + reduce + "\"");
+  r.finish({"from_tip_m", "points", "reduce"});
+  return spread;
+}
+
+
+double term_value(const ObjectiveTerm& term, const Evaluation& e) {
+  const auto value = term.output->value(e);
+  if (!value) return kPenalty;
+  switch (term.goal) {
+    case Goal::kMinimize: return term.weight * *value;
+    case Goal::kMaximize: return -term.weight * *value;
+    case Goal::kTarget: return term.weight * (*value - term.target) * (*value - term.target);
+  }
+  return kPenalty;
+}
+
+}  // namespace
+
+double terms_value(const Study& study, const Evaluation& e) {
+  double sum = 0.0;
+  for (const ObjectiveTerm& term : study.objective) sum += term_value(term, e);
+  return sum;
+}
+
+Study read_study(const Json& document, const std::string& source, const std::string& folder) {
+  Study study;
+  study.source = source;
+  ObjectReader top(document, "", "", source, nullptr);
+  study.name = top.string("name").value_or(source);
+  study.question = top.string("question").value_or("");
+  top.string("description");
+  top.string("$schema");
+
+  const Json* design = top.child("design");
+  if (!design) top.fail("design", "missing: a design file path or an inline design");
+  if (design->is_string()) {
+    const std::string path = (std::filesystem::path(folder) / design->get<std::string>()).string();
+    try {
+      study.design_document = read_json_file(path);
+    } catch (const InputError& e) {
+      throw InputError(source, "/design", "cannot read the design: " + std::string(e.what()));
+    }
+    study.design_source = path;
+  } else if (design->is_object()) {
+    study.design_document = *design;
+    study.design_source = source + " (inline design)";
+  } else {
+    top.fail("design", "expected a path or an inline design object, got " + brief(*design));
+  }
+  // The design must be valid as written.
+  read_design(study.design_document, study.design_source);
+
+  int grid_points = kDefaultGridPoints;
+  if (const Json* grid = top.child("grid")) {
+    ObjectReader g(*grid, "/grid", "grid", source, nullptr);
+    const auto points = g.number("points");
+    if (points && !(*points >= 1 && *points <= kMaxGridPoints && *points == std::floor(*points))) {
+      g.fail("points", "must be a whole number in [1, 1e7], got " + brief(Json(*points)));
+    }
+    if (points) grid_points = static_cast<int>(*points);
+    g.finish({"points"});
+  }
+
+  const Json& variables = array_at(top, "variables", true);
+  if (variables.empty()) top.fail("variables", "expected at least one variable");
+  if (variables.size() > 64) top.fail("variables", "at most 64 variables, got " + std::to_string(variables.size()));
+  for (std::size_t i = 0; i < variables.size(); ++i) {
+    ObjectReader r(variables[i], "/variables/" + std::to_string(i), "", source, nullptr);
+    study.variables.push_back(read_variable(r, study.design_document, grid_points));
+    for (std::size_t j = 0; j < i; ++j) {
+      if (study.variables[j].pointer == study.variables[i].pointer) {
+        r.fail("path", "repeats /variables/" + std::to_string(j) + "/path");
+      }
+    }
+  }
+
+  double total = 1.0;
+  for (std::size_t i = 0; i < std::min<std::size_t>(2, study.variables.size()); ++i) {
+    total *= static_cast<double>(study.variables[i].values.size());
+  }
+  if (total > kMaxGridTotal) {
+    top.fail("variables", "a grid of " + brief(Json(total)) + " points is more than 1e8");
+  }
+
+  if (const Json* objective = top.child("objective")) {
+    ObjectReader r(*objective, "/objective", "", source, nullptr);
+    if (r.has("terms")) {
+      const Json& terms = array_at(r, "terms", true);
+      if (terms.empty()) r.fail("terms", "expected at least one term");
+      for (std::size_t i = 0; i < terms.size(); ++i) {
+        ObjectReader t(terms[i], "/objective/terms/" + std::to_string(i), "", source, nullptr);
+        study.objective.push_back(read_term(t, false));
+      }
+      if (const Json* spread = r.child("over_impacts")) {
+        ObjectReader s(*spread, "/objective/over_impacts", "", source, nullptr);
+        study.over_impacts = read_spread(s);
+      }
+      r.finish({"terms", "over_impacts"});
+    } else {
+      if (const Json* spread = r.child("over_impacts")) {
+        ObjectReader s(*spread, "/objective/over_impacts", "", source, nullptr);
+        study.over_impacts = read_spread(s);
+      }
+      study.objective.push_back(read_term(r, true));
+    }
+    if (study.over_impacts) {
+      for (std::size_t i = 0; i < study.variables.size(); ++i) {
+        if (study.variables[i].pointer.starts_with("/impact")) {
+          throw InputError(source, "/variables/" + std::to_string(i) + "/path",
+                           "the impact point cannot be a variable of a study over a spread of impacts");
+        }
+      }
+    }
+  }
+
+  const Json& constraints = array_at(top, "constraints", false);
+  for (std::size_t i = 0; i < constraints.size(); ++i) {
+    ObjectReader r(constraints[i], "/constraints/" + std::to_string(i), "", source, nullptr);
+    StudyConstraint c;
+    c.output = read_output_name(r, "output");
+    c.min = r.number("min");
+    c.max = r.number("max");
+    c.equals = r.number("equals");
+    if (!c.min && !c.max && !c.equals) r.fail("", "give \"min\", \"max\" or \"equals\"");
+    if (c.equals && (c.min || c.max)) r.fail("equals", "give either \"equals\" or \"min\"/\"max\"");
+    if (c.min && c.max && !(*c.min <= *c.max)) {
+      r.fail("min", "must be <= max, got min " + brief(Json(*c.min)) + " and max " + brief(Json(*c.max)));
+    }
+    const double scale = std::max(1.0, std::abs(c.equals.value_or(c.max.value_or(c.min.value_or(0.0)))));
+    c.tolerance = r.number("tolerance").value_or(c.equals ? 1e-6 * scale : 1e-9 * scale);
+    if (!(c.tolerance > 0)) r.fail("tolerance", "must be > 0, got " + brief(Json(c.tolerance)));
+    r.finish({"output", "min", "max", "equals", "tolerance"});
+    study.constraints.push_back(c);
+  }
+
+  OptimizeOptions& o = study.options;
+  if (const auto algorithm = top.string("algorithm")) o.algorithm = *algorithm;
+  if (!is_known_algorithm(o.algorithm)) {
+    top.fail("algorithm", "unknown algorithm \"" + o.algorithm +
+                              "\" (auto, or an NLopt name such as LD_SLSQP, LN_COBYLA, GN_ISRES)");
+  }
+  if (const auto local = top.string("local_algorithm")) o.local_algorithm = *local;
+  if (!is_known_algorithm(o.local_algorithm)) {
+    top.fail("local_algorithm", "unknown algorithm \"" + o.local_algorithm + "\"");
+  }
+  if (const auto seed = top.number("seed")) {
+    if (!(*seed >= 0 && *seed <= 4294967295.0 && *seed == std::floor(*seed))) {
+      top.fail("seed", "must be a whole number in [0, 4294967295], got " + brief(Json(*seed)));
+    }
+    o.seed = static_cast<unsigned long>(*seed);
+  }
+  if (const Json* tolerances = top.child("tolerances")) {
+    ObjectReader t(*tolerances, "/tolerances", "", source, nullptr);
+    o.x_tolerance_rel = t.number("x_rel").value_or(o.x_tolerance_rel);
+    o.f_tolerance_rel = t.number("f_rel").value_or(o.f_tolerance_rel);
+    if (const auto max_evaluations = t.number("max_evaluations")) {
+      o.max_evaluations = static_cast<int>(std::clamp(*max_evaluations, 0.0, 1e9));
+    }
+    o.max_seconds = t.number("max_seconds").value_or(o.max_seconds);
+    t.finish({"x_rel", "f_rel", "max_evaluations", "max_seconds"});
+    if (const std::string why = o.validate(); !why.empty()) {
+      throw InputError(source, "/tolerances", why);
+    }
+  }
+
+  const Json& outputs = array_at(top, "outputs", false);
+  for (std::size_t i = 0; i < outputs.size(); ++i) {
+    const std::string at = "/outputs/" + std::to_string(i);
+    if (!outputs[i].is_string() || !find_output(outputs[i].get<std::string>())) {
+      throw InputError(source, at, "expected the name of an output of sweetspot evaluate, got " + brief(outputs[i]));
+    }
+    study.sweep_outputs.push_back(find_output(outputs[i].get<std::string>()));
+  }
+  const std::string fidelity = top.string("fidelity").value_or("auto");
+  std::optional<Fidelity> asked;
+  try {
+    asked = parse_fidelity(fidelity);
+  } catch (const std::invalid_argument& e) {
+    top.fail("fidelity", e.what());
+  }
+  if (asked) {
+    study.fidelity = *asked;
+  } else {
+    std::vector<const OutputSpec*> used = study.sweep_outputs;
+    for (const ObjectiveTerm& t : study.objective) used.push_back(t.output);
+    for (const StudyConstraint& c : study.constraints) used.push_back(c.output);
+    study.fidelity = needed_fidelity(read_design(study.design_document, study.design_source).design);
+    for (const OutputSpec* o : used) {
+      if (o->needs_response) study.fidelity = Fidelity::kResponse;
+      if (o->needs_modes && study.fidelity == Fidelity::kRigid) study.fidelity = Fidelity::kModal;
+    }
+  }
+  {
+    std::vector<const OutputSpec*> used = study.sweep_outputs;
+    for (const ObjectiveTerm& t : study.objective) used.push_back(t.output);
+    for (const StudyConstraint& c : study.constraints) used.push_back(c.output);
+    for (const OutputSpec* o : used) {
+      const bool too_low = (o->needs_response && study.fidelity != Fidelity::kResponse) ||
+                           (o->needs_modes && study.fidelity == Fidelity::kRigid);
+      if (too_low) {
+        top.fail("fidelity", "\"" + fidelity + "\" cannot give " + std::string(o->name) +
+                                 "; use \"auto\" or a higher fidelity");
+      }
+    }
+  }
+  if (const auto tolerance = top.number("modal_tolerance")) {
+    if (!(*tolerance >= 1e-8 && *tolerance <= 0.1)) {
+      top.fail("modal_tolerance", "must be in [1e-8, 0.1], got " + brief(Json(*tolerance)));
+    }
+    study.modal_tolerance = *tolerance;
+  }
+  top.finish({"$schema", "name", "question", "description", "design", "variables", "objective",
+              "constraints", "algorithm", "local_algorithm", "seed", "tolerances", "grid", "outputs",
+              "fidelity", "modal_tolerance"});
+
+  // The start must be a valid design.
+  std::vector<double> start;
+  for (const StudyVariable& v : study.variables) start.push_back(v.start);
+  DesignFile at_start = [&] {
+    try {
+      return design_at(study, start);
+    } catch (const InputError& e) {
+      throw InputError(source, "/variables", "the start point is not a valid design: " + std::string(e.what()));
+    }
+  }();
+  if (study.fidelity == Fidelity::kModal) {
+    try {
+      evaluate_in(study, at_start);
+    } catch (const std::invalid_argument& e) {
+      rethrow_in(at_start, e);
+    }
+  }
+  return study;
+}
+
+Study load_study(const std::string& path) {
+  const std::string folder = std::filesystem::path(path).parent_path().string();
+  return read_study(read_json_file(path), path, folder.empty() ? "." : folder);
+}
+
+Evaluation evaluate_in(const Study& study, const DesignFile& design) {
+  return evaluate(design.design, study.fidelity, study.modal_tolerance);
+}
+
+DesignFile design_at(const Study& study, std::span<const double> x) {
+  Json document = study.design_document;
+  for (std::size_t i = 0; i < study.variables.size(); ++i) {
+    document[Json::json_pointer(study.variables[i].pointer)] = x[i];
+  }
+  return read_design(document, study.design_source);
+}
+
+double objective_of(const Study& study, const DesignFile& design) {
+  if (!study.over_impacts) return terms_value(study, evaluate_in(study, design));
+  const ImpactSpread& spread = *study.over_impacts;
+  Design d = design.design;
+  const double L = d.implement.length_m();
+  const auto from_butt = [&](int k) {
+    return L - (spread.from_tip_lo_m + (spread.from_tip_hi_m - spread.from_tip_lo_m) * k / (spread.points - 1));
+  };
+  // The rigid model at many impacts shares everything but the impact (ImpactSweep).
+  std::optional<ImpactSweep> rigid;
+  if (study.fidelity == Fidelity::kRigid && !d.cor_rigid && !d.strings) rigid.emplace(d);
+  double reduced = spread.reduce == ImpactSpread::Reduce::kMax ? -kPenalty : 0.0;
+  for (int k = 0; k < spread.points; ++k) {
+    const double x = from_butt(k);
+    double value = kPenalty;  // an impact off the implement keeps the penalty
+    if (x >= 0.0 && x <= L) {
+      if (rigid) {
+        value = terms_value(study, rigid->at(x));
+      } else {
+        d.impact_from_butt_m = x;
+        try {
+          value = terms_value(study, evaluate(d, study.fidelity, study.modal_tolerance));
+        } catch (const std::invalid_argument&) {
+        }
+      }
+    }
+    reduced = spread.reduce == ImpactSpread::Reduce::kMax ? std::max(reduced, value) : reduced + value / spread.points;
+  }
+  return reduced;
+}
+
+// Minimising a non-negative output with a kink where its signed form changes
+// sign (|F_w|) is minimising its square, which is smooth there: gradient
+// methods then apply. The reported objective is the output itself.
+
+}  // namespace sweetspot::io

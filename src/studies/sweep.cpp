@@ -1,0 +1,167 @@
+#include "studies/sweep.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "io/format.hpp"
+#include "io/input_error.hpp"
+#include "io/parallel.hpp"
+#include "sweetspot/evaluate.hpp"
+
+namespace sweetspot::io {
+namespace {
+
+// One thread's share of a sweep: points by index in grid order (the first
+// variable fastest), each evaluated into its CSV row and its plot values.
+class SweepWorker {
+ public:
+  SweepWorker(const Study& study, const std::vector<double>& second, bool share_rows)
+      : study_(study), second_(second), document_(study.design_document) {
+    for (const StudyVariable& variable : study.variables) pointers_.emplace_back(variable.pointer);
+    // The impact point as read_design() reads it: "/impact/from_tip_<unit>" or
+    // "/impact/from_butt_<unit>", converted by the same factor.
+    const std::string_view pointer = study.variables[0].pointer;
+    if (share_rows && study.fidelity == Fidelity::kRigid && pointer.starts_with("/impact/")) {
+      const std::string_view key = pointer.substr(std::string_view("/impact/").size());
+      if (const auto f = unit_factor(key, "from_tip", Dimension::kLength)) impact_ = Impact{true, *f};
+      if (const auto f = unit_factor(key, "from_butt", Dimension::kLength)) impact_ = Impact{false, *f};
+    }
+  }
+
+  // Appends point p's CSV row to `text` and its outputs to `values`.
+  void point(std::size_t p, std::string& text, std::optional<double>* values) {
+    const std::size_t n0 = study_.variables[0].values.size();
+    const std::size_t row = p / n0;
+    const double v = study_.variables[0].values[p % n0];
+    std::optional<Evaluation> e;
+    std::string error;
+    if (impact_ && shared_ && shared_row_ == row) e = shared_at(v);
+    if (!e) {
+      try {
+        e = evaluate_here(v, second_[row], row);
+      } catch (const std::exception& ex) {
+        error = ex.what();
+      }
+    }
+    text += exact(v);
+    if (study_.variables.size() == 2) text += "," + exact(second_[row]);
+    for (std::size_t k = 0; k < study_.sweep_outputs.size(); ++k) {
+      values[k] = e ? study_.sweep_outputs[k]->value(*e) : std::nullopt;
+      text += ",";
+      if (values[k]) text += exact(*values[k]);
+    }
+    text += "," + csv_field(error) + "\n";
+  }
+
+ private:
+  struct Impact {
+    bool from_tip;
+    double to_si;
+  };
+
+  // The point read and evaluated on its own; the row's design kept for the
+  // next points when only the impact changes along it.
+  Evaluation evaluate_here(double v, double y, std::size_t row) {
+    document_[pointers_[0]] = v;
+    if (pointers_.size() == 2) document_[pointers_[1]] = y;
+    const DesignFile design = read_design_lean(document_, study_.design_source);
+    Evaluation e = evaluate_in(study_, design);
+    if (impact_ && !design.design.cor_rigid && !design.design.strings) {
+      shared_.emplace(design.design);
+      shared_row_ = row;
+      length_m_ = design.design.implement.length_m();
+    }
+    return e;
+  }
+
+  // The same point from the row's design, or std::nullopt when only reading
+  // it on its own can say what is wrong (off the implement, not finite).
+  std::optional<Evaluation> shared_at(double v) const {
+    const double si = v * impact_->to_si;
+    const double from_butt = impact_->from_tip ? length_m_ - si : si;
+    if (!(si >= 0.0 && si <= length_m_)) return std::nullopt;
+    Evaluation e = shared_->at(from_butt);
+    for (const OutputSpec* o : study_.sweep_outputs) {
+      if (const auto value = o->value(e); value && !std::isfinite(*value)) return std::nullopt;
+    }
+    return e;
+  }
+
+  const Study& study_;
+  const std::vector<double>& second_;
+  Json document_;  // this thread's copy, the variables set in place
+  std::vector<Json::json_pointer> pointers_;
+  std::optional<Impact> impact_;
+  std::optional<ImpactSweep> shared_;
+  std::size_t shared_row_ = 0;
+  double length_m_ = 0.0;
+};
+
+}  // namespace
+
+std::vector<Plot> run_sweep(const Study& study, std::ostream& csv,
+                            const std::function<void(std::size_t, std::size_t)>& progress,
+                            const SweepOptions& options) {
+  if (study.variables.size() > 2) {
+    throw InputError(study.source, "/variables", "a sweep takes one or two variables, got " +
+                                                     std::to_string(study.variables.size()));
+  }
+  if (study.sweep_outputs.empty()) throw InputError(study.source, "/outputs", "missing: the outputs to sweep");
+  const StudyVariable& first = study.variables[0];
+  const std::vector<double> second =
+      study.variables.size() == 2 ? study.variables[1].values : std::vector<double>{NAN};
+  const std::size_t total = first.values.size() * second.size();
+  const std::size_t outputs = study.sweep_outputs.size();
+  const bool keep = total <= kMaxPlotPoints;
+
+  csv << first.pointer;
+  if (study.variables.size() == 2) csv << "," << study.variables[1].pointer;
+  for (const OutputSpec* o : study.sweep_outputs) csv << "," << o->name;
+  csv << ",error\n";
+
+  std::vector<Plot> plots;
+  for (const OutputSpec* o : study.sweep_outputs) {
+    plots.push_back(Plot{fmt::format("{}: {}", study.name, o->name), first.pointer,
+                         fmt::format("{} ({})", o->name, o->unit.empty() ? "dimensionless" : o->unit),
+                         std::pair{first.min, first.max}, std::nullopt, {}, {}, {}});
+  }
+  const int threads = std::max(1, options.threads);
+  std::vector<SweepWorker> workers;
+  for (int t = 0; t < threads; ++t) workers.emplace_back(study, second, options.share_rows);
+  std::vector<std::string> texts(threads);
+  std::vector<std::optional<double>> values(kSweepChunkPoints * outputs);
+  for (std::size_t begin = 0; begin < total; begin += kSweepChunkPoints) {
+    const std::size_t count = std::min(kSweepChunkPoints, total - begin);
+    for (std::string& text : texts) text.clear();
+    for_blocks(count, threads, [&](std::size_t t, std::size_t from, std::size_t to) {
+      for (std::size_t i = from; i < to; ++i) workers[t].point(begin + i, texts[t], &values[i * outputs]);
+    });
+    for (const std::string& text : texts) csv << text;
+    if (keep) {
+      for (std::size_t i = 0; i < count; ++i) {
+        const std::size_t p = begin + i;
+        if (p % first.values.size() == 0) {
+          for (std::size_t k = 0; k < outputs; ++k) {
+            plots[k].series.push_back(PlotSeries{
+                study.variables.size() == 2
+                    ? fmt::format("{} = {}", study.variables[1].pointer, significant(second[p / first.values.size()]))
+                    : std::string(study.sweep_outputs[k]->name),
+                {},
+                {}});
+          }
+        }
+        for (std::size_t k = 0; k < outputs; ++k) {
+          plots[k].series.back().x.push_back(first.values[p % first.values.size()]);
+          plots[k].series.back().y.push_back(values[i * outputs + k]);
+        }
+      }
+    }
+    progress(begin + count, total);
+  }
+  if (!keep) plots.clear();
+  return plots;
+}
+
+}  // namespace sweetspot::io

@@ -1,0 +1,36 @@
+#pragma once
+
+// A study run as a what-if grid (`sweetspot sweep`): every output at every
+// point of one or two variables, streamed as CSV.
+
+#include <cstddef>
+#include <functional>
+#include <ostream>
+#include <vector>
+
+#include "io/plot.hpp"
+#include "studies/study.hpp"
+
+namespace sweetspot::io {
+
+struct SweepOptions {
+  int threads = 1;  // >= 1; the output is in grid order whatever the number
+  // Share a row's design when the first variable is the impact point and the
+  // study is rigid: one design read per row, then ImpactSweep. Off, every
+  // point is read and evaluated on its own (the reference the tests compare with).
+  bool share_rows = true;
+};
+
+// A sweep over the grid of the study's variables (one or two), streaming one
+// CSV row per point to `csv` in grid order (the first variable fastest);
+// `progress(done, total)` is called now and then. Returns one plot per output
+// against the first variable, a line per value of the second; plot data is
+// kept only for grids up to kMaxPlotPoints (memory stays bounded: points are
+// evaluated kSweepChunkPoints at a time, split among the threads).
+inline constexpr std::size_t kMaxPlotPoints = 100000;
+inline constexpr std::size_t kSweepChunkPoints = 8192;
+std::vector<Plot> run_sweep(const Study& study, std::ostream& csv,
+                            const std::function<void(std::size_t, std::size_t)>& progress,
+                            const SweepOptions& options = {});
+
+}  // namespace sweetspot::io
