@@ -1,0 +1,64 @@
+// Writers: numbers for programs read back exactly, numbers for people are
+// short, and the text of a cell never breaks its table.
+#include "io/format.hpp"
+
+#include <cstdlib>
+#include <string>
+
+#include <catch2/catch.hpp>
+
+#include "io/outputs.hpp"
+
+namespace sweetspot::io {
+namespace {
+
+TEST_CASE("Formats are md, json and csv, nothing else") {
+  CHECK(parse_format("md") == Format::kMarkdown);
+  CHECK(parse_format("json") == Format::kJson);
+  CHECK(parse_format("csv") == Format::kCsv);
+  CHECK_FALSE(parse_format("MD"));
+  CHECK_FALSE(parse_format(""));
+}
+
+TEST_CASE("exact() is the shortest text that reads back to the same double") {
+  for (const double value : {0.1, 0.1 + 0.2, 1.0 / 3.0, 1e-300, 5e-324, 123456789.0, -2.5e17}) {
+    const std::string text = exact(value);
+    CHECK(std::strtod(text.c_str(), nullptr) == value);
+  }
+  CHECK(exact(0.25) == "0.25");
+  CHECK(exact(-0.0) == "0");  // no "-0" in a table
+}
+
+TEST_CASE("significant() keeps the digits asked for and never prints -0") {
+  CHECK(significant(1117.4321) == "1117.43");
+  CHECK(significant(1117.4321, 4) == "1117");
+  CHECK(significant(-0.0) == "0");
+}
+
+TEST_CASE("A Markdown cell escapes pipes; a CSV field is quoted only when it must be") {
+  CHECK(md_cell("|F_w / F|") == "\\|F_w / F\\|");
+  CHECK(csv_field("plain") == "plain");
+  CHECK(csv_field("a,b") == "\"a,b\"");
+  CHECK(csv_field("say \"hi\"") == "\"say \"\"hi\"\"\"");
+  CHECK(csv_field("two\nlines") == "\"two\nlines\"");
+}
+
+TEST_CASE("Every output of an evaluation is in the JSON, null only with a note") {
+  DesignFile file{"row1.json", "Table I top row", Design{Implement::paper_racquet(0.70, 0.25, 0.8)},
+                  "head_to_handle_mass_ratio", {}, Json::object(), {}, "auto"};
+  const Evaluation e = evaluate(file.design);
+  const Json j = evaluation_json(file, e);
+  CHECK(j["fidelity"] == "rigid");
+  for (const OutputSpec& output : output_specs()) {
+    if (output.needs_modes || output.needs_response) continue;
+    const Json& value = j["outputs"][std::string(output.name)];
+    if (value.is_null()) {
+      CHECK(j["notes"].contains(std::string(output.name)));
+    } else {
+      CHECK(value.get<double>() == output.value(e).value());
+    }
+  }
+}
+
+}  // namespace
+}  // namespace sweetspot::io
