@@ -21,6 +21,10 @@ struct BenchOptions {
   // The sweetspot program, run end to end for the command-line figures
   // (empty: those are skipped).
   std::string executable;
+  // The peers: the same work in NumPy/SciPy, run with `python` (skipped, with
+  // the reason, when it cannot import numpy and scipy).
+  std::string peers_dir = "bench/peers";
+  std::string python = "/usr/bin/python3";
 };
 
 // The median of repeated timings (the mean of the middle two for an even count).
@@ -47,9 +51,26 @@ struct ThroughputReport {
   std::optional<Plot> plot;  // points per second against threads
   double million_point_sweep_s = 0.0;   // on all cores
   double million_point_sweep_MB = 0.0;
-  double every_point_sweep_s = 0.0;     // a million points, each read from JSON, on all cores
+  double every_point_sweep_s = 0.0;     // a million points, every one evaluated, on all cores
+  double every_point_sweep_1_thread_s = 0.0;
+  double batch_1_thread_s = 0.0;        // 100 000 CSV rows on one core
 };
 ThroughputReport bench_throughput(const BenchOptions& options, std::ostream& log);
+
+// The same work done the obvious way in NumPy/SciPy (bench/peers/*.py): the
+// every-point sweep and the batch as whole processes (median wall time of
+// options.repeats runs), study 1 with scipy.optimize SLSQP and the rigid model
+// on a million designs in-process (as the scripts time them).
+struct PeerFigures {
+  std::string skipped;              // why they were not measured; empty when they were
+  double every_point_sweep_s = 0.0;  // 1000 x 1000 points, CSV out, whole process
+  double batch_s = 0.0;              // 100 000 racquets by specs, CSV in and out, whole process
+  double study1_ms = 0.0;            // one SLSQP optimisation
+  int study1_evaluations = 0;
+  double study1_objective = 0.0;
+  double rigid_ns = 0.0;             // per design
+};
+PeerFigures bench_peers(const BenchOptions& options, std::ostream& log);
 
 // Speed against error of every modal solver on the optimizer's study racquet
 // (two sections, f1 = 150 Hz, 6 g of tape at 0.68 m; hand-held with the

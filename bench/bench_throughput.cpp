@@ -18,6 +18,7 @@
 #include <vector>
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include "bench/bench.hpp"
 #include "io/format.hpp"
@@ -175,6 +176,8 @@ ThroughputReport bench_throughput(const BenchOptions& options, std::ostream& log
           report.million_point_sweep_MB = rss_MB;
         }
         if (w.name == "sweep-every-point" && threads == all_cores()) report.every_point_sweep_s = s;
+        if (w.name == "sweep-every-point" && threads == 1) report.every_point_sweep_1_thread_s = s;
+        if (w.name == "batch-csv" && threads == 1) report.batch_1_thread_s = s;
       }
       plot.series.push_back(series);
     }
@@ -185,6 +188,66 @@ ThroughputReport bench_throughput(const BenchOptions& options, std::ostream& log
   fs::remove_all(dir);
   report.plot = plot;
   return report;
+}
+
+namespace {
+
+// The one JSON line an in-process peer prints.
+nlohmann::json peer_output(const fs::path& file) {
+  std::ifstream in(file);
+  std::string line;
+  std::getline(in, line);
+  return nlohmann::json::parse(line);
+}
+
+}  // namespace
+
+PeerFigures bench_peers(const BenchOptions& options, std::ostream& log) {
+  PeerFigures peers;
+  const fs::path scripts = fs::absolute(options.peers_dir);
+  if (!fs::exists(scripts / "rigid_model.py")) {
+    peers.skipped = fmt::format("the peer scripts are not in {}", options.peers_dir);
+    return peers;
+  }
+  const fs::path dir = fs::temp_directory_path() / fmt::format("sweetspot-peers-{}", getpid());
+  fs::create_directories(dir);
+  try {
+    try {
+      run_child(options.python, {"-c", "import numpy, scipy"}, dir / "stdout");
+    } catch (const std::exception&) {
+      peers.skipped = fmt::format("{} cannot import numpy and scipy", options.python);
+      fs::remove_all(dir);
+      return peers;
+    }
+    const auto script = [&](const char* name) { return (scripts / name).string(); };
+    const auto whole_process = [&](const std::vector<std::string>& args) {
+      std::vector<double> seconds;
+      for (int r = 0; r < options.repeats; ++r) seconds.push_back(run_child(options.python, args, dir / "stdout").seconds);
+      return median(seconds);
+    };
+    peers.every_point_sweep_s = whole_process({script("sweep_every_point.py"), (dir / "sweep.csv").string()});
+    const std::string catalogue = [&] {
+      for (const Workload& w : workloads(dir)) {
+        if (w.name == "batch-csv") return w.args[2];
+      }
+      return std::string();
+    }();
+    peers.batch_s = whole_process({script("batch_specs.py"), catalogue, (dir / "batch.csv").string()});
+    run_child(options.python, {script("study1_slsqp.py"), std::to_string(options.repeats)}, dir / "study1.json");
+    const nlohmann::json study1 = peer_output(dir / "study1.json");
+    peers.study1_ms = study1["seconds"].get<double>() * 1e3;
+    peers.study1_evaluations = study1["evaluations"].get<int>();
+    peers.study1_objective = study1["objective"].get<double>();
+    run_child(options.python, {script("rigid_kernel.py"), std::to_string(options.repeats)}, dir / "kernel.json");
+    peers.rigid_ns = peer_output(dir / "kernel.json")["ns_per_design"].get<double>();
+    log << fmt::format("peers: sweep {:.3f} s, batch {:.3f} s, study 1 {:.2f} ms, rigid {:.1f} ns per design\n",
+                       peers.every_point_sweep_s, peers.batch_s, peers.study1_ms, peers.rigid_ns);
+  } catch (...) {
+    fs::remove_all(dir);
+    throw;
+  }
+  fs::remove_all(dir);
+  return peers;
 }
 
 }  // namespace sweetspot::io

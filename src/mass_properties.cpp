@@ -5,6 +5,7 @@
 #include <string>
 
 #include "check.hpp"
+#include "rigid_kernel.hpp"
 
 namespace sweetspot {
 
@@ -20,16 +21,9 @@ double swingweight_kg_m2(const MassProperties& body) {
 MassProperties with_point_mass(const MassProperties& body, const PointMass& point) {
   detail::require_finite("point mass position", point.from_butt_m);
   detail::require_at_least("point mass", point.mass_kg, 0.0, "kg");
-  const double total = body.mass_kg + point.mass_kg;
-  if (point.mass_kg == 0.0) return body;
-  // Cross (2004) Eq. (14): shift of the centre of mass towards the point mass.
-  const double shift = point.mass_kg * (body.com_from_butt_m - point.from_butt_m) / total;
-  const double com = body.com_from_butt_m - shift;
-  const double body_arm = body.com_from_butt_m - com;
-  const double point_arm = point.from_butt_m - com;
-  return MassProperties{
-      total, com,
-      body.I_cm_kg_m2 + body.mass_kg * body_arm * body_arm + point.mass_kg * point_arm * point_arm};
+  const kernel::System s = kernel::with_point_mass(body.mass_kg, body.com_from_butt_m, body.I_cm_kg_m2,
+                                                   point.from_butt_m, point.mass_kg);
+  return MassProperties{s.mass_kg, s.com_from_butt_m, s.I_cm_kg_m2};
 }
 
 MassProperties from_swingweight(double mass_kg, double balance_from_butt_m,

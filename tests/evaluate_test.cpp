@@ -161,6 +161,58 @@ TEST_CASE("Many rigid cases at once give exactly what evaluating each design giv
   CHECK(cases.back().impact_duration_s != kTableI[0].duration_ms / 1000.0);
 }
 
+TEST_CASE("Rigid cases laid out as arrays give exactly what evaluating each design gives") {
+  // The oracle is evaluate(): the vectorised loop over arrays must be the same
+  // arithmetic, bit for bit, including a hand of no mass, no forearm and an
+  // impact at the centre of mass (the special cases it selects rather than branches on).
+  std::vector<Design> designs;
+  for (const TableRow& row : kTableI) {
+    for (const double from_tip : {0.0, 0.05, 0.20, 0.45}) {
+      Design d = table_design(row);
+      d.impact_from_butt_m = d.implement.length_m() - from_tip;
+      designs.push_back(d);
+    }
+  }
+  Design no_hand = table_design(kTableI[1]);
+  no_hand.hand.mass_kg = 0.0;
+  designs.push_back(no_hand);
+  Design no_forearm = table_design(kTableI[2]);
+  no_forearm.forearm_equivalent_mass_kg = 0.0;
+  designs.push_back(no_forearm);
+  Design at_com = table_design(kTableI[3]);
+  at_com.impact_from_butt_m = at_com.implement.mass_properties().com_from_butt_m;
+  designs.push_back(at_com);
+  const std::size_t n = designs.size();
+  std::vector<std::vector<double>> in(11, std::vector<double>(n));
+  std::vector<std::vector<double>> out(7, std::vector<double>(n));
+  for (std::size_t i = 0; i < n; ++i) {
+    const RigidCase c = rigid_case(designs[i]);
+    const double fields[11] = {c.body.mass_kg, c.body.com_from_butt_m, c.body.I_cm_kg_m2, c.hand.from_butt_m,
+                               c.hand.mass_kg, c.forearm_equivalent_mass_kg, c.ball_mass_kg, c.ball_speed_m_s,
+                               c.cor, c.impact_duration_s, c.impact_from_butt_m};
+    for (std::size_t k = 0; k < 11; ++k) in[k][i] = fields[k];
+  }
+  rigid_outcomes(RigidCases{in[0], in[1], in[2], in[3], in[4], in[5], in[6], in[7], in[8], in[9], in[10]},
+                 RigidOutcomes{out[0], out[1], out[2], out[3], out[4], out[5], out[6]});
+  for (std::size_t i = 0; i < n; ++i) {
+    INFO("design " << i);
+    const Evaluation e = evaluate(designs[i]);
+    CHECK(out[0][i] == e.effective_mass_kg);
+    CHECK(out[1][i] == e.apparent_cor);
+    CHECK(out[2][i] == e.impulse_N_s);
+    CHECK(out[3][i] == e.peak_impact_force_N);
+    CHECK(out[4][i] == e.cop_hand_from_butt_m.value());
+    CHECK(out[5][i] == e.wrist_force_ratio);
+    CHECK(out[6][i] == e.peak_wrist_force_N);
+  }
+  CHECK(out[5][n - 2] == 0.0);
+  std::vector<double> short_span(n - 1);
+  CHECK_THROWS_WITH(rigid_outcomes(RigidCases{in[0], in[1], in[2], in[3], in[4], in[5], in[6], in[7], in[8], in[9],
+                                              short_span},
+                                   RigidOutcomes{out[0], out[1], out[2], out[3], out[4], out[5], out[6]}),
+                    Catch::Contains("impact_from_butt_m"));
+}
+
 TEST_CASE("Rigid cases refuse a derived COR, a bad design and a short output span") {
   Design derived = table_design(kTableI[0]);
   derived.cor_rigid = 0.85;

@@ -142,8 +142,31 @@ RigidOutcome rigid_outcome(const RigidCase& c);
 RigidOutcome rigid_outcome(const RigidCase& c, const MassProperties& system);
 
 // rigid_outcome() for every case, into `out` (the same size: throws
-// std::invalid_argument otherwise). No allocation; the loop the library's
-// throughput figure (sweetspot bench) measures.
+// std::invalid_argument otherwise). No allocation; the cases are laid out as
+// arrays (RigidCases) a block at a time and evaluated as below.
 void rigid_outcomes(std::span<const RigidCase> cases, std::span<RigidOutcome> out);
+
+// Many cases as one array per field (structure of arrays), case i being
+// element i of every array: the layout a vectorising compiler wants. Every
+// span has the same length. Plain views; the caller owns the storage.
+struct RigidCases {
+  std::span<const double> body_mass_kg, body_com_from_butt_m, body_I_cm_kg_m2;  // the implement
+  std::span<const double> hand_from_butt_m, hand_mass_kg;
+  std::span<const double> forearm_equivalent_mass_kg;
+  std::span<const double> ball_mass_kg, ball_speed_m_s;
+  std::span<const double> cor, impact_duration_s, impact_from_butt_m;
+};
+
+// The outcomes as one array per field, each as long as the cases.
+struct RigidOutcomes {
+  std::span<double> effective_mass_kg, apparent_cor, impulse_N_s, peak_impact_force_N;
+  std::span<double> cop_hand_from_butt_m, wrist_force_ratio, peak_wrist_force_N;
+};
+
+// rigid_outcome() of case i into element i of every output, bit for bit, in
+// one loop without branches (vectorised). The cases must be valid as
+// rigid_case() leaves them; nothing is checked but the lengths (throws
+// std::invalid_argument naming the first span of another length). No allocation.
+void rigid_outcomes(const RigidCases& cases, const RigidOutcomes& out);
 
 }  // namespace sweetspot

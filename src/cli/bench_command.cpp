@@ -17,6 +17,7 @@ void BenchCommand::add_to(CLI::App& app) {
       ->capture_default_str();
   command->add_option("--designs", options.designs_dir, "Folder holding studies/")->capture_default_str();
   command->add_option("--out", options.out_dir, "Folder to write")->capture_default_str();
+  command->add_option("--peers", options.peers_dir, "Folder of the NumPy/SciPy peer scripts")->capture_default_str();
   command->add_option("--repeats", options.repeats, "Runs per figure (the median is reported)")
       ->check(CLI::Range(1, 1000))
       ->capture_default_str();

@@ -78,7 +78,9 @@ struct ImplementRead {
   std::string form;
 };
 
-ImplementRead read_implement(const Json& document, const std::string& source, KeyMap* keys) {
+// `described`, when given, receives the implement's numbers before it is built.
+ImplementRead read_implement(const Json& document, const std::string& source, KeyMap* keys,
+                             ImplementDescription* described) {
   const auto it = document.find("implement");
   if (it == document.end()) throw InputError(source, "/implement", "missing: every design needs an implement");
   ObjectReader r(*it, "/implement", "implement", source, keys);
@@ -97,6 +99,11 @@ ImplementRead read_implement(const Json& document, const std::string& source, Ke
         sections.push_back(read_section(s));
       }
       r.finish({"sections", "point_masses"});
+      if (described) {
+        described->form = ImplementDescription::Form::kSections;
+        described->sections = sections;
+        described->point_masses = points;
+      }
       return {Implement::from_sections(std::move(sections), std::move(points)), "sections"};
     }
     const auto length = r.quantity("length", Dimension::kLength);
@@ -106,6 +113,10 @@ ImplementRead read_implement(const Json& document, const std::string& source, Ke
     if (r.has("head_to_handle_mass_ratio")) {
       const double ratio = *r.number("head_to_handle_mass_ratio");
       r.finish({"length_m", "mass_kg", "head_to_handle_mass_ratio", "point_masses"});
+      if (described) {
+        *described = ImplementDescription{ImplementDescription::Form::kHeadToHandleRatio, *length, *mass, ratio};
+        described->point_masses = points;
+      }
       return {Implement::paper_racquet(*length, *mass, ratio, std::move(points)),
               "head_to_handle_mass_ratio"};
     }
@@ -116,19 +127,25 @@ ImplementRead read_implement(const Json& document, const std::string& source, Ke
     }
     double balance = *r.number(balance_key);
     if (balance_key == "balance_cm") balance *= 0.01;
+    const double balance_as_given = balance;
     if (balance_key == "balance_pts_hl") {
-      const double limit = 0.5 * *length / kPointHeadLight_m;
+      const double limit = points_head_light_limit(*length);
       if (!(balance > -limit && balance < limit)) {
         r.fail(balance_key, "must put the balance inside the length, |points| < " +
                                 std::to_string(limit) + ", got " + brief(Json(balance)));
       }
-      balance = 0.5 * *length - balance * kPointHeadLight_m;
+      balance = balance_from_points_head_light(*length, balance);
     }
     r.record("balance_from_butt_m", balance_key);
     const auto swingweight = r.quantity("swingweight", Dimension::kInertia);
     if (!swingweight) r.fail("", "missing swingweight_kg_cm2 (with the balance it fixes the inertia)");
     r.finish({"length_m", "mass_kg", "balance_from_butt_m", "balance_cm", "balance_pts_hl",
               "swingweight_kg_cm2", "point_masses"});
+    if (described) {
+      *described = ImplementDescription{ImplementDescription::Form::kSpecs, *length, *mass, 0.0,
+                                        balance_key == "balance_pts_hl", balance_as_given, *swingweight};
+      described->point_masses = points;
+    }
     return {Implement::from_specs(IndustrySpecs{*length, *mass, balance, *swingweight},
                                   std::move(points)),
             "specs"};
@@ -171,7 +188,9 @@ class Part {
 // With `bookkeeping`, the provenance of every input and the key map that
 // lets a later error name the user's own key; without, neither (a core error
 // is then rethrown as it is, for the caller to read again with them).
-DesignFile read_design_impl(const Json& document, const std::string& source, bool bookkeeping) {
+// `described`, when given, receives the numbers as the file gives them.
+DesignFile read_design_impl(const Json& document, const std::string& source, bool bookkeeping,
+                            std::optional<DesignDescription>* described = nullptr) {
   KeyMap key_map;
   KeyMap* const keys = bookkeeping ? &key_map : nullptr;
   std::map<std::string, std::string> provenance_map;
@@ -189,7 +208,9 @@ DesignFile read_design_impl(const Json& document, const std::string& source, boo
   } catch (const std::invalid_argument& e) {
     top.fail("fidelity", e.what());
   }
-  ImplementRead implement = read_implement(document, source, keys);
+  ImplementDescription implement_described;
+  ImplementRead implement =
+      read_implement(document, source, keys, described ? &implement_described : nullptr);
   top.child("implement");
   const double L = implement.implement.length_m();
 
@@ -225,6 +246,7 @@ DesignFile read_design_impl(const Json& document, const std::string& source, boo
     r.finish({"cor", "cor_rigid", "EI_N_m2", "fundamental_free_Hz", "cross_section"});
   }
 
+  std::optional<double> head_area_m2;
   Part strings(top, "strings", keys, provenance);
   design.impact_duration_s =
       strings.get("impact_duration", Dimension::kTime, "impact_duration_s", defaults.impact_duration_s);
@@ -242,7 +264,8 @@ DesignFile read_design_impl(const Json& document, const std::string& source, boo
       if (!head.empty()) {
         const double area_m2 = *r.number(head) * (head == "head_size_in2" ? 0.0254 * 0.0254 : 1e-4);
         if (!(area_m2 > 0)) r.fail(head, "must be > 0, got " + brief(Json(*r.number(head))));
-        bed.head_radius_m = std::sqrt(area_m2 / 3.141592653589793);
+        bed.head_radius_m = head_radius_from_area(area_m2);
+        head_area_m2 = area_m2;
         r.record("head_radius_m", head);
       }
       bed.contact_radius_m = r.quantity("contact_radius", Dimension::kLength).value_or(bed.contact_radius_m);
@@ -267,11 +290,13 @@ DesignFile read_design_impl(const Json& document, const std::string& source, boo
                         "grip_damping_N_s_m2"});
 
   Part forearm(top, "forearm", keys, provenance);
+  std::optional<double> forearm_mass_kg;
   {
     ObjectReader& r = forearm.reader();
     const std::string key = r.one_of({"equivalent_mass_kg", "equivalent_mass_g", "mass_kg", "mass_g"});
     if (key.starts_with("mass")) {
       const double forearm_mass = *r.quantity("mass", Dimension::kMass);
+      forearm_mass_kg = forearm_mass;
       try {
         design.forearm_equivalent_mass_kg = forearm_equivalent_mass(forearm_mass);  // Eq. (7)
       } catch (const std::invalid_argument&) {
@@ -292,6 +317,8 @@ DesignFile read_design_impl(const Json& document, const std::string& source, boo
   ball.reader().finish({"mass_kg", "speed_m_s"});
 
   Part impact(top, "impact", keys, provenance);
+  bool impact_from_tip = true;
+  double impact_m = 0.05;
   {
     ObjectReader& r = impact.reader();
     const auto from_tip = r.quantity("from_tip", Dimension::kLength);
@@ -304,9 +331,12 @@ DesignFile read_design_impl(const Json& document, const std::string& source, boo
                    brief(Json(*from_tip)) + " m");
       }
       design.impact_from_butt_m = L - *from_tip;
+      impact_m = *from_tip;
       note("impact/from_butt_m", "given (from the tip)");
     } else if (from_butt) {
       design.impact_from_butt_m = *from_butt;
+      impact_from_tip = false;
+      impact_m = *from_butt;
       note("impact/from_butt_m", "given");
     } else {
       design.impact_from_butt_m = L - 0.05;
@@ -336,6 +366,10 @@ DesignFile read_design_impl(const Json& document, const std::string& source, boo
     if (!bookkeeping) throw;
     rethrow_at(error, "", key_map, source, "");
   }
+  if (described) {
+    described->emplace(DesignDescription{std::move(implement_described), design, forearm_mass_kg.has_value(),
+                                         forearm_mass_kg.value_or(0.0), impact_from_tip, impact_m, head_area_m2});
+  }
   return DesignFile{source, name, std::move(design), implement.form, std::move(provenance_map),
                     std::move(reference), std::move(key_map), fidelity};
 }
@@ -352,6 +386,17 @@ DesignFile read_design_lean(const Json& document, const std::string& source) {
   } catch (const std::invalid_argument&) {
     return read_design_impl(document, source, true);  // throws the error at the user's key
   }
+}
+
+DesignDescription describe_design(const Json& document, const std::string& source) {
+  std::optional<DesignDescription> described;
+  try {
+    read_design_impl(document, source, false, &described);
+  } catch (const std::invalid_argument&) {
+    read_design_impl(document, source, true);  // throws the error at the user's key
+    throw;
+  }
+  return std::move(*described);
 }
 
 void rethrow_in(const DesignFile& design, const std::invalid_argument& error) {

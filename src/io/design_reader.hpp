@@ -11,12 +11,10 @@
 
 #include "sweetspot/design.hpp"
 #include "sweetspot/evaluate.hpp"
+#include "io/design_description.hpp"
 #include "io/json_reader.hpp"
 
 namespace sweetspot::io {
-
-// 1 point head-light = 1/8 inch from the middle of the length towards the butt.
-inline constexpr double kPointHeadLight_m = 0.0254 / 8.0;
 
 struct DesignFile {
   std::string source;   // the file, or the study that holds it inline
@@ -47,6 +45,11 @@ DesignFile read_design(const Json& document, const std::string& source);
 // result), for sweeps and batches that read a design per point; the design
 // and every error are the same (an error is found again with the key map).
 DesignFile read_design_lean(const Json& document, const std::string& source);
+
+// read_design_lean() that keeps the numbers as the file gives them, before
+// anything is derived (a study's variables and a batch's columns are bound to
+// it once). Throws like read_design().
+DesignDescription describe_design(const Json& document, const std::string& source);
 
 // Reads a design file.
 DesignFile load_design(const std::string& path);

@@ -1,5 +1,6 @@
 #include "io/format.hpp"
 
+#include <fmt/compile.h>
 #include <fmt/format.h>
 
 #include <cmath>
@@ -21,6 +22,18 @@ std::string significant(double value, int digits) {
 }
 
 std::string exact(double value) { return value == 0.0 ? "0" : fmt::format("{}", value); }
+
+void append_exact(std::string& out, double value) {
+  if (value == 0.0) {
+    out += '0';
+    return;
+  }
+  // The longest shortest round-trip text of a double is 24 characters
+  // ("-2.2250738585072014e-308"); the format is compiled, not parsed per call.
+  char buffer[32];
+  const char* end = fmt::format_to(buffer, FMT_COMPILE("{}"), value);
+  out.append(buffer, static_cast<std::size_t>(end - buffer));
+}
 
 std::string md_cell(std::string_view text) {
   std::string cell;

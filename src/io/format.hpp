@@ -21,6 +21,8 @@ std::optional<Format> parse_format(std::string_view text);
 std::string significant(double value, int digits = 6);
 // Shortest text that reads back to exactly `value` (for CSV and JSON).
 std::string exact(double value);
+// exact(value) appended to `out` (no temporary string: the CSV writers' loop).
+void append_exact(std::string& out, double value);
 // Text for a Markdown table cell (pipes escaped).
 std::string md_cell(std::string_view text);
 // A CSV field, quoted when it holds a comma, quote or newline.

@@ -1,6 +1,11 @@
 #include "studies/batch.hpp"
 
+#include <array>
 #include <charconv>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <span>
 #include <vector>
 
 #include <fmt/format.h>
@@ -11,6 +16,7 @@
 #include "io/input_error.hpp"
 #include "io/outputs.hpp"
 #include "io/parallel.hpp"
+#include "studies/design_binding.hpp"
 
 namespace sweetspot::io {
 namespace {
@@ -49,10 +55,29 @@ struct Row {
   std::string error;
 };
 
+// A CSV row's design compiled once per thread for each set of filled cells
+// (the rows' shape): the base with those columns is read once, the columns
+// bound to it (design_binding.hpp), and every later row of that shape only
+// sets numbers on a typed design. A row the binding cannot vouch for (a bad
+// cell, a value the reader or the core refuses) goes the JSON path, which
+// writes the same error row as ever.
+struct Shape {
+  std::unique_ptr<const CompiledDesign> compiled;
+  std::optional<BoundDesign> bound;
+  std::optional<std::string> name;  // the base's name, when the row gives none
+  std::string fidelity;             // the design's "fidelity"
+  int attempts = 0;                 // rows of this shape whose template could not be read
+};
+// Rows of a shape tried as its template before the shape is left to the JSON path.
+constexpr int kTemplateAttempts = 4;
+// A row's shape is a bit per column.
+constexpr std::size_t kMaxCompiledColumns = 64;
+
 class Evaluator {
  public:
   Evaluator(const std::string& source, const BatchOptions& options, std::vector<std::string> header)
-      : source_(source), options_(options), header_(std::move(header)) {
+      : source_(source), options_(options), header_(std::move(header)),
+        shapes_(static_cast<std::size_t>(std::max(1, options.threads))) {
     for (const std::string& field : header_) {
       pointers_.push_back(field_to_pointer(field));
       std::optional<FieldOverride> column;
@@ -64,7 +89,96 @@ class Evaluator {
     }
   }
 
-  void evaluate_row(Row& row) const {
+  // Evaluates a row on thread `thread` (< options.threads).
+  void evaluate_row(Row& row, std::size_t thread) const {
+    if (options_.compiled && options_.csv_input && header_.size() <= kMaxCompiledColumns &&
+        evaluate_compiled(row, thread)) {
+      return;
+    }
+    evaluate_general(row);
+  }
+
+ private:
+  // The row set on its shape's compiled design; false (and the row as it
+  // was) when the JSON path must read it.
+  bool evaluate_compiled(Row& row, std::size_t thread) const {
+    const std::vector<std::string> cells = split_csv(row.text);
+    if (cells.size() != header_.size()) return false;
+    std::uint64_t mask = 0;
+    std::size_t name_cell = cells.size();
+    std::array<double, kMaxCompiledColumns> values{};
+    std::size_t count = 0;
+    for (std::size_t k = 0; k < cells.size(); ++k) {
+      if (cells[k].empty()) continue;
+      mask |= std::uint64_t{1} << k;
+      if (header_[k] == "name") {
+        name_cell = k;
+        continue;
+      }
+      if (!columns_[k]) return false;
+      const char* end = cells[k].data() + cells[k].size();
+      const auto [stop, error] = std::from_chars(cells[k].data(), end, values[count]);
+      if (error != std::errc() || stop != end) return false;
+      ++count;
+    }
+    Shape& shape = shapes_[thread][mask];
+    if (!shape.bound && !compile_shape(shape, cells, values, row.line)) return false;
+    const Design* design = shape.bound->at(std::span<const double>(values.data(), count));
+    if (!design) return false;
+    try {
+      const Fidelity fidelity = resolve_fidelity(
+          options_.fidelity.empty() ? std::string_view(shape.fidelity) : options_.fidelity, *design);
+      row.evaluation = evaluate(*design, fidelity, options_.modal_tolerance);
+    } catch (const std::exception&) {
+      row.evaluation.reset();
+      return false;
+    }
+    row.name = name_cell < cells.size()  ? cells[name_cell]
+               : shape.name              ? *shape.name
+                                         : fmt::format("{}:{}", source_, row.line);
+    return true;
+  }
+
+  // Reads this row's document as the template of its shape and binds the
+  // filled columns to it; false when it cannot (the row is then read as JSON).
+  bool compile_shape(Shape& shape, const std::vector<std::string>& cells, std::span<const double> values,
+                     std::size_t line) const {
+    if (shape.attempts >= kTemplateAttempts) return false;
+    ++shape.attempts;
+    try {
+      Json document = options_.base ? *options_.base : Json::object();
+      std::vector<std::string> pointers;
+      bool named = false;
+      for (std::size_t k = 0; k < cells.size(); ++k) {
+        if (cells[k].empty()) continue;
+        if (header_[k] == "name") {
+          document["name"] = cells[k];
+          named = true;
+          continue;
+        }
+        columns_[k]->apply(document, values[pointers.size()]);
+        pointers.push_back(pointers_[k]);
+      }
+      const std::string where = fmt::format("{}:{}", source_, line);
+      auto compiled = CompiledDesign::compile(describe_design(document, where), pointers);
+      if (!compiled) {
+        shape.attempts = kTemplateAttempts;  // a column no binding sets: every row of the shape reads JSON
+        return false;
+      }
+      shape.compiled = std::make_unique<const CompiledDesign>(std::move(*compiled));
+      shape.bound.emplace(*shape.compiled);
+      const auto name = document.find("name");
+      if (!named && name != document.end()) shape.name = name->get<std::string>();
+      const auto fidelity = document.find("fidelity");
+      shape.fidelity = fidelity == document.end() ? "auto" : fidelity->get<std::string>();
+      return true;
+    } catch (const std::exception&) {
+      return false;
+    }
+  }
+
+  // The JSON path: the row written over the base document and read again.
+  void evaluate_general(Row& row) const {
     const std::string where = fmt::format("{}:{}", source_, row.line);
     try {
       Json document = options_.base ? *options_.base : Json::object();
@@ -107,12 +221,12 @@ class Evaluator {
     }
   }
 
- private:
   const std::string& source_;
   const BatchOptions& options_;
   std::vector<std::string> header_;
   std::vector<std::string> pointers_;
   std::vector<std::optional<FieldOverride>> columns_;  // empty: not a JSON pointer
+  mutable std::vector<std::map<std::uint64_t, Shape>> shapes_;  // per thread
 };
 
 void write_row(const Row& row, Format format, std::string& out) {
@@ -136,12 +250,12 @@ void write_row(const Row& row, Format format, std::string& out) {
   out += csv_field(row.name);
   for (const OutputSpec& o : output_specs()) {
     const auto value = row.evaluation ? o.value(*row.evaluation) : std::nullopt;
-    out += ",";
-    if (value) out += exact(*value);
+    out += ',';
+    if (value) append_exact(out, *value);
   }
-  out += ",";
-  out += csv_field(row.error);
-  out += "\n";
+  out += ',';
+  if (!row.error.empty()) out += csv_field(row.error);
+  out += '\n';
 }
 
 }  // namespace
@@ -181,7 +295,7 @@ BatchSummary run_batch(std::istream& in, const std::string& source, const BatchO
     for (std::string& text : texts) text.clear();
     for_blocks(chunk.size(), options.threads, [&](std::size_t t, std::size_t from, std::size_t to) {
       for (std::size_t i = from; i < to; ++i) {
-        evaluator.evaluate_row(chunk[i]);
+        evaluator.evaluate_row(chunk[i], t);
         write_row(chunk[i], options.format, texts[t]);
       }
     });

@@ -28,6 +28,10 @@ struct BatchOptions {
   int threads = 1;                // >= 1
   std::string fidelity;           // rigid, modal, response or auto; empty: each design's own
   double modal_tolerance = 1e-6;  // the hand-held modes' relative frequency error
+  // CSV rows set on a design compiled once per shape of filled cells
+  // (design_binding.hpp). Off, every row is written into a JSON document and
+  // read again: the reference the tests compare the compiled path with.
+  bool compiled = true;
 };
 
 struct BatchSummary {

@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include <fmt/format.h>
 
 #include "io/format.hpp"
 #include "io/input_error.hpp"
+#include "studies/design_binding.hpp"
 #include "sweetspot/evaluate.hpp"
 
 namespace sweetspot::io {
@@ -87,14 +89,24 @@ Problem make_problem(const Study& study) {
   for (const ObjectiveTerm& term : study.objective) {
     problem.smooth = problem.smooth && (square || !term.output->kinked);
   }
-  problem.evaluate = [&study, constraints, square](std::span<const double> x, double& f,
-                                                   std::span<double> c) {
-    try {
-      const DesignFile design = design_at(study, x);
+  // Each point is set on the study's compiled design (one working copy for
+  // the run); a point it cannot vouch for is read from JSON (design_at).
+  const auto bound =
+      compiled_for_variables(study) ? std::make_shared<BoundDesign>(*study.compiled) : std::shared_ptr<BoundDesign>();
+  problem.evaluate = [&study, constraints, square, bound](std::span<const double> x, double& f,
+                                                          std::span<double> c) {
+    const auto at = [&](const Design& design) {
       const Evaluation e = evaluate_in(study, design);
       f = study.over_impacts ? objective_of(study, design) : terms_value(study, e);
       if (square) f *= f;
       for (std::size_t k = 0; k < constraints.size(); ++k) c[k] = constraint_value(constraints[k], e);
+    };
+    try {
+      if (const Design* design = bound ? bound->at(x) : nullptr) return at(*design);
+    } catch (const std::exception&) {  // the JSON path below decides
+    }
+    try {
+      at(design_at(study, x).design);
     } catch (const std::exception&) {  // InputError or std::invalid_argument: no valid design here
       f = kPenalty;
       std::fill(c.begin(), c.end(), kPenalty);

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "io/input_error.hpp"
+#include "studies/design_binding.hpp"
 #include "sweetspot/evaluate.hpp"
 
 namespace sweetspot::io {
@@ -376,6 +377,11 @@ Study read_study(const Json& document, const std::string& source, const std::str
       rethrow_in(at_start, e);
     }
   }
+  std::vector<std::string> pointers;
+  for (const StudyVariable& v : study.variables) pointers.push_back(v.pointer);
+  if (auto compiled = CompiledDesign::compile(describe_design(study.design_document, study.design_source), pointers)) {
+    study.compiled = std::make_shared<const CompiledDesign>(std::move(*compiled));
+  }
   return study;
 }
 
@@ -384,8 +390,18 @@ Study load_study(const std::string& path) {
   return read_study(read_json_file(path), path, folder.empty() ? "." : folder);
 }
 
-Evaluation evaluate_in(const Study& study, const DesignFile& design) {
-  return evaluate(design.design, study.fidelity, study.modal_tolerance);
+Evaluation evaluate_in(const Study& study, const DesignFile& design) { return evaluate_in(study, design.design); }
+
+Evaluation evaluate_in(const Study& study, const Design& design) {
+  return evaluate(design, study.fidelity, study.modal_tolerance);
+}
+
+bool compiled_for_variables(const Study& study) {
+  if (!study.compiled || study.compiled->bindings().size() != study.variables.size()) return false;
+  for (std::size_t i = 0; i < study.variables.size(); ++i) {
+    if (study.compiled->bindings()[i].pointer != study.variables[i].pointer) return false;
+  }
+  return true;
 }
 
 DesignFile design_at(const Study& study, std::span<const double> x) {
@@ -396,10 +412,12 @@ DesignFile design_at(const Study& study, std::span<const double> x) {
   return read_design(document, study.design_source);
 }
 
-double objective_of(const Study& study, const DesignFile& design) {
+double objective_of(const Study& study, const DesignFile& design) { return objective_of(study, design.design); }
+
+double objective_of(const Study& study, const Design& design) {
   if (!study.over_impacts) return terms_value(study, evaluate_in(study, design));
   const ImpactSpread& spread = *study.over_impacts;
-  Design d = design.design;
+  Design d = design;
   const double L = d.implement.length_m();
   const auto from_butt = [&](int k) {
     return L - (spread.from_tip_lo_m + (spread.from_tip_hi_m - spread.from_tip_lo_m) * k / (spread.points - 1));

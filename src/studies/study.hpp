@@ -5,6 +5,7 @@
 // (`sweetspot optimize`) or as a grid of what-ifs (`sweetspot sweep`).
 // The format is documented in README.md.
 
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -16,6 +17,8 @@
 #include "sweetspot/optimize.hpp"
 
 namespace sweetspot::io {
+
+class CompiledDesign;
 
 // Stands in for an output the physics puts at infinity (or a design a
 // variable made invalid) inside an objective or constraint: large, finite.
@@ -70,10 +73,18 @@ struct Study {
   // the modes), and the hand-held modes' relative frequency error.
   Fidelity fidelity = Fidelity::kRigid;
   double modal_tolerance = 1e-6;
+  // The design with the variables bound (design_binding.hpp), compiled when
+  // the study is read: evaluations set numbers on a typed design instead of
+  // reading the JSON again. Null when a variable cannot be bound.
+  std::shared_ptr<const CompiledDesign> compiled;
 };
+
+// Whether the study's compiled design binds exactly its variables, in order.
+bool compiled_for_variables(const Study& study);
 
 // Evaluates `design` with the study's fidelity. Throws like evaluate().
 Evaluation evaluate_in(const Study& study, const DesignFile& design);
+Evaluation evaluate_in(const Study& study, const Design& design);
 
 // Reads a study file; `design` paths are relative to the study's folder.
 // Throws InputError naming the study file and the JSON path.
@@ -86,6 +97,7 @@ DesignFile design_at(const Study& study, std::span<const double> x);
 // The objective (to minimise) of a design: the weighted terms, reduced over
 // the impact spread when the study has one.
 double objective_of(const Study& study, const DesignFile& design);
+double objective_of(const Study& study, const Design& design);
 
 // The study's objective terms for one evaluation (kPenalty for an output at infinity).
 double terms_value(const Study& study, const Evaluation& evaluation);

@@ -8,6 +8,7 @@
 #include "io/format.hpp"
 #include "io/input_error.hpp"
 #include "io/parallel.hpp"
+#include "studies/design_binding.hpp"
 #include "sweetspot/evaluate.hpp"
 
 namespace sweetspot::io {
@@ -17,9 +18,13 @@ namespace {
 // variable fastest), each evaluated into its CSV row and its plot values.
 class SweepWorker {
  public:
-  SweepWorker(const Study& study, const std::vector<double>& second, bool share_rows)
+  SweepWorker(const Study& study, const std::vector<double>& second, bool share_rows, bool compiled)
       : study_(study), second_(second), document_(study.design_document) {
     for (const StudyVariable& variable : study.variables) pointers_.emplace_back(variable.pointer);
+    if (compiled && compiled_for_variables(study)) bound_.emplace(*study.compiled);
+    if (study.variables[0].values.size() <= kCachedTexts) {
+      for (const double value : study.variables[0].values) append_exact(first_text_.emplace_back(), value);
+    }
     // The impact point as read_design() reads it: "/impact/from_tip_<unit>" or
     // "/impact/from_butt_<unit>", converted by the same factor.
     const std::string_view pointer = study.variables[0].pointer;
@@ -38,6 +43,7 @@ class SweepWorker {
     std::optional<Evaluation> e;
     std::string error;
     if (impact_ && shared_ && shared_row_ == row) e = shared_at(v);
+    if (!e) e = evaluate_bound(v, second_[row], row);
     if (!e) {
       try {
         e = evaluate_here(v, second_[row], row);
@@ -45,14 +51,28 @@ class SweepWorker {
         error = ex.what();
       }
     }
-    text += exact(v);
-    if (study_.variables.size() == 2) text += "," + exact(second_[row]);
+    // The variables' text repeats along the grid: written once, copied after.
+    if (p % n0 < first_text_.size()) {
+      text += first_text_[p % n0];
+    } else {
+      append_exact(text, v);
+    }
+    if (study_.variables.size() == 2) {
+      if (second_text_row_ != row) {
+        second_text_.assign(1, ',');
+        append_exact(second_text_, second_[row]);
+        second_text_row_ = row;
+      }
+      text += second_text_;
+    }
     for (std::size_t k = 0; k < study_.sweep_outputs.size(); ++k) {
       values[k] = e ? study_.sweep_outputs[k]->value(*e) : std::nullopt;
-      text += ",";
-      if (values[k]) text += exact(*values[k]);
+      text += ',';
+      if (values[k]) append_exact(text, *values[k]);
     }
-    text += "," + csv_field(error) + "\n";
+    text += ',';
+    if (!error.empty()) text += csv_field(error);
+    text += '\n';
   }
 
  private:
@@ -61,19 +81,40 @@ class SweepWorker {
     double to_si;
   };
 
-  // The point read and evaluated on its own; the row's design kept for the
-  // next points when only the impact changes along it.
+  // The point set on the study's compiled design and evaluated; std::nullopt
+  // when the binding cannot vouch for it or it fails (evaluate_here() then
+  // reads it from JSON and says why).
+  std::optional<Evaluation> evaluate_bound(double v, double y, std::size_t row) {
+    if (!bound_) return std::nullopt;
+    const double values[2] = {v, y};
+    try {
+      const Design* design = bound_->at(std::span<const double>(values, pointers_.size()));
+      if (!design) return std::nullopt;
+      Evaluation e = evaluate_in(study_, *design);
+      share_row(*design, row);
+      return e;
+    } catch (const std::exception&) {
+      return std::nullopt;
+    }
+  }
+
+  // The point read and evaluated on its own.
   Evaluation evaluate_here(double v, double y, std::size_t row) {
     document_[pointers_[0]] = v;
     if (pointers_.size() == 2) document_[pointers_[1]] = y;
     const DesignFile design = read_design_lean(document_, study_.design_source);
     Evaluation e = evaluate_in(study_, design);
-    if (impact_ && !design.design.cor_rigid && !design.design.strings) {
-      shared_.emplace(design.design);
-      shared_row_ = row;
-      length_m_ = design.design.implement.length_m();
-    }
+    share_row(design.design, row);
     return e;
+  }
+
+  // The row's design kept for the next points when only the impact changes along it.
+  void share_row(const Design& design, std::size_t row) {
+    if (impact_ && !design.cor_rigid && !design.strings) {
+      shared_.emplace(design);
+      shared_row_ = row;
+      length_m_ = design.implement.length_m();
+    }
   }
 
   // The same point from the row's design, or std::nullopt when only reading
@@ -94,6 +135,13 @@ class SweepWorker {
   Json document_;  // this thread's copy, the variables set in place
   std::vector<Json::json_pointer> pointers_;
   std::optional<Impact> impact_;
+  std::optional<BoundDesign> bound_;  // empty: every point read from JSON
+  // The first variable's values as CSV text (when there are at most
+  // kCachedTexts of them), and ",second" for the current row.
+  static constexpr std::size_t kCachedTexts = 100000;
+  std::vector<std::string> first_text_;
+  std::string second_text_;
+  std::size_t second_text_row_ = static_cast<std::size_t>(-1);
   std::optional<ImpactSweep> shared_;
   std::size_t shared_row_ = 0;
   double length_m_ = 0.0;
@@ -129,7 +177,7 @@ std::vector<Plot> run_sweep(const Study& study, std::ostream& csv,
   }
   const int threads = std::max(1, options.threads);
   std::vector<SweepWorker> workers;
-  for (int t = 0; t < threads; ++t) workers.emplace_back(study, second, options.share_rows);
+  for (int t = 0; t < threads; ++t) workers.emplace_back(study, second, options.share_rows, options.compiled);
   std::vector<std::string> texts(threads);
   std::vector<std::optional<double>> values(kSweepChunkPoints * outputs);
   for (std::size_t begin = 0; begin < total; begin += kSweepChunkPoints) {

@@ -19,6 +19,10 @@ struct SweepOptions {
   // study is rigid: one design read per row, then ImpactSweep. Off, every
   // point is read and evaluated on its own (the reference the tests compare with).
   bool share_rows = true;
+  // Set each point on the study's compiled design (design_binding.hpp). Off,
+  // every point is written into the JSON document and read again: the
+  // reference the tests compare the compiled path with, on good and bad points.
+  bool compiled = true;
 };
 
 // A sweep over the grid of the study's variables (one or two), streaming one

@@ -254,7 +254,7 @@ TEST_CASE("A sweep along the impact shares each row's design and writes what rea
       }
       return std::pair{csv.str(), y};
     };
-    const auto reference = sweep(SweepOptions{1, false});
+    const auto reference = sweep(SweepOptions{1, false, false});
     const bool has_failed_rows = reference.first.find("must be") != std::string::npos;
     CHECK(has_failed_rows == (text != texts[1]));  // the first and last grids reach bad points
     for (const SweepOptions options : {SweepOptions{1, true}, SweepOptions{3, true}, SweepOptions{2, false}}) {

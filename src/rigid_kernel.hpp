@@ -1,0 +1,69 @@
+#pragma once
+
+// The arithmetic of the rigid model's equations on plain numbers, unchecked
+// and without branches: each side of a special case is computed and one is
+// selected, so that a loop over many designs is if-converted and vectorised.
+// The public functions of mass_properties.hpp and rigid_impact.hpp check
+// their arguments and call these; this is the only place each formula is written.
+
+#include <cmath>
+#include <numbers>
+
+namespace sweetspot::kernel {
+
+// Implement plus a point mass m at x_m (Cross 2004 Eq. 14 and the parallel-axis
+// theorem); the body itself when m = 0.
+struct System {
+  double mass_kg, com_from_butt_m, I_cm_kg_m2;
+};
+inline System with_point_mass(double M, double c, double I, double x_m, double m) {
+  const double total = M + m;
+  const double shift = m * (c - x_m) / total;  // Eq. (14)
+  const double com = c - shift;
+  const double body_arm = c - com;
+  const double point_arm = x_m - com;
+  const double inertia = I + M * body_arm * body_arm + m * point_arm * point_arm;
+  const bool none = m == 0.0;
+  return System{none ? M : total, none ? c : com, none ? I : inertia};
+}
+
+// Cross (2004) Eq. (17): M_eff = M / (1 + M b^2 / I_cm), b = x - x_cm; M at the centre of mass.
+inline double effective_mass(double M, double c, double I, double x) {
+  const double b = x - c;
+  const double general = M / (1.0 + M * b * b / I);
+  return b == 0.0 ? M : general;
+}
+
+// Cross (2004) Eq. (16): e_A = (e M_eff - m) / (M_eff + m).
+inline double apparent_cor(double cor, double effective_mass_kg, double ball_mass_kg) {
+  return (cor * effective_mass_kg - ball_mass_kg) / (effective_mass_kg + ball_mass_kg);
+}
+
+// J = m v1 (1 + e_A) (Cross 2004, Sec. VI).
+inline double ball_impulse(double ball_mass_kg, double ball_speed_m_s, double apparent_cor) {
+  return ball_mass_kg * (1.0 + apparent_cor) * ball_speed_m_s;
+}
+
+// F0 = pi J / (2 T), the peak of the half-sine carrying J (Eq. 15 with the above).
+inline double half_sine_peak_force(double impulse_N_s, double impact_duration_s) {
+  return std::numbers::pi * impulse_N_s / (2.0 * impact_duration_s);
+}
+
+// Cross (2004) Eq. (13): h + I_cm / (M h) from the butt; `at_wrist` when h = 0.
+inline double hand_held_cop_from_butt(double M, double h, double I, double at_wrist) {
+  const double general = h + I / (M * h);
+  return h == 0.0 ? at_wrist : general;
+}
+
+// Cross (2004) Eq. (11) multiplied through by M_e (see wrist_force_ratio() in
+// rigid_impact.hpp): M_e M h (x - x_cop) / (M_e M h^2 + I_cm (M_e + M)),
+// -M_e I_cm / (...) when h = 0, and 0 without a forearm.
+inline double wrist_force_ratio(double M, double h, double I, double Me, double x) {
+  const double denominator = Me * M * h * h + I * (Me + M);
+  const double x_cop = h + I / (M * h);
+  const double at_wrist = -Me * I / denominator;
+  const double general = Me * M * h * (x - x_cop) / denominator;
+  return Me == 0.0 ? 0.0 : (h == 0.0 ? at_wrist : general);
+}
+
+}  // namespace sweetspot::kernel

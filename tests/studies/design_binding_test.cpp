@@ -1,0 +1,277 @@
+// The compiled path (a study variable, sweep axis or batch column bound once
+// to a typed design) against its oracle, the JSON path (the number written
+// into the document and the design read again): the same designs bit for bit,
+// the same CSV bytes and the same error rows, on good and bad points alike.
+#include "studies/design_binding.hpp"
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <catch2/catch.hpp>
+
+#include "io/design_reader.hpp"
+#include "studies/batch.hpp"
+#include "studies/optimization.hpp"
+#include "studies/study.hpp"
+#include "studies/sweep.hpp"
+
+namespace sweetspot::io {
+namespace {
+
+std::string studies() { return std::string(SWEETSPOT_SOURCE_DIR) + "/designs/studies/"; }
+
+bool same_bits(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
+
+// Every number of the rigid model and the implement, compared bit for bit.
+void check_same_design(const Design& a, const Design& b) {
+  CHECK(same_bits(a.implement.length_m(), b.implement.length_m()));
+  const MassProperties& p = a.implement.mass_properties();
+  const MassProperties& q = b.implement.mass_properties();
+  CHECK(same_bits(p.mass_kg, q.mass_kg));
+  CHECK(same_bits(p.com_from_butt_m, q.com_from_butt_m));
+  CHECK(same_bits(p.I_cm_kg_m2, q.I_cm_kg_m2));
+  CHECK(a.implement.sections().size() == b.implement.sections().size());
+  CHECK(a.implement.point_masses().size() == b.implement.point_masses().size());
+  CHECK(same_bits(a.cor, b.cor));
+  CHECK(same_bits(a.impact_duration_s, b.impact_duration_s));
+  CHECK(same_bits(a.hand.mass_kg, b.hand.mass_kg));
+  CHECK(same_bits(a.hand.center_from_butt_m, b.hand.center_from_butt_m));
+  CHECK(same_bits(a.forearm_equivalent_mass_kg, b.forearm_equivalent_mass_kg));
+  CHECK(same_bits(a.ball.mass_kg, b.ball.mass_kg));
+  CHECK(same_bits(a.ball.speed_m_s, b.ball.speed_m_s));
+  CHECK(same_bits(a.impact_from_butt_m, b.impact_from_butt_m));
+  CHECK(a.strings.has_value() == b.strings.has_value());
+  if (a.strings && b.strings) {
+    CHECK(same_bits(a.strings->tension_N, b.strings->tension_N));
+    CHECK(same_bits(a.strings->head_radius_m, b.strings->head_radius_m));
+  }
+}
+
+// A design of each implement form, and pointers with values (good and bad) for it.
+struct Case {
+  const char* design;
+  std::vector<std::pair<const char*, std::vector<double>>> fields;
+};
+
+const std::vector<Case>& cases() {
+  static const std::vector<Case> list{
+      {R"({"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8},
+          "strings": {"impact_duration_ms": 4}, "forearm": {"mass_kg": 1.5}, "impact": {"from_tip_cm": 5}})",
+       {{"/implement/mass_kg", {0.3, -0.1, 0.0}},
+        {"/implement/head_to_handle_mass_ratio", {1.2, -1.0}},
+        {"/implement/length_m", {0.68, 0.03}},
+        {"/strings/impact_duration_ms", {5.0, 0.0}},
+        {"/forearm/mass_kg", {1.2, -3.0}},
+        {"/impact/from_tip_cm", {12.0, -1.0, 90.0}}}},
+      {R"({"implement": {"length_in": 27, "mass_g": 305, "balance_pts_hl": 4, "swingweight_kg_cm2": 320},
+          "frame": {"cor": 0.8}, "ball": {"speed_mph": 100}, "impact": {"from_butt_mm": 500}})",
+       {{"/implement/balance_pts_hl", {6.0, 200.0, -3.0}},
+        {"/implement/swingweight_kg_cm2", {330.0, 1.0, 5000.0}},
+        {"/implement/length_in", {27.5, 1.0}},
+        {"/implement/mass_g", {290.0, -5.0}},
+        {"/frame/cor", {0.6, 1.5}},
+        {"/ball/speed_mph", {90.0, -10.0}},
+        {"/impact/from_butt_mm", {450.0, 900.0}}}},
+      {R"({"implement": {"length_cm": 68.5, "mass_kg": 0.31, "balance_cm": 32, "swingweight_kg_m2": 0.032},
+          "hand": {"mass_g": 450, "center_from_butt_cm": 8}, "forearm": {"equivalent_mass_g": 400}})",
+       {{"/implement/balance_cm", {33.0, 0.0, 80.0}},
+        {"/implement/swingweight_kg_m2", {0.031, 0.2}},
+        {"/hand/mass_g", {500.0, -1.0}},
+        {"/hand/center_from_butt_cm", {7.0, 100.0}},
+        {"/forearm/equivalent_mass_g", {300.0, -2.0}}}},
+      {R"({"implement": {"sections": [{"length_m": 0.35, "mass_kg": 0.14, "EI_N_m2": 300},
+                                      {"length_cm": 35, "mass_g": 110}],
+                         "point_masses": [{"from_butt_m": 0.68, "mass_g": 6}]},
+          "frame": {"EI_N_m2": 250}, "strings": {"tension_lb": 55, "head_size_in2": 98}})",
+       {{"/implement/sections/0/length_m", {0.36, -0.1}},
+        {"/implement/sections/1/mass_g", {120.0, -1.0}},
+        {"/implement/sections/0/EI_N_m2", {280.0, -5.0}},
+        {"/implement/point_masses/0/from_butt_m", {0.6, 0.9}},
+        {"/implement/point_masses/0/mass_g", {8.0, -1.0}},
+        {"/strings/tension_lb", {60.0, -1.0, 1e9}},
+        {"/strings/head_size_in2", {100.0, 0.0, 1e5}},
+        {"/frame/EI_N_m2", {260.0, -1.0}}}},
+  };
+  return list;
+}
+
+TEST_CASE("A bound field gives, bit for bit, the design read from the file with the value written there") {
+  for (const Case& c : cases()) {
+    const Json document = Json::parse(c.design);
+    const DesignDescription description = describe_design(document, "design.json");
+    for (const auto& [pointer, values] : c.fields) {
+      INFO(c.design << "\n" << pointer);
+      const std::vector<std::string> pointers{pointer};
+      const auto compiled = CompiledDesign::compile(description, pointers);
+      REQUIRE(compiled);
+      BoundDesign bound(*compiled);
+      for (const double value : values) {
+        INFO("value " << value);
+        Json changed = document;
+        changed[Json::json_pointer(pointer)] = value;
+        std::optional<DesignFile> read;
+        try {
+          read.emplace(read_design(changed, "design.json"));
+        } catch (const std::exception&) {
+        }
+        const Design* design = bound.at(std::span<const double>(&value, 1));
+        // The binding never accepts what the reader refuses (it may leave to
+        // the reader what it accepts, never the other way round).
+        if (!read) CHECK(design == nullptr);
+        REQUIRE((design != nullptr) == read.has_value());
+        if (design) check_same_design(*design, read->design);
+      }
+    }
+  }
+}
+
+TEST_CASE("Fields no binding can set are not compiled") {
+  const Json document = Json::parse(cases()[0].design);
+  const DesignDescription description = describe_design(document, "design.json");
+  for (const char* pointer : {"/name", "/reference/peak_wrist_force_N", "/implement/balance_cm",
+                              "/implement/sections/0/mass_kg", "/impact/from_butt_m", "/forearm/equivalent_mass_kg",
+                              "/strings/tension_N", "/frame/cor_rigid", "/hand", "/implement/mass_kg/x", "hand/mass_kg"}) {
+    INFO(pointer);
+    CHECK_FALSE(bind_field(description, pointer));
+  }
+  CHECK(bind_field(description, "/hand/mass_g")->factor == 0.001);
+  CHECK(bind_field(description, "/impact/from_tip_in")->factor == 0.0254);
+  CHECK(bind_field(description, "/implement/mass_g")->implement);
+  CHECK_FALSE(bind_field(description, "/hand/mass_g")->implement);
+}
+
+std::string sweep_csv(const Study& study, SweepOptions options) {
+  std::ostringstream csv;
+  run_sweep(study, csv, [](std::size_t, std::size_t) {}, options);
+  return csv.str();
+}
+
+TEST_CASE("A compiled sweep writes the bytes of the sweep that reads every point, error rows included") {
+  for (const Case& c : cases()) {
+    for (std::size_t i = 0; i + 1 < c.fields.size(); ++i) {
+      const auto& [first, a] = c.fields[i];
+      const auto& [second, b] = c.fields[i + 1];
+      Json text = Json::parse(R"({"outputs": ["peak_wrist_force_N", "mass_kg", "swingweight_kg_cm2",
+                                  "impact_from_tip_m", "impact_duration_s", "rotation_axis_free_from_butt_m"]})");
+      text["design"] = Json::parse(c.design);
+      text["variables"] = Json::array({Json{{"path", first}, {"values", a}}, Json{{"path", second}, {"values", b}}});
+      INFO(text.dump());
+      Study study;
+      try {
+        study = read_study(text, "sweep.json", studies());
+      } catch (const std::exception& e) {
+        continue;  // a start point the study refuses: nothing to sweep
+      }
+      REQUIRE(compiled_for_variables(study));
+      const std::string reference = sweep_csv(study, SweepOptions{1, false, false});
+      CHECK(sweep_csv(study, SweepOptions{1, false, true}) == reference);
+      CHECK(sweep_csv(study, SweepOptions{2, true, true}) == reference);
+    }
+  }
+}
+
+TEST_CASE("Every point of a hand x forearm sweep is the point read from JSON, off the range too") {
+  const Study study = read_study(Json::parse(R"({"design": "../table1/row1.json",
+      "outputs": ["peak_wrist_force_N", "wrist_force_ratio", "cop_hand_from_tip_m"],
+      "variables": [{"path": "/hand/mass_kg", "min": -0.2, "max": 0.6, "points": 17},
+                    {"path": "/forearm/equivalent_mass_kg", "min": -0.1, "max": 1.0, "points": 12}]})"),
+                                 "sweep.json", studies());
+  const std::string reference = sweep_csv(study, SweepOptions{1, true, false});
+  CHECK(reference.find("/hand/mass_kg: must be in") != std::string::npos);
+  CHECK(reference.find("/forearm/equivalent_mass_kg: must be in") != std::string::npos);
+  CHECK(sweep_csv(study, SweepOptions{1, true, true}) == reference);
+}
+
+std::string batch_output(const std::string& csv, const BatchOptions& options) {
+  std::istringstream in(csv);
+  std::ostringstream out;
+  run_batch(in, "catalogue.csv", options, out);
+  return out.str();
+}
+
+TEST_CASE("A compiled batch writes the rows and error rows of the batch that reads every row") {
+  const std::string catalogue =
+      "name,implement.length_in,implement.mass_g,implement.balance_cm,implement.swingweight_kg_cm2,impact.from_tip_m\n"
+      "a,27,305,32.5,320,0.1\n"
+      ",27.5,290,33,310,0.12\n"
+      "\"quoted, name\",27,300,31,330,\n"
+      "bad mass,27,-5,32,320,0.1\n"
+      "impossible swingweight,27,305,32.5,5000,0.1\n"
+      "off the implement,27,305,32.5,320,2\n"
+      "not a number,27,abc,32,320,0.1\n"
+      "short row,27,305\n"
+      "inf,27,inf,32,320,0.1\n"
+      "balance outside,27,305,90,320,0.1\n"
+      ",,,,,\n"
+      "b,26.5,310,32,315,0.05\n";
+  for (const char* base : {R"({"implement": {"length_in": 27, "mass_g": 305, "balance_cm": 32.5,
+                               "swingweight_kg_cm2": 320}, "frame": {"cor": 0.8}})",
+                           R"({"name": "base", "implement": {"length_in": 27, "mass_g": 305, "balance_pts_hl": 4,
+                               "swingweight_kg_cm2": 320}, "forearm": {"mass_kg": 1.2}})",
+                           R"({"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8}})"}) {
+    for (const Format format : {Format::kCsv, Format::kJson}) {
+      INFO(base << (format == Format::kCsv ? " to CSV" : " to JSON"));
+      BatchOptions options;
+      options.csv_input = true;
+      options.base = Json::parse(base);
+      options.format = format;
+      options.compiled = false;
+      const std::string reference = batch_output(catalogue, options);
+      CHECK(reference.find("catalogue.csv:5") != std::string::npos);
+      for (const int threads : {1, 2}) {
+        options.compiled = true;
+        options.threads = threads;
+        CHECK(batch_output(catalogue, options) == reference);
+      }
+    }
+  }
+}
+
+TEST_CASE("A column no binding sets leaves its rows to the JSON path with the same output") {
+  const std::string catalogue = "name,reference.peak_wrist_force_N,hand.mass_kg,frame.cor_rigid\n"
+                                "a,500,0.4,\n"
+                                "b,,0.45,\n"
+                                "c,,0.5,0.9\n";
+  BatchOptions options;
+  options.csv_input = true;
+  options.base = Json::parse(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8}})");
+  options.compiled = false;
+  const std::string reference = batch_output(catalogue, options);
+  options.compiled = true;
+  CHECK(batch_output(catalogue, options) == reference);
+}
+
+TEST_CASE("An optimisation's compiled evaluations equal the JSON path's, at good and bad points") {
+  for (const char* name : {"1-lowest-wrist-force-table1-ranges.json", "2-lowest-wrist-force-fixed-feel.json",
+                           "3a-cop-on-node-table1-racquet.json", "4-robust-lowest-worst-wrist-force.json"}) {
+    INFO(name);
+    Study study = load_study(studies() + name);
+    REQUIRE(compiled_for_variables(study));
+    const Problem compiled = make_problem(study);
+    const std::shared_ptr<const CompiledDesign> kept = study.compiled;
+    study.compiled.reset();
+    const Problem reference = make_problem(study);
+    study.compiled = kept;
+    const std::size_t n = compiled.start.size();
+    for (const double t : {0.0, 0.3, 1.0, -0.5, 2.0}) {
+      std::vector<double> x(n);
+      for (std::size_t i = 0; i < n; ++i) {
+        x[i] = compiled.lower[i] + (compiled.upper[i] - compiled.lower[i]) * (t + 0.1 * static_cast<double>(i));
+      }
+      INFO("t = " << t);
+      double f1 = 0.0, f2 = 0.0;
+      std::vector<double> c1(compiled.constraints.size()), c2(compiled.constraints.size());
+      compiled.evaluate(x, f1, c1);
+      reference.evaluate(x, f2, c2);
+      CHECK(same_bits(f1, f2));
+      for (std::size_t k = 0; k < c1.size(); ++k) CHECK(same_bits(c1[k], c2[k]));
+    }
+  }
+}
+
+}  // namespace
+}  // namespace sweetspot::io
