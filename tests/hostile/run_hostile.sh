@@ -135,7 +135,7 @@ run_one() {
   # A crash or a hang says it all: the checks below would only repeat it.
   if [ -n "$fatal" ]; then
     [ -n "${HOSTILE_KEEP:-}" ] || { cd / && rm -rf "$case_dir"; }
-    printf 'FAIL %s: %s\n' "$id" "${why[0]}" | sed -E 's/(.)\1{15,}/\1\1\1.../g'
+    printf 'FAIL %s: %s\n' "$id" "${why[0]//$'\n'/\\n}" | sed -E 's/(.)\1{15,}/\1\1\1.../g'
     return
   fi
   # No NaN or infinity in what the command wrote: stdout and new or changed files.
@@ -164,6 +164,7 @@ run_one() {
   else
     local joined
     joined=$(printf '%s; ' "${why[@]}")
+    joined=${joined//$'\n'/\\n}
     # Long runs of one character (a 250-byte file name) are shortened.
     printf 'FAIL %s: %s\n' "$id" "${joined%; }" | sed -E 's/(.)\1{15,}/\1\1\1.../g' 
   fi
@@ -258,7 +259,10 @@ check_one() {
       [ -z "$bad" ] || why+=("$1: $bad, expected $3 $4") ;;
     csvshape)
       local bad
-      bad=$(awk -F, 'NR == 1 { n = NF } NF != n { print NR ": " substr($0, 1, 60); exit }' "$p")
+      bad=$(awk '{
+          n = 1; q = 0
+          for (i = 1; i <= length($0); ++i) { c = substr($0, i, 1); if (c == "\"") q = !q; else if (c == "," && !q) ++n }
+          if (NR == 1) h = n; else if (n != h || q) { print NR ": " substr($0, 1, 60); exit } }' "$p")
       [ -z "$bad" ] || why+=("$1 is not one CSV table: line $bad") ;;
     num)  # num FILE KEY OP VALUE (OP: lt le gt ge)
       local v
