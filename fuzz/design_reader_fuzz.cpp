@@ -22,10 +22,7 @@
 #include <string>
 #include <string_view>
 
-#include "sweetspot/evaluate.hpp"
-#include "sweetspot/io/design_reader.hpp"
-#include "sweetspot/io/input_error.hpp"
-#include "sweetspot/io/json_reader.hpp"
+#include "input_layer.hpp"
 
 namespace {
 
