@@ -22,10 +22,7 @@
 #include <string>
 #include <string_view>
 
-#include "sweetspot/evaluate.hpp"
-#include "io/design_reader.hpp"
-#include "io/input_error.hpp"
-#include "io/json_reader.hpp"
+#include "input_layer.hpp"
 
 namespace {
 
