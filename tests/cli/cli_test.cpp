@@ -489,3 +489,24 @@ TEST_CASE("report with no designs folder and response with an empty point exit 2
 }
 
 }  // namespace
+
+namespace {
+
+bool one_line(const Run& run) { return std::count(run.err.begin(), run.err.end(), '\n') == 1; }
+
+TEST_CASE("A file name is printed on one line, and stands in for a name as valid UTF-8") {
+  const Sandbox box;
+  const fs::path broken = box.file("two\nlines.json", "{\"implement\": 5}");
+  const Run run = box.run("evaluate \"" + broken.string() + "\"");
+  CHECK(run.status == 2);
+  CHECK(one_line(run));
+  CHECK(run.err.find("two\\nlines.json: /implement: expected a JSON object") != std::string::npos);
+  const fs::path latin1 = box.file("raquette-\xE9t\xE9.json", with_implement(""));
+  const Run json = box.run("evaluate \"" + latin1.string() + "\" --format json");
+  CHECK(json.status == 0);
+  REQUIRE_NOTHROW(nlohmann::json::parse(json.out));
+  CHECK(nlohmann::json::parse(json.out)["name"].get<std::string>().find("raquette-\xEF\xBF\xBDt\xEF\xBF\xBD.json") !=
+        std::string::npos);
+}
+
+}  // namespace
