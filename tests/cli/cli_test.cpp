@@ -510,3 +510,26 @@ TEST_CASE("A file name is printed on one line, and stands in for a name as valid
 }
 
 }  // namespace
+
+namespace {
+
+TEST_CASE("A grip with no stiffness and no damping holds a detached hand: undamped modes, never a negative ratio") {
+  const Sandbox box;
+  const fs::path loose = box.file("loose.json", R"({"implement": {"length_m": 0.7, "mass_kg": 0.25,
+      "head_to_handle_mass_ratio": 0.8}, "frame": {"EI_N_m2": 152},
+      "hand": {"grip_stiffness_N_m2": 0, "grip_damping_N_s_m2": 0}})");
+  const Run held = box.run("response \"" + loose.string() + "\" --held");
+  CHECK(held.status == 0);
+  CHECK(held.err.empty());
+  const Run modes = box.run("modes \"" + loose.string() + "\" --format json");
+  REQUIRE(modes.status == 0);
+  const nlohmann::json j = nlohmann::json::parse(modes.out);
+  REQUIRE(j.contains("hand_held"));
+  for (const auto& mode : j["hand_held"]) {
+    CHECK(mode["damping_ratio"].get<double>() >= 0.0);
+  }
+  // The beam alone: the held fundamental is the free one.
+  CHECK(j["hand_held"][0]["frequency_Hz"].get<double>() == Approx(j["free"][0]["frequency_Hz"].get<double>()).epsilon(1e-4));
+}
+
+}  // namespace
