@@ -279,18 +279,21 @@ std::vector<std::string> alternative_spellings(std::string_view key) {
       {"from_tip", "from_butt"},
       {"mass", "equivalent_mass"},  // the forearm: M_F or M_e
       {"EI", "fundamental_free"},   // the frame's stiffness
+      {"cor", "cor_rigid"},         // the frame's COR, or the one it is derived from
+      {"impact_duration", "tension"},  // the strings' duration, or the tension it is derived from
   };
+  constexpr Dimension kDimensions[] = {Dimension::kLength,  Dimension::kMass,    Dimension::kTime,
+                                       Dimension::kSpeed,   Dimension::kInertia, Dimension::kForce,
+                                       Dimension::kStiffness, Dimension::kDamping, Dimension::kFrequency};
   std::vector<std::string> out;
   const auto add_all_units = [&](std::string_view base) {
-    for (const Dimension d : {Dimension::kLength, Dimension::kMass, Dimension::kTime, Dimension::kSpeed,
-                              Dimension::kInertia, Dimension::kStiffness, Dimension::kFrequency}) {
+    for (const Dimension d : kDimensions) {
       for (const std::string& k : spellings(base, d)) {
         if (k != key && std::find(out.begin(), out.end(), k) == out.end()) out.push_back(k);
       }
     }
   };
-  for (const Dimension d : {Dimension::kLength, Dimension::kMass, Dimension::kTime, Dimension::kSpeed,
-                            Dimension::kInertia, Dimension::kStiffness, Dimension::kFrequency}) {
+  for (const Dimension d : kDimensions) {
     for (const Unit& unit : units(d)) {
       if (key.size() <= unit.suffix.size() || !key.ends_with(unit.suffix)) continue;
       const std::string base(key.substr(0, key.size() - unit.suffix.size()));

@@ -492,7 +492,88 @@ TEST_CASE("report with no designs folder and response with an empty point exit 2
 
 namespace {
 
+// The command line with standard input from `input` (a file), as a shell pipes it.
+Run run_with_input(const Sandbox& box, const std::string& arguments, const fs::path& input) {
+  const std::string command = std::string("\"") + SWEETSPOT_CLI + "\" " + arguments + " <\"" + input.string() +
+                              "\" >\"" + box.path("stdout").string() + "\" 2>\"" + box.path("stderr").string() + "\"";
+  const int raw = std::system(command.c_str());
+  return Run{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(box.path("stdout")), slurp(box.path("stderr"))};
+}
+
 bool one_line(const Run& run) { return std::count(run.err.begin(), run.err.end(), '\n') == 1; }
+
+constexpr const char* kBaseDesign = R"({"implement": {"length_m": 0.7, "mass_kg": 0.3, "head_to_handle_mass_ratio": 0.8}})";
+
+TEST_CASE("A bad catalogue header is refused once: exit 2, one line naming the file, line 1 and the column") {
+  const Sandbox box;
+  const fs::path base = box.file("base.json", kBaseDesign);
+  std::string rows;
+  for (int i = 0; i < 263; ++i) rows += "r" + std::to_string(i) + ",0.3,1\n";
+  for (const auto& [header, fragment] :
+       {std::pair{"name,implement.mass_kg,implement.mass_g", ":1: column 3 \"implement.mass_g\": contradicts column 2"},
+        std::pair{"name,implement.mass_kg,implement.mass_kg", ":1: column 3 \"implement.mass_kg\": repeats column 2"},
+        std::pair{"name,implement..mass_kg,hand.mass_kg", ":1: column 2 \"implement..mass_kg\": an empty name"},
+        std::pair{"name,implement.mass_kg,implement.colour", ":1: column 3 \"implement.colour\": unknown key"}}) {
+    INFO(header);
+    const fs::path catalogue = box.file("cat.csv", std::string(header) + "\n" + rows);
+    const Run run = box.run("evaluate --batch \"" + catalogue.string() + "\" --base \"" + base.string() + "\"");
+    CHECK(run.status == 2);
+    CHECK(one_line(run));
+    CHECK(run.err.find("sweetspot: " + catalogue.string() + fragment) != std::string::npos);
+  }
+}
+
+TEST_CASE("A catalogue with a byte-order mark reads its first column") {
+  const Sandbox box;
+  const fs::path base = box.file("base.json", kBaseDesign);
+  const fs::path catalogue = box.file("bom.csv", "\xEF\xBB\xBFname,implement.mass_kg\nA,0.25\nB,0.4\n");
+  const Run run = box.run("evaluate --batch \"" + catalogue.string() + "\" --base \"" + base.string() + "\"");
+  CHECK(run.status == 0);
+  CHECK(run.out.find("\n2,A,") != std::string::npos);
+}
+
+TEST_CASE("evaluate --batch on what is not a readable text file is an error, never an empty catalogue") {
+  const Sandbox box;
+  const Run directory = box.run("evaluate --batch \"" + box.path("").string() + "\"");
+  CHECK(directory.status == 2);
+  CHECK(directory.err.find("is a directory") != std::string::npos);
+  CHECK(one_line(directory));
+  // Reading this process's own memory from address 0 fails with EIO: a read error, exit 1.
+  const Run unreadable = box.run("evaluate --batch /proc/self/mem");
+  CHECK(unreadable.status == 1);
+  CHECK(unreadable.err.find("/proc/self/mem: cannot read line 1") != std::string::npos);
+  CHECK(one_line(unreadable));
+  for (const char* device : {"/dev/zero", "/dev/urandom"}) {
+    INFO(device);
+    const Run run = box.run(std::string("evaluate --batch ") + device);
+    CHECK(run.status == 2);
+    CHECK(run.err.find(std::string(device) + ":") != std::string::npos);
+    CHECK(one_line(run));
+  }
+  std::string wide = "name";
+  for (int k = 0; k < 600000; ++k) wide += ",hand.mass_kg";
+  const fs::path huge = box.file("wide.csv", wide + "\n");
+  const Run line = box.run("evaluate --batch \"" + huge.string() + "\"");
+  CHECK(line.status == 2);
+  CHECK(line.err.find("wide.csv:1: a line longer than 1048576 bytes") != std::string::npos);
+}
+
+TEST_CASE("evaluate --batch - reads standard input, CSV or JSON Lines by its first line") {
+  const Sandbox box;
+  const fs::path base = box.file("base.json", kBaseDesign);
+  const fs::path csv = box.file("in.txt", "name,implement.mass_kg\nA,0.25\n");
+  const Run a = run_with_input(box, "evaluate --batch - --base \"" + base.string() + "\"", csv);
+  CHECK(a.status == 0);
+  CHECK(a.out.find("\n2,A,") != std::string::npos);
+  const fs::path lines = box.file("in2.txt", R"({"name": "B", "implement": {"mass_kg": 0.4}})" "\n");
+  const Run b = run_with_input(box, "evaluate --batch - --base \"" + base.string() + "\"", lines);
+  CHECK(b.status == 0);
+  CHECK(b.out.find("\n1,B,") != std::string::npos);
+  const fs::path bad = box.file("in3.txt", "name,implement.mass_kg\nA,VS5\n");
+  const Run c = run_with_input(box, "evaluate --batch - --base \"" + base.string() + "\"", bad);
+  CHECK(c.status == 1);
+  CHECK(c.out.find("(standard input):2: /implement/mass_kg: expected a number, got \"\"VS5\"\"") != std::string::npos);
+}
 
 TEST_CASE("A file name is printed on one line, and stands in for a name as valid UTF-8") {
   const Sandbox box;
