@@ -7,6 +7,7 @@
 #include <iostream>
 #include <string>
 
+#include "cli/checks.hpp"
 #include "cli/commands.hpp"
 #include "io/design_reader.hpp"
 #include "io/input_error.hpp"
@@ -74,7 +75,7 @@ void EvaluateCommand::add_to(CLI::App& app) {
                       "row per input in order");
   command->add_option("--base", batch_base, "With --batch: a design file giving every row's defaults");
   command->add_option("--threads", threads, "With --batch: threads to use (default: all cores)")
-      ->check(CLI::Range(1, 1024));
+      ->check(whole_in(1, 1024));
   command
       ->add_option("--fidelity", fidelity,
                    "rigid: the paper's rigid body; modal: also the vibration modes (needs the "
@@ -83,7 +84,7 @@ void EvaluateCommand::add_to(CLI::App& app) {
       ->check(CLI::IsMember({"rigid", "modal", "response", "auto"}))
       ->capture_default_str();
   command->add_option("--tol", tolerance, "Relative error allowed in the hand-held frequency")
-      ->check(CLI::Range(1e-8, 0.1))
+      ->check(finite_in(1e-8, 0.1))
       ->capture_default_str();
   out.add_to(command);
 }

@@ -4,11 +4,13 @@
 #include <sys/wait.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
@@ -575,6 +577,53 @@ TEST_CASE("evaluate --batch - reads standard input, CSV or JSON Lines by its fir
   CHECK(c.out.find("(standard input):2: /implement/mass_kg: expected a number, got \"\"VS5\"\"") != std::string::npos);
 }
 
+TEST_CASE("A command-line number is checked and named as the command line's") {
+  const Sandbox box;
+  const std::string beam = std::string("\"") + SWEETSPOT_SOURCE_DIR + "/designs/paper-beam.json\"";
+  for (const auto& [args, message] :
+       {std::pair{"evaluate " + beam + " --tol nan", "sweetspot: --tol: expected a number in [1e-08, 0.1], got nan"},
+        std::pair{"modes " + beam + " --tol inf", "sweetspot: --tol: expected a number in [1e-08, 0.1], got inf"},
+        std::pair{"response " + beam + " --until-ms nan", "sweetspot: --until-ms: expected a number in [0.01, 1000], got nan"},
+        std::pair{"evaluate " + beam + " --tol 1", "sweetspot: --tol: expected a number in [1e-08, 0.1], got 1"},
+        std::pair{std::string("evaluate --batch x.csv --threads 0"), "sweetspot: --threads: expected a whole number in [1, 1024], got 0"},
+        std::pair{"response " + beam + " --at 0.1,,0.2", "sweetspot: --at: an empty point (item 2 of \"0.1,,0.2\""},
+        std::pair{"response " + beam + " --impacts 0.3,abc", "sweetspot: --impacts: item 2 \"abc\" is not a number"},
+        std::pair{"response " + beam + " --at 0.1,nan", "sweetspot: --at: item 2 \"nan\" is not a finite number"}}) {
+    INFO(args);
+    const Run run = box.run(args);
+    CHECK(run.status == 2);
+    CHECK(run.err.rfind(message, 0) == 0);
+    CHECK(one_line(run));
+    CHECK(run.out.empty());
+  }
+  // Ranges print in their shortest form.
+  const Run help = box.run("evaluate --help");
+  CHECK(help.out.find("[1e-08, 0.1]") != std::string::npos);
+  CHECK(help.out.find("0.000000") == std::string::npos);
+}
+
+TEST_CASE("A point the command line puts off the implement is named as the command line's") {
+  const Sandbox box;
+  const fs::path tiny = box.file("tiny.json", R"({"implement": {"sections": [{"length_m": 0.001, "mass_kg": 0.001,
+      "EI_N_m2": 152}]}, "hand": {"mass_kg": 0, "center_from_butt_m": 0.0005}, "impact": {"from_butt_m": 0.0005}})");
+  const Run run = box.run("response \"" + tiny.string() + "\"");
+  CHECK(run.status == 2);
+  CHECK(run.err == "sweetspot: --at 0.02: outside the implement (length 0.001 m)\n");
+  const Run impacts = box.run("response \"" + tiny.string() + "\" --at 0.0005 --impacts 0.5");
+  CHECK(impacts.err == "sweetspot: --impacts 0.5: outside the implement (length 0.001 m)\n");
+}
+
+TEST_CASE("An unknown command is named, with the commands there are") {
+  const Sandbox box;
+  const Run run = box.run("frobnicate");
+  CHECK(run.status == 2);
+  CHECK(run.err.rfind("sweetspot: unknown command 'frobnicate' (commands: evaluate, ", 0) == 0);
+  CHECK(one_line(run));
+  const Run none = box.run("");
+  CHECK(none.status == 2);
+  CHECK(none.err.rfind("sweetspot: a command is required (evaluate, ", 0) == 0);
+}
+
 TEST_CASE("A file name is printed on one line, and stands in for a name as valid UTF-8") {
   const Sandbox box;
   const fs::path broken = box.file("two\nlines.json", "{\"implement\": 5}");
@@ -588,6 +637,18 @@ TEST_CASE("A file name is printed on one line, and stands in for a name as valid
   REQUIRE_NOTHROW(nlohmann::json::parse(json.out));
   CHECK(nlohmann::json::parse(json.out)["name"].get<std::string>().find("raquette-\xEF\xBF\xBDt\xEF\xBF\xBD.json") !=
         std::string::npos);
+}
+
+TEST_CASE("bench speed checks its designs folder before timing anything") {
+  const Sandbox box;
+  const auto start = std::chrono::steady_clock::now();
+  const Run run = box.run("bench speed --designs \"" + box.path("nope").string() + "\" --out \"" +
+                          box.path("out").string() + "\"");
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  CHECK(run.status == 2);
+  CHECK(run.err.find("nope/studies: not a folder of studies") != std::string::npos);
+  CHECK(seconds < 2.0);
+  CHECK_FALSE(fs::exists(box.path("out")));
 }
 
 }  // namespace
