@@ -20,6 +20,7 @@
 #include "sweetspot/evaluate.hpp"
 #include "io/atomic_file.hpp"
 #include "io/format.hpp"
+#include "io/input_error.hpp"
 #include "io/plot.hpp"
 #include "reports/optimization_report.hpp"
 #include "studies/design_binding.hpp"
@@ -143,6 +144,12 @@ std::string machine_description() {
 }
 
 void bench_speed(const BenchOptions& options, std::ostream& log) {
+  // The inputs first: a wrong folder fails at once, not after the timings.
+  const fs::path studies = fs::path(options.designs_dir) / "studies";
+  if (!fs::is_directory(studies)) {
+    throw InputError(studies.string(), "", "not a folder of studies (bench speed times every study in "
+                                           "DESIGNS/studies; give the designs folder with --designs)");
+  }
   // Rigid evaluations through the library, one core, no allocation: distinct
   // designs (mass, balance, hand, impact all vary) as RigidCases, 4096 at a
   // time (360 kB of cases and 230 kB of outcomes: the working set of a chunk).

@@ -1133,7 +1133,9 @@ Mode damped_mode(const Mesh& mesh, const Assembled& a, Complex s, VectorXcd q) {
   re /= std::sqrt(re.dot(a.M * re));
   auto [mode, scale] = fe_mode(mesh, re, std::abs(s));
   mode.frequency_Hz = s.imag() / (2.0 * kPi);
-  mode.damping_ratio = -s.real() / std::abs(s);
+  // The grip's damping is positive semi-definite, so no mode gains energy:
+  // a ratio below 0 is round-off about an undamped mode (a grip with c = 0).
+  mode.damping_ratio = std::max(0.0, -s.real() / std::abs(s));
   mode.complexity = std::sqrt(im2 / re2);
   mode.hand_displacement = scale * re(a.beam_dofs);
   const int u = a.beam_dofs;

@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "cli/checks.hpp"
 #include "cli/commands.hpp"
 
 namespace sweetspot::cli {
@@ -19,7 +20,7 @@ void BenchCommand::add_to(CLI::App& app) {
   command->add_option("--out", options.out_dir, "Folder to write")->capture_default_str();
   command->add_option("--peers", options.peers_dir, "Folder of the NumPy/SciPy peer scripts")->capture_default_str();
   command->add_option("--repeats", options.repeats, "Runs per figure (the median is reported)")
-      ->check(CLI::Range(1, 1000))
+      ->check(whole_in(1, 1000))
       ->capture_default_str();
 }
 

@@ -1,9 +1,13 @@
 // `sweetspot evaluate DESIGN.json` and `sweetspot evaluate --batch FILE`.
 
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <string>
 
+#include "cli/checks.hpp"
 #include "cli/commands.hpp"
 #include "io/design_reader.hpp"
 #include "io/input_error.hpp"
@@ -17,7 +21,7 @@ namespace {
 // evaluate --batch: exit 0 when every row evaluated, 1 when some failed.
 int run_batch(const EvaluateCommand& c) {
   io::BatchOptions options;
-  options.csv_input = io::is_csv_catalogue(c.batch_path);
+  options.input = io::catalogue_format(c.batch_path);
   if (!c.batch_base.empty()) {
     options.base = io::read_json_file(c.batch_base);
     // A base that is not a valid design on its own is the caller's error, not every row's.
@@ -29,10 +33,26 @@ int run_batch(const EvaluateCommand& c) {
   options.threads = c.threads;
   options.fidelity = c.command->count("--fidelity") ? c.fidelity : std::string();
   options.modal_tolerance = c.tolerance;
-  std::ifstream in(c.batch_path, std::ios::binary);
-  if (!in) throw io::InputError(c.batch_path, "", "cannot open the file for reading");
   io::BatchSummary summary;
-  c.out.emit_stream([&](std::ostream& out) { summary = io::run_batch(in, c.batch_path, options, out); });
+  if (c.batch_path == "-") {
+    // Through a file buffer, which reports a read error as one (std::cin's
+    // buffer, shared with C stdio, would report the end of the input).
+    std::ifstream in("/dev/stdin", std::ios::binary);
+    std::istream& input = in ? in : std::cin;
+    c.out.emit_stream([&](std::ostream& out) { summary = io::run_batch(input, "(standard input)", options, out); });
+  } else {
+    std::error_code error;
+    if (std::filesystem::is_directory(c.batch_path, error)) {
+      throw io::InputError(c.batch_path, "", "is a directory, expected a catalogue file (CSV or JSON Lines)");
+    }
+    errno = 0;
+    std::ifstream in(c.batch_path, std::ios::binary);
+    if (!in) {
+      throw io::InputError(c.batch_path, "", std::string("cannot open the file for reading") +
+                                                 (errno ? std::string(": ") + std::strerror(errno) : ""));
+    }
+    c.out.emit_stream([&](std::ostream& out) { summary = io::run_batch(in, c.batch_path, options, out); });
+  }
   if (summary.failed > 0) {
     std::cerr << "sweetspot: " << summary.failed << " of " << summary.rows
               << " rows failed (see their error column)\n";
@@ -48,12 +68,14 @@ void EvaluateCommand::add_to(CLI::App& app) {
   threads = io::all_cores();
   command->add_option("design", design_path, "Design file (JSON)");
   command->add_option("--batch", batch_path,
-                      "Evaluate a catalogue instead: JSON Lines (.jsonl, one design per line) or CSV "
-                      "whose header names design fields (implement.mass_g,impact.from_butt_m,...); "
-                      "output CSV (or JSON Lines with --format json), one row per input in order");
+                      "Evaluate a catalogue instead (- for standard input): JSON Lines (.jsonl, one design "
+                      "per line) or CSV (.csv) whose header names design fields "
+                      "(implement.mass_g,impact.from_butt_m,...); another name is JSON Lines if its first "
+                      "line starts with '{', else CSV. Output CSV (or JSON Lines with --format json), one "
+                      "row per input in order");
   command->add_option("--base", batch_base, "With --batch: a design file giving every row's defaults");
   command->add_option("--threads", threads, "With --batch: threads to use (default: all cores)")
-      ->check(CLI::Range(1, 1024));
+      ->check(whole_in(1, 1024));
   command
       ->add_option("--fidelity", fidelity,
                    "rigid: the paper's rigid body; modal: also the vibration modes (needs the "
@@ -62,7 +84,7 @@ void EvaluateCommand::add_to(CLI::App& app) {
       ->check(CLI::IsMember({"rigid", "modal", "response", "auto"}))
       ->capture_default_str();
   command->add_option("--tol", tolerance, "Relative error allowed in the hand-held frequency")
-      ->check(CLI::Range(1e-8, 0.1))
+      ->check(finite_in(1e-8, 0.1))
       ->capture_default_str();
   out.add_to(command);
 }

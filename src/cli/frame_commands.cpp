@@ -2,22 +2,39 @@
 
 #include <algorithm>
 #include <iostream>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 
+#include "cli/checks.hpp"
 #include "cli/commands.hpp"
 #include "io/design_reader.hpp"
 #include "reports/modes_report.hpp"
 #include "reports/response_report.hpp"
 
 namespace sweetspot::cli {
+namespace {
+
+// The numbers of every occurrence of a list option ("--at 0.1,0.2 --at 0.3").
+std::vector<double> points(const std::string& option, const std::vector<std::string>& lists) {
+  std::vector<double> all;
+  for (const std::string& list : lists) {
+    const std::vector<double> some = number_list(option, list);
+    all.insert(all.end(), some.begin(), some.end());
+  }
+  return all;
+}
+
+}  // namespace
 
 void ModesCommand::add_to(CLI::App& app) {
   command = app.add_subcommand("modes", "Vibration modes free and hand-held: frequencies, damping, nodes, shapes (csv)");
   command->add_option("design", design_path, "Design file (JSON) with the frame's stiffness")->required();
-  command->add_option("--modes,-n", modes, "How many flexible modes")->check(CLI::Range(1, 6))->capture_default_str();
+  command->add_option("--modes,-n", modes, "How many flexible modes")->check(whole_in(1, 6))->capture_default_str();
   command->add_option("--tol", tolerance, "Relative error allowed in the finite-element frequencies")
-      ->check(CLI::Range(1e-8, 0.1))
+      ->check(finite_in(1e-8, 0.1))
       ->capture_default_str();
   command->add_option("--method", method, "Free modes: exact (transfer matrices) or fe")
       ->check(CLI::IsMember({"exact", "fe"}))
@@ -39,20 +56,24 @@ void ResponseCommand::add_to(CLI::App& app) {
   command = app.add_subcommand(
       "response", "Velocity of points of the implement after the impact: rigid (dc) and vibration (ac) parts");
   command->add_option("design", design_path, "Design file (JSON) with the frame's stiffness")->required();
-  // CLI11 reads "" as 0: an empty point is refused, not observed at the butt.
-  const CLI::Validator a_number(
-      [](const std::string& value) { return value.empty() ? std::string("an empty point (expected metres)") : ""; },
-      "POINTS");
-  command->add_option("--at", at, "Observation points, m from the butt")
-      ->delimiter(',')
-      ->check(a_number)
-      ->capture_default_str();
-  command->add_option("--impacts", impacts, "Impact points, m from the butt (default: the design's)")
-      ->delimiter(',')
-      ->check(a_number);
+  // Lists are split here rather than by CLI11, which would drop an empty
+  // item ("0.1,,0.2") or read "" as 0, the butt: both are refused.
+  command
+      ->add_option_function<std::vector<std::string>>(
+          "--at", [this](const std::vector<std::string>& lists) { at = points("--at", lists); },
+          "Observation points, m from the butt (comma-separated)")
+      ->expected(1)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
+      ->default_str("0.02,0.16");
+  command
+      ->add_option_function<std::vector<std::string>>(
+          "--impacts", [this](const std::vector<std::string>& lists) { impacts = points("--impacts", lists); },
+          "Impact points, m from the butt, comma-separated (default: the design's)")
+      ->expected(1)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   command->add_flag("--held", held, "Held in the hand (default: free, as the paper's suspended beam)");
   command->add_option("--until-ms", until_ms, "Time window after the impact starts")
-      ->check(CLI::Range(0.01, 1000.0))
+      ->check(finite_in(0.01, 1000.0))
       ->capture_default_str();
   command->add_option("--output,-o", csv_path, "Write the CSV to FILE instead of stdout");
   command->add_option("--plot", plot, "Also plot: FILE-at-<cm>cm.png per observation point");
@@ -60,6 +81,16 @@ void ResponseCommand::add_to(CLI::App& app) {
 
 int ResponseCommand::run() const {
   const io::DesignFile design = io::load_design(design_path);
+  // Points are the command line's, checked and named as such.
+  const double length_m = design.design.implement.length_m();
+  for (const auto& [option, list] : {std::pair{"--at", &at}, std::pair{"--impacts", &impacts}}) {
+    for (const double x : *list) {
+      if (!(x >= 0.0 && x <= length_m)) {
+        throw CLI::ValidationError(fmt::format("{} {}", option, x),
+                                   fmt::format("outside the implement (length {} m)", length_m));
+      }
+    }
+  }
   io::ResponseRequest request;
   request.points_from_butt_m = at;
   request.impacts_from_butt_m = impacts;

@@ -49,7 +49,21 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::cerr << "sweetspot: " << e.what() << " (see --help)\n";
+    if (app.get_subcommands().empty() && (argc == 1 || argv[1][0] != '-')) {
+      // No command was recognised: name the word taken for one, and list the commands.
+      std::string commands;
+      for (const CLI::App* command : app.get_subcommands([](const CLI::App*) { return true; })) {
+        commands += (commands.empty() ? "" : ", ") + command->get_name();
+      }
+      if (argc > 1) {
+        std::cerr << "sweetspot: unknown command '" << sweetspot::io::one_line(argv[1]) << "' (commands: " << commands
+                  << "; see --help)\n";
+      } else {
+        std::cerr << "sweetspot: a command is required (" << commands << "; see --help)\n";
+      }
+      return kExitBadInput;
+    }
+    std::cerr << "sweetspot: " << sweetspot::io::one_line(e.what()) << " (see --help)\n";
     return kExitBadInput;
   }
 
@@ -65,7 +79,7 @@ int main(int argc, char** argv) {
     else if (*response.command) status = response.run();
     else if (*bench.command) status = bench.run();
   } catch (const CLI::ParseError& e) {
-    std::cerr << "sweetspot: " << e.what() << "\n";
+    std::cerr << "sweetspot: " << sweetspot::io::one_line(e.what()) << "\n";
     return kExitBadInput;
   } catch (const sweetspot::io::InputError& e) {
     std::cerr << "sweetspot: " << e.what() << "\n";

@@ -1,6 +1,8 @@
 #include "io/design_reader.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <optional>
 #include <stdexcept>
 #include <utility>
@@ -12,29 +14,59 @@
 namespace sweetspot::io {
 namespace {
 
+// The parts of a design file; the physics core names an input by its
+// canonical SI path below one of them ("hand/grip_length_m").
+constexpr std::string_view kDesignParts[] = {"implement", "frame", "strings", "hand",
+                                             "forearm",   "ball",  "impact"};
+
+bool is_design_path(std::string_view name) {
+  const std::string_view part = name.substr(0, name.find('/'));
+  if (std::find(std::begin(kDesignParts), std::end(kDesignParts), part) == std::end(kDesignParts)) return false;
+  return name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_/") ==
+         std::string_view::npos;
+}
+
 // The physics core names a bad argument by its canonical SI path relative to
-// the document ("hand/mass_kg: must be ..."); point the error at the key the
-// user actually wrote.
+// the document ("hand/mass_kg: must be ..."), or relative to the implement
+// for its lists ("sections/0/length_m", "point_masses/1/mass_kg"); point the
+// error at the key the user actually wrote and quote the value written there.
 [[noreturn]] void rethrow_at(const std::invalid_argument& error, const std::string& prefix,
                              const KeyMap& keys, const std::string& source,
                              const std::string& fallback_pointer) {
   const std::string message = error.what();
   const auto colon = message.find(": ");
   if (colon != std::string::npos) {
-    const std::string name = prefix + message.substr(0, colon);
+    const std::string core_name = message.substr(0, colon);
+    std::string detail = message.substr(colon + 2);
+    std::string name = prefix + core_name;
+    if (prefix.empty() && (core_name.starts_with("sections") || core_name.starts_with("point_masses"))) {
+      name = "implement/" + core_name;
+    }
     const auto it = keys.find(name);
     if (it != keys.end()) {
-      std::string detail = message.substr(colon + 2);
-      // The core speaks SI; say so when the file used another unit.
+      // The core speaks SI; when the file used another unit or form, quote
+      // the file's own value, which the core's SI value may not show (5e-324
+      // cm is 0 m).
       const std::string si_key = name.substr(name.rfind('/') + 1);
-      const std::string user_key = it->second.substr(it->second.rfind('/') + 1);
-      if (si_key != user_key) detail += " (" + user_key + " converted to SI)";
-      throw InputError(source, it->second, detail);
+      const std::string& pointer = it->second.pointer;
+      const std::string user_key = pointer.substr(pointer.rfind('/') + 1);
+      if (si_key != user_key) detail += " (the file's " + user_key + ": " + it->second.given + ", converted to SI)";
+      throw InputError(source, pointer, detail);
+    }
+    if (name.starts_with("implement/sections") && name.ends_with("/EI_N_m2")) {
+      // A section without its own stiffness takes the frame's.
+      for (const char* frame_key : {"frame/EI_N_m2", "frame/fundamental_free_Hz"}) {
+        const auto frame = keys.find(frame_key);
+        if (frame != keys.end()) throw InputError(source, frame->second.pointer, core_name + ": " + detail);
+      }
+    }
+    if (name.starts_with("implement/")) {
+      // Not a key of the file: sections the reader made (fitted to the specs,
+      // or the racquet's two halves). The implement is what the file gave.
+      throw InputError(source, "/implement", core_name + ": " + detail);
     }
     // A value the file left to its default is still named by its pointer.
-    if (name.find(' ') == std::string::npos) {
-      throw InputError(source, "/" + name, message.substr(colon + 2));
-    }
+    if (is_design_path(name)) throw InputError(source, "/" + name, detail);
   }
   throw InputError(source, fallback_pointer, message);
 }
@@ -114,8 +146,12 @@ ImplementRead read_implement(const Json& document, const std::string& source, Ke
       const double ratio = *r.number("head_to_handle_mass_ratio");
       r.finish({"length_m", "mass_kg", "head_to_handle_mass_ratio", "point_masses"});
       if (described) {
-        *described = ImplementDescription{ImplementDescription::Form::kHeadToHandleRatio, *length, *mass, ratio};
-        described->point_masses = points;
+        *described = ImplementDescription{.form = ImplementDescription::Form::kHeadToHandleRatio,
+                                          .length_m = *length,
+                                          .mass_kg = *mass,
+                                          .head_to_handle_mass_ratio = ratio,
+                                          .sections = {},
+                                          .point_masses = points};
       }
       return {Implement::paper_racquet(*length, *mass, ratio, std::move(points)),
               "head_to_handle_mass_ratio"};
@@ -142,9 +178,14 @@ ImplementRead read_implement(const Json& document, const std::string& source, Ke
     r.finish({"length_m", "mass_kg", "balance_from_butt_m", "balance_cm", "balance_pts_hl",
               "swingweight_kg_cm2", "point_masses"});
     if (described) {
-      *described = ImplementDescription{ImplementDescription::Form::kSpecs, *length, *mass, 0.0,
-                                        balance_key == "balance_pts_hl", balance_as_given, *swingweight};
-      described->point_masses = points;
+      *described = ImplementDescription{.form = ImplementDescription::Form::kSpecs,
+                                        .length_m = *length,
+                                        .mass_kg = *mass,
+                                        .balance_in_points = balance_key == "balance_pts_hl",
+                                        .balance = balance_as_given,
+                                        .swingweight_kg_m2 = *swingweight,
+                                        .sections = {},
+                                        .point_masses = points};
     }
     return {Implement::from_specs(IndustrySpecs{*length, *mass, balance, *swingweight},
                                   std::move(points)),
@@ -199,7 +240,8 @@ DesignFile read_design_impl(const Json& document, const std::string& source, boo
     if (provenance) (*provenance)[input] = how;
   };
   ObjectReader top(document, "", "", source, keys);
-  const std::string name = top.string("name").value_or(source);
+  // The file name stands in for a missing name; it need not be UTF-8, a name must.
+  const std::string name = top.string("name").value_or(valid_utf8(source));
   top.string("description");
   top.string("$schema");
   const std::string fidelity = top.string("fidelity").value_or("auto");

@@ -6,16 +6,42 @@ namespace sweetspot::io {
 namespace {
 std::string compose(const std::string& source, const std::string& pointer,
                     const std::string& detail) {
-  std::string text = source;
-  if (!pointer.empty()) text += ": " + pointer;
-  return text + ": " + detail;
+  std::string text = one_line(source);
+  if (!pointer.empty()) text += ": " + one_line(pointer);
+  return text + ": " + one_line(detail);
 }
 }  // namespace
+
+std::string one_line(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte >= 0x20 && byte != 0x7f) {
+      out += c;
+    } else if (c == '\n') {
+      out += "\\n";
+    } else if (c == '\r') {
+      out += "\\r";
+    } else if (c == '\t') {
+      out += "\\t";
+    } else {
+      constexpr char kHex[] = "0123456789abcdef";
+      out += "\\x";
+      out += kHex[byte >> 4];
+      out += kHex[byte & 0xf];
+    }
+  }
+  return out;
+}
 
 InputError::InputError(std::string source, std::string pointer, std::string detail)
     : std::runtime_error(compose(source, pointer, detail)),
       source_(std::move(source)),
       pointer_(std::move(pointer)),
       detail_(std::move(detail)) {}
+
+ReadError::ReadError(const std::string& source, const std::string& detail)
+    : std::runtime_error(compose(source, "", detail)) {}
 
 }  // namespace sweetspot::io

@@ -163,6 +163,58 @@ std::string brief(const Json& value) {
 
 namespace {
 
+// The length of the valid UTF-8 sequence starting at text[i], 0 if none.
+std::size_t utf8_sequence_length(std::string_view text, std::size_t i) {
+  const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
+  const unsigned char lead = byte(i);
+  if (lead < 0x80) return 1;
+  std::size_t length = 0;
+  unsigned char low = 0x80, high = 0xbf;  // the range of the second byte
+  if (lead >= 0xc2 && lead <= 0xdf) length = 2;
+  else if (lead == 0xe0) length = 3, low = 0xa0;
+  else if (lead == 0xed) length = 3, high = 0x9f;  // no UTF-16 surrogates
+  else if (lead >= 0xe1 && lead <= 0xef) length = 3;
+  else if (lead == 0xf0) length = 4, low = 0x90;
+  else if (lead == 0xf4) length = 4, high = 0x8f;  // nothing beyond U+10FFFF
+  else if (lead >= 0xf1 && lead <= 0xf3) length = 4;
+  else return 0;
+  if (i + length > text.size()) return 0;
+  if (byte(i + 1) < low || byte(i + 1) > high) return 0;
+  for (std::size_t k = 2; k < length; ++k) {
+    if (byte(i + k) < 0x80 || byte(i + k) > 0xbf) return 0;
+  }
+  return length;
+}
+
+}  // namespace
+
+std::size_t invalid_utf8_at(std::string_view text) {
+  for (std::size_t i = 0; i < text.size();) {
+    const std::size_t length = utf8_sequence_length(text, i);
+    if (length == 0) return i;
+    i += length;
+  }
+  return std::string_view::npos;
+}
+
+std::string valid_utf8(std::string_view text) {
+  if (invalid_utf8_at(text) == std::string_view::npos) return std::string(text);
+  std::string out;
+  for (std::size_t i = 0; i < text.size();) {
+    const std::size_t length = utf8_sequence_length(text, i);
+    if (length == 0) {
+      out += "\xEF\xBF\xBD";  // U+FFFD REPLACEMENT CHARACTER
+      ++i;
+    } else {
+      out.append(text.substr(i, length));
+      i += length;
+    }
+  }
+  return out;
+}
+
+namespace {
+
 struct Unit {
   std::string_view suffix;
   double to_si;
@@ -227,18 +279,21 @@ std::vector<std::string> alternative_spellings(std::string_view key) {
       {"from_tip", "from_butt"},
       {"mass", "equivalent_mass"},  // the forearm: M_F or M_e
       {"EI", "fundamental_free"},   // the frame's stiffness
+      {"cor", "cor_rigid"},         // the frame's COR, or the one it is derived from
+      {"impact_duration", "tension"},  // the strings' duration, or the tension it is derived from
   };
+  constexpr Dimension kDimensions[] = {Dimension::kLength,  Dimension::kMass,    Dimension::kTime,
+                                       Dimension::kSpeed,   Dimension::kInertia, Dimension::kForce,
+                                       Dimension::kStiffness, Dimension::kDamping, Dimension::kFrequency};
   std::vector<std::string> out;
   const auto add_all_units = [&](std::string_view base) {
-    for (const Dimension d : {Dimension::kLength, Dimension::kMass, Dimension::kTime, Dimension::kSpeed,
-                              Dimension::kInertia, Dimension::kStiffness, Dimension::kFrequency}) {
+    for (const Dimension d : kDimensions) {
       for (const std::string& k : spellings(base, d)) {
         if (k != key && std::find(out.begin(), out.end(), k) == out.end()) out.push_back(k);
       }
     }
   };
-  for (const Dimension d : {Dimension::kLength, Dimension::kMass, Dimension::kTime, Dimension::kSpeed,
-                            Dimension::kInertia, Dimension::kStiffness, Dimension::kFrequency}) {
+  for (const Dimension d : kDimensions) {
     for (const Unit& unit : units(d)) {
       if (key.size() <= unit.suffix.size() || !key.ends_with(unit.suffix)) continue;
       const std::string base(key.substr(0, key.size() - unit.suffix.size()));
@@ -336,7 +391,8 @@ void ObjectReader::record(std::string_view canonical_key, std::string_view key) 
   name.reserve(canonical_.size() + 1 + canonical_key.size());
   if (!canonical_.empty()) name.append(canonical_).append("/");
   name.append(canonical_key);
-  keys_->insert_or_assign(std::move(name), pointer_of(key));
+  const auto it = object_.find(key);
+  keys_->insert_or_assign(std::move(name), KeyOrigin{pointer_of(key), it == object_.end() ? "" : brief(*it)});
 }
 
 void ObjectReader::mark_read(const std::string& own_key) {

@@ -32,6 +32,14 @@ Json read_json_file(const std::string& path);
 // Text for a JSON value in an error message, shortened to ~60 characters.
 std::string brief(const Json& value);
 
+// The offset of the first byte of `text` that does not start a valid UTF-8
+// sequence; std::string_view::npos when all of it is UTF-8.
+std::size_t invalid_utf8_at(std::string_view text);
+
+// `text` with each byte that is not part of a valid UTF-8 sequence replaced
+// by U+FFFD: fit for a JSON string (a file name used as a design's name).
+std::string valid_utf8(std::string_view text);
+
 // A physical dimension and the unit suffixes accepted for it, each with its
 // factor to SI ("_cm" length -> 0.01 m).
 enum class Dimension { kLength, kMass, kTime, kSpeed, kInertia, kForce, kStiffness, kDamping, kFrequency };
@@ -72,9 +80,14 @@ class FieldOverride {
 void override_fields(Json& document, const Json& patch);
 
 // Where each value was found: canonical SI name ("hand/mass_kg") -> the JSON
-// pointer the user wrote ("/hand/mass_g"), so errors found later by the
-// physics core point at the user's own key.
-using KeyMap = std::map<std::string, std::string>;
+// pointer the user wrote ("/hand/mass_g") and the value as written there
+// ("300"), so errors found later by the physics core point at the user's own
+// key and quote the user's own value.
+struct KeyOrigin {
+  std::string pointer;
+  std::string given;  // brief() of the value in the file
+};
+using KeyMap = std::map<std::string, KeyOrigin>;
 
 class ObjectReader {
  public:

@@ -1,7 +1,11 @@
 #include "studies/batch.hpp"
 
-#include <array>
+#include <algorithm>
+#include <cerrno>
 #include <charconv>
+#include <cmath>
+#include <cstring>
+#include <array>
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -21,30 +25,270 @@
 namespace sweetspot::io {
 namespace {
 
-// Splits one CSV record (RFC 4180 quoting within the line).
-std::vector<std::string> split_csv(const std::string& line) {
-  std::vector<std::string> fields(1);
-  bool quoted = false;
-  for (std::size_t i = 0; i < line.size(); ++i) {
-    const char c = line[i];
-    if (quoted) {
-      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
-        fields.back() += '"';
-        ++i;
-      } else if (c == '"') {
-        quoted = false;
-      } else {
-        fields.back() += c;
+constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
+constexpr std::string_view kBlank = " \t";
+
+std::string_view trimmed(std::string_view text) {
+  const auto first = text.find_first_not_of(kBlank);
+  if (first == std::string_view::npos) return {};
+  return text.substr(first, text.find_last_not_of(kBlank) - first + 1);
+}
+
+// A cell or column name quoted for a message, shortened like brief().
+std::string shown(std::string_view text) { return brief(Json(valid_utf8(text))); }
+
+// The lines of a catalogue, each read into a buffer that never grows past
+// kMaxBatchLineBytes: a longer line, a NUL byte, bytes that are not UTF-8
+// and a failed read are refused with the line they are on. A byte-order mark
+// opening the input is skipped.
+class LineReader {
+ public:
+  LineReader(std::istream& in, const std::string& source) : in_(in), source_(source), buffer_(1 << 16) {}
+
+  std::size_t line_number() const { return line_; }
+
+  // The next line without its "\n" (or "\r\n"), appended to `text` after a
+  // "\n" when `continued` (a CSV record going on inside quotes); false at the
+  // end of the input.
+  bool next(std::string& text, bool continued = false) {
+    if (!continued) text.clear();
+    const std::size_t start = text.size() + (continued ? 1 : 0);
+    if (continued) text += '\n';
+    bool any = false;
+    for (;;) {
+      if (begin_ == end_ && !fill()) break;
+      any = true;
+      const char* from = buffer_.data() + begin_;
+      const auto* newline = static_cast<const char*>(std::memchr(from, '\n', end_ - begin_));
+      const std::size_t take = newline ? static_cast<std::size_t>(newline - from) : end_ - begin_;
+      if (text.size() + take > kMaxBatchLineBytes) {
+        refuse(line_ + 1, continued ? fmt::format("a CSV record longer than {} bytes, the limit (is a quoted "
+                                                  "field left open?)", kMaxBatchLineBytes)
+                                    : fmt::format("a line longer than {} bytes, the limit", kMaxBatchLineBytes));
       }
-    } else if (c == '"') {
-      quoted = true;
-    } else if (c == ',') {
-      fields.emplace_back();
-    } else if (c != '\r') {
-      fields.back() += c;
+      if (std::memchr(from, '\0', take)) refuse(line_ + 1, "a NUL byte: the file is binary, expected text");
+      text.append(from, take);
+      begin_ += take;
+      if (newline) {
+        ++begin_;
+        break;
+      }
+    }
+    if (!any) {
+      if (continued) text.pop_back();
+      return false;
+    }
+    ++line_;
+    if (text.size() > start && text.back() == '\r') text.pop_back();
+    if (line_ == 1 && std::string_view(text).starts_with(kByteOrderMark)) text.erase(0, kByteOrderMark.size());
+    const std::size_t bad = invalid_utf8_at(std::string_view(text).substr(start));
+    if (bad != std::string_view::npos) {
+      refuse(line_, fmt::format("byte {} is not UTF-8 text (expected a UTF-8 CSV or JSON Lines file)", bad + 1));
+    }
+    return true;
+  }
+
+  [[noreturn]] void refuse(std::size_t line, const std::string& detail) const {
+    throw InputError(fmt::format("{}:{}", source_, line), "", detail);
+  }
+
+ private:
+  bool fill() {
+    if (end_of_input_) return false;
+    errno = 0;
+    in_.read(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
+    const int error = errno;
+    if (in_.bad()) {
+      throw ReadError(source_, fmt::format("cannot read line {}{}{}", line_ + 1, error ? ": " : "",
+                                           error ? std::strerror(error) : ""));
+    }
+    begin_ = 0;
+    end_ = static_cast<std::size_t>(in_.gcount());
+    if (end_ == 0) end_of_input_ = true;
+    return end_ > 0;
+  }
+
+  std::istream& in_;
+  const std::string& source_;
+  std::vector<char> buffer_;
+  std::size_t begin_ = 0;
+  std::size_t end_ = 0;
+  std::size_t line_ = 0;
+  bool end_of_input_ = false;
+};
+
+// Where a CSV record stands after some of its text: whether a line break
+// there is inside a quoted field (a quote opens one only at a field's start).
+class CsvScan {
+ public:
+  bool inside_quotes() const { return state_ == State::kQuoted; }
+  void read(std::string_view text) {
+    for (const char c : text) {
+      switch (state_) {
+        case State::kFieldStart:
+          state_ = c == '"' ? State::kQuoted : c == ',' ? State::kFieldStart : State::kUnquoted;
+          break;
+        case State::kUnquoted:
+          if (c == ',') state_ = State::kFieldStart;
+          break;
+        case State::kQuoted:
+          if (c == '"') state_ = State::kQuote;
+          break;
+        case State::kQuote:
+          state_ = c == '"' ? State::kQuoted : c == ',' ? State::kFieldStart : State::kUnquoted;
+          break;
+      }
     }
   }
-  return fields;
+
+ private:
+  enum class State { kFieldStart, kUnquoted, kQuoted, kQuote };  // kQuote: a quote inside a quoted field
+  State state_ = State::kFieldStart;
+};
+
+// Reads the lines that continue `record` while a quoted field is open.
+void complete_record(LineReader& reader, std::string& record) {
+  CsvScan scan;
+  scan.read(record);
+  while (scan.inside_quotes()) {
+    const std::size_t from = record.size();
+    if (!reader.next(record, true)) return;
+    scan.read(std::string_view(record).substr(from));
+  }
+}
+
+struct CsvRecord {
+  std::vector<std::string> fields;  // the first `max_fields` fields
+  std::size_t count = 0;            // how many fields the record has
+  std::string error;                // why it is not RFC 4180 CSV, "" when it is
+};
+
+// Splits one CSV record (RFC 4180): fields separated by commas; a field in
+// double quotes may hold commas, line breaks and quotes written twice. A
+// quote inside an unquoted field, or text after a closing quote, is an error.
+CsvRecord split_csv(std::string_view record, std::size_t max_fields) {
+  CsvRecord out;
+  std::string field;
+  std::size_t i = 0;
+  const auto keep = [&] {
+    if (out.count++ < max_fields) out.fields.push_back(std::move(field));
+    field.clear();
+  };
+  for (;;) {
+    const std::size_t number = out.count + 1;
+    if (i < record.size() && record[i] == '"') {
+      for (++i;; ++i) {
+        if (i == record.size()) {
+          out.error = fmt::format("field {}: a quoted field is not closed", number);
+          return out;
+        }
+        if (record[i] != '"') {
+          field += record[i];
+        } else if (i + 1 < record.size() && record[i + 1] == '"') {
+          field += '"';
+          ++i;
+        } else {
+          ++i;
+          break;
+        }
+      }
+      if (i < record.size() && record[i] != ',') {
+        out.error = fmt::format("field {}: text after the closing quote (quote the whole field, "
+                                "writing a quote inside it twice)", number);
+        return out;
+      }
+    } else {
+      const std::size_t end = std::min(record.find(',', i), record.size());
+      const std::string_view text = record.substr(i, end - i);
+      if (text.find('"') != std::string_view::npos) {
+        out.error = fmt::format("field {}: a quote inside an unquoted field (quote the whole field, "
+                                "writing a quote inside it twice)", number);
+        return out;
+      }
+      field.assign(text);
+      i = end;
+    }
+    keep();
+    if (i == record.size()) return out;
+    ++i;  // the comma
+  }
+}
+
+// Columns that hold text, not numbers.
+bool is_text_field(std::string_view field) {
+  return field == "name" || field == "description" || field == "fidelity";
+}
+
+// Why `field` cannot name a design field, "" when it can: dot-separated
+// names of ASCII letters, digits and '_', an all-digit name an array index.
+std::string field_problem(std::string_view field) {
+  constexpr std::string_view kExample = " (expected a path of names such as implement.mass_g)";
+  if (field.empty()) return "an empty column name" + std::string(kExample);
+  std::size_t start = 0;
+  for (int depth = 0;; ++depth) {
+    const std::size_t dot = field.find('.', start);
+    const std::string_view name = field.substr(start, dot == std::string_view::npos ? dot : dot - start);
+    if (name.empty()) return "an empty name between dots" + std::string(kExample);
+    if (name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_") !=
+        std::string_view::npos) {
+      return "a character other than letters, digits, '_' and '.'" + std::string(kExample);
+    }
+    if (name.find_first_not_of("0123456789") == std::string_view::npos) {
+      if (depth == 0) return "a path starts with a part of the design, not an index" + std::string(kExample);
+      if (name.size() > 1 && name[0] == '0') return "an array index with a leading zero";
+      if (name.size() > 5) return "an array index above 99999";
+    }
+    if (dot == std::string_view::npos) return "";
+    start = dot + 1;
+  }
+}
+
+// The header, checked once: every column a design field, none given twice,
+// in two units or forms, or inside another.
+std::vector<std::string> read_header(std::string_view line, const std::string& where) {
+  CsvRecord record = split_csv(line, kMaxBatchColumns);
+  if (!record.error.empty()) throw InputError(where, "", "the header is not CSV: " + record.error);
+  if (record.count > kMaxBatchColumns) {
+    throw InputError(where, "", fmt::format("{} columns, more than the limit of {}", record.count, kMaxBatchColumns));
+  }
+  std::vector<std::string> header;
+  std::map<std::string, std::size_t> column_of;  // pointer -> column index
+  for (std::size_t k = 0; k < record.fields.size(); ++k) {
+    std::string field(trimmed(record.fields[k]));
+    const std::string column = fmt::format("column {} {}", k + 1, shown(field));
+    if (const std::string problem = field_problem(field); !problem.empty()) {
+      throw InputError(where, "", column + ": " + problem);
+    }
+    const std::string pointer = field_to_pointer(field);
+    const auto [same, inserted] = column_of.emplace(pointer, k);
+    if (!inserted) {
+      throw InputError(where, "", fmt::format("{}: repeats column {} (each field may be given once)", column,
+                                              same->second + 1));
+    }
+    header.push_back(std::move(field));
+  }
+  for (const auto& [pointer, k] : column_of) {
+    const std::string column = fmt::format("column {} {}", k + 1, shown(header[k]));
+    const std::size_t slash = pointer.rfind('/');
+    const std::string parent = pointer.substr(0, slash);
+    for (std::size_t at = parent.size(); at > 0; at = parent.rfind('/', at - 1)) {
+      const auto outer = column_of.find(parent.substr(0, at));
+      if (outer != column_of.end()) {
+        throw InputError(where, "", fmt::format("{}: lies inside column {} {} (give the field or what it holds)",
+                                                column, outer->second + 1, shown(header[outer->second])));
+      }
+      if (at == 0) break;
+    }
+    for (const std::string& other : alternative_spellings(pointer.substr(slash + 1))) {
+      const auto contradicted = column_of.find(parent + "/" + other);
+      if (contradicted != column_of.end() && contradicted->second < k) {
+        throw InputError(where, "", fmt::format("{}: contradicts column {} {}: give the quantity once, in one unit",
+                                                column, contradicted->second + 1,
+                                                shown(header[contradicted->second])));
+      }
+    }
+  }
+  return header;
 }
 
 struct Row {
@@ -53,6 +297,10 @@ struct Row {
   std::string name;
   std::optional<Evaluation> evaluation;
   std::string error;
+  // A column (from 1) the header names wrongly, found by this row: the
+  // design has no such field, or the base holds a value where it leads.
+  std::size_t bad_column = 0;
+  std::string bad_column_detail;
 };
 
 // A CSV row's design compiled once per thread for each set of filled cells
@@ -75,24 +323,20 @@ constexpr std::size_t kMaxCompiledColumns = 64;
 
 class Evaluator {
  public:
-  Evaluator(const std::string& source, const BatchOptions& options, std::vector<std::string> header)
-      : source_(source), options_(options), header_(std::move(header)),
+  Evaluator(const std::string& source, const BatchOptions& options, bool csv, std::vector<std::string> header)
+      : source_(source), options_(options), csv_(csv), header_(std::move(header)),
         shapes_(static_cast<std::size_t>(std::max(1, options.threads))) {
     for (const std::string& field : header_) {
       pointers_.push_back(field_to_pointer(field));
-      std::optional<FieldOverride> column;
-      try {
-        if (!Json::json_pointer(pointers_.back()).empty()) column.emplace(pointers_.back());
-      } catch (const Json::exception&) {
-      }
-      columns_.push_back(std::move(column));
+      columns_.emplace_back(pointers_.back());  // read_header checked the path
     }
   }
 
+  const std::vector<std::string>& header() const { return header_; }
+
   // Evaluates a row on thread `thread` (< options.threads).
   void evaluate_row(Row& row, std::size_t thread) const {
-    if (options_.compiled && options_.csv_input && header_.size() <= kMaxCompiledColumns &&
-        evaluate_compiled(row, thread)) {
+    if (options_.compiled && csv_ && header_.size() <= kMaxCompiledColumns && evaluate_compiled(row, thread)) {
       return;
     }
     evaluate_general(row);
@@ -102,8 +346,9 @@ class Evaluator {
   // The row set on its shape's compiled design; false (and the row as it
   // was) when the JSON path must read it.
   bool evaluate_compiled(Row& row, std::size_t thread) const {
-    const std::vector<std::string> cells = split_csv(row.text);
-    if (cells.size() != header_.size()) return false;
+    const CsvRecord record = split_csv(row.text, header_.size());
+    if (!record.error.empty() || record.count != header_.size()) return false;
+    const std::vector<std::string>& cells = record.fields;
     std::uint64_t mask = 0;
     std::size_t name_cell = cells.size();
     std::array<double, kMaxCompiledColumns> values{};
@@ -115,7 +360,7 @@ class Evaluator {
         name_cell = k;
         continue;
       }
-      if (!columns_[k]) return false;
+      if (is_text_field(header_[k])) return false;
       const char* end = cells[k].data() + cells[k].size();
       const auto [stop, error] = std::from_chars(cells[k].data(), end, values[count]);
       if (error != std::errc() || stop != end) return false;
@@ -156,7 +401,7 @@ class Evaluator {
           named = true;
           continue;
         }
-        columns_[k]->apply(document, values[pointers.size()]);
+        columns_[k].apply(document, values[pointers.size()]);
         pointers.push_back(pointers_[k]);
       }
       const std::string where = fmt::format("{}:{}", source_, line);
@@ -182,25 +427,35 @@ class Evaluator {
     const std::string where = fmt::format("{}:{}", source_, row.line);
     try {
       Json document = options_.base ? *options_.base : Json::object();
-      if (options_.csv_input) {
-        const std::vector<std::string> cells = split_csv(row.text);
-        if (cells.size() != header_.size()) {
+      if (csv_) {
+        const CsvRecord cells = split_csv(row.text, header_.size());
+        if (!cells.error.empty()) throw InputError(where, "", "not CSV: " + cells.error);
+        if (cells.count != header_.size()) {
           throw InputError(where, "", fmt::format("expected {} fields as in the header, got {}",
-                                                  header_.size(), cells.size()));
+                                                  header_.size(), cells.count));
         }
-        for (std::size_t k = 0; k < cells.size(); ++k) {
-          if (cells[k].empty()) continue;  // the base's value stands
-          if (header_[k] == "name") {
-            document["name"] = cells[k];
+        for (std::size_t k = 0; k < header_.size(); ++k) {
+          if (cells.fields[k].empty()) continue;  // the base's value stands
+          if (is_text_field(header_[k])) {
+            document[header_[k]] = cells.fields[k];
             continue;
           }
-          if (!columns_[k]) throw InputError(where, pointers_[k], "not a JSON pointer");
+          const std::string_view cell = trimmed(cells.fields[k]);
           double value = 0.0;
-          const auto [end, error] = std::from_chars(cells[k].data(), cells[k].data() + cells[k].size(), value);
-          if (error != std::errc() || end != cells[k].data() + cells[k].size()) {
-            throw InputError(where, pointers_[k], "expected a number, got \"" + cells[k] + "\"");
+          const auto [end, error] = std::from_chars(cell.data(), cell.data() + cell.size(), value);
+          if (error != std::errc() || end != cell.data() + cell.size() || cell.empty()) {
+            throw InputError(where, pointers_[k], "expected a number, got " + shown(cells.fields[k]));
           }
-          columns_[k]->apply(document, value);
+          if (!std::isfinite(value)) {
+            throw InputError(where, pointers_[k], "expected a finite number, got " + shown(cells.fields[k]));
+          }
+          try {
+            columns_[k].apply(document, value);
+          } catch (const Json::exception&) {
+            row.bad_column = k + 1;
+            row.bad_column_detail = "the base design holds a value on its path that is not an object";
+            throw InputError(where, pointers_[k], row.bad_column_detail);
+          }
         }
       } else {
         override_fields(document, parse_json(row.text, where));
@@ -216,16 +471,27 @@ class Evaluator {
       }
     } catch (const InputError& e) {
       row.error = e.what();
+      if (csv_ && !row.bad_column && e.detail().starts_with("unknown key")) {
+        // A field the design does not have is the header's fault, not the row's.
+        for (std::size_t k = 0; k < pointers_.size(); ++k) {
+          if (pointers_[k] == e.pointer() || pointers_[k].starts_with(e.pointer() + "/")) {
+            row.bad_column = k + 1;
+            row.bad_column_detail = e.detail();
+            break;
+          }
+        }
+      }
     } catch (const std::exception& e) {
-      row.error = where + ": " + e.what();
+      row.error = InputError(where, "", e.what()).what();
     }
   }
 
   const std::string& source_;
   const BatchOptions& options_;
+  bool csv_;
   std::vector<std::string> header_;
   std::vector<std::string> pointers_;
-  std::vector<std::optional<FieldOverride>> columns_;  // empty: not a JSON pointer
+  std::vector<FieldOverride> columns_;
   mutable std::vector<std::map<std::uint64_t, Shape>> shapes_;  // per thread
 };
 
@@ -268,25 +534,34 @@ std::string field_to_pointer(const std::string& field) {
 
 BatchSummary run_batch(std::istream& in, const std::string& source, const BatchOptions& options,
                        std::ostream& out) {
-  std::vector<std::string> header;
-  std::size_t line_number = 0;
+  LineReader reader(in, source);
   std::string line;
-  if (options.csv_input) {
-    if (!std::getline(in, line)) throw InputError(source, "", "the file is empty, expected a CSV header");
-    ++line_number;
-    header = split_csv(line);
-    for (const std::string& field : header) {
-      if (field.empty()) throw InputError(source + ":1", "", "an empty column name in the header");
+  // The first line that is not blank: the CSV header, or the first design.
+  bool have_line = false;
+  while (reader.next(line)) {
+    if (!trimmed(line).empty()) {
+      have_line = true;
+      break;
     }
+  }
+  bool csv = options.input == CatalogueFormat::kCsv;
+  if (options.input == CatalogueFormat::kAuto) csv = have_line && !trimmed(line).starts_with('{');
+  std::vector<std::string> header;
+  const std::string header_at = fmt::format("{}:{}", source, reader.line_number());
+  if (csv) {
+    if (!have_line) throw InputError(source, "", "the file is empty, expected a CSV header");
+    complete_record(reader, line);
+    header = read_header(line, header_at);
   }
   if (options.format == Format::kCsv) {
     out << "line,name";
     for (const OutputSpec& o : output_specs()) out << "," << o.name;
     out << ",error\n";
   }
-  const Evaluator evaluator(source, options, header);
+  const Evaluator evaluator(source, options, csv, header);
   BatchSummary summary;
   std::vector<Row> chunk;
+  std::size_t chunk_bytes = 0;
   chunk.reserve(kBatchChunkRows);
   std::vector<std::string> texts(std::max(1, options.threads));
   const auto flush = [&] {
@@ -299,25 +574,41 @@ BatchSummary run_batch(std::istream& in, const std::string& source, const BatchO
         write_row(chunk[i], options.format, texts[t]);
       }
     });
+    for (const Row& row : chunk) {
+      if (!row.bad_column) continue;
+      const std::size_t k = row.bad_column - 1;
+      throw InputError(header_at, "",
+                       fmt::format("column {} {}: {}", k + 1, shown(evaluator.header()[k]), row.bad_column_detail));
+    }
     for (const std::string& text : texts) out << text;
     for (const Row& row : chunk) {
       ++summary.rows;
       if (!row.error.empty()) ++summary.failed;
     }
     chunk.clear();
+    chunk_bytes = 0;
   };
-  while (std::getline(in, line)) {
-    ++line_number;
-    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-    chunk.push_back(Row{line_number, line, {}, std::nullopt, {}});
-    if (chunk.size() == kBatchChunkRows) flush();
+  // In JSON Lines the first line read is the first design.
+  bool pending = have_line && !csv;
+  for (;;) {
+    if (!pending && !reader.next(line)) break;
+    pending = false;
+    const std::size_t line_number = reader.line_number();
+    if (trimmed(line).empty()) continue;
+    if (csv) complete_record(reader, line);
+    chunk_bytes += line.size();
+    chunk.push_back(Row{line_number, line, {}, std::nullopt, {}, 0, {}});
+    if (chunk.size() == kBatchChunkRows || chunk_bytes >= kBatchChunkBytes) flush();
   }
   if (!chunk.empty()) flush();
   return summary;
 }
 
-bool is_csv_catalogue(const std::string& path) {
-  return path.size() >= 4 && path.compare(path.size() - 4, 4, ".csv") == 0;
+CatalogueFormat catalogue_format(const std::string& path) {
+  const auto ends_with = [&](std::string_view suffix) { return std::string_view(path).ends_with(suffix); };
+  if (ends_with(".csv")) return CatalogueFormat::kCsv;
+  if (ends_with(".jsonl") || ends_with(".ndjson") || ends_with(".json")) return CatalogueFormat::kJsonLines;
+  return CatalogueFormat::kAuto;
 }
 
 }  // namespace sweetspot::io

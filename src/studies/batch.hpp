@@ -5,7 +5,9 @@
 // whose header names design fields by path ("implement.length_in"). Output is
 // one row per input, in input order, streamed: memory stays bounded however
 // long the file. A bad row becomes an error row naming its line and field;
-// the others go on.
+// the others go on. A bad file (a header that names no field, or names one
+// twice or in two units; a line past the limits; bytes that are not UTF-8
+// text) is refused as a whole, once.
 
 #include <cstddef>
 #include <istream>
@@ -18,11 +20,24 @@
 
 namespace sweetspot::io {
 
-// Rows evaluated together (and split among the threads) before they are written.
+// Rows evaluated together (and split among the threads) before they are
+// written, and the most text they may hold together.
 inline constexpr std::size_t kBatchChunkRows = 4096;
+inline constexpr std::size_t kBatchChunkBytes = std::size_t{16} << 20;
+
+// Limits on a catalogue (README "Input limits"): a line (a CSV record, which
+// may span lines inside quotes) of at most 1 MiB, at most 1000 CSV columns.
+inline constexpr std::size_t kMaxBatchLineBytes = std::size_t{1} << 20;
+inline constexpr std::size_t kMaxBatchColumns = 1000;
+
+enum class CatalogueFormat {
+  kAuto,       // CSV unless the first line that is not blank starts with '{'
+  kCsv,
+  kJsonLines,
+};
 
 struct BatchOptions {
-  bool csv_input = false;         // else JSON Lines
+  CatalogueFormat input = CatalogueFormat::kAuto;
   std::optional<Json> base;       // defaults for every row ("--base DESIGN.json")
   Format format = Format::kCsv;   // kCsv or kJson (JSON Lines out)
   int threads = 1;                // >= 1
@@ -40,13 +55,16 @@ struct BatchSummary {
 };
 
 // Reads `in` (named `source` in messages) row by row and writes `out`.
-// Throws InputError only for a file it cannot read as a whole (a CSV header
-// naming no field); everything else is per row.
+// Throws InputError for a file it cannot take as a whole (a bad CSV header,
+// a line past the limits, binary or non-UTF-8 bytes), naming the line;
+// ReadError when the input cannot be read to its end. Everything else is per
+// row.
 BatchSummary run_batch(std::istream& in, const std::string& source, const BatchOptions& options,
                        std::ostream& out);
 
-// Whether a catalogue is CSV (its name ends in ".csv"); else JSON Lines.
-bool is_csv_catalogue(const std::string& path);
+// The format a catalogue's name gives: ".csv" CSV; ".jsonl", ".ndjson",
+// ".json" JSON Lines; anything else (standard input, "-") kAuto.
+CatalogueFormat catalogue_format(const std::string& path);
 
 // "implement.point_masses.0.mass_g" -> "/implement/point_masses/0/mass_g".
 std::string field_to_pointer(const std::string& field);

@@ -4,11 +4,13 @@
 #include <sys/wait.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
@@ -486,6 +488,190 @@ TEST_CASE("report with no designs folder and response with an empty point exit 2
   CHECK(response.status == 2);
   CHECK(response.err.find("--at: an empty point") != std::string::npos);
   CHECK(response.out.empty());
+}
+
+}  // namespace
+
+namespace {
+
+// The command line with standard input from `input` (a file), as a shell pipes it.
+Run run_with_input(const Sandbox& box, const std::string& arguments, const fs::path& input) {
+  const std::string command = std::string("\"") + SWEETSPOT_CLI + "\" " + arguments + " <\"" + input.string() +
+                              "\" >\"" + box.path("stdout").string() + "\" 2>\"" + box.path("stderr").string() + "\"";
+  const int raw = std::system(command.c_str());
+  return Run{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(box.path("stdout")), slurp(box.path("stderr"))};
+}
+
+bool one_line(const Run& run) { return std::count(run.err.begin(), run.err.end(), '\n') == 1; }
+
+constexpr const char* kBaseDesign = R"({"implement": {"length_m": 0.7, "mass_kg": 0.3, "head_to_handle_mass_ratio": 0.8}})";
+
+TEST_CASE("A bad catalogue header is refused once: exit 2, one line naming the file, line 1 and the column") {
+  const Sandbox box;
+  const fs::path base = box.file("base.json", kBaseDesign);
+  std::string rows;
+  for (int i = 0; i < 263; ++i) rows += "r" + std::to_string(i) + ",0.3,1\n";
+  for (const auto& [header, fragment] :
+       {std::pair{"name,implement.mass_kg,implement.mass_g", ":1: column 3 \"implement.mass_g\": contradicts column 2"},
+        std::pair{"name,implement.mass_kg,implement.mass_kg", ":1: column 3 \"implement.mass_kg\": repeats column 2"},
+        std::pair{"name,implement..mass_kg,hand.mass_kg", ":1: column 2 \"implement..mass_kg\": an empty name"},
+        std::pair{"name,implement.mass_kg,implement.colour", ":1: column 3 \"implement.colour\": unknown key"}}) {
+    INFO(header);
+    const fs::path catalogue = box.file("cat.csv", std::string(header) + "\n" + rows);
+    const Run run = box.run("evaluate --batch \"" + catalogue.string() + "\" --base \"" + base.string() + "\"");
+    CHECK(run.status == 2);
+    CHECK(one_line(run));
+    CHECK(run.err.find("sweetspot: " + catalogue.string() + fragment) != std::string::npos);
+  }
+}
+
+TEST_CASE("A catalogue with a byte-order mark reads its first column") {
+  const Sandbox box;
+  const fs::path base = box.file("base.json", kBaseDesign);
+  const fs::path catalogue = box.file("bom.csv", "\xEF\xBB\xBFname,implement.mass_kg\nA,0.25\nB,0.4\n");
+  const Run run = box.run("evaluate --batch \"" + catalogue.string() + "\" --base \"" + base.string() + "\"");
+  CHECK(run.status == 0);
+  CHECK(run.out.find("\n2,A,") != std::string::npos);
+}
+
+TEST_CASE("evaluate --batch on what is not a readable text file is an error, never an empty catalogue") {
+  const Sandbox box;
+  const Run directory = box.run("evaluate --batch \"" + box.path("").string() + "\"");
+  CHECK(directory.status == 2);
+  CHECK(directory.err.find("is a directory") != std::string::npos);
+  CHECK(one_line(directory));
+  // Reading this process's own memory from address 0 fails with EIO: a read error, exit 1.
+  const Run unreadable = box.run("evaluate --batch /proc/self/mem");
+  CHECK(unreadable.status == 1);
+  CHECK(unreadable.err.find("/proc/self/mem: cannot read line 1") != std::string::npos);
+  CHECK(one_line(unreadable));
+  for (const char* device : {"/dev/zero", "/dev/urandom"}) {
+    INFO(device);
+    const Run run = box.run(std::string("evaluate --batch ") + device);
+    CHECK(run.status == 2);
+    CHECK(run.err.find(std::string(device) + ":") != std::string::npos);
+    CHECK(one_line(run));
+  }
+  std::string wide = "name";
+  for (int k = 0; k < 600000; ++k) wide += ",hand.mass_kg";
+  const fs::path huge = box.file("wide.csv", wide + "\n");
+  const Run line = box.run("evaluate --batch \"" + huge.string() + "\"");
+  CHECK(line.status == 2);
+  CHECK(line.err.find("wide.csv:1: a line longer than 1048576 bytes") != std::string::npos);
+}
+
+TEST_CASE("evaluate --batch - reads standard input, CSV or JSON Lines by its first line") {
+  const Sandbox box;
+  const fs::path base = box.file("base.json", kBaseDesign);
+  const fs::path csv = box.file("in.txt", "name,implement.mass_kg\nA,0.25\n");
+  const Run a = run_with_input(box, "evaluate --batch - --base \"" + base.string() + "\"", csv);
+  CHECK(a.status == 0);
+  CHECK(a.out.find("\n2,A,") != std::string::npos);
+  const fs::path lines = box.file("in2.txt", R"({"name": "B", "implement": {"mass_kg": 0.4}})" "\n");
+  const Run b = run_with_input(box, "evaluate --batch - --base \"" + base.string() + "\"", lines);
+  CHECK(b.status == 0);
+  CHECK(b.out.find("\n1,B,") != std::string::npos);
+  const fs::path bad = box.file("in3.txt", "name,implement.mass_kg\nA,VS5\n");
+  const Run c = run_with_input(box, "evaluate --batch - --base \"" + base.string() + "\"", bad);
+  CHECK(c.status == 1);
+  CHECK(c.out.find("(standard input):2: /implement/mass_kg: expected a number, got \"\"VS5\"\"") != std::string::npos);
+}
+
+TEST_CASE("A command-line number is checked and named as the command line's") {
+  const Sandbox box;
+  const std::string beam = std::string("\"") + SWEETSPOT_SOURCE_DIR + "/designs/paper-beam.json\"";
+  for (const auto& [args, message] :
+       {std::pair{"evaluate " + beam + " --tol nan", "sweetspot: --tol: expected a number in [1e-08, 0.1], got nan"},
+        std::pair{"modes " + beam + " --tol inf", "sweetspot: --tol: expected a number in [1e-08, 0.1], got inf"},
+        std::pair{"response " + beam + " --until-ms nan", "sweetspot: --until-ms: expected a number in [0.01, 1000], got nan"},
+        std::pair{"evaluate " + beam + " --tol 1", "sweetspot: --tol: expected a number in [1e-08, 0.1], got 1"},
+        std::pair{std::string("evaluate --batch x.csv --threads 0"), "sweetspot: --threads: expected a whole number in [1, 1024], got 0"},
+        std::pair{"response " + beam + " --at 0.1,,0.2", "sweetspot: --at: an empty point (item 2 of \"0.1,,0.2\""},
+        std::pair{"response " + beam + " --impacts 0.3,abc", "sweetspot: --impacts: item 2 \"abc\" is not a number"},
+        std::pair{"response " + beam + " --at 0.1,nan", "sweetspot: --at: item 2 \"nan\" is not a finite number"}}) {
+    INFO(args);
+    const Run run = box.run(args);
+    CHECK(run.status == 2);
+    CHECK(run.err.rfind(message, 0) == 0);
+    CHECK(one_line(run));
+    CHECK(run.out.empty());
+  }
+  // Ranges print in their shortest form.
+  const Run help = box.run("evaluate --help");
+  CHECK(help.out.find("[1e-08, 0.1]") != std::string::npos);
+  CHECK(help.out.find("0.000000") == std::string::npos);
+}
+
+TEST_CASE("A point the command line puts off the implement is named as the command line's") {
+  const Sandbox box;
+  const fs::path tiny = box.file("tiny.json", R"({"implement": {"sections": [{"length_m": 0.001, "mass_kg": 0.001,
+      "EI_N_m2": 152}]}, "hand": {"mass_kg": 0, "center_from_butt_m": 0.0005}, "impact": {"from_butt_m": 0.0005}})");
+  const Run run = box.run("response \"" + tiny.string() + "\"");
+  CHECK(run.status == 2);
+  CHECK(run.err == "sweetspot: --at 0.02: outside the implement (length 0.001 m)\n");
+  const Run impacts = box.run("response \"" + tiny.string() + "\" --at 0.0005 --impacts 0.5");
+  CHECK(impacts.err == "sweetspot: --impacts 0.5: outside the implement (length 0.001 m)\n");
+}
+
+TEST_CASE("An unknown command is named, with the commands there are") {
+  const Sandbox box;
+  const Run run = box.run("frobnicate");
+  CHECK(run.status == 2);
+  CHECK(run.err.rfind("sweetspot: unknown command 'frobnicate' (commands: evaluate, ", 0) == 0);
+  CHECK(one_line(run));
+  const Run none = box.run("");
+  CHECK(none.status == 2);
+  CHECK(none.err.rfind("sweetspot: a command is required (evaluate, ", 0) == 0);
+}
+
+TEST_CASE("A file name is printed on one line, and stands in for a name as valid UTF-8") {
+  const Sandbox box;
+  const fs::path broken = box.file("two\nlines.json", "{\"implement\": 5}");
+  const Run run = box.run("evaluate \"" + broken.string() + "\"");
+  CHECK(run.status == 2);
+  CHECK(one_line(run));
+  CHECK(run.err.find("two\\nlines.json: /implement: expected a JSON object") != std::string::npos);
+  const fs::path latin1 = box.file("raquette-\xE9t\xE9.json", with_implement(""));
+  const Run json = box.run("evaluate \"" + latin1.string() + "\" --format json");
+  CHECK(json.status == 0);
+  REQUIRE_NOTHROW(nlohmann::json::parse(json.out));
+  CHECK(nlohmann::json::parse(json.out)["name"].get<std::string>().find("raquette-\xEF\xBF\xBDt\xEF\xBF\xBD.json") !=
+        std::string::npos);
+}
+
+TEST_CASE("bench speed checks its designs folder before timing anything") {
+  const Sandbox box;
+  const auto start = std::chrono::steady_clock::now();
+  const Run run = box.run("bench speed --designs \"" + box.path("nope").string() + "\" --out \"" +
+                          box.path("out").string() + "\"");
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  CHECK(run.status == 2);
+  CHECK(run.err.find("nope/studies: not a folder of studies") != std::string::npos);
+  CHECK(seconds < 2.0);
+  CHECK_FALSE(fs::exists(box.path("out")));
+}
+
+}  // namespace
+
+namespace {
+
+TEST_CASE("A grip with no stiffness and no damping holds a detached hand: undamped modes, never a negative ratio") {
+  const Sandbox box;
+  const fs::path loose = box.file("loose.json", R"({"implement": {"length_m": 0.7, "mass_kg": 0.25,
+      "head_to_handle_mass_ratio": 0.8}, "frame": {"EI_N_m2": 152},
+      "hand": {"grip_stiffness_N_m2": 0, "grip_damping_N_s_m2": 0}})");
+  const Run held = box.run("response \"" + loose.string() + "\" --held");
+  CHECK(held.status == 0);
+  CHECK(held.err.empty());
+  const Run modes = box.run("modes \"" + loose.string() + "\" --format json");
+  REQUIRE(modes.status == 0);
+  const nlohmann::json j = nlohmann::json::parse(modes.out);
+  REQUIRE(j.contains("hand_held"));
+  for (const auto& mode : j["hand_held"]) {
+    CHECK(mode["damping_ratio"].get<double>() >= 0.0);
+  }
+  // The beam alone: the held fundamental is the free one.
+  CHECK(j["hand_held"][0]["frequency_Hz"].get<double>() == Approx(j["free"][0]["frequency_Hz"].get<double>()).epsilon(1e-4));
 }
 
 }  // namespace

@@ -214,3 +214,49 @@ TEST_CASE("A lean read gives the same design and the same errors, without proven
 
 }  // namespace
 }  // namespace sweetspot::io
+
+namespace sweetspot::io {
+namespace {
+
+// The InputError reading (and, with `fidelity`, evaluating) `text` throws.
+InputError error_of(const std::string& text, const char* fidelity = nullptr) {
+  try {
+    const DesignFile d = read_design(parse_json(text, "d.json"), "d.json");
+    if (fidelity) evaluate_design_file(d, fidelity, 1e-6);
+  } catch (const InputError& e) {
+    return e;
+  }
+  return InputError("d.json", "", "(no error)");
+}
+
+TEST_CASE("A core error names the key the file used and quotes the value it gave") {
+  const InputError e = error_of(R"({"implement": {"sections": [{"length_cm": 5e-324, "mass_kg": 0.1},
+                                   {"length_m": 0.7, "mass_kg": 0.2}]}})");
+  CHECK(e.pointer() == "/implement/sections/0/length_cm");
+  CHECK_THAT(e.detail(), Catch::Contains("length_cm: 5e-324"));
+  // In SI the value is printed as the file gave it.
+  const InputError si = error_of(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25,
+      "head_to_handle_mass_ratio": 0.8}, "hand": {"mass_kg": -1e-300}})");
+  CHECK(si.pointer() == "/hand/mass_kg");
+  CHECK_THAT(si.detail(), Catch::EndsWith("got -1e-300 kg"));
+}
+
+TEST_CASE("A section error found while evaluating keeps the /implement prefix") {
+  // A micrometre stretch of another EI, which finite elements cannot resolve.
+  const InputError e = error_of(R"({"implement": {"sections": [
+      {"length_m": 0.3, "mass_kg": 0.1, "EI_N_m2": 150},
+      {"length_m": 1e-6, "mass_kg": 1e-6, "EI_N_m2": 1e6},
+      {"length_m": 0.4, "mass_kg": 0.15, "EI_N_m2": 150}]}})", "modal");
+  CHECK(e.pointer() == "/implement/sections/1/length_m");
+  CHECK_THAT(e.detail(), Catch::Contains("too short for finite elements"));
+}
+
+TEST_CASE("A file name that is not UTF-8 stands in for a missing name as valid UTF-8") {
+  const DesignFile d = read_design(parse_json(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25,
+      "head_to_handle_mass_ratio": 0.8}})", "bad\xFF.json"), "bad\xFF.json");
+  CHECK(d.name == "bad\xEF\xBF\xBD.json");
+  CHECK(d.source == "bad\xFF.json");
+}
+
+}  // namespace
+}  // namespace sweetspot::io

@@ -1,0 +1,271 @@
+// Catalogues (evaluate --batch): a bad header is the file's error, reported
+// once; a bad row is that row's error; the reader holds no more than its
+// limits whatever the input, and a read failure is never the end of the file.
+#include "studies/batch.hpp"
+
+#include <sstream>
+#include <stdexcept>
+#include <streambuf>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <catch2/catch.hpp>
+
+#include "io/input_error.hpp"
+
+namespace sweetspot::io {
+namespace {
+
+constexpr const char* kBase =
+    R"({"implement": {"length_m": 0.7, "mass_kg": 0.3, "head_to_handle_mass_ratio": 0.8}})";
+
+struct Outcome {
+  BatchSummary summary;
+  std::string out;
+};
+
+Outcome run(const std::string& text, CatalogueFormat input = CatalogueFormat::kAuto,
+            Format format = Format::kJson) {
+  BatchOptions options;
+  options.input = input;
+  options.base = parse_json(kBase, "base.json");
+  options.format = format;
+  std::istringstream in(text);
+  std::ostringstream out;
+  Outcome outcome;
+  outcome.summary = run_batch(in, "cat.csv", options, out);
+  outcome.out = out.str();
+  return outcome;
+}
+
+// The message of the InputError run() throws, or "(no error)".
+std::string refusal(const std::string& text, CatalogueFormat input = CatalogueFormat::kAuto) {
+  try {
+    run(text, input);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+// The JSON Lines written for each row.
+std::vector<Json> rows_of(const Outcome& outcome) {
+  std::vector<Json> rows;
+  std::istringstream lines(outcome.out);
+  for (std::string line; std::getline(lines, line);) rows.push_back(Json::parse(line));
+  return rows;
+}
+
+TEST_CASE(
+    "A header giving one quantity in two units or forms is refused once, naming line 1 and both "
+    "columns") {
+  CHECK_THAT(
+      refusal("name,implement.mass_kg,implement.mass_g\na,0.3,\nb,,300\n"),
+      Catch::StartsWith(
+          "cat.csv:1: column 3 \"implement.mass_g\": contradicts column 2 \"implement.mass_kg\""));
+  CHECK_THAT(refusal("impact.from_butt_m,impact.from_tip_cm\n0.5,\n"),
+             Catch::Contains("column 2 \"impact.from_tip_cm\": contradicts column 1"));
+  CHECK_THAT(refusal("frame.cor,frame.cor_rigid\n0.8,\n"),
+             Catch::Contains("column 2 \"frame.cor_rigid\": contradicts"));
+  CHECK_THAT(refusal("strings.tension_lb,strings.impact_duration_ms\n55,\n"),
+             Catch::Contains("column 2 \"strings.impact_duration_ms\": contradicts column 1"));
+  // The same quantity of two different objects is no contradiction.
+  CHECK(refusal("implement.mass_kg,hand.mass_g\n0.3,400\n") == "(no error)");
+}
+
+TEST_CASE("A repeated column, or one inside another, is refused once") {
+  CHECK_THAT(refusal("implement.mass_kg,hand.mass_kg,implement.mass_kg\n0.3,0.4,0.35\n"),
+             Catch::StartsWith("cat.csv:1: column 3 \"implement.mass_kg\": repeats column 1"));
+  CHECK_THAT(refusal("name,name\na,b\n"), Catch::Contains("column 2 \"name\": repeats column 1"));
+  CHECK_THAT(
+      refusal("hand,hand.mass_kg\n1,0.4\n"),
+      Catch::StartsWith("cat.csv:1: column 2 \"hand.mass_kg\": lies inside column 1 \"hand\""));
+}
+
+TEST_CASE("A column that is not a path of names is refused once, naming it") {
+  for (const char* header :
+       {"implement..mass_kg", "implement.mass_kg.", ".implement", "implement.mass kg",
+        "implement/mass_kg", "implement.point_masses.01.mass_kg", "0.mass_kg",
+        "implement.point_masses.123456.mass_kg", "implement.mass_\xC3\xA9"}) {
+    INFO(header);
+    CHECK_THAT(refusal(std::string("name,") + header + "\na,1\n"),
+               Catch::StartsWith(std::string("cat.csv:1: column 2 ")));
+  }
+  CHECK_THAT(refusal("name,,implement.mass_kg\na,1,0.3\n"),
+             Catch::Contains("column 2 \"\": an empty column name"));
+  // Blanks around a name are not part of it.
+  CHECK(refusal("name, implement.mass_kg \na,0.3\n") == "(no error)");
+}
+
+TEST_CASE("A field the design does not have is the header's error, reported once") {
+  std::string catalogue = "name,implement.colour\n";
+  for (int i = 0; i < 300; ++i) catalogue += "r" + std::to_string(i) + ",1\n";
+  CHECK_THAT(refusal(catalogue),
+             Catch::StartsWith("cat.csv:1: column 2 \"implement.colour\": unknown key"));
+  // Inside a number of the base: a field there cannot be set.
+  CHECK_THAT(refusal("implement.mass_kg.x\n1\n"),
+             Catch::StartsWith(
+                 "cat.csv:1: column 1 \"implement.mass_kg.x\": the base design holds a value"));
+}
+
+TEST_CASE("A byte-order mark opening a catalogue is not part of its first column") {
+  const Outcome csv = run("\xEF\xBB\xBFname,implement.mass_kg\nlight,0.25\n");
+  CHECK(csv.summary.rows == 1);
+  CHECK(csv.summary.failed == 0);
+  CHECK(rows_of(csv)[0]["name"] == "light");
+  const Outcome lines =
+      run("\xEF\xBB\xBF{\"name\": \"heavy\", \"implement\": {\"mass_kg\": 0.4}}\n");
+  CHECK(lines.summary.failed == 0);
+  CHECK(rows_of(lines)[0]["name"] == "heavy");
+}
+
+TEST_CASE(
+    "CSV fields are RFC 4180: quoted commas, doubled quotes and line breaks; a row keeps its first "
+    "line") {
+  const Outcome out =
+      run("name,implement.mass_kg\n\"A, \"\"tour\"\"\",0.25\n\"two\r\nlines\",\"0.3\"\nC,0.35\n");
+  REQUIRE(out.summary.failed == 0);
+  const std::vector<Json> rows = rows_of(out);
+  REQUIRE(rows.size() == 3);
+  CHECK(rows[0]["name"] == "A, \"tour\"");
+  CHECK(rows[1]["name"] == "two\nlines");
+  CHECK(rows[1]["line"] == 3);
+  CHECK(rows[2]["line"] == 5);
+  // Table I rows 1 and 2 share the mass 0.25 kg only with row 1.
+  CHECK(rows[0]["outputs"]["peak_impact_force_N"].get<double>() == Approx(1117).margin(1));
+}
+
+TEST_CASE("A malformed or non-numeric cell is that row's error, quoting the value once") {
+  const Outcome out =
+      run("name,implement.mass_kg\nA,VS5\nB,\"VS5\"\nC,5\"\nD,\"0.3\"x\nE,nan\nF,0.3\n");
+  const std::vector<Json> rows = rows_of(out);
+  REQUIRE(rows.size() == 6);
+  CHECK(out.summary.failed == 5);
+  for (int i : {0, 1}) {
+    const std::string error = rows[i]["error"];
+    CHECK_THAT(error, Catch::EndsWith("/implement/mass_kg: expected a number, got \"VS5\""));
+  }
+  CHECK_THAT(rows[2]["error"].get<std::string>(),
+             Catch::Contains("cat.csv:4: not CSV: field 2: a quote inside an unquoted field"));
+  CHECK_THAT(rows[3]["error"].get<std::string>(),
+             Catch::Contains("field 2: text after the closing quote"));
+  CHECK_THAT(rows[4]["error"].get<std::string>(),
+             Catch::Contains("expected a finite number, got \"nan\""));
+  CHECK_FALSE(rows[5].contains("error"));
+}
+
+TEST_CASE("In CSV output an error quotes the value once inside the field's own quoting") {
+  const Outcome out = run("name,implement.mass_kg\nA,VS5\n", CatalogueFormat::kAuto, Format::kCsv);
+  CHECK_THAT(out.out, Catch::Contains("expected a number, got \"\"VS5\"\"\"\n"));
+}
+
+TEST_CASE("More columns than the limit are refused, naming the limit") {
+  std::string header = "name";
+  for (std::size_t k = 1; k <= kMaxBatchColumns; ++k) header += ",hand.mass_kg";
+  CHECK_THAT(refusal(header + "\n"),
+             Catch::StartsWith("cat.csv:1: 1001 columns, more than the limit of 1000"));
+}
+
+// A stream that never ends: `prefix`, then `pattern` forever.
+class Endless : public std::streambuf {
+ public:
+  Endless(std::string prefix, const std::string& pattern) : prefix_(std::move(prefix)) {
+    while (block_.size() < (1 << 16)) block_ += pattern;
+    setg(prefix_.data(), prefix_.data(), prefix_.data() + prefix_.size());
+  }
+
+ protected:
+  int_type underflow() override {
+    setg(block_.data(), block_.data(), block_.data() + block_.size());
+    return traits_type::to_int_type(block_[0]);
+  }
+
+ private:
+  std::string prefix_;
+  std::string block_;
+};
+
+// A stream that gives `text`, then fails as a disk would.
+class Failing : public std::streambuf {
+ public:
+  explicit Failing(std::string text) : text_(std::move(text)) {
+    setg(text_.data(), text_.data(), text_.data() + text_.size());
+  }
+
+ protected:
+  int_type underflow() override { throw std::ios_base::failure("read error"); }
+
+ private:
+  std::string text_;
+};
+
+std::string refusal_of(std::streambuf& buffer) {
+  BatchOptions options;
+  std::istream in(&buffer);
+  std::ostringstream out;
+  try {
+    run_batch(in, "endless", options, out);
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+TEST_CASE("An endless line is refused at the line limit, binary input at its first NUL byte") {
+  Endless letters("", "a");
+  CHECK_THAT(refusal_of(letters),
+             Catch::StartsWith("endless:1: a line longer than 1048576 bytes, the limit"));
+  Endless zeros("", std::string(1, '\0'));
+  CHECK_THAT(refusal_of(zeros), Catch::StartsWith("endless:1: a NUL byte"));
+  // A quoted CSV field opened and never closed: one record, growing line by line.
+  Endless open_field("name\n\"", "a\n");
+  CHECK_THAT(refusal_of(open_field), Catch::Contains("a CSV record longer than 1048576 bytes"));
+}
+
+TEST_CASE("Bytes that are not UTF-8 text are refused with their line") {
+  CHECK_THAT(refusal("name,implement.mass_kg\nA,0.3\n\xFF\xFE,0.3\n"),
+             Catch::StartsWith("cat.csv:3: byte 1 is not UTF-8 text"));
+}
+
+TEST_CASE("A read error is an error, never the end of the input") {
+  Failing failing("name,implement.mass_kg\nA,0.3\n");
+  std::istream in(&failing);
+  std::ostringstream out;
+  BatchOptions options;
+  options.base = parse_json(kBase, "base.json");
+  CHECK_THROWS_AS(run_batch(in, "disk.csv", options, out), ReadError);
+}
+
+TEST_CASE("A catalogue's format follows its name, else its first line") {
+  CHECK(catalogue_format("a.csv") == CatalogueFormat::kCsv);
+  CHECK(catalogue_format("a.jsonl") == CatalogueFormat::kJsonLines);
+  CHECK(catalogue_format("-") == CatalogueFormat::kAuto);
+  const Outcome lines = run("\n{\"name\": \"x\", \"implement\": {\"mass_kg\": 0.4}}\n");
+  CHECK(rows_of(lines)[0]["name"] == "x");
+  CHECK(rows_of(lines)[0]["line"] == 2);
+  const Outcome csv = run("\nname,implement.mass_kg\ny,0.4\n");
+  CHECK(rows_of(csv)[0]["name"] == "y");
+  CHECK(rows_of(csv)[0]["line"] == 3);
+  // Told it is CSV, a line of JSON is a header naming no field.
+  CHECK_THAT(refusal("{\"implement\": {}}\n", CatalogueFormat::kCsv),
+             Catch::StartsWith("cat.csv:1: "));
+}
+
+TEST_CASE("A row overriding the base with another form of a quantity replaces it") {
+  // The base gives the duration; a row giving the tension derives it instead.
+  BatchOptions options;
+  options.base = parse_json(
+      R"({"implement": {"length_m": 0.7, "mass_kg": 0.3, "head_to_handle_mass_ratio": 0.8},
+                                "strings": {"impact_duration_ms": 4}})",
+      "base.json");
+  options.format = Format::kJson;
+  std::istringstream in("{\"strings\": {\"tension_lb\": 55}}\n");
+  std::ostringstream out;
+  const BatchSummary summary = run_batch(in, "rows.jsonl", options, out);
+  CHECK(summary.failed == 0);
+  CHECK_THAT(out.str(), !Catch::Contains("error"));
+}
+
+}  // namespace
+}  // namespace sweetspot::io
