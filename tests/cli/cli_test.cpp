@@ -729,4 +729,72 @@ TEST_CASE("gnuplot's warnings never reach standard output: figure 5's CSV stays 
   }
 }
 
+TEST_CASE("A design or study that is not a file of JSON text is refused naming it, fast") {
+  const Sandbox box;
+  const auto start = std::chrono::steady_clock::now();
+  const Run zero = box.run("evaluate /dev/zero");
+  CHECK(zero.status == 2);
+  CHECK(zero.err.rfind("sweetspot: /dev/zero: ", 0) == 0);
+  CHECK(zero.err.find("binary") != std::string::npos);
+  const Run random = box.run("evaluate /dev/urandom");
+  CHECK(random.status == 2);
+  CHECK(random.err.rfind("sweetspot: /dev/urandom: ", 0) == 0);
+  CHECK(std::chrono::steady_clock::now() - start < std::chrono::seconds(5));
+
+  const Run folder = box.run("evaluate " + shell_word(box.path("")));
+  CHECK(folder.status == 2);
+  CHECK(folder.err.find("is a directory") != std::string::npos);
+
+  // 17 MiB of blanks around {}: over the 16 MiB limit, from a file and from a pipe.
+  const fs::path big = box.file("big.json", "{}" + std::string(17 << 20, ' '));
+  const Run large = box.run("evaluate " + shell_word(big));
+  CHECK(large.status == 2);
+  CHECK(large.err == "sweetspot: " + big.string() +
+                         ": the file is larger than the limit of 16 MiB for a design or study file\n");
+  CHECK(shell("yes ' ' | " + kCli + " evaluate - 2>" + shell_word(box.path("err"))) == 2);
+  CHECK(slurp(box.path("err")).find("standard input: the file is larger than the limit of 16 MiB") !=
+        std::string::npos);
+
+  const fs::path study = box.file("study.json", R"({"design": "/dev/zero",
+      "variables": [{"path": "/implement/mass_kg", "min": 0.25, "max": 0.4}],
+      "outputs": ["peak_wrist_force_N"]})");
+  const Run bad_design = box.run("sweep " + shell_word(study));
+  CHECK(bad_design.status == 2);
+  CHECK(bad_design.err.find(study.string() + ": /design") != std::string::npos);
+  CHECK(bad_design.err.find("/dev/zero") != std::string::npos);
+}
+
+TEST_CASE("A read error exits 1, never taken for the end of the file") {
+  const Sandbox box;
+  // Reading /proc/self/mem at offset 0 (unmapped) fails with EIO.
+  const Run run = box.run("evaluate /proc/self/mem");
+  CHECK(run.status == 1);
+  CHECK(run.err == "sweetspot: cannot read /proc/self/mem: Input/output error\n");
+}
+
+TEST_CASE("- reads a design or a study from standard input; a study's design is then found from here") {
+  const Sandbox box;
+  const Run design = box.run("evaluate - --format json", kRow1);
+  CHECK(design.status == 0);
+  CHECK(design.out.find("peak_wrist_force_N") != std::string::npos);
+  const fs::path bad = box.file("bad.json", with_implement(R"("hand": {"mass_kg": -0.5})"));
+  const Run refused = box.run("evaluate -", bad.string());
+  CHECK(refused.status == 2);
+  CHECK(refused.err.rfind("sweetspot: standard input: /hand/mass_kg", 0) == 0);
+
+  fs::create_directories(box.path("here/designs"));
+  fs::copy_file(kRow1, box.path("here/designs/row1.json"));
+  const fs::path study = box.file("study.json", R"({"design": "designs/row1.json",
+      "variables": [{"path": "/implement/mass_kg", "min": 0.25, "max": 0.4, "points": 4}],
+      "objective": {"output": "peak_wrist_force_N"}, "outputs": ["peak_wrist_force_N"]})");
+  const Run swept = box.run("sweep -", study.string());
+  CHECK(swept.status == 2);  // designs/row1.json is not beside the sandbox's working directory
+  const std::string in_here = "cd " + shell_word(box.path("here")) + " && " + kCli;
+  CHECK(shell(in_here + " sweep - -q -o out.csv <" + shell_word(study)) == 0);
+  const std::string swept_csv = slurp(box.path("here/out.csv"));
+  CHECK(std::count(swept_csv.begin(), swept_csv.end(), '\n') == 5);  // the header and 4 points
+  CHECK(shell(in_here + " optimize - --format json -o best.json <" + shell_word(study)) == 0);
+  CHECK(slurp(box.path("here/best.json")).find("best_design") != std::string::npos);
+}
+
 }  // namespace
