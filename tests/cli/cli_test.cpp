@@ -528,7 +528,7 @@ int shell(const std::string& command) {
   return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
 }
 
-TEST_CASE("--output onto a device writes into it: the node stays, a full device is exit 1 naming it") {
+TEST_CASE("Output onto a device is written into it: the node stays, a full device is exit 1 naming it") {
   const Sandbox box;
   // Private nodes of the null (1,3) and full (1,7) devices: a failing check
   // must not replace the machine's own /dev/null.
@@ -559,7 +559,7 @@ TEST_CASE("--output onto a device writes into it: the node stays, a full device 
   CHECK(names_in(box.path("")) == std::set<std::string>{"null", "full", "stdout", "stderr"});
 }
 
-TEST_CASE("--output /dev/fd/1 and a link to /dev/stdout write to standard output, appending to >>") {
+TEST_CASE("Output to /dev/fd/1 or a link to /dev/stdout goes to standard output, appending to >>") {
   const Sandbox box;
   const Run run = box.run("evaluate " + shell_word(kRow1) + " -o /dev/fd/1");
   CHECK(run.status == 0);
@@ -579,7 +579,7 @@ TEST_CASE("--output /dev/fd/1 and a link to /dev/stdout write to standard output
   CHECK(logged.rfind("earlier line\n{", 0) == 0);
 }
 
-TEST_CASE("--output onto a FIFO writes into it, and the FIFO stays one") {
+TEST_CASE("Output onto a FIFO is written into it, and the FIFO stays one") {
   const Sandbox box;
   const fs::path fifo = box.path("pipe");
   REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
@@ -592,7 +592,7 @@ TEST_CASE("--output onto a FIFO writes into it, and the FIFO stays one") {
   CHECK(S_ISFIFO(mode_of(fifo)));
 }
 
-TEST_CASE("--output through a symbolic link updates the target; the link stays a link") {
+TEST_CASE("Output through a symbolic link updates the target and the link stays a link") {
   const Sandbox box;
   fs::create_directories(box.path("real"));
   const fs::path target = box.file("real/report.md", "old\n");
@@ -672,7 +672,7 @@ TEST_CASE("An interrupted sweep (SIGINT, SIGTERM, SIGHUP) leaves only the files 
   }
 }
 
-TEST_CASE("On a full disk every writer exits 1 and leaves no file; gnuplot never writes into the CSV") {
+TEST_CASE("On a full disk every writer exits 1 and leaves no file, and gnuplot never writes into the CSV") {
   const Sandbox box;
   const fs::path disk = box.path("disk");
   fs::create_directories(disk);
@@ -772,7 +772,7 @@ TEST_CASE("A read error exits 1, never taken for the end of the file") {
   CHECK(run.err == "sweetspot: cannot read /proc/self/mem: Input/output error\n");
 }
 
-TEST_CASE("- reads a design or a study from standard input; a study's design is then found from here") {
+TEST_CASE("A design or study named - is read from standard input, a study finding its design from here") {
   const Sandbox box;
   const Run design = box.run("evaluate - --format json", kRow1);
   CHECK(design.status == 0);
