@@ -1,7 +1,9 @@
 // The sweetspot command line: one small unit per subcommand (commands.hpp),
 // each calling the library; here only their registration and the one place
 // where errors become a line on stderr and an exit status: 0 success, 1 a
-// run-time failure (cannot write a file), 2 bad input or bad usage.
+// run-time failure (cannot write a file), 2 bad input or bad usage. An
+// interrupted run (SIGINT, SIGTERM, SIGHUP, SIGPIPE) removes its temporary
+// files and ends by the signal.
 
 #include <CLI/CLI.hpp>
 
@@ -10,10 +12,12 @@
 #include <string>
 
 #include "cli/commands.hpp"
+#include "io/atomic_file.hpp"
 #include "io/input_error.hpp"
 
 int main(int argc, char** argv) {
   using namespace sweetspot::cli;
+  sweetspot::io::remove_temporaries_on_signals();
   CLI::App app{
       "sweetspot: where a ball should hit a racquet, bat or beam, and what the hand feels.\n"
       "Rigid-body model of R. Cross, Center of percussion of hand-held implements, "

@@ -11,7 +11,8 @@ void OutputOptions::add_to(CLI::App* command, std::vector<std::string> formats) 
       ->check(CLI::IsMember(std::move(formats)))
       ->capture_default_str();
   command->add_option("--output,-o", output,
-                      "Write to FILE (atomically: temporary file and rename) instead of stdout");
+                      "Write to FILE instead of stdout (a regular file is replaced atomically; a "
+                      "device or FIFO is written directly)");
 }
 
 io::Format OutputOptions::parsed() const { return *io::parse_format(format); }
@@ -40,7 +41,7 @@ std::string plot_file(const std::string& png, const std::string& suffix) {
 int render_or_warn(const io::Plot& plot, const std::string& png) {
   std::string why;
   if (io::render_png(plot, png, &why)) return kExitOk;
-  std::cerr << "sweetspot: " << png << ": " << why << "\n";
+  std::cerr << "sweetspot: cannot write " << png << ": " << why << "\n";
   return kExitRuntimeError;
 }
 

@@ -17,11 +17,12 @@ namespace sweetspot::cli {
 
 // Exit statuses (README "Exit status").
 inline constexpr int kExitOk = 0;
-inline constexpr int kExitRuntimeError = 1;  // not the input's fault: a file that cannot be written
+inline constexpr int kExitRuntimeError = 1;  // not the input's fault: a write or read error (ENOSPC, EIO)
 inline constexpr int kExitBadInput = 2;      // bad input or usage, one line on stderr
 
 // --format and --output of a subcommand: standard output, or FILE written
-// atomically (a temporary file renamed into place).
+// as io/atomic_file.hpp says (a regular file replaced atomically, a device
+// or FIFO written directly).
 struct OutputOptions {
   std::string format = "md";
   std::string output;  // "" = standard output

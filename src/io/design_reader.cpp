@@ -445,7 +445,9 @@ void rethrow_in(const DesignFile& design, const std::invalid_argument& error) {
   rethrow_at(error, "", design.keys, design.source, "");
 }
 
-DesignFile load_design(const std::string& path) { return read_design(read_json_file(path), path); }
+DesignFile load_design(const std::string& path) {
+  return read_design(read_json_file(path), input_name(path));
+}
 
 Json design_to_json(const DesignFile& file) {
   const Design& d = file.design;

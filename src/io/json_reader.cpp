@@ -1,10 +1,16 @@
 #include "io/json_reader.hpp"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <array>
+#include <cerrno>
 #include <cmath>
-#include <fstream>
-#include <sstream>
+#include <cstdint>
+#include <cstring>
+#include <stdexcept>
 #include <utility>
 
 #include "io/input_error.hpp"
@@ -146,13 +152,52 @@ Json parse_json(std::string_view text, const std::string& source) {
   return builder.take();
 }
 
+std::string input_name(const std::string& path) { return path == "-" ? "standard input" : path; }
+
+std::string read_input_file(const std::string& path, std::size_t limit_bytes) {
+  const std::string name = input_name(path);
+  const bool standard_input = path == "-";
+  const int fd = standard_input ? STDIN_FILENO : ::open(path.c_str(), O_RDONLY | O_NOCTTY | O_CLOEXEC);
+  if (fd < 0) {
+    throw InputError(name, "", std::string("cannot open the file for reading: ") + std::strerror(errno));
+  }
+  struct Closer {
+    int fd;
+    bool owned;
+    ~Closer() {
+      if (owned) ::close(fd);
+    }
+  } closer{fd, !standard_input};
+  const std::string limit_text =
+      "the file is larger than the limit of " +
+      (limit_bytes % (1 << 20) == 0 ? std::to_string(limit_bytes >> 20) + " MiB"
+                                    : std::to_string(limit_bytes) + " bytes") +
+      " for a design or study file";
+  struct stat info {};
+  if (::fstat(fd, &info) != 0) throw std::runtime_error("cannot read " + name + ": " + std::strerror(errno));
+  if (S_ISDIR(info.st_mode)) throw InputError(name, "", "is a directory, expected a JSON file");
+  // st_size is trusted only to refuse a regular file early: devices, FIFOs
+  // and /proc files are read, and stopped at the limit.
+  if (S_ISREG(info.st_mode) && static_cast<std::uintmax_t>(info.st_size) > limit_bytes) {
+    throw InputError(name, "", limit_text);
+  }
+  std::string text;
+  std::array<char, 1 << 16> chunk{};
+  for (;;) {
+    const ssize_t n = ::read(fd, chunk.data(), chunk.size());
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) throw std::runtime_error("cannot read " + name + ": " + std::strerror(errno));
+    if (n == 0) break;
+    text.append(chunk.data(), static_cast<std::size_t>(n));
+    if (text.size() > limit_bytes) throw InputError(name, "", limit_text);
+    // Binary input (/dev/zero, /dev/urandom) is refused by parse_json at its first NUL byte.
+    if (std::memchr(chunk.data(), '\0', static_cast<std::size_t>(n))) break;
+  }
+  return text;
+}
+
 Json read_json_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, "", "cannot open the file for reading");
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  if (in.bad()) throw InputError(path, "", "cannot read the file");
-  return parse_json(buffer.str(), path);
+  return parse_json(read_input_file(path, kMaxInputFileBytes), input_name(path));
 }
 
 std::string brief(const Json& value) {

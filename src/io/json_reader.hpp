@@ -26,7 +26,20 @@ inline constexpr int kMaxJsonDepth = 64;
 // nesting deeper than kMaxJsonDepth.
 Json parse_json(std::string_view text, const std::string& source);
 
-// Reads and parses a file; a missing or unreadable file is an InputError too.
+// Largest design or study file read (README "Limits"): 16 MiB.
+inline constexpr std::size_t kMaxInputFileBytes = std::size_t{16} << 20;
+
+// How messages name an input file: "-" is "standard input".
+std::string input_name(const std::string& path);
+
+// The whole of a file ("-": standard input), read in chunks. Throws
+// InputError for a file that cannot be opened, a directory, or more than
+// `limit_bytes` (stopping there: a device or FIFO need not end); a read error
+// (EIO) is std::runtime_error, never taken for the end of the file. Stops
+// early after a chunk holding a NUL byte, which no JSON text has.
+std::string read_input_file(const std::string& path, std::size_t limit_bytes);
+
+// Reads (read_input_file, kMaxInputFileBytes) and parses a file.
 Json read_json_file(const std::string& path);
 
 // Text for a JSON value in an error message, shortened to ~60 characters.

@@ -1,15 +1,168 @@
 #include "io/plot.hpp"
 
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/mman.h>
+#include <sys/socket.h>
+#include <sys/stat.h>
+#include <sys/statvfs.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
-#include <cstdio>
+#include <array>
+#include <cerrno>
+#include <csignal>
+#include <cstring>
+#include <optional>
+#include <stdexcept>
+#include <string_view>
 
 #include <fmt/format.h>
 
 #include "io/atomic_file.hpp"
 
+extern char** environ;
+
 namespace sweetspot::io {
 namespace {
+
+// Why a plot could not be made; render_png() turns it into its `why`.
+class PlotFailure : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// gnuplot's standard error, kept in memory (a full disk must not lose it).
+class Messages {
+ public:
+  Messages() {
+    fd_ = ::memfd_create("gnuplot-messages", MFD_CLOEXEC);
+    if (fd_ < 0) fd_ = ::open("/dev/null", O_WRONLY | O_CLOEXEC);
+  }
+  ~Messages() {
+    if (fd_ >= 0) ::close(fd_);
+  }
+  Messages(const Messages&) = delete;
+  Messages& operator=(const Messages&) = delete;
+  int fd() const { return fd_; }
+
+  // The first messages on one line: ", " between lines, runs of blanks as one.
+  std::string one_line() const {
+    std::array<char, 600> buffer{};
+    const ssize_t n = fd_ < 0 ? -1 : ::pread(fd_, buffer.data(), buffer.size(), 0);
+    std::string line;
+    bool blank = false;
+    for (ssize_t i = 0; i < n; ++i) {
+      const char c = buffer[static_cast<std::size_t>(i)];
+      const bool space = c == ' ' || c == '\t' || c == '\n' || c == '\r';
+      if (space) {
+        blank = !line.empty();
+        continue;
+      }
+      if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) continue;
+      if (blank) line += ' ';
+      blank = false;
+      line += c;
+    }
+    if (n == static_cast<ssize_t>(buffer.size())) line += " ...";
+    return line;
+  }
+
+ private:
+  int fd_ = -1;
+};
+
+// Runs gnuplot on `script` with the PNG on its standard output going to
+// `png_fd` and its messages captured, never on ours. Throws PlotFailure.
+void run_gnuplot(const std::string& script, int png_fd) {
+  std::array<int, 2> sockets{};
+  // A socket rather than a pipe: send() reports a gnuplot that quit early as
+  // EPIPE (MSG_NOSIGNAL) instead of raising SIGPIPE in this process.
+  if (::socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, sockets.data()) != 0) {
+    throw PlotFailure(std::string("cannot start gnuplot: ") + std::strerror(errno));
+  }
+  const Messages messages;
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_adddup2(&actions, sockets[1], 0);
+  posix_spawn_file_actions_adddup2(&actions, png_fd, 1);
+  posix_spawn_file_actions_adddup2(&actions, messages.fd(), 2);
+  posix_spawnattr_t attributes;
+  posix_spawnattr_init(&attributes);
+  sigset_t defaults;
+  sigemptyset(&defaults);
+  for (const int s : {SIGINT, SIGTERM, SIGHUP, SIGPIPE}) sigaddset(&defaults, s);
+  sigset_t none;
+  sigemptyset(&none);
+  posix_spawnattr_setsigdefault(&attributes, &defaults);
+  posix_spawnattr_setsigmask(&attributes, &none);
+  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETSIGMASK);
+  char name[] = "gnuplot";
+  char* argv[] = {name, nullptr};
+  pid_t pid = -1;
+  const int spawned = ::posix_spawnp(&pid, name, &actions, &attributes, argv, environ);
+  posix_spawn_file_actions_destroy(&actions);
+  posix_spawnattr_destroy(&attributes);
+  ::close(sockets[1]);
+  if (spawned != 0) {
+    ::close(sockets[0]);
+    if (spawned == ENOENT) throw PlotFailure("gnuplot is not installed (apt-get install gnuplot-nox)");
+    throw PlotFailure(std::string("cannot start gnuplot: ") + std::strerror(spawned));
+  }
+  std::string_view left = script;
+  while (!left.empty()) {
+    const ssize_t n = ::send(sockets[0], left.data(), left.size(), MSG_NOSIGNAL);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) break;  // gnuplot has gone; its status says why
+    left.remove_prefix(static_cast<std::size_t>(n));
+  }
+  ::close(sockets[0]);
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0) {
+    if (errno != EINTR) throw PlotFailure(std::string("gnuplot: ") + std::strerror(errno));
+  }
+  if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return;
+  const std::string how = WIFEXITED(status) ? "exit status " + std::to_string(WEXITSTATUS(status))
+                                            : "signal " + std::to_string(WTERMSIG(status));
+  const std::string said = messages.one_line();
+  throw PlotFailure("gnuplot failed (" + how + ")" + (said.empty() ? "" : ": " + said));
+}
+
+// What is wrong with the PNG in `fd`, or "": the signature at the start and
+// the IEND chunk at the end (a full disk truncates the file or leaves it empty).
+std::string png_problem(int fd) {
+  static constexpr unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  static constexpr unsigned char kEnd[12] = {0, 0, 0, 0, 'I', 'E', 'N', 'D', 0xae, 0x42, 0x60, 0x82};
+  struct stat info {};
+  if (::fstat(fd, &info) != 0) return std::strerror(errno);
+  const auto size = static_cast<std::size_t>(info.st_size);
+  std::array<unsigned char, 12> head{};
+  std::array<unsigned char, 12> tail{};
+  const bool complete = size >= sizeof kSignature + sizeof kEnd &&
+                        ::pread(fd, head.data(), sizeof kSignature, 0) == sizeof kSignature &&
+                        ::pread(fd, tail.data(), sizeof kEnd, info.st_size - 12) == sizeof kEnd &&
+                        std::memcmp(head.data(), kSignature, sizeof kSignature) == 0 &&
+                        std::memcmp(tail.data(), kEnd, sizeof kEnd) == 0;
+  if (complete) return "";
+  struct statvfs disk {};
+  const bool full = ::fstatvfs(fd, &disk) == 0 && disk.f_bavail == 0;
+  return (size == 0 ? std::string("gnuplot wrote nothing")
+                    : "gnuplot wrote an incomplete PNG of " + std::to_string(size) + " bytes") +
+         (full ? ": " + std::string(std::strerror(ENOSPC)) : "");
+}
+
+// Copies the whole of `from` into `to`.
+void copy_file(int from, OutputFile& to) {
+  std::array<char, 1 << 16> buffer{};
+  for (off_t at = 0;;) {
+    const ssize_t n = ::pread(from, buffer.data(), buffer.size(), at);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) throw PlotFailure(std::string("cannot read the rendered plot: ") + std::strerror(errno));
+    if (n == 0) return;
+    to.write(std::string_view(buffer.data(), static_cast<std::size_t>(n)));
+    at += n;
+  }
+}
 
 // A double-quoted gnuplot string (a file name: taken as it is).
 std::string quoted(const std::string& text) {
@@ -41,7 +194,7 @@ bool on_plot(const Plot& plot, double y) {
 std::string gnuplot_script(const Plot& plot, const std::string& png_path) {
   std::string s;
   s += "set terminal pngcairo size 960,640 enhanced font 'DejaVu Sans,11'\n";
-  s += "set output " + quoted(png_path) + "\n";
+  if (!png_path.empty()) s += "set output " + quoted(png_path) + "\n";
   s += "set title " + label(plot.title) + "\n";
   s += "set xlabel " + label(plot.x_label) + "\n";
   s += "set ylabel " + label(plot.y_label) + "\n";
@@ -90,27 +243,25 @@ std::string gnuplot_script(const Plot& plot, const std::string& png_path) {
 }
 
 bool render_png(const Plot& plot, const std::string& png_path, std::string* why) {
-  const std::string temporary = temporary_path_for(png_path);
-  FILE* pipe = popen("gnuplot 2>&1 >/dev/null", "w");
-  if (!pipe) {
-    discard_file(temporary);
-    if (why) *why = "cannot start gnuplot";
-    return false;
+  try {
+    OutputFile out(png_path);
+    // gnuplot renders into a temporary file: beside a regular target, or in
+    // the scratch folder for a target written directly (then copied in).
+    std::optional<TemporaryFile> scratch;
+    if (out.direct()) scratch.emplace(scratch_directory(), "sweetspot-plot", png_path);
+    const int png_fd = out.direct() ? scratch->fd() : out.fd();
+    run_gnuplot(gnuplot_script(plot, ""), png_fd);
+    const std::string problem = png_problem(png_fd);
+    if (!problem.empty()) throw PlotFailure(problem);
+    if (out.direct()) copy_file(png_fd, out);
+    out.commit();
+    return true;
+  } catch (const WriteError& e) {
+    if (why) *why = e.reason();
+  } catch (const std::exception& e) {
+    if (why) *why = e.what();
   }
-  const std::string script = gnuplot_script(plot, temporary);
-  std::fwrite(script.data(), 1, script.size(), pipe);
-  const int status = pclose(pipe);
-  if (status != 0) {
-    discard_file(temporary);
-    if (why) {
-      *why = WIFEXITED(status) && WEXITSTATUS(status) == 127
-                 ? "gnuplot is not installed (apt-get install gnuplot-nox)"
-                 : "gnuplot failed";
-    }
-    return false;
-  }
-  commit_file(temporary, png_path);
-  return true;
+  return false;
 }
 
 }  // namespace sweetspot::io

@@ -37,11 +37,17 @@ struct Plot {
   bool log_y = false;  // gnuplot's words: "bottom left", "outside right", ...
 };
 
-// The gnuplot script that draws `plot` into `png_path`.
+// The gnuplot script that draws `plot` into `png_path` ("": gnuplot's
+// standard output).
 std::string gnuplot_script(const Plot& plot, const std::string& png_path);
 
-// Renders `plot` to `png_path` atomically. Returns false (and why) when
-// gnuplot is missing or fails; the PNG is then left as it was.
+// Renders `plot` to `png_path` as an output file (io/atomic_file.hpp):
+// gnuplot draws into a temporary file, which is checked to be a whole PNG
+// before it replaces `png_path` (or is copied into a device or FIFO).
+// gnuplot's own messages never reach standard output. Returns false, with
+// why on one line (gnuplot missing or failing, with its messages; a PNG cut
+// short by a full disk; a file that cannot be written), leaving `png_path`
+// as it was.
 bool render_png(const Plot& plot, const std::string& png_path, std::string* why);
 
 }  // namespace sweetspot::io

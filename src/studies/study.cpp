@@ -387,7 +387,7 @@ Study read_study(const Json& document, const std::string& source, const std::str
 
 Study load_study(const std::string& path) {
   const std::string folder = std::filesystem::path(path).parent_path().string();
-  return read_study(read_json_file(path), path, folder.empty() ? "." : folder);
+  return read_study(read_json_file(path), input_name(path), folder.empty() ? "." : folder);
 }
 
 Evaluation evaluate_in(const Study& study, const DesignFile& design) { return evaluate_in(study, design.design); }

@@ -1,16 +1,25 @@
 // The command line as a user meets it: every class of bad input gets one line
 // on stderr naming the file and the JSON path, exit status 2, and no output
 // file. SWEETSPOT_CLI is the path of the built executable.
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
+#include <csignal>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <utility>
+#include <vector>
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
@@ -44,10 +53,11 @@ class Sandbox {
   }
   fs::path path(const std::string& name) const { return dir_ / name; }
 
-  Run run(const std::string& arguments) const {
+  // Runs the program with `arguments`, standard input from `input`.
+  Run run(const std::string& arguments, const std::string& input = "/dev/null") const {
     const std::string command = std::string("\"") + SWEETSPOT_CLI + "\" " + arguments + " >\"" +
                                 (dir_ / "stdout").string() + "\" 2>\"" + (dir_ / "stderr").string() +
-                                "\" </dev/null";
+                                "\" <\"" + input + "\"";
     const int raw = std::system(command.c_str());
     return Run{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(dir_ / "stdout"),
                slurp(dir_ / "stderr")};
@@ -160,9 +170,9 @@ TEST_CASE("Bad input never clobbers an existing output file, and no temporary is
   const fs::path good = box.file("good.json", with_implement(""));
   CHECK(box.run("evaluate \"" + good.string() + "\" --output \"" + output.string() + "\"").status == 0);
   CHECK(slurp(output).find("peak_wrist_force_N") != std::string::npos);
-  for (const auto& entry : fs::directory_iterator(output.parent_path())) {
-    CHECK(entry.path().filename().string().find(".tmp.") == std::string::npos);
-  }
+  std::set<std::string> names;
+  for (const auto& entry : fs::directory_iterator(output.parent_path())) names.insert(entry.path().filename());
+  CHECK(names == std::set<std::string>{"report.md", "bad.json", "good.json", "stdout", "stderr"});
 }
 
 TEST_CASE("evaluate --format json carries every output the issue names") {
@@ -488,6 +498,304 @@ TEST_CASE("report with no designs folder and response with an empty point exit 2
   CHECK(response.status == 2);
   CHECK(response.err.find("--at: an empty point") != std::string::npos);
   CHECK(response.out.empty());
+}
+
+// ---- Files that are not files, and limits on what is read -------------------
+
+std::string shell_word(const fs::path& path) { return "\"" + path.string() + "\""; }
+
+const std::string kRow1 = std::string(SWEETSPOT_SOURCE_DIR) + "/designs/table1/row1.json";
+const std::string kBeam = std::string(SWEETSPOT_SOURCE_DIR) + "/designs/paper-beam.json";
+const std::string kSweepStudy =
+    std::string(SWEETSPOT_SOURCE_DIR) + "/designs/studies/5b-sweep-wrist-force-forearm-mass.json";
+// The program as a shell command word.
+const std::string kCli = std::string("\"") + SWEETSPOT_CLI + "\"";
+
+std::set<std::string> names_in(const fs::path& dir) {
+  std::set<std::string> names;
+  for (const auto& entry : fs::directory_iterator(dir)) names.insert(entry.path().filename());
+  return names;
+}
+
+mode_t mode_of(const fs::path& path) {
+  struct stat info {};
+  REQUIRE(::lstat(path.c_str(), &info) == 0);
+  return info.st_mode;
+}
+
+// Exit status of a shell command line (-1 when it did not exit).
+int shell(const std::string& command) {
+  const int raw = std::system(command.c_str());
+  return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+}
+
+TEST_CASE("Output onto a device is written into it: the node stays, a full device is exit 1 naming it") {
+  const Sandbox box;
+  // Private nodes of the null (1,3) and full (1,7) devices: a failing check
+  // must not replace the machine's own /dev/null.
+  const fs::path null_device = box.path("null");
+  const fs::path full_device = box.path("full");
+  if (::mknod(null_device.c_str(), S_IFCHR | 0666, makedev(1, 3)) != 0 ||
+      ::mknod(full_device.c_str(), S_IFCHR | 0666, makedev(1, 7)) != 0) {
+    WARN("skipped: cannot make device nodes here (needs root and a filesystem without nodev)");
+    return;
+  }
+  CHECK(box.run("evaluate " + shell_word(kRow1) + " -o " + shell_word(null_device)).status == 0);
+  CHECK(box.run("sweep " + shell_word(kSweepStudy) + " -q -o " + shell_word(null_device)).status == 0);
+  CHECK(box.run("modes " + shell_word(kBeam) + " --plot " + shell_word(null_device)).status == 0);
+  CHECK(S_ISCHR(mode_of(null_device)));
+
+  for (const std::string& command : {"evaluate " + shell_word(kRow1) + " -o " + shell_word(full_device),
+                                     "sweep " + shell_word(kSweepStudy) + " -q -o " + shell_word(full_device),
+                                     "figure 5 --design " + shell_word(kBeam) + " -o " +
+                                         shell_word(full_device)}) {
+    const Run run = box.run(command);
+    CHECK(run.status == 1);
+    CHECK(run.err == "sweetspot: cannot write " + full_device.string() + ": No space left on device\n");
+  }
+  const Run plot = box.run("modes " + shell_word(kBeam) + " --plot " + shell_word(full_device));
+  CHECK(plot.status == 1);
+  CHECK(plot.err == "sweetspot: cannot write " + full_device.string() + ": No space left on device\n");
+  CHECK(S_ISCHR(mode_of(full_device)));
+  CHECK(names_in(box.path("")) == std::set<std::string>{"null", "full", "stdout", "stderr"});
+}
+
+TEST_CASE("Output to /dev/fd/1 or a link to /dev/stdout goes to standard output, appending to >>") {
+  const Sandbox box;
+  const Run run = box.run("evaluate " + shell_word(kRow1) + " -o /dev/fd/1");
+  CHECK(run.status == 0);
+  CHECK(run.out.find("peak_wrist_force_N") != std::string::npos);
+  // A link to /dev/stdout is followed to the descriptor, not replaced.
+  fs::create_symlink("/dev/stdout", box.path("to-stdout"));
+  const Run linked = box.run("evaluate " + shell_word(kRow1) + " -o " + shell_word(box.path("to-stdout")));
+  CHECK(linked.status == 0);
+  CHECK(linked.out.find("peak_wrist_force_N") != std::string::npos);
+  CHECK(S_ISLNK(mode_of(box.path("to-stdout"))));
+  // A log opened with >> is appended to, never truncated or replaced. (Through
+  // the sandbox's link: a failing check must not replace the machine's /dev/stdout.)
+  const fs::path log = box.file("log", "earlier line\n");
+  CHECK(shell(kCli + " evaluate " + shell_word(kRow1) + " --format json -o " +
+              shell_word(box.path("to-stdout")) + " >>" + shell_word(log)) == 0);
+  const std::string logged = slurp(log);
+  CHECK(logged.rfind("earlier line\n{", 0) == 0);
+}
+
+TEST_CASE("Output onto a FIFO is written into it, and the FIFO stays one") {
+  const Sandbox box;
+  const fs::path fifo = box.path("pipe");
+  REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+  const fs::path got = box.path("got");
+  // The reader gives up after 10 s, so that a writer that never opens the FIFO cannot hang the test.
+  const std::string reader = "timeout 10 cat " + shell_word(fifo) + " >" + shell_word(got);
+  CHECK(shell(kCli + " evaluate " + shell_word(kRow1) + " -o " + shell_word(fifo) + " & " + reader +
+              "; wait $!") == 0);
+  CHECK(slurp(got).find("peak_wrist_force_N") != std::string::npos);
+  CHECK(S_ISFIFO(mode_of(fifo)));
+}
+
+TEST_CASE("Output through a symbolic link updates the target and the link stays a link") {
+  const Sandbox box;
+  fs::create_directories(box.path("real"));
+  const fs::path target = box.file("real/report.md", "old\n");
+  fs::create_symlink("real/report.md", box.path("link.md"));
+  CHECK(box.run("evaluate " + shell_word(kRow1) + " -o " + shell_word(box.path("link.md"))).status == 0);
+  CHECK(S_ISLNK(mode_of(box.path("link.md"))));
+  CHECK(slurp(target).find("peak_wrist_force_N") != std::string::npos);
+  CHECK(names_in(box.path("real")) == std::set<std::string>{"report.md"});
+}
+
+TEST_CASE("New outputs respect the umask and replaced ones keep their mode") {
+  const Sandbox box;
+  const fs::path fresh = box.path("fresh.csv");
+  const fs::path png = box.path("fresh.png");
+  CHECK(shell("umask 027; " + kCli + " sweep " + shell_word(kSweepStudy) + " -q -o " + shell_word(fresh) +
+              " --plot " + shell_word(png) + " >/dev/null 2>&1") == 0);
+  CHECK((mode_of(fresh) & 07777) == 0640);
+  CHECK((mode_of(png) & 07777) == 0640);
+  const fs::path kept = box.file("kept.md", "old\n");
+  fs::permissions(kept, fs::perms::owner_read | fs::perms::owner_write);
+  CHECK(box.run("evaluate " + shell_word(kRow1) + " -o " + shell_word(kept)).status == 0);
+  CHECK((mode_of(kept) & 07777) == 0600);
+  CHECK(slurp(kept).find("peak_wrist_force_N") != std::string::npos);
+}
+
+TEST_CASE("A 250-character output name works for text and plots") {
+  const Sandbox box;
+  const std::string stem(246, 'x');
+  const fs::path md = box.path(stem + ".md");
+  const fs::path png = box.path(stem + ".png");
+  const Run run = box.run("evaluate " + shell_word(kRow1) + " -o " + shell_word(md));
+  CHECK(run.status == 0);
+  CHECK(run.err.empty());
+  CHECK(box.run("modes " + shell_word(kBeam) + " --plot " + shell_word(png)).status == 0);
+  CHECK(fs::file_size(png) > 1000);
+  CHECK(names_in(box.path("")) == std::set<std::string>{md.filename(), png.filename(), "stdout", "stderr"});
+}
+
+TEST_CASE("An interrupted sweep (SIGINT, SIGTERM, SIGHUP) leaves only the files that were there") {
+  const Sandbox box;
+  // 4 million points that each read their design: many seconds on one thread.
+  const fs::path study = box.file("long.json", R"({"design": ")" + kRow1 + R"(",
+      "variables": [{"path": "/implement/mass_kg", "min": 0.25, "max": 0.4, "points": 2000},
+                    {"path": "/hand/mass_kg", "min": 0.3, "max": 0.6, "points": 2000}],
+      "outputs": ["peak_wrist_force_N"]})");
+  const fs::path csv = box.file("out.csv", "previous\n");
+  const std::set<std::string> before = names_in(box.path(""));
+  for (const int signal_number : {SIGINT, SIGTERM, SIGHUP}) {
+    const std::string program = SWEETSPOT_CLI;
+    std::vector<std::string> arguments{program, "sweep", study.string(), "-q",
+                                       "--threads", "1", "-o", csv.string()};
+    std::vector<char*> argv;
+    for (std::string& a : arguments) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+    posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
+    pid_t pid = -1;
+    REQUIRE(posix_spawn(&pid, program.c_str(), &actions, nullptr, argv.data(), environ) == 0);
+    posix_spawn_file_actions_destroy(&actions);
+    // Wait until the temporary file exists: the sweep is writing.
+    bool writing = false;
+    for (int i = 0; i < 2000 && !writing; ++i) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+      writing = names_in(box.path("")).size() > before.size();
+    }
+    CHECK(writing);
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    ::kill(pid, signal_number);
+    int status = 0;
+    REQUIRE(::waitpid(pid, &status, 0) == pid);
+    CHECK(WIFSIGNALED(status));
+    CHECK(WTERMSIG(status) == signal_number);
+    CHECK(names_in(box.path("")) == before);
+    CHECK(slurp(csv) == "previous\n");
+  }
+}
+
+TEST_CASE("On a full disk every writer exits 1 and leaves no file, and gnuplot never writes into the CSV") {
+  const Sandbox box;
+  const fs::path disk = box.path("disk");
+  fs::create_directories(disk);
+  if (::geteuid() != 0 || shell("unshare -m true >/dev/null 2>&1") != 0) {
+    WARN("skipped: needs root and unshare -m for a private tmpfs");
+    return;
+  }
+  // Fill a 64 KiB tmpfs in a private mount namespace, then run each writer onto it.
+  const std::string script =
+      "mount -t tmpfs -o size=64k tmpfs " + shell_word(disk) + " || exit 99; " +
+      "dd if=/dev/zero of=" + shell_word(disk / "fill") + " bs=1k >/dev/null 2>&1; " +
+      "for c in 'modes " + kBeam + " --plot " + (disk / "m.png").string() + "' " +
+      "'sweep " + kSweepStudy + " -q --plot " + (disk / "s.png").string() + "' " +
+      "'figure 5 --design " + kBeam + " --plot " + (disk / "f.png").string() + "' " +
+      "'evaluate " + kRow1 + " -o " + (disk / "e.md").string() + "' " +
+      "'sweep " + kSweepStudy + " -q -o " + (disk / "s.csv").string() + "'; do " +
+      kCli + " $c >>" + shell_word(box.path("data")) + " 2>>" + shell_word(box.path("errors")) +
+      "; echo $? >>" + shell_word(box.path("statuses")) + "; done; ls -A " + shell_word(disk) + " >" +
+      shell_word(box.path("left"));
+  const fs::path script_file = box.file("full-disk.sh", script);
+  const int status = shell("unshare -m sh " + shell_word(script_file) + " >/dev/null 2>&1");
+  if (status == 99) {
+    WARN("skipped: cannot mount a tmpfs here");
+    return;
+  }
+  REQUIRE(status == 0);
+  CHECK(slurp(box.path("statuses")) == "1\n1\n1\n1\n1\n");
+  CHECK(slurp(box.path("left")) == "fill\n");
+  const std::string errors = slurp(box.path("errors"));
+  for (const char* failed : {"m.png: gnuplot wrote", "f.png: gnuplot wrote", "s.png: gnuplot wrote",
+                                    "e.md: No space left on device", "s.csv: No space left on device"}) {
+    CHECK(errors.find("sweetspot: cannot write " + (disk / failed).string()) != std::string::npos);
+  }
+  // What reached standard output is the commands' data only.
+  const std::string data = slurp(box.path("data"));
+  CHECK(data.find("peak_wrist_force_N") != std::string::npos);
+  CHECK(data.find("gnuplot") == std::string::npos);
+  CHECK(data.find("warning") == std::string::npos);
+}
+
+TEST_CASE("gnuplot's warnings never reach standard output: figure 5's CSV stays whole") {
+  const Sandbox box;
+  const Run run =
+      box.run("figure 5 --design " + shell_word(kBeam) + " --plot " + shell_word(box.path("f5.png")));
+  CHECK(run.status == 0);
+  std::istringstream csv(run.out);
+  std::string header;
+  REQUIRE(std::getline(csv, header));
+  const auto fields = std::count(header.begin(), header.end(), ',');
+  std::string line;
+  while (std::getline(csv, line)) {
+    if (line.empty()) continue;
+    CHECK(std::count(line.begin(), line.end(), ',') == fields);
+  }
+}
+
+TEST_CASE("A design or study that is not a file of JSON text is refused naming it, fast") {
+  const Sandbox box;
+  const auto start = std::chrono::steady_clock::now();
+  const Run zero = box.run("evaluate /dev/zero");
+  CHECK(zero.status == 2);
+  CHECK(zero.err.rfind("sweetspot: /dev/zero: ", 0) == 0);
+  CHECK(zero.err.find("binary") != std::string::npos);
+  const Run random = box.run("evaluate /dev/urandom");
+  CHECK(random.status == 2);
+  CHECK(random.err.rfind("sweetspot: /dev/urandom: ", 0) == 0);
+  CHECK(std::chrono::steady_clock::now() - start < std::chrono::seconds(5));
+
+  const Run folder = box.run("evaluate " + shell_word(box.path("")));
+  CHECK(folder.status == 2);
+  CHECK(folder.err.find("is a directory") != std::string::npos);
+
+  // 17 MiB of blanks around {}: over the 16 MiB limit, from a file and from a pipe.
+  const fs::path big = box.file("big.json", "{}" + std::string(17 << 20, ' '));
+  const Run large = box.run("evaluate " + shell_word(big));
+  CHECK(large.status == 2);
+  CHECK(large.err == "sweetspot: " + big.string() +
+                         ": the file is larger than the limit of 16 MiB for a design or study file\n");
+  CHECK(shell("yes ' ' | " + kCli + " evaluate - 2>" + shell_word(box.path("err"))) == 2);
+  CHECK(slurp(box.path("err")).find("standard input: the file is larger than the limit of 16 MiB") !=
+        std::string::npos);
+
+  const fs::path study = box.file("study.json", R"({"design": "/dev/zero",
+      "variables": [{"path": "/implement/mass_kg", "min": 0.25, "max": 0.4}],
+      "outputs": ["peak_wrist_force_N"]})");
+  const Run bad_design = box.run("sweep " + shell_word(study));
+  CHECK(bad_design.status == 2);
+  CHECK(bad_design.err.find(study.string() + ": /design") != std::string::npos);
+  CHECK(bad_design.err.find("/dev/zero") != std::string::npos);
+}
+
+TEST_CASE("A read error exits 1, never taken for the end of the file") {
+  const Sandbox box;
+  // Reading /proc/self/mem at offset 0 (unmapped) fails with EIO.
+  const Run run = box.run("evaluate /proc/self/mem");
+  CHECK(run.status == 1);
+  CHECK(run.err == "sweetspot: cannot read /proc/self/mem: Input/output error\n");
+}
+
+TEST_CASE("A design or study named - is read from standard input, a study finding its design from here") {
+  const Sandbox box;
+  const Run design = box.run("evaluate - --format json", kRow1);
+  CHECK(design.status == 0);
+  CHECK(design.out.find("peak_wrist_force_N") != std::string::npos);
+  const fs::path bad = box.file("bad.json", with_implement(R"("hand": {"mass_kg": -0.5})"));
+  const Run refused = box.run("evaluate -", bad.string());
+  CHECK(refused.status == 2);
+  CHECK(refused.err.rfind("sweetspot: standard input: /hand/mass_kg", 0) == 0);
+
+  fs::create_directories(box.path("here/designs"));
+  fs::copy_file(kRow1, box.path("here/designs/row1.json"));
+  const fs::path study = box.file("study.json", R"({"design": "designs/row1.json",
+      "variables": [{"path": "/implement/mass_kg", "min": 0.25, "max": 0.4, "points": 4}],
+      "objective": {"output": "peak_wrist_force_N"}, "outputs": ["peak_wrist_force_N"]})");
+  const Run swept = box.run("sweep -", study.string());
+  CHECK(swept.status == 2);  // designs/row1.json is not beside the sandbox's working directory
+  const std::string in_here = "cd " + shell_word(box.path("here")) + " && " + kCli;
+  CHECK(shell(in_here + " sweep - -q -o out.csv <" + shell_word(study)) == 0);
+  const std::string swept_csv = slurp(box.path("here/out.csv"));
+  CHECK(std::count(swept_csv.begin(), swept_csv.end(), '\n') == 5);  // the header and 4 points
+  CHECK(shell(in_here + " optimize - --format json -o best.json <" + shell_word(study)) == 0);
+  CHECK(slurp(box.path("here/best.json")).find("best_design") != std::string::npos);
 }
 
 }  // namespace

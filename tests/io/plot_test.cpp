@@ -1,7 +1,16 @@
 #include "io/plot.hpp"
 
+#include <fcntl.h>
+#include <poll.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
+#include <thread>
 
 #include <catch2/catch.hpp>
 
@@ -31,6 +40,95 @@ TEST_CASE("A plot renders to a real PNG at a path with underscores") {
   in.read(signature, 8);
   CHECK(std::string(signature + 1, 3) == "PNG");
   CHECK(std::filesystem::file_size(png) > 1000);
+  std::filesystem::remove_all(dir);
+}
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// Reads a FIFO in the background until its writer closes it, or nothing
+// comes for 10 s (so that a writer that never opens it cannot hang the test).
+class FifoReader {
+ public:
+  explicit FifoReader(const std::string& path)
+      : fd_(::open(path.c_str(), O_RDONLY | O_NONBLOCK)), thread_([this] { run(); }) {}
+  std::string finish() {
+    thread_.join();
+    if (fd_ >= 0) ::close(fd_);
+    return text_;
+  }
+
+ private:
+  void run() {
+    char buffer[1 << 16];
+    while (fd_ >= 0) {
+      pollfd wanted{fd_, POLLIN, 0};
+      if (::poll(&wanted, 1, 10'000) <= 0) return;
+      const ssize_t n = ::read(fd_, buffer, sizeof buffer);
+      if (n > 0) text_.append(buffer, static_cast<std::size_t>(n));
+      if (n == 0 || (n < 0 && errno != EAGAIN && errno != EINTR)) return;
+    }
+  }
+  int fd_;
+  std::string text_;
+  std::thread thread_;
+};
+
+// Runs `f` with this process's standard output going to a file; returns what reached it.
+template <typename F>
+std::string standard_output_of(const std::string& file, F f) {
+  std::fflush(stdout);
+  const int saved = ::dup(1);
+  const int into = ::open(file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
+  ::dup2(into, 1);
+  ::close(into);
+  f();
+  std::fflush(stdout);
+  ::dup2(saved, 1);
+  ::close(saved);
+  return slurp(file);
+}
+
+TEST_CASE("A plot gnuplot cannot draw fails with its message on one line, no file and nothing on stdout") {
+  const auto dir = std::filesystem::temp_directory_path() / "sweetspot_plot_fail_test";
+  std::filesystem::create_directories(dir);
+  const std::string png = (dir / "empty.png").string();
+  // No point at all: gnuplot warns "Skipping data file with no valid points", then fails.
+  const Plot empty{"empty", "x (m)", "y (N)", std::nullopt, std::nullopt,
+                   {PlotSeries{"none", {}, {}}}, {}, {}};
+  std::string why;
+  bool rendered = true;
+  const std::string printed =
+      standard_output_of((dir / "stdout").string(), [&] { rendered = render_png(empty, png, &why); });
+  CHECK_FALSE(rendered);
+  CHECK(printed.empty());
+  CHECK(why.find("gnuplot failed (exit status 1)") == 0);
+  CHECK(why.find("no valid points") != std::string::npos);
+  CHECK(why.find('\n') == std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(png));
+  CHECK(std::distance(std::filesystem::directory_iterator(dir), {}) == 1);  // stdout only
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("A plot onto a FIFO is the whole PNG, and the FIFO stays one") {
+  const auto dir = std::filesystem::temp_directory_path() / "sweetspot_plot_fifo_test";
+  std::filesystem::create_directories(dir);
+  const std::string fifo = (dir / "plot.png").string();
+  REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+  FifoReader reader(fifo);
+  std::string why;
+  CHECK(render_png(two_points("through a pipe"), fifo, &why));
+  const std::string received = reader.finish();
+  REQUIRE(received.size() > 1000);
+  CHECK(received.compare(0, 4, "\x89PNG") == 0);
+  CHECK(received.compare(received.size() - 8, 4, "IEND") == 0);
+  struct stat info {};
+  REQUIRE(::lstat(fifo.c_str(), &info) == 0);
+  CHECK(S_ISFIFO(info.st_mode));
   std::filesystem::remove_all(dir);
 }
 
