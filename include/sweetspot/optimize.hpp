@@ -74,6 +74,10 @@ struct Summary {
   // Objective of the best point after each evaluation, feasible points ranking
   // before infeasible ones (which rank by their constraint violation).
   std::vector<double> history;
+  // The best point's constraint violation after each evaluation: the largest
+  // excess over a limit in multiples of that constraint's tolerance (0 within
+  // every limit, <= 1 feasible).
+  std::vector<double> violation_history;
 
   std::string brief_report() const;
 };
@@ -84,7 +88,9 @@ bool is_known_algorithm(const std::string& name);
 // Minimises problem.evaluate's objective within the bounds subject to the
 // constraints. Throws std::invalid_argument for an invalid problem or options
 // (sizes, bounds, start outside the bounds, unknown algorithm). Failing to
-// converge is not an exception: it is in Summary::termination.
+// converge is not an exception: it is in Summary::termination. The start is
+// evaluated whatever the budget, so the Summary always holds a point; a spent
+// budget ends the run with MAXEVAL_REACHED or MAXTIME_REACHED.
 Summary minimize(const Problem& problem, const OptimizeOptions& options);
 
 // Central-difference gradient of f at x with step h_i = step_rel (upper_i -
