@@ -464,8 +464,14 @@ Summary minimize(const Problem& problem, const OptimizeOptions& options) {
   std::string algorithm_used;
   std::string termination;
 
+  // A smooth problem with bounds only and two or more variables: BOBYQA's
+  // quadratic models, built from single evaluations, are cheaper than SLSQP's
+  // difference gradients (2n evaluations each). With constraints, or along
+  // one variable (where SLSQP's secant steps converge in a few), SLSQP; with
+  // kinks, COBYLA.
   const auto default_local = [&] {
-    return problem.smooth ? nlopt::LD_SLSQP : nlopt::LN_COBYLA;
+    if (!problem.smooth) return nlopt::LN_COBYLA;
+    return problem.constraints.empty() && n >= 2 ? nlopt::LN_BOBYQA : nlopt::LD_SLSQP;
   };
   const auto local_choice = [&]() -> nlopt::algorithm {
     return options.local_algorithm == "auto" ? default_local()
@@ -476,32 +482,35 @@ Summary minimize(const Problem& problem, const OptimizeOptions& options) {
   evaluator.values(problem.start);
   try {
     if (options.algorithm == "auto") {
-      // Global stage: low-discrepancy samples of the box, the start first.
-      const std::size_t count = std::max<std::size_t>(8, options.samples_per_variable * n);
-      std::vector<std::vector<double>> candidates{problem.start};
+      // A local search from the start, then a global check costing no more
+      // than it did: low-discrepancy samples of the box. A sample better
+      // than the local optimum lies in another basin; the search goes on
+      // from it (at most local_starts searches in all).
+      const nlopt::algorithm local = local_choice();
+      algorithm_used = std::string("auto: ") + nlopt_algorithm_to_string(static_cast<nlopt_algorithm>(local)) +
+                       " from the start";
+      termination = run_nlopt(local, std::nullopt, problem, options, evaluator, problem.start).termination;
+      const std::size_t most = std::max<std::size_t>(n + 1, options.samples_per_variable * n);
+      const std::size_t count =
+          std::clamp<std::size_t>(static_cast<std::size_t>(evaluator.evaluations()), n + 1, most);
+      std::size_t sampled = 0;
+      const std::vector<double> local_best = evaluator.best_x();
       for (const auto& unit : halton(count, n, options.seed)) {
+        if (evaluator.spent()) break;
         std::vector<double> x(n);
         for (std::size_t i = 0; i < n; ++i) {
           x[i] = problem.lower[i] + unit[i] * (problem.upper[i] - problem.lower[i]);
         }
-        candidates.push_back(std::move(x));
+        evaluator.values(x);
+        ++sampled;
       }
-      const nlopt::algorithm local = local_choice();
-      algorithm_used = "auto: " + std::to_string(candidates.size()) + " Halton samples + " +
-                       nlopt_algorithm_to_string(static_cast<nlopt_algorithm>(local));
-      std::vector<std::vector<double>> scored;  // values, for ranking
-      for (const auto& x : candidates) scored.push_back(evaluator.values(x));
-      std::vector<std::size_t> order(candidates.size());
-      std::iota(order.begin(), order.end(), 0);
-      std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-        return evaluator.better(scored[a], scored[b]);
-      });
-      // Local stage from the best few.
-      const int starts = std::min<int>(options.local_starts, static_cast<int>(order.size()));
-      algorithm_used += " from the best " + std::to_string(starts);
-      for (int s = 0; s < starts && !evaluator.spent(); ++s) {
-        termination = run_nlopt(local, std::nullopt, problem, options, evaluator,
-                                candidates[order[s]]).termination;
+      if (sampled < count) termination = evaluator.spent_reason();
+      const bool sample_better = evaluator.best_x() != local_best;
+      algorithm_used += ", " + std::to_string(sampled) + " Halton samples" +
+                        (sample_better ? "" : std::string(" (none better)"));
+      if (sample_better && options.local_starts >= 2 && !evaluator.spent()) {
+        algorithm_used += ", again from the best sample";
+        termination = run_nlopt(local, std::nullopt, problem, options, evaluator, evaluator.best_x()).termination;
       }
     } else {
       const nlopt::algorithm chosen = *algorithm_from_name(options.algorithm);

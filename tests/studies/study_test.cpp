@@ -5,9 +5,11 @@
 #include "studies/study.hpp"
 #include "studies/sweep.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <string>
 #include <sstream>
 #include <utility>
 #include <vector>
@@ -223,6 +225,49 @@ TEST_CASE("An infeasible study says so and returns the least violating design") 
   const OptimizationResult r = run_optimization(study);
   CHECK_FALSE(r.summary.feasible);
   CHECK_FALSE(r.constraints[0].satisfied);
+}
+
+TEST_CASE("auto costs at most twice the best single algorithm on every shipped study, and finds the best optimum") {
+  // The single algorithms run from the study's start; "best" is the cheapest
+  // that reaches the best objective any of them (or auto) finds. Where the
+  // optimum lies on equality constraints, an algorithm may end anywhere
+  // within their tolerance (1e-6 of the limit), which moves the objective by
+  // about as much: optima agreeing to 1e-5 are the same.
+  constexpr double kSameOptimum = 1e-5;  // relative
+  for (const char* name : {"1-lowest-wrist-force-table1-ranges.json", "2-lowest-wrist-force-fixed-feel.json",
+                           "3a-cop-on-node-table1-racquet.json", "3b-cop-on-node-paper-beam.json",
+                           "4-robust-lowest-worst-wrist-force.json"}) {
+    Study study = load_study(studies() + name);
+    const Problem problem = make_problem(study);
+    const bool equality = std::any_of(study.constraints.begin(), study.constraints.end(),
+                                      [](const StudyConstraint& c) { return c.equals.has_value(); });
+    std::vector<std::string> singles{"LN_COBYLA"};
+    if (problem.smooth) singles.push_back("LD_SLSQP");
+    if (problem.smooth && !equality) singles.push_back("LD_MMA");
+    if (study.constraints.empty()) singles.push_back("LN_BOBYQA");
+    study.options.algorithm = "auto";
+    const OptimizationResult automatic = run_optimization(study);
+    REQUIRE(automatic.summary.feasible);
+    std::vector<std::pair<std::string, OptimizationResult>> runs;
+    double best = automatic.summary.objective;
+    for (const std::string& algorithm : singles) {
+      study.options.algorithm = algorithm;
+      runs.emplace_back(algorithm, run_optimization(study));
+      if (runs.back().second.summary.feasible) best = std::min(best, runs.back().second.summary.objective);
+    }
+    const double reached = best + kSameOptimum * std::max(1.0, std::abs(best));
+    int cheapest = std::numeric_limits<int>::max();
+    std::string report = std::string(name) + ": auto " + std::to_string(automatic.summary.evaluations);
+    for (const auto& [algorithm, r] : runs) {
+      report += ", " + algorithm + " " + std::to_string(r.summary.evaluations);
+      if (r.summary.feasible && r.summary.objective <= reached) {
+        cheapest = std::min(cheapest, r.summary.evaluations);
+      }
+    }
+    INFO(report << " (" << automatic.summary.algorithm << ")");
+    CHECK(automatic.summary.objective <= reached);
+    CHECK(automatic.summary.evaluations <= 2 * cheapest);
+  }
 }
 
 TEST_CASE("A sweep along the impact shares each row's design and writes what reading every point writes") {
