@@ -69,11 +69,12 @@ StudyVariable read_variable(ObjectReader& r, const Json& design, int grid_points
   }
   const double current = design.at(pointer).get<double>();
   const Json& values = array_at(r, "values", false);
-  for (std::size_t i = 0; i < values.size(); ++i) {
-    if (!values[i].is_number() || !std::isfinite(values[i].get<double>())) {
-      r.fail("values", "expected finite numbers, got " + brief(values[i]) + " at index " + std::to_string(i));
+  const auto value_pointer = [&](std::size_t k) { return r.pointer() + "/values/" + std::to_string(k); };
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    if (!values[k].is_number() || !std::isfinite(values[k].get<double>())) {
+      throw InputError(r.source(), value_pointer(k), "expected a finite number, got " + brief(values[k]));
     }
-    v.values.push_back(values[i].get<double>());
+    v.values.push_back(values[k].get<double>());
   }
   const auto min = r.number("min");
   const auto max = r.number("max");
@@ -84,6 +85,14 @@ StudyVariable read_variable(ObjectReader& r, const Json& design, int grid_points
     }
     v.min = *min;
     v.max = *max;
+    // Values outside the bounds would evaluate designs the study rules out.
+    for (std::size_t k = 0; k < v.values.size(); ++k) {
+      if (!(v.values[k] >= v.min && v.values[k] <= v.max)) {
+        throw InputError(r.source(), value_pointer(k),
+                         "must lie within [min, max] = [" + brief(Json(v.min)) + ", " + brief(Json(v.max)) +
+                             "], got " + brief(Json(v.values[k])));
+      }
+    }
   } else {
     v.min = *std::min_element(v.values.begin(), v.values.end());
     v.max = *std::max_element(v.values.begin(), v.values.end());
@@ -132,8 +141,14 @@ ImpactSpread read_spread(ObjectReader& r) {
   }
   spread.from_tip_lo_m = (*range)[0].get<double>();
   spread.from_tip_hi_m = (*range)[1].get<double>();
-  if (!(spread.from_tip_lo_m >= 0 && spread.from_tip_lo_m < spread.from_tip_hi_m)) {
-    r.fail("from_tip_m", "expected 0 <= nearest < farthest, got " + brief(*range));
+  if (!(spread.from_tip_lo_m >= 0)) {
+    throw InputError(r.source(), r.pointer() + "/from_tip_m/0",
+                     "the nearest impact must be >= 0 m from the tip, got " + brief((*range)[0]) + " m");
+  }
+  if (!(spread.from_tip_lo_m < spread.from_tip_hi_m)) {
+    throw InputError(r.source(), r.pointer() + "/from_tip_m/1",
+                     "the farthest impact must be farther from the tip than the nearest (" +
+                         brief((*range)[0]) + " m), got " + brief((*range)[1]) + " m");
   }
   const double points = r.number("points").value_or(8);
   if (!(points >= 2 && points <= 1000 && points == std::floor(points))) {
@@ -297,12 +312,20 @@ Study read_study(const Json& document, const std::string& source, const std::str
   }
   if (const Json* tolerances = top.child("tolerances")) {
     ObjectReader t(*tolerances, "/tolerances", "", source, nullptr);
-    o.x_tolerance_rel = t.number("x_rel").value_or(o.x_tolerance_rel);
-    o.f_tolerance_rel = t.number("f_rel").value_or(o.f_tolerance_rel);
+    const auto positive = [&](std::string_view key, double fallback) {
+      const auto value = t.number(key);
+      if (value && !(*value > 0)) t.fail(key, "must be > 0, got " + brief(Json(*value)));
+      return value.value_or(fallback);
+    };
+    o.x_tolerance_rel = positive("x_rel", o.x_tolerance_rel);
+    o.f_tolerance_rel = positive("f_rel", o.f_tolerance_rel);
+    o.max_seconds = positive("max_seconds", o.max_seconds);
     if (const auto max_evaluations = t.number("max_evaluations")) {
-      o.max_evaluations = static_cast<int>(std::clamp(*max_evaluations, 0.0, 1e9));
+      if (!(*max_evaluations >= 1 && *max_evaluations <= 1e9 && *max_evaluations == std::floor(*max_evaluations))) {
+        t.fail("max_evaluations", "must be a whole number in [1, 1e9], got " + brief(Json(*max_evaluations)));
+      }
+      o.max_evaluations = static_cast<int>(*max_evaluations);
     }
-    o.max_seconds = t.number("max_seconds").value_or(o.max_seconds);
     t.finish({"x_rel", "f_rel", "max_evaluations", "max_seconds"});
     if (const std::string why = o.validate(); !why.empty()) {
       throw InputError(source, "/tolerances", why);
@@ -369,11 +392,20 @@ Study read_study(const Json& document, const std::string& source, const std::str
       throw InputError(source, "/variables", "the start point is not a valid design: " + std::string(e.what()));
     }
   }();
-  if (study.fidelity == Fidelity::kModal) {
-    try {
-      evaluate_in(study, at_start);
-    } catch (const std::invalid_argument& e) {
-      rethrow_in(at_start, e);
+  try {
+    evaluate_in(study, at_start);
+  } catch (const std::invalid_argument& e) {
+    rethrow_in(at_start, e);
+  }
+  // Every impact of a spread must hit the implement (an impact off it has no
+  // value and would only ever be the optimizer's penalty).
+  if (study.over_impacts) {
+    const double length_m = at_start.design.implement.length_m();
+    if (study.over_impacts->from_tip_hi_m > length_m) {
+      throw InputError(source, "/objective/over_impacts/from_tip_m/1",
+                       "the farthest impact, " + brief(Json(study.over_impacts->from_tip_hi_m)) +
+                           " m from the tip, is off the implement, which is " + brief(Json(length_m)) +
+                           " m long (at the start); expected at most " + brief(Json(length_m)) + " m");
     }
   }
   return study;

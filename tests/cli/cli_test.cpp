@@ -406,6 +406,33 @@ TEST_CASE("An infeasible study writes its report and exits 2 naming /constraints
   CHECK(slurp(report).find("No feasible design was found") != std::string::npos);
 }
 
+TEST_CASE("An impact spread off the implement exits 2 naming the study's path, the value and the length") {
+  const Sandbox box;
+  const fs::path study = box.file("spread.json", std::string(R"({"design": ")") + SWEETSPOT_SOURCE_DIR +
+                                                     R"(/designs/table1/row1.json",
+      "variables": [{"path": "/implement/mass_kg", "min": 0.25, "max": 0.40}],
+      "objective": {"output": "peak_wrist_force_N", "over_impacts": {"from_tip_m": [0.1, 5.0]}}})");
+  const Run run = box.run("optimize \"" + study.string() + "\"");
+  CHECK(run.status == 2);
+  CHECK(run.out.empty());
+  CHECK(run.err.find(study.string() + ": /objective/over_impacts/from_tip_m/1: the farthest impact, 5.0 m") !=
+        std::string::npos);
+  CHECK(run.err.find("0.7 m long") != std::string::npos);
+}
+
+TEST_CASE("Sweep values outside the variable's bounds exit 2 naming the value's path and the range") {
+  const Sandbox box;
+  const fs::path study = box.file("sweep.json", std::string(R"({"design": ")") + SWEETSPOT_SOURCE_DIR +
+                                                    R"(/designs/table1/row1.json", "outputs": ["peak_wrist_force_N"],
+      "variables": [{"path": "/hand/mass_kg", "min": 0.3, "max": 0.6, "values": [0.3, 0.5, 0.9]}]})");
+  const fs::path csv = box.path("out.csv");
+  const Run run = box.run("sweep \"" + study.string() + "\" -q -o \"" + csv.string() + "\"");
+  CHECK(run.status == 2);
+  CHECK(run.err.find(study.string() + ": /variables/0/values/2: must lie within [min, max] = [0.3, 0.6], got 0.9") !=
+        std::string::npos);
+  CHECK_FALSE(fs::exists(csv));
+}
+
 TEST_CASE("A design's own fidelity is used unless the command line says otherwise") {
   const Sandbox box;
   const fs::path design = box.file("d.json", std::string(R"({"fidelity": "rigid", "implement": {"sections":

@@ -270,6 +270,64 @@ TEST_CASE("auto costs at most twice the best single algorithm on every shipped s
   }
 }
 
+TEST_CASE("Sweep values outside the variable's bounds are refused with their JSON path") {
+  const auto error_of = [](const char* values) {
+    try {
+      read_study(nlohmann::json::parse(std::string(R"({"design": "../table1/row1.json", "outputs": ["mass_kg"],
+          "variables": [{"path": "/frame/cor", "min": 0.6, "max": 0.8},
+                        {"path": "/hand/mass_kg", "min": 0.3, "max": 0.6, "values": )") + values + "}]}"),
+                 "study.json", studies());
+    } catch (const InputError& e) {
+      return e.pointer() + ": " + e.detail();
+    }
+    return std::string("(no error)");
+  };
+  CHECK(error_of("[0.3, 0.45, 0.6]") == "(no error)");
+  CHECK_THAT(error_of("[0.3, 0.7, 0.5]"),
+             Catch::StartsWith("/variables/1/values/1:") && Catch::Contains("0.7") && Catch::Contains("[0.3, 0.6]"));
+  CHECK_THAT(error_of("[0.29, 0.5]"), Catch::StartsWith("/variables/1/values/0:"));
+  CHECK_THAT(error_of("[0.5, \"x\"]"), Catch::StartsWith("/variables/1/values/1:") && Catch::Contains("finite number"));
+}
+
+TEST_CASE("An impact spread off the implement is refused naming its end and the implement's length") {
+  const auto error_of = [](const char* range) {
+    try {
+      read_study(nlohmann::json::parse(std::string(R"({"design": "../table1/row1.json",
+          "variables": [{"path": "/implement/mass_kg", "min": 0.25, "max": 0.4}],
+          "objective": {"output": "peak_wrist_force_N", "over_impacts": {"from_tip_m": )") + range + "}}}"),
+                 "study.json", studies());
+    } catch (const InputError& e) {
+      return e.pointer() + ": " + e.detail();
+    }
+    return std::string("(no error)");
+  };
+  CHECK(error_of("[0.1, 0.7]") == "(no error)");  // the butt itself is on the implement
+  CHECK_THAT(error_of("[0.1, 5.0]"), Catch::StartsWith("/objective/over_impacts/from_tip_m/1:") &&
+                                         Catch::Contains("5") && Catch::Contains("0.7 m long"));
+  CHECK_THAT(error_of("[-0.1, 0.2]"), Catch::StartsWith("/objective/over_impacts/from_tip_m/0:"));
+  CHECK_THAT(error_of("[0.2, 0.1]"), Catch::StartsWith("/objective/over_impacts/from_tip_m/1:"));
+}
+
+TEST_CASE("Optimizer tolerances are refused under their own keys") {
+  const auto error_of = [](const char* tolerances) {
+    try {
+      read_study(nlohmann::json::parse(std::string(R"({"design": "../table1/row1.json",
+          "variables": [{"path": "/implement/mass_kg", "min": 0.25, "max": 0.4}],
+          "objective": {"output": "peak_wrist_force_N"}, "tolerances": )") + tolerances + "}"),
+                 "study.json", studies());
+    } catch (const InputError& e) {
+      return e.pointer() + ": " + e.detail();
+    }
+    return std::string("(no error)");
+  };
+  CHECK(error_of(R"({"max_seconds": 1e-9, "max_evaluations": 1})") == "(no error)");
+  CHECK_THAT(error_of(R"({"x_rel": 0})"), Catch::StartsWith("/tolerances/x_rel:"));
+  CHECK_THAT(error_of(R"({"f_rel": -1})"), Catch::StartsWith("/tolerances/f_rel:"));
+  CHECK_THAT(error_of(R"({"max_seconds": 0})"), Catch::StartsWith("/tolerances/max_seconds:"));
+  CHECK_THAT(error_of(R"({"max_evaluations": 0})"), Catch::StartsWith("/tolerances/max_evaluations:"));
+  CHECK_THAT(error_of(R"({"max_evaluations": 2.5})"), Catch::StartsWith("/tolerances/max_evaluations:"));
+}
+
 TEST_CASE("A sweep along the impact shares each row's design and writes what reading every point writes") {
   // The oracle is the sweep that reads and evaluates every point on its own:
   // sharing a row's design (ImpactSweep) and splitting the grid among threads
