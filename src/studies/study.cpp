@@ -287,9 +287,8 @@ Study read_study(const Json& document, const std::string& source, const std::str
     if (c.min && c.max && !(*c.min <= *c.max)) {
       r.fail("min", "must be <= max, got min " + brief(Json(*c.min)) + " and max " + brief(Json(*c.max)));
     }
-    const double scale = std::max(1.0, std::abs(c.equals.value_or(c.max.value_or(c.min.value_or(0.0)))));
-    c.tolerance = r.number("tolerance").value_or(c.equals ? 1e-6 * scale : 1e-9 * scale);
-    if (!(c.tolerance > 0)) r.fail("tolerance", "must be > 0, got " + brief(Json(c.tolerance)));
+    c.tolerance = r.number("tolerance");
+    if (c.tolerance && !(*c.tolerance > 0)) r.fail("tolerance", "must be > 0, got " + brief(Json(*c.tolerance)));
     r.finish({"output", "min", "max", "equals", "tolerance"});
     study.constraints.push_back(c);
   }
@@ -428,14 +427,58 @@ DesignFile design_at(const Study& study, std::span<const double> x) {
   return read_design(document, study.design_source);
 }
 
+namespace {
+
+// Impact k of a spread, from the butt of an implement `length_m` long.
+double spread_from_butt(const ImpactSpread& spread, double length_m, int k) {
+  return length_m -
+         (spread.from_tip_lo_m + (spread.from_tip_hi_m - spread.from_tip_lo_m) * k / (spread.points - 1));
+}
+
+// Why an evaluation gives the objective terms no value, or std::nullopt.
+std::optional<std::string> terms_undefined(const Study& study, const Evaluation& e) {
+  for (const ObjectiveTerm& term : study.objective) {
+    if (!term.output->value(e)) {
+      return std::string(term.output->name) + " has no finite value (the physics puts it at infinity)";
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+double tolerance_at(const StudyConstraint& c, double limit) {
+  return c.tolerance ? *c.tolerance : kDefaultConstraintTolerance * std::max(1.0, std::abs(limit));
+}
+
+std::optional<std::string> objective_undefined(const Study& study, const DesignFile& design) {
+  try {
+    if (!study.over_impacts) return terms_undefined(study, evaluate_in(study, design));
+    const ImpactSpread& spread = *study.over_impacts;
+    Design d = design.design;
+    const double L = d.implement.length_m();
+    for (int k = 0; k < spread.points; ++k) {
+      const double x = spread_from_butt(spread, L, k);
+      if (!(x >= 0.0 && x <= L)) {
+        const double from_tip = spread.from_tip_lo_m + (spread.from_tip_hi_m - spread.from_tip_lo_m) * k / (spread.points - 1);
+        return "the impact " + brief(Json(from_tip)) + " m from the tip is off the implement, which is " +
+               brief(Json(L)) + " m long";
+      }
+      d.impact_from_butt_m = x;
+      if (auto why = terms_undefined(study, evaluate(d, study.fidelity, study.modal_tolerance))) return why;
+    }
+  } catch (const std::invalid_argument& e) {
+    return std::string(e.what());
+  }
+  return std::nullopt;
+}
+
 double objective_of(const Study& study, const DesignFile& design) {
   if (!study.over_impacts) return terms_value(study, evaluate_in(study, design));
   const ImpactSpread& spread = *study.over_impacts;
   Design d = design.design;
   const double L = d.implement.length_m();
-  const auto from_butt = [&](int k) {
-    return L - (spread.from_tip_lo_m + (spread.from_tip_hi_m - spread.from_tip_lo_m) * k / (spread.points - 1));
-  };
+  const auto from_butt = [&](int k) { return spread_from_butt(spread, L, k); };
   // The rigid model at many impacts shares everything but the impact (ImpactSweep).
   std::optional<ImpactSweep> rigid;
   if (study.fidelity == Fidelity::kRigid && !d.cor_rigid && !d.strings) rigid.emplace(d);

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include <catch2/catch.hpp>
+#include <fmt/format.h>
 
 #include "io/input_error.hpp"
 #include "sweetspot/roots.hpp"
@@ -224,7 +225,72 @@ TEST_CASE("An infeasible study says so and returns the least violating design") 
   study.constraints[0].max = 100.0;  // no racquet in the box swings that lightly
   const OptimizationResult r = run_optimization(study);
   CHECK_FALSE(r.summary.feasible);
-  CHECK_FALSE(r.constraints[0].satisfied);
+  CHECK(r.outcome == Outcome::kInfeasible);
+  REQUIRE(r.constraints.size() == 1);
+  const ConstraintReport& c = r.constraints[0];
+  CHECK_FALSE(c.satisfied);
+  REQUIRE(c.value.has_value());
+  CHECK(c.limit == 100.0);
+  CHECK(c.tolerance == kDefaultConstraintTolerance * 100.0);
+  CHECK(c.violation == *c.value - 100.0);
+  // The least violating design swings as lightly as the box allows: the
+  // lightest frame with its mass towards the handle, a corner of the box.
+  CHECK(*c.value == Approx(*find_output("swingweight_kg_cm2")->value(
+                               evaluate_in(study, design_at(study, std::vector<double>{0.25, 0.8}))))
+                        .epsilon(1e-9));
+}
+
+// A study whose one variable cannot change the swingweight (the ball's
+// speed), so the swingweight is the design's own and the judgement of a
+// constraint on it is exact arithmetic.
+Study study_with_swingweight_limit(const std::string& constraint) {
+  return read_study(nlohmann::json::parse(R"({"design": "../table1/row1.json",
+      "variables": [{"path": "/ball/speed_m_s", "min": 40, "max": 60}],
+      "objective": {"output": "peak_wrist_force_N"},
+      "constraints": [)" + constraint + "]}"),
+                    "study.json", studies());
+}
+
+TEST_CASE("A constraint missed by less than its default tolerance, 1e-6 of the limit, is met") {
+  const double swingweight =
+      *find_output("swingweight_kg_cm2")->value(evaluate(load_design(studies() + "../table1/row1.json").design));
+  const auto run = [&](double limit, const std::string& extra) {
+    return run_optimization(study_with_swingweight_limit(
+        R"({"output": "swingweight_kg_cm2", "min": )" + fmt::format("{:.17g}", limit) + extra + "}"));
+  };
+  // Short of the limit by 3e-8 of it (the "309.99999 >= 310" of the issue): met.
+  const OptimizationResult within = run(swingweight * (1 + 3e-8), "");
+  REQUIRE(within.constraints.size() == 1);
+  CHECK(within.constraints[0].limit == swingweight * (1 + 3e-8));
+  CHECK(within.constraints[0].tolerance == 1e-6 * within.constraints[0].limit);
+  CHECK(within.constraints[0].violation > 0.0);
+  CHECK(within.constraints[0].satisfied);
+  CHECK(within.outcome == Outcome::kOptimum);
+  CHECK(within.summary.feasible);
+  // Short by 2e-6 of it: twice the tolerance, violated.
+  const OptimizationResult beyond = run(swingweight * (1 + 2e-6), "");
+  CHECK_FALSE(beyond.constraints[0].satisfied);
+  CHECK(beyond.outcome == Outcome::kInfeasible);
+  // The study's own tolerance overrides the default.
+  const OptimizationResult loose = run(swingweight * (1 + 2e-6), R"(, "tolerance": 0.01)");
+  CHECK(loose.constraints[0].tolerance == 0.01);
+  CHECK(loose.constraints[0].satisfied);
+}
+
+TEST_CASE("An objective with no value anywhere is reported as no valid design, never as the penalty") {
+  // A uniform beam hit at its centre of mass turns about no axis: the free
+  // rotation axis is at infinity whatever the ball's speed.
+  const Study study = read_study(nlohmann::json::parse(R"({
+      "design": {"implement": {"sections": [{"length_m": 0.7, "mass_kg": 0.25}]}, "impact": {"from_butt_m": 0.35},
+                 "ball": {"speed_m_s": 50}},
+      "variables": [{"path": "/ball/speed_m_s", "min": 40, "max": 60}],
+      "objective": {"output": "rotation_axis_free_from_butt_m"}})"),
+                                 "study.json", studies());
+  REQUIRE_FALSE(find_output("rotation_axis_free_from_butt_m")->value(evaluate_in(study, design_at(study, std::vector<double>{50}))));
+  const OptimizationResult r = run_optimization(study);
+  CHECK(r.outcome == Outcome::kNoValue);
+  CHECK_THAT(r.no_value, Catch::Contains("rotation_axis_free_from_butt_m"));
+  CHECK_FALSE(r.start_objective.has_value());
 }
 
 TEST_CASE("auto costs at most twice the best single algorithm on every shipped study, and finds the best optimum") {
