@@ -18,9 +18,14 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// Thrown from inside NLopt callbacks when the evaluation budget is spent;
-// NLopt turns it into a forced stop.
-struct BudgetSpent {};
+// Thrown from inside NLopt callbacks when the budget is spent or a local
+// search has stalled; NLopt turns it into a forced stop.
+struct SearchStopped {};
+
+// A local search that finds no better point in this many gradients' worth of
+// evaluations (2n + 1 each) has stalled: SLSQP, given constraints no point of
+// the box meets, can otherwise wander until the budget is spent.
+constexpr int kStallGradients = 20;
 
 std::optional<nlopt::algorithm> algorithm_from_name(const std::string& name) {
   for (int i = 0; i < NLOPT_NUM_ALGORITHMS; ++i) {
@@ -96,14 +101,30 @@ class Evaluator {
   const std::vector<double>& best_x() const { return best_x_; }
   const std::vector<double>& best_values() const { return best_values_; }
   std::vector<double>& history() { return history_; }
+  std::vector<double>& violation_history() { return violation_history_; }
   double seconds() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
-  bool spent() const {
-    return evaluations_ >= options_.max_evaluations || seconds() >= options_.max_seconds;
+  // Stops the search after `limit` evaluations without a better point (from
+  // now; 0: never).
+  void set_stall_limit(int limit) {
+    stall_limit_ = limit;
+    last_progress_ = evaluations_;
+  }
+  bool stalled() const { return stall_limit_ > 0 && evaluations_ - last_progress_ >= stall_limit_; }
+  std::string stall_reason() const {
+    return "STALLED (sweetspot: no better point in " + std::to_string(stall_limit_) + " evaluations)";
+  }
+  // The budget never stops the first evaluation, so that every run has a
+  // best point however small its budget.
+  bool spent() const { return evaluations_ >= 1 && (out_of_evaluations() || out_of_time()); }
+  // Why the budget stopped the run, in NLopt's words.
+  std::string spent_reason() const {
+    return out_of_evaluations() ? "MAXEVAL_REACHED (sweetspot's budget, including differences)"
+                                : "MAXTIME_REACHED (sweetspot's budget)";
   }
 
  private:
   std::vector<double> evaluate(std::span<const double> x) {
-    if (spent()) throw BudgetSpent{};
+    if (spent() || stalled()) throw SearchStopped{};
     std::vector<double> v(1 + m_);
     problem_.evaluate(x, v[0], std::span<double>(v).subspan(1));
     for (double& value : v) {
@@ -111,21 +132,33 @@ class Evaluator {
     }
     ++evaluations_;
     if (best_x_.empty() || better(v, best_values_)) {
+      if (best_x_.empty() || improves(v, best_values_)) last_progress_ = evaluations_;
       best_x_.assign(x.begin(), x.end());
       best_values_ = v;
     }
     history_.push_back(best_values_[0]);
+    violation_history_.push_back(violation(best_values_));
     return v;
   }
+  // Better than b by more than the objective tolerance (or feasible where b is not).
+  bool improves(const std::vector<double>& a, const std::vector<double>& b) const {
+    const double va = violation(a), vb = violation(b);
+    const bool fa = va <= 1.0, fb = vb <= 1.0;
+    if (fa != fb) return fa;
+    return fa ? b[0] - a[0] > options_.f_tolerance_rel * std::abs(b[0]) : vb - va > options_.f_tolerance_rel * vb;
+  }
+  bool out_of_evaluations() const { return evaluations_ >= options_.max_evaluations; }
+  bool out_of_time() const { return seconds() >= options_.max_seconds; }
 
   const Problem& problem_;
   const OptimizeOptions& options_;
   std::size_t n_, m_;
   Clock::time_point start_;
   int evaluations_ = 0;
+  int stall_limit_ = 0, last_progress_ = 0;
   std::vector<double> cache_x_, cache_values_;
   std::vector<std::vector<double>> cache_jacobian_;
-  std::vector<double> best_x_, best_values_, history_;
+  std::vector<double> best_x_, best_values_, history_, violation_history_;
 };
 
 // NLopt works on the unit box u in [0, 1]^n (x = lower + u (upper - lower))
@@ -166,7 +199,7 @@ double objective_callback(unsigned n, const double* u, double* grad, void* data)
       for (unsigned i = 0; i < n; ++i) grad[i] = row[i] * s.range[i] / s.objective;
     }
     return f;
-  } catch (const BudgetSpent&) {
+  } catch (const SearchStopped&) {
     throw nlopt::forced_stop();
   }
 }
@@ -189,7 +222,7 @@ void constraints_callback(unsigned m, double* result, unsigned n, const double* 
         for (unsigned i = 0; i < n; ++i) grad[k * n + i] = rows[1 + c][i] * s.range[i] / s.constraint[c];
       }
     }
-  } catch (const BudgetSpent&) {
+  } catch (const SearchStopped&) {
     throw nlopt::forced_stop();
   }
 }
@@ -221,12 +254,12 @@ void set_box_and_stopping(nlopt::opt& opt, const OptimizeOptions& options, const
 }
 
 // Runs `opt` from u and says how it ended (NLopt's exceptions as words).
-std::string run_to_end(nlopt::opt& opt, std::vector<double> u, const Evaluator& evaluator) {
+std::string run_once(nlopt::opt& opt, std::vector<double> u, const Evaluator& evaluator) {
   double f = 0.0;
   try {
     return result_name(opt.optimize(u, f));
   } catch (const nlopt::forced_stop&) {
-    return evaluator.spent() ? "MAXEVAL_REACHED (sweetspot's budget, including differences)" : "FORCESTOP";
+    return evaluator.spent() ? evaluator.spent_reason() : evaluator.stalled() ? evaluator.stall_reason() : "FORCESTOP";
   } catch (const nlopt::roundoff_limited&) {
     return "ROUNDOFF_LIMITED";
   } catch (const std::invalid_argument& e) {
@@ -234,6 +267,14 @@ std::string run_to_end(nlopt::opt& opt, std::vector<double> u, const Evaluator& 
   } catch (const std::runtime_error& e) {
     return std::string("FAILURE: ") + e.what();
   }
+}
+
+// run_once, a local search stopped when it stalls (global ones explore).
+std::string run_to_end(nlopt::opt& opt, std::vector<double> u, Evaluator& evaluator, bool local) {
+  if (local) evaluator.set_stall_limit(kStallGradients * (2 * static_cast<int>(u.size()) + 1));
+  const std::string ended = run_once(opt, std::move(u), evaluator);
+  evaluator.set_stall_limit(0);
+  return ended;
 }
 
 // One NLopt run from x0. Constraints are added when the algorithm takes them.
@@ -282,7 +323,9 @@ RunResult run_nlopt(nlopt::algorithm algorithm, std::optional<nlopt::algorithm> 
     local_opt.set_ftol_rel(options.f_tolerance_rel);
     opt.set_local_optimizer(local_opt);
   }
-  return {run_to_end(opt, scaling.to_u(x0), evaluator)};
+  const std::string name = nlopt_algorithm_to_string(static_cast<nlopt_algorithm>(algorithm));
+  const bool local_search = name.starts_with("LD_") || name.starts_with("LN_");
+  return {run_to_end(opt, scaling.to_u(x0), evaluator, local_search)};
 }
 
 // The least-violation stage: when no feasible point has been found, the
@@ -299,7 +342,7 @@ double violation_callback(unsigned, const double* u, double*, void* data) {
   auto* cb = static_cast<ViolationCallback*>(data);
   try {
     return cb->evaluator->violation(cb->evaluator->values(cb->scaling->to_x(u)));
-  } catch (const BudgetSpent&) {
+  } catch (const SearchStopped&) {
     throw nlopt::forced_stop();
   }
 }
@@ -311,7 +354,7 @@ std::string reduce_violation(const Problem& problem, const OptimizeOptions& opti
   nlopt::opt opt(nlopt::LN_COBYLA, static_cast<unsigned>(problem.lower.size()));
   set_box_and_stopping(opt, options, evaluator);
   opt.set_min_objective(violation_callback, &callback);
-  return run_to_end(opt, scaling.to_u(evaluator.best_x()), evaluator);
+  return run_to_end(opt, scaling.to_u(evaluator.best_x()), evaluator, true);
 }
 
 // Halton points in [0,1)^n, shifted by a seeded random vector (mod 1).
@@ -421,43 +464,54 @@ Summary minimize(const Problem& problem, const OptimizeOptions& options) {
   std::string algorithm_used;
   std::string termination;
 
+  // A smooth problem with bounds only and two or more variables: BOBYQA's
+  // quadratic models, built from single evaluations, are cheaper than SLSQP's
+  // difference gradients (2n evaluations each). With constraints, or along
+  // one variable (where SLSQP's secant steps converge in a few), SLSQP; with
+  // kinks, COBYLA.
   const auto default_local = [&] {
-    return problem.smooth ? nlopt::LD_SLSQP : nlopt::LN_COBYLA;
+    if (!problem.smooth) return nlopt::LN_COBYLA;
+    return problem.constraints.empty() && n >= 2 ? nlopt::LN_BOBYQA : nlopt::LD_SLSQP;
   };
   const auto local_choice = [&]() -> nlopt::algorithm {
     return options.local_algorithm == "auto" ? default_local()
                                              : *algorithm_from_name(options.local_algorithm);
   };
 
+  // The start first: whatever the budget, the run then has a best point.
+  evaluator.values(problem.start);
   try {
     if (options.algorithm == "auto") {
-      // Global stage: low-discrepancy samples of the box, the start first.
-      const std::size_t count = std::max<std::size_t>(8, options.samples_per_variable * n);
-      std::vector<std::vector<double>> candidates{problem.start};
+      // A local search from the start, then a global check costing no more
+      // than it did: low-discrepancy samples of the box. A sample better
+      // than the local optimum lies in another basin; the search goes on
+      // from it (at most local_starts searches in all).
+      const nlopt::algorithm local = local_choice();
+      algorithm_used = std::string("auto: ") + nlopt_algorithm_to_string(static_cast<nlopt_algorithm>(local)) +
+                       " from the start";
+      termination = run_nlopt(local, std::nullopt, problem, options, evaluator, problem.start).termination;
+      const std::size_t most = std::max<std::size_t>(n + 1, options.samples_per_variable * n);
+      const std::size_t count =
+          std::clamp<std::size_t>(static_cast<std::size_t>(evaluator.evaluations()), n + 1, most);
+      std::size_t sampled = 0;
+      const std::vector<double> local_best = evaluator.best_x();
       for (const auto& unit : halton(count, n, options.seed)) {
+        if (evaluator.spent()) break;
         std::vector<double> x(n);
         for (std::size_t i = 0; i < n; ++i) {
           x[i] = problem.lower[i] + unit[i] * (problem.upper[i] - problem.lower[i]);
         }
-        candidates.push_back(std::move(x));
+        evaluator.values(x);
+        ++sampled;
       }
-      std::vector<std::vector<double>> scored;  // values, for ranking
-      for (const auto& x : candidates) scored.push_back(evaluator.values(x));
-      std::vector<std::size_t> order(candidates.size());
-      std::iota(order.begin(), order.end(), 0);
-      std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-        return evaluator.better(scored[a], scored[b]);
-      });
-      // Local stage from the best few.
-      const nlopt::algorithm local = local_choice();
-      const int starts = std::min<int>(options.local_starts, static_cast<int>(order.size()));
-      for (int s = 0; s < starts && !evaluator.spent(); ++s) {
-        termination = run_nlopt(local, std::nullopt, problem, options, evaluator,
-                                candidates[order[s]]).termination;
+      if (sampled < count) termination = evaluator.spent_reason();
+      const bool sample_better = evaluator.best_x() != local_best;
+      algorithm_used += ", " + std::to_string(sampled) + " Halton samples" +
+                        (sample_better ? "" : std::string(" (none better)"));
+      if (sample_better && options.local_starts >= 2 && !evaluator.spent()) {
+        algorithm_used += ", again from the best sample";
+        termination = run_nlopt(local, std::nullopt, problem, options, evaluator, evaluator.best_x()).termination;
       }
-      algorithm_used = "auto: " + std::to_string(candidates.size()) + " Halton samples + " +
-                       nlopt_algorithm_to_string(static_cast<nlopt_algorithm>(local)) + " from the best " +
-                       std::to_string(starts);
     } else {
       const nlopt::algorithm chosen = *algorithm_from_name(options.algorithm);
       const std::string name = options.algorithm;
@@ -465,24 +519,25 @@ Summary minimize(const Problem& problem, const OptimizeOptions& options) {
       std::optional<nlopt::algorithm> local;
       if (needs_local) local = local_choice();
       nlopt::srand(options.seed);
-      termination = run_nlopt(chosen, local, problem, options, evaluator, problem.start).termination;
       algorithm_used = name;
       if (local) {
         algorithm_used += std::string(" with ") +
                           nlopt_algorithm_to_string(static_cast<nlopt_algorithm>(*local));
       }
+      termination = run_nlopt(chosen, local, problem, options, evaluator, problem.start).termination;
       // Global algorithms stop on the budget, not on a tolerance: polish locally.
       if (name.starts_with("GN_") && !evaluator.spent()) {
         const nlopt::algorithm polish = default_local();
-        termination = run_nlopt(polish, std::nullopt, problem, options, evaluator,
-                                evaluator.best_x()).termination;
         algorithm_used += std::string(" + ") +
                           nlopt_algorithm_to_string(static_cast<nlopt_algorithm>(polish)) + " polish";
+        termination = run_nlopt(polish, std::nullopt, problem, options, evaluator,
+                                evaluator.best_x()).termination;
       }
     }
-  } catch (const BudgetSpent&) {
-    termination = "MAXEVAL_REACHED (sweetspot's budget, including differences)";
+  } catch (const SearchStopped&) {
+    termination = evaluator.spent_reason();
   }
+  if (algorithm_used.empty()) algorithm_used = options.algorithm;
   if (!problem.constraints.empty() && evaluator.violation(evaluator.best_values()) > 1.0 &&
       !evaluator.spent()) {
     termination = reduce_violation(problem, options, evaluator);
@@ -499,6 +554,7 @@ Summary minimize(const Problem& problem, const OptimizeOptions& options) {
   summary.algorithm = algorithm_used;
   summary.termination = termination;
   summary.history = std::move(evaluator.history());
+  summary.violation_history = std::move(evaluator.violation_history());
   return summary;
 }
 

@@ -2,6 +2,7 @@
 #include "sweetspot/optimize.hpp"
 
 #include <cmath>
+#include <string>
 
 #include <catch2/catch.hpp>
 
@@ -121,6 +122,85 @@ TEST_CASE("The evaluation budget counts difference evaluations and is never exce
   const Summary s = minimize(rosenbrock(), options);
   CHECK(s.evaluations <= 25);
   CHECK(s.termination.find("MAXEVAL") != std::string::npos);
+}
+
+TEST_CASE("A time budget too short for one step ends cleanly with the start as the best point") {
+  // 1e-9 s is spent before the first evaluation ends: the start is evaluated
+  // all the same (a run always has a best point), then the budget stops the
+  // search, constrained or not, local, global or auto.
+  Problem constrained = rosenbrock();
+  constrained.constraints = {{"x + y <= 1", ConstraintKind::kAtMostZero, 1e-9}};
+  constrained.evaluate = [](std::span<const double> x, double& f, std::span<double> c) {
+    f = (1 - x[0]) * (1 - x[0]) + 100 * (x[1] - x[0] * x[0]) * (x[1] - x[0] * x[0]);
+    c[0] = x[0] + x[1] - 1.0;
+  };
+  for (const Problem& p : {rosenbrock(), constrained}) {
+    // GN_DIRECT_L takes bounds only.
+    const char* global = p.constraints.empty() ? "GN_DIRECT_L" : "GN_ISRES";
+    for (const char* algorithm : {"auto", "LD_SLSQP", "LN_COBYLA", global}) {
+      for (const double seconds : {1e-9, 1e-5}) {
+        INFO(algorithm << ", " << p.constraints.size() << " constraints, max_seconds " << seconds);
+        OptimizeOptions options;
+        options.algorithm = algorithm;
+        options.max_seconds = seconds;
+        const Summary s = minimize(p, options);
+        REQUIRE(s.x.size() == 2);
+        CHECK(s.evaluations >= 1);
+        CHECK(s.history.size() == static_cast<std::size_t>(s.evaluations));
+        CHECK(s.violation_history.size() == static_cast<std::size_t>(s.evaluations));
+        CHECK(std::isfinite(s.objective));
+        CHECK(s.termination.find("MAXTIME_REACHED") != std::string::npos);
+        if (seconds == 1e-9) {
+          CHECK(s.evaluations == 1);
+          CHECK(s.x == p.start);
+        }
+      }
+    }
+  }
+}
+
+TEST_CASE("An evaluation budget of one evaluates the start and nothing else") {
+  OptimizeOptions options;
+  options.max_evaluations = 1;
+  for (const char* algorithm : {"auto", "LD_SLSQP", "GN_DIRECT_L"}) {
+    INFO(algorithm);
+    options.algorithm = algorithm;
+    const Summary s = minimize(rosenbrock(), options);
+    CHECK(s.evaluations == 1);
+    CHECK(s.x == rosenbrock().start);
+    CHECK(s.termination.find("MAXEVAL_REACHED") != std::string::npos);
+  }
+}
+
+TEST_CASE("The violation history follows the best point: zero once feasible, its excess over tolerance when not") {
+  // min x + y on the unit disc from (0.5, 0.5), which is feasible (0.5 <= 1).
+  Problem disc;
+  disc.lower = {-2, -2};
+  disc.upper = {2, 2};
+  disc.start = {0.5, 0.5};
+  disc.constraints = {{"disc", ConstraintKind::kAtMostZero, 1e-10}};
+  disc.evaluate = [](std::span<const double> x, double& f, std::span<double> c) {
+    f = x[0] + x[1];
+    c[0] = x[0] * x[0] + x[1] * x[1] - 1.0;
+  };
+  const Summary feasible = minimize(disc, OptimizeOptions{});
+  REQUIRE(feasible.violation_history.size() == static_cast<std::size_t>(feasible.evaluations));
+  CHECK(feasible.violation_history.front() == 0.0);
+  CHECK(feasible.violation_history.back() <= 1.0);
+  // x >= 3 on [0, 1]: the least violating x = 1 is 2 short, 2e9 tolerances.
+  Problem p;
+  p.lower = {0};
+  p.upper = {1};
+  p.start = {0.5};
+  p.constraints = {{"x >= 3", ConstraintKind::kAtMostZero, 1e-9}};
+  p.evaluate = [](std::span<const double> x, double& f, std::span<double> c) {
+    f = x[0];
+    c[0] = 3.0 - x[0];
+  };
+  const Summary s = minimize(p, OptimizeOptions{});
+  REQUIRE_FALSE(s.violation_history.empty());
+  CHECK(s.violation_history.front() == Approx(2.5e9).epsilon(1e-12));
+  CHECK(s.violation_history.back() == Approx(2.0e9).epsilon(1e-6));
 }
 
 TEST_CASE("A flat objective terminates at a finite point") {

@@ -40,9 +40,13 @@ struct Problem {
 
 struct OptimizeOptions {
   // An NLopt algorithm name (LD_SLSQP, LD_MMA, LN_COBYLA, LN_BOBYQA,
-  // GN_DIRECT_L, GN_ISRES, G_MLSL_LDS, ...) or "auto": low-discrepancy samples
-  // of the box, then a local search from the best few (LD_SLSQP with
-  // central-difference gradients when smooth, LN_COBYLA otherwise).
+  // GN_DIRECT_L, GN_ISRES, G_MLSL_LDS, ...) or "auto": a local search from the
+  // start (smooth: LN_BOBYQA with bounds only and n >= 2, else LD_SLSQP with
+  // central-difference gradients; not smooth: LN_COBYLA), then as many
+  // low-discrepancy samples of the box as it cost
+  // (n + 1 to samples_per_variable n), then a second local search from the
+  // best sample if one beats the first optimum. auto thus costs at most about
+  // twice its local search.
   std::string algorithm = "auto";
   // The local algorithm for G_MLSL / G_MLSL_LDS / AUGLAG, or for "auto"'s
   // local stage ("auto": chosen as above).
@@ -54,7 +58,8 @@ struct OptimizeOptions {
   unsigned long seed = 1;          // for stochastic algorithms and "auto"'s samples
   // Central differences step, relative to each variable's range.
   double difference_step_rel = 1e-6;
-  // "auto": samples per variable in the global stage and local searches run.
+  // "auto": the most samples per variable in the global check, and the most
+  // local searches (1: from the start only; 2: also from a better sample).
   int samples_per_variable = 8;
   int local_starts = 2;
 
@@ -74,6 +79,10 @@ struct Summary {
   // Objective of the best point after each evaluation, feasible points ranking
   // before infeasible ones (which rank by their constraint violation).
   std::vector<double> history;
+  // The best point's constraint violation after each evaluation: the largest
+  // excess over a limit in multiples of that constraint's tolerance (0 within
+  // every limit, <= 1 feasible).
+  std::vector<double> violation_history;
 
   std::string brief_report() const;
 };
@@ -84,7 +93,9 @@ bool is_known_algorithm(const std::string& name);
 // Minimises problem.evaluate's objective within the bounds subject to the
 // constraints. Throws std::invalid_argument for an invalid problem or options
 // (sizes, bounds, start outside the bounds, unknown algorithm). Failing to
-// converge is not an exception: it is in Summary::termination.
+// converge is not an exception: it is in Summary::termination. The start is
+// evaluated whatever the budget, so the Summary always holds a point; a spent
+// budget ends the run with MAXEVAL_REACHED or MAXTIME_REACHED.
 Summary minimize(const Problem& problem, const OptimizeOptions& options);
 
 // Central-difference gradient of f at x with step h_i = step_rel (upper_i -

@@ -27,18 +27,25 @@ void OptimizeCommand::add_to(CLI::App& app) {
 int OptimizeCommand::run() const {
   const io::Study study = io::load_study(study_path);
   const io::OptimizationResult result = io::run_optimization(study);
+  // The report is complete whatever the outcome: an infeasible study's names
+  // the least violating design and each violated constraint.
   out.emit(io::optimization_report(study, result, out.parsed(), true));
-  if (out.parsed() == io::Format::kMarkdown && !out.output.empty()) {
+  if (out.parsed() == io::Format::kMarkdown && !out.output.empty() && result.outcome == io::Outcome::kOptimum) {
     std::cerr << result.summary.brief_report() << "\n";
   }
   const int plotted = plot.empty() ? kExitOk : render_or_warn(io::convergence_plot(study, result), plot);
-  if (!result.summary.feasible) {
-    // The report (the least infeasible design) is complete; the study is what is wrong.
-    std::cerr << "sweetspot: " << study.source
-              << ": /constraints: no design within the variables' bounds satisfies them all\n";
-    return kExitBadInput;
+  if (plotted != kExitOk) return plotted;  // a file that could not be written comes first
+  switch (result.outcome) {
+    case io::Outcome::kOptimum: return kExitOk;
+    case io::Outcome::kInfeasible:
+      std::cerr << "sweetspot: " << study.source
+                << ": no design meets the constraints; the report gives the least violating one\n";
+      return kExitInfeasible;
+    case io::Outcome::kNoValue:
+      std::cerr << "sweetspot: " << study.source << ": no valid design was found: " << result.no_value << "\n";
+      return kExitInfeasible;
   }
-  return plotted;
+  return kExitOk;
 }
 
 void SweepCommand::add_to(CLI::App& app) {

@@ -203,6 +203,10 @@ std::string gnuplot_script(const Plot& plot, const std::string& png_path) {
   if (plot.log_y) s += "set logscale y\nset format y '10^{%L}'\n";
   if (plot.x_range) s += fmt::format("set xrange [{}:{}]\n", plot.x_range->first, plot.x_range->second);
   if (plot.y_range) s += fmt::format("set yrange [{}:{}]\n", plot.y_range->first, plot.y_range->second);
+  if (!plot.y2_label.empty()) {
+    s += "set y2label " + label(plot.y2_label) + "\nset ytics nomirror\nset y2tics\n";
+    if (plot.log_y2) s += "set logscale y2\nset format y2 '10^{%L}'\n";
+  }
   int tag = 1;
   for (const auto& [x, text] : plot.vertical_lines) {
     s += fmt::format("set arrow {} from {},graph 0 to {},graph 1 nohead dt 2 lc rgb 'gray40'\n", tag,
@@ -222,8 +226,9 @@ std::string gnuplot_script(const Plot& plot, const std::string& png_path) {
     bool broken = true;
     for (std::size_t k = 0; k < series.x.size(); ++k) {
       const auto& y = series.y[k];
-      const bool off_log = (plot.log_y && y && *y <= 0) || (plot.log_x && series.x[k] <= 0);
-      if (!y || !on_plot(plot, *y) || off_log) {
+      const bool log_y = series.right_axis ? plot.log_y2 : plot.log_y;
+      const bool off_log = (log_y && y && *y <= 0) || (plot.log_x && series.x[k] <= 0);
+      if (!y || (!series.right_axis && !on_plot(plot, *y)) || off_log) {
         if (!broken) s += "\n";
         broken = true;
         continue;
@@ -236,7 +241,8 @@ std::string gnuplot_script(const Plot& plot, const std::string& png_path) {
   s += "plot ";
   for (std::size_t i = 0; i < plot.series.size(); ++i) {
     if (i) s += ", \\\n     ";
-    s += fmt::format("$series{} using 1:2 with {} title {}", i, plot.series[i].style,
+    s += fmt::format("$series{} using 1:2{} with {} title {}", i,
+                     plot.series[i].right_axis ? " axes x1y2" : "", plot.series[i].style,
                      label(plot.series[i].title));
   }
   return s + "\n";

@@ -15,6 +15,7 @@ struct PlotSeries {
   std::vector<double> x;
   std::vector<std::optional<double>> y;  // std::nullopt (and points off the y range) break the line
   std::string style = "lines lw 2";
+  bool right_axis = false;  // drawn against the second y axis (Plot::y2_label)
 };
 
 struct PlotMarker {
@@ -35,6 +36,8 @@ struct Plot {
   std::string key_position = "top right";
   bool log_x = false;
   bool log_y = false;  // gnuplot's words: "bottom left", "outside right", ...
+  std::string y2_label{};  // the second y axis, on the right, for series with right_axis
+  bool log_y2 = false;
 };
 
 // The gnuplot script that draws `plot` into `png_path` ("": gnuplot's

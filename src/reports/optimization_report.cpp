@@ -24,22 +24,48 @@ std::string goal_phrase(const ObjectiveTerm& term) {
   return "";
 }
 
+const char* outcome_name(Outcome outcome) {
+  switch (outcome) {
+    case Outcome::kOptimum: return "optimum";
+    case Outcome::kInfeasible: return "infeasible";
+    case Outcome::kNoValue: return "no_value";
+  }
+  return "";
+}
+
+std::optional<double> output_value(const OutputSpec& o, const std::optional<Evaluation>& e) {
+  return e ? o.value(*e) : std::nullopt;
+}
+
+std::string with_unit(double value, std::string_view unit, int digits = 6) {
+  return unit.empty() ? significant(value, digits) : significant(value, digits) + " " + std::string(unit);
+}
+
+// "`swingweight_kg_cm2 <= 100` is 234 kg cm^2, outside its limit by 134 (tolerance 0.0001)".
+std::string violated(const ConstraintReport& c) {
+  if (!c.value) return fmt::format("`{}` has no value", c.name);
+  return fmt::format("`{}` is {}, outside its limit by {} (tolerance {})", c.name, with_unit(*c.value, c.unit, 4),
+                     significant(c.violation, 4), significant(c.tolerance));
+}
+
 }  // namespace
 
 std::string optimization_report(const Study& study, const OptimizationResult& r, Format format,
                                 bool with_timing) {
-  const Evaluation start = evaluate_in(study, r.start);
-  const Evaluation best = evaluate_in(study, r.best);
+  const std::optional<Evaluation>& start = r.start_outputs;
+  const std::optional<Evaluation>& best = r.best_outputs;
   const ObjectiveTerm& lead = study.objective.front();
-  const auto lead_value = [&](const Evaluation& e) { return lead.output->value(e); };
+  const bool has_value = r.outcome != Outcome::kNoValue;
 
   if (format == Format::kJson) {
     Json j;
     j["name"] = study.name;
+    j["outcome"] = outcome_name(r.outcome);
+    if (r.outcome == Outcome::kNoValue) j["no_value_reason"] = r.no_value;
     j["best_design"] = design_to_json(r.best);
-    j["objective_value"] = r.summary.objective;
-    j["start_objective_value"] = r.start_objective;
-    j["feasible"] = r.summary.feasible;
+    j["objective_value"] = has_value ? Json(r.summary.objective) : Json(nullptr);
+    j["start_objective_value"] = r.start_objective ? Json(*r.start_objective) : Json(nullptr);
+    j["feasible"] = r.outcome == Outcome::kOptimum;
     j["evaluations"] = r.summary.evaluations;
     j["termination"] = r.summary.termination;
     j["algorithm"] = r.summary.algorithm;
@@ -54,12 +80,15 @@ std::string optimization_report(const Study& study, const OptimizationResult& r,
     j["constraints"] = Json::array();
     for (const ConstraintReport& c : r.constraints) {
       j["constraints"].push_back({{"constraint", c.name},
-                                  {"value", std::isnan(c.value) ? Json(nullptr) : Json(c.value)},
+                                  {"value", c.value ? Json(*c.value) : Json(nullptr)},
+                                  {"limit", c.limit},
+                                  {"tolerance", c.tolerance},
+                                  {"violation", c.value ? Json(c.violation) : Json(nullptr)},
                                   {"satisfied", c.satisfied},
                                   {"active", c.active}});
     }
     for (const OutputSpec& o : output_specs()) {
-      const auto a = o.value(start), b = o.value(best);
+      const auto a = output_value(o, start), b = output_value(o, best);
       j["outputs_start"][std::string(o.name)] = a ? Json(*a) : Json(nullptr);
       j["outputs_best"][std::string(o.name)] = b ? Json(*b) : Json(nullptr);
     }
@@ -68,7 +97,7 @@ std::string optimization_report(const Study& study, const OptimizationResult& r,
   if (format == Format::kCsv) {
     std::string csv = "output,start,best\n";
     for (const OutputSpec& o : output_specs()) {
-      const auto a = o.value(start), b = o.value(best);
+      const auto a = output_value(o, start), b = output_value(o, best);
       csv += fmt::format("{},{},{}\n", o.name, a ? exact(*a) : "", b ? exact(*b) : "");
     }
     return csv;
@@ -86,26 +115,48 @@ std::string optimization_report(const Study& study, const OptimizationResult& r,
   for (const ConstraintReport& c : r.constraints) {
     if (c.active) active += (active.empty() ? "" : ", ") + c.name;
   }
-  const auto best_lead = lead_value(best);
-  const auto start_lead = lead_value(start);
+  const auto best_lead = output_value(*lead.output, best);
+  const auto start_lead = output_value(*lead.output, start);
+  const std::string spread =
+      study.over_impacts ? fmt::format(" ({} over impacts {}–{} m from the tip)",
+                                       study.over_impacts->reduce == ImpactSpread::Reduce::kMax ? "worst case" : "mean",
+                                       significant(study.over_impacts->from_tip_lo_m),
+                                       significant(study.over_impacts->from_tip_hi_m))
+                         : std::string();
+  // The lead output at the best design and at the start: over a spread of
+  // impacts that is the objective itself.
+  const std::string best_text =
+      study.over_impacts ? significant(r.summary.objective, 4) : (best_lead ? significant(*best_lead, 4) : "—");
+  const std::string start_text =
+      study.over_impacts ? (r.start_objective ? significant(*r.start_objective, 4) : "no value")
+                         : (start_lead ? significant(*start_lead, 4) : "no value");
   std::string md = fmt::format("# {}\n\n", md_cell(study.name));
   if (!study.question.empty()) md += "**Question.** " + study.question + "\n\n";
-  md += fmt::format("**Answer.** The {} `{}`{} is {} {} (the starting design gives {}), with {}.{}{}\n\n",
-                    goal_phrase(lead), lead.output->name,
-                    study.over_impacts ? fmt::format(" ({} over impacts {}–{} m from the tip)",
-                                                     study.over_impacts->reduce == ImpactSpread::Reduce::kMax ? "worst case" : "mean",
-                                                     significant(study.over_impacts->from_tip_lo_m),
-                                                     significant(study.over_impacts->from_tip_hi_m))
-                                       : std::string(),
-                    study.over_impacts ? significant(r.summary.objective, 4)
-                                       : (best_lead ? significant(*best_lead, 4) : std::string("—")),
-                    lead.output->unit,
-                    study.over_impacts ? significant(r.start_objective, 4)
-                                       : (start_lead ? significant(*start_lead, 4) : std::string("—")),
-                    changes,
-                    active.empty() ? " No constraint is active." : " Active constraints: " + active + ".",
-                    r.summary.feasible ? "" : " **No feasible design was found; this is the least infeasible.**");
-  if (lead.goal == Goal::kTarget && study.objective.size() == 1 && !study.over_impacts && best_lead &&
+  switch (r.outcome) {
+    case Outcome::kOptimum:
+      md += fmt::format("**Answer.** The {} `{}`{} is {} {} (the starting design gives {}), with {}.{}\n\n",
+                        goal_phrase(lead), lead.output->name, spread, best_text, lead.output->unit, start_text,
+                        changes,
+                        active.empty() ? " No constraint is active." : " Active constraints: " + active + ".");
+      break;
+    case Outcome::kInfeasible: {
+      std::string broken;
+      for (const ConstraintReport& c : r.constraints) {
+        if (!c.satisfied) broken += (broken.empty() ? "" : "; ") + violated(c);
+      }
+      md += fmt::format("**Answer.** No design meets the constraints; the least violating one is {}, where {}. "
+                        "Its `{}`{} is {} {} (the starting design gives {}).\n\n",
+                        changes, broken, lead.output->name, spread, best_text, lead.output->unit, start_text);
+      break;
+    }
+    case Outcome::kNoValue:
+      md += fmt::format("**Answer.** No valid design was found: no design the search reached gives `{}`{} a "
+                        "value. At the last one it kept, {}, {}.\n\n",
+                        lead.output->name, spread, changes, r.no_value);
+      break;
+  }
+  if (r.outcome == Outcome::kOptimum && lead.goal == Goal::kTarget && study.objective.size() == 1 &&
+      !study.over_impacts && best_lead &&
       std::abs(*best_lead - lead.target) > kTargetReached * std::max(1.0, std::abs(lead.target))) {
     md += fmt::format("The target {} cannot be reached within the variables' bounds: {} {} is as close as "
                       "these designs get.\n\n",
@@ -118,37 +169,58 @@ std::string optimization_report(const Study& study, const OptimizationResult& r,
                       significant(r.start_x[i]), significant(r.summary.x[i]));
   }
   if (!r.constraints.empty()) {
-    md += "\n## Constraints\n\n| constraint | value at the optimum | satisfied | active |\n|---|---:|---|---|\n";
+    md += "\n## Constraints\n\nA constraint is met when its value lies within its tolerance of the limit (the "
+          "study's, or 10⁻⁶ of the limit's size, at least 10⁻⁶).\n\n"
+          "| constraint | value at the best design | tolerance | outside the limit by | satisfied | active |\n"
+          "|---|---:|---:|---:|---|---|\n";
     for (const ConstraintReport& c : r.constraints) {
-      md += fmt::format("| `{}` | {} | {} | {} |\n", c.name,
-                        std::isnan(c.value) ? std::string("—") : significant(c.value), c.satisfied ? "yes" : "**no**",
-                        c.active ? "yes" : "no");
+      md += fmt::format("| `{}` | {} | {} | {} | {} | {} |\n", c.name, c.value ? significant(*c.value) : "—",
+                        significant(c.tolerance), c.value ? significant(c.violation) : "—",
+                        c.satisfied ? "yes" : "**no**", c.active ? "yes" : "no");
     }
   }
   md += fmt::format("\n## Search\n\nObjective (minimised form) {} after {} evaluations; {}; NLopt termination: {}.{}\n",
-                    significant(r.summary.objective), r.summary.evaluations, r.summary.algorithm,
-                    r.summary.termination,
+                    has_value ? significant(r.summary.objective) : std::string("—"), r.summary.evaluations,
+                    r.summary.algorithm, r.summary.termination,
                     with_timing ? fmt::format(" Wall time {:.2f} ms.", r.summary.seconds * 1e3) : std::string());
   md += "\n## Outputs, start and optimum\n\n| output | start | optimum | unit |\n|---|---:|---:|---|\n";
   for (const OutputSpec& o : output_specs()) {
-    const auto a = o.value(start), b = o.value(best);
+    const auto a = output_value(o, start), b = output_value(o, best);
     md += fmt::format("| `{}` | {} | {} | {} |\n", o.name, a ? significant(*a) : "—", b ? significant(*b) : "—", o.unit);
   }
-  md += "\nThe best design as a design file (`sweetspot evaluate` accepts it):\n\n```json\n" +
-        design_to_json(r.best).dump(2) + "\n```\n";
+  md += std::string(r.outcome == Outcome::kOptimum ? "\nThe best design"
+                    : r.outcome == Outcome::kInfeasible ? "\nThe least violating design"
+                                                        : "\nThe last design the search kept") +
+        " as a design file (`sweetspot evaluate` accepts it):\n\n```json\n" + design_to_json(r.best).dump(2) +
+        "\n```\n";
   return md;
 }
 
 Plot convergence_plot(const Study& study, const OptimizationResult& r) {
-  PlotSeries series{"best objective so far", {}, {}, "lines lw 2"};
+  PlotSeries objective{"best objective so far", {}, {}, "lines lw 2"};
   for (std::size_t i = 0; i < r.summary.history.size(); ++i) {
-    series.x.push_back(static_cast<double>(i + 1));
+    objective.x.push_back(static_cast<double>(i + 1));
     const double value = r.summary.history[i];
-    series.y.push_back(std::abs(value) < kPenalty / 10 ? std::optional(value) : std::nullopt);
+    objective.y.push_back(std::abs(value) < kPenalty / 10 ? std::optional(value) : std::nullopt);
   }
-  return Plot{"Convergence: " + study.name, "evaluation (including difference gradients)",
-              fmt::format("objective ({})", study.objective.front().output->name), std::nullopt,
-              std::nullopt, {series}, {}, {}};
+  Plot plot{"Convergence: " + study.name, "evaluation (including difference gradients)",
+            fmt::format("objective ({})", study.objective.front().output->name), std::nullopt,
+            std::nullopt, {objective}, {}, {}};
+  if (!r.constraints.empty()) {
+    // Beside the objective, on its own logarithmic axis: how far the best
+    // point is outside its worst limit (the line ends where every limit holds).
+    PlotSeries violation{"its worst constraint violation (right axis)", {}, {}, "lines lw 2 dt 2"};
+    violation.right_axis = true;
+    for (std::size_t i = 0; i < r.summary.violation_history.size(); ++i) {
+      violation.x.push_back(static_cast<double>(i + 1));
+      const double value = r.summary.violation_history[i];
+      violation.y.push_back(value > 0 && value < kPenalty / 10 ? std::optional(value) : std::nullopt);
+    }
+    plot.series.push_back(std::move(violation));
+    plot.y2_label = "constraint violation (multiples of its tolerance; <= 1 is met)";
+    plot.log_y2 = true;
+  }
+  return plot;
 }
 
 }  // namespace sweetspot::io

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 
 #include <fmt/format.h>
@@ -82,7 +83,7 @@ Problem make_problem(const Study& study) {
   for (const ProblemConstraint& pc : constraints) {
     problem.constraints.push_back(ConstraintInfo{
         constraint_name(pc), pc.which == ProblemConstraint::kEquals ? ConstraintKind::kZero : ConstraintKind::kAtMostZero,
-        pc.source->tolerance});
+        tolerance_at(*pc.source, limit_of(pc))});
   }
   const bool square = minimizes_square(study);
   problem.smooth = !(study.over_impacts && study.over_impacts->reduce == ImpactSpread::Reduce::kMax);
@@ -115,31 +116,77 @@ Problem make_problem(const Study& study) {
   return problem;
 }
 
+namespace {
+
+std::optional<Evaluation> outputs_of(const Study& study, const DesignFile& design, std::string* why) {
+  try {
+    return evaluate_in(study, design);
+  } catch (const std::invalid_argument& e) {
+    if (why) *why = e.what();
+    return std::nullopt;
+  }
+}
+
+}  // namespace
+
 OptimizationResult run_optimization(const Study& study) {
   if (study.objective.empty()) throw InputError(study.source, "/objective", "missing: optimize needs an objective");
+  for (std::size_t i = 0; i < study.variables.size(); ++i) {
+    const StudyVariable& v = study.variables[i];
+    if (!(v.min < v.max)) {
+      throw InputError(study.source, "/variables/" + std::to_string(i),
+                       "optimize needs a range: give \"min\" < \"max\" (the values span only " +
+                           significant(v.min) + ")");
+    }
+  }
   const Problem problem = make_problem(study);
   Summary summary = minimize(problem, study.options);
   if (minimizes_square(study)) {
     summary.objective = std::sqrt(summary.objective);
     for (double& value : summary.history) value = std::sqrt(value);
   }
-  DesignFile start = design_at(study, problem.start);
-  DesignFile best = design_at(study, summary.x);
-  const double start_objective = objective_of(study, start);
-  std::vector<ConstraintReport> reports;
-  const Evaluation e = evaluate_in(study, best);
-  const std::vector<ProblemConstraint> constraints = expand_constraints(study);
-  for (const ProblemConstraint& pc : constraints) {
-    const double value = constraint_value(pc, e);
-    const double limit = limit_of(pc);
-    const bool equality = pc.which == ProblemConstraint::kEquals;
-    reports.push_back(ConstraintReport{
-        constraint_name(pc), pc.source->output->value(e).value_or(std::nan("")),
-        equality ? std::abs(value) <= pc.source->tolerance : value <= pc.source->tolerance,
-        equality || std::abs(value) <= std::max(pc.source->tolerance, kActiveFraction * std::max(1.0, std::abs(limit)))});
+  DesignFile start = design_at(study, problem.start);  // valid: read_study checked it
+  // A point whose design is invalid carries only the penalty: the start
+  // (valid, and evaluated first) then stands for the search's answer.
+  std::string why;
+  std::optional<DesignFile> best;
+  try {
+    best.emplace(design_at(study, summary.x));
+  } catch (const InputError& e) {
+    why = e.detail();
+    summary.x = problem.start;
+    best.emplace(start);
   }
-  return OptimizationResult{std::move(summary), problem.start, std::move(start), std::move(best),
-                            start_objective, std::move(reports)};
+  OptimizationResult r{std::move(summary), problem.start, std::move(start), std::move(*best)};
+  r.start_outputs = outputs_of(study, r.start, nullptr);
+  if (!objective_undefined(study, r.start)) r.start_objective = objective_of(study, r.start);
+  r.best_outputs = outputs_of(study, r.best, why.empty() ? &why : nullptr);
+  if (why.empty()) why = objective_undefined(study, r.best).value_or("");
+
+  for (const ProblemConstraint& pc : expand_constraints(study)) {
+    ConstraintReport c;
+    c.name = constraint_name(pc);
+    c.unit = pc.source->output->unit;
+    c.limit = limit_of(pc);
+    c.tolerance = tolerance_at(*pc.source, c.limit);
+    c.value = r.best_outputs ? pc.source->output->value(*r.best_outputs) : std::nullopt;
+    if (c.value) {
+      const double signed_excess = constraint_value(pc, *r.best_outputs);
+      const bool equality = pc.which == ProblemConstraint::kEquals;
+      c.violation = equality ? std::abs(signed_excess) : std::max(0.0, signed_excess);
+      c.satisfied = c.violation <= c.tolerance;
+      c.active = equality ||
+                 std::abs(signed_excess) <= std::max(c.tolerance, kActiveFraction * std::max(1.0, std::abs(c.limit)));
+    } else {
+      c.violation = std::numeric_limits<double>::infinity();
+    }
+    r.constraints.push_back(std::move(c));
+  }
+  const bool all_met = std::all_of(r.constraints.begin(), r.constraints.end(),
+                                   [](const ConstraintReport& c) { return c.satisfied; });
+  r.outcome = !why.empty() ? Outcome::kNoValue : all_met ? Outcome::kOptimum : Outcome::kInfeasible;
+  r.no_value = why;
+  return r;
 }
 
 }  // namespace sweetspot::io

@@ -3,6 +3,7 @@
 // A study run as an optimisation: the problem handed to sweetspot::minimize
 // and the outcome with each constraint judged at the best design.
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,9 +17,20 @@ Problem make_problem(const Study& study);
 
 struct ConstraintReport {
   std::string name;  // "swingweight_kg_cm2 <= 330"
-  double value = 0.0;
-  bool satisfied = false;
-  bool active = false;  // on its limit: removing it would change the optimum
+  std::string unit;  // the output's, "" when dimensionless
+  std::optional<double> value;  // the output at the best design; std::nullopt: no finite value
+  double limit = 0.0;
+  double tolerance = 0.0;  // how far outside the limit still counts as on it (study's, or the default)
+  double violation = 0.0;  // how far outside the limit the value is (0 within it; a missing value: +inf)
+  bool satisfied = false;  // violation <= tolerance
+  bool active = false;     // on its limit: removing it would change the optimum
+};
+
+// How a study's optimisation ended.
+enum class Outcome {
+  kOptimum,     // the best design found meets every constraint
+  kInfeasible,  // no design found meets them all: the least violating one is reported
+  kNoValue,     // no design found gives the objective a value (only the optimizer's penalty)
 };
 
 struct OptimizationResult {
@@ -26,10 +38,16 @@ struct OptimizationResult {
   std::vector<double> start_x;
   DesignFile start;
   DesignFile best;
-  double start_objective = 0.0;
-  std::vector<ConstraintReport> constraints;
+  std::optional<double> start_objective{};  // std::nullopt: the objective has no value at the start
+  // Every output at the start and at the best design (std::nullopt: the model refuses the design).
+  std::optional<Evaluation> start_outputs{}, best_outputs{};
+  std::vector<ConstraintReport> constraints{};
+  Outcome outcome = Outcome::kOptimum;
+  std::string no_value{};  // kNoValue: why the best design gives the objective no value
 };
 
+// Runs the study's optimisation. Throws InputError for a study that cannot be
+// optimised (no objective, a variable without a range).
 OptimizationResult run_optimization(const Study& study);
 
 }  // namespace sweetspot::io

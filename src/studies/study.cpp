@@ -70,11 +70,12 @@ StudyVariable read_variable(ObjectReader& r, const Json& design, int grid_points
   }
   const double current = design.at(pointer).get<double>();
   const Json& values = array_at(r, "values", false);
-  for (std::size_t i = 0; i < values.size(); ++i) {
-    if (!values[i].is_number() || !std::isfinite(values[i].get<double>())) {
-      r.fail("values", "expected finite numbers, got " + brief(values[i]) + " at index " + std::to_string(i));
+  const auto value_pointer = [&](std::size_t k) { return r.pointer() + "/values/" + std::to_string(k); };
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    if (!values[k].is_number() || !std::isfinite(values[k].get<double>())) {
+      throw InputError(r.source(), value_pointer(k), "expected a finite number, got " + brief(values[k]));
     }
-    v.values.push_back(values[i].get<double>());
+    v.values.push_back(values[k].get<double>());
   }
   const auto min = r.number("min");
   const auto max = r.number("max");
@@ -85,6 +86,14 @@ StudyVariable read_variable(ObjectReader& r, const Json& design, int grid_points
     }
     v.min = *min;
     v.max = *max;
+    // Values outside the bounds would evaluate designs the study rules out.
+    for (std::size_t k = 0; k < v.values.size(); ++k) {
+      if (!(v.values[k] >= v.min && v.values[k] <= v.max)) {
+        throw InputError(r.source(), value_pointer(k),
+                         "must lie within [min, max] = [" + brief(Json(v.min)) + ", " + brief(Json(v.max)) +
+                             "], got " + brief(Json(v.values[k])));
+      }
+    }
   } else {
     v.min = *std::min_element(v.values.begin(), v.values.end());
     v.max = *std::max_element(v.values.begin(), v.values.end());
@@ -133,8 +142,14 @@ ImpactSpread read_spread(ObjectReader& r) {
   }
   spread.from_tip_lo_m = (*range)[0].get<double>();
   spread.from_tip_hi_m = (*range)[1].get<double>();
-  if (!(spread.from_tip_lo_m >= 0 && spread.from_tip_lo_m < spread.from_tip_hi_m)) {
-    r.fail("from_tip_m", "expected 0 <= nearest < farthest, got " + brief(*range));
+  if (!(spread.from_tip_lo_m >= 0)) {
+    throw InputError(r.source(), r.pointer() + "/from_tip_m/0",
+                     "the nearest impact must be >= 0 m from the tip, got " + brief((*range)[0]) + " m");
+  }
+  if (!(spread.from_tip_lo_m < spread.from_tip_hi_m)) {
+    throw InputError(r.source(), r.pointer() + "/from_tip_m/1",
+                     "the farthest impact must be farther from the tip than the nearest (" +
+                         brief((*range)[0]) + " m), got " + brief((*range)[1]) + " m");
   }
   const double points = r.number("points").value_or(8);
   if (!(points >= 2 && points <= 1000 && points == std::floor(points))) {
@@ -148,7 +163,6 @@ ImpactSpread read_spread(ObjectReader& r) {
   r.finish({"from_tip_m", "points", "reduce"});
   return spread;
 }
-
 
 double term_value(const ObjectiveTerm& term, const Evaluation& e) {
   const auto value = term.output->value(e);
@@ -273,9 +287,8 @@ Study read_study(const Json& document, const std::string& source, const std::str
     if (c.min && c.max && !(*c.min <= *c.max)) {
       r.fail("min", "must be <= max, got min " + brief(Json(*c.min)) + " and max " + brief(Json(*c.max)));
     }
-    const double scale = std::max(1.0, std::abs(c.equals.value_or(c.max.value_or(c.min.value_or(0.0)))));
-    c.tolerance = r.number("tolerance").value_or(c.equals ? 1e-6 * scale : 1e-9 * scale);
-    if (!(c.tolerance > 0)) r.fail("tolerance", "must be > 0, got " + brief(Json(c.tolerance)));
+    c.tolerance = r.number("tolerance");
+    if (c.tolerance && !(*c.tolerance > 0)) r.fail("tolerance", "must be > 0, got " + brief(Json(*c.tolerance)));
     r.finish({"output", "min", "max", "equals", "tolerance"});
     study.constraints.push_back(c);
   }
@@ -298,12 +311,20 @@ Study read_study(const Json& document, const std::string& source, const std::str
   }
   if (const Json* tolerances = top.child("tolerances")) {
     ObjectReader t(*tolerances, "/tolerances", "", source, nullptr);
-    o.x_tolerance_rel = t.number("x_rel").value_or(o.x_tolerance_rel);
-    o.f_tolerance_rel = t.number("f_rel").value_or(o.f_tolerance_rel);
+    const auto positive = [&](std::string_view key, double fallback) {
+      const auto value = t.number(key);
+      if (value && !(*value > 0)) t.fail(key, "must be > 0, got " + brief(Json(*value)));
+      return value.value_or(fallback);
+    };
+    o.x_tolerance_rel = positive("x_rel", o.x_tolerance_rel);
+    o.f_tolerance_rel = positive("f_rel", o.f_tolerance_rel);
+    o.max_seconds = positive("max_seconds", o.max_seconds);
     if (const auto max_evaluations = t.number("max_evaluations")) {
-      o.max_evaluations = static_cast<int>(std::clamp(*max_evaluations, 0.0, 1e9));
+      if (!(*max_evaluations >= 1 && *max_evaluations <= 1e9 && *max_evaluations == std::floor(*max_evaluations))) {
+        t.fail("max_evaluations", "must be a whole number in [1, 1e9], got " + brief(Json(*max_evaluations)));
+      }
+      o.max_evaluations = static_cast<int>(*max_evaluations);
     }
-    o.max_seconds = t.number("max_seconds").value_or(o.max_seconds);
     t.finish({"x_rel", "f_rel", "max_evaluations", "max_seconds"});
     if (const std::string why = o.validate(); !why.empty()) {
       throw InputError(source, "/tolerances", why);
@@ -370,11 +391,20 @@ Study read_study(const Json& document, const std::string& source, const std::str
       throw InputError(source, "/variables", "the start point is not a valid design: " + std::string(e.what()));
     }
   }();
-  if (study.fidelity == Fidelity::kModal) {
-    try {
-      evaluate_in(study, at_start);
-    } catch (const std::invalid_argument& e) {
-      rethrow_in(at_start, e);
+  try {
+    evaluate_in(study, at_start);
+  } catch (const std::invalid_argument& e) {
+    rethrow_in(at_start, e);
+  }
+  // Every impact of a spread must hit the implement (an impact off it has no
+  // value and would only ever be the optimizer's penalty).
+  if (study.over_impacts) {
+    const double length_m = at_start.design.implement.length_m();
+    if (study.over_impacts->from_tip_hi_m > length_m) {
+      throw InputError(source, "/objective/over_impacts/from_tip_m/1",
+                       "the farthest impact, " + brief(Json(study.over_impacts->from_tip_hi_m)) +
+                           " m from the tip, is off the implement, which is " + brief(Json(length_m)) +
+                           " m long (at the start); expected at most " + brief(Json(length_m)) + " m");
     }
   }
   std::vector<std::string> pointers;
@@ -412,6 +442,52 @@ DesignFile design_at(const Study& study, std::span<const double> x) {
   return read_design(document, study.design_source);
 }
 
+namespace {
+
+// Impact k of a spread, from the butt of an implement `length_m` long.
+double spread_from_butt(const ImpactSpread& spread, double length_m, int k) {
+  return length_m -
+         (spread.from_tip_lo_m + (spread.from_tip_hi_m - spread.from_tip_lo_m) * k / (spread.points - 1));
+}
+
+// Why an evaluation gives the objective terms no value, or std::nullopt.
+std::optional<std::string> terms_undefined(const Study& study, const Evaluation& e) {
+  for (const ObjectiveTerm& term : study.objective) {
+    if (!term.output->value(e)) {
+      return std::string(term.output->name) + " has no finite value (the physics puts it at infinity)";
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+double tolerance_at(const StudyConstraint& c, double limit) {
+  return c.tolerance ? *c.tolerance : kDefaultConstraintTolerance * std::max(1.0, std::abs(limit));
+}
+
+std::optional<std::string> objective_undefined(const Study& study, const DesignFile& design) {
+  try {
+    if (!study.over_impacts) return terms_undefined(study, evaluate_in(study, design));
+    const ImpactSpread& spread = *study.over_impacts;
+    Design d = design.design;
+    const double L = d.implement.length_m();
+    for (int k = 0; k < spread.points; ++k) {
+      const double x = spread_from_butt(spread, L, k);
+      if (!(x >= 0.0 && x <= L)) {
+        const double from_tip = spread.from_tip_lo_m + (spread.from_tip_hi_m - spread.from_tip_lo_m) * k / (spread.points - 1);
+        return "the impact " + brief(Json(from_tip)) + " m from the tip is off the implement, which is " +
+               brief(Json(L)) + " m long";
+      }
+      d.impact_from_butt_m = x;
+      if (auto why = terms_undefined(study, evaluate(d, study.fidelity, study.modal_tolerance))) return why;
+    }
+  } catch (const std::invalid_argument& e) {
+    return std::string(e.what());
+  }
+  return std::nullopt;
+}
+
 double objective_of(const Study& study, const DesignFile& design) { return objective_of(study, design.design); }
 
 double objective_of(const Study& study, const Design& design) {
@@ -419,9 +495,7 @@ double objective_of(const Study& study, const Design& design) {
   const ImpactSpread& spread = *study.over_impacts;
   Design d = design;
   const double L = d.implement.length_m();
-  const auto from_butt = [&](int k) {
-    return L - (spread.from_tip_lo_m + (spread.from_tip_hi_m - spread.from_tip_lo_m) * k / (spread.points - 1));
-  };
+  const auto from_butt = [&](int k) { return spread_from_butt(spread, L, k); };
   // The rigid model at many impacts shares everything but the impact (ImpactSweep).
   std::optional<ImpactSweep> rigid;
   if (study.fidelity == Fidelity::kRigid && !d.cor_rigid && !d.strings) rigid.emplace(d);

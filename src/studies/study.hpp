@@ -50,11 +50,19 @@ struct ImpactSpread {
   enum class Reduce { kMax, kMean } reduce = Reduce::kMax;
 };
 
+// A constraint's default tolerance, relative to its limit: 1e-6 max(1, |limit|).
+inline constexpr double kDefaultConstraintTolerance = 1e-6;
+
 struct StudyConstraint {
   const OutputSpec* output = nullptr;
   std::optional<double> min, max, equals;
-  double tolerance = 0.0;  // how far outside a limit still counts as on it
+  // How far outside a limit still counts as on it, in the output's unit;
+  // std::nullopt: kDefaultConstraintTolerance max(1, |limit|) for each limit.
+  std::optional<double> tolerance;
 };
+
+// The tolerance `c` is judged by at `limit` (one of its min, max, equals).
+double tolerance_at(const StudyConstraint& c, double limit);
 
 struct Study {
   std::string source;  // the study file
@@ -101,5 +109,11 @@ double objective_of(const Study& study, const Design& design);
 
 // The study's objective terms for one evaluation (kPenalty for an output at infinity).
 double terms_value(const Study& study, const Evaluation& evaluation);
+
+// Why the study's objective has no value for `design` (a model that refuses
+// it, an output at infinity, an impact of the spread off the implement), or
+// std::nullopt when it has one. Where objective_of returns kPenalty, this
+// says why; a penalty is never a result.
+std::optional<std::string> objective_undefined(const Study& study, const DesignFile& design);
 
 }  // namespace sweetspot::io

@@ -404,18 +404,75 @@ TEST_CASE("evaluate asks for the response model when the COR is to be derived") 
 
 namespace {
 
-TEST_CASE("An infeasible study writes its report and exits 2 naming /constraints") {
+TEST_CASE("An infeasible study writes its complete report and exits 3") {
   const Sandbox box;
   const fs::path study = box.file("infeasible.json", std::string(R"({"design": ")") + SWEETSPOT_SOURCE_DIR +
                                                          R"(/designs/table1/row1.json",
       "variables": [{"path": "/implement/mass_kg", "min": 0.25, "max": 0.40}],
       "objective": {"output": "peak_wrist_force_N"},
       "constraints": [{"output": "swingweight_kg_cm2", "max": 100}]})");
-  const fs::path report = box.path("report.md");
+  const fs::path report = box.file("report.md", "an earlier report");
+  const fs::path plot = box.path("convergence.png");
   const Run run = box.run("optimize \"" + study.string() + "\" --output \"" + report.string() + "\"");
+  CHECK(run.status == 3);
+  CHECK(run.err == "sweetspot: " + study.string() +
+                       ": no design meets the constraints; the report gives the least violating one\n");
+  const std::string text = slurp(report);
+  CHECK(text.find("No design meets the constraints; the least violating one is") != std::string::npos);
+  CHECK(text.find("`swingweight_kg_cm2 <= 100` is ") != std::string::npos);
+  CHECK(text.find("```\n") == text.size() - 4);  // complete: it ends with the design file
+  const Run json = box.run("optimize \"" + study.string() + "\" --format json");
+  CHECK(json.status == 3);
+  CHECK(nlohmann::json::parse(json.out)["outcome"] == "infeasible");
+}
+
+TEST_CASE("Any time budget ends the optimizer cleanly with the best point seen") {
+  const Sandbox box;
+  for (const char* algorithm : {"auto", "LD_SLSQP", "GN_DIRECT_L"}) {
+    for (const char* seconds : {"1e-9", "1e-5"}) {
+      INFO(algorithm << ", max_seconds " << seconds);
+      const fs::path study = box.file("budget.json", std::string(R"({"design": ")") + SWEETSPOT_SOURCE_DIR +
+                                                         R"(/designs/table1/row1.json",
+          "variables": [{"path": "/implement/mass_kg", "min": 0.25, "max": 0.40},
+                        {"path": "/implement/head_to_handle_mass_ratio", "min": 0.8, "max": 1.2}],
+          "objective": {"output": "peak_wrist_force_N"}, "algorithm": ")" + algorithm +
+                                                         R"(", "tolerances": {"max_seconds": )" + seconds + "}}");
+      const Run run = box.run("optimize \"" + study.string() + "\" --format json");
+      INFO(run.err);
+      REQUIRE(run.status == 0);
+      const nlohmann::json j = nlohmann::json::parse(run.out);
+      CHECK(j["evaluations"].get<int>() >= 1);
+      CHECK(j["termination"].get<std::string>().find("MAXTIME_REACHED") != std::string::npos);
+      CHECK(j["objective_value"].is_number());
+    }
+  }
+}
+
+TEST_CASE("An impact spread off the implement exits 2 naming the study's path, the value and the length") {
+  const Sandbox box;
+  const fs::path study = box.file("spread.json", std::string(R"({"design": ")") + SWEETSPOT_SOURCE_DIR +
+                                                     R"(/designs/table1/row1.json",
+      "variables": [{"path": "/implement/mass_kg", "min": 0.25, "max": 0.40}],
+      "objective": {"output": "peak_wrist_force_N", "over_impacts": {"from_tip_m": [0.1, 5.0]}}})");
+  const Run run = box.run("optimize \"" + study.string() + "\"");
   CHECK(run.status == 2);
-  CHECK(run.err.find(study.string() + ": /constraints: no design") != std::string::npos);
-  CHECK(slurp(report).find("No feasible design was found") != std::string::npos);
+  CHECK(run.out.empty());
+  CHECK(run.err.find(study.string() + ": /objective/over_impacts/from_tip_m/1: the farthest impact, 5.0 m") !=
+        std::string::npos);
+  CHECK(run.err.find("0.7 m long") != std::string::npos);
+}
+
+TEST_CASE("Sweep values outside the variable's bounds exit 2 naming the value's path and the range") {
+  const Sandbox box;
+  const fs::path study = box.file("sweep.json", std::string(R"({"design": ")") + SWEETSPOT_SOURCE_DIR +
+                                                    R"(/designs/table1/row1.json", "outputs": ["peak_wrist_force_N"],
+      "variables": [{"path": "/hand/mass_kg", "min": 0.3, "max": 0.6, "values": [0.3, 0.5, 0.9]}]})");
+  const fs::path csv = box.path("out.csv");
+  const Run run = box.run("sweep \"" + study.string() + "\" -q -o \"" + csv.string() + "\"");
+  CHECK(run.status == 2);
+  CHECK(run.err.find(study.string() + ": /variables/0/values/2: must lie within [min, max] = [0.3, 0.6], got 0.9") !=
+        std::string::npos);
+  CHECK_FALSE(fs::exists(csv));
 }
 
 TEST_CASE("A design's own fidelity is used unless the command line says otherwise") {

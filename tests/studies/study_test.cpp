@@ -5,14 +5,17 @@
 #include "studies/study.hpp"
 #include "studies/sweep.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <string>
 #include <sstream>
 #include <utility>
 #include <vector>
 
 #include <catch2/catch.hpp>
+#include <fmt/format.h>
 
 #include "io/input_error.hpp"
 #include "sweetspot/roots.hpp"
@@ -222,7 +225,173 @@ TEST_CASE("An infeasible study says so and returns the least violating design") 
   study.constraints[0].max = 100.0;  // no racquet in the box swings that lightly
   const OptimizationResult r = run_optimization(study);
   CHECK_FALSE(r.summary.feasible);
-  CHECK_FALSE(r.constraints[0].satisfied);
+  CHECK(r.outcome == Outcome::kInfeasible);
+  REQUIRE(r.constraints.size() == 1);
+  const ConstraintReport& c = r.constraints[0];
+  CHECK_FALSE(c.satisfied);
+  REQUIRE(c.value.has_value());
+  CHECK(c.limit == 100.0);
+  CHECK(c.tolerance == kDefaultConstraintTolerance * 100.0);
+  CHECK(c.violation == *c.value - 100.0);
+  // The least violating design swings as lightly as the box allows: the
+  // lightest frame with its mass towards the handle, a corner of the box.
+  CHECK(*c.value == Approx(*find_output("swingweight_kg_cm2")->value(
+                               evaluate_in(study, design_at(study, std::vector<double>{0.25, 0.8}))))
+                        .epsilon(1e-9));
+}
+
+// A study whose one variable cannot change the swingweight (the ball's
+// speed), so the swingweight is the design's own and the judgement of a
+// constraint on it is exact arithmetic.
+Study study_with_swingweight_limit(const std::string& constraint) {
+  return read_study(nlohmann::json::parse(R"({"design": "../table1/row1.json",
+      "variables": [{"path": "/ball/speed_m_s", "min": 40, "max": 60}],
+      "objective": {"output": "peak_wrist_force_N"},
+      "constraints": [)" + constraint + "]}"),
+                    "study.json", studies());
+}
+
+TEST_CASE("A constraint missed by less than its default tolerance, 1e-6 of the limit, is met") {
+  const double swingweight =
+      *find_output("swingweight_kg_cm2")->value(evaluate(load_design(studies() + "../table1/row1.json").design));
+  const auto run = [&](double limit, const std::string& extra) {
+    return run_optimization(study_with_swingweight_limit(
+        R"({"output": "swingweight_kg_cm2", "min": )" + fmt::format("{:.17g}", limit) + extra + "}"));
+  };
+  // Short of the limit by 3e-8 of it (the "309.99999 >= 310" of the issue): met.
+  const OptimizationResult within = run(swingweight * (1 + 3e-8), "");
+  REQUIRE(within.constraints.size() == 1);
+  CHECK(within.constraints[0].limit == swingweight * (1 + 3e-8));
+  CHECK(within.constraints[0].tolerance == 1e-6 * within.constraints[0].limit);
+  CHECK(within.constraints[0].violation > 0.0);
+  CHECK(within.constraints[0].satisfied);
+  CHECK(within.outcome == Outcome::kOptimum);
+  CHECK(within.summary.feasible);
+  // Short by 2e-6 of it: twice the tolerance, violated.
+  const OptimizationResult beyond = run(swingweight * (1 + 2e-6), "");
+  CHECK_FALSE(beyond.constraints[0].satisfied);
+  CHECK(beyond.outcome == Outcome::kInfeasible);
+  // The study's own tolerance overrides the default.
+  const OptimizationResult loose = run(swingweight * (1 + 2e-6), R"(, "tolerance": 0.01)");
+  CHECK(loose.constraints[0].tolerance == 0.01);
+  CHECK(loose.constraints[0].satisfied);
+}
+
+TEST_CASE("An objective with no value anywhere is reported as no valid design, never as the penalty") {
+  // A uniform beam hit at its centre of mass turns about no axis: the free
+  // rotation axis is at infinity whatever the ball's speed.
+  const Study study = read_study(nlohmann::json::parse(R"({
+      "design": {"implement": {"sections": [{"length_m": 0.7, "mass_kg": 0.25}]}, "impact": {"from_butt_m": 0.35},
+                 "ball": {"speed_m_s": 50}},
+      "variables": [{"path": "/ball/speed_m_s", "min": 40, "max": 60}],
+      "objective": {"output": "rotation_axis_free_from_butt_m"}})"),
+                                 "study.json", studies());
+  REQUIRE_FALSE(find_output("rotation_axis_free_from_butt_m")->value(evaluate_in(study, design_at(study, std::vector<double>{50}))));
+  const OptimizationResult r = run_optimization(study);
+  CHECK(r.outcome == Outcome::kNoValue);
+  CHECK_THAT(r.no_value, Catch::Contains("rotation_axis_free_from_butt_m"));
+  CHECK_FALSE(r.start_objective.has_value());
+}
+
+TEST_CASE("auto costs at most twice the best single algorithm on every shipped study, and finds the best optimum") {
+  // The single algorithms run from the study's start; "best" is the cheapest
+  // that reaches the best objective any of them (or auto) finds. Where the
+  // optimum lies on equality constraints, an algorithm may end anywhere
+  // within their tolerance (1e-6 of the limit), which moves the objective by
+  // about as much: optima agreeing to 1e-5 are the same.
+  constexpr double kSameOptimum = 1e-5;  // relative
+  for (const char* name : {"1-lowest-wrist-force-table1-ranges.json", "2-lowest-wrist-force-fixed-feel.json",
+                           "3a-cop-on-node-table1-racquet.json", "3b-cop-on-node-paper-beam.json",
+                           "4-robust-lowest-worst-wrist-force.json"}) {
+    Study study = load_study(studies() + name);
+    const Problem problem = make_problem(study);
+    const bool equality = std::any_of(study.constraints.begin(), study.constraints.end(),
+                                      [](const StudyConstraint& c) { return c.equals.has_value(); });
+    std::vector<std::string> singles{"LN_COBYLA"};
+    if (problem.smooth) singles.push_back("LD_SLSQP");
+    if (problem.smooth && !equality) singles.push_back("LD_MMA");
+    if (study.constraints.empty()) singles.push_back("LN_BOBYQA");
+    study.options.algorithm = "auto";
+    const OptimizationResult automatic = run_optimization(study);
+    REQUIRE(automatic.summary.feasible);
+    std::vector<std::pair<std::string, OptimizationResult>> runs;
+    double best = automatic.summary.objective;
+    for (const std::string& algorithm : singles) {
+      study.options.algorithm = algorithm;
+      runs.emplace_back(algorithm, run_optimization(study));
+      if (runs.back().second.summary.feasible) best = std::min(best, runs.back().second.summary.objective);
+    }
+    const double reached = best + kSameOptimum * std::max(1.0, std::abs(best));
+    int cheapest = std::numeric_limits<int>::max();
+    std::string report = std::string(name) + ": auto " + std::to_string(automatic.summary.evaluations);
+    for (const auto& [algorithm, r] : runs) {
+      report += ", " + algorithm + " " + std::to_string(r.summary.evaluations);
+      if (r.summary.feasible && r.summary.objective <= reached) {
+        cheapest = std::min(cheapest, r.summary.evaluations);
+      }
+    }
+    INFO(report << " (" << automatic.summary.algorithm << ")");
+    CHECK(automatic.summary.objective <= reached);
+    CHECK(automatic.summary.evaluations <= 2 * cheapest);
+  }
+}
+
+TEST_CASE("Sweep values outside the variable's bounds are refused with their JSON path") {
+  const auto error_of = [](const char* values) {
+    try {
+      read_study(nlohmann::json::parse(std::string(R"({"design": "../table1/row1.json", "outputs": ["mass_kg"],
+          "variables": [{"path": "/frame/cor", "min": 0.6, "max": 0.8},
+                        {"path": "/hand/mass_kg", "min": 0.3, "max": 0.6, "values": )") + values + "}]}"),
+                 "study.json", studies());
+    } catch (const InputError& e) {
+      return e.pointer() + ": " + e.detail();
+    }
+    return std::string("(no error)");
+  };
+  CHECK(error_of("[0.3, 0.45, 0.6]") == "(no error)");
+  CHECK_THAT(error_of("[0.3, 0.7, 0.5]"),
+             Catch::StartsWith("/variables/1/values/1:") && Catch::Contains("0.7") && Catch::Contains("[0.3, 0.6]"));
+  CHECK_THAT(error_of("[0.29, 0.5]"), Catch::StartsWith("/variables/1/values/0:"));
+  CHECK_THAT(error_of("[0.5, \"x\"]"), Catch::StartsWith("/variables/1/values/1:") && Catch::Contains("finite number"));
+}
+
+TEST_CASE("An impact spread off the implement is refused naming its end and the implement's length") {
+  const auto error_of = [](const char* range) {
+    try {
+      read_study(nlohmann::json::parse(std::string(R"({"design": "../table1/row1.json",
+          "variables": [{"path": "/implement/mass_kg", "min": 0.25, "max": 0.4}],
+          "objective": {"output": "peak_wrist_force_N", "over_impacts": {"from_tip_m": )") + range + "}}}"),
+                 "study.json", studies());
+    } catch (const InputError& e) {
+      return e.pointer() + ": " + e.detail();
+    }
+    return std::string("(no error)");
+  };
+  CHECK(error_of("[0.1, 0.7]") == "(no error)");  // the butt itself is on the implement
+  CHECK_THAT(error_of("[0.1, 5.0]"), Catch::StartsWith("/objective/over_impacts/from_tip_m/1:") &&
+                                         Catch::Contains("5") && Catch::Contains("0.7 m long"));
+  CHECK_THAT(error_of("[-0.1, 0.2]"), Catch::StartsWith("/objective/over_impacts/from_tip_m/0:"));
+  CHECK_THAT(error_of("[0.2, 0.1]"), Catch::StartsWith("/objective/over_impacts/from_tip_m/1:"));
+}
+
+TEST_CASE("Optimizer tolerances are refused under their own keys") {
+  const auto error_of = [](const char* tolerances) {
+    try {
+      read_study(nlohmann::json::parse(std::string(R"({"design": "../table1/row1.json",
+          "variables": [{"path": "/implement/mass_kg", "min": 0.25, "max": 0.4}],
+          "objective": {"output": "peak_wrist_force_N"}, "tolerances": )") + tolerances + "}"),
+                 "study.json", studies());
+    } catch (const InputError& e) {
+      return e.pointer() + ": " + e.detail();
+    }
+    return std::string("(no error)");
+  };
+  CHECK(error_of(R"({"max_seconds": 1e-9, "max_evaluations": 1})") == "(no error)");
+  CHECK_THAT(error_of(R"({"x_rel": 0})"), Catch::StartsWith("/tolerances/x_rel:"));
+  CHECK_THAT(error_of(R"({"f_rel": -1})"), Catch::StartsWith("/tolerances/f_rel:"));
+  CHECK_THAT(error_of(R"({"max_seconds": 0})"), Catch::StartsWith("/tolerances/max_seconds:"));
+  CHECK_THAT(error_of(R"({"max_evaluations": 0})"), Catch::StartsWith("/tolerances/max_evaluations:"));
+  CHECK_THAT(error_of(R"({"max_evaluations": 2.5})"), Catch::StartsWith("/tolerances/max_evaluations:"));
 }
 
 TEST_CASE("A sweep along the impact shares each row's design and writes what reading every point writes") {
