@@ -796,25 +796,41 @@ Assembled assemble(const Mesh& mesh, const HandCoupling* hand) {
   return out;
 }
 
+// A hand joined by neither spring nor dashpot moves on its own: its
+// translation and rotation are rigid-body motions too.
+bool hand_detached(const HandCoupling* hand) {
+  return hand && hand->stiffness_N_m2 == 0.0 && hand->damping_N_s_m2 == 0.0;
+}
+
+// Roots s = 0 of the damped problem that no deflation removes: a grip with a
+// dashpot but no spring lets the hand drift from the beam (one root per hand
+// DOF). They are simple, so round-off moves them by ~eps |A| only.
+int drift_roots(const HandCoupling& hand) {
+  return hand.stiffness_N_m2 == 0.0 && hand.damping_N_s_m2 > 0.0 ? 2 : 0;
+}
+
 // Basis of the M-orthogonal complement of the rigid-body motions (translation
-// and rotation of beam and hand together): K and C vanish on the rigid motions,
-// so q = Q b decouples them exactly and the reduced problem has no zero modes.
+// and rotation of beam and hand together, or of each alone when the hand is
+// detached): K and C vanish on the rigid motions, so q = Q b decouples them
+// exactly and the reduced problem has no zero modes.
 MatrixXd flexible_basis(const Mesh& mesh, const Assembled& a, const HandCoupling* hand) {
   const int n = static_cast<int>(a.M.rows());
-  MatrixXd R = MatrixXd::Zero(n, 2);
+  const bool detached = hand_detached(hand);
+  MatrixXd R = MatrixXd::Zero(n, detached ? 4 : 2);
   for (std::size_t i = 0; i < mesh.nodes_m.size(); ++i) {
     R(2 * i, 0) = 1.0;
     R(2 * i, 1) = mesh.nodes_m[i];
     R(2 * i + 1, 1) = 1.0;
   }
   if (hand) {
-    R(a.beam_dofs, 0) = 1.0;
-    R(a.beam_dofs, 1) = hand->grip_start_m + 0.5 * hand->grip_length_m;
-    R(a.beam_dofs + 1, 1) = 1.0;
+    const int u = detached ? 2 : 0, phi = detached ? 3 : 1;
+    R(a.beam_dofs, u) = 1.0;
+    if (!detached) R(a.beam_dofs, phi) = hand->grip_start_m + 0.5 * hand->grip_length_m;
+    R(a.beam_dofs + 1, phi) = 1.0;
   }
   const Eigen::HouseholderQR<MatrixXd> qr(a.M * R);
   const MatrixXd Q = qr.householderQ() * MatrixXd::Identity(n, n);
-  return Q.rightCols(n - 2);
+  return Q.rightCols(n - R.cols());
 }
 
 std::vector<int> counts_for(const Segmentation& seg, double per_phase_weight) {
@@ -1021,6 +1037,38 @@ struct DampedSpectrum {
   int overdamped = 0;             // real roots (not reported)
 };
 
+// A root is real (overdamped) when |Im s| <= kRealRootTol |s|.
+constexpr double kRealRootTol = 1e-9;
+
+// The oscillatory roots among every eigenvalue of a state matrix: the
+// `drift` roots nearest 0 (drift_roots: the structure says how many) are
+// set aside, then the roots with Im s > 0 are returned ascending in Im s, at
+// most `wanted`, and the real ones counted. No cut-off in |s|: the low modes
+// of a fine mesh are many orders below its highest frequency, and a cut-off
+// relative to that (as once used) threw the fundamental away.
+struct OscillatoryRoots {
+  std::vector<int> order;
+  int overdamped = 0;
+};
+OscillatoryRoots select_oscillatory(const VectorXcd& eigenvalues, int drift, int wanted) {
+  const int n = static_cast<int>(eigenvalues.size());
+  std::vector<int> by_size(n);
+  for (int j = 0; j < n; ++j) by_size[j] = j;
+  std::sort(by_size.begin(), by_size.end(),
+            [&](int i, int j) { return std::abs(eigenvalues(i)) < std::abs(eigenvalues(j)); });
+  OscillatoryRoots out;
+  for (int k = std::min(drift, n); k < n; ++k) {
+    const int j = by_size[k];
+    const Complex s = eigenvalues(j);
+    if (s.imag() > kRealRootTol * std::abs(s)) out.order.push_back(j);
+    if (std::abs(s.imag()) <= kRealRootTol * std::abs(s)) ++out.overdamped;
+  }
+  std::sort(out.order.begin(), out.order.end(),
+            [&](int i, int j) { return eigenvalues(i).imag() < eigenvalues(j).imag(); });
+  if (static_cast<int>(out.order.size()) > wanted) out.order.resize(wanted);
+  return out;
+}
+
 // The lowest `wanted` oscillatory modes from every eigenvalue of the dense
 // state matrix: O(n^3), the reference.
 DampedSpectrum dense_damped_spectrum(const Mesh& mesh, const Assembled& a, const HandCoupling& hand,
@@ -1047,20 +1095,9 @@ DampedSpectrum dense_damped_spectrum(const Mesh& mesh, const Assembled& a, const
   const Eigen::EigenSolver<MatrixXd> es(A, true);
 
   DampedSpectrum out;
-  std::vector<int> order;
-  for (int j = 0; j < 2 * m; ++j) {
-    const Complex s = es.eigenvalues()(j);
-    // A hand joined by nothing (k = c = 0) adds defective zero roots, perturbed
-    // to ~sqrt(eps) sigma by round-off: they are not vibration modes.
-    if (std::abs(s) < 1e-6 * sigma) continue;
-    if (s.imag() > 1e-9 * std::abs(s)) order.push_back(j);
-    if (std::abs(s.imag()) <= 1e-9 * std::abs(s)) ++out.overdamped;
-  }
-  std::sort(order.begin(), order.end(), [&](int i, int j) {
-    return es.eigenvalues()(i).imag() < es.eigenvalues()(j).imag();
-  });
-  for (int j : order) {
-    if (static_cast<int>(out.pairs.size()) == wanted) break;
+  const OscillatoryRoots roots = select_oscillatory(es.eigenvalues(), drift_roots(hand), wanted);
+  out.overdamped = roots.overdamped;
+  for (int j : roots.order) {
     const VectorXcd y = es.eigenvectors().col(j).head(m) / sigma;
     const VectorXd b_re = llt.matrixU().solve(y.real());
     const VectorXd b_im = llt.matrixU().solve(y.imag());
@@ -1099,17 +1136,9 @@ DampedSpectrum modal_damped_spectrum(const Mesh& mesh, const Assembled& a, const
   A.bottomRightCorner(r, r) = -Cm;
   const Eigen::EigenSolver<MatrixXd> ses(A, true);
   DampedSpectrum out;
-  std::vector<int> order;
-  for (int j = 0; j < 2 * r; ++j) {
-    const Complex s = ses.eigenvalues()(j);
-    if (s.imag() > 1e-9 * std::abs(s)) order.push_back(j);
-    if (std::abs(s.imag()) <= 1e-9 * std::abs(s)) ++out.overdamped;
-  }
-  std::sort(order.begin(), order.end(), [&](int i, int j) {
-    return ses.eigenvalues()(i).imag() < ses.eigenvalues()(j).imag();
-  });
-  for (int j : order) {
-    if (static_cast<int>(out.pairs.size()) == wanted) break;
+  const OscillatoryRoots roots = select_oscillatory(ses.eigenvalues(), drift_roots(hand), wanted);
+  out.overdamped = roots.overdamped;
+  for (int j : roots.order) {
     const VectorXcd y = ses.eigenvectors().col(j).head(r);
     out.pairs.push_back({ses.eigenvalues()(j), QPhi.cast<Complex>() * y});
   }

@@ -331,6 +331,54 @@ TEST_CASE("A hand joined by no spring or dashpot leaves the free beam") {
   }
 }
 
+// The dense state-space solve of a mesh of N elements is accurate to about
+// eps omega_max / omega_1 ~ 1e-4 at N = 256 (omega_max grows as N^2).
+constexpr double kFineMeshDenseTol = 3e-4;
+
+std::vector<Section> equal_sections(int n) {
+  return std::vector<Section>(n, Section{0.7 / n, 0.25 / n, 152.0});
+}
+
+TEST_CASE("Held in the hand a uniform beam keeps its fundamental however many equal sections it is given as") {
+  const ModalResult one = hand_held_modes(equal_sections(1), {}, calibrated_hand(), fe(3));
+  const Mode* reference = hand_held_fundamental(one, 0.7);
+  REQUIRE(reference != nullptr);
+  for (const int n : {128, 255, 256, 257}) {
+    INFO(n << " sections");
+    const ModalResult r = hand_held_modes(equal_sections(n), {}, calibrated_hand(), fe(3));
+    REQUIRE(r.modes.size() == 3);
+    // The hand rocking on the grip, then the frame's fundamental: neither dropped.
+    CHECK(r.modes[0].hand_energy_fraction > 0.5);
+    const Mode* m = hand_held_fundamental(r, 0.7);
+    REQUIRE(m != nullptr);
+    CHECK(m->frequency_Hz == Approx(reference->frequency_Hz).epsilon(kFineMeshDenseTol));
+    CHECK(m->damping_ratio == Approx(reference->damping_ratio).epsilon(10 * kFineMeshDenseTol));
+  }
+}
+
+TEST_CASE("The dense state-space solve of a fine mesh drops none of the low modes") {
+  const ModalResult coarse = hand_held_modes(equal_sections(1), {}, calibrated_hand(), fe(3));
+  ModeOptions options = fe(3);
+  options.damped_solver = ModeOptions::DampedSolver::kDenseStateSpace;
+  options.elements = 200;  // omega_max / omega_1 ~ 1e6: a cut-off relative to omega_max took the hand mode
+  SECTION("a gripped hand: its rocking mode and the frame's fundamental") {
+    const ModalResult r = hand_held_modes(equal_sections(1), {}, calibrated_hand(), options);
+    REQUIRE(r.modes.size() == 3);
+    for (int k = 0; k < 3; ++k) {
+      CHECK(r.modes[k].frequency_Hz == Approx(coarse.modes[k].frequency_Hz).epsilon(kFineMeshDenseTol));
+    }
+  }
+  SECTION("a detached hand (k = c = 0): the free beam's modes") {
+    const ModalResult r = hand_held_modes(equal_sections(1), {}, HandCoupling{}, options);
+    const ModalResult free = free_modes(equal_sections(1), {}, exact(3));
+    REQUIRE(r.modes.size() == 3);
+    for (int k = 0; k < 3; ++k) {
+      CHECK(r.modes[k].frequency_Hz == Approx(free.modes[k].frequency_Hz).epsilon(kFineMeshDenseTol));
+      CHECK(r.modes[k].hand_energy_fraction == Approx(0.0).margin(1e-10));
+    }
+  }
+}
+
 TEST_CASE("A vanishing hand mass tends to the free beam") {
   const std::vector<Section> beam = paper_beam();
   const double free = free_modes(beam, {}, exact(1)).modes[0].frequency_Hz;
