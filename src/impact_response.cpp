@@ -45,9 +45,15 @@ Complex exp_divided(Complex z) {
   return (std::exp(z) - 1.0) / z;
 }
 
-// g(a, b; t) = (e^{a t} - e^{b t}) / (a - b) = t e^{b t} (e^{(a-b) t} - 1) / ((a-b) t).
+// g(a, b; t) = (e^{a t} - e^{b t}) / (a - b). Near a = b as
+// t e^{b t} (e^{(a-b) t} - 1) / ((a-b) t), the series; elsewhere directly,
+// since here Re a = 0 and Re b <= 0 bound both exponentials by 1. (The
+// factored form everywhere multiplied e^{b t}, underflowing to 0, by
+// e^{(a-b) t}, overflowing to inf, for a stiff mode's sigma t > 709: NaN.)
 Complex divided_exp(Complex a, Complex b, double t) {
-  return t * std::exp(b * t) * exp_divided((a - b) * t);
+  const Complex z = (a - b) * t;
+  if (std::abs(z) < kSeriesRadius) return t * std::exp(b * t) * exp_divided(z);
+  return (std::exp(a * t) - std::exp(b * t)) / (a - b);
 }
 
 void require_on_implement(const char* name, double x_m, double length_m) {
@@ -131,6 +137,31 @@ double fe_normalisation(const Mode& mode) {
     throw std::invalid_argument("modes: finite-element mode without matching fe_dofs");
   }
   return mode.fe_dofs[2 * best] / mode.shape[best].derivatives[0];
+}
+
+// Backstop: a response that is not finite is never handed out.
+void require_finite_response(const ImpactResponse& r) {
+  auto fail = [](const std::string& what) {
+    throw std::invalid_argument("model: " + what +
+                                " is not finite; the implement is outside the range the response model can represent");
+  };
+  for (std::size_t k = 0; k < r.modes.size(); ++k) {
+    const ModeExcitation& e = r.modes[k];
+    for (double v : {e.frequency_Hz, e.phi_at_impact, e.energy_after_J, e.impulse_limit_energy_J}) {
+      if (!std::isfinite(v)) fail("the excitation of mode " + std::to_string(k + 1));
+    }
+  }
+  for (double v : {r.impulse_N_s, r.rigid_kinetic_energy_J, r.vibration_energy_J}) {
+    if (!std::isfinite(v)) fail("the impulse or an energy");
+  }
+  for (const PointVelocity& p : r.points) {
+    for (std::size_t i = 0; i < r.time_s.size(); ++i) {
+      if (!std::isfinite(p.dc_m_s[i]) || !std::isfinite(p.ac_m_s[i])) {
+        fail("the velocity at " + detail::format_number(p.from_butt_m) + " m from the butt, t = " +
+             detail::format_number(r.time_s[i]) + " s,");
+      }
+    }
+  }
 }
 
 ResponseMode prepare_mode(const Mode& mode, double normalisation) {
@@ -400,6 +431,7 @@ ImpactResponse impact_response(const ResponseModel& model, double impact_from_bu
     }
     out.points.push_back(std::move(p));
   }
+  require_finite_response(out);
   return out;
 }
 
