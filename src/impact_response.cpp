@@ -31,6 +31,8 @@ constexpr double kMaxPhasePerInterval = 1.0;
 // The resonance w T = pi of half_sine_spectrum_ratio is a removable
 // singularity; within this relative distance the limit's Taylor form is used.
 constexpr double kResonanceBand = 1e-6;
+// e^x overflows beyond x = 709.78; divided_exp switches form below that.
+constexpr double kMaxFactoredExponent = 700.0;
 
 // (e^z - 1) / z, finite at z = 0.
 Complex exp_divided(Complex z) {
@@ -45,15 +47,16 @@ Complex exp_divided(Complex z) {
   return (std::exp(z) - 1.0) / z;
 }
 
-// g(a, b; t) = (e^{a t} - e^{b t}) / (a - b). Near a = b as
-// t e^{b t} (e^{(a-b) t} - 1) / ((a-b) t), the series; elsewhere directly,
-// since here Re a = 0 and Re b <= 0 bound both exponentials by 1. (The
-// factored form everywhere multiplied e^{b t}, underflowing to 0, by
-// e^{(a-b) t}, overflowing to inf, for a stiff mode's sigma t > 709: NaN.)
+// g(a, b; t) = (e^{a t} - e^{b t}) / (a - b) = t e^{b t} (e^{(a-b) t} - 1) / ((a-b) t),
+// the factored form (a series near a = b). For a stiff, damped mode,
+// Re((a - b) t) = sigma t > kMaxFactoredExponent, that form multiplies e^{b t},
+// underflowing to 0, by e^{(a-b) t}, overflowing to inf: NaN. There the
+// difference is taken directly, both exponentials bounded by 1 (Re a = 0,
+// Re b <= 0), with no cancellation since |e^{b t}| < e^-700.
 Complex divided_exp(Complex a, Complex b, double t) {
   const Complex z = (a - b) * t;
-  if (std::abs(z) < kSeriesRadius) return t * std::exp(b * t) * exp_divided(z);
-  return (std::exp(a * t) - std::exp(b * t)) / (a - b);
+  if (z.real() > kMaxFactoredExponent) return (std::exp(a * t) - std::exp(b * t)) / (a - b);
+  return t * std::exp(b * t) * exp_divided(z);
 }
 
 void require_on_implement(const char* name, double x_m, double length_m) {
