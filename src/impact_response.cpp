@@ -7,6 +7,7 @@
 #include <cmath>
 #include <complex>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 
 #include "check.hpp"
@@ -165,6 +166,15 @@ void require_finite_response(const ImpactResponse& r) {
       }
     }
   }
+}
+
+// The root e in [0, e_r] of e^2 + a (1 + e)^2 = e_r^2, a = mu kappa >= 0:
+// e = (sqrt(e_r^2 (1 + a) - a) - a) / (1 + a); none when a > e_r^2 (the
+// frame would keep more energy than the collision has; header).
+std::optional<double> cor_from_balance(double a, double cor_rigid) {
+  const double er2 = cor_rigid * cor_rigid;
+  if (!(a <= er2)) return std::nullopt;
+  return std::clamp((std::sqrt(er2 * (1.0 + a) - a) - a) / (1.0 + a), 0.0, cor_rigid);
 }
 
 ResponseMode prepare_mode(const Mode& mode, double normalisation) {
@@ -438,15 +448,21 @@ ImpactResponse impact_response(const ResponseModel& model, double impact_from_bu
   return out;
 }
 
-double vibration_compliance(const ResponseModel& model, double impact_from_butt_m,
-                            double duration_s) {
+std::vector<double> vibration_compliance_per_mode(const ResponseModel& model, double impact_from_butt_m,
+                                                  double duration_s) {
   require_on_implement("impact_from_butt_m", impact_from_butt_m, model.length_m);
   detail::require_positive("duration_s", duration_s, "s");
-  double kappa = 0.0;
+  std::vector<double> kappa;
   for (const ResponseMode& m : model.modes) {
-    kappa += mode_energy_per_impulse_squared(m, mass_normalised_shape(m, impact_from_butt_m),
-                                             duration_s);
+    kappa.push_back(mode_energy_per_impulse_squared(m, mass_normalised_shape(m, impact_from_butt_m), duration_s));
   }
+  return kappa;
+}
+
+double vibration_compliance(const ResponseModel& model, double impact_from_butt_m,
+                            double duration_s) {
+  double kappa = 0.0;
+  for (double k : vibration_compliance_per_mode(model, impact_from_butt_m, duration_s)) kappa += k;
   return kappa;
 }
 
@@ -471,15 +487,15 @@ DerivedCor derive_cor(const ResponseModel& model, double impact_from_butt_m, dou
         mode, mass_normalised_shape(mode, impact_from_butt_m), duration_s));
     out.vibration_compliance_per_kg += per_mode.back();
   }
-  // e^2 + a (1 + e)^2 = e_r^2 with a = mu kappa.
   const double a = out.reduced_mass_kg * out.vibration_compliance_per_kg;
-  const double er2 = cor_rigid * cor_rigid;
-  if (a > er2) {
-    out.saturated = true;
-    out.cor = 0.0;
-  } else {
-    out.cor = std::clamp((std::sqrt(er2 * (1.0 + a) - a) - a) / (1.0 + a), 0.0, cor_rigid);
+  const std::optional<double> e = cor_from_balance(a, cor_rigid);
+  if (!e) {
+    throw std::invalid_argument(
+        "cor_rigid: the frame would keep more than the collision's energy as vibration (mu kappa = " +
+        detail::format_significant(a) + " > cor_rigid^2 = " + detail::format_significant(cor_rigid * cor_rigid) +
+        "); the prescribed-pulse model does not hold for this implement");
   }
+  out.cor = *e;
   out.apparent_cor = apparent_cor(out.cor, out.effective_mass_kg, m);  // Eq. (16)
   out.pulse = {peak_impact_force(m, v1, out.apparent_cor, duration_s), duration_s};  // Eq. (15)
   out.impulse_N_s = ball_impulse(m, v1, out.apparent_cor);
@@ -487,7 +503,7 @@ DerivedCor derive_cor(const ResponseModel& model, double impact_from_butt_m, dou
   out.collision_energy_J = 0.5 * m * v1 * v1;
   out.vibration_energy_J = 0.5 * j2 * out.vibration_compliance_per_kg;
   out.vibration_share = out.vibration_energy_J / out.collision_energy_J;
-  out.rigid_loss_J = 0.5 * out.reduced_mass_kg * v1 * v1 * (1.0 - er2);
+  out.rigid_loss_J = 0.5 * out.reduced_mass_kg * v1 * v1 * (1.0 - cor_rigid * cor_rigid);
   for (double r : per_mode) out.mode_energy_J.push_back(0.5 * j2 * r);
   return out;
 }
@@ -499,10 +515,12 @@ std::optional<double> fundamental_for_cor(const ResponseModel& model, double imp
   detail::require_positive("f_lo_Hz", f_lo_Hz, "Hz");
   detail::require_positive("f_hi_Hz", f_hi_Hz, "Hz");
   detail::require_positive("abs_tol_Hz", abs_tol_Hz, "Hz");
+  detail::require_in_range("cor_rigid", cor_rigid, 0.0, 1.0, "");
+  detail::require_positive("ball.mass_kg", ball.mass_kg, "kg");
+  const double mu = reduced_mass(ball.mass_kg, effective_mass(model.rigid_body, impact_from_butt_m));
   auto gap = [&](double f) {
-    return derive_cor(with_fundamental(model, f), impact_from_butt_m, cor_rigid, ball, duration_s)
-               .cor -
-           target_cor;
+    const double kappa = vibration_compliance(with_fundamental(model, f), impact_from_butt_m, duration_s);
+    return cor_from_balance(mu * kappa, cor_rigid).value_or(0.0) - target_cor;
   };
   return find_root(gap, f_lo_Hz, f_hi_Hz, abs_tol_Hz);
 }
