@@ -100,6 +100,9 @@ struct Segmentation {
   std::vector<Segment> segments;
   double tip_mass_kg = 0.0;
   double length_m = 0.0;
+  // Finite elements may span several segments shorter than an element
+  // (Euler-Bernoulli only: a Timoshenko element has one shear stiffness).
+  bool groupable = true;
 };
 
 // The bending phase beta l of a uniform stretch per root omega:
@@ -109,10 +112,25 @@ double phase_weight(double mu_kg_m, double EI_N_m2, double length_m) {
   return std::pow(mu_kg_m / EI_N_m2, 0.25) * length_m;
 }
 
+// True when sections i and i + 1 are one uniform stretch: the same mass per
+// length, EI and (Timoshenko) cross-section. Their boundary is then no
+// breakpoint, so a design given as many equal sections costs what one costs.
+bool same_properties(const std::vector<Section>& sections, const std::vector<TimoshenkoSection>& timoshenko,
+                     std::size_t i) {
+  const Section& a = sections[i];
+  const Section& b = sections[i + 1];
+  if (a.mass_kg / a.length_m != b.mass_kg / b.length_m || *a.EI_N_m2 != *b.EI_N_m2) return false;
+  return timoshenko.empty() || (timoshenko[i].shear_stiffness_N == timoshenko[i + 1].shear_stiffness_N &&
+                                timoshenko[i].radius_of_gyration_m == timoshenko[i + 1].radius_of_gyration_m);
+}
+
+// `timoshenko`: one entry per section when the theory is Timoshenko, else empty.
 Segmentation segment(const std::vector<Section>& sections,
                      const std::vector<PointMass>& point_masses,
-                     std::vector<double> extra_breaks = {}) {
+                     std::vector<double> extra_breaks = {},
+                     const std::vector<TimoshenkoSection>& timoshenko = {}) {
   Segmentation out;
+  out.groupable = timoshenko.empty();
   std::vector<double> section_ends;
   double x = 0.0;
   for (const Section& s : sections) section_ends.push_back(x += s.length_m);
@@ -120,7 +138,10 @@ Segmentation segment(const std::vector<Section>& sections,
   const double eps = 1e-12 * x;
 
   std::vector<double> breaks{0.0};
-  breaks.insert(breaks.end(), section_ends.begin(), section_ends.end());
+  for (std::size_t i = 0; i + 1 < sections.size(); ++i) {
+    if (!same_properties(sections, timoshenko, i)) breaks.push_back(section_ends[i]);
+  }
+  breaks.push_back(x);
   for (const PointMass& p : point_masses) breaks.push_back(p.from_butt_m);
   breaks.insert(breaks.end(), extra_breaks.begin(), extra_breaks.end());
   std::sort(breaks.begin(), breaks.end());
@@ -534,6 +555,9 @@ struct Element {
       ka(3, 3) = 12 * h * h * h + 36 * g * h;
       return c_inv.transpose() * (EI * ka) * c_inv;
     }
+    const bool one_EI = std::all_of(pieces.begin(), pieces.end(),
+                                    [&](const ElementPiece& p) { return p.EI == pieces.front().EI; });
+    if (!one_EI && g == 0.0) return flexibility_stiffness();
     for (const ElementPiece& p : pieces) {
       ka(2, 2) += 4 * p.EI * moment_over(0, p.s, p.e);
       ka(2, 3) += 12 * p.EI * moment_over(1, p.s, p.e);
@@ -541,6 +565,28 @@ struct Element {
     }
     ka(3, 2) = ka(2, 3);
     return c_inv.transpose() * ka * c_inv;
+  }
+
+  // The exact static stiffness of an Euler-Bernoulli element whose EI varies
+  // piecewise: the inverse of its flexibility as a cantilever from node 1,
+  //   F = int_0^h [(h - x)^2, h - x; h - x, 1] / EI(x) dx,
+  // for the end shear and moment, carried to the four DOFs by the
+  // deformation (w2 - w1 - theta1 h, theta2 - theta1). Equal to the Hermite
+  // stiffness for one EI; across a stiffness change it gives the compliance
+  // of the stretches in series, which a cubic's curvature cannot.
+  Matrix4d flexibility_stiffness() const {
+    Eigen::Matrix2d f = Eigen::Matrix2d::Zero();
+    for (const ElementPiece& p : pieces) {
+      const double a = h - p.s, b = h - p.e;  // h - x at the ends of the piece
+      f(0, 0) += (a * a * a - b * b * b) / (3.0 * p.EI);
+      f(0, 1) += (a * a - b * b) / (2.0 * p.EI);
+      f(1, 1) += (p.e - p.s) / p.EI;
+    }
+    f(1, 0) = f(0, 1);
+    Eigen::Matrix<double, 2, 4> t;
+    t << -1, -h, 1, 0,  //
+        0, -1, 0, 1;
+    return t.transpose() * f.inverse() * t;
   }
 
   // Integral of N_w^T N_w over [s, e] (the whole element by default), the
@@ -710,8 +756,30 @@ Mesh build_mesh(const Segmentation& seg, const std::vector<int>& counts,
   mesh.nodes_m.push_back(0.0);
   mesh.nodal_mass_kg.push_back(0.0);
   const bool timoshenko = options.theory == ModeOptions::Theory::kTimoshenko;
+  std::size_t group = 0;  // first segment of the open group (counts 0 ... 0 1)
   for (std::size_t i = 0; i < seg.segments.size(); ++i) {
     const Segment& s = seg.segments[i];
+    if (counts[i] == 0 || (i > group && counts[i - 1] == 0)) {
+      // Part of a group: one element over segments group..i once counts[i] == 1.
+      if (i == group) mesh.nodal_mass_kg.back() += s.mass_at_start_kg;
+      if (counts[i] == 0) continue;
+      const Segment& first = seg.segments[group];
+      Element element(first.start_m, s.start_m + s.length_m - first.start_m, first.EI_N_m2, first.mu_kg_m, 0.0, 0.0);
+      element.pieces.clear();
+      for (std::size_t j = group; j <= i; ++j) {
+        const Segment& p = seg.segments[j];
+        element.pieces.push_back({p.start_m - first.start_m, p.start_m + p.length_m - first.start_m, p.EI_N_m2,
+                                  p.mu_kg_m, p.section});
+        if (j > group && p.mass_at_start_kg > 0.0) element.masses.emplace_back(p.start_m - first.start_m, p.mass_at_start_kg);
+      }
+      element.pieces.back().e = element.h;
+      mesh.elements.push_back(std::move(element));
+      mesh.nodes_m.push_back(s.start_m + s.length_m);
+      mesh.nodal_mass_kg.push_back(0.0);
+      group = i + 1;
+      continue;
+    }
+    group = i + 1;
     mesh.nodal_mass_kg.back() += s.mass_at_start_kg;
     double g = 0.0, rotary = 0.0;
     if (timoshenko) {
@@ -833,12 +901,43 @@ MatrixXd flexible_basis(const Mesh& mesh, const Assembled& a, const HandCoupling
   return Q.rightCols(n - R.cols());
 }
 
+// Elements per segment for `per_phase_weight` elements per unit phase: a
+// segment asking for at least one element gets ceil of what it asks; a run
+// of consecutive segments each asking for less shares elements, each closed
+// once the run has asked for one (count 0: the segment joins the element
+// that the next segment with count 1 closes). So elements follow the sizing,
+// not the sections: 10 000 short sections make a few dozen elements, where
+// one element each made a dense problem of 20 000 DOFs.
 std::vector<int> counts_for(const Segmentation& seg, double per_phase_weight) {
   std::vector<int> counts;
+  counts.reserve(seg.segments.size());
+  double open = 0.0;  // elements asked for by the open run, < 1
+  std::size_t last_close = std::string::npos;  // the run's last closed element
+  // Ends a run: a remainder asking for under half an element joins the run's
+  // previous element rather than make a sliver.
+  auto close_run = [&] {
+    if (!counts.empty() && counts.back() == 0) {
+      if (open < 0.5 && last_close != std::string::npos) counts[last_close] = 0;
+      counts.back() = 1;
+    }
+    open = 0.0;
+    last_close = std::string::npos;
+  };
   for (const Segment& s : seg.segments) {
-    const double phase = phase_weight(s.mu_kg_m, s.EI_N_m2, s.length_m);
-    counts.push_back(std::max(1, static_cast<int>(std::ceil(per_phase_weight * phase - 1e-9))));
+    const double asked = per_phase_weight * phase_weight(s.mu_kg_m, s.EI_N_m2, s.length_m);
+    if (!seg.groupable || asked >= 1.0 - 1e-9) {
+      close_run();
+      counts.push_back(std::max(1, static_cast<int>(std::ceil(asked - 1e-9))));
+      continue;
+    }
+    open += asked;
+    counts.push_back(open >= 1.0 - 1e-9 ? 1 : 0);
+    if (counts.back() == 1) {
+      open = 0.0;
+      last_close = counts.size() - 1;
+    }
   }
+  close_run();
   return counts;
 }
 
@@ -995,11 +1094,17 @@ void validate_hand(const HandCoupling& hand, double length_m) {
   }
 }
 
+// The Timoshenko data segment() compares sections by (empty for Euler-Bernoulli).
+const std::vector<TimoshenkoSection>& timoshenko_of(const ModeOptions& options) {
+  static const std::vector<TimoshenkoSection> kNone;
+  return options.theory == ModeOptions::Theory::kTimoshenko ? options.timoshenko : kNone;
+}
+
 Segmentation hand_segmentation(const std::vector<Section>& sections,
                                const std::vector<PointMass>& point_masses,
-                               const HandCoupling& hand) {
+                               const HandCoupling& hand, const ModeOptions& options) {
   return segment(sections, point_masses,
-                 {hand.grip_start_m, hand.grip_start_m + hand.grip_length_m});
+                 {hand.grip_start_m, hand.grip_start_m + hand.grip_length_m}, timoshenko_of(options));
 }
 
 // ------------------------------------------------------ damped eigenproblem
@@ -1544,7 +1649,7 @@ ModalResult free_modes(const std::vector<Section>& sections,
   const double length = validated_length(sections, fe);
   detail::validate_point_masses(point_masses, length);
   validate_options(options, sections.size());
-  const Segmentation seg = segment(sections, point_masses);
+  const Segmentation seg = segment(sections, point_masses, {}, timoshenko_of(options));
   ModalResult result = fe ? fe_free_modes(seg, options) : exact_free_modes(seg, options);
   fill_shape_table(result, length, options.shape_samples);
   return result;
@@ -1559,7 +1664,8 @@ BeamMatrices assemble_beam_matrices(const std::vector<Section>& sections,
   validate_options(options, sections.size());
   if (hand) validate_hand(*hand, length);
   const Segmentation seg =
-      hand ? hand_segmentation(sections, point_masses, *hand) : segment(sections, point_masses);
+      hand ? hand_segmentation(sections, point_masses, *hand, options)
+           : segment(sections, point_masses, {}, timoshenko_of(options));
   const Mesh mesh = build_mesh(seg, element_counts(seg, options), options);
   const Assembled a = assemble(mesh, hand ? &*hand : nullptr);
   BeamMatrices out;
@@ -1591,7 +1697,7 @@ ModalResult hand_held_modes(const std::vector<Section>& sections,
   ModalResult result;
   result.method = ModeOptions::Method::kFiniteElement;
   result.theory = options.theory;
-  const Segmentation seg = hand_segmentation(sections, point_masses, hand);
+  const Segmentation seg = hand_segmentation(sections, point_masses, hand, options);
   const std::vector<int> counts = element_counts(seg, options);
   const Mesh mesh = build_mesh(seg, counts, options);
   result.elements_used = static_cast<int>(mesh.elements.size());  // after merge_tiny_elements

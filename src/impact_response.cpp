@@ -92,25 +92,28 @@ GaussRule gauss_legendre() {
   return rule;
 }
 
-// Mass per length of the section holding x (sections butt to tip).
-double mass_per_length_at(const std::vector<Section>& sections, double x_m) {
-  double start = 0.0;
-  for (const Section& s : sections) {
-    if (x_m <= start + s.length_m) return s.mass_kg / s.length_m;
-    start += s.length_m;
-  }
-  return sections.back().mass_kg / sections.back().length_m;
+// Mass per length of the section holding x (sections butt to tip, `ends`
+// their cumulative ends): O(log n), so that normalising a mode of n pieces is
+// O(n log n), not O(n^2).
+double mass_per_length_at(const std::vector<Section>& sections, const std::vector<double>& ends, double x_m) {
+  const auto it = std::lower_bound(ends.begin(), ends.end(), x_m);
+  const std::size_t i = std::min<std::size_t>(static_cast<std::size_t>(it - ends.begin()), sections.size() - 1);
+  return sections[i].mass_kg / sections[i].length_m;
 }
 
 // int mu w^2 dx + sum m_j w(x_j)^2 for the shape as reported [kg].
 double generalised_mass(const Mode& mode, const std::vector<Section>& sections,
                         const std::vector<PointMass>& point_masses) {
   static const GaussRule rule = gauss_legendre();
+  std::vector<double> ends;
+  ends.reserve(sections.size());
+  double x = 0.0;
+  for (const Section& s : sections) ends.push_back(x += s.length_m);
   double sum = 0.0;
   for (const ShapePiece& p : mode.shape) {
     const double length = p.end_m - p.start_m;
     if (length <= 0.0) continue;
-    const double mu = mass_per_length_at(sections, 0.5 * (p.start_m + p.end_m));
+    const double mu = mass_per_length_at(sections, ends, 0.5 * (p.start_m + p.end_m));
     const int intervals = std::max(
         1, static_cast<int>(std::ceil(p.wavenumber_per_m * length / kMaxPhasePerInterval)));
     const double h = length / intervals;

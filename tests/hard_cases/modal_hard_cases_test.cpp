@@ -846,3 +846,36 @@ TEST_CASE(
 
 }  // namespace
 }  // namespace sweetspot
+
+namespace sweetspot {
+namespace {
+
+TEST_CASE("A hundred thousand sections are evaluated with the modes and the response, on a mesh of dozens") {
+  // Every tenth section 20 % heavier: adjacent equal sections merge, the rest
+  // are shorter than an element and share elements (no dense 2e5-DOF problem).
+  constexpr int kSections = 100000;
+  std::vector<Section> sections;
+  for (int i = 0; i < kSections; ++i) {
+    sections.push_back(Section{0.7 / kSections, 0.25 / kSections * (i % 10 == 0 ? 1.2 : 1.0), 152.0});
+  }
+  ModeOptions options;
+  options.method = ModeOptions::Method::kFiniteElement;
+  const ModalResult held = hand_held_modes(sections, {}, calibrated_hand(), options);
+  CHECK(held.elements_used < 100);
+  const ModalResult reference = free_modes(sections, {}, ModeOptions{});
+  const ModalResult fe = free_modes(sections, {}, options);
+  REQUIRE(fe.modes.size() == 3);
+  // Tenths of a 7 um period: the elements see the homogenised beam.
+  CHECK(fe.modes[0].frequency_Hz == Approx(reference.modes[0].frequency_Hz).epsilon(1e-5));
+
+  Design design{Implement::from_sections(sections, {})};
+  design.cor_rigid = 0.85;
+  const Evaluation e = evaluate(design, Fidelity::kResponse);
+  REQUIRE(e.modal);
+  CHECK(std::isfinite(e.modal->fundamental_hand_Hz));
+  CHECK(*e.vibration_share >= 0.0);
+  CHECK(*e.vibration_share <= 1.0);
+}
+
+}  // namespace
+}  // namespace sweetspot
