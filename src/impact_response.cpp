@@ -351,12 +351,15 @@ ResponseModel with_fundamental(const ResponseModel& model, double f1_Hz) {
 }
 
 std::string ResponseOptions::validate() const {
-  if (modes < 1 || modes > 60) return "modes: must be in [1, 60], got " + std::to_string(modes);
+  if (modes < 1 || modes > kMaxModes) {
+    return "modes: must be in [1, " + std::to_string(kMaxModes) + "], got " + std::to_string(modes);
+  }
   if (!(free_damping_ratio >= 0.0 && free_damping_ratio < 1.0)) {
     return "free_damping_ratio: must be in [0, 1), got " + detail::format_number(free_damping_ratio);
   }
-  if (!(rel_tol >= 1e-8 && rel_tol <= 0.1)) {
-    return "rel_tol: must be in [1e-08, 0.1], got " + detail::format_number(rel_tol);
+  if (!(rel_tol >= kMinRelTol && rel_tol <= kMaxRelTol)) {
+    return "rel_tol: must be in [" + detail::format_number(kMinRelTol) + ", " + detail::format_number(kMaxRelTol) +
+           "], got " + detail::format_number(rel_tol);
   }
   return {};
 }
@@ -370,8 +373,8 @@ ResponseModel response_model(const Design& design, const ResponseOptions& option
   mode_options.rel_tol = options.rel_tol;
   mode_options.shape_samples = 0;
   if (options.support == ResponseOptions::Support::kFree) {
-    // The exact solver gives at most 6 modes; finite elements beyond.
-    if (options.modes > 6) mode_options.method = ModeOptions::Method::kFiniteElement;
+    // The exact solver gives at most kMaxExactModes; finite elements beyond.
+    if (options.modes > kMaxExactModes) mode_options.method = ModeOptions::Method::kFiniteElement;
     const ModalResult free = free_modes(frame.sections, frame.point_masses, mode_options);
     return free_response_model(frame.sections, frame.point_masses, free, options.free_damping_ratio);
   }

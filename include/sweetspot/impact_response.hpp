@@ -148,9 +148,9 @@ ResponseModel with_fundamental(const ResponseModel& model, double f1_Hz);
 struct ResponseOptions {
   enum class Support { kFree, kHandHeld };
   Support support = Support::kFree;
-  int modes = 6;                   // flexible modes (hand-held: including the hand's), >= 1
+  int modes = 6;                   // flexible modes (hand-held: including the hand's), in [1, kMaxModes]
   double free_damping_ratio = 0.0; // z of every free mode, in [0, 1)
-  double rel_tol = 1e-6;           // FE (hand-held, Timoshenko): relative error of f1
+  double rel_tol = 1e-6;           // FE (hand-held, Timoshenko): relative error of f1, in [kMinRelTol, kMaxRelTol]
 
   // Empty if consistent, otherwise the first problem, naming the field and value.
   std::string validate() const;
@@ -158,7 +158,7 @@ struct ResponseOptions {
 
 // The design's frame (flexible_frame) free or in its hand (hand_coupling),
 // with its modes computed here. Free Euler-Bernoulli frames use the exact
-// solver (at most 6 modes), everything else finite elements. Throws
+// solver (at most kMaxExactModes), everything else finite elements. Throws
 // std::invalid_argument when the design has no stiffness, a hand-held model is
 // asked without a hand, or the options are invalid.
 ResponseModel response_model(const Design& design, const ResponseOptions& options = {});

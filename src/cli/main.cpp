@@ -114,9 +114,9 @@ struct ModesCommand {
     command = app.add_subcommand(
         "modes", "Vibration modes free and hand-held: frequencies, damping, nodes, shapes (csv)");
     command->add_option("design", design_path, "Design file (JSON) with the frame's stiffness")->required();
-    command->add_option("--modes,-n", modes, "How many flexible modes")->check(CLI::Range(1, 6))->capture_default_str();
+    command->add_option("--modes,-n", modes, "How many flexible modes")->check(CLI::Range(1, sweetspot::kMaxExactModes))->capture_default_str();
     command->add_option("--tol", tolerance, "Relative error allowed in the finite-element frequencies")
-        ->check(CLI::Range(1e-8, 0.1))
+        ->check(CLI::Range(sweetspot::kMinRelTol, sweetspot::kMaxRelTol))
         ->capture_default_str();
     command->add_option("--method", method, "Free modes: exact (transfer matrices) or fe")
         ->check(CLI::IsMember({"exact", "fe"}))
@@ -315,7 +315,7 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"rigid", "modal", "response", "auto"}))
       ->capture_default_str();
   evaluate->add_option("--tol", tolerance, "Relative error allowed in the hand-held frequency")
-      ->check(CLI::Range(1e-8, 0.1))
+      ->check(CLI::Range(sweetspot::kMinRelTol, sweetspot::kMaxRelTol))
       ->capture_default_str();
   evaluate_out.add_to(evaluate);
 

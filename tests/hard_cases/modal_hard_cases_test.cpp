@@ -52,9 +52,8 @@ constexpr double kExactNodeTol_m = 1e-12;
 // element (beta h)^4 / 1440, elements sized for half the requested tolerance.
 constexpr double kHermiteErrorConstant = 1440.0;
 constexpr double kToleranceSafety = 0.5;
-// ModeOptions::rel_tol's floor and the largest mesh ModeOptions accepts.
-constexpr double kFeToleranceFloor = 1e-8;
-constexpr int kMaxElements = 4000;
+// ModeOptions::rel_tol's floor (the largest mesh is sweetspot::kMaxElements).
+constexpr double kFeToleranceFloor = kMinRelTol;
 
 // A uniform free-free beam of length L, mass m and stiffness EI: Hz.
 double free_free_f1(double L, double m, double EI) {
@@ -232,7 +231,7 @@ TEST_CASE(
   for (const double tol : {std::nextafter(kFeToleranceFloor, 0.0), 1e-12, 0.0, -1e-6}) {
     INFO("rel_tol " << tol);
     CHECK_THAT(refusal([&] { free_modes(beam, {}, fe(1, tol)); }),
-               Catch::StartsWith("options.rel_tol: must be in [1e-8, 0.1]"));
+               Catch::StartsWith("options.rel_tol: must be in [1e-08, 0.1]"));
     CHECK_THAT(refusal([&] { hand_held_modes(beam, {}, calibrated_hand(), fe(1, tol)); }),
                Catch::StartsWith("options.rel_tol"));
   }
