@@ -246,6 +246,7 @@ MatrixXd flexible_basis(const Mesh& mesh, const Assembled& a, const HandCoupling
 }
 
 std::vector<int> counts_for(const Segmentation& seg, double per_phase_weight) {
+  const bool group = seg.groupable && seg.segments.size() > kMaxFollowedSegments;
   std::vector<int> counts;
   counts.reserve(seg.segments.size());
   double open = 0.0;  // elements asked for by the open run, < 1
@@ -262,7 +263,7 @@ std::vector<int> counts_for(const Segmentation& seg, double per_phase_weight) {
   };
   for (const Segment& s : seg.segments) {
     const double asked = per_phase_weight * phase_weight(s.mu_kg_m, s.EI_N_m2, s.length_m);
-    if (!seg.groupable || asked >= 1.0 - 1e-9) {
+    if (!group || asked >= 1.0 - 1e-9) {
       close_run();
       counts.push_back(std::max(1, static_cast<int>(std::ceil(asked - 1e-9))));
       continue;

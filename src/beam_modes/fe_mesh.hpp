@@ -217,8 +217,13 @@ int drift_roots(const HandCoupling& hand);
 // exactly and the reduced problem has no zero modes.
 MatrixXd flexible_basis(const Mesh& mesh, const Assembled& a, const HandCoupling* hand);
 
+// Up to this many segments every one has at least one element (a few
+// dozen dense DOFs at most); beyond, runs of short segments share elements.
+inline constexpr std::size_t kMaxFollowedSegments = 64;
+
 // Elements per segment for `per_phase_weight` elements per unit phase: a
-// segment asking for at least one element gets ceil of what it asks; a run
+// segment asking for at least one element gets ceil of what it asks. Above
+// kMaxFollowedSegments segments (Euler-Bernoulli), a run
 // of consecutive segments each asking for less shares elements, each closed
 // once the run has asked for one (count 0: the segment joins the element
 // that the next segment with count 1 closes). So elements follow the sizing,
