@@ -65,20 +65,40 @@ Evaluation evaluate(const Design& design, Fidelity fidelity, double rel_tol) {
   validate(resolved);
   const bool duration_derived = design.strings.has_value();
   resolved.impact_duration_s = settled_duration(design);
-  std::optional<DerivedCor> derived;
+  // Response: the energy each mode keeps, 1/2 J^2 kappa_k, with J from the
+  // derived COR or, for a given COR, from the rigid model.
+  std::vector<std::pair<double, double>> mode_energies;  // frequency [Hz], energy [J]
   std::optional<double> vibration_energy;
-  std::vector<double> mode_frequencies_Hz;
   if (fidelity == Fidelity::kResponse) {
     const ResponseModel model = response_model(resolved, ResponseOptions{});
-    for (const ResponseMode& m : model.modes) mode_frequencies_Hz.push_back(m.mode.frequency_Hz);
-    // With a given COR, the vibration energy follows from the impulse.
-    derived = derive_cor(model, resolved.impact_from_butt_m, design.cor_rigid.value_or(resolved.cor),
-                         resolved.ball, resolved.impact_duration_s);
+    std::vector<double> kappa;
     if (design.cor_rigid) {
-      resolved.cor = derived->cor;
-    } else {
-      const double J = evaluate_unchecked(resolved).impulse_N_s;
-      vibration_energy = 0.5 * J * J * derived->vibration_compliance_per_kg;
+      try {
+        const DerivedCor derived = derive_cor(model, resolved.impact_from_butt_m, *design.cor_rigid,
+                                              resolved.ball, resolved.impact_duration_s);
+        resolved.cor = derived.cor;
+      } catch (const std::invalid_argument& error) {
+        throw std::invalid_argument("frame/" + std::string(error.what()));
+      }
+    }
+    kappa = vibration_compliance_per_mode(model, resolved.impact_from_butt_m, resolved.impact_duration_s);
+    const Evaluation rigid = evaluate_unchecked(resolved);
+    const double J = rigid.impulse_N_s;
+    vibration_energy = 0.0;
+    for (std::size_t k = 0; k < kappa.size(); ++k) {
+      mode_energies.emplace_back(model.modes[k].mode.frequency_Hz, 0.5 * J * J * kappa[k]);
+      *vibration_energy += mode_energies.back().second;
+    }
+    // Energy ledger: the frame cannot keep more than the ball loses. A derived
+    // COR satisfies it by construction (derive_cor refuses otherwise); a given
+    // COR with a frame this compliant contradicts the prescribed pulse.
+    const double v1 = resolved.ball.speed_m_s, eA = rigid.apparent_cor;
+    const double ball_loss_J = 0.5 * resolved.ball.mass_kg * v1 * v1 * (1.0 - eA * eA);
+    if (!(*vibration_energy <= ball_loss_J * (1.0 + 1e-12))) {
+      throw std::invalid_argument(
+          "frame/cor: with a COR of " + detail::format_number(resolved.cor) + " the frame would keep " +
+          detail::format_significant(*vibration_energy) + " J as vibration, more than the ball loses (" +
+          detail::format_significant(ball_loss_J) + " J); the prescribed-pulse model does not hold for this implement");
     }
   }
   Evaluation e = evaluate_settled(resolved);
@@ -98,16 +118,13 @@ Evaluation evaluate(const Design& design, Fidelity fidelity, double rel_tol) {
                         " of its impulse-limit energy), so the rigid model answers this design";
     }
   }
-  if (derived) {
-    for (std::size_t k = 0; k < derived->mode_energy_J.size(); ++k) {
-      // With a given COR the energies scale with the impulse squared, as the total does.
-      const double scale = design.cor_rigid ? 1.0 : *vibration_energy / derived->vibration_energy_J;
-      if (!e.details) e.details.emplace();
-      e.details->vibration_modes.emplace_back(mode_frequencies_Hz[k], derived->mode_energy_J[k] * scale);
-    }
+  if (vibration_energy) {
+    if (!e.details) e.details.emplace();
+    e.details->vibration_modes = std::move(mode_energies);
     e.cor_derived = design.cor_rigid.has_value();
-    e.vibration_energy_J = design.cor_rigid ? derived->vibration_energy_J : *vibration_energy;
-    e.vibration_share = *e.vibration_energy_J / derived->collision_energy_J;
+    e.vibration_energy_J = *vibration_energy;
+    const double v1 = resolved.ball.speed_m_s;
+    e.vibration_share = *vibration_energy / (0.5 * resolved.ball.mass_kg * v1 * v1);
   }
   return e;
 }

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <complex>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 
 #include "check.hpp"
@@ -31,6 +32,8 @@ constexpr double kMaxPhasePerInterval = 1.0;
 // The resonance w T = pi of half_sine_spectrum_ratio is a removable
 // singularity; within this relative distance the limit's Taylor form is used.
 constexpr double kResonanceBand = 1e-6;
+// e^x overflows beyond x = 709.78; divided_exp switches form below that.
+constexpr double kMaxFactoredExponent = 700.0;
 
 // (e^z - 1) / z, finite at z = 0.
 Complex exp_divided(Complex z) {
@@ -45,9 +48,16 @@ Complex exp_divided(Complex z) {
   return (std::exp(z) - 1.0) / z;
 }
 
-// g(a, b; t) = (e^{a t} - e^{b t}) / (a - b) = t e^{b t} (e^{(a-b) t} - 1) / ((a-b) t).
+// g(a, b; t) = (e^{a t} - e^{b t}) / (a - b) = t e^{b t} (e^{(a-b) t} - 1) / ((a-b) t),
+// the factored form (a series near a = b). For a stiff, damped mode,
+// Re((a - b) t) = sigma t > kMaxFactoredExponent, that form multiplies e^{b t},
+// underflowing to 0, by e^{(a-b) t}, overflowing to inf: NaN. There the
+// difference is taken directly, both exponentials bounded by 1 (Re a = 0,
+// Re b <= 0), with no cancellation since |e^{b t}| < e^-700.
 Complex divided_exp(Complex a, Complex b, double t) {
-  return t * std::exp(b * t) * exp_divided((a - b) * t);
+  const Complex z = (a - b) * t;
+  if (z.real() > kMaxFactoredExponent) return (std::exp(a * t) - std::exp(b * t)) / (a - b);
+  return t * std::exp(b * t) * exp_divided(z);
 }
 
 void require_on_implement(const char* name, double x_m, double length_m) {
@@ -82,25 +92,28 @@ GaussRule gauss_legendre() {
   return rule;
 }
 
-// Mass per length of the section holding x (sections butt to tip).
-double mass_per_length_at(const std::vector<Section>& sections, double x_m) {
-  double start = 0.0;
-  for (const Section& s : sections) {
-    if (x_m <= start + s.length_m) return s.mass_kg / s.length_m;
-    start += s.length_m;
-  }
-  return sections.back().mass_kg / sections.back().length_m;
+// Mass per length of the section holding x (sections butt to tip, `ends`
+// their cumulative ends): O(log n), so that normalising a mode of n pieces is
+// O(n log n), not O(n^2).
+double mass_per_length_at(const std::vector<Section>& sections, const std::vector<double>& ends, double x_m) {
+  const auto it = std::lower_bound(ends.begin(), ends.end(), x_m);
+  const std::size_t i = std::min<std::size_t>(static_cast<std::size_t>(it - ends.begin()), sections.size() - 1);
+  return sections[i].mass_kg / sections[i].length_m;
 }
 
 // int mu w^2 dx + sum m_j w(x_j)^2 for the shape as reported [kg].
 double generalised_mass(const Mode& mode, const std::vector<Section>& sections,
                         const std::vector<PointMass>& point_masses) {
   static const GaussRule rule = gauss_legendre();
+  std::vector<double> ends;
+  ends.reserve(sections.size());
+  double x = 0.0;
+  for (const Section& s : sections) ends.push_back(x += s.length_m);
   double sum = 0.0;
   for (const ShapePiece& p : mode.shape) {
     const double length = p.end_m - p.start_m;
     if (length <= 0.0) continue;
-    const double mu = mass_per_length_at(sections, 0.5 * (p.start_m + p.end_m));
+    const double mu = mass_per_length_at(sections, ends, 0.5 * (p.start_m + p.end_m));
     const int intervals = std::max(
         1, static_cast<int>(std::ceil(p.wavenumber_per_m * length / kMaxPhasePerInterval)));
     const double h = length / intervals;
@@ -131,6 +144,40 @@ double fe_normalisation(const Mode& mode) {
     throw std::invalid_argument("modes: finite-element mode without matching fe_dofs");
   }
   return mode.fe_dofs[2 * best] / mode.shape[best].derivatives[0];
+}
+
+// Backstop: a response that is not finite is never handed out.
+void require_finite_response(const ImpactResponse& r) {
+  auto fail = [](const std::string& what) {
+    throw std::invalid_argument("model: " + what +
+                                " is not finite; the implement is outside the range the response model can represent");
+  };
+  for (std::size_t k = 0; k < r.modes.size(); ++k) {
+    const ModeExcitation& e = r.modes[k];
+    for (double v : {e.frequency_Hz, e.phi_at_impact, e.energy_after_J, e.impulse_limit_energy_J}) {
+      if (!std::isfinite(v)) fail("the excitation of mode " + std::to_string(k + 1));
+    }
+  }
+  for (double v : {r.impulse_N_s, r.rigid_kinetic_energy_J, r.vibration_energy_J}) {
+    if (!std::isfinite(v)) fail("the impulse or an energy");
+  }
+  for (const PointVelocity& p : r.points) {
+    for (std::size_t i = 0; i < r.time_s.size(); ++i) {
+      if (!std::isfinite(p.dc_m_s[i]) || !std::isfinite(p.ac_m_s[i])) {
+        fail("the velocity at " + detail::format_number(p.from_butt_m) + " m from the butt, t = " +
+             detail::format_number(r.time_s[i]) + " s,");
+      }
+    }
+  }
+}
+
+// The root e in [0, e_r] of e^2 + a (1 + e)^2 = e_r^2, a = mu kappa >= 0:
+// e = (sqrt(e_r^2 (1 + a) - a) - a) / (1 + a); none when a > e_r^2 (the
+// frame would keep more energy than the collision has; header).
+std::optional<double> cor_from_balance(double a, double cor_rigid) {
+  const double er2 = cor_rigid * cor_rigid;
+  if (!(a <= er2)) return std::nullopt;
+  return std::clamp((std::sqrt(er2 * (1.0 + a) - a) - a) / (1.0 + a), 0.0, cor_rigid);
 }
 
 ResponseMode prepare_mode(const Mode& mode, double normalisation) {
@@ -304,12 +351,15 @@ ResponseModel with_fundamental(const ResponseModel& model, double f1_Hz) {
 }
 
 std::string ResponseOptions::validate() const {
-  if (modes < 1 || modes > 60) return "modes: must be in [1, 60], got " + std::to_string(modes);
+  if (modes < 1 || modes > kMaxModes) {
+    return "modes: must be in [1, " + std::to_string(kMaxModes) + "], got " + std::to_string(modes);
+  }
   if (!(free_damping_ratio >= 0.0 && free_damping_ratio < 1.0)) {
     return "free_damping_ratio: must be in [0, 1), got " + detail::format_number(free_damping_ratio);
   }
-  if (!(rel_tol >= 1e-8 && rel_tol <= 0.1)) {
-    return "rel_tol: must be in [1e-08, 0.1], got " + detail::format_number(rel_tol);
+  if (!(rel_tol >= kMinRelTol && rel_tol <= kMaxRelTol)) {
+    return "rel_tol: must be in [" + detail::format_number(kMinRelTol) + ", " + detail::format_number(kMaxRelTol) +
+           "], got " + detail::format_number(rel_tol);
   }
   return {};
 }
@@ -323,8 +373,8 @@ ResponseModel response_model(const Design& design, const ResponseOptions& option
   mode_options.rel_tol = options.rel_tol;
   mode_options.shape_samples = 0;
   if (options.support == ResponseOptions::Support::kFree) {
-    // The exact solver gives at most 6 modes; finite elements beyond.
-    if (options.modes > 6) mode_options.method = ModeOptions::Method::kFiniteElement;
+    // The exact solver gives at most kMaxExactModes; finite elements beyond.
+    if (options.modes > kMaxExactModes) mode_options.method = ModeOptions::Method::kFiniteElement;
     const ModalResult free = free_modes(frame.sections, frame.point_masses, mode_options);
     return free_response_model(frame.sections, frame.point_masses, free, options.free_damping_ratio);
   }
@@ -400,18 +450,25 @@ ImpactResponse impact_response(const ResponseModel& model, double impact_from_bu
     }
     out.points.push_back(std::move(p));
   }
+  require_finite_response(out);
   return out;
+}
+
+std::vector<double> vibration_compliance_per_mode(const ResponseModel& model, double impact_from_butt_m,
+                                                  double duration_s) {
+  require_on_implement("impact_from_butt_m", impact_from_butt_m, model.length_m);
+  detail::require_positive("duration_s", duration_s, "s");
+  std::vector<double> kappa;
+  for (const ResponseMode& m : model.modes) {
+    kappa.push_back(mode_energy_per_impulse_squared(m, mass_normalised_shape(m, impact_from_butt_m), duration_s));
+  }
+  return kappa;
 }
 
 double vibration_compliance(const ResponseModel& model, double impact_from_butt_m,
                             double duration_s) {
-  require_on_implement("impact_from_butt_m", impact_from_butt_m, model.length_m);
-  detail::require_positive("duration_s", duration_s, "s");
   double kappa = 0.0;
-  for (const ResponseMode& m : model.modes) {
-    kappa += mode_energy_per_impulse_squared(m, mass_normalised_shape(m, impact_from_butt_m),
-                                             duration_s);
-  }
+  for (double k : vibration_compliance_per_mode(model, impact_from_butt_m, duration_s)) kappa += k;
   return kappa;
 }
 
@@ -436,15 +493,15 @@ DerivedCor derive_cor(const ResponseModel& model, double impact_from_butt_m, dou
         mode, mass_normalised_shape(mode, impact_from_butt_m), duration_s));
     out.vibration_compliance_per_kg += per_mode.back();
   }
-  // e^2 + a (1 + e)^2 = e_r^2 with a = mu kappa.
   const double a = out.reduced_mass_kg * out.vibration_compliance_per_kg;
-  const double er2 = cor_rigid * cor_rigid;
-  if (a > er2) {
-    out.saturated = true;
-    out.cor = 0.0;
-  } else {
-    out.cor = std::clamp((std::sqrt(er2 * (1.0 + a) - a) - a) / (1.0 + a), 0.0, cor_rigid);
+  const std::optional<double> e = cor_from_balance(a, cor_rigid);
+  if (!e) {
+    throw std::invalid_argument(
+        "cor_rigid: the frame would keep more than the collision's energy as vibration (mu kappa = " +
+        detail::format_significant(a) + " > cor_rigid^2 = " + detail::format_significant(cor_rigid * cor_rigid) +
+        "); the prescribed-pulse model does not hold for this implement");
   }
+  out.cor = *e;
   out.apparent_cor = apparent_cor(out.cor, out.effective_mass_kg, m);  // Eq. (16)
   out.pulse = {peak_impact_force(m, v1, out.apparent_cor, duration_s), duration_s};  // Eq. (15)
   out.impulse_N_s = ball_impulse(m, v1, out.apparent_cor);
@@ -452,7 +509,7 @@ DerivedCor derive_cor(const ResponseModel& model, double impact_from_butt_m, dou
   out.collision_energy_J = 0.5 * m * v1 * v1;
   out.vibration_energy_J = 0.5 * j2 * out.vibration_compliance_per_kg;
   out.vibration_share = out.vibration_energy_J / out.collision_energy_J;
-  out.rigid_loss_J = 0.5 * out.reduced_mass_kg * v1 * v1 * (1.0 - er2);
+  out.rigid_loss_J = 0.5 * out.reduced_mass_kg * v1 * v1 * (1.0 - cor_rigid * cor_rigid);
   for (double r : per_mode) out.mode_energy_J.push_back(0.5 * j2 * r);
   return out;
 }
@@ -464,10 +521,12 @@ std::optional<double> fundamental_for_cor(const ResponseModel& model, double imp
   detail::require_positive("f_lo_Hz", f_lo_Hz, "Hz");
   detail::require_positive("f_hi_Hz", f_hi_Hz, "Hz");
   detail::require_positive("abs_tol_Hz", abs_tol_Hz, "Hz");
+  detail::require_in_range("cor_rigid", cor_rigid, 0.0, 1.0, "");
+  detail::require_positive("ball.mass_kg", ball.mass_kg, "kg");
+  const double mu = reduced_mass(ball.mass_kg, effective_mass(model.rigid_body, impact_from_butt_m));
   auto gap = [&](double f) {
-    return derive_cor(with_fundamental(model, f), impact_from_butt_m, cor_rigid, ball, duration_s)
-               .cor -
-           target_cor;
+    const double kappa = vibration_compliance(with_fundamental(model, f), impact_from_butt_m, duration_s);
+    return cor_from_balance(mu * kappa, cor_rigid).value_or(0.0) - target_cor;
   };
   return find_root(gap, f_lo_Hz, f_hi_Hz, abs_tol_Hz);
 }

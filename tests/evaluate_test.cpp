@@ -227,3 +227,67 @@ TEST_CASE("Rigid cases refuse a derived COR, a bad design and a short output spa
 
 }  // namespace
 }  // namespace sweetspot
+
+namespace sweetspot {
+namespace {
+
+// Energy ledger of the response model (impact_response.hpp, derived COR).
+constexpr double kLedgerRoundOff = 1e-12;
+
+TEST_CASE("The frame never keeps more energy than the ball loses, from 0.3 to 100 m") {
+  int refused = 0, answered = 0;
+  for (const double length : {0.3, 0.5, 0.7, 1.0, 2.0, 5.0, 10.0, 30.0, 100.0}) {
+    for (const bool derived : {true, false}) {
+      INFO(length << " m, " << (derived ? "cor_rigid 0.85" : "cor 0.8"));
+      Design d{Implement::from_sections({Section{length, 0.25, {}}}, {})};
+      d.stiffness.EI_N_m2 = 152.0;
+      d.impact_from_butt_m = length - 0.05;
+      d.hand.center_from_butt_m = 0.07;
+      if (derived) d.cor_rigid = 0.85;
+      try {
+        const Evaluation e = evaluate(d, Fidelity::kResponse);
+        ++answered;
+        const double v1 = d.ball.speed_m_s;
+        const double incident = 0.5 * d.ball.mass_kg * v1 * v1;
+        const double ball_loss = incident * (1.0 - e.apparent_cor * e.apparent_cor);
+        REQUIRE(e.vibration_energy_J);
+        CHECK(*e.vibration_energy_J >= 0.0);
+        CHECK(*e.vibration_energy_J <= ball_loss * (1.0 + kLedgerRoundOff));
+        CHECK(*e.vibration_share >= 0.0);
+        CHECK(*e.vibration_share <= 1.0);
+        CHECK(e.cor >= 0.0);
+        CHECK(e.cor <= (derived ? 0.85 : 0.8));
+      } catch (const std::invalid_argument& error) {
+        ++refused;
+        const std::string why = error.what();
+        CHECK(why.find(derived ? "frame/cor_rigid:" : "frame/cor:") == 0);
+        CHECK(why.find("does not hold") != std::string::npos);
+      }
+    }
+  }
+  // The racquet-sized frames are answered, the long soft ones refused.
+  CHECK(answered >= 4);
+  CHECK(refused >= 4);
+}
+
+TEST_CASE("A derived COR at the edge of the model's validity falls to 0 continuously, never below") {
+  // e^2 + a (1 + e)^2 = e_r^2: as a = mu kappa rises to e_r^2, e falls to 0.
+  Design d{Implement::from_sections({Section{0.7, 0.25, {}}}, {})};
+  d.stiffness.EI_N_m2 = 152.0;
+  d.cor_rigid = 0.85;
+  double previous = 0.85;
+  for (const double EI : {152.0, 100.0, 70.0, 50.0}) {
+    d.stiffness.EI_N_m2 = EI;
+    try {
+      const Evaluation e = evaluate(d, Fidelity::kResponse);
+      CHECK(e.cor < previous);
+      CHECK(e.cor >= 0.0);
+      previous = e.cor;
+    } catch (const std::invalid_argument& error) {
+      CHECK(std::string(error.what()).find("frame/cor_rigid:") == 0);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace sweetspot

@@ -14,6 +14,14 @@
 //    shear-deformable "interdependent interpolation" element for Timoshenko),
 //    consistent mass, with the two rigid-body modes deflated exactly.
 // The hand-held beam (Cross 2004, Sec. IV) is finite-element only.
+//
+// Adjacent sections of equal mass per length and EI are one uniform stretch.
+// Elements follow the sizing, not the sections: a run of sections each
+// shorter than an element shares elements, which integrate their mass and
+// point masses exactly and take their compliance in series (the exact static
+// stiffness of piecewise EI), so 10 000 sections solve on a few dozen
+// elements. There the error follows how much the properties vary inside an
+// element rather than (beta h)^4 (see ModeOptions::rel_tol).
 
 #include <array>
 #include <optional>
@@ -24,6 +32,19 @@
 #include "sweetspot/mass_properties.hpp"
 
 namespace sweetspot {
+
+// Limits of the solvers, published once for every caller.
+// Flexible modes any solver reports (ModeOptions::modes, ResponseOptions::modes).
+inline constexpr int kMaxModes = 50;
+// Modes the exact solver gives: cosh(beta L) grows, and beyond the 6th mode
+// the unscaled frequency determinant loses more than ~1e-8 of relative accuracy.
+inline constexpr int kMaxExactModes = 6;
+// Finite elements of an explicit mesh (ModeOptions::elements).
+inline constexpr int kMaxElements = 4000;
+// The finite elements' relative tolerance on f1 (ModeOptions::rel_tol):
+// below ~1e-8 the round-off of the assembled stiffness (cond ~ (L/h)^4) dominates.
+inline constexpr double kMinRelTol = 1e-8;
+inline constexpr double kMaxRelTol = 0.1;
 
 // Shear coefficient kappa of a solid rectangular cross-section.
 inline constexpr double kRectangularShearCoefficient = 5.0 / 6.0;
@@ -46,13 +67,16 @@ struct ModeOptions {
   enum class Method { kExact, kFiniteElement };
   enum class Theory { kEulerBernoulli, kTimoshenko };
 
-  int modes = 3;          // flexible modes wanted (rigid-body modes never count), >= 1
-  double rel_tol = 1e-6;  // FE: target relative error of f1 when `elements` == 0, in [1e-8, 0.1]
+  int modes = 3;          // flexible modes wanted (rigid-body modes never count), in [1, kMaxModes]
+                          // ([1, kMaxExactModes] for kExact)
+  double rel_tol = 1e-6;  // FE: target relative error of f1 when `elements` == 0, in [kMinRelTol, kMaxRelTol]
                           // (round-off of the assembled stiffness floors FE near 1e-8).
+                          // Sections far shorter than an element and unlike each other
+                          // are resolved only on average: a few times rel_tol.
                           // The exact solver always refines roots to ~1e-12.
   Method method = Method::kExact;
   Theory theory = Theory::kEulerBernoulli;  // kTimoshenko needs kFiniteElement
-  int elements = 0;        // FE: total element count; 0 = choose from rel_tol
+  int elements = 0;        // FE: total element count in [0, kMaxElements]; 0 = choose from rel_tol
   int shape_samples = 0;   // points in ModalResult's shape table (0 = none, else >= 2)
   // One entry per section when theory == kTimoshenko, ignored otherwise.
   std::vector<TimoshenkoSection> timoshenko;
@@ -133,7 +157,7 @@ struct ModalResult {
 };
 
 // Free-free bending modes of piecewise-uniform sections plus point masses.
-// The exact solver gives up to 6 modes (cosh(beta L) conditioning) and is
+// The exact solver gives up to kMaxExactModes (cosh(beta L) conditioning) and is
 // accurate to ~1e-12; FE to about options.rel_tol on f1, higher modes
 // (beta_k / beta_1)^4 times worse. Rigid-body modes are never reported.
 // Every section needs EI > 0 and length > 0, mass >= 0 (> 0 for FE); point

@@ -148,9 +148,9 @@ ResponseModel with_fundamental(const ResponseModel& model, double f1_Hz);
 struct ResponseOptions {
   enum class Support { kFree, kHandHeld };
   Support support = Support::kFree;
-  int modes = 6;                   // flexible modes (hand-held: including the hand's), >= 1
+  int modes = 6;                   // flexible modes (hand-held: including the hand's), in [1, kMaxModes]
   double free_damping_ratio = 0.0; // z of every free mode, in [0, 1)
-  double rel_tol = 1e-6;           // FE (hand-held, Timoshenko): relative error of f1
+  double rel_tol = 1e-6;           // FE (hand-held, Timoshenko): relative error of f1, in [kMinRelTol, kMaxRelTol]
 
   // Empty if consistent, otherwise the first problem, naming the field and value.
   std::string validate() const;
@@ -158,7 +158,7 @@ struct ResponseOptions {
 
 // The design's frame (flexible_frame) free or in its hand (hand_coupling),
 // with its modes computed here. Free Euler-Bernoulli frames use the exact
-// solver (at most 6 modes), everything else finite elements. Throws
+// solver (at most kMaxExactModes), everything else finite elements. Throws
 // std::invalid_argument when the design has no stiffness, a hand-held model is
 // asked without a hand, or the options are invalid.
 ResponseModel response_model(const Design& design, const ResponseOptions& options = {});
@@ -204,6 +204,10 @@ ImpactResponse impact_response(const ResponseModel& model, double impact_from_bu
 double vibration_compliance(const ResponseModel& model, double impact_from_butt_m,
                             double duration_s);
 
+// The same per mode: kappa_k = phi_k(x_F)^2 R_k(T) [kg^-1], as model.modes.
+std::vector<double> vibration_compliance_per_mode(const ResponseModel& model, double impact_from_butt_m,
+                                                  double duration_s);
+
 // ------------------------------------------------------------ derived COR
 
 // The COR at the impact point lowered by the energy the frame keeps as
@@ -227,9 +231,15 @@ double vibration_compliance(const ResponseModel& model, double impact_from_butt_
 // cor_rigid; the vibration is counted at the end of contact (energy dissipated
 // by modal damping during contact is counted as vibration); the modes are
 // those of the model (the paper's free implement: the ball leaves before the
-// bending wave returns from the hand, Sec. VI). When mu kappa > e_r^2 the
-// frame would take more than the collision can give at e >= 0: e is 0 and
-// `saturated` is set.
+// bending wave returns from the hand, Sec. VI).
+// Validity: the balance has a root e in [0, e_r] only when mu kappa <= e_r^2.
+// Then the vibration energy, 1/2 mu v1^2 (e_r^2 - e^2), is at most what the
+// collision loses, 1/2 mu v1^2 (1 - e^2), itself at most the ball's loss of
+// kinetic energy, so vibration_share lies in [0, 1]. Beyond it (a long or
+// soft frame: mu kappa grows with the implement's compliance) the prescribed
+// half-sine would put more energy into the modes than the collision has: the
+// real force would soften and lengthen instead, which this model does not
+// describe, so derive_cor refuses rather than report energy from nowhere.
 struct DerivedCor {
   double cor = 0.0;                  // e
   double cor_rigid = 0.0;            // e_r
@@ -244,17 +254,19 @@ struct DerivedCor {
   double vibration_share = 0.0;      // vibration_energy_J / collision_energy_J
   double rigid_loss_J = 0.0;         // 1/2 mu v1^2 (1 - e_r^2)
   std::vector<double> mode_energy_J; // per model.modes
-  bool saturated = false;
 };
 
 // Throws std::invalid_argument for cor_rigid outside [0, 1], a ball mass or
-// speed <= 0, T <= 0 or an impact off the implement.
+// speed <= 0, T <= 0 or an impact off the implement, and, naming
+// "cor_rigid", outside the model's validity (mu kappa > cor_rigid^2, above).
 DerivedCor derive_cor(const ResponseModel& model, double impact_from_butt_m, double cor_rigid,
                       const Ball& ball, double duration_s);
 
 // The free fundamental [Hz] in [f_lo_Hz, f_hi_Hz] at which derive_cor gives
 // `target_cor`, scaling every EI of the model's frame (with_fundamental);
-// std::nullopt when the target is not bracketed. To `abs_tol_Hz`.
+// std::nullopt when the target is not bracketed. To `abs_tol_Hz`. Where the
+// model does not hold (too soft a frame) e is taken as 0, its limit at the
+// validity boundary, so a target > 0 is bracketed as before.
 std::optional<double> fundamental_for_cor(const ResponseModel& model, double impact_from_butt_m,
                                           double cor_rigid, const Ball& ball, double duration_s,
                                           double target_cor, double f_lo_Hz, double f_hi_Hz,

@@ -84,7 +84,7 @@ void EvaluateCommand::add_to(CLI::App& app) {
       ->check(CLI::IsMember({"rigid", "modal", "response", "auto"}))
       ->capture_default_str();
   command->add_option("--tol", tolerance, "Relative error allowed in the hand-held frequency")
-      ->check(finite_in(1e-8, 0.1))
+      ->check(finite_in(kMinRelTol, kMaxRelTol))
       ->capture_default_str();
   out.add_to(command);
 }

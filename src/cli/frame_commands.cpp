@@ -32,9 +32,9 @@ std::vector<double> points(const std::string& option, const std::vector<std::str
 void ModesCommand::add_to(CLI::App& app) {
   command = app.add_subcommand("modes", "Vibration modes free and hand-held: frequencies, damping, nodes, shapes (csv)");
   command->add_option("design", design_path, "Design file (JSON) with the frame's stiffness")->required();
-  command->add_option("--modes,-n", modes, "How many flexible modes")->check(whole_in(1, 6))->capture_default_str();
+  command->add_option("--modes,-n", modes, "How many flexible modes")->check(whole_in(1, kMaxExactModes))->capture_default_str();
   command->add_option("--tol", tolerance, "Relative error allowed in the finite-element frequencies")
-      ->check(finite_in(1e-8, 0.1))
+      ->check(finite_in(kMinRelTol, kMaxRelTol))
       ->capture_default_str();
   command->add_option("--method", method, "Free modes: exact (transfer matrices) or fe")
       ->check(CLI::IsMember({"exact", "fe"}))

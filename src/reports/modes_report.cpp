@@ -37,7 +37,10 @@ ModesData compute_modes(const DesignFile& file, int modes, double rel_tol, ModeO
     options.rel_tol = rel_tol;
     options.shape_samples = kShapeSamples;
     if (options.theory == ModeOptions::Theory::kEulerBernoulli) options.method = method;
-    ModesData data{file, evaluate(file.design), free_modes(frame.sections, frame.point_masses, options), {},
+    // The report reads only the COPs, which need no COR: a COR to be derived (cor_rigid) is not asked for.
+    Design rigid = file.design;
+    rigid.cor_rigid.reset();
+    ModesData data{file, evaluate(rigid), free_modes(frame.sections, frame.point_masses, options), {},
                    frame.mass_distribution_fitted};
     if (file.design.hand.mass_kg > 0.0) {
       options.method = ModeOptions::Method::kFiniteElement;

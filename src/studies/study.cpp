@@ -372,8 +372,8 @@ Study read_study(const Json& document, const std::string& source, const std::str
     }
   }
   if (const auto tolerance = top.number("modal_tolerance")) {
-    if (!(*tolerance >= 1e-8 && *tolerance <= 0.1)) {
-      top.fail("modal_tolerance", "must be in [1e-8, 0.1], got " + brief(Json(*tolerance)));
+    if (!(*tolerance >= kMinRelTol && *tolerance <= kMaxRelTol)) {
+      top.fail("modal_tolerance", "must be in [1e-08, 0.1], got " + brief(Json(*tolerance)));
     }
     study.modal_tolerance = *tolerance;
   }

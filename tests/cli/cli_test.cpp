@@ -400,6 +400,21 @@ TEST_CASE("evaluate asks for the response model when the COR is to be derived") 
   CHECK(j["inputs"]["frame/cor"]["provenance"].get<std::string>().find("derived") != std::string::npos);
 }
 
+TEST_CASE("modes accepts a design whose COR is to be derived, as evaluate and response do") {
+  const Sandbox box;
+  const fs::path design = box.file("d.json", R"({"implement": {"length_m": 0.7, "mass_kg": 0.25,
+      "head_to_handle_mass_ratio": 0.8}, "frame": {"cor_rigid": 0.85, "fundamental_free_Hz": 150}})");
+  for (const char* command : {"evaluate", "response", "modes"}) {
+    INFO(command);
+    const Run run = box.run(std::string(command) + " \"" + design.string() + "\"");
+    CHECK(run.status == 0);
+    CHECK(run.err.empty());
+  }
+  const Run modes = box.run("modes \"" + design.string() + "\" --format json");
+  REQUIRE(modes.status == 0);
+  CHECK(nlohmann::json::parse(modes.out)["free"][0]["frequency_Hz"].get<double>() == Approx(150.0).epsilon(1e-9));
+}
+
 }  // namespace
 
 namespace {
