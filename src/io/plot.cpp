@@ -164,22 +164,26 @@ void copy_file(int from, OutputFile& to) {
   }
 }
 
-// A double-quoted gnuplot string (a file name: taken as it is).
+// A single-quoted gnuplot string: gnuplot substitutes `commands` in backquotes
+// inside double quotes (a title or file name from a user's file would run
+// them), never inside single quotes, where only a quote is special (written
+// twice). A control character would end the command line: it becomes a space.
 std::string quoted(const std::string& text) {
-  std::string out = "\"";
+  std::string out = "'";
   for (const char c : text) {
-    if (c == '"' || c == '\\') out += '\\';
-    out += c;
+    if (c == '\'') out += '\'';
+    out += static_cast<unsigned char>(c) < 0x20 || c == 0x7f ? ' ' : c;
   }
-  return out + "\"";
+  return out + "'";
 }
 
-// A double-quoted label that the enhanced text mode prints as it is: an
-// underscore is a literal (output names are snake_case), not a subscript.
+// A label that the enhanced text mode prints as it is: its markup characters
+// (an underscore is a subscript, ^ a superscript, braces group, @ & ~ space
+// and overprint) are escaped, so output names in snake_case print literally.
 std::string label(const std::string& text) {
   std::string escaped;
   for (const char c : text) {
-    if (c == '_' || c == '^') escaped += '\\';
+    if (c == '_' || c == '^' || c == '{' || c == '}' || c == '@' || c == '&' || c == '~') escaped += '\\';
     escaped += c;
   }
   return quoted(escaped);

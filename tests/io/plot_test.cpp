@@ -24,9 +24,26 @@ Plot two_points(const std::string& title) {
 
 TEST_CASE("Labels print underscores literally while file names are left alone") {
   const std::string script = gnuplot_script(two_points("peak_wrist_force_N"), "/tmp/out_dir/a_b.png");
-  CHECK(script.find("set output \"/tmp/out_dir/a_b.png\"") != std::string::npos);
-  CHECK(script.find("set title \"peak\\\\_wrist\\\\_force\\\\_N\"") != std::string::npos);
-  CHECK(script.find("title \"peak\\\\_wrist\\\\_force\\\\_N\"") != std::string::npos);
+  CHECK(script.find("set output '/tmp/out_dir/a_b.png'") != std::string::npos);
+  CHECK(script.find("set title 'peak\\_wrist\\_force\\_N'") != std::string::npos);
+  CHECK(script.find("title 'peak\\_wrist\\_force\\_N'") != std::string::npos);
+}
+
+TEST_CASE("Text from a user's file never runs as a command: gnuplot strings are single-quoted") {
+  // gnuplot runs `commands` in backquotes inside double-quoted strings.
+  const auto dir = std::filesystem::temp_directory_path() / "sweetspot_plot_backquote_test";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::string witness = (dir / "ran").string();
+  const std::string name = "`touch " + witness + "` it's \"quoted\"\nand {odd}";
+  const std::string script = gnuplot_script(two_points(name), "");
+  CHECK(script.find("set title '`touch") != std::string::npos);  // inside single quotes
+  CHECK(script.find("it''s") != std::string::npos);       // a quote is written twice
+  CHECK(script.find("\"quoted\" and") != std::string::npos);  // the newline became a space
+  std::string why;
+  CHECK(render_png(two_points(name), (dir / "p.png").string(), &why));
+  CHECK_FALSE(std::filesystem::exists(witness));
+  std::filesystem::remove_all(dir);
 }
 
 TEST_CASE("A plot renders to a real PNG at a path with underscores") {
