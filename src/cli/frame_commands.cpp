@@ -100,11 +100,12 @@ int ResponseCommand::run() const {
   OutputOptions{"csv", csv_path}.emit(io::response_csv(data));
   if (plot.empty()) return kExitOk;
   const auto plots = io::response_plots(data);
-  int status = kExitOk;
   for (std::size_t k = 0; k < plots.size(); ++k) {
-    status = std::max(status, render_or_warn(plots[k], plot_file(plot, fmt::format("-at-{:g}cm", at[k] * 100))));
+    // The first plot that cannot be written ends the run: one message, exit 1.
+    const std::string png = plot_file(plot, fmt::format("-at-{:g}cm", at[k] * 100));
+    if (const int failed = render_or_warn(plots[k], png); failed != kExitOk) return failed;
   }
-  return status;
+  return kExitOk;
 }
 
 }  // namespace sweetspot::cli

@@ -86,13 +86,13 @@ int main(int argc, char** argv) {
     std::cerr << "sweetspot: " << sweetspot::io::one_line(e.what()) << "\n";
     return kExitBadInput;
   } catch (const sweetspot::io::InputError& e) {
-    std::cerr << "sweetspot: " << e.what() << "\n";
+    std::cerr << "sweetspot: " << sweetspot::io::one_line(e.what()) << "\n";
     return kExitBadInput;
   } catch (const std::invalid_argument& e) {
-    std::cerr << "sweetspot: " << e.what() << "\n";
+    std::cerr << "sweetspot: " << sweetspot::io::one_line(e.what()) << "\n";
     return kExitBadInput;
   } catch (const std::exception& e) {
-    std::cerr << "sweetspot: " << e.what() << "\n";
+    std::cerr << "sweetspot: " << sweetspot::io::one_line(e.what()) << "\n";
     return kExitRuntimeError;
   }
   std::cout.flush();

@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "io/atomic_file.hpp"
+#include "io/input_error.hpp"
 
 namespace sweetspot::cli {
 
@@ -41,7 +42,7 @@ std::string plot_file(const std::string& png, const std::string& suffix) {
 int render_or_warn(const io::Plot& plot, const std::string& png) {
   std::string why;
   if (io::render_png(plot, png, &why)) return kExitOk;
-  std::cerr << "sweetspot: cannot write " << png << ": " << why << "\n";
+  std::cerr << "sweetspot: cannot write " << io::one_line(png) << ": " << why << "\n";
   return kExitRuntimeError;
 }
 

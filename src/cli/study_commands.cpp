@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
+#include "io/input_error.hpp"
 #include "io/parallel.hpp"
 #include "reports/optimization_report.hpp"
 #include "studies/optimization.hpp"
@@ -28,21 +29,33 @@ int OptimizeCommand::run() const {
   const io::Study study = io::load_study(study_path);
   const io::OptimizationResult result = io::run_optimization(study);
   // The report is complete whatever the outcome: an infeasible study's names
-  // the least violating design and each violated constraint.
-  out.emit(io::optimization_report(study, result, out.parsed(), true));
-  if (out.parsed() == io::Format::kMarkdown && !out.output.empty() && result.outcome == io::Outcome::kOptimum) {
+  // the least violating design and each violated constraint. It is not the
+  // answer asked for, so it never replaces an --output file: it goes to
+  // standard output, and the file is left as it was.
+  const bool optimum = result.outcome == io::Outcome::kOptimum;
+  const std::string report = io::optimization_report(study, result, out.parsed(), true);
+  if (optimum) {
+    out.emit(report);
+  } else {
+    std::cout << report;
+  }
+  if (out.parsed() == io::Format::kMarkdown && !out.output.empty() && optimum) {
     std::cerr << result.summary.brief_report() << "\n";
   }
   const int plotted = plot.empty() ? kExitOk : render_or_warn(io::convergence_plot(study, result), plot);
   if (plotted != kExitOk) return plotted;  // a file that could not be written comes first
+  const std::string where = out.output.empty() ? std::string("the report gives")
+                                               : "the report on standard output gives";
+  const std::string kept = out.output.empty() ? "" : " (" + io::one_line(out.output) + " left as it was)";
   switch (result.outcome) {
     case io::Outcome::kOptimum: return kExitOk;
     case io::Outcome::kInfeasible:
-      std::cerr << "sweetspot: " << study.source
-                << ": no design meets the constraints; the report gives the least violating one\n";
+      std::cerr << "sweetspot: " << io::one_line(study.source) << ": no design meets the constraints; " << where
+                << " the least violating one" << kept << "\n";
       return kExitInfeasible;
     case io::Outcome::kNoValue:
-      std::cerr << "sweetspot: " << study.source << ": no valid design was found: " << result.no_value << "\n";
+      std::cerr << "sweetspot: " << io::one_line(study.source) << ": no valid design was found: " << result.no_value
+                << kept << "\n";
       return kExitInfeasible;
   }
   return kExitOk;
@@ -76,13 +89,13 @@ int SweepCommand::run() const {
     std::cerr << "sweetspot: no plot: the grid has more than " << io::kMaxPlotPoints << " points\n";
     return kExitOk;
   }
-  int status = kExitOk;
   for (std::size_t k = 0; k < plots.size(); ++k) {
     const std::string png =
         plots.size() > 1 ? plot_file(plot, "-" + std::string(study.sweep_outputs[k]->name)) : plot;
-    status = std::max(status, render_or_warn(plots[k], png));
+    // The first plot that cannot be written ends the run: one message, exit 1.
+    if (const int failed = render_or_warn(plots[k], png); failed != kExitOk) return failed;
   }
-  return status;
+  return kExitOk;
 }
 
 }  // namespace sweetspot::cli

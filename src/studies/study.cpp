@@ -70,6 +70,9 @@ StudyVariable read_variable(ObjectReader& r, const Json& design, int grid_points
   }
   const double current = design.at(pointer).get<double>();
   const Json& values = array_at(r, "values", false);
+  if (r.child("values") && values.empty()) {
+    r.fail("values", "expected at least one value (leave \"values\" out for an even grid from min to max)");
+  }
   const auto value_pointer = [&](std::size_t k) { return r.pointer() + "/values/" + std::to_string(k); };
   for (std::size_t k = 0; k < values.size(); ++k) {
     if (!values[k].is_number() || !std::isfinite(values[k].get<double>())) {

@@ -238,6 +238,7 @@ check_one() {
       have=$(find "$dir" -mindepth 1 -maxdepth 1 -printf '%P\n' | LC_ALL=C sort)
       [ "$want" = "$have" ] || why+=("$dir holds [$(echo $have | head -c 200)] expected [$*]") ;;
     'has~') grep -qaF -- "$2" "$p" || why+=("$1 lacks '$2'") ;;
+    'has~i') grep -qaiF -- "$2" "$p" || why+=("$1 lacks '$2' (in any case)") ;;
     'has!~') grep -qaF -- "$2" "$p" && why+=("$1 holds '$2': $(grep -m1 -aF -- "$2" "$p" | head -c 120)") ;;
     has-re) grep -qaE -- "$2" "$p" || why+=("$1 does not match /$2/") ;;
     lines)
