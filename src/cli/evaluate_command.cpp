@@ -28,6 +28,8 @@ int run_batch(const EvaluateCommand& c) {
     if (!options.base->contains("implement")) {
       throw io::InputError(c.batch_base, "/implement", "missing: the base design needs an implement");
     }
+    // ... and a value it gets wrong is wrong for every row: said once, at the base's own path.
+    io::evaluate_design_file(io::read_design(*options.base, c.batch_base), "", c.tolerance);
   }
   options.format = c.out.parsed() == io::Format::kJson ? io::Format::kJson : io::Format::kCsv;
   options.threads = c.threads;

@@ -53,17 +53,21 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    if (app.get_subcommands().empty() && (argc == 1 || argv[1][0] != '-')) {
-      // No command was recognised: name the word taken for one, and list the commands.
+    if (app.get_subcommands().empty()) {
+      // No command was recognised: name the word taken for one (or the
+      // option given before any), and list the commands.
       std::string commands;
       for (const CLI::App* command : app.get_subcommands([](const CLI::App*) { return true; })) {
         commands += (commands.empty() ? "" : ", ") + command->get_name();
       }
-      if (argc > 1) {
-        std::cerr << "sweetspot: unknown command '" << sweetspot::io::one_line(argv[1]) << "' (commands: " << commands
-                  << "; see --help)\n";
+      if (argc > 1 && argv[1][0] == '-') {
+        std::cerr << "sweetspot: unknown option '" << sweetspot::io::one_line(argv[1])
+                  << "' before the subcommand (subcommands: " << commands << "; see --help)\n";
+      } else if (argc > 1) {
+        std::cerr << "sweetspot: unknown subcommand '" << sweetspot::io::one_line(argv[1])
+                  << "' (subcommands: " << commands << "; see --help)\n";
       } else {
-        std::cerr << "sweetspot: a command is required (" << commands << "; see --help)\n";
+        std::cerr << "sweetspot: a subcommand is required (" << commands << "; see --help)\n";
       }
       return kExitBadInput;
     }

@@ -103,7 +103,7 @@ Json evaluation_json(const DesignFile& file, const Evaluation& e) {
 }
 
 std::string evaluation_report(const DesignFile& file, const Evaluation& e, Format format) {
-  if (format == Format::kJson) return evaluation_json(file, e).dump(2) + "\n";
+  if (format == Format::kJson) return evaluation_json(file, e).dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
   if (format == Format::kCsv) {
     std::string header = "name";
     std::string row = csv_field(file.name);

@@ -479,7 +479,12 @@ std::optional<double> ObjectReader::quantity(std::string_view base, Dimension di
     if (!present[u]) continue;
     if (found) fail(*present[u], "contradicts " + pointer_of(*found) + ": give the quantity once, in one unit");
     found = present[u];
-    result = finite_number(*found, object_[*found]) * list[u].to_si;
+    const double given = finite_number(*found, object_[*found]);
+    result = given * list[u].to_si;
+    if (!std::isfinite(*result)) {
+      fail(*found, "too large: " + brief(object_[*found]) + " overflows when converted to SI (" +
+                       std::string(list.front().suffix.substr(1)) + ")");
+    }
   }
   record(std::string(base) + std::string(list.front().suffix), *found);
   return result;

@@ -77,7 +77,7 @@ std::string modes_report(const ModesData& data, Format format) {
     for (const Mode& m : data.held.modes) j["hand_held"].push_back(mode_json(m, L, true));
     j["free_method"] = data.free.method == ModeOptions::Method::kExact ? "exact" : "finite elements";
     j["hand_held_elements"] = data.held.elements_used;
-    return j.dump(2) + "\n";
+    return j.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
   }
   std::string md = fmt::format("# Vibration modes: {}\n\n", md_cell(data.design.name));
   if (data.mass_distribution_fitted) {

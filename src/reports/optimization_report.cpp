@@ -92,7 +92,7 @@ std::string optimization_report(const Study& study, const OptimizationResult& r,
       j["outputs_start"][std::string(o.name)] = a ? Json(*a) : Json(nullptr);
       j["outputs_best"][std::string(o.name)] = b ? Json(*b) : Json(nullptr);
     }
-    return j.dump(2) + "\n";
+    return j.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
   }
   if (format == Format::kCsv) {
     std::string csv = "output,start,best\n";
@@ -191,7 +191,7 @@ std::string optimization_report(const Study& study, const OptimizationResult& r,
   md += std::string(r.outcome == Outcome::kOptimum ? "\nThe best design"
                     : r.outcome == Outcome::kInfeasible ? "\nThe least violating design"
                                                         : "\nThe last design the search kept") +
-        " as a design file (`sweetspot evaluate` accepts it):\n\n```json\n" + design_to_json(r.best).dump(2) +
+        " as a design file (`sweetspot evaluate` accepts it):\n\n```json\n" + design_to_json(r.best).dump(2, ' ', false, Json::error_handler_t::replace) +
         "\n```\n";
   return md;
 }

@@ -85,7 +85,7 @@ std::string table1_report(const std::vector<Table1Row>& rows, Format format) {
                    {"paper_F0_N", r.paper_F0_N ? Json(*r.paper_F0_N) : Json(nullptr)},
                    {"paper_Fw_N", r.paper_Fw_N ? Json(*r.paper_Fw_N) : Json(nullptr)}});
     }
-    return j.dump(2) + "\n";
+    return j.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
   }
   if (format == Format::kCsv) {
     std::string csv =

@@ -37,6 +37,10 @@ std::string_view trimmed(std::string_view text) {
 // A cell or column name quoted for a message, shortened like brief().
 std::string shown(std::string_view text) { return brief(Json(valid_utf8(text))); }
 
+// A cell's text in a row's error, in single quotes: the error column is a CSV
+// field, where a double quote would be written twice ("got ""VS5""").
+std::string shown_cell(std::string_view text) { return "'" + one_line(valid_utf8(text)) + "'"; }
+
 // The lines of a catalogue, each read into a buffer that never grows past
 // kMaxBatchLineBytes: a longer line, a NUL byte, bytes that are not UTF-8
 // and a failed read are refused with the line they are on. A byte-order mark
@@ -444,10 +448,10 @@ class Evaluator {
           double value = 0.0;
           const auto [end, error] = std::from_chars(cell.data(), cell.data() + cell.size(), value);
           if (error != std::errc() || end != cell.data() + cell.size() || cell.empty()) {
-            throw InputError(where, pointers_[k], "expected a number, got " + shown(cells.fields[k]));
+            throw InputError(where, pointers_[k], "expected a number, got " + shown_cell(cells.fields[k]));
           }
           if (!std::isfinite(value)) {
-            throw InputError(where, pointers_[k], "expected a finite number, got " + shown(cells.fields[k]));
+            throw InputError(where, pointers_[k], "expected a finite number, got " + shown_cell(cells.fields[k]));
           }
           try {
             columns_[k].apply(document, value);
@@ -471,8 +475,11 @@ class Evaluator {
       }
     } catch (const InputError& e) {
       row.error = e.what();
-      if (csv_ && !row.bad_column && e.detail().starts_with("unknown key")) {
-        // A field the design does not have is the header's fault, not the row's.
+      const bool shape_fault = e.detail().starts_with("unknown key") || e.detail().starts_with("expected a JSON object") ||
+                               e.detail().starts_with("expected an array");
+      if (csv_ && !row.bad_column && shape_fault) {
+        // A field the design does not have, or a number where the design has
+        // an object or a list, is the header's fault, not the row's.
         for (std::size_t k = 0; k < pointers_.size(); ++k) {
           if (pointers_[k] == e.pointer() || pointers_[k].starts_with(e.pointer() + "/")) {
             row.bad_column = k + 1;
@@ -513,7 +520,7 @@ void write_row(const Row& row, Format format, std::string& out) {
   }
   out += std::to_string(row.line);
   out += ",";
-  out += csv_field(row.name);
+  out += csv_field(one_line(row.name));  // a row is one line of the table
   for (const OutputSpec& o : output_specs()) {
     const auto value = row.evaluation ? o.value(*row.evaluation) : std::nullopt;
     out += ',';
@@ -548,8 +555,13 @@ BatchSummary run_batch(std::istream& in, const std::string& source, const BatchO
   if (options.input == CatalogueFormat::kAuto) csv = have_line && !trimmed(line).starts_with('{');
   std::vector<std::string> header;
   const std::string header_at = fmt::format("{}:{}", source, reader.line_number());
+  // A catalogue with no row at all is a mistake (the wrong file, an empty
+  // pipe), not a catalogue of nothing.
+  if (!have_line) {
+    throw InputError(source, "", csv ? "the file is empty, expected a CSV header"
+                                     : "the file is empty, expected one design per line (JSON Lines)");
+  }
   if (csv) {
-    if (!have_line) throw InputError(source, "", "the file is empty, expected a CSV header");
     complete_record(reader, line);
     header = read_header(line, header_at);
   }

@@ -419,7 +419,7 @@ TEST_CASE("modes accepts a design whose COR is to be derived, as evaluate and re
 
 namespace {
 
-TEST_CASE("An infeasible study writes its complete report and exits 3") {
+TEST_CASE("An infeasible study prints its complete report, leaves --output as it was, and exits 3") {
   const Sandbox box;
   const fs::path study = box.file("infeasible.json", std::string(R"({"design": ")") + SWEETSPOT_SOURCE_DIR +
                                                          R"(/designs/table1/row1.json",
@@ -431,8 +431,10 @@ TEST_CASE("An infeasible study writes its complete report and exits 3") {
   const Run run = box.run("optimize \"" + study.string() + "\" --output \"" + report.string() + "\"");
   CHECK(run.status == 3);
   CHECK(run.err == "sweetspot: " + study.string() +
-                       ": no design meets the constraints; the report gives the least violating one\n");
-  const std::string text = slurp(report);
+                       ": no design meets the constraints; the report on standard output gives the least violating "
+                       "one (" + report.string() + " left as it was)\n");
+  CHECK(slurp(report) == "an earlier report");
+  const std::string text = run.out;
   CHECK(text.find("No design meets the constraints; the least violating one is") != std::string::npos);
   CHECK(text.find("`swingweight_kg_cm2 <= 100` is ") != std::string::npos);
   CHECK(text.find("```\n") == text.size() - 4);  // complete: it ends with the design file
@@ -954,7 +956,7 @@ TEST_CASE("evaluate --batch - reads standard input, CSV or JSON Lines by its fir
   const fs::path bad = box.file("in3.txt", "name,implement.mass_kg\nA,VS5\n");
   const Run c = run_with_input(box, "evaluate --batch - --base \"" + base.string() + "\"", bad);
   CHECK(c.status == 1);
-  CHECK(c.out.find("(standard input):2: /implement/mass_kg: expected a number, got \"\"VS5\"\"") != std::string::npos);
+  CHECK(c.out.find("(standard input):2: /implement/mass_kg: expected a number, got 'VS5'") != std::string::npos);
 }
 
 TEST_CASE("A command-line number is checked and named as the command line's") {
@@ -993,15 +995,18 @@ TEST_CASE("A point the command line puts off the implement is named as the comma
   CHECK(impacts.err == "sweetspot: --impacts 0.5: outside the implement (length 0.001 m)\n");
 }
 
-TEST_CASE("An unknown command is named, with the commands there are") {
+TEST_CASE("An unknown subcommand or option is named, with the subcommands there are") {
   const Sandbox box;
   const Run run = box.run("frobnicate");
   CHECK(run.status == 2);
-  CHECK(run.err.rfind("sweetspot: unknown command 'frobnicate' (commands: evaluate, ", 0) == 0);
+  CHECK(run.err.rfind("sweetspot: unknown subcommand 'frobnicate' (subcommands: evaluate, ", 0) == 0);
   CHECK(one_line(run));
+  const Run option = box.run("--frobnicate");
+  CHECK(option.status == 2);
+  CHECK(option.err.rfind("sweetspot: unknown option '--frobnicate' before the subcommand (subcommands: ", 0) == 0);
   const Run none = box.run("");
   CHECK(none.status == 2);
-  CHECK(none.err.rfind("sweetspot: a command is required (evaluate, ", 0) == 0);
+  CHECK(none.err.rfind("sweetspot: a subcommand is required (evaluate, ", 0) == 0);
 }
 
 TEST_CASE("A file name is printed on one line, and stands in for a name as valid UTF-8") {
