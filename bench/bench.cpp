@@ -1,23 +1,21 @@
 #include "bench/bench.hpp"
 
+#include <fmt/format.h>
 #include <sys/utsname.h>
 
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <memory>
-#include <sstream>
-#include <limits>
 #include <optional>
-#include <utility>
+#include <sstream>
 #include <thread>
+#include <utility>
 #include <vector>
 
-#include <fmt/format.h>
-
-#include "sweetspot/evaluate.hpp"
 #include "io/atomic_file.hpp"
 #include "io/format.hpp"
 #include "io/input_error.hpp"
@@ -27,6 +25,7 @@
 #include "studies/optimization.hpp"
 #include "studies/study.hpp"
 #include "studies/sweep.hpp"
+#include "sweetspot/evaluate.hpp"
 
 namespace sweetspot::io {
 namespace {
@@ -74,8 +73,8 @@ std::vector<std::string> algorithms_for(const Study& study, const Problem& probl
 struct StudyFigures {
   double study1_ms, study1_json_ms, study3a_ms, study3a_json_ms;
 };
-std::string targets_section(const ThroughputReport& cli, const PeerFigures& peers, const StudyFigures& studies,
-                            double arrays_ns, double cases_ns) {
+std::string targets_section(const ThroughputReport& cli, const PeerFigures& peers,
+                            const StudyFigures& studies, double arrays_ns, double cases_ns) {
   const bool have_peers = peers.skipped.empty();
   const auto ratio = [&](double ours, double theirs) {
     return have_peers && ours > 0.0 ? fmt::format("{:.1f}x", theirs / ours) : std::string("-");
@@ -83,42 +82,59 @@ std::string targets_section(const ThroughputReport& cli, const PeerFigures& peer
   const auto met = [](bool ok) { return ok ? "met" : "NOT met"; };
   std::string md = fmt::format(
       "\n## Designs compiled once: the targets, against NumPy/SciPy\n\n"
-      "Every study variable, sweep axis and batch column is bound once to the typed design (its unit factor and "
+      "Every study variable, sweep axis and batch column is bound once to the typed design (its "
+      "unit factor and "
       "a setter); each point sets numbers and re-derives only what depends on them. The peers are "
-      "`bench/peers/*.py`, the same work written the obvious way in NumPy/SciPy, run with the system's Python "
-      "(whole process for the sweep and the batch, as sweetspot is timed; in-process for the optimisation and "
+      "`bench/peers/*.py`, the same work written the obvious way in NumPy/SciPy, run with the "
+      "system's Python "
+      "(whole process for the sweep and the batch, as sweetspot is timed; in-process for the "
+      "optimisation and "
       "the rigid model). `faster` is the peer's time over sweetspot's.\n\n{}"
       "| workload | sweetspot | read from JSON (before) | NumPy/SciPy | faster | target | |\n"
       "|---|---:|---:|---:|---:|---|---|\n",
       have_peers ? "" : fmt::format("Peers not run: {}.\n\n", peers.skipped));
   const double sweep_s = cli.every_point_sweep_1_thread_s;
   if (sweep_s > 0.0) {
-    md += fmt::format("| sweep, 1000 hand x 1000 forearm masses, one core, whole process (s) | {:.3f} | | {} | {} | "
-                      "<= 0.5 s and >= 5x NumPy | {} |\n",
-                      sweep_s, have_peers ? fmt::format("{:.3f}", peers.every_point_sweep_s) : "-",
-                      ratio(sweep_s, peers.every_point_sweep_s),
-                      met(sweep_s <= 0.5 && (!have_peers || peers.every_point_sweep_s >= 5.0 * sweep_s)));
+    md += fmt::format(
+        "| sweep, 1000 hand x 1000 forearm masses, one core, whole process (s) | {:.3f} | | {} | "
+        "{} | "
+        "<= 0.5 s and >= 5x NumPy | {} |\n",
+        sweep_s, have_peers ? fmt::format("{:.3f}", peers.every_point_sweep_s) : "-",
+        ratio(sweep_s, peers.every_point_sweep_s),
+        met(sweep_s <= 0.5 && (!have_peers || peers.every_point_sweep_s >= 5.0 * sweep_s)));
   }
   if (cli.batch_1_thread_s > 0.0) {
-    md += fmt::format("| `evaluate --batch`, 100 000 racquets by specs (CSV), one core, whole process (s) | {:.3f} | | "
-                      "{} | {} | <= 0.3 s | {} |\n",
-                      cli.batch_1_thread_s, have_peers ? fmt::format("{:.3f}", peers.batch_s) : "-",
-                      ratio(cli.batch_1_thread_s, peers.batch_s), met(cli.batch_1_thread_s <= 0.3));
+    md += fmt::format(
+        "| `evaluate --batch`, 100 000 racquets by specs (CSV), one core, whole process (s) | "
+        "{:.3f} | | "
+        "{} | {} | <= 0.3 s | {} |\n",
+        cli.batch_1_thread_s, have_peers ? fmt::format("{:.3f}", peers.batch_s) : "-",
+        ratio(cli.batch_1_thread_s, peers.batch_s), met(cli.batch_1_thread_s <= 0.3));
   }
-  md += fmt::format("| study 1 (`auto`), one optimisation in-process (ms) | {:.3f} | {:.3f} | {} | {} | <= 0.5 ms | {} |\n",
-                    studies.study1_ms, studies.study1_json_ms,
-                    have_peers ? fmt::format("{:.3f} (SLSQP, {} evaluations)", peers.study1_ms, peers.study1_evaluations)
-                               : "-",
-                    ratio(studies.study1_ms, peers.study1_ms), met(studies.study1_ms <= 0.5));
-  md += fmt::format("| study 3a (`auto`, modal model in the loop) in-process (ms) | {:.2f} | {:.2f} | no peer | | "
-                    "<= 5 ms | {} |\n",
-                    studies.study3a_ms, studies.study3a_json_ms, met(studies.study3a_ms <= 5.0));
-  md += fmt::format("| rigid model on distinct designs, one core (million per second) | {:.1f} (arrays) | {:.1f} "
-                    "(`RigidCase`s) | {} | {} | >= 150 | {} |\n",
-                    1e3 / arrays_ns, 1e3 / cases_ns, have_peers ? fmt::format("{:.1f}", 1e3 / peers.rigid_ns) : "-",
-                    ratio(arrays_ns, peers.rigid_ns), met(1e3 / arrays_ns >= 150.0));
-  md += "\nStudy 3a spends its time in the modal solvers (the hand-held modes at every evaluation), not in "
-        "reading the design; its peer would be a beam eigen-solver written in SciPy, which is not written.\n";
+  md += fmt::format(
+      "| study 1 (`auto`), one optimisation in-process (ms) | {:.3f} | {:.3f} | {} | {} | <= 0.5 "
+      "ms | {} |\n",
+      studies.study1_ms, studies.study1_json_ms,
+      have_peers
+          ? fmt::format("{:.3f} (SLSQP, {} evaluations)", peers.study1_ms, peers.study1_evaluations)
+          : "-",
+      ratio(studies.study1_ms, peers.study1_ms), met(studies.study1_ms <= 0.5));
+  md += fmt::format(
+      "| study 3a (`auto`, modal model in the loop) in-process (ms) | {:.2f} | {:.2f} | no peer | "
+      "| "
+      "<= 5 ms | {} |\n",
+      studies.study3a_ms, studies.study3a_json_ms, met(studies.study3a_ms <= 5.0));
+  md += fmt::format(
+      "| rigid model on distinct designs, one core (million per second) | {:.1f} (arrays) | {:.1f} "
+      "(`RigidCase`s) | {} | {} | >= 150 | {} |\n",
+      1e3 / arrays_ns, 1e3 / cases_ns,
+      have_peers ? fmt::format("{:.1f}", 1e3 / peers.rigid_ns) : "-",
+      ratio(arrays_ns, peers.rigid_ns), met(1e3 / arrays_ns >= 150.0));
+  md +=
+      "\nStudy 3a spends its time in the modal solvers (the hand-held modes at every evaluation), "
+      "not in "
+      "reading the design; its peer would be a beam eigen-solver written in SciPy, which is not "
+      "written.\n";
   return md;
 }
 
@@ -147,8 +163,9 @@ void bench_speed(const BenchOptions& options, std::ostream& log) {
   // The inputs first: a wrong folder fails at once, not after the timings.
   const fs::path studies = fs::path(options.designs_dir) / "studies";
   if (!fs::is_directory(studies)) {
-    throw InputError(studies.string(), "", "not a folder of studies (bench speed times every study in "
-                                           "DESIGNS/studies; give the designs folder with --designs)");
+    throw InputError(studies.string(), "",
+                     "not a folder of studies (bench speed times every study in "
+                     "DESIGNS/studies; give the designs folder with --designs)");
   }
   // Rigid evaluations through the library, one core, no allocation: distinct
   // designs (mass, balance, hand, impact all vary) as RigidCases, 4096 at a
@@ -156,7 +173,8 @@ void bench_speed(const BenchOptions& options, std::ostream& log) {
   constexpr int kCases = 4096;
   std::vector<RigidCase> cases;
   for (int i = 0; i < kCases; ++i) {
-    Design d{Implement::paper_racquet(0.68 + 0.001 * (i % 7), 0.25 + 0.001 * (i % 97), 0.8 + 0.01 * (i % 41))};
+    Design d{Implement::paper_racquet(0.68 + 0.001 * (i % 7), 0.25 + 0.001 * (i % 97),
+                                      0.8 + 0.01 * (i % 41))};
     d.hand.mass_kg = 0.3 + 0.05 * (i % 5);
     d.impact_from_butt_m = 0.30 + 0.003 * (i % 113);
     cases.push_back(rigid_case(d));
@@ -176,12 +194,14 @@ void bench_speed(const BenchOptions& options, std::ostream& log) {
   std::vector<std::vector<double>> out(7, std::vector<double>(kCases));
   for (int i = 0; i < kCases; ++i) {
     const RigidCase& c = cases[i];
-    const double fields[11] = {c.body.mass_kg, c.body.com_from_butt_m, c.body.I_cm_kg_m2, c.hand.from_butt_m,
-                               c.hand.mass_kg, c.forearm_equivalent_mass_kg, c.ball_mass_kg, c.ball_speed_m_s,
-                               c.cor, c.impact_duration_s, c.impact_from_butt_m};
+    const double fields[11] = {
+        c.body.mass_kg, c.body.com_from_butt_m,       c.body.I_cm_kg_m2,   c.hand.from_butt_m,
+        c.hand.mass_kg, c.forearm_equivalent_mass_kg, c.ball_mass_kg,      c.ball_speed_m_s,
+        c.cor,          c.impact_duration_s,          c.impact_from_butt_m};
     for (int k = 0; k < 11; ++k) in[k][i] = fields[k];
   }
-  const RigidCases arrays{in[0], in[1], in[2], in[3], in[4], in[5], in[6], in[7], in[8], in[9], in[10]};
+  const RigidCases arrays{in[0], in[1], in[2], in[3], in[4], in[5],
+                          in[6], in[7], in[8], in[9], in[10]};
   const RigidOutcomes arrays_out{out[0], out[1], out[2], out[3], out[4], out[5], out[6]};
   const double arrays_seconds = median_seconds(options.repeats, [&] {
     for (int pass = 0; pass < kPasses; ++pass) {
@@ -204,19 +224,22 @@ void bench_speed(const BenchOptions& options, std::ostream& log) {
   // The same design at many impact points through ImpactSweep.
   const ImpactSweep sweep(design);
   const double sweep_seconds = median_seconds(options.repeats, [&] {
-    for (int i = 0; i < kEvaluations; ++i) sink += sweep.at(0.30 + (i & 1023) * 3e-4).peak_wrist_force_N;
+    for (int i = 0; i < kEvaluations; ++i)
+      sink += sweep.at(0.30 + (i & 1023) * 3e-4).peak_wrist_force_N;
   });
   const double sweep_ns = sweep_seconds / kEvaluations * 1e9;
-  log << fmt::format("rigid: {:.1f} ns per case, {:.2f} ns per case as arrays, {:.1f} ns per Evaluation, "
-                     "{:.1f} ns per further impact\n",
-                     cases_ns, arrays_ns, rigid_ns, sweep_ns);
+  log << fmt::format(
+      "rigid: {:.1f} ns per case, {:.2f} ns per case as arrays, {:.1f} ns per Evaluation, "
+      "{:.1f} ns per further impact\n",
+      cases_ns, arrays_ns, rigid_ns, sweep_ns);
   const ThroughputReport cli = bench_throughput(options, log);
   const PeerFigures peers = bench_peers(options, log);
   // In-process, one core: a sweep's points set on the compiled design,
   // against the same read from JSON (the path they took before, kept as the
   // reference the tests compare with).
   const Study every_point = read_study(
-      Json::parse(R"({"design": {"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8},
+      Json::parse(
+          R"({"design": {"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8},
           "strings": {"impact_duration_ms": 4}, "hand": {"mass_kg": 0.5, "center_from_butt_m": 0.07},
           "forearm": {"equivalent_mass_kg": 0.5}, "impact": {"from_tip_m": 0.05}},
           "outputs": ["peak_wrist_force_N"],
@@ -226,56 +249,72 @@ void bench_speed(const BenchOptions& options, std::ostream& log) {
   const auto sweep_us = [&](bool compiled) {
     const double seconds = median_seconds(options.repeats, [&] {
       std::ostringstream csv;
-      run_sweep(every_point, csv, [](std::size_t, std::size_t) {}, SweepOptions{1, true, compiled});
+      run_sweep(
+          every_point, csv, [](std::size_t, std::size_t) {}, SweepOptions{1, true, compiled});
       sink += static_cast<double>(csv.str().size());
     });
     return seconds / 1e5 * 1e6;
   };
   const double sweep_json_us = sweep_us(false);
   const double sweep_compiled_us = sweep_us(true);
-  log << fmt::format("sweep point in-process: {:.3f} us read from JSON, {:.3f} us compiled\n", sweep_json_us,
-                     sweep_compiled_us);
+  log << fmt::format("sweep point in-process: {:.3f} us read from JSON, {:.3f} us compiled\n",
+                     sweep_json_us, sweep_compiled_us);
 
   std::string csv = "library,ns_per_evaluation,million_per_s\n";
-  for (const auto& [name, ns] : {std::pair{"rigid_outcomes", cases_ns}, std::pair{"rigid_outcomes_arrays", arrays_ns},
-                                 std::pair{"evaluate_unchecked", rigid_ns},
-                                 std::pair{"ImpactSweep::at", sweep_ns}}) {
+  for (const auto& [name, ns] :
+       {std::pair{"rigid_outcomes", cases_ns}, std::pair{"rigid_outcomes_arrays", arrays_ns},
+        std::pair{"evaluate_unchecked", rigid_ns}, std::pair{"ImpactSweep::at", sweep_ns}}) {
     csv += fmt::format("{},{},{}\n", name, exact(ns), exact(1e3 / ns));
   }
   if (!cli.csv.empty()) csv += "\n" + cli.csv;
   csv += "\nstudy,algorithm,evaluations,median_ms,objective,feasible,excess_over_best\n";
   std::string md = fmt::format(
-      "# Speed against error\n\nMeasured by `sweetspot bench speed` on {}. Every library time is the median "
+      "# Speed against error\n\nMeasured by `sweetspot bench speed` on {}. Every library time is "
+      "the median "
       "of {} runs on one core.\n\n## Rigid model, in the library\n\n"
       "| what | ns per evaluation | million per second |\n|---|---:|---:|\n"
-      "| `rigid_outcomes`: distinct designs as `RigidCase`s (F0, F_w, COP, M_eff, e_A, J) | {:.1f} | {:.1f} |\n"
-      "| `rigid_outcomes`: the same designs as arrays (`RigidCases`), the vectorised loop | {:.2f} | {:.1f} |\n"
+      "| `rigid_outcomes`: distinct designs as `RigidCase`s (F0, F_w, COP, M_eff, e_A, J) | {:.1f} "
+      "| {:.1f} |\n"
+      "| `rigid_outcomes`: the same designs as arrays (`RigidCases`), the vectorised loop | {:.2f} "
+      "| {:.1f} |\n"
       "| `evaluate_unchecked`: one `Evaluation`, every quantity of the paper | {:.1f} | {:.1f} |\n"
-      "| `ImpactSweep::at`: a further impact point of the same design, every quantity | {:.1f} | {:.1f} |\n\n"
-      "Target: at least 150 million rigid evaluations per second on one core ({}). The cases vary in "
-      "mass, balance, head/handle ratio, hand mass and impact point; 4096 of them (360 kB) are evaluated per "
+      "| `ImpactSweep::at`: a further impact point of the same design, every quantity | {:.1f} | "
+      "{:.1f} |\n\n"
+      "Target: at least 150 million rigid evaluations per second on one core ({}). The cases vary "
+      "in "
+      "mass, balance, head/handle ratio, hand mass and impact point; 4096 of them (360 kB) are "
+      "evaluated per "
       "call, as a batch or sweep chunk would be.\n{}",
-      machine_description(), options.repeats, cases_ns, 1e3 / cases_ns, arrays_ns, 1e3 / arrays_ns, rigid_ns,
-      1e3 / rigid_ns, sweep_ns, 1e3 / sweep_ns, 1e3 / arrays_ns >= 150.0 ? "met as arrays" : "NOT met",
-      cli.markdown);
+      machine_description(), options.repeats, cases_ns, 1e3 / cases_ns, arrays_ns, 1e3 / arrays_ns,
+      rigid_ns, 1e3 / rigid_ns, sweep_ns, 1e3 / sweep_ns,
+      1e3 / arrays_ns >= 150.0 ? "met as arrays" : "NOT met", cli.markdown);
   if (cli.million_point_sweep_s > 0.0) {
     md += fmt::format(
-        "\nTarget: a sweep of one million designs in a few seconds and under 50 MB resident. Along the impact "
-        "point: {:.2f} s and {:.1f} MB on all cores; a sweep whose first variable is the impact point reads one "
-        "design per row and evaluates the rest with `ImpactSweep`. Any other sweep, and a batch, sets each "
-        "point's numbers on the design compiled once when the study or the header is read (a unit factor and a "
-        "setter per variable or column; the implement rebuilt only when one of its numbers changes; a point the "
-        "binding cannot vouch for is read from JSON, which says what is wrong): {:.2f} s for a million such "
-        "points on all cores. In-process on one core, a point of a hand x forearm sweep costs {:.3f} us read "
+        "\nTarget: a sweep of one million designs in a few seconds and under 50 MB resident. Along "
+        "the impact "
+        "point: {:.2f} s and {:.1f} MB on all cores; a sweep whose first variable is the impact "
+        "point reads one "
+        "design per row and evaluates the rest with `ImpactSweep`. Any other sweep, and a batch, "
+        "sets each "
+        "point's numbers on the design compiled once when the study or the header is read (a unit "
+        "factor and a "
+        "setter per variable or column; the implement rebuilt only when one of its numbers "
+        "changes; a point the "
+        "binding cannot vouch for is read from JSON, which says what is wrong): {:.2f} s for a "
+        "million such "
+        "points on all cores. In-process on one core, a point of a hand x forearm sweep costs "
+        "{:.3f} us read "
         "from JSON and {:.3f} us compiled (CSV written to memory).\n",
-        cli.million_point_sweep_s, cli.million_point_sweep_MB, cli.every_point_sweep_s, sweep_json_us,
-        sweep_compiled_us);
+        cli.million_point_sweep_s, cli.million_point_sweep_MB, cli.every_point_sweep_s,
+        sweep_json_us, sweep_compiled_us);
   }
-  md += "\n## Optimizer: evaluations, wall time and the objective reached, per study and algorithm\n\n"
-        "`excess` is how far the objective lands above the best any algorithm found for that study "
-        "(relative); an infeasible end is marked.\n\n"
-        "| study | algorithm | evaluations | median time (ms) | objective | excess |\n"
-        "|---|---|---:|---:|---:|---:|\n";
+  md +=
+      "\n## Optimizer: evaluations, wall time and the objective reached, per study and "
+      "algorithm\n\n"
+      "`excess` is how far the objective lands above the best any algorithm found for that study "
+      "(relative); an infeasible end is marked.\n\n"
+      "| study | algorithm | evaluations | median time (ms) | objective | excess |\n"
+      "|---|---|---:|---:|---:|---:|\n";
 
   struct StudyTiming {
     double ms = 0.0;       // auto, evaluations set on the compiled design
@@ -301,15 +340,17 @@ void bench_speed(const BenchOptions& options, std::ostream& log) {
     for (const std::string& algorithm : algorithms_for(study, problem)) {
       study.options.algorithm = algorithm;
       std::optional<OptimizationResult> result;
-      const double seconds = median_seconds(options.repeats, [&] { result.emplace(run_optimization(study)); });
-      rows.push_back({algorithm, result->summary.evaluations, seconds * 1e3, result->summary.objective,
-                      result->summary.feasible});
+      const double seconds =
+          median_seconds(options.repeats, [&] { result.emplace(run_optimization(study)); });
+      rows.push_back({algorithm, result->summary.evaluations, seconds * 1e3,
+                      result->summary.objective, result->summary.feasible});
       const std::string stem = path.stem().string();
       if (algorithm == "auto" && (stem.starts_with("1-") || stem.starts_with("3a-"))) {
         // The same run with every evaluation read from JSON, as before the designs were compiled.
         const std::shared_ptr<const CompiledDesign> compiled = study.compiled;
         study.compiled.reset();
-        const double json_ms = median_seconds(options.repeats, [&] { run_optimization(study); }) * 1e3;
+        const double json_ms =
+            median_seconds(options.repeats, [&] { run_optimization(study); }) * 1e3;
         study.compiled = compiled;
         (stem.starts_with("1-") ? study1 : study3a) = StudyTiming{seconds * 1e3, json_ms};
       }
@@ -326,13 +367,17 @@ void bench_speed(const BenchOptions& options, std::ostream& log) {
                         r.evaluations, r.ms, significant(r.objective),
                         r.feasible ? fmt::format("{:.1e}", excess) : std::string("infeasible"));
       if (r.algorithm == "auto") {
-        log << fmt::format("{}: auto {} evaluations, {:.2f} ms\n", path.stem().string(), r.evaluations, r.ms);
+        log << fmt::format("{}: auto {} evaluations, {:.2f} ms\n", path.stem().string(),
+                           r.evaluations, r.ms);
       }
     }
   }
-  md += "\nTargets (issue: optimizer): rigid-model studies in at most 5 ms, the COP-on-node study with the "
-        "modal model in the loop in at most 50 ms.\n";
-  md += targets_section(cli, peers, {study1.ms, study1.json_ms, study3a.ms, study3a.json_ms}, arrays_ns, cases_ns);
+  md +=
+      "\nTargets (issue: optimizer): rigid-model studies in at most 5 ms, the COP-on-node study "
+      "with the "
+      "modal model in the loop in at most 50 ms.\n";
+  md += targets_section(cli, peers, {study1.ms, study1.json_ms, study3a.ms, study3a.json_ms},
+                        arrays_ns, cases_ns);
 
   // What each fidelity costs, and what leaving it out costs in accuracy: the
   // Table I racquet with a 150 Hz frame whose COR is derived from cor_rigid 0.85.
@@ -343,16 +388,21 @@ void bench_speed(const BenchOptions& options, std::ostream& log) {
   Design assumed = flexible;  // the cheaper models take the rigid-frame COR as the COR
   assumed.cor_rigid.reset();
   assumed.cor = 0.85;
-  md += "\n## Fidelity: cost against error\n\nThe Table I racquet with a 150 Hz frame, hit 5 cm from the tip, "
-        "its COR derived from cor_rigid = 0.85 by the response model. The cheaper models cannot derive the COR "
-        "and use 0.85: the error is theirs.\n\n"
-        "| fidelity | time per evaluation (us) | COR used | peak wrist force (N) | error in F_w |\n"
-        "|---|---:|---:|---:|---:|\n";
+  md +=
+      "\n## Fidelity: cost against error\n\nThe Table I racquet with a 150 Hz frame, hit 5 cm from "
+      "the tip, "
+      "its COR derived from cor_rigid = 0.85 by the response model. The cheaper models cannot "
+      "derive the COR "
+      "and use 0.85: the error is theirs.\n\n"
+      "| fidelity | time per evaluation (us) | COR used | peak wrist force (N) | error in F_w |\n"
+      "|---|---:|---:|---:|---:|\n";
   csv += "\nfidelity,median_us,cor,peak_wrist_force_N,relative_error_Fw\n";
-  for (const auto& level : {std::pair{"rigid", Fidelity::kRigid}, std::pair{"modal", Fidelity::kModal},
-                            std::pair{"response", Fidelity::kResponse}}) {
+  for (const auto& level :
+       {std::pair{"rigid", Fidelity::kRigid}, std::pair{"modal", Fidelity::kModal},
+        std::pair{"response", Fidelity::kResponse}}) {
     const char* name = level.first;
-    const Fidelity fidelity = level.second;  // a variable, not a binding: lambdas capture it everywhere
+    const Fidelity fidelity =
+        level.second;  // a variable, not a binding: lambdas capture it everywhere
     const Design& d = fidelity == Fidelity::kResponse ? flexible : assumed;
     constexpr int kCalls = 200;
     Evaluation e = evaluate(d, fidelity);
@@ -361,14 +411,17 @@ void bench_speed(const BenchOptions& options, std::ostream& log) {
     });
     const double us = seconds / kCalls * 1e6;
     const double error = e.peak_wrist_force_N / reference.peak_wrist_force_N - 1.0;
-    md += fmt::format("| {} | {:.2f} | {:.3f} | {:.1f} | {:+.1f} % |\n", name, us, e.cor, e.peak_wrist_force_N,
-                      100 * error);
-    csv += fmt::format("{},{},{},{},{}\n", name, exact(us), exact(e.cor), exact(e.peak_wrist_force_N), exact(error));
+    md += fmt::format("| {} | {:.2f} | {:.3f} | {:.1f} | {:+.1f} % |\n", name, us, e.cor,
+                      e.peak_wrist_force_N, 100 * error);
+    csv += fmt::format("{},{},{},{},{}\n", name, exact(us), exact(e.cor),
+                       exact(e.peak_wrist_force_N), exact(error));
     log << fmt::format("fidelity {}: {:.2f} us per evaluation\n", name, us);
   }
   md += fmt::format(
-      "\n`rigid` is `evaluate()` with every check (the library's unchecked hot path is the figure at the top); "
-      "`modal` adds the free modes (exact) and the hand-held ones (to 1e-6); `response` adds the frame's "
+      "\n`rigid` is `evaluate()` with every check (the library's unchecked hot path is the figure "
+      "at the top); "
+      "`modal` adds the free modes (exact) and the hand-held ones (to 1e-6); `response` adds the "
+      "frame's "
       "response to the ball.\n\n(checksum {:.3g})\n",
       sink);
   fs::create_directories(options.out_dir);
@@ -388,7 +441,8 @@ void bench_modes(const BenchOptions& options, std::ostream& log) {
   std::string line;
   std::getline(lines, line);  // header
   std::string table =
-      "| method | resolution | elements | time per solve (us) | f1 relative error | node error (m) | "
+      "| method | resolution | elements | time per solve (us) | f1 relative error | node error (m) "
+      "| "
       "observed order | reference |\n|---|---|---:|---:|---:|---:|---:|---|\n";
   std::map<std::string, PlotSeries> series;
   std::vector<std::string> order;
@@ -398,8 +452,8 @@ void bench_modes(const BenchOptions& options, std::ostream& log) {
     std::string cell;
     while (std::getline(cells, cell, ',')) f.push_back(cell);
     f.resize(10);
-    table += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} |\n", f[0], f[1], f[2], f[3], f[5], f[7],
-                         f[8], f[9]);
+    table += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} |\n", f[0], f[1], f[2], f[3],
+                         f[5], f[7], f[8], f[9]);
     if (!series.count(f[0])) {
       order.push_back(f[0]);
       series[f[0]] = PlotSeries{f[0], {}, {}, "linespoints lw 2 pt 7"};
@@ -408,8 +462,13 @@ void bench_modes(const BenchOptions& options, std::ostream& log) {
     series[f[0]].y.push_back(std::stod(f[5]));
   }
   Plot plot{"Speed against error of the modal solvers (f1 of the study racquet)",
-            "wall time per solve (us, one core)", "relative error of f1", std::nullopt, std::nullopt,
-            {}, {}, {}};
+            "wall time per solve (us, one core)",
+            "relative error of f1",
+            std::nullopt,
+            std::nullopt,
+            {},
+            {},
+            {}};
   plot.log_x = plot.log_y = true;
   plot.key_position = "outside right";
   for (const std::string& name : order) {
@@ -418,18 +477,25 @@ void bench_modes(const BenchOptions& options, std::ostream& log) {
   const std::string md =
       "# Speed against error: vibration modes\n\nMeasured by `sweetspot bench modes` on " +
       machine_description() +
-      ". Each time is the median of repeated calls on one core. The test racquet is the optimizer's: "
-      "two sections of 0.35 m (head/handle mass 0.8, 0.25 kg), one EI giving a free Euler-Bernoulli "
+      ". Each time is the median of repeated calls on one core. The test racquet is the "
+      "optimizer's: "
+      "two sections of 0.35 m (head/handle mass 0.8, 0.25 kg), one EI giving a free "
+      "Euler-Bernoulli "
       "fundamental of 150 Hz, 6 g of lead at 0.68 m; held with the calibrated hand.\n\n" +
       table +
       "\nReading it:\n\n"
-      "- **Free, Euler-Bernoulli:** the exact transfer-matrix solver gives f1 and the node to round-off "
+      "- **Free, Euler-Bernoulli:** the exact transfer-matrix solver gives f1 and the node to "
+      "round-off "
       "in a few microseconds (target: f1 to 1e-6 and the node to 0.1 mm in at most 10 us). Finite "
-      "elements converge at order 4 (Hermite cubics) until round-off in the assembled stiffness stops "
-      "them near 1e-9 (about 128 elements); past that the error grows again, which is why `rel_tol` has "
+      "elements converge at order 4 (Hermite cubics) until round-off in the assembled stiffness "
+      "stops "
+      "them near 1e-9 (about 128 elements); past that the error grows again, which is why "
+      "`rel_tol` has "
       "a floor of 1e-8 and the solver never refines further than it needs.\n"
-      "- **Hand-held:** the damped problem is solved on a coarse undamped basis, then each wanted mode "
-      "is refined on the full mesh with a banded complex LU (`refined`); `dense` is the full complex "
+      "- **Hand-held:** the damped problem is solved on a coarse undamped basis, then each wanted "
+      "mode "
+      "is refined on the full mesh with a banded complex LU (`refined`); `dense` is the full "
+      "complex "
       "state-space eigen-solve it replaced, kept as the reference and the fallback. They agree to "
       "round-off.\n"
       "- **Timoshenko:** converges more slowly (about order 2 in these rows); use it where shear "

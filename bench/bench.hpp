@@ -46,14 +46,14 @@ void bench_speed(const BenchOptions& options, std::ostream& log);
 // `evaluate --batch`, each on 1, 2, 4, ... and all cores: median wall time,
 // points per second, speed-up, peak resident memory.
 struct ThroughputReport {
-  std::string markdown;  // a section of speed-vs-error.md
-  std::string csv;       // its table
-  std::optional<Plot> plot;  // points per second against threads
-  double million_point_sweep_s = 0.0;   // on all cores
+  std::string markdown;                // a section of speed-vs-error.md
+  std::string csv;                     // its table
+  std::optional<Plot> plot;            // points per second against threads
+  double million_point_sweep_s = 0.0;  // on all cores
   double million_point_sweep_MB = 0.0;
-  double every_point_sweep_s = 0.0;     // a million points, every one evaluated, on all cores
+  double every_point_sweep_s = 0.0;  // a million points, every one evaluated, on all cores
   double every_point_sweep_1_thread_s = 0.0;
-  double batch_1_thread_s = 0.0;        // 100 000 CSV rows on one core
+  double batch_1_thread_s = 0.0;  // 100 000 CSV rows on one core
 };
 ThroughputReport bench_throughput(const BenchOptions& options, std::ostream& log);
 
@@ -62,13 +62,13 @@ ThroughputReport bench_throughput(const BenchOptions& options, std::ostream& log
 // options.repeats runs), study 1 with scipy.optimize SLSQP and the rigid model
 // on a million designs in-process (as the scripts time them).
 struct PeerFigures {
-  std::string skipped;              // why they were not measured; empty when they were
+  std::string skipped;               // why they were not measured; empty when they were
   double every_point_sweep_s = 0.0;  // 1000 x 1000 points, CSV out, whole process
   double batch_s = 0.0;              // 100 000 racquets by specs, CSV in and out, whole process
   double study1_ms = 0.0;            // one SLSQP optimisation
   int study1_evaluations = 0;
   double study1_objective = 0.0;
-  double rigid_ns = 0.0;             // per design
+  double rigid_ns = 0.0;  // per design
 };
 PeerFigures bench_peers(const BenchOptions& options, std::ostream& log);
 

@@ -15,6 +15,8 @@
 // median_us: median wall time of one call over repeated calls (one thread).
 //
 // `budget_ms` is the time spent per row (the median of as many calls as fit).
+#include <fmt/printf.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -24,10 +26,8 @@
 #include <string>
 #include <vector>
 
-#include <fmt/printf.h>
-
-#include "sweetspot/beam_modes.hpp"
 #include "bench/bench.hpp"
+#include "sweetspot/beam_modes.hpp"
 
 namespace {
 
@@ -83,16 +83,17 @@ struct Row {
   Fundamental f;
 };
 
-void print(std::string& out, const std::vector<Row>& rows, const Fundamental& ref, const std::string& ref_name) {
+void print(std::string& out, const std::vector<Row>& rows, const Fundamental& ref,
+           const std::string& ref_name) {
   double previous_error = NAN;
   for (const Row& r : rows) {
     const double error = std::abs(r.f.f_Hz / ref.f_Hz - 1.0);
     const double node_error = std::abs(r.f.node_m - ref.node_m);
     const double order = std::log2(previous_error / error);
-    out += fmt::sprintf("%s,%s,%d,%.2f,%.12f,%.3e,%.9f,%.3e,%s,%s\n", r.method.c_str(),
-                r.resolution.c_str(), r.f.elements, r.us, r.f.f_Hz, error, r.f.node_m, node_error,
-                std::isfinite(order) ? std::to_string(order).substr(0, 5).c_str() : "",
-                ref_name.c_str());
+    out += fmt::sprintf(
+        "%s,%s,%d,%.2f,%.12f,%.3e,%.9f,%.3e,%s,%s\n", r.method.c_str(), r.resolution.c_str(),
+        r.f.elements, r.us, r.f.f_Hz, error, r.f.node_m, node_error,
+        std::isfinite(order) ? std::to_string(order).substr(0, 5).c_str() : "", ref_name.c_str());
     previous_error = error;
   }
 }
@@ -108,8 +109,9 @@ std::string speed_vs_error_modes_csv(double budget_ms) {
   for (Section& s : racquet) s.EI_N_m2 = EI;
   const HandCoupling hand = calibrated_hand();
 
-  out += "method,resolution,elements,median_us,f1_Hz,f1_rel_error,node_m,node_abs_error_m,"
-         "order,reference\n";
+  out +=
+      "method,resolution,elements,median_us,f1_Hz,f1_rel_error,node_m,node_abs_error_m,"
+      "order,reference\n";
 
   // Free Euler-Bernoulli: exact against itself, FE against exact.
   ModeOptions exact;
@@ -129,9 +131,9 @@ std::string speed_vs_error_modes_csv(double budget_ms) {
       const bool big = n > 256 || (hand_held && n > 64 &&
                                    o.damped_solver == ModeOptions::DampedSolver::kDenseStateSpace);
       auto solve = [&] {
-        return fundamental_of(hand_held ? hand_held_modes(racquet, kTape, hand, o)
-                                        : free_modes(racquet, kTape, o),
-                              hand_held);
+        return fundamental_of(
+            hand_held ? hand_held_modes(racquet, kTape, hand, o) : free_modes(racquet, kTape, o),
+            hand_held);
       };
       const auto [us, f] = time_it(solve, big ? 0.0 : budget_ms);
       rows.push_back({name, "elements=" + std::to_string(n), us, f});
@@ -166,15 +168,16 @@ std::string speed_vs_error_modes_csv(double budget_ms) {
   print(out, fe_rows("hand-held-refined", held, meshes, true), held_ref, held_ref_name);
 
   // What the optimizer calls: elements chosen from rel_tol.
-  for (auto solver : {ModeOptions::DampedSolver::kDenseStateSpace,
-                      ModeOptions::DampedSolver::kRefined}) {
+  for (auto solver :
+       {ModeOptions::DampedSolver::kDenseStateSpace, ModeOptions::DampedSolver::kRefined}) {
     std::vector<Row> rows;
     for (double tol : {1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8}) {
       ModeOptions o = held;
       o.damped_solver = solver;
       o.rel_tol = tol;
       auto solve = [&] { return fundamental_of(hand_held_modes(racquet, kTape, hand, o), true); };
-      const bool dense_and_fine = solver == ModeOptions::DampedSolver::kDenseStateSpace && tol < 1e-6;
+      const bool dense_and_fine =
+          solver == ModeOptions::DampedSolver::kDenseStateSpace && tol < 1e-6;
       const auto [us, f] = time_it(solve, dense_and_fine ? 0.0 : budget_ms);
       char res[32];
       std::snprintf(res, sizeof res, "rel_tol=%.0e", tol);

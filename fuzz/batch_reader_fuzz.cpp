@@ -74,7 +74,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   std::string_view body = text;
   if (body.starts_with("\xEF\xBB\xBF")) body.remove_prefix(3);
   options.input = body.empty() || body.front() != '{' ? sweetspot::io::CatalogueFormat::kCsv
-                                                        : sweetspot::io::CatalogueFormat::kJsonLines;
+                                                      : sweetspot::io::CatalogueFormat::kJsonLines;
   options.base = sweetspot::io::parse_json(kBase, "base.json");
   options.format = size % 2 == 0 ? sweetspot::io::Format::kCsv : sweetspot::io::Format::kJson;
   options.threads = 1;

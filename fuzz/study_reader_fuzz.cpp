@@ -30,7 +30,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string source = "fuzz-study.json";
   try {
     const sweetspot::io::Json document = sweetspot::io::parse_json(text, source);
-    const sweetspot::io::Study study = sweetspot::io::read_study(document, source, SWEETSPOT_FUZZ_STUDY_DIR);
+    const sweetspot::io::Study study =
+        sweetspot::io::read_study(document, source, SWEETSPOT_FUZZ_STUDY_DIR);
     // Every accepted study has a valid start: its objective is a number.
     std::vector<double> start;
     for (const sweetspot::io::StudyVariable& v : study.variables) start.push_back(v.start);

@@ -1,11 +1,11 @@
 #include "check.hpp"
 
-#include "sweetspot/implement.hpp"
-
 #include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+
+#include "sweetspot/implement.hpp"
 
 namespace sweetspot::detail {
 
@@ -23,8 +23,10 @@ std::string indexed(std::string_view list, std::size_t index, std::string_view f
 
 void validate_point_masses(const std::vector<PointMass>& point_masses, double length_m) {
   for (std::size_t i = 0; i < point_masses.size(); ++i) {
-    require_in_range(indexed("point_masses", i, "from_butt_m"), point_masses[i].from_butt_m, 0.0, length_m, "m");
-    require_in_range(indexed("point_masses", i, "mass_kg"), point_masses[i].mass_kg, 0.0, kMaxMass_kg, "kg");
+    require_in_range(indexed("point_masses", i, "from_butt_m"), point_masses[i].from_butt_m, 0.0,
+                     length_m, "m");
+    require_in_range(indexed("point_masses", i, "mass_kg"), point_masses[i].mass_kg, 0.0,
+                     kMaxMass_kg, "kg");
   }
 }
 
@@ -52,12 +54,15 @@ void fail_positive(std::string_view name, double value, std::string_view unit) {
 }
 
 void fail_at_least(std::string_view name, double value, double min, std::string_view unit) {
-  fail(name, ">= " + format_number(min) + (unit.empty() ? "" : " " + std::string(unit)), value, unit);
+  fail(name, ">= " + format_number(min) + (unit.empty() ? "" : " " + std::string(unit)), value,
+       unit);
 }
 
-void fail_in_range(std::string_view name, double value, double min, double max, std::string_view unit) {
+void fail_in_range(std::string_view name, double value, double min, double max,
+                   std::string_view unit) {
   fail(name,
-       "in [" + format_number(min) + ", " + format_number(max) + "]" + (unit.empty() ? "" : " " + std::string(unit)),
+       "in [" + format_number(min) + ", " + format_number(max) + "]" +
+           (unit.empty() ? "" : " " + std::string(unit)),
        value, unit);
 }
 

@@ -30,22 +30,28 @@ void validate_point_masses(const std::vector<PointMass>& point_masses, double le
 // check costs a comparison (they sit in the rigid model's hot path).
 [[noreturn]] void fail_finite(std::string_view name, double value);
 [[noreturn]] void fail_positive(std::string_view name, double value, std::string_view unit);
-[[noreturn]] void fail_at_least(std::string_view name, double value, double min, std::string_view unit);
+[[noreturn]] void fail_at_least(std::string_view name, double value, double min,
+                                std::string_view unit);
 [[noreturn]] void fail_in_range(std::string_view name, double value, double min, double max,
                                 std::string_view unit);
 
 inline void require_finite(std::string_view name, double value) {
-  if (!std::isfinite(value)) [[unlikely]] fail_finite(name, value);
+  if (!std::isfinite(value)) [[unlikely]]
+    fail_finite(name, value);
 }
 inline void require_positive(std::string_view name, double value, std::string_view unit) {
-  if (!std::isfinite(value) || value <= 0.0) [[unlikely]] fail_positive(name, value, unit);
+  if (!std::isfinite(value) || value <= 0.0) [[unlikely]]
+    fail_positive(name, value, unit);
 }
-inline void require_at_least(std::string_view name, double value, double min, std::string_view unit) {
-  if (!std::isfinite(value) || value < min) [[unlikely]] fail_at_least(name, value, min, unit);
+inline void require_at_least(std::string_view name, double value, double min,
+                             std::string_view unit) {
+  if (!std::isfinite(value) || value < min) [[unlikely]]
+    fail_at_least(name, value, min, unit);
 }
 inline void require_in_range(std::string_view name, double value, double min, double max,
                              std::string_view unit) {
-  if (!std::isfinite(value) || value < min || value > max) [[unlikely]] fail_in_range(name, value, min, max, unit);
+  if (!std::isfinite(value) || value < min || value > max) [[unlikely]]
+    fail_in_range(name, value, min, max, unit);
 }
 
 }  // namespace sweetspot::detail

@@ -31,7 +31,8 @@ void validate(const Design& d) {
   }
   const FrameStiffness& k = d.stiffness;
   if (k.EI_N_m2) detail::require_positive("frame/EI_N_m2", *k.EI_N_m2, "N m^2");
-  if (k.fundamental_free_Hz) detail::require_positive("frame/fundamental_free_Hz", *k.fundamental_free_Hz, "Hz");
+  if (k.fundamental_free_Hz)
+    detail::require_positive("frame/fundamental_free_Hz", *k.fundamental_free_Hz, "Hz");
   if (k.shear_modulus_Pa) {
     detail::require_positive("frame/cross_section/shear_modulus_Pa", *k.shear_modulus_Pa, "Pa");
     detail::require_positive("frame/cross_section/width_m", k.width_m, "m");

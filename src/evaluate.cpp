@@ -1,13 +1,12 @@
 #include "sweetspot/evaluate.hpp"
 
 #include <cmath>
-#include <string>
 #include <stdexcept>
-
-#include "sweetspot/impact_response.hpp"
-#include "sweetspot/rigid_impact.hpp"
+#include <string>
 
 #include "check.hpp"
+#include "sweetspot/impact_response.hpp"
+#include "sweetspot/rigid_impact.hpp"
 
 namespace sweetspot {
 namespace {
@@ -21,8 +20,9 @@ Evaluation evaluate_settled(const Design& design) {
                              e.apparent_cor, e.impulse_N_s, e.peak_impact_force_N,
                              e.system_I_cm_kg_m2, e.wrist_force_ratio, e.peak_wrist_force_N}) {
     if (!std::isfinite(value)) {
-      throw std::invalid_argument("implement: the inputs are outside the range the model can represent "
-                                  "(a result is not finite)");
+      throw std::invalid_argument(
+          "implement: the inputs are outside the range the model can represent "
+          "(a result is not finite)");
     }
   }
   return e;
@@ -33,15 +33,17 @@ Evaluation evaluate_settled(const Design& design) {
 double settled_duration(const Design& design) {
   if (!design.strings) return design.impact_duration_s;
   const double duration_s =
-      tension_impact_duration(*design.strings, design.ball.mass_kg,
-                              effective_mass(design.implement.mass_properties(), design.impact_from_butt_m))
+      tension_impact_duration(
+          *design.strings, design.ball.mass_kg,
+          effective_mass(design.implement.mass_properties(), design.impact_from_butt_m))
           .duration_s;
   // Out of range, the tension is to blame: the duration is not the user's.
   if (!(duration_s >= kMinDuration_s && duration_s <= kMaxDuration_s)) {
-    throw std::invalid_argument("strings/tension_N: " + detail::format_number(design.strings->tension_N) +
-                                " N gives an impact duration of " + detail::format_number(duration_s) +
-                                " s, outside [" + detail::format_number(kMinDuration_s) + ", " +
-                                detail::format_number(kMaxDuration_s) + "] s");
+    throw std::invalid_argument(
+        "strings/tension_N: " + detail::format_number(design.strings->tension_N) +
+        " N gives an impact duration of " + detail::format_number(duration_s) + " s, outside [" +
+        detail::format_number(kMinDuration_s) + ", " + detail::format_number(kMaxDuration_s) +
+        "] s");
   }
   return duration_s;
 }
@@ -81,7 +83,8 @@ Evaluation evaluate(const Design& design, Fidelity fidelity, double rel_tol) {
         throw std::invalid_argument("frame/" + std::string(error.what()));
       }
     }
-    kappa = vibration_compliance_per_mode(model, resolved.impact_from_butt_m, resolved.impact_duration_s);
+    kappa = vibration_compliance_per_mode(model, resolved.impact_from_butt_m,
+                                          resolved.impact_duration_s);
     const Evaluation rigid = evaluate_unchecked(resolved);
     const double J = rigid.impulse_N_s;
     vibration_energy = 0.0;
@@ -96,9 +99,10 @@ Evaluation evaluate(const Design& design, Fidelity fidelity, double rel_tol) {
     const double ball_loss_J = 0.5 * resolved.ball.mass_kg * v1 * v1 * (1.0 - eA * eA);
     if (!(*vibration_energy <= ball_loss_J * (1.0 + 1e-12))) {
       throw std::invalid_argument(
-          "frame/cor: with a COR of " + detail::format_number(resolved.cor) + " the frame would keep " +
-          detail::format_significant(*vibration_energy) + " J as vibration, more than the ball loses (" +
-          detail::format_significant(ball_loss_J) + " J); the prescribed-pulse model does not hold for this implement");
+          "frame/cor: with a COR of " + detail::format_number(resolved.cor) +
+          " the frame would keep " + detail::format_significant(*vibration_energy) +
+          " J as vibration, more than the ball loses (" + detail::format_significant(ball_loss_J) +
+          " J); the prescribed-pulse model does not hold for this implement");
     }
   }
   Evaluation e = evaluate_settled(resolved);
@@ -111,11 +115,12 @@ Evaluation evaluate(const Design& design, Fidelity fidelity, double rel_tol) {
     if (f1 > limit_Hz) {
       const double x = 2.0 * f1 * resolved.impact_duration_s;
       if (!e.details) e.details.emplace();
-      e.details->fidelity_note = "the free fundamental (" + std::to_string(static_cast<int>(std::lround(f1))) +
-                        " Hz) is above 1.5/T = " + std::to_string(static_cast<int>(std::lround(limit_Hz))) +
-                        " Hz: the impact barely excites the frame (every mode keeps at most " +
-                        std::to_string(1.0 / ((x * x - 1) * (x * x - 1))) +
-                        " of its impulse-limit energy), so the rigid model answers this design";
+      e.details->fidelity_note =
+          "the free fundamental (" + std::to_string(static_cast<int>(std::lround(f1))) +
+          " Hz) is above 1.5/T = " + std::to_string(static_cast<int>(std::lround(limit_Hz))) +
+          " Hz: the impact barely excites the frame (every mode keeps at most " +
+          std::to_string(1.0 / ((x * x - 1) * (x * x - 1))) +
+          " of its impulse-limit energy), so the rigid model answers this design";
     }
   }
   if (vibration_energy) {
@@ -163,8 +168,8 @@ RigidCase case_of(const Design& d, double impact_duration_s) {
 
 // The parts that do: Eqs. (5), (11), (12), (15)-(17) at x: rigid_outcome()
 // and the rotation axes.
-void impact_part(const Design& d, const MassProperties& body, const MassProperties& system, double x,
-                 Evaluation& e) {
+void impact_part(const Design& d, const MassProperties& body, const MassProperties& system,
+                 double x, Evaluation& e) {
   RigidCase c = case_of(d, d.impact_duration_s);
   c.impact_from_butt_m = x;
   const RigidOutcome o = rigid_outcome(c, system);
@@ -195,7 +200,8 @@ Evaluation evaluate_unchecked(const Design& d) {
 RigidCase rigid_case(const Design& design) {
   if (design.cor_rigid) {
     throw std::invalid_argument(
-        "frame/cor_rigid: a COR derived from the frame's vibration needs the response model, not a rigid case");
+        "frame/cor_rigid: a COR derived from the frame's vibration needs the response model, not a "
+        "rigid case");
   }
   validate(design);
   return case_of(design, settled_duration(design));
@@ -219,9 +225,12 @@ Evaluation ImpactSweep::at(double impact_from_butt_m) const {
 
 std::string_view to_string(Fidelity fidelity) {
   switch (fidelity) {
-    case Fidelity::kRigid: return "rigid";
-    case Fidelity::kModal: return "modal";
-    case Fidelity::kResponse: return "response";
+    case Fidelity::kRigid:
+      return "rigid";
+    case Fidelity::kModal:
+      return "modal";
+    case Fidelity::kResponse:
+      return "response";
   }
   return "rigid";
 }

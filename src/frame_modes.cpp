@@ -28,7 +28,8 @@ std::vector<Section> fitted_sections(double length_m, const MassProperties& fram
   std::vector<Eigen::Vector3d> basis(count);
   for (int i = 0; i < count; ++i) {
     const double s0 = static_cast<double>(i) / count, s1 = static_cast<double>(i + 1) / count;
-    basis[i] = length_m * Eigen::Vector3d(s1 - s0, (s1 * s1 - s0 * s0) / 2, (s1 * s1 * s1 - s0 * s0 * s0) / 3);
+    basis[i] = length_m *
+               Eigen::Vector3d(s1 - s0, (s1 * s1 - s0 * s0) / 2, (s1 * s1 * s1 - s0 * s0 * s0) / 3);
     const double x = (i + 0.5) * l;
     // Rows: mass, first moment, second moment about the butt of a uniform section.
     moments.row(0) += basis[i].transpose();
@@ -54,8 +55,8 @@ std::vector<Section> fitted_sections(double length_m, const MassProperties& fram
 bool has_stiffness(const Design& design) {
   if (design.stiffness.EI_N_m2 || design.stiffness.fundamental_free_Hz) return true;
   const auto& sections = design.implement.sections();
-  return !sections.empty() &&
-         std::all_of(sections.begin(), sections.end(), [](const Section& s) { return s.EI_N_m2.has_value(); });
+  return !sections.empty() && std::all_of(sections.begin(), sections.end(),
+                                          [](const Section& s) { return s.EI_N_m2.has_value(); });
 }
 
 FlexibleFrame flexible_frame(const Design& design) {
@@ -68,8 +69,8 @@ FlexibleFrame flexible_frame(const Design& design) {
                        ? implement.sections()
                        : fitted_sections(implement.length_m(), implement.frame_mass_properties());
   if (stiffness.shear_modulus_Pa) {
-    const TimoshenkoSection t = rectangular_timoshenko_section(*stiffness.shear_modulus_Pa,
-                                                               stiffness.width_m, stiffness.thickness_m);
+    const TimoshenkoSection t = rectangular_timoshenko_section(
+        *stiffness.shear_modulus_Pa, stiffness.width_m, stiffness.thickness_m);
     frame.options.method = ModeOptions::Method::kFiniteElement;
     frame.options.theory = ModeOptions::Theory::kTimoshenko;
     frame.options.timoshenko.assign(frame.sections.size(), t);
@@ -98,8 +99,9 @@ HandCoupling hand_coupling(const Design& design) {
   const double start = hand.center_from_butt_m - 0.5 * hand.grip_length_m;
   const double end = hand.center_from_butt_m + 0.5 * hand.grip_length_m;
   if (start < 0.0 || end > design.implement.length_m()) {
-    throw std::invalid_argument("hand/grip_length_m: the grip " + detail::format_number(start) + " to " +
-                                detail::format_number(end) + " m must lie on the implement");
+    throw std::invalid_argument("hand/grip_length_m: the grip " + detail::format_number(start) +
+                                " to " + detail::format_number(end) +
+                                " m must lie on the implement");
   }
   detail::require_at_least("hand/grip_stiffness_N_m2", hand.grip_stiffness_N_m2, 0.0, "N/m^2");
   detail::require_at_least("hand/grip_damping_N_s_m2", hand.grip_damping_N_s_m2, 0.0, "N s/m^2");
@@ -127,7 +129,8 @@ ModalOutputs evaluate_modes(const Design& design, double rel_tol) {
   ModeOptions free_options = frame.options;
   free_options.modes = 1;
   const ModalResult free = free_modes(frame.sections, frame.point_masses, free_options);
-  if (free.modes.empty()) throw std::invalid_argument("frame: no flexible mode found (" + free.message + ")");
+  if (free.modes.empty())
+    throw std::invalid_argument("frame: no flexible mode found (" + free.message + ")");
   out.fundamental_free_Hz = free.modes[0].frequency_Hz;
   out.node_free_from_butt_m = node_nearest_tip(free.modes[0]);
 
@@ -143,7 +146,8 @@ ModalOutputs evaluate_modes(const Design& design, double rel_tol) {
   const ModalResult held =
       hand_held_modes(frame.sections, frame.point_masses, hand_coupling(design), hand_options);
   const Mode* fundamental = hand_held_fundamental(held);
-  if (!fundamental) throw std::invalid_argument("hand: no beam mode found among the hand-held modes");
+  if (!fundamental)
+    throw std::invalid_argument("hand: no beam mode found among the hand-held modes");
   out.fundamental_hand_Hz = fundamental->frequency_Hz;
   out.hand_damping_ratio = fundamental->damping_ratio;
   out.node_hand_from_butt_m = node_nearest_tip(*fundamental);

@@ -1,7 +1,5 @@
 #include "sweetspot/impact_response.hpp"
 
-#include "sweetspot/string_bed.hpp"
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -14,6 +12,7 @@
 #include "sweetspot/frame_modes.hpp"
 #include "sweetspot/rigid_impact.hpp"
 #include "sweetspot/roots.hpp"
+#include "sweetspot/string_bed.hpp"
 
 namespace sweetspot {
 namespace {
@@ -95,9 +94,11 @@ GaussRule gauss_legendre() {
 // Mass per length of the section holding x (sections butt to tip, `ends`
 // their cumulative ends): O(log n), so that normalising a mode of n pieces is
 // O(n log n), not O(n^2).
-double mass_per_length_at(const std::vector<Section>& sections, const std::vector<double>& ends, double x_m) {
+double mass_per_length_at(const std::vector<Section>& sections, const std::vector<double>& ends,
+                          double x_m) {
   const auto it = std::lower_bound(ends.begin(), ends.end(), x_m);
-  const std::size_t i = std::min<std::size_t>(static_cast<std::size_t>(it - ends.begin()), sections.size() - 1);
+  const std::size_t i =
+      std::min<std::size_t>(static_cast<std::size_t>(it - ends.begin()), sections.size() - 1);
   return sections[i].mass_kg / sections[i].length_m;
 }
 
@@ -138,7 +139,8 @@ double generalised_mass(const Mode& mode, const std::vector<Section>& sections,
 double fe_normalisation(const Mode& mode) {
   std::size_t best = 0;
   for (std::size_t e = 0; e < mode.shape.size(); ++e) {
-    if (std::abs(mode.shape[e].derivatives[0]) > std::abs(mode.shape[best].derivatives[0])) best = e;
+    if (std::abs(mode.shape[e].derivatives[0]) > std::abs(mode.shape[best].derivatives[0]))
+      best = e;
   }
   if (2 * best >= mode.fe_dofs.size() || mode.shape[best].derivatives[0] == 0.0) {
     throw std::invalid_argument("modes: finite-element mode without matching fe_dofs");
@@ -149,8 +151,9 @@ double fe_normalisation(const Mode& mode) {
 // Backstop: a response that is not finite is never handed out.
 void require_finite_response(const ImpactResponse& r) {
   auto fail = [](const std::string& what) {
-    throw std::invalid_argument("model: " + what +
-                                " is not finite; the implement is outside the range the response model can represent");
+    throw std::invalid_argument(
+        "model: " + what +
+        " is not finite; the implement is outside the range the response model can represent");
   };
   for (std::size_t k = 0; k < r.modes.size(); ++k) {
     const ModeExcitation& e = r.modes[k];
@@ -164,8 +167,8 @@ void require_finite_response(const ImpactResponse& r) {
   for (const PointVelocity& p : r.points) {
     for (std::size_t i = 0; i < r.time_s.size(); ++i) {
       if (!std::isfinite(p.dc_m_s[i]) || !std::isfinite(p.ac_m_s[i])) {
-        fail("the velocity at " + detail::format_number(p.from_butt_m) + " m from the butt, t = " +
-             detail::format_number(r.time_s[i]) + " s,");
+        fail("the velocity at " + detail::format_number(p.from_butt_m) +
+             " m from the butt, t = " + detail::format_number(r.time_s[i]) + " s,");
       }
     }
   }
@@ -214,7 +217,8 @@ double half_sine_impulse(const HalfSinePulse& pulse) {
 double half_sine_impulse_until(const HalfSinePulse& pulse, double t_s) {
   if (!(t_s > 0.0)) return 0.0;
   if (t_s >= pulse.duration_s) return half_sine_impulse(pulse);
-  return pulse.peak_force_N * pulse.duration_s / kPi * (1.0 - std::cos(kPi * t_s / pulse.duration_s));
+  return pulse.peak_force_N * pulse.duration_s / kPi *
+         (1.0 - std::cos(kPi * t_s / pulse.duration_s));
 }
 
 HalfSinePulse half_sine_with_impulse(double impulse_N_s, double duration_s) {
@@ -295,7 +299,8 @@ ResponseModel free_response_model(const std::vector<Section>& sections,
   model.rigid_body = implement.mass_properties();
   model.length_m = implement.length_m();
   for (const Mode& mode : free.modes) {
-    if (mode.shape.empty() || std::abs(mode.shape.back().end_m - model.length_m) > 1e-9 * model.length_m) {
+    if (mode.shape.empty() ||
+        std::abs(mode.shape.back().end_m - model.length_m) > 1e-9 * model.length_m) {
       throw std::invalid_argument("free.modes: shape does not span the sections' length " +
                                   detail::format_number(model.length_m) + " m");
     }
@@ -320,8 +325,7 @@ ResponseModel hand_held_response_model(const std::vector<Section>& sections,
   const double grip_centre = hand.grip_start_m + 0.5 * hand.grip_length_m;
   require_on_implement("hand.grip centre", grip_centre, model.length_m);
   // The rigid-body motions hand_held_modes deflates: implement and hand moving together.
-  model.rigid_body = with_point_mass(implement.mass_properties(),
-                                     {grip_centre, hand.mass_kg});
+  model.rigid_body = with_point_mass(implement.mass_properties(), {grip_centre, hand.mass_kg});
   model.rigid_body.I_cm_kg_m2 += hand.rotary_inertia_kg_m2.value_or(
       hand.mass_kg * hand.grip_length_m * hand.grip_length_m / 12.0);
   for (const Mode& mode : hand_held.modes) {
@@ -336,9 +340,11 @@ ResponseModel hand_held_response_model(const std::vector<Section>& sections,
 
 ResponseModel with_fundamental(const ResponseModel& model, double f1_Hz) {
   detail::require_positive("f1_Hz", f1_Hz, "Hz");
-  if (model.modes.empty()) throw std::invalid_argument("model.modes: empty, no fundamental to scale");
+  if (model.modes.empty())
+    throw std::invalid_argument("model.modes: empty, no fundamental to scale");
   if (model.hand_held) {
-    throw std::invalid_argument("model: with_fundamental needs a free model (hand modes do not scale with EI)");
+    throw std::invalid_argument(
+        "model: with_fundamental needs a free model (hand modes do not scale with EI)");
   }
   ResponseModel out = model;
   const double ratio = 2.0 * kPi * f1_Hz / model.modes.front().omega_rad_s;
@@ -355,11 +361,12 @@ std::string ResponseOptions::validate() const {
     return "modes: must be in [1, " + std::to_string(kMaxModes) + "], got " + std::to_string(modes);
   }
   if (!(free_damping_ratio >= 0.0 && free_damping_ratio < 1.0)) {
-    return "free_damping_ratio: must be in [0, 1), got " + detail::format_number(free_damping_ratio);
+    return "free_damping_ratio: must be in [0, 1), got " +
+           detail::format_number(free_damping_ratio);
   }
   if (!(rel_tol >= kMinRelTol && rel_tol <= kMaxRelTol)) {
-    return "rel_tol: must be in [" + detail::format_number(kMinRelTol) + ", " + detail::format_number(kMaxRelTol) +
-           "], got " + detail::format_number(rel_tol);
+    return "rel_tol: must be in [" + detail::format_number(kMinRelTol) + ", " +
+           detail::format_number(kMaxRelTol) + "], got " + detail::format_number(rel_tol);
   }
   return {};
 }
@@ -376,7 +383,8 @@ ResponseModel response_model(const Design& design, const ResponseOptions& option
     // The exact solver gives at most kMaxExactModes; finite elements beyond.
     if (options.modes > kMaxExactModes) mode_options.method = ModeOptions::Method::kFiniteElement;
     const ModalResult free = free_modes(frame.sections, frame.point_masses, mode_options);
-    return free_response_model(frame.sections, frame.point_masses, free, options.free_damping_ratio);
+    return free_response_model(frame.sections, frame.point_masses, free,
+                               options.free_damping_ratio);
   }
   if (!(design.hand.mass_kg > 0.0)) {
     throw std::invalid_argument("hand/mass_kg: the hand-held response needs a hand, got " +
@@ -396,14 +404,15 @@ ImpactResponse impact_response(const ResponseModel& model, double impact_from_bu
                                const std::vector<double>& time_s) {
   validate(pulse);
   require_on_implement("impact_from_butt_m", impact_from_butt_m, model.length_m);
-  for (double x : points_from_butt_m) require_on_implement("points_from_butt_m[]", x, model.length_m);
+  for (double x : points_from_butt_m)
+    require_on_implement("points_from_butt_m[]", x, model.length_m);
   for (double t : time_s) detail::require_finite("time_s[]", t);
 
   ImpactResponse out;
   out.time_s = time_s;
   out.impulse_N_s = half_sine_impulse(pulse);
-  out.rigid_kinetic_energy_J =
-      0.5 * out.impulse_N_s * out.impulse_N_s / effective_mass(model.rigid_body, impact_from_butt_m);
+  out.rigid_kinetic_energy_J = 0.5 * out.impulse_N_s * out.impulse_N_s /
+                               effective_mass(model.rigid_body, impact_from_butt_m);
 
   const std::size_t n_modes = model.modes.size();
   const std::size_t n_times = time_s.size();
@@ -414,16 +423,18 @@ ImpactResponse impact_response(const ResponseModel& model, double impact_from_bu
     const double phi_f = mass_normalised_shape(m, impact_from_butt_m);
     const double p = pulse.peak_force_N * phi_f;
     for (std::size_t i = 0; i < n_times; ++i) {
-      q_dot[k][i] = half_sine_modal_response(m.omega_rad_s, m.damping_ratio, p, pulse.duration_s,
-                                             time_s[i]).q_dot;
+      q_dot[k][i] =
+          half_sine_modal_response(m.omega_rad_s, m.damping_ratio, p, pulse.duration_s, time_s[i])
+              .q_dot;
     }
-    const ModalState end =
-        half_sine_modal_response(m.omega_rad_s, m.damping_ratio, p, pulse.duration_s, pulse.duration_s);
+    const ModalState end = half_sine_modal_response(m.omega_rad_s, m.damping_ratio, p,
+                                                    pulse.duration_s, pulse.duration_s);
     ModeExcitation e;
     const double zeta = m.damping_ratio;
     e.frequency_Hz = m.omega_rad_s * std::sqrt((1.0 - zeta) * (1.0 + zeta)) / (2.0 * kPi);
     e.phi_at_impact = phi_f;
-    e.energy_after_J = 0.5 * (end.q_dot * end.q_dot + m.omega_rad_s * m.omega_rad_s * end.q * end.q);
+    e.energy_after_J =
+        0.5 * (end.q_dot * end.q_dot + m.omega_rad_s * m.omega_rad_s * end.q * end.q);
     const double jp = out.impulse_N_s * phi_f;
     e.impulse_limit_energy_J = 0.5 * jp * jp;
     out.vibration_energy_J += e.energy_after_J;
@@ -433,7 +444,8 @@ ImpactResponse impact_response(const ResponseModel& model, double impact_from_bu
   for (double x : points_from_butt_m) {
     PointVelocity p;
     p.from_butt_m = x;
-    const double per_impulse = point_velocity_per_impulse(model.rigid_body, impact_from_butt_m, x);  // Eq. (4)
+    const double per_impulse =
+        point_velocity_per_impulse(model.rigid_body, impact_from_butt_m, x);  // Eq. (4)
     p.dc_m_s.resize(n_times);
     p.ac_m_s.assign(n_times, 0.0);
     for (std::size_t i = 0; i < n_times; ++i) {
@@ -454,13 +466,14 @@ ImpactResponse impact_response(const ResponseModel& model, double impact_from_bu
   return out;
 }
 
-std::vector<double> vibration_compliance_per_mode(const ResponseModel& model, double impact_from_butt_m,
-                                                  double duration_s) {
+std::vector<double> vibration_compliance_per_mode(const ResponseModel& model,
+                                                  double impact_from_butt_m, double duration_s) {
   require_on_implement("impact_from_butt_m", impact_from_butt_m, model.length_m);
   detail::require_positive("duration_s", duration_s, "s");
   std::vector<double> kappa;
   for (const ResponseMode& m : model.modes) {
-    kappa.push_back(mode_energy_per_impulse_squared(m, mass_normalised_shape(m, impact_from_butt_m), duration_s));
+    kappa.push_back(mode_energy_per_impulse_squared(m, mass_normalised_shape(m, impact_from_butt_m),
+                                                    duration_s));
   }
   return kappa;
 }
@@ -497,12 +510,14 @@ DerivedCor derive_cor(const ResponseModel& model, double impact_from_butt_m, dou
   const std::optional<double> e = cor_from_balance(a, cor_rigid);
   if (!e) {
     throw std::invalid_argument(
-        "cor_rigid: the frame would keep more than the collision's energy as vibration (mu kappa = " +
-        detail::format_significant(a) + " > cor_rigid^2 = " + detail::format_significant(cor_rigid * cor_rigid) +
+        "cor_rigid: the frame would keep more than the collision's energy as vibration (mu kappa "
+        "= " +
+        detail::format_significant(a) +
+        " > cor_rigid^2 = " + detail::format_significant(cor_rigid * cor_rigid) +
         "); the prescribed-pulse model does not hold for this implement");
   }
   out.cor = *e;
-  out.apparent_cor = apparent_cor(out.cor, out.effective_mass_kg, m);  // Eq. (16)
+  out.apparent_cor = apparent_cor(out.cor, out.effective_mass_kg, m);                // Eq. (16)
   out.pulse = {peak_impact_force(m, v1, out.apparent_cor, duration_s), duration_s};  // Eq. (15)
   out.impulse_N_s = ball_impulse(m, v1, out.apparent_cor);
   const double j2 = out.impulse_N_s * out.impulse_N_s;
@@ -523,9 +538,11 @@ std::optional<double> fundamental_for_cor(const ResponseModel& model, double imp
   detail::require_positive("abs_tol_Hz", abs_tol_Hz, "Hz");
   detail::require_in_range("cor_rigid", cor_rigid, 0.0, 1.0, "");
   detail::require_positive("ball.mass_kg", ball.mass_kg, "kg");
-  const double mu = reduced_mass(ball.mass_kg, effective_mass(model.rigid_body, impact_from_butt_m));
+  const double mu =
+      reduced_mass(ball.mass_kg, effective_mass(model.rigid_body, impact_from_butt_m));
   auto gap = [&](double f) {
-    const double kappa = vibration_compliance(with_fundamental(model, f), impact_from_butt_m, duration_s);
+    const double kappa =
+        vibration_compliance(with_fundamental(model, f), impact_from_butt_m, duration_s);
     return cor_from_balance(mu * kappa, cor_rigid).value_or(0.0) - target_cor;
   };
   return find_root(gap, f_lo_Hz, f_hi_Hz, abs_tol_Hz);

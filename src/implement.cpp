@@ -27,7 +27,8 @@ MassProperties section_mass_properties(const std::vector<Section>& sections) {
     const Section& s = sections[i];
     detail::require_positive(detail::indexed("sections", i, "length_m"), s.length_m, "m");
     detail::require_at_least(detail::indexed("sections", i, "mass_kg"), s.mass_kg, 0.0, "kg");
-    if (s.EI_N_m2) detail::require_positive(detail::indexed("sections", i, "EI_N_m2"), *s.EI_N_m2, "N m^2");
+    if (s.EI_N_m2)
+      detail::require_positive(detail::indexed("sections", i, "EI_N_m2"), *s.EI_N_m2, "N m^2");
     mass += s.mass_kg;
     first_moment += s.mass_kg * (x_start + 0.5 * s.length_m);
     x_start += s.length_m;
@@ -47,7 +48,8 @@ MassProperties section_mass_properties(const std::vector<Section>& sections) {
     x_start += s.length_m;
   }
   if (!(I_cm >= std::numeric_limits<double>::min())) {
-    throw std::invalid_argument("sections: the moment of inertia underflows (" + detail::format_number(I_cm) +
+    throw std::invalid_argument("sections: the moment of inertia underflows (" +
+                                detail::format_number(I_cm) +
                                 " kg m^2); the implement is too small or too light to model");
   }
   return MassProperties{mass, com, I_cm};
@@ -74,8 +76,9 @@ Implement Implement::paper_racquet(double length_m, double mass_kg,
   // M1 / M2 = ratio and M1 + M2 = M  =>  M2 = M / (1 + ratio).
   const double handle_kg = mass_kg / (1.0 + head_to_handle_mass_ratio);
   const double head_kg = mass_kg * head_to_handle_mass_ratio / (1.0 + head_to_handle_mass_ratio);
-  return from_sections({Section{0.5 * length_m, handle_kg, {}}, Section{0.5 * length_m, head_kg, {}}},
-                       std::move(point_masses));
+  return from_sections(
+      {Section{0.5 * length_m, handle_kg, {}}, Section{0.5 * length_m, head_kg, {}}},
+      std::move(point_masses));
 }
 
 Implement Implement::from_specs(const IndustrySpecs& specs, std::vector<PointMass> point_masses) {

@@ -21,8 +21,8 @@ double swingweight_kg_m2(const MassProperties& body) {
 MassProperties with_point_mass(const MassProperties& body, const PointMass& point) {
   detail::require_finite("point mass position", point.from_butt_m);
   detail::require_at_least("point mass", point.mass_kg, 0.0, "kg");
-  const kernel::System s = kernel::with_point_mass(body.mass_kg, body.com_from_butt_m, body.I_cm_kg_m2,
-                                                   point.from_butt_m, point.mass_kg);
+  const kernel::System s = kernel::with_point_mass(
+      body.mass_kg, body.com_from_butt_m, body.I_cm_kg_m2, point.from_butt_m, point.mass_kg);
   return MassProperties{s.mass_kg, s.com_from_butt_m, s.I_cm_kg_m2};
 }
 

@@ -46,8 +46,11 @@ std::string result_name(nlopt::result r) {
 class Evaluator {
  public:
   Evaluator(const Problem& problem, const OptimizeOptions& options)
-      : problem_(problem), options_(options), n_(problem.lower.size()),
-        m_(problem.constraints.size()), start_(Clock::now()) {}
+      : problem_(problem),
+        options_(options),
+        n_(problem.lower.size()),
+        m_(problem.constraints.size()),
+        start_(Clock::now()) {}
 
   // [objective, constraint 0, ...] at x.
   const std::vector<double>& values(std::span<const double> x) {
@@ -111,7 +114,8 @@ class Evaluator {
   }
   bool stalled() const { return stall_limit_ > 0 && evaluations_ - last_progress_ >= stall_limit_; }
   std::string stall_reason() const {
-    return "STALLED (sweetspot: no better point in " + std::to_string(stall_limit_) + " evaluations)";
+    return "STALLED (sweetspot: no better point in " + std::to_string(stall_limit_) +
+           " evaluations)";
   }
   // The budget never stops the first evaluation, so that every run has a
   // best point however small its budget.
@@ -128,7 +132,8 @@ class Evaluator {
     std::vector<double> v(1 + m_);
     problem_.evaluate(x, v[0], std::span<double>(v).subspan(1));
     for (double& value : v) {
-      if (!std::isfinite(value)) value = std::numeric_limits<double>::max() / 4;  // never NaN to NLopt
+      if (!std::isfinite(value))
+        value = std::numeric_limits<double>::max() / 4;  // never NaN to NLopt
     }
     ++evaluations_;
     if (best_x_.empty() || better(v, best_values_)) {
@@ -145,7 +150,8 @@ class Evaluator {
     const double va = violation(a), vb = violation(b);
     const bool fa = va <= 1.0, fb = vb <= 1.0;
     if (fa != fb) return fa;
-    return fa ? b[0] - a[0] > options_.f_tolerance_rel * std::abs(b[0]) : vb - va > options_.f_tolerance_rel * vb;
+    return fa ? b[0] - a[0] > options_.f_tolerance_rel * std::abs(b[0])
+              : vb - va > options_.f_tolerance_rel * vb;
   }
   bool out_of_evaluations() const { return evaluations_ >= options_.max_evaluations; }
   bool out_of_time() const { return seconds() >= options_.max_seconds; }
@@ -177,7 +183,8 @@ struct Scaling {
   }
   std::vector<double> to_u(std::span<const double> x) const {
     std::vector<double> u(lower.size());
-    for (std::size_t i = 0; i < u.size(); ++i) u[i] = std::clamp((x[i] - lower[i]) / range[i], 0.0, 1.0);
+    for (std::size_t i = 0; i < u.size(); ++i)
+      u[i] = std::clamp((x[i] - lower[i]) / range[i], 0.0, 1.0);
     return u;
   }
 };
@@ -219,7 +226,8 @@ void constraints_callback(unsigned m, double* result, unsigned n, const double* 
       const auto& rows = cb->evaluator->jacobian(x);
       for (unsigned k = 0; k < m; ++k) {
         const std::size_t c = cb->indices[k];
-        for (unsigned i = 0; i < n; ++i) grad[k * n + i] = rows[1 + c][i] * s.range[i] / s.constraint[c];
+        for (unsigned i = 0; i < n; ++i)
+          grad[k * n + i] = rows[1 + c][i] * s.range[i] / s.constraint[c];
       }
     }
   } catch (const SearchStopped&) {
@@ -236,13 +244,15 @@ struct RunResult {
 Scaling box_scaling(const Problem& problem) {
   Scaling scaling;
   scaling.lower = problem.lower;
-  for (std::size_t i = 0; i < problem.lower.size(); ++i) scaling.range.push_back(problem.upper[i] - problem.lower[i]);
+  for (std::size_t i = 0; i < problem.lower.size(); ++i)
+    scaling.range.push_back(problem.upper[i] - problem.lower[i]);
   return scaling;
 }
 
 // The unit-cube bounds and the stopping rules every run shares: the
 // tolerances and what is left of the evaluation and time budgets.
-void set_box_and_stopping(nlopt::opt& opt, const OptimizeOptions& options, const Evaluator& evaluator) {
+void set_box_and_stopping(nlopt::opt& opt, const OptimizeOptions& options,
+                          const Evaluator& evaluator) {
   const unsigned n = opt.get_dimension();
   opt.set_lower_bounds(std::vector<double>(n, 0.0));
   opt.set_upper_bounds(std::vector<double>(n, 1.0));
@@ -259,7 +269,9 @@ std::string run_once(nlopt::opt& opt, std::vector<double> u, const Evaluator& ev
   try {
     return result_name(opt.optimize(u, f));
   } catch (const nlopt::forced_stop&) {
-    return evaluator.spent() ? evaluator.spent_reason() : evaluator.stalled() ? evaluator.stall_reason() : "FORCESTOP";
+    return evaluator.spent()     ? evaluator.spent_reason()
+           : evaluator.stalled() ? evaluator.stall_reason()
+                                 : "FORCESTOP";
   } catch (const nlopt::roundoff_limited&) {
     return "ROUNDOFF_LIMITED";
   } catch (const std::invalid_argument& e) {
@@ -297,12 +309,14 @@ RunResult run_nlopt(nlopt::algorithm algorithm, std::optional<nlopt::algorithm> 
   Callback inequalities{&evaluator, &scaling, {}};
   Callback equalities{&evaluator, &scaling, {}};
   for (std::size_t k = 0; k < problem.constraints.size(); ++k) {
-    (problem.constraints[k].kind == ConstraintKind::kZero ? equalities : inequalities).indices.push_back(k);
+    (problem.constraints[k].kind == ConstraintKind::kZero ? equalities : inequalities)
+        .indices.push_back(k);
   }
   opt.set_min_objective(objective_callback, &objective);
   const auto tolerances = [&](const Callback& cb) {
     std::vector<double> tol;
-    for (const std::size_t k : cb.indices) tol.push_back(problem.constraints[k].tolerance / scaling.constraint[k]);
+    for (const std::size_t k : cb.indices)
+      tol.push_back(problem.constraints[k].tolerance / scaling.constraint[k]);
     return tol;
   };
   try {
@@ -314,7 +328,8 @@ RunResult run_nlopt(nlopt::algorithm algorithm, std::optional<nlopt::algorithm> 
     }
   } catch (const std::invalid_argument&) {
     throw std::invalid_argument(
-        std::string("algorithm: ") + nlopt_algorithm_to_string(static_cast<nlopt_algorithm>(algorithm)) +
+        std::string("algorithm: ") +
+        nlopt_algorithm_to_string(static_cast<nlopt_algorithm>(algorithm)) +
         " does not take nonlinear constraints; use auto, LD_SLSQP, LN_COBYLA, GN_ISRES or AUGLAG");
   }
   if (local) {
@@ -406,21 +421,24 @@ void validate_problem(const Problem& p) {
 }  // namespace
 
 std::string OptimizeOptions::validate() const {
-  if (!is_known_algorithm(algorithm)) return "algorithm: unknown NLopt algorithm \"" + algorithm + "\"";
+  if (!is_known_algorithm(algorithm))
+    return "algorithm: unknown NLopt algorithm \"" + algorithm + "\"";
   if (!is_known_algorithm(local_algorithm)) {
     return "local_algorithm: unknown NLopt algorithm \"" + local_algorithm + "\"";
   }
   const auto positive = [](const char* name, double value) -> std::string {
-    return std::isfinite(value) && value > 0 ? "" : std::string(name) + ": must be > 0, got " +
-                                                        detail::format_number(value);
+    return std::isfinite(value) && value > 0
+               ? ""
+               : std::string(name) + ": must be > 0, got " + detail::format_number(value);
   };
-  for (const auto& message : {positive("x_tolerance_rel", x_tolerance_rel),
-                              positive("f_tolerance_rel", f_tolerance_rel),
-                              positive("max_seconds", max_seconds),
-                              positive("difference_step_rel", difference_step_rel)}) {
+  for (const auto& message :
+       {positive("x_tolerance_rel", x_tolerance_rel), positive("f_tolerance_rel", f_tolerance_rel),
+        positive("max_seconds", max_seconds),
+        positive("difference_step_rel", difference_step_rel)}) {
     if (!message.empty()) return message;
   }
-  if (max_evaluations < 1) return "max_evaluations: must be >= 1, got " + std::to_string(max_evaluations);
+  if (max_evaluations < 1)
+    return "max_evaluations: must be >= 1, got " + std::to_string(max_evaluations);
   if (samples_per_variable < 1) {
     return "samples_per_variable: must be >= 1, got " + std::to_string(samples_per_variable);
   }
@@ -487,9 +505,11 @@ Summary minimize(const Problem& problem, const OptimizeOptions& options) {
       // than the local optimum lies in another basin; the search goes on
       // from it (at most local_starts searches in all).
       const nlopt::algorithm local = local_choice();
-      algorithm_used = std::string("auto: ") + nlopt_algorithm_to_string(static_cast<nlopt_algorithm>(local)) +
+      algorithm_used = std::string("auto: ") +
+                       nlopt_algorithm_to_string(static_cast<nlopt_algorithm>(local)) +
                        " from the start";
-      termination = run_nlopt(local, std::nullopt, problem, options, evaluator, problem.start).termination;
+      termination =
+          run_nlopt(local, std::nullopt, problem, options, evaluator, problem.start).termination;
       const std::size_t most = std::max<std::size_t>(n + 1, options.samples_per_variable * n);
       const std::size_t count =
           std::clamp<std::size_t>(static_cast<std::size_t>(evaluator.evaluations()), n + 1, most);
@@ -510,7 +530,9 @@ Summary minimize(const Problem& problem, const OptimizeOptions& options) {
                         (sample_better ? "" : std::string(" (none better)"));
       if (sample_better && options.local_starts >= 2 && !evaluator.spent()) {
         algorithm_used += ", again from the best sample";
-        termination = run_nlopt(local, std::nullopt, problem, options, evaluator, evaluator.best_x()).termination;
+        termination =
+            run_nlopt(local, std::nullopt, problem, options, evaluator, evaluator.best_x())
+                .termination;
       }
     } else {
       const nlopt::algorithm chosen = *algorithm_from_name(options.algorithm);
@@ -521,17 +543,20 @@ Summary minimize(const Problem& problem, const OptimizeOptions& options) {
       nlopt::srand(options.seed);
       algorithm_used = name;
       if (local) {
-        algorithm_used += std::string(" with ") +
-                          nlopt_algorithm_to_string(static_cast<nlopt_algorithm>(*local));
+        algorithm_used +=
+            std::string(" with ") + nlopt_algorithm_to_string(static_cast<nlopt_algorithm>(*local));
       }
-      termination = run_nlopt(chosen, local, problem, options, evaluator, problem.start).termination;
+      termination =
+          run_nlopt(chosen, local, problem, options, evaluator, problem.start).termination;
       // Global algorithms stop on the budget, not on a tolerance: polish locally.
       if (name.starts_with("GN_") && !evaluator.spent()) {
         const nlopt::algorithm polish = default_local();
         algorithm_used += std::string(" + ") +
-                          nlopt_algorithm_to_string(static_cast<nlopt_algorithm>(polish)) + " polish";
-        termination = run_nlopt(polish, std::nullopt, problem, options, evaluator,
-                                evaluator.best_x()).termination;
+                          nlopt_algorithm_to_string(static_cast<nlopt_algorithm>(polish)) +
+                          " polish";
+        termination =
+            run_nlopt(polish, std::nullopt, problem, options, evaluator, evaluator.best_x())
+                .termination;
       }
     }
   } catch (const SearchStopped&) {

@@ -43,7 +43,8 @@ double forearm_equivalent_mass(double forearm_mass_kg) {
 
 std::optional<double> hand_held_cop_from_butt(const MassProperties& system) {
   if (system.com_from_butt_m == 0.0) return std::nullopt;
-  return kernel::hand_held_cop_from_butt(system.mass_kg, system.com_from_butt_m, system.I_cm_kg_m2, 0.0);  // Eq. (13)
+  return kernel::hand_held_cop_from_butt(system.mass_kg, system.com_from_butt_m, system.I_cm_kg_m2,
+                                         0.0);  // Eq. (13)
 }
 
 double wrist_force_ratio(const MassProperties& system, double forearm_equivalent_mass_kg,
@@ -84,7 +85,8 @@ std::optional<double> hand_held_impact_for_axis(const MassProperties& system,
 }
 
 double effective_mass(const MassProperties& body, double impact_from_butt_m) {
-  return kernel::effective_mass(body.mass_kg, body.com_from_butt_m, body.I_cm_kg_m2, impact_from_butt_m);  // (17)
+  return kernel::effective_mass(body.mass_kg, body.com_from_butt_m, body.I_cm_kg_m2,
+                                impact_from_butt_m);  // (17)
 }
 
 double apparent_cor(double cor, double effective_mass_kg, double ball_mass_kg) {
@@ -106,7 +108,9 @@ double peak_impact_force(double ball_mass_kg, double ball_speed_m_s, double appa
                               impact_duration_s);  // Eq. (15)
 }
 
-RigidOutcome rigid_outcome(const RigidCase& c) { return rigid_outcome(c, with_point_mass(c.body, c.hand)); }
+RigidOutcome rigid_outcome(const RigidCase& c) {
+  return rigid_outcome(c, with_point_mass(c.body, c.hand));
+}
 
 RigidOutcome rigid_outcome(const RigidCase& c, const MassProperties& system) {
   RigidOutcome o;
@@ -115,7 +119,8 @@ RigidOutcome rigid_outcome(const RigidCase& c, const MassProperties& system) {
   o.impulse_N_s = ball_impulse(c.ball_mass_kg, c.ball_speed_m_s, o.apparent_cor);
   o.peak_impact_force_N = half_sine_peak_force(o.impulse_N_s, c.impact_duration_s);
   o.cop_hand_from_butt_m = hand_held_cop_from_butt(system).value_or(0.0);  // h > 0 in a valid case
-  o.wrist_force_ratio = wrist_force_ratio(system, c.forearm_equivalent_mass_kg, c.impact_from_butt_m);
+  o.wrist_force_ratio =
+      wrist_force_ratio(system, c.forearm_equivalent_mass_kg, c.impact_from_butt_m);
   o.peak_wrist_force_N = std::abs(o.wrist_force_ratio) * o.peak_impact_force_N;
   return o;
 }
@@ -141,7 +146,8 @@ void outcomes_loop(std::size_t n, const double* __restrict M, const double* __re
     const double apparent = kernel::apparent_cor(cor[i], effective, ball_m[i]);
     const double impulse = kernel::ball_impulse(ball_m[i], ball_v[i], apparent);
     const double peak = kernel::half_sine_peak_force(impulse, T[i]);
-    const double r = kernel::wrist_force_ratio(s.mass_kg, s.com_from_butt_m, s.I_cm_kg_m2, Me[i], x[i]);
+    const double r =
+        kernel::wrist_force_ratio(s.mass_kg, s.com_from_butt_m, s.I_cm_kg_m2, Me[i], x[i]);
     m_eff[i] = effective;
     e_A[i] = apparent;
     J[i] = impulse;
@@ -158,8 +164,9 @@ void rigid_outcomes(const RigidCases& in, const RigidOutcomes& out) {
   const std::size_t n = in.body_mass_kg.size();
   const auto check = [n](std::size_t size, const char* name) {
     if (size != n) {
-      throw std::invalid_argument(std::string("rigid_outcomes: ") + name + " has " + std::to_string(size) +
-                                  " elements, body_mass_kg " + std::to_string(n));
+      throw std::invalid_argument(std::string("rigid_outcomes: ") + name + " has " +
+                                  std::to_string(size) + " elements, body_mass_kg " +
+                                  std::to_string(n));
     }
   };
   check(in.body_com_from_butt_m.size(), "body_com_from_butt_m");
@@ -179,18 +186,19 @@ void rigid_outcomes(const RigidCases& in, const RigidOutcomes& out) {
   check(out.cop_hand_from_butt_m.size(), "cop_hand_from_butt_m");
   check(out.wrist_force_ratio.size(), "wrist_force_ratio");
   check(out.peak_wrist_force_N.size(), "peak_wrist_force_N");
-  outcomes_loop(n, in.body_mass_kg.data(), in.body_com_from_butt_m.data(), in.body_I_cm_kg_m2.data(),
-                in.hand_from_butt_m.data(), in.hand_mass_kg.data(), in.forearm_equivalent_mass_kg.data(),
-                in.ball_mass_kg.data(), in.ball_speed_m_s.data(), in.cor.data(), in.impact_duration_s.data(),
-                in.impact_from_butt_m.data(), out.effective_mass_kg.data(), out.apparent_cor.data(),
-                out.impulse_N_s.data(), out.peak_impact_force_N.data(), out.cop_hand_from_butt_m.data(),
-                out.wrist_force_ratio.data(), out.peak_wrist_force_N.data());
+  outcomes_loop(
+      n, in.body_mass_kg.data(), in.body_com_from_butt_m.data(), in.body_I_cm_kg_m2.data(),
+      in.hand_from_butt_m.data(), in.hand_mass_kg.data(), in.forearm_equivalent_mass_kg.data(),
+      in.ball_mass_kg.data(), in.ball_speed_m_s.data(), in.cor.data(), in.impact_duration_s.data(),
+      in.impact_from_butt_m.data(), out.effective_mass_kg.data(), out.apparent_cor.data(),
+      out.impulse_N_s.data(), out.peak_impact_force_N.data(), out.cop_hand_from_butt_m.data(),
+      out.wrist_force_ratio.data(), out.peak_wrist_force_N.data());
 }
 
 void rigid_outcomes(std::span<const RigidCase> cases, std::span<RigidOutcome> out) {
   if (cases.size() != out.size()) {
-    throw std::invalid_argument("rigid_outcomes: " + std::to_string(cases.size()) + " cases but room for " +
-                                std::to_string(out.size()) + " outcomes");
+    throw std::invalid_argument("rigid_outcomes: " + std::to_string(cases.size()) +
+                                " cases but room for " + std::to_string(out.size()) + " outcomes");
   }
   // A block at a time laid out as arrays (18 kB on the stack), then back.
   constexpr std::size_t kBlock = 128;
@@ -213,8 +221,8 @@ void rigid_outcomes(std::span<const RigidCase> cases, std::span<RigidOutcome> ou
       a[9][i] = c.impact_duration_s;
       a[10][i] = c.impact_from_butt_m;
     }
-    outcomes_loop(n, a[0], a[1], a[2], a[3], a[4], a[5], a[6], a[7], a[8], a[9], a[10], b[0], b[1], b[2], b[3], b[4],
-                  b[5], b[6]);
+    outcomes_loop(n, a[0], a[1], a[2], a[3], a[4], a[5], a[6], a[7], a[8], a[9], a[10], b[0], b[1],
+                  b[2], b[3], b[4], b[5], b[6]);
     for (std::size_t i = 0; i < n; ++i) {
       out[begin + i] = RigidOutcome{b[0][i], b[1][i], b[2][i], b[3][i], b[4][i], b[5][i], b[6][i]};
     }

@@ -20,7 +20,6 @@ void require_valid(const StringBed& bed) {
   if (!why.empty()) throw std::invalid_argument("bed." + why);
 }
 
-
 // d ln(R / r0) / (2 pi): the string bed's compliance times the tension [m].
 double compliance_tension_factor(const StringBed& bed) {
   return std::log(bed.head_radius_m / bed.contact_radius_m) / (2.0 * kPi) * bed.string_spacing_m;
@@ -43,7 +42,8 @@ std::string StringBed::validate() const {
     return bad("contact_radius_m", "> 0 m", contact_radius_m);
   }
   if (!(std::isfinite(head_radius_m) && head_radius_m > contact_radius_m)) {
-    return bad("head_radius_m", "> contact_radius_m (" + detail::format_number(contact_radius_m) + " m)",
+    return bad("head_radius_m",
+               "> contact_radius_m (" + detail::format_number(contact_radius_m) + " m)",
                head_radius_m);
   }
   return {};
@@ -60,7 +60,8 @@ double series_stiffness(double ball_stiffness_N_m, double string_bed_stiffness_N
   return 1.0 / (1.0 / ball_stiffness_N_m + 1.0 / string_bed_stiffness_N_m);
 }
 
-double spring_contact_duration(double ball_mass_kg, double effective_mass_kg, double stiffness_N_m) {
+double spring_contact_duration(double ball_mass_kg, double effective_mass_kg,
+                               double stiffness_N_m) {
   detail::require_positive("stiffness_N_m", stiffness_N_m, "N/m");
   return kPi * std::sqrt(reduced_mass(ball_mass_kg, effective_mass_kg) / stiffness_N_m);
 }

@@ -3,13 +3,12 @@
 // limits of the hand-held model, and FE identities.
 #include "sweetspot/beam_modes.hpp"
 
-#include <cmath>
-#include <stdexcept>
-#include <vector>
-
 #include <Eigen/Dense>
 #include <Eigen/Eigenvalues>
 #include <catch2/catch.hpp>
+#include <cmath>
+#include <stdexcept>
+#include <vector>
 
 namespace sweetspot {
 namespace {
@@ -22,9 +21,9 @@ constexpr double kFreeFreeBetaL[3] = {4.7300408, 7.8532046, 10.9956079};
 constexpr double kFreeFreeNode = 0.22416;
 // The roots above carry 8 digits: ~1e-8 relative, so (beta L)^2 ~2e-8.
 constexpr double kClosedFormDigits = 3e-8;
-constexpr double kNodeDigits = 5e-6;        // the node fraction carries 5 digits
-constexpr double kExactTol = 1e-9;          // exact solver vs an exact closed form
-constexpr double kDefaultFeTol = 1e-6;      // ModeOptions::rel_tol default
+constexpr double kNodeDigits = 5e-6;    // the node fraction carries 5 digits
+constexpr double kExactTol = 1e-9;      // exact solver vs an exact closed form
+constexpr double kDefaultFeTol = 1e-6;  // ModeOptions::rel_tol default
 constexpr double kSubMicrometre_m = 1e-7;
 // The state-space (nonsymmetric) eigensolver against the symmetric one on the
 // same matrices: round-off grows with omega_max / omega_1 of the mesh.
@@ -198,8 +197,7 @@ TEST_CASE("A point mass at the tip lowers the fundamental and matches finite ele
   const std::vector<PointMass> tip{{0.7, 0.05}};
   const double loaded = free_modes(beam, tip, exact(1)).modes[0].frequency_Hz;
   CHECK(loaded < free);
-  CHECK(free_modes(beam, tip, fe(1, 1e-8)).modes[0].frequency_Hz ==
-        Approx(loaded).epsilon(2e-8));
+  CHECK(free_modes(beam, tip, fe(1, 1e-8)).modes[0].frequency_Hz == Approx(loaded).epsilon(2e-8));
 }
 
 TEST_CASE("Scaling EI to a measured fundamental hits it and scales every section alike") {
@@ -217,7 +215,8 @@ TEST_CASE("The finite-element spectrum has two rigid-body modes at zero frequenc
   const Eigen::MatrixXd K = to_matrix(mats.stiffness, mats.size);
   const Eigen::MatrixXd M = to_matrix(mats.mass, mats.size);
   const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(K, M);
-  const double w1 = 2 * kPi * free_modes(racquet(), racquet_masses(), exact(1)).modes[0].frequency_Hz;
+  const double w1 =
+      2 * kPi * free_modes(racquet(), racquet_masses(), exact(1)).modes[0].frequency_Hz;
   // Rigid modes are zero up to the round-off of K (~cond(K) eps of the first flexible one).
   CHECK(std::abs(es.eigenvalues()(0)) < 1e-5 * w1 * w1);
   CHECK(std::abs(es.eigenvalues()(1)) < 1e-5 * w1 * w1);
@@ -265,8 +264,8 @@ TEST_CASE("Timoshenko theory with wood's shear modulus moves modes 2 and 3 towar
   const ModalResult eb = free_modes(eb_beam, {}, exact(3));
   ModeOptions t = fe(3);
   t.theory = ModeOptions::Theory::kTimoshenko;
-  t.timoshenko = {rectangular_timoshenko_section(kWoodShearModulus_Pa, kPaperWidth_m,
-                                                 kPaperThickness_m)};
+  t.timoshenko = {
+      rectangular_timoshenko_section(kWoodShearModulus_Pa, kPaperWidth_m, kPaperThickness_m)};
   // Refit EI so the Timoshenko f1 is still the measured 193 Hz.
   const std::vector<Section> beam = scale_EI_to_fundamental(eb_beam, {}, kPaperF1_Hz, t);
   const ModalResult r = free_modes(beam, {}, t);
@@ -277,9 +276,8 @@ TEST_CASE("Timoshenko theory with wood's shear modulus moves modes 2 and 3 towar
     CHECK(r.modes[k].frequency_Hz < eb.modes[k].frequency_Hz);
     CHECK(std::abs(r.modes[k].frequency_Hz - measured) <
           std::abs(eb.modes[k].frequency_Hz - measured));
-    WARN("mode " << k + 1 << ": Euler-Bernoulli " << eb.modes[k].frequency_Hz
-                 << " Hz, Timoshenko " << r.modes[k].frequency_Hz << " Hz, measured "
-                 << measured << " Hz");
+    WARN("mode " << k + 1 << ": Euler-Bernoulli " << eb.modes[k].frequency_Hz << " Hz, Timoshenko "
+                 << r.modes[k].frequency_Hz << " Hz, measured " << measured << " Hz");
   }
 }
 
@@ -325,7 +323,8 @@ TEST_CASE("A hand joined by no spring or dashpot leaves the free beam") {
   REQUIRE(r.elements_used == free.elements_used);
   REQUIRE(r.modes.size() == 3);
   for (int k = 0; k < 3; ++k) {
-    CHECK(r.modes[k].frequency_Hz == Approx(free.modes[k].frequency_Hz).epsilon(kStateSpaceRoundOff));
+    CHECK(r.modes[k].frequency_Hz ==
+          Approx(free.modes[k].frequency_Hz).epsilon(kStateSpaceRoundOff));
     CHECK(r.modes[k].damping_ratio == Approx(0.0).margin(kStateSpaceRoundOff));
     CHECK(r.modes[k].hand_energy_fraction == Approx(0.0).margin(1e-10));
   }
@@ -339,7 +338,9 @@ std::vector<Section> equal_sections(int n) {
   return std::vector<Section>(n, Section{0.7 / n, 0.25 / n, 152.0});
 }
 
-TEST_CASE("Held in the hand a uniform beam keeps its fundamental however many equal sections it is given as") {
+TEST_CASE(
+    "Held in the hand a uniform beam keeps its fundamental however many equal sections it is given "
+    "as") {
   const ModalResult one = hand_held_modes(equal_sections(1), {}, calibrated_hand(), fe(3));
   const Mode* reference = hand_held_fundamental(one, 0.7);
   REQUIRE(reference != nullptr);
@@ -360,12 +361,14 @@ TEST_CASE("The dense state-space solve of a fine mesh drops none of the low mode
   const ModalResult coarse = hand_held_modes(equal_sections(1), {}, calibrated_hand(), fe(3));
   ModeOptions options = fe(3);
   options.damped_solver = ModeOptions::DampedSolver::kDenseStateSpace;
-  options.elements = 200;  // omega_max / omega_1 ~ 1e6: a cut-off relative to omega_max took the hand mode
+  options.elements =
+      200;  // omega_max / omega_1 ~ 1e6: a cut-off relative to omega_max took the hand mode
   SECTION("a gripped hand: its rocking mode and the frame's fundamental") {
     const ModalResult r = hand_held_modes(equal_sections(1), {}, calibrated_hand(), options);
     REQUIRE(r.modes.size() == 3);
     for (int k = 0; k < 3; ++k) {
-      CHECK(r.modes[k].frequency_Hz == Approx(coarse.modes[k].frequency_Hz).epsilon(kFineMeshDenseTol));
+      CHECK(r.modes[k].frequency_Hz ==
+            Approx(coarse.modes[k].frequency_Hz).epsilon(kFineMeshDenseTol));
     }
   }
   SECTION("a detached hand (k = c = 0): the free beam's modes") {
@@ -373,7 +376,8 @@ TEST_CASE("The dense state-space solve of a fine mesh drops none of the low mode
     const ModalResult free = free_modes(equal_sections(1), {}, exact(3));
     REQUIRE(r.modes.size() == 3);
     for (int k = 0; k < 3; ++k) {
-      CHECK(r.modes[k].frequency_Hz == Approx(free.modes[k].frequency_Hz).epsilon(kFineMeshDenseTol));
+      CHECK(r.modes[k].frequency_Hz ==
+            Approx(free.modes[k].frequency_Hz).epsilon(kFineMeshDenseTol));
       CHECK(r.modes[k].hand_energy_fraction == Approx(0.0).margin(1e-10));
     }
   }
@@ -385,16 +389,20 @@ constexpr double kSameBeamRoundOff = 1e-10;
 
 TEST_CASE("Ten thousand equal sections give what one section gives, on the same mesh") {
   const std::vector<Section> one = equal_sections(1), many = equal_sections(10000);
-  const ModalResult exact_one = free_modes(one, {}, exact(3)), exact_many = free_modes(many, {}, exact(3));
+  const ModalResult exact_one = free_modes(one, {}, exact(3)),
+                    exact_many = free_modes(many, {}, exact(3));
   const ModalResult fe_one = free_modes(one, {}, fe(3)), fe_many = free_modes(many, {}, fe(3));
   const ModalResult held_one = hand_held_modes(one, {}, calibrated_hand(), fe(3));
   const ModalResult held_many = hand_held_modes(many, {}, calibrated_hand(), fe(3));
   CHECK(fe_many.elements_used == fe_one.elements_used);
   CHECK(held_many.elements_used == held_one.elements_used);
   for (int k = 0; k < 3; ++k) {
-    CHECK(exact_many.modes[k].frequency_Hz == Approx(exact_one.modes[k].frequency_Hz).epsilon(kSameBeamRoundOff));
-    CHECK(fe_many.modes[k].frequency_Hz == Approx(fe_one.modes[k].frequency_Hz).epsilon(kSameBeamRoundOff));
-    CHECK(held_many.modes[k].frequency_Hz == Approx(held_one.modes[k].frequency_Hz).epsilon(kSameBeamRoundOff));
+    CHECK(exact_many.modes[k].frequency_Hz ==
+          Approx(exact_one.modes[k].frequency_Hz).epsilon(kSameBeamRoundOff));
+    CHECK(fe_many.modes[k].frequency_Hz ==
+          Approx(fe_one.modes[k].frequency_Hz).epsilon(kSameBeamRoundOff));
+    CHECK(held_many.modes[k].frequency_Hz ==
+          Approx(held_one.modes[k].frequency_Hz).epsilon(kSameBeamRoundOff));
   }
 }
 
@@ -421,10 +429,12 @@ TEST_CASE("Elements span sections shorter than themselves and still converge to 
   const ModalResult r = free_modes(beam, {}, fe(3));
   CHECK(r.elements_used < 100);  // not one (or more) per section
   for (int k = 0; k < 3; ++k) {
-    CHECK(r.modes[k].frequency_Hz == Approx(reference.modes[k].frequency_Hz).epsilon(kRoughSectionsTol));
+    CHECK(r.modes[k].frequency_Hz ==
+          Approx(reference.modes[k].frequency_Hz).epsilon(kRoughSectionsTol));
   }
   const ModalResult fine = free_modes(beam, {}, fe(1, 1e-8));
-  CHECK(fine.modes[0].frequency_Hz == Approx(reference.modes[0].frequency_Hz).epsilon(kRoughSectionsFineTol));
+  CHECK(fine.modes[0].frequency_Hz ==
+        Approx(reference.modes[0].frequency_Hz).epsilon(kRoughSectionsFineTol));
   const ModalResult held = hand_held_modes(beam, {}, calibrated_hand(), fe(3));
   CHECK(held.elements_used < 100);
   REQUIRE(hand_held_fundamental(held, 0.7) != nullptr);
@@ -589,18 +599,30 @@ TEST_CASE("Bad input throws std::invalid_argument naming the argument") {
     }
     return std::string("no throw");
   };
-  CHECK_THAT(message([] { free_modes({{0.7, 0.3, {}}}, {}); }),
+  CHECK_THAT(message([] {
+               free_modes({{0.7, 0.3, {}}}, {});
+             }),
              Catch::Contains("sections/0/EI_N_m2"));
-  CHECK_THAT(message([] { free_modes({{0.7, 0.3, -5.0}}, {}); }),
+  CHECK_THAT(message([] {
+               free_modes({{0.7, 0.3, -5.0}}, {});
+             }),
              Catch::Contains("sections/0/EI_N_m2") && Catch::Contains("-5"));
-  CHECK_THAT(message([] { free_modes({{0.7, 0.3, 1.0}, {0.0, 0.1, 1.0}}, {}); }),
+  CHECK_THAT(message([] {
+               free_modes({{0.7, 0.3, 1.0}, {0.0, 0.1, 1.0}}, {});
+             }),
              Catch::Contains("sections/1/length_m"));
-  CHECK_THAT(message([] { free_modes({{0.7, -0.3, 1.0}}, {}); }),
+  CHECK_THAT(message([] {
+               free_modes({{0.7, -0.3, 1.0}}, {});
+             }),
              Catch::Contains("sections/0/mass_kg"));
   CHECK_THAT(message([] { free_modes({}, {}); }), Catch::Contains("sections"));
-  CHECK_THAT(message([&] { free_modes(ok, {{0.8, 0.01}}); }),
+  CHECK_THAT(message([&] {
+               free_modes(ok, {{0.8, 0.01}});
+             }),
              Catch::Contains("point_masses/0/from_butt_m") && Catch::Contains("0.8"));
-  CHECK_THAT(message([&] { free_modes(ok, {{0.3, -0.01}}); }),
+  CHECK_THAT(message([&] {
+               free_modes(ok, {{0.3, -0.01}});
+             }),
              Catch::Contains("point_masses/0/mass_kg"));
   ModeOptions bad_modes;
   bad_modes.modes = 0;
@@ -616,13 +638,16 @@ TEST_CASE("Bad input throws std::invalid_argument naming the argument") {
   missing_shear.theory = ModeOptions::Theory::kTimoshenko;
   CHECK_THAT(message([&] { free_modes(ok, {}, missing_shear); }),
              Catch::Contains("options.timoshenko"));
-  CHECK_THAT(message([&] { free_modes({{0.7, 0.0, 1.0}}, {}, fe()); }),
+  CHECK_THAT(message([&] {
+               free_modes({{0.7, 0.0, 1.0}}, {}, fe());
+             }),
              Catch::Contains("sections/0/mass_kg"));
   HandCoupling hand = calibrated_hand();
   CHECK_THAT(message([&] { hand_held_modes(ok, {}, hand, exact()); }),
              Catch::Contains("options.method"));
   hand.mass_kg = 0.0;
-  CHECK_THAT(message([&] { hand_held_modes(ok, {}, hand, fe()); }), Catch::Contains("hand.mass_kg"));
+  CHECK_THAT(message([&] { hand_held_modes(ok, {}, hand, fe()); }),
+             Catch::Contains("hand.mass_kg"));
   hand = calibrated_hand();
   hand.grip_length_m = 1.0;
   CHECK_THAT(message([&] { hand_held_modes(ok, {}, hand, fe()); }),

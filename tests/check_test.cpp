@@ -2,11 +2,10 @@
 // throws a message naming the argument, the expectation and the value as given.
 #include "check.hpp"
 
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
-
-#include <catch2/catch.hpp>
 
 namespace sweetspot::detail {
 namespace {
@@ -24,8 +23,10 @@ TEST_CASE("Numbers in messages are the shortest text that reads back to the same
 TEST_CASE("Each check throws naming the argument, the range and the value") {
   CHECK_NOTHROW(require_positive("mass", 1e-300, "kg"));
   CHECK_THROWS_WITH(require_positive("mass", 0.0, "kg"), "mass: must be > 0 kg, got 0 kg");
-  CHECK_THROWS_WITH(require_at_least("hand/mass_kg", -0.5, 0.0, "kg"), "hand/mass_kg: must be >= 0 kg, got -0.5 kg");
-  CHECK_THROWS_WITH(require_in_range("frame/cor", 1.5, 0.0, 1.0, ""), "frame/cor: must be in [0, 1], got 1.5");
+  CHECK_THROWS_WITH(require_at_least("hand/mass_kg", -0.5, 0.0, "kg"),
+                    "hand/mass_kg: must be >= 0 kg, got -0.5 kg");
+  CHECK_THROWS_WITH(require_in_range("frame/cor", 1.5, 0.0, 1.0, ""),
+                    "frame/cor: must be in [0, 1], got 1.5");
   CHECK_THROWS_WITH(require_finite("x", std::nan("")), "x: must be a finite number, got nan");
   // Non-finite values never pass a range check, and their unit is not appended.
   CHECK_THROWS_WITH(require_in_range("t", std::numeric_limits<double>::infinity(), 0.0, 1.0, "s"),

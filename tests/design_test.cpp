@@ -2,9 +2,8 @@
 // and the hand-held system is implement plus hand, Cross (2004) Eq. (14).
 #include "sweetspot/design.hpp"
 
-#include <stdexcept>
-
 #include <catch2/catch.hpp>
+#include <stdexcept>
 
 namespace sweetspot {
 namespace {
@@ -35,16 +34,22 @@ TEST_CASE("Each out-of-range field is named by its path in a design file") {
     return std::string("accepted");
   };
   CHECK_THAT(error([](Design& d) { d.cor = 1.2; }), Catch::StartsWith("frame/cor:"));
-  CHECK_THAT(error([](Design& d) { d.impact_duration_s = 0.0; }), Catch::StartsWith("strings/impact_duration_s:"));
+  CHECK_THAT(error([](Design& d) { d.impact_duration_s = 0.0; }),
+             Catch::StartsWith("strings/impact_duration_s:"));
   CHECK_THAT(error([](Design& d) { d.hand.mass_kg = -0.5; }), Catch::StartsWith("hand/mass_kg:"));
-  CHECK_THAT(error([](Design& d) { d.hand.center_from_butt_m = 0.8; }), Catch::StartsWith("hand/center_from_butt_m:"));
+  CHECK_THAT(error([](Design& d) { d.hand.center_from_butt_m = 0.8; }),
+             Catch::StartsWith("hand/center_from_butt_m:"));
   CHECK_THAT(error([](Design& d) { d.forearm_equivalent_mass_kg = -1.0; }),
              Catch::StartsWith("forearm/equivalent_mass_kg:"));
-  CHECK_THAT(error([](Design& d) { d.ball.speed_m_s = 0.0; }), Catch::StartsWith("ball/speed_m_s:"));
-  CHECK_THAT(error([](Design& d) { d.impact_from_butt_m = -0.01; }), Catch::StartsWith("impact/from_butt_m:"));
+  CHECK_THAT(error([](Design& d) { d.ball.speed_m_s = 0.0; }),
+             Catch::StartsWith("ball/speed_m_s:"));
+  CHECK_THAT(error([](Design& d) { d.impact_from_butt_m = -0.01; }),
+             Catch::StartsWith("impact/from_butt_m:"));
   CHECK_THAT(error([](Design& d) { d.cor_rigid = 1.5; }), Catch::StartsWith("frame/cor_rigid:"));
-  CHECK_THAT(error([](Design& d) { d.stiffness.EI_N_m2 = 0.0; }), Catch::StartsWith("frame/EI_N_m2:"));
-  CHECK_THAT(error([](Design& d) { d.ball.mass_kg = std::nan(""); }), Catch::StartsWith("ball/mass_kg:"));
+  CHECK_THAT(error([](Design& d) { d.stiffness.EI_N_m2 = 0.0; }),
+             Catch::StartsWith("frame/EI_N_m2:"));
+  CHECK_THAT(error([](Design& d) { d.ball.mass_kg = std::nan(""); }),
+             Catch::StartsWith("ball/mass_kg:"));
 }
 
 TEST_CASE("The hand-held system is implement plus hand at its centre") {
@@ -53,7 +58,8 @@ TEST_CASE("The hand-held system is implement plus hand at its centre") {
   const MassProperties racquet = d.implement.mass_properties();
   CHECK(system.mass_kg == Approx(racquet.mass_kg + d.hand.mass_kg));
   CHECK(system.com_from_butt_m * system.mass_kg ==
-        Approx(racquet.com_from_butt_m * racquet.mass_kg + d.hand.center_from_butt_m * d.hand.mass_kg));
+        Approx(racquet.com_from_butt_m * racquet.mass_kg +
+               d.hand.center_from_butt_m * d.hand.mass_kg));
 }
 
 }  // namespace

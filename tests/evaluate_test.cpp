@@ -1,12 +1,12 @@
 // Cross (2004) Table I: the force on the strings F0 and on the arm F_w for a
 // 70 cm racquet struck 5 cm from the tip by a 57 g ball at 50 m/s.
 #include "sweetspot/evaluate.hpp"
-#include "sweetspot/string_bed.hpp"
 
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <vector>
 
-#include <catch2/catch.hpp>
+#include "sweetspot/string_bed.hpp"
 
 namespace sweetspot {
 namespace {
@@ -187,13 +187,15 @@ TEST_CASE("Rigid cases laid out as arrays give exactly what evaluating each desi
   std::vector<std::vector<double>> out(7, std::vector<double>(n));
   for (std::size_t i = 0; i < n; ++i) {
     const RigidCase c = rigid_case(designs[i]);
-    const double fields[11] = {c.body.mass_kg, c.body.com_from_butt_m, c.body.I_cm_kg_m2, c.hand.from_butt_m,
-                               c.hand.mass_kg, c.forearm_equivalent_mass_kg, c.ball_mass_kg, c.ball_speed_m_s,
-                               c.cor, c.impact_duration_s, c.impact_from_butt_m};
+    const double fields[11] = {
+        c.body.mass_kg, c.body.com_from_butt_m,       c.body.I_cm_kg_m2,   c.hand.from_butt_m,
+        c.hand.mass_kg, c.forearm_equivalent_mass_kg, c.ball_mass_kg,      c.ball_speed_m_s,
+        c.cor,          c.impact_duration_s,          c.impact_from_butt_m};
     for (std::size_t k = 0; k < 11; ++k) in[k][i] = fields[k];
   }
-  rigid_outcomes(RigidCases{in[0], in[1], in[2], in[3], in[4], in[5], in[6], in[7], in[8], in[9], in[10]},
-                 RigidOutcomes{out[0], out[1], out[2], out[3], out[4], out[5], out[6]});
+  rigid_outcomes(
+      RigidCases{in[0], in[1], in[2], in[3], in[4], in[5], in[6], in[7], in[8], in[9], in[10]},
+      RigidOutcomes{out[0], out[1], out[2], out[3], out[4], out[5], out[6]});
   for (std::size_t i = 0; i < n; ++i) {
     INFO("design " << i);
     const Evaluation e = evaluate(designs[i]);
@@ -207,10 +209,11 @@ TEST_CASE("Rigid cases laid out as arrays give exactly what evaluating each desi
   }
   CHECK(out[5][n - 2] == 0.0);
   std::vector<double> short_span(n - 1);
-  CHECK_THROWS_WITH(rigid_outcomes(RigidCases{in[0], in[1], in[2], in[3], in[4], in[5], in[6], in[7], in[8], in[9],
-                                              short_span},
-                                   RigidOutcomes{out[0], out[1], out[2], out[3], out[4], out[5], out[6]}),
-                    Catch::Contains("impact_from_butt_m"));
+  CHECK_THROWS_WITH(
+      rigid_outcomes(RigidCases{in[0], in[1], in[2], in[3], in[4], in[5], in[6], in[7], in[8],
+                                in[9], short_span},
+                     RigidOutcomes{out[0], out[1], out[2], out[3], out[4], out[5], out[6]}),
+      Catch::Contains("impact_from_butt_m"));
 }
 
 TEST_CASE("Rigid cases refuse a derived COR, a bad design and a short output span") {
@@ -270,7 +273,8 @@ TEST_CASE("The frame never keeps more energy than the ball loses, from 0.3 to 10
   CHECK(refused >= 4);
 }
 
-TEST_CASE("A derived COR at the edge of the model's validity falls to 0 continuously, never below") {
+TEST_CASE(
+    "A derived COR at the edge of the model's validity falls to 0 continuously, never below") {
   // e^2 + a (1 + e)^2 = e_r^2: as a = mu kappa rises to e_r^2, e falls to 0.
   Design d{Implement::from_sections({Section{0.7, 0.25, {}}}, {})};
   d.stiffness.EI_N_m2 = 152.0;

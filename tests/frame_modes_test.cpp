@@ -30,7 +30,8 @@ TEST_CASE("A fitted distribution reproduces mass, balance and swingweight exactl
   CHECK(back.I_cm_kg_m2 == Approx(specs.I_cm_kg_m2).epsilon(kRoundOff));
   // A uniform body is fitted by a uniform distribution.
   const MassProperties uniform{0.3, 0.35, 0.3 * 0.7 * 0.7 / 12};
-  for (const Section& s : fitted_sections(0.7, uniform)) CHECK(s.mass_kg == Approx(0.3 / kFittedSections).epsilon(1e-9));
+  for (const Section& s : fitted_sections(0.7, uniform))
+    CHECK(s.mass_kg == Approx(0.3 / kFittedSections).epsilon(1e-9));
 }
 
 TEST_CASE("Specs that no positive smooth distribution gives are refused") {

@@ -3,11 +3,10 @@
 // independent time-stepping integration of each modal equation.
 #include "sweetspot/impact_response.hpp"
 
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <numbers>
 #include <vector>
-
-#include <catch2/catch.hpp>
 
 #include "sweetspot/rigid_impact.hpp"
 
@@ -97,9 +96,11 @@ TEST_CASE("The half-sine carries the impulse 2 F0 T / pi and delivers it as F0 T
   const HalfSinePulse pulse{1000.0, 0.004};
   CHECK(half_sine_impulse(pulse) == Approx(2.0 * 1000.0 * 0.004 / kPi).epsilon(kRoundOff));
   // Brute-force integral of F over the pulse.
-  const double brute = simpson([&](double t) { return 1000.0 * std::sin(kPi * t / 0.004); }, 0.004, 2000);
+  const double brute =
+      simpson([&](double t) { return 1000.0 * std::sin(kPi * t / 0.004); }, 0.004, 2000);
   CHECK(brute == Approx(half_sine_impulse(pulse)).epsilon(kQuadrature));
-  CHECK(half_sine_impulse_until(pulse, 0.002) == Approx(0.5 * half_sine_impulse(pulse)).epsilon(kRoundOff));
+  CHECK(half_sine_impulse_until(pulse, 0.002) ==
+        Approx(0.5 * half_sine_impulse(pulse)).epsilon(kRoundOff));
   CHECK(half_sine_impulse_until(pulse, -1.0) == 0.0);
   CHECK(half_sine_impulse_until(pulse, 1.0) == half_sine_impulse(pulse));
   CHECK(half_sine_with_impulse(half_sine_impulse(pulse), 0.004).peak_force_N ==
@@ -130,7 +131,8 @@ TEST_CASE("The closed-form modal response matches time stepping, on and off reso
 // q = P sin(W t - phase) / sqrt((w^2 - W^2)^2 + (2 z w W)^2), W = pi/T.
 constexpr double kSteadyState = 1e-6;
 
-TEST_CASE("A stiff damped mode follows the steady forced response, with no overflow however stiff") {
+TEST_CASE(
+    "A stiff damped mode follows the steady forced response, with no overflow however stiff") {
   constexpr double T = 0.004, P = 3.0, zeta = 0.01;
   const double W = kPi / T;
   for (const double w : {1e6, 1e8, 1e10}) {
@@ -149,7 +151,8 @@ TEST_CASE("A stiff damped mode follows the steady forced response, with no overf
   }
 }
 
-TEST_CASE("Undamped, the closed form is the textbook sine response P (sin Wt - W/w sin wt)/(w^2 - W^2)") {
+TEST_CASE(
+    "Undamped, the closed form is the textbook sine response P (sin Wt - W/w sin wt)/(w^2 - W^2)") {
   constexpr double T = 0.004, P = 2.5;
   const double W = kPi / T, w = 2.0 * kPi * 193.0;
   for (const double t : {0.001, 0.0025, 0.004}) {
@@ -169,8 +172,10 @@ TEST_CASE("An undamped mode keeps 1/2 (J phi)^2 S(wT)^2, the half-sine's Fourier
     const ModalState end = half_sine_modal_response(w, 0.0, F0 * phi, T, T);
     const double energy = 0.5 * (end.q_dot * end.q_dot + w * w * end.q * end.q);
     // Brute-force |F^(w)|: the transform integrated numerically.
-    const double re = simpson([&](double t) { return F0 * std::sin(kPi * t / T) * std::cos(w * t); }, T, 4000);
-    const double im = simpson([&](double t) { return F0 * std::sin(kPi * t / T) * std::sin(w * t); }, T, 4000);
+    const double re =
+        simpson([&](double t) { return F0 * std::sin(kPi * t / T) * std::cos(w * t); }, T, 4000);
+    const double im =
+        simpson([&](double t) { return F0 * std::sin(kPi * t / T) * std::sin(w * t); }, T, 4000);
     const double brute = 0.5 * phi * phi * (re * re + im * im);
     const double closed = half_sine_residual_energy(J, phi, w, T);
     CHECK(energy == Approx(closed).epsilon(kRoundOff).margin(kRoundOff * J * J * phi * phi));
@@ -210,10 +215,12 @@ TEST_CASE("The implement gains exactly the impulse as momentum, and the vibratio
   const double mu = kBeamMass / kBeamLength;
   for (std::size_t i = 0; i < t.size(); ++i) {
     auto field = [&](bool ac) {
-      return simpson([&](double s) {
-        const auto k = static_cast<std::size_t>(std::lround(s / kBeamLength * 4000));
-        return mu * (ac ? r.points[k].ac_m_s[i] : r.points[k].dc_m_s[i]);
-      }, kBeamLength, 4000);
+      return simpson(
+          [&](double s) {
+            const auto k = static_cast<std::size_t>(std::lround(s / kBeamLength * 4000));
+            return mu * (ac ? r.points[k].ac_m_s[i] : r.points[k].dc_m_s[i]);
+          },
+          kBeamLength, 4000);
     };
     const double delivered = half_sine_impulse_until(pulse, t[i]);
     CHECK(field(false) == Approx(delivered).epsilon(kQuadrature));
@@ -222,7 +229,9 @@ TEST_CASE("The implement gains exactly the impulse as momentum, and the vibratio
   CHECK(r.impulse_N_s == Approx(2.0 * 500.0 * 0.008 / kPi).epsilon(kRoundOff));
 }
 
-TEST_CASE("The dc velocity is Eq. 4 and vanishes 2 cm from the end for an impact 23.3 cm from the other") {
+TEST_CASE(
+    "The dc velocity is Eq. 4 and vanishes 2 cm from the end for an impact 23.3 cm from the "
+    "other") {
   const ResponseModel beam = paper_beam_model();
   const MassProperties body = beam.rigid_body;
   const double point = kBeamLength - 0.02;
@@ -234,8 +243,9 @@ TEST_CASE("The dc velocity is Eq. 4 and vanishes 2 cm from the end for an impact
     const double A = kBeamLength / 2 - point, b = impact - kBeamLength / 2;
     const double per_impulse = (1.0 - 12.0 * A * b / (kBeamLength * kBeamLength)) / kBeamMass;
     for (std::size_t i = 0; i < t.size(); ++i) {
-      CHECK(r.points[0].dc_m_s[i] ==
-            Approx(per_impulse * half_sine_impulse_until(pulse, t[i])).epsilon(kRoundOff).margin(1e-14));
+      CHECK(r.points[0].dc_m_s[i] == Approx(per_impulse * half_sine_impulse_until(pulse, t[i]))
+                                         .epsilon(kRoundOff)
+                                         .margin(1e-14));
     }
   }
   // The paper: the COP for the disk 2 cm from one end is 23.3 cm from the other.
@@ -284,13 +294,15 @@ TEST_CASE("Modes above 1.5/T keep less than 1/64 of their impulse-limit energy")
     REQUIRE(m.frequency_Hz > 1.5 / T);
     // S <= 1 / ((2 f T)^2 - 1) <= 1/8 above the cut-off, so at most 1/64 of the impulse limit.
     const double r_ft = 2.0 * m.frequency_Hz * T;
-    CHECK(m.energy_after_J <= m.impulse_limit_energy_J / ((r_ft * r_ft - 1) * (r_ft * r_ft - 1)) * (1 + kRoundOff));
+    CHECK(m.energy_after_J <=
+          m.impulse_limit_energy_J / ((r_ft * r_ft - 1) * (r_ft * r_ft - 1)) * (1 + kRoundOff));
     CHECK(m.energy_after_J <= m.impulse_limit_energy_J / 64.0);
   }
   // A golf ball (1.5 ms, Sec. III) excites the second mode (measured 506 Hz,
   // 532 Hz here) strongly: below 1.5/T = 1 kHz it keeps S^2 = 0.31 of its
   // impulse-limit energy, twenty times the most a mode above the cut-off keeps.
-  const ImpactResponse golf = impact_response(beam, 0.65, half_sine_with_impulse(0.1, 0.0015), {}, {});
+  const ImpactResponse golf =
+      impact_response(beam, 0.65, half_sine_with_impulse(0.1, 0.0015), {}, {});
   CHECK(golf.modes[1].frequency_Hz < 1.5 / 0.0015);
   CHECK(golf.modes[1].energy_after_J > 0.25 * golf.modes[1].impulse_limit_energy_J);
 }
@@ -338,19 +350,22 @@ TEST_CASE("The derived COR rises to cor_rigid as the frame becomes stiff") {
   const Ball ball{0.057, 50.0};
   double previous = 0.0;
   for (const double f1 : {80.0, 120.0, 180.0, 250.0, 350.0}) {
-    const double e = derive_cor(table_one_model(f1), kTableOneImpact, 0.85, ball, kTableOneDuration).cor;
+    const double e =
+        derive_cor(table_one_model(f1), kTableOneImpact, 0.85, ball, kTableOneDuration).cor;
     CHECK(e > previous);
     CHECK(e < 0.85);
     previous = e;
   }
   // EI x 1e6 (f1 x 1000) recomputed from scratch: within 1e-9 of cor_rigid.
-  const DerivedCor stiff = derive_cor(table_one_model(150e3), kTableOneImpact, 0.85, ball, kTableOneDuration);
+  const DerivedCor stiff =
+      derive_cor(table_one_model(150e3), kTableOneImpact, 0.85, ball, kTableOneDuration);
   CHECK(stiff.cor == Approx(0.85).margin(1e-9));
   CHECK(stiff.vibration_share < 1e-9);
   // A frame with no modes at all is rigid.
   ResponseModel rigid = table_one_model(150.0);
   rigid.modes.clear();
-  CHECK(derive_cor(rigid, kTableOneImpact, 0.85, ball, kTableOneDuration).cor == Approx(0.85).epsilon(kRoundOff));
+  CHECK(derive_cor(rigid, kTableOneImpact, 0.85, ball, kTableOneDuration).cor ==
+        Approx(0.85).epsilon(kRoundOff));
 }
 
 TEST_CASE("Scaling the fundamental matches recomputing the modes with scaled EI") {
@@ -360,7 +375,8 @@ TEST_CASE("Scaling the fundamental matches recomputing the modes with scaled EI"
   const ResponseModel scaled = with_fundamental(base, 110.0);
   const ResponseModel direct = table_one_model(110.0);
   for (std::size_t k = 0; k < base.modes.size(); ++k) {
-    CHECK(scaled.modes[k].omega_rad_s == Approx(direct.modes[k].omega_rad_s).epsilon(kExactHighModes));
+    CHECK(scaled.modes[k].omega_rad_s ==
+          Approx(direct.modes[k].omega_rad_s).epsilon(kExactHighModes));
     CHECK(mass_normalised_shape(scaled.modes[k], 0.65) ==
           Approx(mass_normalised_shape(direct.modes[k], 0.65)).epsilon(10 * kExactHighModes));
   }
@@ -373,8 +389,10 @@ TEST_CASE("Exact and finite-element free modes give the same mass-normalised sha
   ModeOptions fe = exact;
   fe.method = ModeOptions::Method::kFiniteElement;
   fe.rel_tol = 1e-8;
-  const ResponseModel a = free_response_model(sections, {{0.6, 0.01}}, free_modes(sections, {{0.6, 0.01}}, exact));
-  const ResponseModel b = free_response_model(sections, {{0.6, 0.01}}, free_modes(sections, {{0.6, 0.01}}, fe));
+  const ResponseModel a =
+      free_response_model(sections, {{0.6, 0.01}}, free_modes(sections, {{0.6, 0.01}}, exact));
+  const ResponseModel b =
+      free_response_model(sections, {{0.6, 0.01}}, free_modes(sections, {{0.6, 0.01}}, fe));
   for (std::size_t k = 0; k < a.modes.size(); ++k) {
     for (const double x : {0.0, 0.3, 0.65, 0.7}) {
       // FE shapes converge like the frequencies: ~1e-6 on the fourth mode.
@@ -384,25 +402,32 @@ TEST_CASE("Exact and finite-element free modes give the same mass-normalised sha
   }
 }
 
-TEST_CASE("With cor_rigid 0.85 a 255 Hz and a 137 Hz Table I racquet give the paper's 0.8 and 0.6") {
+TEST_CASE(
+    "With cor_rigid 0.85 a 255 Hz and a 137 Hz Table I racquet give the paper's 0.8 and 0.6") {
   // cor_rigid 0.85, T = 4 ms, 5 cm from the tip: see impact_response.hpp.
   const ResponseModel racquet = table_one_model(150.0);
   const Ball ball{0.057, 50.0};
-  const auto stiff = fundamental_for_cor(racquet, kTableOneImpact, 0.85, ball, kTableOneDuration, 0.8, 50, 370);
-  const auto flexible = fundamental_for_cor(racquet, kTableOneImpact, 0.85, ball, kTableOneDuration, 0.6, 50, 370);
+  const auto stiff =
+      fundamental_for_cor(racquet, kTableOneImpact, 0.85, ball, kTableOneDuration, 0.8, 50, 370);
+  const auto flexible =
+      fundamental_for_cor(racquet, kTableOneImpact, 0.85, ball, kTableOneDuration, 0.6, 50, 370);
   REQUIRE(stiff);
   REQUIRE(flexible);
   // Regression values of this model (Hz); the root is found to 1e-6 Hz.
   CHECK(*stiff == Approx(254.70).margin(0.01));
   CHECK(*flexible == Approx(136.53).margin(0.01));
   // At e = 0.8 the force is the paper's Table I row 1, 1117 N.
-  const DerivedCor d = derive_cor(with_fundamental(racquet, *stiff), kTableOneImpact, 0.85, ball, kTableOneDuration);
+  const DerivedCor d =
+      derive_cor(with_fundamental(racquet, *stiff), kTableOneImpact, 0.85, ball, kTableOneDuration);
   CHECK(d.pulse.peak_force_N == Approx(1117.0).margin(0.5));
-  const DerivedCor f = derive_cor(with_fundamental(racquet, *flexible), kTableOneImpact, 0.85, ball, kTableOneDuration);
+  const DerivedCor f = derive_cor(with_fundamental(racquet, *flexible), kTableOneImpact, 0.85, ball,
+                                  kTableOneDuration);
   CHECK(f.pulse.peak_force_N == Approx(993.0).margin(0.5));
 }
 
-TEST_CASE("Held in the hand, the vibration dies away and leaves the rigid motion of implement plus hand") {
+TEST_CASE(
+    "Held in the hand, the vibration dies away and leaves the rigid motion of implement plus "
+    "hand") {
   Design design{Implement::paper_racquet(0.70, 0.25, 0.8)};
   design.stiffness.fundamental_free_Hz = 150.0;
   ResponseOptions options;
@@ -417,8 +442,9 @@ TEST_CASE("Held in the hand, the vibration dies away and leaves the rigid motion
   for (const PointVelocity& p : r.points) {
     // Every mode is damped by the grip: after 2 s nothing is left.
     CHECK(std::abs(p.ac_m_s[1]) < 1e-9);
-    CHECK(p.dc_m_s[1] == Approx(point_velocity_per_impulse(held.rigid_body, 0.65, p.from_butt_m) *
-                                r.impulse_N_s).epsilon(kRoundOff));
+    CHECK(p.dc_m_s[1] ==
+          Approx(point_velocity_per_impulse(held.rigid_body, 0.65, p.from_butt_m) * r.impulse_N_s)
+              .epsilon(kRoundOff));
   }
   for (const ResponseMode& m : held.modes) CHECK(m.damping_ratio > 0.0);
   CHECK(r.vibration_energy_J > 0.0);
@@ -444,8 +470,10 @@ TEST_CASE("A microgram implement held in the hand has a finite response at every
         INFO("impact " << impact << " m, point " << p.from_butt_m << " m, t " << times[i] << " s");
         REQUIRE(std::isfinite(p.ac_m_s[i]));
         // The dc part is Eq. (4) for implement plus hand.
-        CHECK(p.dc_m_s[i] == Approx(point_velocity_per_impulse(held.rigid_body, impact, p.from_butt_m) *
-                                    half_sine_impulse_until(pulse, times[i])).epsilon(kRoundOff));
+        CHECK(p.dc_m_s[i] ==
+              Approx(point_velocity_per_impulse(held.rigid_body, impact, p.from_butt_m) *
+                     half_sine_impulse_until(pulse, times[i]))
+                  .epsilon(kRoundOff));
       }
     }
     CHECK(std::isfinite(r.vibration_energy_J));
@@ -454,12 +482,17 @@ TEST_CASE("A microgram implement held in the hand has a finite response at every
 
 TEST_CASE("Bad arguments are refused with the argument's name") {
   const ResponseModel beam = paper_beam_model(2);
-  CHECK_THROWS_WITH(impact_response(beam, 0.8, {1.0, 0.004}, {}, {}), Catch::Contains("impact_from_butt_m"));
-  CHECK_THROWS_WITH(impact_response(beam, 0.3, {1.0, 0.0}, {}, {}), Catch::Contains("pulse.duration_s"));
-  CHECK_THROWS_WITH(impact_response(beam, 0.3, {1.0, 0.004}, {-0.1}, {}), Catch::Contains("points_from_butt_m"));
-  CHECK_THROWS_WITH(half_sine_modal_response(100.0, 1.0, 1.0, 0.004, 0.001), Catch::Contains("damping_ratio"));
+  CHECK_THROWS_WITH(impact_response(beam, 0.8, {1.0, 0.004}, {}, {}),
+                    Catch::Contains("impact_from_butt_m"));
+  CHECK_THROWS_WITH(impact_response(beam, 0.3, {1.0, 0.0}, {}, {}),
+                    Catch::Contains("pulse.duration_s"));
+  CHECK_THROWS_WITH(impact_response(beam, 0.3, {1.0, 0.004}, {-0.1}, {}),
+                    Catch::Contains("points_from_butt_m"));
+  CHECK_THROWS_WITH(half_sine_modal_response(100.0, 1.0, 1.0, 0.004, 0.001),
+                    Catch::Contains("damping_ratio"));
   CHECK_THROWS_WITH(derive_cor(beam, 0.3, 1.2, Ball{}, 0.004), Catch::Contains("cor_rigid"));
-  CHECK_THROWS_WITH(derive_cor(beam, 0.3, 0.85, Ball{0.0, 50.0}, 0.004), Catch::Contains("ball.mass_kg"));
+  CHECK_THROWS_WITH(derive_cor(beam, 0.3, 0.85, Ball{0.0, 50.0}, 0.004),
+                    Catch::Contains("ball.mass_kg"));
   Design no_hand{Implement::paper_racquet(0.70, 0.25, 0.8)};
   no_hand.stiffness.fundamental_free_Hz = 150.0;
   no_hand.hand.mass_kg = 0.0;

@@ -48,7 +48,8 @@ TEST_CASE("The three implement forms agree where they describe the same body") {
 }
 
 TEST_CASE("Point masses add by the parallel-axis theorem, in any order") {
-  const MassProperties beam = Implement::from_sections({Section{0.72, 0.328, {}}}).mass_properties();
+  const MassProperties beam =
+      Implement::from_sections({Section{0.72, 0.328, {}}}).mass_properties();
   const MassProperties ab = with_point_mass(with_point_mass(beam, {0.1, 0.2}), {0.6, 0.05});
   const MassProperties ba = with_point_mass(with_point_mass(beam, {0.6, 0.05}), {0.1, 0.2});
   check_same_body(ab, ba);

@@ -1,10 +1,9 @@
 // Test problems with known optima, stated with their formula.
 #include "sweetspot/optimize.hpp"
 
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <string>
-
-#include <catch2/catch.hpp>
 
 namespace sweetspot {
 namespace {
@@ -105,7 +104,8 @@ TEST_CASE("Difference gradients match the analytic gradient, one-sided at a boun
   // f = sin(x) e^y, grad = (cos(x) e^y, sin(x) e^y).
   const auto f = [](std::span<const double> x) { return std::sin(x[0]) * std::exp(x[1]); };
   const std::vector<double> lower{-1, -1}, upper{1, 1};
-  for (const std::vector<double>& x : {std::vector<double>{0.3, -0.2}, std::vector<double>{1.0, -1.0}}) {
+  for (const std::vector<double>& x :
+       {std::vector<double>{0.3, -0.2}, std::vector<double>{1.0, -1.0}}) {
     std::vector<double> grad(2);
     difference_gradient(f, x, lower, upper, 1e-6, grad);
     // Central differences err by O(h^2) = 1e-12, one-sided by O(h) = 1e-6.
@@ -172,7 +172,9 @@ TEST_CASE("An evaluation budget of one evaluates the start and nothing else") {
   }
 }
 
-TEST_CASE("The violation history follows the best point: zero once feasible, its excess over tolerance when not") {
+TEST_CASE(
+    "The violation history follows the best point: zero once feasible, its excess over tolerance "
+    "when not") {
   // min x + y on the unit disc from (0.5, 0.5), which is feasible (0.5 <= 1).
   Problem disc;
   disc.lower = {-2, -2};
@@ -256,16 +258,21 @@ TEST_CASE("Bad problems and options are refused with the argument named") {
   Problem p = rosenbrock();
   OptimizeOptions options;
   options.algorithm = "LD_NONSENSE";
-  CHECK_THROWS_WITH(minimize(p, options), Catch::Contains("algorithm") && Catch::Contains("LD_NONSENSE"));
+  CHECK_THROWS_WITH(minimize(p, options),
+                    Catch::Contains("algorithm") && Catch::Contains("LD_NONSENSE"));
   p.start = {5.0, 0.0};
   CHECK_THROWS_WITH(minimize(p, OptimizeOptions{}), Catch::Contains("variables/0/start"));
   p = rosenbrock();
   p.lower[1] = 4.0;
-  CHECK_THROWS_WITH(minimize(p, OptimizeOptions{}), Catch::Contains("variables/1: min must be < max"));
+  CHECK_THROWS_WITH(minimize(p, OptimizeOptions{}),
+                    Catch::Contains("variables/1: min must be < max"));
   p = rosenbrock();
   p.constraints = {{"c", ConstraintKind::kAtMostZero, 1e-9}};
   options.algorithm = "LN_BOBYQA";  // bounds only
-  p.evaluate = [](std::span<const double>, double& f, std::span<double> c) { f = 0; c[0] = -1; };
+  p.evaluate = [](std::span<const double>, double& f, std::span<double> c) {
+    f = 0;
+    c[0] = -1;
+  };
   CHECK_THROWS_WITH(minimize(p, options), Catch::Contains("does not take nonlinear constraints"));
 }
 

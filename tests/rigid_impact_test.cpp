@@ -2,9 +2,8 @@
 // identities the equations must satisfy.
 #include "sweetspot/rigid_impact.hpp"
 
-#include <cmath>
-
 #include <catch2/catch.hpp>
+#include <cmath>
 
 #include "sweetspot/implement.hpp"
 
@@ -38,8 +37,10 @@ TEST_CASE("A free beam struck at one end rotates about a point 24 cm from the ot
 
 TEST_CASE("The free-beam COPs for axes through the disks at 2 and 16 cm are 23.3 and 14.4 cm") {
   const MassProperties beam = paper_beam().mass_properties();
-  CHECK(kBeamLength - *free_conjugate_from_butt(beam, 0.02) == Approx(0.233).margin(kHalfMillimetre));
-  CHECK(kBeamLength - *free_conjugate_from_butt(beam, 0.16) == Approx(0.144).margin(kHalfMillimetre));
+  CHECK(kBeamLength - *free_conjugate_from_butt(beam, 0.02) ==
+        Approx(0.233).margin(kHalfMillimetre));
+  CHECK(kBeamLength - *free_conjugate_from_butt(beam, 0.16) ==
+        Approx(0.144).margin(kHalfMillimetre));
 }
 
 TEST_CASE("Eq. 6 coefficients are 0.0787 and 0.0463 per cm and the ratio is 1 at the centre") {
@@ -111,7 +112,8 @@ TEST_CASE("No impact turns the hand-held beam about the point 16 cm from the han
 TEST_CASE("The wrist force vanishes exactly at the hand-held COP, where the axis is the wrist") {
   for (const double hand_kg : {0.0, 0.1, 0.4, 0.5, 2.0}) {
     for (const double forearm_kg : {1e-9, 0.4, 0.5, 1e9}) {
-      const MassProperties system = with_point_mass(paper_beam().mass_properties(), {0.07, hand_kg});
+      const MassProperties system =
+          with_point_mass(paper_beam().mass_properties(), {0.07, hand_kg});
       const double cop = *hand_held_cop_from_butt(system);
       CHECK(wrist_force_ratio(system, forearm_kg, cop) == 0.0);
       // Eq. (12) gives A = h there: the rotation axis is the wrist at the butt.
@@ -121,7 +123,9 @@ TEST_CASE("The wrist force vanishes exactly at the hand-held COP, where the axis
   }
 }
 
-TEST_CASE("The wrist force changes sign across the COP: tip-side impacts jerk the forearm towards the outgoing ball") {
+TEST_CASE(
+    "The wrist force changes sign across the COP: tip-side impacts jerk the forearm towards the "
+    "outgoing ball") {
   const MassProperties system = with_point_mass(paper_beam().mass_properties(), {0.07, 0.5});
   const double cop = *hand_held_cop_from_butt(system);
   CHECK(wrist_force_ratio(system, 0.5, cop + 0.05) > 0.0);
@@ -132,7 +136,8 @@ TEST_CASE("As the forearm mass goes to zero the hand-held axis tends to the free
   const MassProperties system = with_point_mass(paper_beam().mass_properties(), {0.07, 0.5});
   for (const double x : {0.05, 0.3, 0.5, 0.7}) {
     const double free_axis = *free_conjugate_from_butt(system, x);
-    CHECK(*hand_held_rotation_axis_from_butt(system, 0.0, x) == Approx(free_axis).margin(kRoundOff));
+    CHECK(*hand_held_rotation_axis_from_butt(system, 0.0, x) ==
+          Approx(free_axis).margin(kRoundOff));
     CHECK(*hand_held_rotation_axis_from_butt(system, 1e-9, x) == Approx(free_axis).margin(1e-6));
     CHECK(wrist_force_ratio(system, 0.0, x) == 0.0);
   }
@@ -145,7 +150,8 @@ TEST_CASE("As the forearm mass grows without bound the wrist becomes a fixed piv
   const double M = system.mass_kg, I = system.I_cm_kg_m2, h = system.com_from_butt_m;
   for (const double x : {0.1, 0.4, 0.7}) {
     const double b = x - h;
-    CHECK(wrist_force_ratio(system, 1e12, x) == Approx((M * b * h - I) / (M * h * h + I)).epsilon(1e-9));
+    CHECK(wrist_force_ratio(system, 1e12, x) ==
+          Approx((M * b * h - I) / (M * h * h + I)).epsilon(1e-9));
     CHECK(*hand_held_rotation_axis_from_butt(system, 1e12, x) == Approx(0.0).margin(1e-9));
   }
 }

@@ -3,10 +3,9 @@
 // bracketing root search.
 #include "sweetspot/string_bed.hpp"
 
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <numbers>
-
-#include <catch2/catch.hpp>
 
 #include "sweetspot/implement.hpp"
 #include "sweetspot/rigid_impact.hpp"
@@ -48,11 +47,13 @@ double stepped_contact_time(double m, double M, double k) {
   }
 }
 
-TEST_CASE("The contact time is pi sqrt(mu / k), as two masses and a spring integrated step by step") {
+TEST_CASE(
+    "The contact time is pi sqrt(mu / k), as two masses and a spring integrated step by step") {
   for (const double M : {0.05, 0.0710, 0.3, 1e3}) {
     for (const double k : {1e4, 2.4e4, 4e4}) {
       const double closed = spring_contact_duration(kBallMass, M, k);
-      CHECK(closed == Approx(kPi * std::sqrt(kBallMass * M / (kBallMass + M) / k)).epsilon(kRoundOff));
+      CHECK(closed ==
+            Approx(kPi * std::sqrt(kBallMass * M / (kBallMass + M) / k)).epsilon(kRoundOff));
       CHECK(stepped_contact_time(kBallMass, M, k) == Approx(closed).epsilon(kTimeStepping));
     }
   }
@@ -101,7 +102,8 @@ TEST_CASE("Tighter strings shorten the impact, down to the ball's own contact ti
     CHECK(T < previous);
     previous = T;
   }
-  CHECK(previous == Approx(spring_contact_duration(kBallMass, M, kTennisBallStiffness_N_m)).epsilon(1e-5));
+  CHECK(previous ==
+        Approx(spring_contact_duration(kBallMass, M, kTennisBallStiffness_N_m)).epsilon(1e-5));
 }
 
 TEST_CASE("The tension for a duration inverts the duration and agrees with a root search") {
@@ -143,8 +145,10 @@ TEST_CASE("Bad string beds and masses are refused with the field's name") {
   bed = StringBed{};
   bed.head_radius_m = 0.02;
   CHECK_THROWS_WITH(string_bed_stiffness(bed), Catch::Contains("bed.head_radius_m"));
-  CHECK_THROWS_WITH(tension_impact_duration(StringBed{}, 0.0, 0.07), Catch::Contains("ball_mass_kg"));
-  CHECK_THROWS_WITH(tension_for_duration(StringBed{}, 0.0, 0.057, 0.07), Catch::Contains("duration_s"));
+  CHECK_THROWS_WITH(tension_impact_duration(StringBed{}, 0.0, 0.07),
+                    Catch::Contains("ball_mass_kg"));
+  CHECK_THROWS_WITH(tension_for_duration(StringBed{}, 0.0, 0.057, 0.07),
+                    Catch::Contains("duration_s"));
   CHECK_THROWS_WITH(series_stiffness(4e4, 0.0), Catch::Contains("string_bed_stiffness_N_m"));
 }
 

@@ -1,6 +1,5 @@
 // Table I, top row, through the installed library: prints F0 and F_w.
 #include <cstdio>
-
 #include <sweetspot/evaluate.hpp>
 
 int main() {

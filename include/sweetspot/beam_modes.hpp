@@ -69,15 +69,15 @@ struct ModeOptions {
 
   int modes = 3;          // flexible modes wanted (rigid-body modes never count), in [1, kMaxModes]
                           // ([1, kMaxExactModes] for kExact)
-  double rel_tol = 1e-6;  // FE: target relative error of f1 when `elements` == 0, in [kMinRelTol, kMaxRelTol]
-                          // (round-off of the assembled stiffness floors FE near 1e-8).
+  double rel_tol = 1e-6;  // FE: target relative error of f1 when `elements` == 0, in [kMinRelTol,
+                          // kMaxRelTol] (round-off of the assembled stiffness floors FE near 1e-8).
                           // Sections far shorter than an element and unlike each other
                           // are resolved only on average: a few times rel_tol.
                           // The exact solver always refines roots to ~1e-12.
   Method method = Method::kExact;
   Theory theory = Theory::kEulerBernoulli;  // kTimoshenko needs kFiniteElement
-  int elements = 0;        // FE: total element count in [0, kMaxElements]; 0 = choose from rel_tol
-  int shape_samples = 0;   // points in ModalResult's shape table (0 = none, else >= 2)
+  int elements = 0;       // FE: total element count in [0, kMaxElements]; 0 = choose from rel_tol
+  int shape_samples = 0;  // points in ModalResult's shape table (0 = none, else >= 2)
   // One entry per section when theory == kTimoshenko, ignored otherwise.
   std::vector<TimoshenkoSection> timoshenko;
 
@@ -108,8 +108,8 @@ struct ModeOptions {
 struct ShapePiece {
   double start_m = 0.0;
   double end_m = 0.0;
-  double wavenumber_per_m = 0.0;           // beta >= 0
-  std::array<double, 4> derivatives{};     // w, w', w'', w''' at start_m
+  double wavenumber_per_m = 0.0;        // beta >= 0
+  std::array<double, 4> derivatives{};  // w, w', w'', w''' at start_m
 };
 
 struct Mode {
@@ -147,8 +147,8 @@ struct ModalResult {
   std::vector<Mode> modes;  // ascending frequency; fewer than asked if !complete
   ModeOptions::Method method = ModeOptions::Method::kExact;
   ModeOptions::Theory theory = ModeOptions::Theory::kEulerBernoulli;
-  int elements_used = 0;    // FE only
-  bool complete = true;     // false: fewer modes than asked, see message
+  int elements_used = 0;  // FE only
+  bool complete = true;   // false: fewer modes than asked, see message
   std::string message;
   // Plotting table (ModeOptions::shape_samples points, butt to tip):
   // shape_w[k][i] = w of modes[k] at shape_x_m[i].
@@ -164,8 +164,7 @@ struct ModalResult {
 // masses >= 0 within [0, L]. Throws std::invalid_argument naming the offending
 // argument (e.g. "sections[1].EI_N_m2") and its value, or for invalid options.
 ModalResult free_modes(const std::vector<Section>& sections,
-                       const std::vector<PointMass>& point_masses,
-                       const ModeOptions& options = {});
+                       const std::vector<PointMass>& point_masses, const ModeOptions& options = {});
 
 // The hand as a rigid body (Cross 2004 Sec. IV: "gripped firmly by one hand"),
 // joined to the handle over [grip_start_m, grip_start_m + grip_length_m] by a
@@ -173,11 +172,11 @@ ModalResult free_modes(const std::vector<Section>& sections,
 // displacement w(x) - u_h - phi_h (x - x_c), x_c the grip centre. The hand
 // translates (u_h) and rotates (phi_h); the arm is not modelled.
 struct HandCoupling {
-  double mass_kg = 0.5;        // M_h [kg], > 0 (Cross 2004 Sec. V uses 0.5 kg)
-  double grip_start_m = 0.02;  // [m] from the butt, >= 0
-  double grip_length_m = 0.10; // [m], > 0; default centre 0.07 m as in Cross 2004 Sec. V
-  double stiffness_N_m2 = 0.0; // k [N/m per m of grip], >= 0
-  double damping_N_s_m2 = 0.0; // c [N s/m per m of grip], >= 0
+  double mass_kg = 0.5;         // M_h [kg], > 0 (Cross 2004 Sec. V uses 0.5 kg)
+  double grip_start_m = 0.02;   // [m] from the butt, >= 0
+  double grip_length_m = 0.10;  // [m], > 0; default centre 0.07 m as in Cross 2004 Sec. V
+  double stiffness_N_m2 = 0.0;  // k [N/m per m of grip], >= 0
+  double damping_N_s_m2 = 0.0;  // c [N s/m per m of grip], >= 0
   // Rotary inertia about the grip centre [kg m^2], > 0; default M_h Lg^2 / 12
   // (the hand's mass spread evenly along the grip).
   std::optional<double> rotary_inertia_kg_m2;
@@ -206,8 +205,8 @@ HandCoupling calibrated_hand();
 // Throws std::invalid_argument as free_modes(), or for a grip outside the beam
 // or a negative k or c.
 ModalResult hand_held_modes(const std::vector<Section>& sections,
-                            const std::vector<PointMass>& point_masses,
-                            const HandCoupling& hand, const ModeOptions& options);
+                            const std::vector<PointMass>& point_masses, const HandCoupling& hand,
+                            const ModeOptions& options);
 
 // Copies of `sections` with every EI multiplied by one factor so that the free
 // fundamental equals `f1_Hz`. For Euler-Bernoulli f is proportional to sqrt(EI),

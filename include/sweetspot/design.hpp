@@ -23,9 +23,9 @@ inline constexpr double kMaxDuration_s = 10.0;
 // For the vibration modes it grips the handle over `grip_length_m` centred on
 // `center_from_butt_m` through a distributed spring and dashpot (beam_modes.hpp).
 struct Hand {
-  double mass_kg = 0.5;              // [kg], >= 0 (0: a free implement)
-  double center_from_butt_m = 0.07;  // [m], in [0, L]
-  double grip_length_m = 0.10;       // [m], > 0, the grip inside [0, L]
+  double mass_kg = 0.5;                                        // [kg], >= 0 (0: a free implement)
+  double center_from_butt_m = 0.07;                            // [m], in [0, L]
+  double grip_length_m = 0.10;                                 // [m], > 0, the grip inside [0, L]
   double grip_stiffness_N_m2 = kCalibratedGripStiffness_N_m2;  // [N/m per m], >= 0
   double grip_damping_N_s_m2 = kCalibratedGripDamping_N_s_m2;  // [N s/m per m], >= 0
 };
@@ -44,19 +44,19 @@ struct FrameStiffness {
 };
 
 struct Ball {
-  double mass_kg = 0.057;    // [kg], > 0 (a tennis ball)
-  double speed_m_s = 50.0;   // incident speed relative to the impact point [m/s], > 0
+  double mass_kg = 0.057;   // [kg], > 0 (a tennis ball)
+  double speed_m_s = 50.0;  // incident speed relative to the impact point [m/s], > 0
 };
 
 struct Design {
   Implement implement;
-  double cor = 0.8;                          // frame COR e at the impact point, in [0, 1]
-  double impact_duration_s = 0.004;          // T [s], > 0
+  double cor = 0.8;                  // frame COR e at the impact point, in [0, 1]
+  double impact_duration_s = 0.004;  // T [s], > 0
   Hand hand{};
-  double forearm_equivalent_mass_kg = 0.5;   // M_e = M_F / 3 at the wrist [kg], >= 0
+  double forearm_equivalent_mass_kg = 0.5;  // M_e = M_F / 3 at the wrist [kg], >= 0
   Ball ball{};
-  double impact_from_butt_m = 0.65;          // [m], in [0, L]
-  FrameStiffness stiffness{};                // for the modes only
+  double impact_from_butt_m = 0.65;  // [m], in [0, L]
+  FrameStiffness stiffness{};        // for the modes only
   // When given, the COR is derived (impact response): the COR the ball and
   // strings would have on a rigid frame, in [0, 1].
   std::optional<double> cor_rigid{};

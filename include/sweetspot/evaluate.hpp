@@ -20,30 +20,30 @@ struct Evaluation {
   double length_m = 0.0;
   double mass_kg = 0.0;
   double balance_from_butt_m = 0.0;
-  double I_cm_kg_m2 = 0.0;            // recoil weight, in SI
-  double swingweight_kg_m2 = 0.0;     // about the axis 10 cm from the butt
+  double I_cm_kg_m2 = 0.0;         // recoil weight, in SI
+  double swingweight_kg_m2 = 0.0;  // about the axis 10 cm from the butt
   double impact_from_butt_m = 0.0;
-  double impact_from_com_m = 0.0;     // b of Eq. (17)
+  double impact_from_com_m = 0.0;  // b of Eq. (17)
   // COP of the free implement for an axis through the butt (Eq. 5).
   std::optional<double> cop_free_from_butt_m;
   // Rotation axis of the free implement for this impact (Eq. 5).
   std::optional<double> rotation_axis_free_from_butt_m;
 
   // The ball on the strings, Section VI.
-  double effective_mass_kg = 0.0;     // Eq. (17)
-  double apparent_cor = 0.0;          // Eq. (16)
-  double rebound_speed_m_s = 0.0;     // e_A v1, away from the implement when > 0
-  double impulse_N_s = 0.0;           // m v1 (1 + e_A)
-  double peak_impact_force_N = 0.0;   // Eq. (15)
+  double effective_mass_kg = 0.0;    // Eq. (17)
+  double apparent_cor = 0.0;         // Eq. (16)
+  double rebound_speed_m_s = 0.0;    // e_A v1, away from the implement when > 0
+  double impulse_N_s = 0.0;          // m v1 (1 + e_A)
+  double peak_impact_force_N = 0.0;  // Eq. (15)
 
   // Implement and hand, Section V.
   double system_mass_kg = 0.0;
-  double system_com_from_butt_m = 0.0;   // h
+  double system_com_from_butt_m = 0.0;  // h
   double system_I_cm_kg_m2 = 0.0;
-  std::optional<double> cop_hand_from_butt_m;             // Eq. (13)
-  std::optional<double> rotation_axis_hand_from_butt_m;   // s = h - A, Eq. (12)
-  double wrist_force_ratio = 0.0;     // F_w / F, Eq. (11)
-  double peak_wrist_force_N = 0.0;    // |F_w / F| F0
+  std::optional<double> cop_hand_from_butt_m;            // Eq. (13)
+  std::optional<double> rotation_axis_hand_from_butt_m;  // s = h - A, Eq. (12)
+  double wrist_force_ratio = 0.0;                        // F_w / F, Eq. (11)
+  double peak_wrist_force_N = 0.0;                       // |F_w / F| F0
 
   // The flexible frame, when evaluated with Fidelity::kModal or kResponse.
   std::optional<ModalOutputs> modal;
@@ -77,7 +77,8 @@ enum class Fidelity { kRigid, kModal, kResponse };
 
 // Every name a fidelity is asked by: the three levels and "auto" (the
 // cheapest that answers the design, needed_fidelity).
-inline constexpr std::array<std::string_view, 4> kFidelityNames{"rigid", "modal", "response", "auto"};
+inline constexpr std::array<std::string_view, 4> kFidelityNames{"rigid", "modal", "response",
+                                                                "auto"};
 
 // "rigid", "modal" or "response".
 std::string_view to_string(Fidelity fidelity);

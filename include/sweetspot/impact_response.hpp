@@ -101,10 +101,10 @@ ModalState half_sine_modal_response(double omega_rad_s, double damping_ratio,
 
 // One vibration mode prepared for modal superposition.
 struct ResponseMode {
-  Mode mode;                               // shape as beam_modes reports it
-  double shape_to_mass_normalised = 0.0;   // phi(x) = this * mode_shape_at(mode, x) [kg^-1/2]
-  double omega_rad_s = 0.0;                // undamped w [rad/s], > 0
-  double damping_ratio = 0.0;              // z, in [0, 1)
+  Mode mode;                              // shape as beam_modes reports it
+  double shape_to_mass_normalised = 0.0;  // phi(x) = this * mode_shape_at(mode, x) [kg^-1/2]
+  double omega_rad_s = 0.0;               // undamped w [rad/s], > 0
+  double damping_ratio = 0.0;             // z, in [0, 1)
 };
 
 // Mass-normalised shape phi_k(x) [kg^-1/2]. Throws std::invalid_argument if x
@@ -148,9 +148,10 @@ ResponseModel with_fundamental(const ResponseModel& model, double f1_Hz);
 struct ResponseOptions {
   enum class Support { kFree, kHandHeld };
   Support support = Support::kFree;
-  int modes = 6;                   // flexible modes (hand-held: including the hand's), in [1, kMaxModes]
-  double free_damping_ratio = 0.0; // z of every free mode, in [0, 1)
-  double rel_tol = 1e-6;           // FE (hand-held, Timoshenko): relative error of f1, in [kMinRelTol, kMaxRelTol]
+  int modes = 6;  // flexible modes (hand-held: including the hand's), in [1, kMaxModes]
+  double free_damping_ratio = 0.0;  // z of every free mode, in [0, 1)
+  double rel_tol =
+      1e-6;  // FE (hand-held, Timoshenko): relative error of f1, in [kMinRelTol, kMaxRelTol]
 
   // Empty if consistent, otherwise the first problem, naming the field and value.
   std::string validate() const;
@@ -167,9 +168,9 @@ ResponseModel response_model(const Design& design, const ResponseOptions& option
 
 struct PointVelocity {
   double from_butt_m = 0.0;
-  std::vector<double> dc_m_s;                  // rigid-body part at each time [m/s]
-  std::vector<double> ac_m_s;                  // vibration part, sum of the modes [m/s]
-  std::vector<std::vector<double>> mode_m_s;   // mode_m_s[k][i]: mode k's share [m/s]
+  std::vector<double> dc_m_s;                 // rigid-body part at each time [m/s]
+  std::vector<double> ac_m_s;                 // vibration part, sum of the modes [m/s]
+  std::vector<std::vector<double>> mode_m_s;  // mode_m_s[k][i]: mode k's share [m/s]
 };
 
 struct ModeExcitation {
@@ -181,11 +182,11 @@ struct ModeExcitation {
 
 struct ImpactResponse {
   std::vector<double> time_s;
-  std::vector<PointVelocity> points;   // in the order asked
-  std::vector<ModeExcitation> modes;   // as model.modes
-  double impulse_N_s = 0.0;            // 2 F0 T / pi
-  double rigid_kinetic_energy_J = 0.0; // J^2 / (2 M_eff), Eq. (17) for model.rigid_body
-  double vibration_energy_J = 0.0;     // sum of energy_after_J
+  std::vector<PointVelocity> points;    // in the order asked
+  std::vector<ModeExcitation> modes;    // as model.modes
+  double impulse_N_s = 0.0;             // 2 F0 T / pi
+  double rigid_kinetic_energy_J = 0.0;  // J^2 / (2 M_eff), Eq. (17) for model.rigid_body
+  double vibration_energy_J = 0.0;      // sum of energy_after_J
 };
 
 // Velocities of `points_from_butt_m` at `time_s` (any order, t < 0 at rest)
@@ -205,8 +206,8 @@ double vibration_compliance(const ResponseModel& model, double impact_from_butt_
                             double duration_s);
 
 // The same per mode: kappa_k = phi_k(x_F)^2 R_k(T) [kg^-1], as model.modes.
-std::vector<double> vibration_compliance_per_mode(const ResponseModel& model, double impact_from_butt_m,
-                                                  double duration_s);
+std::vector<double> vibration_compliance_per_mode(const ResponseModel& model,
+                                                  double impact_from_butt_m, double duration_s);
 
 // ------------------------------------------------------------ derived COR
 
@@ -241,19 +242,19 @@ std::vector<double> vibration_compliance_per_mode(const ResponseModel& model, do
 // real force would soften and lengthen instead, which this model does not
 // describe, so derive_cor refuses rather than report energy from nowhere.
 struct DerivedCor {
-  double cor = 0.0;                  // e
-  double cor_rigid = 0.0;            // e_r
-  double apparent_cor = 0.0;         // e_A, Eq. (16)
-  double effective_mass_kg = 0.0;    // M_eff, Eq. (17)
-  double reduced_mass_kg = 0.0;      // mu
+  double cor = 0.0;                          // e
+  double cor_rigid = 0.0;                    // e_r
+  double apparent_cor = 0.0;                 // e_A, Eq. (16)
+  double effective_mass_kg = 0.0;            // M_eff, Eq. (17)
+  double reduced_mass_kg = 0.0;              // mu
   double vibration_compliance_per_kg = 0.0;  // kappa
-  HalfSinePulse pulse;               // F0 of Eq. (15) with e_A, the given T
-  double impulse_N_s = 0.0;          // J = m v1 (1 + e_A)
-  double collision_energy_J = 0.0;   // 1/2 m v1^2, the ball's incident kinetic energy
-  double vibration_energy_J = 0.0;   // J^2 kappa / 2
-  double vibration_share = 0.0;      // vibration_energy_J / collision_energy_J
-  double rigid_loss_J = 0.0;         // 1/2 mu v1^2 (1 - e_r^2)
-  std::vector<double> mode_energy_J; // per model.modes
+  HalfSinePulse pulse;                       // F0 of Eq. (15) with e_A, the given T
+  double impulse_N_s = 0.0;                  // J = m v1 (1 + e_A)
+  double collision_energy_J = 0.0;           // 1/2 m v1^2, the ball's incident kinetic energy
+  double vibration_energy_J = 0.0;           // J^2 kappa / 2
+  double vibration_share = 0.0;              // vibration_energy_J / collision_energy_J
+  double rigid_loss_J = 0.0;                 // 1/2 mu v1^2 (1 - e_r^2)
+  std::vector<double> mode_energy_J;         // per model.modes
 };
 
 // Throws std::invalid_argument for cor_rigid outside [0, 1], a ball mass or

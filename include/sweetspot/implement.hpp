@@ -39,14 +39,12 @@ class Implement {
 
   // Cross (2004) Table I racquet: two halves of equal length, each uniform,
   // head mass M1 and handle mass M2 with M1/M2 = head_to_handle_mass_ratio (> 0).
-  static Implement paper_racquet(double length_m, double mass_kg,
-                                 double head_to_handle_mass_ratio,
+  static Implement paper_racquet(double length_m, double mass_kg, double head_to_handle_mass_ratio,
                                  std::vector<PointMass> point_masses = {});
 
   // Measured specs. The swingweight must be physically possible for a body of
   // that length: M (B - 0.1)^2 < SW <= M (B - 0.1)^2 + M B (L - B).
-  static Implement from_specs(const IndustrySpecs& specs,
-                              std::vector<PointMass> point_masses = {});
+  static Implement from_specs(const IndustrySpecs& specs, std::vector<PointMass> point_masses = {});
 
   double length_m() const { return length_m_; }
 

@@ -55,7 +55,7 @@ struct OptimizeOptions {
   double f_tolerance_rel = 1e-10;  // stop when the objective changes this little
   int max_evaluations = 5000;      // evaluations of Problem::evaluate, including differences
   double max_seconds = 60.0;
-  unsigned long seed = 1;          // for stochastic algorithms and "auto"'s samples
+  unsigned long seed = 1;  // for stochastic algorithms and "auto"'s samples
   // Central differences step, relative to each variable's range.
   double difference_step_rel = 1e-6;
   // "auto": the most samples per variable in the global check, and the most
@@ -68,14 +68,14 @@ struct OptimizeOptions {
 };
 
 struct Summary {
-  std::vector<double> x;          // best point found
+  std::vector<double> x;  // best point found
   double objective = 0.0;
   std::vector<double> constraints;  // values at x
-  bool feasible = false;          // every constraint within its tolerance at x
+  bool feasible = false;            // every constraint within its tolerance at x
   int evaluations = 0;
   double seconds = 0.0;
-  std::string algorithm;          // what ran, e.g. "samples(16) + LD_SLSQP x3"
-  std::string termination;        // NLopt's reason of the last stage, e.g. "XTOL_REACHED"
+  std::string algorithm;    // what ran, e.g. "samples(16) + LD_SLSQP x3"
+  std::string termination;  // NLopt's reason of the last stage, e.g. "XTOL_REACHED"
   // Objective of the best point after each evaluation, feasible points ranking
   // before infeasible ones (which rank by their constraint violation).
   std::vector<double> history;

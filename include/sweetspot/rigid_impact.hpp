@@ -19,7 +19,7 @@ namespace sweetspot {
 
 // Motion of a free body per unit transverse impulse at `impact_from_butt_m`.
 struct RigidKick {
-  double com_velocity_per_impulse = 0.0;  // V_cm / J  [m s^-1 per N s]
+  double com_velocity_per_impulse = 0.0;      // V_cm / J  [m s^-1 per N s]
   double angular_velocity_per_impulse = 0.0;  // omega / J [rad s^-1 per N s], positive when
                                               // the tip side moves with the impulse
 };
@@ -111,13 +111,13 @@ double peak_impact_force(double ball_mass_kg, double ball_speed_m_s, double appa
 // the hand, the forearm, the ball, the frame's COR, the impact duration and the
 // impact point. Plain data (88 bytes); a Design makes one with rigid_case().
 struct RigidCase {
-  MassProperties body;                       // the implement with its point masses
-  PointMass hand;                            // the hand's mass at its centre
-  double forearm_equivalent_mass_kg = 0.0;   // M_e, Eq. (7)
+  MassProperties body;                      // the implement with its point masses
+  PointMass hand;                           // the hand's mass at its centre
+  double forearm_equivalent_mass_kg = 0.0;  // M_e, Eq. (7)
   double ball_mass_kg = 0.0;
   double ball_speed_m_s = 0.0;
-  double cor = 0.0;                          // e of Eq. (16)
-  double impact_duration_s = 0.0;            // T of Eq. (15), > 0
+  double cor = 0.0;                // e of Eq. (16)
+  double impact_duration_s = 0.0;  // T of Eq. (15), > 0
   double impact_from_butt_m = 0.0;
 };
 

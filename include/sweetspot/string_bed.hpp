@@ -44,10 +44,12 @@ inline constexpr double kTennisBallStiffness_N_m = 40.0e3;
 
 // A string bed. Defaults: a 100 in^2 (0.0645 m^2) head strung 16 x 19.
 struct StringBed {
-  double tension_N = 250.0;          // T_s, tension of each string [N], > 0 (the JSON layer converts lb, kg)
-  double string_spacing_m = 0.0165;  // d, mean centre-to-centre spacing of mains and crosses [m], > 0
-  double head_radius_m = 0.1433;     // R = sqrt(area / pi) [m], > contact_radius_m
-  double contact_radius_m = 0.03;    // r0, radius of the ball's contact on the strings [m], > 0
+  double tension_N =
+      250.0;  // T_s, tension of each string [N], > 0 (the JSON layer converts lb, kg)
+  double string_spacing_m =
+      0.0165;                      // d, mean centre-to-centre spacing of mains and crosses [m], > 0
+  double head_radius_m = 0.1433;   // R = sqrt(area / pi) [m], > contact_radius_m
+  double contact_radius_m = 0.03;  // r0, radius of the ball's contact on the strings [m], > 0
 
   // Empty if consistent, otherwise the first problem, naming the field and value.
   std::string validate() const;

@@ -53,8 +53,8 @@ std::optional<DampedPair> refine_damped_pair(QuadraticPencil& t, Complex s, Vect
 
 std::optional<std::vector<DampedPair>> refine_estimates(QuadraticPencil& pencil, const Mesh& coarse,
                                                         const Mesh& mesh, int size,
-                                                        const std::vector<DampedPair>& guesses, int count,
-                                                        std::string* why) {
+                                                        const std::vector<DampedPair>& guesses,
+                                                        int count, std::string* why) {
   std::vector<DampedPair> out;
   for (int k = 0; k < count; ++k) {
     const Complex s0 = guesses[k].s;

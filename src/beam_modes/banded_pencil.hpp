@@ -51,8 +51,8 @@ class QuadraticPencil {
       }
     }
     rows.head(n_) += border_[m].cwiseAbs().rowwise().sum();
-    rows.tail(2) += border_[m].cwiseAbs().colwise().sum().transpose() +
-                    corner_[m].cwiseAbs().rowwise().sum();
+    rows.tail(2) +=
+        border_[m].cwiseAbs().colwise().sum().transpose() + corner_[m].cwiseAbs().rowwise().sum();
     return rows.maxCoeff();
   }
 
@@ -182,7 +182,7 @@ std::optional<DampedPair> refine_damped_pair(QuadraticPencil& t, Complex s, Vect
 // its nearest neighbour (or its conjugate root); else empty with a reason.
 std::optional<std::vector<DampedPair>> refine_estimates(QuadraticPencil& pencil, const Mesh& coarse,
                                                         const Mesh& mesh, int size,
-                                                        const std::vector<DampedPair>& guesses, int count,
-                                                        std::string* why);
+                                                        const std::vector<DampedPair>& guesses,
+                                                        int count, std::string* why);
 
 }  // namespace sweetspot::beam_detail

@@ -41,7 +41,9 @@ std::string ModeOptions::validate() const {
     return bad("modes", "in [1, " + std::to_string(max_modes) + "]", modes);
   }
   if (!(rel_tol >= kMinRelTol && rel_tol <= kMaxRelTol)) {
-    return bad("rel_tol", "in [" + format_number(kMinRelTol) + ", " + format_number(kMaxRelTol) + "]", rel_tol);
+    return bad("rel_tol",
+               "in [" + format_number(kMinRelTol) + ", " + format_number(kMaxRelTol) + "]",
+               rel_tol);
   }
   if (elements < 0 || elements > kMaxElements) {
     return bad("elements", "in [0, " + std::to_string(kMaxElements) + "]", elements);
@@ -56,7 +58,8 @@ std::string ModeOptions::validate() const {
     for (std::size_t i = 0; i < timoshenko.size(); ++i) {
       const TimoshenkoSection& t = timoshenko[i];
       if (!(t.shear_stiffness_N > 0.0 && std::isfinite(t.shear_stiffness_N))) {
-        return bad(detail::indexed("timoshenko", i, "shear_stiffness_N"), "> 0 N", t.shear_stiffness_N);
+        return bad(detail::indexed("timoshenko", i, "shear_stiffness_N"), "> 0 N",
+                   t.shear_stiffness_N);
       }
       if (!(t.radius_of_gyration_m >= 0.0 && std::isfinite(t.radius_of_gyration_m))) {
         return bad(detail::indexed("timoshenko", i, "radius_of_gyration_m"), ">= 0 m",
@@ -71,7 +74,8 @@ double mode_shape_at(const Mode& mode, double x_m) {
   if (mode.shape.empty()) throw std::invalid_argument("mode: has no shape");
   const double length = mode.shape.back().end_m;
   const double eps = 1e-12 * length;
-  if (!(x_m >= -eps && x_m <= length + eps)) fail("x_m", "in [0, " + format_number(length) + "] m", x_m);
+  if (!(x_m >= -eps && x_m <= length + eps))
+    fail("x_m", "in [0, " + format_number(length) + "] m", x_m);
   auto it = std::upper_bound(mode.shape.begin(), mode.shape.end(), x_m,
                              [](double x, const ShapePiece& p) { return x < p.end_m; });
   if (it == mode.shape.end()) --it;
@@ -98,9 +102,8 @@ BeamMatrices assemble_beam_matrices(const std::vector<Section>& sections,
   detail::validate_point_masses(point_masses, length);
   validate_options(options, sections.size());
   if (hand) validate_hand(*hand, length);
-  const Segmentation seg =
-      hand ? hand_segmentation(sections, point_masses, *hand, options)
-           : segment(sections, point_masses, {}, timoshenko_of(options));
+  const Segmentation seg = hand ? hand_segmentation(sections, point_masses, *hand, options)
+                                : segment(sections, point_masses, {}, timoshenko_of(options));
   const Mesh mesh = build_mesh(seg, element_counts(seg, options), options);
   const Assembled a = assemble(mesh, hand ? &*hand : nullptr);
   BeamMatrices out;
@@ -125,7 +128,8 @@ ModalResult hand_held_modes(const std::vector<Section>& sections,
   detail::validate_point_masses(point_masses, length);
   validate_options(options, sections.size());
   if (options.method != ModeOptions::Method::kFiniteElement) {
-    throw std::invalid_argument("options.method: the hand-held beam needs kFiniteElement, got kExact");
+    throw std::invalid_argument(
+        "options.method: the hand-held beam needs kFiniteElement, got kExact");
   }
   validate_hand(hand, length);
 
@@ -146,8 +150,8 @@ ModalResult hand_held_modes(const std::vector<Section>& sections,
     if (coarse.elements.size() < mesh.elements.size()) {
       spectrum = refined_damped_spectrum(mesh, a, hand, options, coarse, &why);
     }
-    how = spectrum ? "quadratic eigenproblem refined from a " + std::to_string(coarse.elements.size()) +
-                         "-element state-space solve"
+    how = spectrum ? "quadratic eigenproblem refined from a " +
+                         std::to_string(coarse.elements.size()) + "-element state-space solve"
                    : "dense state-space eigenproblem (refinement skipped: " + why + ")";
   } else {
     how = "dense state-space eigenproblem";
@@ -204,6 +208,5 @@ double uniform_EI_for_fundamental(const std::vector<Section>& sections,
   const double ratio = f1_Hz / r.modes[0].frequency_Hz;
   return ratio * ratio;
 }
-
 
 }  // namespace sweetspot

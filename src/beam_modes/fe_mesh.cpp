@@ -1,12 +1,11 @@
 #include "beam_modes/fe_mesh.hpp"
 
+#include <Eigen/QR>
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <string>
-
-#include <Eigen/QR>
 
 #include "beam_modes/free_fe.hpp"
 #include "beam_modes/shapes.hpp"
@@ -80,21 +79,23 @@ void merge_tiny_elements(Mesh& mesh) {
           detail::format_number(mesh.elements[tiny].h) + " m at " +
           detail::format_number(mesh.elements[tiny].x0) + " m from the butt, with EI " +
           detail::format_number(p.EI) +
-          " N m^2 unlike its neighbours', is too short for finite elements to resolve (the hand-held "
+          " N m^2 unlike its neighbours', is too short for finite elements to resolve (the "
+          "hand-held "
           "modes always use them); lengthen it or give it its neighbours' EI");
     }
-    const bool into_left =
-        error_left < error_right ||
-        (error_left == error_right && tiny > 0 && phases[tiny - 1] >= phases[tiny + 1]);
+    const bool into_left = error_left < error_right || (error_left == error_right && tiny > 0 &&
+                                                        phases[tiny - 1] >= phases[tiny + 1]);
     const std::size_t left = into_left ? tiny - 1 : tiny;
     const Element& a = mesh.elements[left];
     const Element& b = mesh.elements[left + 1];
     Element merged(a.x0, a.h + b.h, a.EI, a.mu, 0.0, 0.0);
     merged.pieces = a.pieces;
     merged.masses = a.masses;
-    for (const ElementPiece& p : b.pieces) merged.pieces.push_back({p.s + a.h, p.e + a.h, p.EI, p.mu, p.section});
+    for (const ElementPiece& p : b.pieces)
+      merged.pieces.push_back({p.s + a.h, p.e + a.h, p.EI, p.mu, p.section});
     merged.pieces.back().e = merged.h;
-    if (mesh.nodal_mass_kg[left + 1] > 0.0) merged.masses.emplace_back(a.h, mesh.nodal_mass_kg[left + 1]);
+    if (mesh.nodal_mass_kg[left + 1] > 0.0)
+      merged.masses.emplace_back(a.h, mesh.nodal_mass_kg[left + 1]);
     for (const auto& [xi, kg] : b.masses) merged.masses.emplace_back(xi + a.h, kg);
     phases[left] += phases[left + 1];
     phases.erase(phases.begin() + static_cast<std::ptrdiff_t>(left) + 1);
@@ -122,13 +123,15 @@ Mesh build_mesh(const Segmentation& seg, const std::vector<int>& counts,
       if (i == group) mesh.nodal_mass_kg.back() += s.mass_at_start_kg;
       if (counts[i] == 0) continue;
       const Segment& first = seg.segments[group];
-      Element element(first.start_m, s.start_m + s.length_m - first.start_m, first.EI_N_m2, first.mu_kg_m, 0.0, 0.0);
+      Element element(first.start_m, s.start_m + s.length_m - first.start_m, first.EI_N_m2,
+                      first.mu_kg_m, 0.0, 0.0);
       element.pieces.clear();
       for (std::size_t j = group; j <= i; ++j) {
         const Segment& p = seg.segments[j];
-        element.pieces.push_back({p.start_m - first.start_m, p.start_m + p.length_m - first.start_m, p.EI_N_m2,
-                                  p.mu_kg_m, p.section});
-        if (j > group && p.mass_at_start_kg > 0.0) element.masses.emplace_back(p.start_m - first.start_m, p.mass_at_start_kg);
+        element.pieces.push_back({p.start_m - first.start_m, p.start_m + p.length_m - first.start_m,
+                                  p.EI_N_m2, p.mu_kg_m, p.section});
+        if (j > group && p.mass_at_start_kg > 0.0)
+          element.masses.emplace_back(p.start_m - first.start_m, p.mass_at_start_kg);
       }
       element.pieces.back().e = element.h;
       mesh.elements.push_back(std::move(element));
@@ -207,12 +210,12 @@ Assembled assemble(const Mesh& mesh, const HandCoupling* hand) {
       add(out.C, hand->damping_N_s_m2);
     }
   }
-  for (std::size_t i = 0; i < mesh.nodes_m.size(); ++i) out.M(2 * i, 2 * i) += mesh.nodal_mass_kg[i];
+  for (std::size_t i = 0; i < mesh.nodes_m.size(); ++i)
+    out.M(2 * i, 2 * i) += mesh.nodal_mass_kg[i];
   if (hand) {
     out.M(beam_dofs, beam_dofs) = hand->mass_kg;
-    out.M(beam_dofs + 1, beam_dofs + 1) =
-        hand->rotary_inertia_kg_m2.value_or(hand->mass_kg * hand->grip_length_m *
-                                            hand->grip_length_m / 12.0);
+    out.M(beam_dofs + 1, beam_dofs + 1) = hand->rotary_inertia_kg_m2.value_or(
+        hand->mass_kg * hand->grip_length_m * hand->grip_length_m / 12.0);
   }
   return out;
 }
@@ -249,7 +252,7 @@ std::vector<int> counts_for(const Segmentation& seg, double per_phase_weight) {
   const bool group = seg.groupable && seg.segments.size() > kMaxFollowedSegments;
   std::vector<int> counts;
   counts.reserve(seg.segments.size());
-  double open = 0.0;  // elements asked for by the open run, < 1
+  double open = 0.0;                           // elements asked for by the open run, < 1
   std::size_t last_close = std::string::npos;  // the run's last closed element
   // Ends a run: a remainder asking for under half an element joins the run's
   // previous element rather than make a sliver.
@@ -293,8 +296,7 @@ std::vector<int> element_counts(const Segmentation& seg, const ModeOptions& opti
   const std::vector<int> coarse_counts = counts_for(seg, 2.0 * 4.73 / weight);
   const Mesh mesh = build_mesh(seg, coarse_counts, coarse);
   const double omega1 = std::sqrt(std::max(lowest_free_omega2(mesh), 0.0));
-  const double beta_h =
-      std::pow(kHermiteErrorConstant * kToleranceSafety * options.rel_tol, 0.25);
+  const double beta_h = std::pow(kHermiteErrorConstant * kToleranceSafety * options.rel_tol, 0.25);
   std::vector<int> counts = counts_for(seg, std::sqrt(omega1) / beta_h);
   int total = 0;
   for (int c : counts) total += c;
@@ -309,8 +311,9 @@ int total_elements(const std::vector<int>& counts) {
 }
 
 Mesh coarse_mesh(const Segmentation& seg, const ModeOptions& options) {
-  return build_mesh(seg, counts_for(seg, (options.modes + 0.5) * kPi / (kCoarseBetaH * total_phase_weight(seg))),
-                    options);
+  return build_mesh(
+      seg, counts_for(seg, (options.modes + 0.5) * kPi / (kCoarseBetaH * total_phase_weight(seg))),
+      options);
 }
 
 VectorXcd interpolate_dofs(const Mesh& coarse, const VectorXcd& q, const Mesh& fine,

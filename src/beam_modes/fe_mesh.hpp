@@ -4,11 +4,10 @@
 // Timoshenko), the mesh over the segments and the assembled matrices.
 // Internal to the beam-mode solvers.
 
+#include <Eigen/Dense>
 #include <complex>
 #include <utility>
 #include <vector>
-
-#include <Eigen/Dense>
 
 #include "beam_modes/segmentation.hpp"
 
@@ -63,9 +62,9 @@ struct Element {
   Element(double x0_, double h_, double EI_, double mu_, double rotary_, double g_)
       : x0(x0_), h(h_), EI(EI_), mu(mu_), rotary(rotary_), g(g_), pieces{{0.0, h_, EI_, mu_}} {
     Matrix4d c;
-    c << 1, 0, 0, 0,                              //
-        0, 1, 0, 6 * g,                           //
-        1, h, h * h, h * h * h,                   //
+    c << 1, 0, 0, 0,             //
+        0, 1, 0, 6 * g,          //
+        1, h, h * h, h * h * h,  //
         0, 1, 2 * h, 3 * h * h + 6 * g;
     c_inv = c.inverse();
   }
@@ -87,8 +86,9 @@ struct Element {
       ka(3, 3) = 12 * h * h * h + 36 * g * h;
       return c_inv.transpose() * (EI * ka) * c_inv;
     }
-    const bool one_EI = std::all_of(pieces.begin(), pieces.end(),
-                                    [&](const ElementPiece& p) { return p.EI == pieces.front().EI; });
+    const bool one_EI = std::all_of(pieces.begin(), pieces.end(), [&](const ElementPiece& p) {
+      return p.EI == pieces.front().EI;
+    });
     if (!one_EI && g == 0.0) return flexibility_stiffness();
     for (const ElementPiece& p : pieces) {
       ka(2, 2) += 4 * p.EI * moment_over(0, p.s, p.e);
@@ -127,7 +127,8 @@ struct Element {
   Matrix4d gram(double s, double e) const {
     Matrix4d ga;
     for (int i = 0; i < 4; ++i)
-      for (int j = 0; j < 4; ++j) ga(i, j) = s == 0.0 && e == h ? moment(i + j) : moment_over(i + j, s, e);
+      for (int j = 0; j < 4; ++j)
+        ga(i, j) = s == 0.0 && e == h ? moment(i + j) : moment_over(i + j, s, e);
     return c_inv.transpose() * ga * c_inv;
   }
 
@@ -150,8 +151,7 @@ struct Element {
     }
     if (rotary > 0.0) {
       // theta = (0, 1, 2 xi, 3 xi^2 + 6 g) . a
-      const double I0 = moment(0), I1 = moment(1), I2 = moment(2), I3 = moment(3),
-                   I4 = moment(4);
+      const double I0 = moment(0), I1 = moment(1), I2 = moment(2), I3 = moment(3), I4 = moment(4);
       Matrix4d ta = Matrix4d::Zero();
       ta(1, 1) = I0;
       ta(1, 2) = ta(2, 1) = 2 * I1;
@@ -197,7 +197,8 @@ struct Assembled {
 };
 
 // The mesh of `counts` elements per segment (counts_for), tiny elements merged.
-Mesh build_mesh(const Segmentation& seg, const std::vector<int>& counts, const ModeOptions& options);
+Mesh build_mesh(const Segmentation& seg, const std::vector<int>& counts,
+                const ModeOptions& options);
 
 // K, M and C (grip dashpots) of the mesh, dense; the hand's two DOFs last.
 Assembled assemble(const Mesh& mesh, const HandCoupling* hand);
@@ -246,7 +247,6 @@ Mesh coarse_mesh(const Segmentation& seg, const ModeOptions& options);
 
 // Coarse DOFs carried to the nodes of `fine` through the coarse elements'
 // interpolation (w and theta of the cubic), hand DOFs as they are.
-VectorXcd interpolate_dofs(const Mesh& coarse, const VectorXcd& q, const Mesh& fine,
-                           int fine_size);
+VectorXcd interpolate_dofs(const Mesh& coarse, const VectorXcd& q, const Mesh& fine, int fine_size);
 
 }  // namespace sweetspot::beam_detail

@@ -1,9 +1,8 @@
 #include "beam_modes/free_fe.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
-
-#include <Eigen/Eigenvalues>
 
 #include "beam_modes/banded_pencil.hpp"
 #include "beam_modes/shapes.hpp"
@@ -16,8 +15,10 @@ namespace {
 // each refined on the full one with the banded solver of the hand-held modes.
 constexpr int kDenseFreeElements = 256;
 
-std::optional<std::pair<VectorXd, MatrixXd>> refined_free_spectrum(const Mesh& mesh, const ModeOptions& options,
-                                                                   const Mesh& coarse, std::string* why) {
+std::optional<std::pair<VectorXd, MatrixXd>> refined_free_spectrum(const Mesh& mesh,
+                                                                   const ModeOptions& options,
+                                                                   const Mesh& coarse,
+                                                                   std::string* why) {
   const auto [coarse_omega2, coarse_vectors] = free_spectrum(coarse);
   if (coarse_omega2.size() <= options.modes) {
     *why = "coarse mesh has too few modes";
@@ -107,7 +108,8 @@ std::pair<Mode, double> fe_mode(const Mesh& mesh, const VectorXd& q, double omeg
   return {std::move(mode), scale};
 }
 
-RootCount missed_roots(const Segmentation& seg, const ModalResult& found, int wanted, double rel_tol) {
+RootCount missed_roots(const Segmentation& seg, const ModalResult& found, int wanted,
+                       double rel_tol) {
   for (const Segment& s : seg.segments) {
     if (!(s.mu_kg_m > 0.0)) return {};
   }
@@ -124,8 +126,9 @@ RootCount missed_roots(const Segmentation& seg, const ModalResult& found, int wa
   const int k_wanted = std::max(0, std::min(wanted, static_cast<int>(omega2.size())) - 1);
   const double omega_wanted = std::sqrt(std::max(omega2(k_wanted), 0.0));
   const double beta_h = std::pow(kHermiteErrorConstant * kToleranceSafety * rel_tol, 0.25);
-  return {std::max(0, count - (static_cast<int>(found.modes.size()) - 1)),
-          std::min(kMaxElements, total_elements(counts_for(seg, std::sqrt(omega_wanted) / beta_h)))};
+  return {
+      std::max(0, count - (static_cast<int>(found.modes.size()) - 1)),
+      std::min(kMaxElements, total_elements(counts_for(seg, std::sqrt(omega_wanted) / beta_h)))};
 }
 
 ModalResult fe_free_modes(const Segmentation& seg, const ModeOptions& options) {
@@ -141,8 +144,8 @@ ModalResult fe_free_modes(const Segmentation& seg, const ModeOptions& options) {
     const Mesh coarse = coarse_mesh(seg, options);
     std::string why;
     spectrum = refined_free_spectrum(mesh, options, coarse, &why);
-    result.message += spectrum ? ", each mode refined from a " + std::to_string(coarse.elements.size()) +
-                                     "-element solve"
+    result.message += spectrum ? ", each mode refined from a " +
+                                     std::to_string(coarse.elements.size()) + "-element solve"
                                : ", dense (refinement skipped: " + why + ")";
   }
   if (!spectrum) spectrum = free_spectrum(mesh);

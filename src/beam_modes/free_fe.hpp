@@ -30,7 +30,8 @@ struct RootCount {
   int missed = 0;
   int elements = 0;
 };
-RootCount missed_roots(const Segmentation& seg, const ModalResult& found, int wanted, double rel_tol);
+RootCount missed_roots(const Segmentation& seg, const ModalResult& found, int wanted,
+                       double rel_tol);
 
 // The free modes by finite elements (options.method is kFiniteElement).
 ModalResult fe_free_modes(const Segmentation& seg, const ModeOptions& options);

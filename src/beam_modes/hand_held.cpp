@@ -1,10 +1,9 @@
 #include "beam_modes/hand_held.hpp"
 
-#include <algorithm>
-#include <cmath>
-
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
 
 #include "beam_modes/free_fe.hpp"
 #include "beam_modes/shapes.hpp"
@@ -129,13 +128,13 @@ Mode damped_mode(const Mesh& mesh, const Assembled& a, Complex s, VectorXcd q) {
   mode.complexity = std::sqrt(im2 / re2);
   mode.hand_displacement = scale * re(a.beam_dofs);
   const int u = a.beam_dofs;
-  mode.hand_energy_fraction =
-      a.M(u, u) * re(u) * re(u) + a.M(u + 1, u + 1) * re(u + 1) * re(u + 1);
+  mode.hand_energy_fraction = a.M(u, u) * re(u) * re(u) + a.M(u + 1, u + 1) * re(u + 1) * re(u + 1);
   return mode;
 }
 
 std::optional<DampedSpectrum> refined_damped_spectrum(const Mesh& mesh, const Assembled& a,
-                                                      const HandCoupling& hand, const ModeOptions& options,
+                                                      const HandCoupling& hand,
+                                                      const ModeOptions& options,
                                                       const Mesh& coarse, std::string* why) {
   const Assembled ca = assemble(coarse, &hand);
   const DampedSpectrum guess =
@@ -145,7 +144,8 @@ std::optional<DampedSpectrum> refined_damped_spectrum(const Mesh& mesh, const As
     return std::nullopt;
   }
   QuadraticPencil pencil(a);
-  auto pairs = refine_estimates(pencil, coarse, mesh, static_cast<int>(a.M.rows()), guess.pairs, options.modes, why);
+  auto pairs = refine_estimates(pencil, coarse, mesh, static_cast<int>(a.M.rows()), guess.pairs,
+                                options.modes, why);
   if (!pairs) return std::nullopt;
   return DampedSpectrum{std::move(*pairs), guess.overdamped};
 }

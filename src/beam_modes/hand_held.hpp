@@ -51,7 +51,8 @@ Mode damped_mode(const Mesh& mesh, const Assembled& a, Complex s, VectorXcd q);
 // The lowest `wanted` modes on `mesh` located on a coarse mesh and refined;
 // empty with a reason in `why` when a mode cannot be matched.
 std::optional<DampedSpectrum> refined_damped_spectrum(const Mesh& mesh, const Assembled& a,
-                                                      const HandCoupling& hand, const ModeOptions& options,
+                                                      const HandCoupling& hand,
+                                                      const ModeOptions& options,
                                                       const Mesh& coarse, std::string* why);
 
 }  // namespace sweetspot::beam_detail

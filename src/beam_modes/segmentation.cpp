@@ -40,8 +40,8 @@ void validate_options(const ModeOptions& options, std::size_t section_count) {
   if (!why.empty()) throw std::invalid_argument("options." + why);
   if (options.theory == ModeOptions::Theory::kTimoshenko &&
       options.timoshenko.size() != section_count) {
-    fail("options.timoshenko.size()", "the number of sections (" +
-                                          std::to_string(section_count) + ")",
+    fail("options.timoshenko.size()",
+         "the number of sections (" + std::to_string(section_count) + ")",
          static_cast<double>(options.timoshenko.size()));
   }
 }
@@ -66,18 +66,19 @@ double phase_weight(double mu_kg_m, double EI_N_m2, double length_m) {
 // True when sections i and i + 1 are one uniform stretch: the same mass per
 // length, EI and (Timoshenko) cross-section. Their boundary is then no
 // breakpoint, so a design given as many equal sections costs what one costs.
-bool same_properties(const std::vector<Section>& sections, const std::vector<TimoshenkoSection>& timoshenko,
-                     std::size_t i) {
+bool same_properties(const std::vector<Section>& sections,
+                     const std::vector<TimoshenkoSection>& timoshenko, std::size_t i) {
   const Section& a = sections[i];
   const Section& b = sections[i + 1];
   if (a.mass_kg / a.length_m != b.mass_kg / b.length_m || *a.EI_N_m2 != *b.EI_N_m2) return false;
-  return timoshenko.empty() || (timoshenko[i].shear_stiffness_N == timoshenko[i + 1].shear_stiffness_N &&
-                                timoshenko[i].radius_of_gyration_m == timoshenko[i + 1].radius_of_gyration_m);
+  return timoshenko.empty() ||
+         (timoshenko[i].shear_stiffness_N == timoshenko[i + 1].shear_stiffness_N &&
+          timoshenko[i].radius_of_gyration_m == timoshenko[i + 1].radius_of_gyration_m);
 }
 
 Segmentation segment(const std::vector<Section>& sections,
-                     const std::vector<PointMass>& point_masses,
-                     std::vector<double> extra_breaks, const std::vector<TimoshenkoSection>& timoshenko) {
+                     const std::vector<PointMass>& point_masses, std::vector<double> extra_breaks,
+                     const std::vector<TimoshenkoSection>& timoshenko) {
   Segmentation out;
   out.groupable = timoshenko.empty();
   std::vector<double> section_ends;
@@ -118,11 +119,10 @@ Segmentation segment(const std::vector<Section>& sections,
       out.tip_mass_kg += p.mass_kg;
       continue;
     }
-    auto it = std::min_element(out.segments.begin(), out.segments.end(),
-                               [&](const Segment& a, const Segment& b) {
-                                 return std::abs(a.start_m - p.from_butt_m) <
-                                        std::abs(b.start_m - p.from_butt_m);
-                               });
+    auto it = std::min_element(
+        out.segments.begin(), out.segments.end(), [&](const Segment& a, const Segment& b) {
+          return std::abs(a.start_m - p.from_butt_m) < std::abs(b.start_m - p.from_butt_m);
+        });
     it->mass_at_start_kg += p.mass_kg;
   }
   return out;
@@ -134,10 +134,11 @@ const std::vector<TimoshenkoSection>& timoshenko_of(const ModeOptions& options) 
 }
 
 Segmentation hand_segmentation(const std::vector<Section>& sections,
-                               const std::vector<PointMass>& point_masses,
-                               const HandCoupling& hand, const ModeOptions& options) {
+                               const std::vector<PointMass>& point_masses, const HandCoupling& hand,
+                               const ModeOptions& options) {
   return segment(sections, point_masses,
-                 {hand.grip_start_m, hand.grip_start_m + hand.grip_length_m}, timoshenko_of(options));
+                 {hand.grip_start_m, hand.grip_start_m + hand.grip_length_m},
+                 timoshenko_of(options));
 }
 
 }  // namespace sweetspot::beam_detail

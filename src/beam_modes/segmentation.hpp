@@ -48,7 +48,8 @@ double phase_weight(double mu_kg_m, double EI_N_m2, double length_m);
 // The beam's segments: breakpoints at section boundaries where the properties
 // change, point masses and `extra_breaks`. `timoshenko`: one entry per
 // section when the theory is Timoshenko, else empty.
-Segmentation segment(const std::vector<Section>& sections, const std::vector<PointMass>& point_masses,
+Segmentation segment(const std::vector<Section>& sections,
+                     const std::vector<PointMass>& point_masses,
                      std::vector<double> extra_breaks = {},
                      const std::vector<TimoshenkoSection>& timoshenko = {});
 
@@ -56,7 +57,8 @@ Segmentation segment(const std::vector<Section>& sections, const std::vector<Poi
 const std::vector<TimoshenkoSection>& timoshenko_of(const ModeOptions& options);
 
 // Segments with breakpoints at the grip's ends too.
-Segmentation hand_segmentation(const std::vector<Section>& sections, const std::vector<PointMass>& point_masses,
-                               const HandCoupling& hand, const ModeOptions& options);
+Segmentation hand_segmentation(const std::vector<Section>& sections,
+                               const std::vector<PointMass>& point_masses, const HandCoupling& hand,
+                               const ModeOptions& options);
 
 }  // namespace sweetspot::beam_detail

@@ -93,9 +93,8 @@ double normalise_and_find_nodes(Mode& mode) {
     if (a.w == 0.0) add_node(p.start_m + a.xi);
     if (a.piece != b.piece) continue;  // the same point, end of one piece and start of next
     if ((a.w < 0.0 && b.w > 0.0) || (a.w > 0.0 && b.w < 0.0)) {
-      const double xi =
-          brent_root([&](double t) { return evaluate_piece(p, t); }, a.xi, b.xi, a.w * scale,
-                     b.w * scale, kNodeTol_m);
+      const double xi = brent_root([&](double t) { return evaluate_piece(p, t); }, a.xi, b.xi,
+                                   a.w * scale, b.w * scale, kNodeTol_m);
       add_node(p.start_m + xi);
     }
   }

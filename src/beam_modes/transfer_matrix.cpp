@@ -126,10 +126,22 @@ class TransferModel {
     const double a2 = a * a, a3 = a2 * a;
     const Krylov k = krylov(std::sqrt(std::sqrt(P)) * a);
     const double T = a * k.t1, U = a2 * k.u2, V = a3 * k.v3;
-    m[0][0] = k.s;       m[0][1] = T;         m[0][2] = U / r;     m[0][3] = V / r;
-    m[1][0] = P * V;     m[1][1] = k.s;       m[1][2] = T / r;     m[1][3] = U / r;
-    m[2][0] = r * P * U; m[2][1] = r * P * V; m[2][2] = k.s;       m[2][3] = T;
-    m[3][0] = r * P * T; m[3][1] = r * P * U; m[3][2] = P * V;     m[3][3] = k.s;
+    m[0][0] = k.s;
+    m[0][1] = T;
+    m[0][2] = U / r;
+    m[0][3] = V / r;
+    m[1][0] = P * V;
+    m[1][1] = k.s;
+    m[1][2] = T / r;
+    m[1][3] = U / r;
+    m[2][0] = r * P * U;
+    m[2][1] = r * P * V;
+    m[2][2] = k.s;
+    m[2][3] = T;
+    m[3][0] = r * P * T;
+    m[3][1] = r * P * U;
+    m[3][2] = P * V;
+    m[3][3] = k.s;
   }
 
   static std::array<double, 4> apply(const double m[4][4], const std::array<double, 4>& s) {
@@ -195,16 +207,16 @@ ModalResult exact_free_modes(const Segmentation& seg, const ModeOptions& options
       fe_options.elements = count.elements;
       ModalResult fe = fe_free_modes(seg, fe_options);
       fe.message = "the exact scan missed " + std::to_string(count.missed) +
-                   " nearly repeated root(s) below " + format_number(result.modes.back().frequency_Hz) +
-                   " Hz; " + fe.message;
+                   " nearly repeated root(s) below " +
+                   format_number(result.modes.back().frequency_Hz) + " Hz; " + fe.message;
       return fe;
     }
   }
   if (static_cast<int>(result.modes.size()) < options.modes) {
     result.complete = false;
     result.message = "found " + std::to_string(result.modes.size()) + " of " +
-                     std::to_string(options.modes) + " modes below beta L = " +
-                     format_number(lambda_max);
+                     std::to_string(options.modes) +
+                     " modes below beta L = " + format_number(lambda_max);
   } else {
     result.message = "exact transfer-matrix solution";
   }

@@ -9,16 +9,20 @@
 namespace sweetspot::cli {
 
 void BenchCommand::add_to(CLI::App& app) {
-  command = app.add_subcommand("bench", "Speed against error on this machine (median of repeated runs) into reports/");
+  command = app.add_subcommand(
+      "bench", "Speed against error on this machine (median of repeated runs) into reports/");
   command
-      ->add_option("what", what,
-                   "speed (the rigid model, the command line end to end, the optimizer, each fidelity), "
-                   "modes, or all")
+      ->add_option(
+          "what", what,
+          "speed (the rigid model, the command line end to end, the optimizer, each fidelity), "
+          "modes, or all")
       ->check(CLI::IsMember({"speed", "modes", "all"}))
       ->capture_default_str();
-  command->add_option("--designs", options.designs_dir, "Folder holding studies/")->capture_default_str();
+  command->add_option("--designs", options.designs_dir, "Folder holding studies/")
+      ->capture_default_str();
   command->add_option("--out", options.out_dir, "Folder to write")->capture_default_str();
-  command->add_option("--peers", options.peers_dir, "Folder of the NumPy/SciPy peer scripts")->capture_default_str();
+  command->add_option("--peers", options.peers_dir, "Folder of the NumPy/SciPy peer scripts")
+      ->capture_default_str();
   command->add_option("--repeats", options.repeats, "Runs per figure (the median is reported)")
       ->check(whole_in(1, 1000))
       ->capture_default_str();

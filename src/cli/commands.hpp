@@ -6,7 +6,6 @@
 // exit status by main().
 
 #include <CLI/CLI.hpp>
-
 #include <string>
 #include <vector>
 

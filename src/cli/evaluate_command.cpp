@@ -26,7 +26,8 @@ int run_batch(const EvaluateCommand& c) {
     options.base = io::read_json_file(c.batch_base);
     // A base that is not a valid design on its own is the caller's error, not every row's.
     if (!options.base->contains("implement")) {
-      throw io::InputError(c.batch_base, "/implement", "missing: the base design needs an implement");
+      throw io::InputError(c.batch_base, "/implement",
+                           "missing: the base design needs an implement");
     }
     // ... and a value it gets wrong is wrong for every row: said once, at the base's own path.
     io::evaluate_design_file(io::read_design(*options.base, c.batch_base), "", c.tolerance);
@@ -41,19 +42,24 @@ int run_batch(const EvaluateCommand& c) {
     // buffer, shared with C stdio, would report the end of the input).
     std::ifstream in("/dev/stdin", std::ios::binary);
     std::istream& input = in ? in : std::cin;
-    c.out.emit_stream([&](std::ostream& out) { summary = io::run_batch(input, "(standard input)", options, out); });
+    c.out.emit_stream([&](std::ostream& out) {
+      summary = io::run_batch(input, "(standard input)", options, out);
+    });
   } else {
     std::error_code error;
     if (std::filesystem::is_directory(c.batch_path, error)) {
-      throw io::InputError(c.batch_path, "", "is a directory, expected a catalogue file (CSV or JSON Lines)");
+      throw io::InputError(c.batch_path, "",
+                           "is a directory, expected a catalogue file (CSV or JSON Lines)");
     }
     errno = 0;
     std::ifstream in(c.batch_path, std::ios::binary);
     if (!in) {
-      throw io::InputError(c.batch_path, "", std::string("cannot open the file for reading") +
-                                                 (errno ? std::string(": ") + std::strerror(errno) : ""));
+      throw io::InputError(c.batch_path, "",
+                           std::string("cannot open the file for reading") +
+                               (errno ? std::string(": ") + std::strerror(errno) : ""));
     }
-    c.out.emit_stream([&](std::ostream& out) { summary = io::run_batch(in, c.batch_path, options, out); });
+    c.out.emit_stream(
+        [&](std::ostream& out) { summary = io::run_batch(in, c.batch_path, options, out); });
   }
   if (summary.failed > 0) {
     std::cerr << "sweetspot: " << summary.failed << " of " << summary.rows
@@ -69,20 +75,23 @@ void EvaluateCommand::add_to(CLI::App& app) {
   command = app.add_subcommand("evaluate", "Every quantity of the paper for one design");
   threads = io::all_cores();
   command->add_option("design", design_path, "Design file (JSON)");
-  command->add_option("--batch", batch_path,
-                      "Evaluate a catalogue instead (- for standard input): JSON Lines (.jsonl, one design "
-                      "per line) or CSV (.csv) whose header names design fields "
-                      "(implement.mass_g,impact.from_butt_m,...); another name is JSON Lines if its first "
-                      "line starts with '{', else CSV. Output CSV (or JSON Lines with --format json), one "
-                      "row per input in order");
-  command->add_option("--base", batch_base, "With --batch: a design file giving every row's defaults");
+  command->add_option(
+      "--batch", batch_path,
+      "Evaluate a catalogue instead (- for standard input): JSON Lines (.jsonl, one design "
+      "per line) or CSV (.csv) whose header names design fields "
+      "(implement.mass_g,impact.from_butt_m,...); another name is JSON Lines if its first "
+      "line starts with '{', else CSV. Output CSV (or JSON Lines with --format json), one "
+      "row per input in order");
+  command->add_option("--base", batch_base,
+                      "With --batch: a design file giving every row's defaults");
   command->add_option("--threads", threads, "With --batch: threads to use (default: all cores)")
       ->check(whole_in(1, 1024));
   command
-      ->add_option("--fidelity", fidelity,
-                   "rigid: the paper's rigid body; modal: also the vibration modes (needs the "
-                   "frame's stiffness); response: also the frame's response to the ball (vibration "
-                   "energy, a COR derived from cor_rigid); auto: the cheapest that answers the design")
+      ->add_option(
+          "--fidelity", fidelity,
+          "rigid: the paper's rigid body; modal: also the vibration modes (needs the "
+          "frame's stiffness); response: also the frame's response to the ball (vibration "
+          "energy, a COR derived from cor_rigid); auto: the cheapest that answers the design")
       ->check(CLI::IsMember({"rigid", "modal", "response", "auto"}))
       ->capture_default_str();
   command->add_option("--tol", tolerance, "Relative error allowed in the hand-held frequency")
@@ -96,11 +105,12 @@ int EvaluateCommand::run() const {
     if (!design_path.empty()) throw CLI::ValidationError("give a design file or --batch, not both");
     return run_batch(*this);
   }
-  if (design_path.empty()) throw CLI::ValidationError("design: a design file (or --batch FILE) is required");
+  if (design_path.empty())
+    throw CLI::ValidationError("design: a design file (or --batch FILE) is required");
   const io::DesignFile design = io::load_design(design_path);
   // The command line's --fidelity wins over the file's "fidelity".
-  const Evaluation result =
-      io::evaluate_design_file(design, command->count("--fidelity") ? fidelity : std::string(), tolerance);
+  const Evaluation result = io::evaluate_design_file(
+      design, command->count("--fidelity") ? fidelity : std::string(), tolerance);
   out.emit(io::evaluation_report(design, result, out.parsed()));
   return kExitOk;
 }

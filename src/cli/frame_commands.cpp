@@ -1,12 +1,12 @@
 // The flexible frame: `sweetspot modes DESIGN.json` and `sweetspot response DESIGN.json`.
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <iostream>
 #include <string>
 #include <utility>
 #include <vector>
-
-#include <fmt/format.h>
 
 #include "cli/checks.hpp"
 #include "cli/commands.hpp"
@@ -30,10 +30,15 @@ std::vector<double> points(const std::string& option, const std::vector<std::str
 }  // namespace
 
 void ModesCommand::add_to(CLI::App& app) {
-  command = app.add_subcommand("modes", "Vibration modes free and hand-held: frequencies, damping, nodes, shapes (csv)");
-  command->add_option("design", design_path, "Design file (JSON) with the frame's stiffness")->required();
-  command->add_option("--modes,-n", modes, "How many flexible modes")->check(whole_in(1, kMaxExactModes))->capture_default_str();
-  command->add_option("--tol", tolerance, "Relative error allowed in the finite-element frequencies")
+  command = app.add_subcommand(
+      "modes", "Vibration modes free and hand-held: frequencies, damping, nodes, shapes (csv)");
+  command->add_option("design", design_path, "Design file (JSON) with the frame's stiffness")
+      ->required();
+  command->add_option("--modes,-n", modes, "How many flexible modes")
+      ->check(whole_in(1, kMaxExactModes))
+      ->capture_default_str();
+  command
+      ->add_option("--tol", tolerance, "Relative error allowed in the finite-element frequencies")
       ->check(finite_in(kMinRelTol, kMaxRelTol))
       ->capture_default_str();
   command->add_option("--method", method, "Free modes: exact (transfer matrices) or fe")
@@ -54,8 +59,10 @@ int ModesCommand::run() const {
 
 void ResponseCommand::add_to(CLI::App& app) {
   command = app.add_subcommand(
-      "response", "Velocity of points of the implement after the impact: rigid (dc) and vibration (ac) parts");
-  command->add_option("design", design_path, "Design file (JSON) with the frame's stiffness")->required();
+      "response",
+      "Velocity of points of the implement after the impact: rigid (dc) and vibration (ac) parts");
+  command->add_option("design", design_path, "Design file (JSON) with the frame's stiffness")
+      ->required();
   // Lists are split here rather than by CLI11, which would drop an empty
   // item ("0.1,,0.2") or read "" as 0, the butt: both are refused.
   command
@@ -67,11 +74,13 @@ void ResponseCommand::add_to(CLI::App& app) {
       ->default_str("0.02,0.16");
   command
       ->add_option_function<std::vector<std::string>>(
-          "--impacts", [this](const std::vector<std::string>& lists) { impacts = points("--impacts", lists); },
+          "--impacts",
+          [this](const std::vector<std::string>& lists) { impacts = points("--impacts", lists); },
           "Impact points, m from the butt, comma-separated (default: the design's)")
       ->expected(1)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
-  command->add_flag("--held", held, "Held in the hand (default: free, as the paper's suspended beam)");
+  command->add_flag("--held", held,
+                    "Held in the hand (default: free, as the paper's suspended beam)");
   command->add_option("--until-ms", until_ms, "Time window after the impact starts")
       ->check(finite_in(0.01, 1000.0))
       ->capture_default_str();

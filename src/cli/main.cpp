@@ -6,7 +6,6 @@
 // files and ends by the signal.
 
 #include <CLI/CLI.hpp>
-
 #include <iostream>
 #include <stdexcept>
 #include <string>
@@ -77,15 +76,24 @@ int main(int argc, char** argv) {
 
   int status = kExitOk;
   try {
-    if (*evaluate.command) status = evaluate.run();
-    else if (*table1.command) status = table1.run();
-    else if (*figure.command) status = figure.run();
-    else if (*report.command) status = report.run();
-    else if (*optimize.command) status = optimize.run();
-    else if (*sweep.command) status = sweep.run();
-    else if (*modes.command) status = modes.run();
-    else if (*response.command) status = response.run();
-    else if (*bench.command) status = bench.run();
+    if (*evaluate.command)
+      status = evaluate.run();
+    else if (*table1.command)
+      status = table1.run();
+    else if (*figure.command)
+      status = figure.run();
+    else if (*report.command)
+      status = report.run();
+    else if (*optimize.command)
+      status = optimize.run();
+    else if (*sweep.command)
+      status = sweep.run();
+    else if (*modes.command)
+      status = modes.run();
+    else if (*response.command)
+      status = response.run();
+    else if (*bench.command)
+      status = bench.run();
   } catch (const CLI::ParseError& e) {
     std::cerr << "sweetspot: " << sweetspot::io::one_line(e.what()) << "\n";
     return kExitBadInput;

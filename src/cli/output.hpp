@@ -5,7 +5,6 @@
 // rendered.
 
 #include <CLI/CLI.hpp>
-
 #include <functional>
 #include <ostream>
 #include <string>
@@ -17,9 +16,11 @@ namespace sweetspot::cli {
 
 // Exit statuses (README "Exit status").
 inline constexpr int kExitOk = 0;
-inline constexpr int kExitRuntimeError = 1;  // not the input's fault: a write or read error (ENOSPC, EIO)
-inline constexpr int kExitBadInput = 2;      // bad input or usage, one line on stderr
-inline constexpr int kExitInfeasible = 3;    // a study with no feasible design (its report is written)
+inline constexpr int kExitRuntimeError =
+    1;  // not the input's fault: a write or read error (ENOSPC, EIO)
+inline constexpr int kExitBadInput = 2;  // bad input or usage, one line on stderr
+inline constexpr int kExitInfeasible =
+    3;  // a study with no feasible design (its report is written)
 
 // --format and --output of a subcommand: standard output, or FILE written
 // as io/atomic_file.hpp says (a regular file replaced atomically, a device

@@ -38,9 +38,11 @@ int FigureCommand::run() const {
 }
 
 void ReportCommand::add_to(CLI::App& app) {
-  command = app.add_subcommand(
-      "report", "Reproduce Table I and Figs. 5 and 11, the beam's modes and the shipped studies into a folder");
-  command->add_option("--designs", designs, "Folder holding table1/ and paper-beam.json")->capture_default_str();
+  command = app.add_subcommand("report",
+                               "Reproduce Table I and Figs. 5 and 11, the beam's modes and the "
+                               "shipped studies into a folder");
+  command->add_option("--designs", designs, "Folder holding table1/ and paper-beam.json")
+      ->capture_default_str();
   command->add_option("--out", out_dir, "Folder to write")->capture_default_str();
 }
 

@@ -1,11 +1,10 @@
 // Studies: `sweetspot optimize STUDY.json` and `sweetspot sweep STUDY.json`.
 
+#include <fmt/format.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <iostream>
-
-#include <fmt/format.h>
 
 #include "cli/commands.hpp"
 #include "io/input_error.hpp"
@@ -42,20 +41,24 @@ int OptimizeCommand::run() const {
   if (out.parsed() == io::Format::kMarkdown && !out.output.empty() && optimum) {
     std::cerr << result.summary.brief_report() << "\n";
   }
-  const int plotted = plot.empty() ? kExitOk : render_or_warn(io::convergence_plot(study, result), plot);
+  const int plotted =
+      plot.empty() ? kExitOk : render_or_warn(io::convergence_plot(study, result), plot);
   if (plotted != kExitOk) return plotted;  // a file that could not be written comes first
-  const std::string where = out.output.empty() ? std::string("the report gives")
-                                               : "the report on standard output gives";
-  const std::string kept = out.output.empty() ? "" : " (" + io::one_line(out.output) + " left as it was)";
+  const std::string where =
+      out.output.empty() ? std::string("the report gives") : "the report on standard output gives";
+  const std::string kept =
+      out.output.empty() ? "" : " (" + io::one_line(out.output) + " left as it was)";
   switch (result.outcome) {
-    case io::Outcome::kOptimum: return kExitOk;
+    case io::Outcome::kOptimum:
+      return kExitOk;
     case io::Outcome::kInfeasible:
-      std::cerr << "sweetspot: " << io::one_line(study.source) << ": no design meets the constraints; " << where
-                << " the least violating one" << kept << "\n";
+      std::cerr << "sweetspot: " << io::one_line(study.source)
+                << ": no design meets the constraints; " << where << " the least violating one"
+                << kept << "\n";
       return kExitInfeasible;
     case io::Outcome::kNoValue:
-      std::cerr << "sweetspot: " << io::one_line(study.source) << ": no valid design was found: " << result.no_value
-                << kept << "\n";
+      std::cerr << "sweetspot: " << io::one_line(study.source)
+                << ": no valid design was found: " << result.no_value << kept << "\n";
       return kExitInfeasible;
   }
   return kExitOk;
@@ -63,13 +66,19 @@ int OptimizeCommand::run() const {
 
 void SweepCommand::add_to(CLI::App& app) {
   command = app.add_subcommand(
-      "sweep", "What-if grid over one or two of a study's variables: every output at every point (CSV)");
+      "sweep",
+      "What-if grid over one or two of a study's variables: every output at every point (CSV)");
   threads = io::all_cores();
-  command->add_option("study", study_path, "Study file (JSON) with variables, grid and outputs")->required();
-  command->add_option("--output,-o", csv_path, "Write the CSV to FILE (atomically) instead of stdout");
-  command->add_option("--plot", plot, "Also render plots: FILE.png, or FILE-<output>.png for several outputs");
+  command->add_option("study", study_path, "Study file (JSON) with variables, grid and outputs")
+      ->required();
+  command->add_option("--output,-o", csv_path,
+                      "Write the CSV to FILE (atomically) instead of stdout");
+  command->add_option("--plot", plot,
+                      "Also render plots: FILE.png, or FILE-<output>.png for several outputs");
   command->add_flag("--quiet,-q", quiet, "No progress on the terminal");
-  command->add_option("--threads", threads, "Threads to use (default: all cores); rows stay in grid order")
+  command
+      ->add_option("--threads", threads,
+                   "Threads to use (default: all cores); rows stay in grid order")
       ->check(CLI::Range(1, 1024));
 }
 

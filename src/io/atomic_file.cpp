@@ -98,7 +98,8 @@ std::optional<int> descriptor_named(const std::string& path) {
   for (const std::string_view prefix : {"/dev/fd/", "/proc/self/fd/"}) {
     if (path.size() <= prefix.size() || path.compare(0, prefix.size(), prefix) != 0) continue;
     const std::string digits = path.substr(prefix.size());
-    if (digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos) return std::nullopt;
+    if (digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos)
+      return std::nullopt;
     return std::atoi(digits.c_str());
   }
   return std::nullopt;
@@ -158,7 +159,8 @@ TemporaryFile::TemporaryFile(const std::string& directory, std::string_view name
   // A prefix of the name, cut on a UTF-8 character boundary.
   constexpr std::size_t kPrefixBytes = 32;
   std::size_t cut = std::min(name.size(), kPrefixBytes);
-  while (cut > 0 && cut < name.size() && (static_cast<unsigned char>(name[cut]) & 0xC0) == 0x80) --cut;
+  while (cut > 0 && cut < name.size() && (static_cast<unsigned char>(name[cut]) & 0xC0) == 0x80)
+    --cut;
   std::string pattern = directory + "/." + std::string(name.substr(0, cut)) + ".XXXXXX";
   fd_ = ::mkostemp(pattern.data(), O_CLOEXEC);
   if (fd_ < 0) throw WriteError(for_path, errno_text(errno));
@@ -209,7 +211,8 @@ OutputFile::OutputFile(const std::string& path) : path_(path), target_(path) {
       break;
     }
     if (hops == 40) throw WriteError(path, errno_text(ELOOP));
-    std::vector<char> link(static_cast<std::size_t>(info.st_size > 0 ? info.st_size : PATH_MAX) + 1);
+    std::vector<char> link(static_cast<std::size_t>(info.st_size > 0 ? info.st_size : PATH_MAX) +
+                           1);
     const ssize_t length = ::readlink(target_.c_str(), link.data(), link.size());
     if (length < 0) throw WriteError(path, errno_text(errno));
     const std::string to(link.data(), static_cast<std::size_t>(length));
@@ -275,7 +278,8 @@ void write_file_atomically(const std::string& path, std::string_view content) {
   file.commit();
 }
 
-void write_stream_atomically(const std::string& path, const std::function<void(std::ostream&)>& write) {
+void write_stream_atomically(const std::string& path,
+                             const std::function<void(std::ostream&)>& write) {
   OutputFile file(path);
   OutputBuffer buffer(file);
   std::ostream stream(&buffer);

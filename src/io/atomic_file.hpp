@@ -93,7 +93,8 @@ void write_file_atomically(const std::string& path, std::string_view content);
 // the output, which replaces `path` only when complete. A write error (a
 // full disk) ends `write` at once with WriteError; if `write` throws, the
 // temporary file is removed and the exception goes on.
-void write_stream_atomically(const std::string& path, const std::function<void(std::ostream&)>& write);
+void write_stream_atomically(const std::string& path,
+                             const std::function<void(std::ostream&)>& write);
 
 // Installs handlers for SIGINT, SIGTERM, SIGHUP and SIGPIPE (those not
 // ignored) that remove every temporary file in progress and then re-raise

@@ -21,27 +21,32 @@ Implement build_implement(const ImplementDescription& d) {
     case ImplementDescription::Form::kSections:
       return Implement::from_sections(d.sections, d.point_masses);
     case ImplementDescription::Form::kHeadToHandleRatio:
-      return Implement::paper_racquet(d.length_m, d.mass_kg, d.head_to_handle_mass_ratio, d.point_masses);
+      return Implement::paper_racquet(d.length_m, d.mass_kg, d.head_to_handle_mass_ratio,
+                                      d.point_masses);
     case ImplementDescription::Form::kSpecs:
       break;
   }
   double balance = d.balance;
   if (d.balance_in_points) {
     const double limit = points_head_light_limit(d.length_m);
-    if (!(balance > -limit && balance < limit)) throw std::domain_error("balance_pts_hl: outside the length");
+    if (!(balance > -limit && balance < limit))
+      throw std::domain_error("balance_pts_hl: outside the length");
     balance = balance_from_points_head_light(d.length_m, balance);
   }
-  return Implement::from_specs(IndustrySpecs{d.length_m, d.mass_kg, balance, d.swingweight_kg_m2}, d.point_masses);
+  return Implement::from_specs(IndustrySpecs{d.length_m, d.mass_kg, balance, d.swingweight_kg_m2},
+                               d.point_masses);
 }
 
 void derive(DesignDescription& d) {
   Design& design = d.design;
-  if (d.forearm_from_mass) design.forearm_equivalent_mass_kg = forearm_equivalent_mass(d.forearm_mass_kg);
+  if (d.forearm_from_mass)
+    design.forearm_equivalent_mass_kg = forearm_equivalent_mass(d.forearm_mass_kg);
   const double L = design.implement.length_m();
   if (d.impact_from_tip) {
     // The reader refuses a given point off the implement; the default 5 cm
     // from the tip of a shorter implement fails validate() instead.
-    if (!(d.impact_m >= 0.0 && d.impact_m <= L)) throw std::domain_error("impact/from_tip_m: off the implement");
+    if (!(d.impact_m >= 0.0 && d.impact_m <= L))
+      throw std::domain_error("impact/from_tip_m: off the implement");
     design.impact_from_butt_m = L - d.impact_m;
   } else {
     design.impact_from_butt_m = d.impact_m;

@@ -46,8 +46,8 @@ struct DesignDescription {
   Design design;
   bool forearm_from_mass = false;  // forearm/mass_*: M_e = M_F / 3 (Eq. 7)
   double forearm_mass_kg = 0.0;
-  bool impact_from_tip = true;     // impact/from_tip_* (or the default 5 cm), else from_butt_*
-  double impact_m = 0.05;          // from the tip or from the butt
+  bool impact_from_tip = true;         // impact/from_tip_* (or the default 5 cm), else from_butt_*
+  double impact_m = 0.05;              // from the tip or from the butt
   std::optional<double> head_area_m2;  // strings/head_size_*: sets the string bed's radius
 };
 

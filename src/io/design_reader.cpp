@@ -21,8 +21,10 @@ constexpr std::string_view kDesignParts[] = {"implement", "frame", "strings", "h
 
 bool is_design_path(std::string_view name) {
   const std::string_view part = name.substr(0, name.find('/'));
-  if (std::find(std::begin(kDesignParts), std::end(kDesignParts), part) == std::end(kDesignParts)) return false;
-  return name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_/") ==
+  if (std::find(std::begin(kDesignParts), std::end(kDesignParts), part) == std::end(kDesignParts))
+    return false;
+  return name.find_first_not_of(
+             "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_/") ==
          std::string_view::npos;
 }
 
@@ -39,7 +41,8 @@ bool is_design_path(std::string_view name) {
     const std::string core_name = message.substr(0, colon);
     std::string detail = message.substr(colon + 2);
     std::string name = prefix + core_name;
-    if (prefix.empty() && (core_name.starts_with("sections") || core_name.starts_with("point_masses"))) {
+    if (prefix.empty() &&
+        (core_name.starts_with("sections") || core_name.starts_with("point_masses"))) {
       name = "implement/" + core_name;
     }
     const auto it = keys.find(name);
@@ -50,14 +53,16 @@ bool is_design_path(std::string_view name) {
       const std::string si_key = name.substr(name.rfind('/') + 1);
       const std::string& pointer = it->second.pointer;
       const std::string user_key = pointer.substr(pointer.rfind('/') + 1);
-      if (si_key != user_key) detail += " (the file's " + user_key + ": " + it->second.given + ", converted to SI)";
+      if (si_key != user_key)
+        detail += " (the file's " + user_key + ": " + it->second.given + ", converted to SI)";
       throw InputError(source, pointer, detail);
     }
     if (name.starts_with("implement/sections") && name.ends_with("/EI_N_m2")) {
       // A section without its own stiffness takes the frame's.
       for (const char* frame_key : {"frame/EI_N_m2", "frame/fundamental_free_Hz"}) {
         const auto frame = keys.find(frame_key);
-        if (frame != keys.end()) throw InputError(source, frame->second.pointer, core_name + ": " + detail);
+        if (frame != keys.end())
+          throw InputError(source, frame->second.pointer, core_name + ": " + detail);
       }
     }
     if (name.starts_with("implement/")) {
@@ -90,7 +95,8 @@ std::vector<PointMass> read_point_masses(ObjectReader& implement, const std::str
   const Json* list = implement.child("point_masses");
   if (!list) return points;
   const std::string pointer = implement.pointer_of("point_masses");
-  if (!list->is_array()) throw InputError(source, pointer, "expected an array, got " + brief(*list));
+  if (!list->is_array())
+    throw InputError(source, pointer, "expected an array, got " + brief(*list));
   for (std::size_t i = 0; i < list->size(); ++i) {
     const std::string index = std::to_string(i);
     ObjectReader r((*list)[i], pointer + "/" + index, "implement/point_masses/" + index, source,
@@ -114,7 +120,8 @@ struct ImplementRead {
 ImplementRead read_implement(const Json& document, const std::string& source, KeyMap* keys,
                              ImplementDescription* described) {
   const auto it = document.find("implement");
-  if (it == document.end()) throw InputError(source, "/implement", "missing: every design needs an implement");
+  if (it == document.end())
+    throw InputError(source, "/implement", "missing: every design needs an implement");
   ObjectReader r(*it, "/implement", "implement", source, keys);
   std::vector<PointMass> points = read_point_masses(r, source, keys);
   try {
@@ -156,10 +163,12 @@ ImplementRead read_implement(const Json& document, const std::string& source, Ke
       return {Implement::paper_racquet(*length, *mass, ratio, std::move(points)),
               "head_to_handle_mass_ratio"};
     }
-    const std::string balance_key = r.one_of({"balance_from_butt_m", "balance_cm", "balance_pts_hl"});
+    const std::string balance_key =
+        r.one_of({"balance_from_butt_m", "balance_cm", "balance_pts_hl"});
     if (balance_key.empty()) {
-      r.fail("", "missing the mass distribution: give head_to_handle_mass_ratio, sections, or "
-                 "balance_from_butt_m (or balance_cm, balance_pts_hl) with swingweight_kg_cm2");
+      r.fail("",
+             "missing the mass distribution: give head_to_handle_mass_ratio, sections, or "
+             "balance_from_butt_m (or balance_cm, balance_pts_hl) with swingweight_kg_cm2");
     }
     double balance = *r.number(balance_key);
     if (balance_key == "balance_cm") balance *= 0.01;
@@ -174,7 +183,8 @@ ImplementRead read_implement(const Json& document, const std::string& source, Ke
     }
     r.record("balance_from_butt_m", balance_key);
     const auto swingweight = r.quantity("swingweight", Dimension::kInertia);
-    if (!swingweight) r.fail("", "missing swingweight_kg_cm2 (with the balance it fixes the inertia)");
+    if (!swingweight)
+      r.fail("", "missing swingweight_kg_cm2 (with the balance it fixes the inertia)");
     r.finish({"length_m", "mass_kg", "balance_from_butt_m", "balance_cm", "balance_pts_hl",
               "swingweight_kg_cm2", "point_masses"});
     if (described) {
@@ -211,7 +221,8 @@ class Part {
   // The quantity, or `fallback` when absent; records where it came from.
   double get(std::string_view base, Dimension dimension, std::string_view si_key, double fallback) {
     const auto value = reader_->quantity(base, dimension);
-    if (provenance_) (*provenance_)[name_ + "/" + std::string(si_key)] = value ? "given" : "default";
+    if (provenance_)
+      (*provenance_)[name_ + "/" + std::string(si_key)] = value ? "given" : "default";
     return value.value_or(fallback);
   }
   double get_number(std::string_view key, double fallback) {
@@ -265,7 +276,9 @@ DesignFile read_design_impl(const Json& document, const std::string& source, boo
     ObjectReader& r = frame.reader();
     design.cor_rigid = r.number("cor_rigid");
     if (design.cor_rigid && r.has("cor")) {
-      r.fail("cor_rigid", "contradicts /frame/cor: give the COR, or cor_rigid to derive it from the frame's vibration");
+      r.fail("cor_rigid",
+             "contradicts /frame/cor: give the COR, or cor_rigid to derive it from the frame's "
+             "vibration");
     }
     if (design.cor_rigid) note("frame/cor", "derived from cor_rigid and the frame's vibration");
     design.stiffness.EI_N_m2 = r.quantity("EI", Dimension::kStiffness);
@@ -290,8 +303,8 @@ DesignFile read_design_impl(const Json& document, const std::string& source, boo
 
   std::optional<double> head_area_m2;
   Part strings(top, "strings", keys, provenance);
-  design.impact_duration_s =
-      strings.get("impact_duration", Dimension::kTime, "impact_duration_s", defaults.impact_duration_s);
+  design.impact_duration_s = strings.get("impact_duration", Dimension::kTime, "impact_duration_s",
+                                         defaults.impact_duration_s);
   {
     ObjectReader& r = strings.reader();
     if (const auto tension = r.quantity("tension", Dimension::kForce)) {
@@ -301,7 +314,8 @@ DesignFile read_design_impl(const Json& document, const std::string& source, boo
       }
       StringBed bed;
       bed.tension_N = *tension;
-      bed.string_spacing_m = r.quantity("string_spacing", Dimension::kLength).value_or(bed.string_spacing_m);
+      bed.string_spacing_m =
+          r.quantity("string_spacing", Dimension::kLength).value_or(bed.string_spacing_m);
       const std::string head = r.one_of({"head_size_in2", "head_size_cm2"});
       if (!head.empty()) {
         const double area_m2 = *r.number(head) * (head == "head_size_in2" ? 0.0254 * 0.0254 : 1e-4);
@@ -310,12 +324,14 @@ DesignFile read_design_impl(const Json& document, const std::string& source, boo
         head_area_m2 = area_m2;
         r.record("head_radius_m", head);
       }
-      bed.contact_radius_m = r.quantity("contact_radius", Dimension::kLength).value_or(bed.contact_radius_m);
+      bed.contact_radius_m =
+          r.quantity("contact_radius", Dimension::kLength).value_or(bed.contact_radius_m);
       design.strings = bed;
       note("strings/impact_duration_s", "derived from the string tension");
     }
     r.finish({"impact_duration_s", "impact_duration_ms", "tension_N", "tension_lb", "tension_kg",
-              "string_spacing_m", "string_spacing_mm", "head_size_in2", "head_size_cm2", "contact_radius_m"});
+              "string_spacing_m", "string_spacing_mm", "head_size_in2", "head_size_cm2",
+              "contact_radius_m"});
   }
 
   Part hand(top, "hand", keys, provenance);
@@ -324,10 +340,12 @@ DesignFile read_design_impl(const Json& document, const std::string& source, boo
                                             "center_from_butt_m", defaults.hand.center_from_butt_m);
   design.hand.grip_length_m =
       hand.get("grip_length", Dimension::kLength, "grip_length_m", defaults.hand.grip_length_m);
-  design.hand.grip_stiffness_N_m2 = hand.get("grip_stiffness", Dimension::kStiffness, "grip_stiffness_N_m2",
-                                             defaults.hand.grip_stiffness_N_m2);
-  design.hand.grip_damping_N_s_m2 = hand.get("grip_damping", Dimension::kDamping, "grip_damping_N_s_m2",
-                                             defaults.hand.grip_damping_N_s_m2);
+  design.hand.grip_stiffness_N_m2 =
+      hand.get("grip_stiffness", Dimension::kStiffness, "grip_stiffness_N_m2",
+               defaults.hand.grip_stiffness_N_m2);
+  design.hand.grip_damping_N_s_m2 =
+      hand.get("grip_damping", Dimension::kDamping, "grip_damping_N_s_m2",
+               defaults.hand.grip_damping_N_s_m2);
   hand.reader().finish({"mass_kg", "center_from_butt_m", "grip_length_m", "grip_stiffness_N_m2",
                         "grip_damping_N_s_m2"});
 
@@ -335,7 +353,8 @@ DesignFile read_design_impl(const Json& document, const std::string& source, boo
   std::optional<double> forearm_mass_kg;
   {
     ObjectReader& r = forearm.reader();
-    const std::string key = r.one_of({"equivalent_mass_kg", "equivalent_mass_g", "mass_kg", "mass_g"});
+    const std::string key =
+        r.one_of({"equivalent_mass_kg", "equivalent_mass_g", "mass_kg", "mass_g"});
     if (key.starts_with("mass")) {
       const double forearm_mass = *r.quantity("mass", Dimension::kMass);
       forearm_mass_kg = forearm_mass;
@@ -347,15 +366,17 @@ DesignFile read_design_impl(const Json& document, const std::string& source, boo
       r.record("equivalent_mass_kg", key);
       note("forearm/equivalent_mass_kg", "derived from forearm/mass_kg (Eq. 7)");
     } else {
-      design.forearm_equivalent_mass_kg = forearm.get(
-          "equivalent_mass", Dimension::kMass, "equivalent_mass_kg", defaults.forearm_equivalent_mass_kg);
+      design.forearm_equivalent_mass_kg =
+          forearm.get("equivalent_mass", Dimension::kMass, "equivalent_mass_kg",
+                      defaults.forearm_equivalent_mass_kg);
     }
     r.finish({"equivalent_mass_kg", "mass_kg"});
   }
 
   Part ball(top, "ball", keys, provenance);
   design.ball.mass_kg = ball.get("mass", Dimension::kMass, "mass_kg", defaults.ball.mass_kg);
-  design.ball.speed_m_s = ball.get("speed", Dimension::kSpeed, "speed_m_s", defaults.ball.speed_m_s);
+  design.ball.speed_m_s =
+      ball.get("speed", Dimension::kSpeed, "speed_m_s", defaults.ball.speed_m_s);
   ball.reader().finish({"mass_kg", "speed_m_s"});
 
   Part impact(top, "impact", keys, provenance);
@@ -399,8 +420,8 @@ DesignFile read_design_impl(const Json& document, const std::string& source, boo
     r.finish(expected);
     reference = *given;
   }
-  top.finish({"$schema", "name", "description", "fidelity", "implement", "frame", "strings", "hand", "forearm",
-              "ball", "impact", "reference"});
+  top.finish({"$schema", "name", "description", "fidelity", "implement", "frame", "strings", "hand",
+              "forearm", "ball", "impact", "reference"});
 
   try {
     validate(design);
@@ -409,11 +430,18 @@ DesignFile read_design_impl(const Json& document, const std::string& source, boo
     rethrow_at(error, "", key_map, source, "");
   }
   if (described) {
-    described->emplace(DesignDescription{std::move(implement_described), design, forearm_mass_kg.has_value(),
-                                         forearm_mass_kg.value_or(0.0), impact_from_tip, impact_m, head_area_m2});
+    described->emplace(DesignDescription{std::move(implement_described), design,
+                                         forearm_mass_kg.has_value(), forearm_mass_kg.value_or(0.0),
+                                         impact_from_tip, impact_m, head_area_m2});
   }
-  return DesignFile{source, name, std::move(design), implement.form, std::move(provenance_map),
-                    std::move(reference), std::move(key_map), fidelity};
+  return DesignFile{source,
+                    name,
+                    std::move(design),
+                    implement.form,
+                    std::move(provenance_map),
+                    std::move(reference),
+                    std::move(key_map),
+                    fidelity};
 }
 
 }  // namespace
@@ -477,7 +505,8 @@ Json design_to_json(const DesignFile& file) {
   }
   j["frame"] = d.cor_rigid ? Json{{"cor_rigid", *d.cor_rigid}} : Json{{"cor", d.cor}};
   if (d.stiffness.EI_N_m2) j["frame"]["EI_N_m2"] = *d.stiffness.EI_N_m2;
-  if (d.stiffness.fundamental_free_Hz) j["frame"]["fundamental_free_Hz"] = *d.stiffness.fundamental_free_Hz;
+  if (d.stiffness.fundamental_free_Hz)
+    j["frame"]["fundamental_free_Hz"] = *d.stiffness.fundamental_free_Hz;
   if (d.stiffness.shear_modulus_Pa) {
     j["frame"]["cross_section"] = {{"shear_modulus_Pa", *d.stiffness.shear_modulus_Pa},
                                    {"width_m", d.stiffness.width_m},
@@ -486,7 +515,8 @@ Json design_to_json(const DesignFile& file) {
   if (d.strings) {
     j["strings"] = {{"tension_N", d.strings->tension_N},
                     {"string_spacing_m", d.strings->string_spacing_m},
-                    {"head_size_cm2", 3.141592653589793 * d.strings->head_radius_m * d.strings->head_radius_m * 1e4},
+                    {"head_size_cm2",
+                     3.141592653589793 * d.strings->head_radius_m * d.strings->head_radius_m * 1e4},
                     {"contact_radius_m", d.strings->contact_radius_m}};
   } else {
     j["strings"] = {{"impact_duration_s", d.impact_duration_s}};

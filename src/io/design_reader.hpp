@@ -9,16 +9,16 @@
 #include <string>
 #include <string_view>
 
-#include "sweetspot/design.hpp"
-#include "sweetspot/evaluate.hpp"
 #include "io/design_description.hpp"
 #include "io/json_reader.hpp"
+#include "sweetspot/design.hpp"
+#include "sweetspot/evaluate.hpp"
 
 namespace sweetspot::io {
 
 struct DesignFile {
-  std::string source;   // the file, or the study that holds it inline
-  std::string name;     // "name", or the source when absent
+  std::string source;  // the file, or the study that holds it inline
+  std::string name;    // "name", or the source when absent
   Design design;
   // How the implement was described: "head_to_handle_mass_ratio", "sections" or "specs".
   std::string implement_form;

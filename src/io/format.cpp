@@ -61,9 +61,11 @@ Json inputs_json(const DesignFile& file, const Evaluation& e) {
   Json inputs;
   inputs["implement/form"] = file.implement_form;
   inputs["frame/cor"] = input("frame/cor", e.cor, "");
-  inputs["strings/impact_duration_s"] = input("strings/impact_duration_s", e.impact_duration_s, "s");
+  inputs["strings/impact_duration_s"] =
+      input("strings/impact_duration_s", e.impact_duration_s, "s");
   if (d.cor_rigid) inputs["frame/cor_rigid"] = input("frame/cor_rigid", *d.cor_rigid, "");
-  if (d.strings) inputs["strings/tension_N"] = input("strings/tension_N", d.strings->tension_N, "N");
+  if (d.strings)
+    inputs["strings/tension_N"] = input("strings/tension_N", d.strings->tension_N, "N");
   inputs["hand/mass_kg"] = input("hand/mass_kg", d.hand.mass_kg, "kg");
   inputs["hand/center_from_butt_m"] =
       input("hand/center_from_butt_m", d.hand.center_from_butt_m, "m");
@@ -81,7 +83,9 @@ Json evaluation_json(const DesignFile& file, const Evaluation& e) {
   Json j;
   j["name"] = file.name;
   j["fidelity"] = to_string(fidelity_of(e));
-  if (e.modal) j["mass_distribution"] = e.modal->mass_distribution_fitted ? "fitted to the specs (quadratic density)" : "given";
+  if (e.modal)
+    j["mass_distribution"] =
+        e.modal->mass_distribution_fitted ? "fitted to the specs (quadratic density)" : "given";
   j["inputs"] = inputs_json(file, e);
   Json& outputs = j["outputs"];
   Json notes = Json::object();
@@ -103,7 +107,8 @@ Json evaluation_json(const DesignFile& file, const Evaluation& e) {
 }
 
 std::string evaluation_report(const DesignFile& file, const Evaluation& e, Format format) {
-  if (format == Format::kJson) return evaluation_json(file, e).dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
+  if (format == Format::kJson)
+    return evaluation_json(file, e).dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
   if (format == Format::kCsv) {
     std::string header = "name";
     std::string row = csv_field(file.name);
@@ -127,18 +132,20 @@ std::string evaluation_report(const DesignFile& file, const Evaluation& e, Forma
   for (const OutputSpec& output : output_specs()) {
     if (output.needs_modes && !output.value(e)) continue;
     const auto value = output.value(e);
-    md += fmt::format("| `{}` | {} | {} | {} |\n", output.name,
-                      value ? significant(*value) : std::string("—"), output.unit,
-                      md_cell(value ? std::string(output.description)
-                                    : std::string(output.description) + "; " +
-                                          std::string(output.when_absent)));
+    md += fmt::format(
+        "| `{}` | {} | {} | {} |\n", output.name, value ? significant(*value) : std::string("—"),
+        output.unit,
+        md_cell(value ? std::string(output.description)
+                      : std::string(output.description) + "; " + std::string(output.when_absent)));
   }
   if (!e.modal) {
     md += "\nVibration modes: not evaluated (rigid fidelity; they need the frame's stiffness).\n";
   }
   const Evaluation::Details details = e.details.value_or(Evaluation::Details{});
   if (!details.vibration_modes.empty()) {
-    md += "\nEnergy each mode of the free frame keeps after the impact:\n\n| mode | frequency (Hz) | energy (J) |\n|---:|---:|---:|\n";
+    md +=
+        "\nEnergy each mode of the free frame keeps after the impact:\n\n| mode | frequency (Hz) | "
+        "energy (J) |\n|---:|---:|---:|\n";
     for (std::size_t k = 0; k < details.vibration_modes.size(); ++k) {
       md += fmt::format("| {} | {:.1f} | {} |\n", k + 1, details.vibration_modes[k].first,
                         significant(details.vibration_modes[k].second, 4));

@@ -7,8 +7,8 @@
 #include <string>
 #include <string_view>
 
-#include "sweetspot/evaluate.hpp"
 #include "io/design_reader.hpp"
+#include "sweetspot/evaluate.hpp"
 
 namespace sweetspot::io {
 
@@ -33,6 +33,7 @@ std::string csv_field(std::string_view text);
 Json evaluation_json(const DesignFile& design, const Evaluation& evaluation);
 
 // The whole evaluation in `format`.
-std::string evaluation_report(const DesignFile& design, const Evaluation& evaluation, Format format);
+std::string evaluation_report(const DesignFile& design, const Evaluation& evaluation,
+                              Format format);
 
 }  // namespace sweetspot::io

@@ -21,9 +21,12 @@ namespace {
 std::string escape_pointer_token(std::string_view token) {
   std::string out;
   for (const char c : token) {
-    if (c == '~') out += "~0";
-    else if (c == '/') out += "~1";
-    else out += c;
+    if (c == '~')
+      out += "~0";
+    else if (c == '/')
+      out += "~1";
+    else
+      out += c;
   }
   return out;
 }
@@ -59,7 +62,8 @@ class StrictBuilder : public nlohmann::json_sax<Json> {
   bool parse_error(std::size_t, const std::string& token,
                    const nlohmann::detail::exception& e) override {
     constexpr int kNumberOverflow = 406;  // nlohmann's id for a number beyond double
-    if (e.id == kNumberOverflow) fail("number " + token + " is out of range, expected a finite number");
+    if (e.id == kNumberOverflow)
+      fail("number " + token + " is out of range, expected a finite number");
     // The line and column say where; a pointer would name the last complete value.
     throw InputError(source_, "", invalid_json_message(e.what()));
   }
@@ -67,7 +71,7 @@ class StrictBuilder : public nlohmann::json_sax<Json> {
  private:
   struct Open {
     Json* value;
-    std::string key;      // pending key (objects)
+    std::string key;  // pending key (objects)
   };
 
   // Pointer of the innermost open container: each open container is the last
@@ -86,7 +90,7 @@ class StrictBuilder : public nlohmann::json_sax<Json> {
   std::string current_pointer(std::string_view key = {}) const {
     if (stack_.empty()) return "";
     const Open& inner = stack_.back();
-    std::string token = !key.empty()                ? escape_pointer_token(key)
+    std::string token = !key.empty()               ? escape_pointer_token(key)
                         : inner.value->is_object() ? escape_pointer_token(inner.key)
                                                    : std::to_string(inner.value->size());
     return container_pointer() + "/" + token;
@@ -97,7 +101,8 @@ class StrictBuilder : public nlohmann::json_sax<Json> {
   }
 
   static std::string invalid_json_message(const std::string& what) {
-    // nlohmann: "[json.exception.parse_error.101] parse error at line 3, column 5: syntax error ..."
+    // nlohmann: "[json.exception.parse_error.101] parse error at line 3, column 5: syntax error
+    // ..."
     const auto at = what.find("] ");
     std::string text = at == std::string::npos ? what : what.substr(at + 2);
     return "not valid JSON: " + text;
@@ -157,9 +162,11 @@ std::string input_name(const std::string& path) { return path == "-" ? "standard
 std::string read_input_file(const std::string& path, std::size_t limit_bytes) {
   const std::string name = input_name(path);
   const bool standard_input = path == "-";
-  const int fd = standard_input ? STDIN_FILENO : ::open(path.c_str(), O_RDONLY | O_NOCTTY | O_CLOEXEC);
+  const int fd =
+      standard_input ? STDIN_FILENO : ::open(path.c_str(), O_RDONLY | O_NOCTTY | O_CLOEXEC);
   if (fd < 0) {
-    throw InputError(name, "", std::string("cannot open the file for reading: ") + std::strerror(errno));
+    throw InputError(name, "",
+                     std::string("cannot open the file for reading: ") + std::strerror(errno));
   }
   struct Closer {
     int fd;
@@ -174,7 +181,8 @@ std::string read_input_file(const std::string& path, std::size_t limit_bytes) {
                                     : std::to_string(limit_bytes) + " bytes") +
       " for a design or study file";
   struct stat info {};
-  if (::fstat(fd, &info) != 0) throw std::runtime_error("cannot read " + name + ": " + std::strerror(errno));
+  if (::fstat(fd, &info) != 0)
+    throw std::runtime_error("cannot read " + name + ": " + std::strerror(errno));
   if (S_ISDIR(info.st_mode)) throw InputError(name, "", "is a directory, expected a JSON file");
   // st_size is trusted only to refuse a regular file early: devices, FIFOs
   // and /proc files are read, and stopped at the limit.
@@ -215,14 +223,22 @@ std::size_t utf8_sequence_length(std::string_view text, std::size_t i) {
   if (lead < 0x80) return 1;
   std::size_t length = 0;
   unsigned char low = 0x80, high = 0xbf;  // the range of the second byte
-  if (lead >= 0xc2 && lead <= 0xdf) length = 2;
-  else if (lead == 0xe0) length = 3, low = 0xa0;
-  else if (lead == 0xed) length = 3, high = 0x9f;  // no UTF-16 surrogates
-  else if (lead >= 0xe1 && lead <= 0xef) length = 3;
-  else if (lead == 0xf0) length = 4, low = 0x90;
-  else if (lead == 0xf4) length = 4, high = 0x8f;  // nothing beyond U+10FFFF
-  else if (lead >= 0xf1 && lead <= 0xf3) length = 4;
-  else return 0;
+  if (lead >= 0xc2 && lead <= 0xdf)
+    length = 2;
+  else if (lead == 0xe0)
+    length = 3, low = 0xa0;
+  else if (lead == 0xed)
+    length = 3, high = 0x9f;  // no UTF-16 surrogates
+  else if (lead >= 0xe1 && lead <= 0xef)
+    length = 3;
+  else if (lead == 0xf0)
+    length = 4, low = 0x90;
+  else if (lead == 0xf4)
+    length = 4, high = 0x8f;  // nothing beyond U+10FFFF
+  else if (lead >= 0xf1 && lead <= 0xf3)
+    length = 4;
+  else
+    return 0;
   if (i + length > text.size()) return 0;
   if (byte(i + 1) < low || byte(i + 1) > high) return 0;
   for (std::size_t k = 2; k < length; ++k) {
@@ -266,7 +282,8 @@ struct Unit {
 };
 
 const std::vector<Unit>& units(Dimension dimension) {
-  static const std::vector<Unit> length{{"_m", 1.0}, {"_cm", 0.01}, {"_mm", 0.001}, {"_in", 0.0254}};
+  static const std::vector<Unit> length{
+      {"_m", 1.0}, {"_cm", 0.01}, {"_mm", 0.001}, {"_in", 0.0254}};
   static const std::vector<Unit> mass{{"_kg", 1.0}, {"_g", 0.001}};
   static const std::vector<Unit> time{{"_s", 1.0}, {"_ms", 0.001}};
   static const std::vector<Unit> speed{{"_m_s", 1.0}, {"_km_h", 1.0 / 3.6}, {"_mph", 0.44704}};
@@ -276,15 +293,24 @@ const std::vector<Unit>& units(Dimension dimension) {
   static const std::vector<Unit> damping{{"_N_s_m2", 1.0}};
   static const std::vector<Unit> frequency{{"_Hz", 1.0}};
   switch (dimension) {
-    case Dimension::kLength: return length;
-    case Dimension::kMass: return mass;
-    case Dimension::kTime: return time;
-    case Dimension::kSpeed: return speed;
-    case Dimension::kInertia: return inertia;
-    case Dimension::kForce: return force;
-    case Dimension::kStiffness: return stiffness;
-    case Dimension::kDamping: return damping;
-    case Dimension::kFrequency: return frequency;
+    case Dimension::kLength:
+      return length;
+    case Dimension::kMass:
+      return mass;
+    case Dimension::kTime:
+      return time;
+    case Dimension::kSpeed:
+      return speed;
+    case Dimension::kInertia:
+      return inertia;
+    case Dimension::kForce:
+      return force;
+    case Dimension::kStiffness:
+      return stiffness;
+    case Dimension::kDamping:
+      return damping;
+    case Dimension::kFrequency:
+      return frequency;
   }
   return length;
 }
@@ -293,14 +319,16 @@ const std::vector<Unit>& units(Dimension dimension) {
 
 std::vector<std::string> spellings(std::string_view base, Dimension dimension) {
   std::vector<std::string> keys;
-  for (const Unit& unit : units(dimension)) keys.push_back(std::string(base) + std::string(unit.suffix));
+  for (const Unit& unit : units(dimension))
+    keys.push_back(std::string(base) + std::string(unit.suffix));
   return keys;
 }
 
 namespace {
 
 // Which of units(dimension) `key` spells `base` in, if any.
-std::optional<std::size_t> unit_index(std::string_view key, std::string_view base, Dimension dimension) {
+std::optional<std::size_t> unit_index(std::string_view key, std::string_view base,
+                                      Dimension dimension) {
   if (!key.starts_with(base)) return std::nullopt;
   const std::vector<Unit>& list = units(dimension);
   for (std::size_t u = 0; u < list.size(); ++u) {
@@ -311,7 +339,8 @@ std::optional<std::size_t> unit_index(std::string_view key, std::string_view bas
 
 }  // namespace
 
-std::optional<double> unit_factor(std::string_view key, std::string_view base, Dimension dimension) {
+std::optional<double> unit_factor(std::string_view key, std::string_view base,
+                                  Dimension dimension) {
   const auto u = unit_index(key, base, dimension);
   if (!u) return std::nullopt;
   return units(dimension)[*u].to_si;
@@ -322,14 +351,15 @@ std::vector<std::string> alternative_spellings(std::string_view key) {
   static const std::vector<std::vector<std::string>> kForms{
       {"balance_from_butt_m", "balance_cm", "balance_pts_hl"},
       {"from_tip", "from_butt"},
-      {"mass", "equivalent_mass"},  // the forearm: M_F or M_e
-      {"EI", "fundamental_free"},   // the frame's stiffness
-      {"cor", "cor_rigid"},         // the frame's COR, or the one it is derived from
+      {"mass", "equivalent_mass"},     // the forearm: M_F or M_e
+      {"EI", "fundamental_free"},      // the frame's stiffness
+      {"cor", "cor_rigid"},            // the frame's COR, or the one it is derived from
       {"impact_duration", "tension"},  // the strings' duration, or the tension it is derived from
   };
-  constexpr Dimension kDimensions[] = {Dimension::kLength,  Dimension::kMass,    Dimension::kTime,
-                                       Dimension::kSpeed,   Dimension::kInertia, Dimension::kForce,
-                                       Dimension::kStiffness, Dimension::kDamping, Dimension::kFrequency};
+  constexpr Dimension kDimensions[] = {
+      Dimension::kLength,    Dimension::kMass,    Dimension::kTime,
+      Dimension::kSpeed,     Dimension::kInertia, Dimension::kForce,
+      Dimension::kStiffness, Dimension::kDamping, Dimension::kFrequency};
   std::vector<std::string> out;
   const auto add_all_units = [&](std::string_view base) {
     for (const Dimension d : kDimensions) {
@@ -359,7 +389,9 @@ std::vector<std::string> alternative_spellings(std::string_view key) {
 }
 
 FieldOverride::FieldOverride(const std::string& pointer)
-    : at_(pointer), parent_(at_.parent_pointer()), alternatives_(alternative_spellings(at_.back())) {}
+    : at_(pointer),
+      parent_(at_.parent_pointer()),
+      alternatives_(alternative_spellings(at_.back())) {}
 
 void FieldOverride::apply(Json& document, Json value) const {
   Json& parent = document[parent_];
@@ -437,7 +469,8 @@ void ObjectReader::record(std::string_view canonical_key, std::string_view key) 
   if (!canonical_.empty()) name.append(canonical_).append("/");
   name.append(canonical_key);
   const auto it = object_.find(key);
-  keys_->insert_or_assign(std::move(name), KeyOrigin{pointer_of(key), it == object_.end() ? "" : brief(*it)});
+  keys_->insert_or_assign(std::move(name),
+                          KeyOrigin{pointer_of(key), it == object_.end() ? "" : brief(*it)});
 }
 
 void ObjectReader::mark_read(const std::string& own_key) {
@@ -477,7 +510,9 @@ std::optional<double> ObjectReader::quantity(std::string_view base, Dimension di
   const std::string* found = nullptr;
   for (std::size_t u = 0; u < list.size() && u < present.size(); ++u) {
     if (!present[u]) continue;
-    if (found) fail(*present[u], "contradicts " + pointer_of(*found) + ": give the quantity once, in one unit");
+    if (found)
+      fail(*present[u],
+           "contradicts " + pointer_of(*found) + ": give the quantity once, in one unit");
     found = present[u];
     const double given = finite_number(*found, object_[*found]);
     result = given * list[u].to_si;
@@ -517,7 +552,8 @@ const Json* ObjectReader::child(std::string_view key) {
 
 void ObjectReader::finish(const std::vector<std::string>& expected) const {
   for (const auto& [key, value] : object_.items()) {
-    if (std::find(read_.begin(), read_.end(), key) == read_.end()) fail(key, "unknown key (expected one of: " + join(expected) + ")");
+    if (std::find(read_.begin(), read_.end(), key) == read_.end())
+      fail(key, "unknown key (expected one of: " + join(expected) + ")");
   }
 }
 

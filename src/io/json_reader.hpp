@@ -6,13 +6,12 @@
 // naming the source and the JSON pointer.
 
 #include <map>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <set>
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 namespace sweetspot::io {
 
@@ -55,7 +54,17 @@ std::string valid_utf8(std::string_view text);
 
 // A physical dimension and the unit suffixes accepted for it, each with its
 // factor to SI ("_cm" length -> 0.01 m).
-enum class Dimension { kLength, kMass, kTime, kSpeed, kInertia, kForce, kStiffness, kDamping, kFrequency };
+enum class Dimension {
+  kLength,
+  kMass,
+  kTime,
+  kSpeed,
+  kInertia,
+  kForce,
+  kStiffness,
+  kDamping,
+  kFrequency
+};
 
 // Every key that spells `base` in a unit of `dimension` ("mass" -> mass_kg, mass_g).
 std::vector<std::string> spellings(std::string_view base, Dimension dimension);

@@ -14,14 +14,17 @@
 namespace sweetspot::io {
 
 // The threads to use by default: every core the machine shows.
-inline int all_cores() { return static_cast<int>(std::max(1u, std::thread::hardware_concurrency())); }
+inline int all_cores() {
+  return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+}
 
 // Calls work(thread, begin, end) for `threads` (>= 1, at most `count`)
 // contiguous blocks covering [0, count), concurrently, and returns when all
 // are done. The first exception a block throws is rethrown here.
 template <class Work>
 void for_blocks(std::size_t count, int threads, Work&& work) {
-  const std::size_t n = std::min<std::size_t>(static_cast<std::size_t>(std::max(1, threads)), count);
+  const std::size_t n =
+      std::min<std::size_t>(static_cast<std::size_t>(std::max(1, threads)), count);
   if (n <= 1) {
     if (count > 0) work(std::size_t{0}, std::size_t{0}, count);
     return;

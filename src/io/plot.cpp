@@ -1,6 +1,7 @@
 #include "io/plot.hpp"
 
 #include <fcntl.h>
+#include <fmt/format.h>
 #include <spawn.h>
 #include <sys/mman.h>
 #include <sys/socket.h>
@@ -16,8 +17,6 @@
 #include <optional>
 #include <stdexcept>
 #include <string_view>
-
-#include <fmt/format.h>
 
 #include "io/atomic_file.hpp"
 
@@ -106,7 +105,8 @@ void run_gnuplot(const std::string& script, int png_fd) {
   ::close(sockets[1]);
   if (spawned != 0) {
     ::close(sockets[0]);
-    if (spawned == ENOENT) throw PlotFailure("gnuplot is not installed (apt-get install gnuplot-nox)");
+    if (spawned == ENOENT)
+      throw PlotFailure("gnuplot is not installed (apt-get install gnuplot-nox)");
     throw PlotFailure(std::string("cannot start gnuplot: ") + std::strerror(spawned));
   }
   std::string_view left = script;
@@ -132,7 +132,8 @@ void run_gnuplot(const std::string& script, int png_fd) {
 // the IEND chunk at the end (a full disk truncates the file or leaves it empty).
 std::string png_problem(int fd) {
   static constexpr unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-  static constexpr unsigned char kEnd[12] = {0, 0, 0, 0, 'I', 'E', 'N', 'D', 0xae, 0x42, 0x60, 0x82};
+  static constexpr unsigned char kEnd[12] = {0,   0,   0,    0,    'I',  'E',
+                                             'N', 'D', 0xae, 0x42, 0x60, 0x82};
   struct stat info {};
   if (::fstat(fd, &info) != 0) return std::strerror(errno);
   const auto size = static_cast<std::size_t>(info.st_size);
@@ -157,7 +158,8 @@ void copy_file(int from, OutputFile& to) {
   for (off_t at = 0;;) {
     const ssize_t n = ::pread(from, buffer.data(), buffer.size(), at);
     if (n < 0 && errno == EINTR) continue;
-    if (n < 0) throw PlotFailure(std::string("cannot read the rendered plot: ") + std::strerror(errno));
+    if (n < 0)
+      throw PlotFailure(std::string("cannot read the rendered plot: ") + std::strerror(errno));
     if (n == 0) return;
     to.write(std::string_view(buffer.data(), static_cast<std::size_t>(n)));
     at += n;
@@ -183,7 +185,8 @@ std::string quoted(const std::string& text) {
 std::string label(const std::string& text) {
   std::string escaped;
   for (const char c : text) {
-    if (c == '_' || c == '^' || c == '{' || c == '}' || c == '@' || c == '&' || c == '~') escaped += '\\';
+    if (c == '_' || c == '^' || c == '{' || c == '}' || c == '@' || c == '&' || c == '~')
+      escaped += '\\';
     escaped += c;
   }
   return quoted(escaped);
@@ -205,16 +208,18 @@ std::string gnuplot_script(const Plot& plot, const std::string& png_path) {
   s += "set grid\nset key " + plot.key_position + " box opaque\n";
   if (plot.log_x) s += "set logscale x\nset format x '10^{%L}'\n";
   if (plot.log_y) s += "set logscale y\nset format y '10^{%L}'\n";
-  if (plot.x_range) s += fmt::format("set xrange [{}:{}]\n", plot.x_range->first, plot.x_range->second);
-  if (plot.y_range) s += fmt::format("set yrange [{}:{}]\n", plot.y_range->first, plot.y_range->second);
+  if (plot.x_range)
+    s += fmt::format("set xrange [{}:{}]\n", plot.x_range->first, plot.x_range->second);
+  if (plot.y_range)
+    s += fmt::format("set yrange [{}:{}]\n", plot.y_range->first, plot.y_range->second);
   if (!plot.y2_label.empty()) {
     s += "set y2label " + label(plot.y2_label) + "\nset ytics nomirror\nset y2tics\n";
     if (plot.log_y2) s += "set logscale y2\nset format y2 '10^{%L}'\n";
   }
   int tag = 1;
   for (const auto& [x, text] : plot.vertical_lines) {
-    s += fmt::format("set arrow {} from {},graph 0 to {},graph 1 nohead dt 2 lc rgb 'gray40'\n", tag,
-                     x, x);
+    s += fmt::format("set arrow {} from {},graph 0 to {},graph 1 nohead dt 2 lc rgb 'gray40'\n",
+                     tag, x, x);
     // Stagger the labels so that neighbouring lines do not overwrite each other.
     s += fmt::format("set label {} {} at {},graph {} left offset 0.5,0 tc rgb 'gray30'\n", tag,
                      label(text), x, 0.96 - 0.06 * (tag - 1));

@@ -35,7 +35,7 @@ struct Plot {
   std::vector<std::pair<double, std::string>> vertical_lines;  // x and label
   std::string key_position = "top right";
   bool log_x = false;
-  bool log_y = false;  // gnuplot's words: "bottom left", "outside right", ...
+  bool log_y = false;      // gnuplot's words: "bottom left", "outside right", ...
   std::string y2_label{};  // the second y axis, on the right, for series with right_axis
   bool log_y2 = false;
 };

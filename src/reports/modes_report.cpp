@@ -17,7 +17,8 @@ std::string nodes_text(const Mode& mode, double length_m) {
 
 Json mode_json(const Mode& mode, double length_m, bool held) {
   Json nodes = Json::array();
-  for (const double x : mode.nodes_from_butt_m) nodes.push_back({{"from_butt_m", x}, {"from_tip_m", length_m - x}});
+  for (const double x : mode.nodes_from_butt_m)
+    nodes.push_back({{"from_butt_m", x}, {"from_tip_m", length_m - x}});
   Json j{{"frequency_Hz", mode.frequency_Hz}, {"nodes", nodes}};
   if (held) {
     j["undamped_frequency_Hz"] = mode.undamped_frequency_Hz;
@@ -29,7 +30,8 @@ Json mode_json(const Mode& mode, double length_m, bool held) {
 
 }  // namespace
 
-ModesData compute_modes(const DesignFile& file, int modes, double rel_tol, ModeOptions::Method method) {
+ModesData compute_modes(const DesignFile& file, int modes, double rel_tol,
+                        ModeOptions::Method method) {
   try {
     const FlexibleFrame frame = flexible_frame(file.design);
     ModeOptions options = frame.options;
@@ -37,15 +39,20 @@ ModesData compute_modes(const DesignFile& file, int modes, double rel_tol, ModeO
     options.rel_tol = rel_tol;
     options.shape_samples = kShapeSamples;
     if (options.theory == ModeOptions::Theory::kEulerBernoulli) options.method = method;
-    // The report reads only the COPs, which need no COR: a COR to be derived (cor_rigid) is not asked for.
+    // The report reads only the COPs, which need no COR: a COR to be derived (cor_rigid) is not
+    // asked for.
     Design rigid = file.design;
     rigid.cor_rigid.reset();
-    ModesData data{file, evaluate(rigid), free_modes(frame.sections, frame.point_masses, options), {},
+    ModesData data{file,
+                   evaluate(rigid),
+                   free_modes(frame.sections, frame.point_masses, options),
+                   {},
                    frame.mass_distribution_fitted};
     if (file.design.hand.mass_kg > 0.0) {
       options.method = ModeOptions::Method::kFiniteElement;
       options.modes = modes + 2;  // room for the hand rocking on the grip
-      data.held = hand_held_modes(frame.sections, frame.point_masses, hand_coupling(file.design), options);
+      data.held =
+          hand_held_modes(frame.sections, frame.point_masses, hand_coupling(file.design), options);
     }
     return data;
   } catch (const std::invalid_argument& e) {
@@ -57,8 +64,10 @@ std::string modes_report(const ModesData& data, Format format) {
   const double L = data.design.design.implement.length_m();
   if (format == Format::kCsv) {
     std::string csv = "x_from_butt_m";
-    for (std::size_t k = 0; k < data.free.shape_w.size(); ++k) csv += fmt::format(",free_mode_{}", k + 1);
-    for (std::size_t k = 0; k < data.held.shape_w.size(); ++k) csv += fmt::format(",hand_mode_{}", k + 1);
+    for (std::size_t k = 0; k < data.free.shape_w.size(); ++k)
+      csv += fmt::format(",free_mode_{}", k + 1);
+    for (std::size_t k = 0; k < data.held.shape_w.size(); ++k)
+      csv += fmt::format(",hand_mode_{}", k + 1);
     csv += "\n";
     for (std::size_t i = 0; i < data.free.shape_x_m.size(); ++i) {
       csv += exact(data.free.shape_x_m[i]);
@@ -75,55 +84,74 @@ std::string modes_report(const ModesData& data, Format format) {
     for (const Mode& m : data.free.modes) j["free"].push_back(mode_json(m, L, false));
     j["hand_held"] = Json::array();
     for (const Mode& m : data.held.modes) j["hand_held"].push_back(mode_json(m, L, true));
-    j["free_method"] = data.free.method == ModeOptions::Method::kExact ? "exact" : "finite elements";
+    j["free_method"] =
+        data.free.method == ModeOptions::Method::kExact ? "exact" : "finite elements";
     j["hand_held_elements"] = data.held.elements_used;
     return j.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
   }
   std::string md = fmt::format("# Vibration modes: {}\n\n", md_cell(data.design.name));
   if (data.mass_distribution_fitted) {
-    md += "The mass distribution was fitted to the specs (a quadratic density reproducing mass, balance "
-          "and swingweight exactly).\n\n";
+    md +=
+        "The mass distribution was fitted to the specs (a quadratic density reproducing mass, "
+        "balance "
+        "and swingweight exactly).\n\n";
   }
-  md += fmt::format("## Free ({})\n\n| mode | frequency (Hz) | nodes from the tip (m) |\n|---:|---:|---|\n",
-                    data.free.method == ModeOptions::Method::kExact
-                        ? "exact transfer-matrix solution"
-                        : fmt::format("finite elements, {} elements", data.free.elements_used));
+  md += fmt::format(
+      "## Free ({})\n\n| mode | frequency (Hz) | nodes from the tip (m) |\n|---:|---:|---|\n",
+      data.free.method == ModeOptions::Method::kExact
+          ? "exact transfer-matrix solution"
+          : fmt::format("finite elements, {} elements", data.free.elements_used));
   for (std::size_t k = 0; k < data.free.modes.size(); ++k) {
-    md += fmt::format("| {} | {:.2f} | {} |\n", k + 1, data.free.modes[k].frequency_Hz, nodes_text(data.free.modes[k], L));
+    md += fmt::format("| {} | {:.2f} | {} |\n", k + 1, data.free.modes[k].frequency_Hz,
+                      nodes_text(data.free.modes[k], L));
   }
   if (!data.held.modes.empty()) {
     md += fmt::format(
         "\n## Held in the hand (finite elements, {} elements; damped complex modes)\n\n"
-        "| mode | frequency (Hz) | damping ratio | hand's share of the energy | nodes from the tip (m) |\n"
+        "| mode | frequency (Hz) | damping ratio | hand's share of the energy | nodes from the tip "
+        "(m) |\n"
         "|---:|---:|---:|---:|---|\n",
         data.held.elements_used);
     for (std::size_t k = 0; k < data.held.modes.size(); ++k) {
       const Mode& m = data.held.modes[k];
-      md += fmt::format("| {} | {:.2f} | {:.4f} | {:.3f} | {} |\n", k + 1, m.frequency_Hz, m.damping_ratio,
-                        m.hand_energy_fraction, nodes_text(m, L));
+      md += fmt::format("| {} | {:.2f} | {:.4f} | {:.3f} | {} |\n", k + 1, m.frequency_Hz,
+                        m.damping_ratio, m.hand_energy_fraction, nodes_text(m, L));
     }
-    md += "\nModes in which the hand carries most of the energy are the hand rocking on the grip; the "
-          "first mode with a small share is the frame's fundamental.\n";
+    md +=
+        "\nModes in which the hand carries most of the energy are the hand rocking on the grip; "
+        "the "
+        "first mode with a small share is the frame's fundamental.\n";
   }
   if (data.rigid.cop_free_from_butt_m && data.rigid.cop_hand_from_butt_m) {
-    md += fmt::format("\nCentres of percussion from the tip: free (axis at the butt) {:.4f} m, hand-held {:.4f} m.\n",
-                      L - *data.rigid.cop_free_from_butt_m, L - *data.rigid.cop_hand_from_butt_m);
+    md += fmt::format(
+        "\nCentres of percussion from the tip: free (axis at the butt) {:.4f} m, hand-held {:.4f} "
+        "m.\n",
+        L - *data.rigid.cop_free_from_butt_m, L - *data.rigid.cop_hand_from_butt_m);
   }
   return md;
 }
 
 Plot modes_plot(const ModesData& data) {
   const double L = data.design.design.implement.length_m();
-  Plot plot{fmt::format("Mode shapes: {}", data.design.name), "position from the tip (m)",
-            "displacement w (normalised, max |w| = 1)", std::pair{0.0, L}, std::pair{-1.1, 1.1}, {}, {}, {}};
+  Plot plot{fmt::format("Mode shapes: {}", data.design.name),
+            "position from the tip (m)",
+            "displacement w (normalised, max |w| = 1)",
+            std::pair{0.0, L},
+            std::pair{-1.1, 1.1},
+            {},
+            {},
+            {}};
   plot.key_position = "outside right";
   const std::size_t wanted = data.free.modes.size();
-  const auto add = [&](const ModalResult& result, const char* label, const char* dash, bool skip_hand_modes) {
+  const auto add = [&](const ModalResult& result, const char* label, const char* dash,
+                       bool skip_hand_modes) {
     std::size_t shown = 0;
     for (std::size_t k = 0; k < result.shape_w.size() && shown < wanted; ++k) {
       if (skip_hand_modes && result.modes[k].hand_energy_fraction >= 0.5) continue;
       ++shown;
-      PlotSeries s{fmt::format("{} {:.0f} Hz", label, result.modes[k].frequency_Hz), {}, {},
+      PlotSeries s{fmt::format("{} {:.0f} Hz", label, result.modes[k].frequency_Hz),
+                   {},
+                   {},
                    fmt::format("lines lw 2 {}", dash)};
       for (std::size_t i = 0; i < result.shape_x_m.size(); ++i) {
         s.x.push_back(L - result.shape_x_m[i]);
@@ -134,10 +162,13 @@ Plot modes_plot(const ModesData& data) {
   };
   add(data.free, "free", "dt 1", false);
   add(data.held, "hand-held", "dt 2", true);
-  if (data.rigid.cop_free_from_butt_m) plot.vertical_lines.push_back({L - *data.rigid.cop_free_from_butt_m, "COP free"});
-  if (data.rigid.cop_hand_from_butt_m) plot.vertical_lines.push_back({L - *data.rigid.cop_hand_from_butt_m, "COP hand-held"});
+  if (data.rigid.cop_free_from_butt_m)
+    plot.vertical_lines.push_back({L - *data.rigid.cop_free_from_butt_m, "COP free"});
+  if (data.rigid.cop_hand_from_butt_m)
+    plot.vertical_lines.push_back({L - *data.rigid.cop_hand_from_butt_m, "COP hand-held"});
   if (!data.free.modes.empty() && !data.free.modes[0].nodes_from_butt_m.empty()) {
-    plot.vertical_lines.push_back({L - data.free.modes[0].nodes_from_butt_m.back(), "node (free f1)"});
+    plot.vertical_lines.push_back(
+        {L - data.free.modes[0].nodes_from_butt_m.back(), "node (free f1)"});
   }
   return plot;
 }

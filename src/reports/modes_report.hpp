@@ -5,11 +5,11 @@
 
 #include <string>
 
-#include "sweetspot/beam_modes.hpp"
-#include "sweetspot/evaluate.hpp"
 #include "io/design_reader.hpp"
 #include "io/format.hpp"
 #include "io/plot.hpp"
+#include "sweetspot/beam_modes.hpp"
+#include "sweetspot/evaluate.hpp"
 
 namespace sweetspot::io {
 
@@ -27,7 +27,8 @@ struct ModesData {
 // The first `modes` free modes (exact solver unless Timoshenko or `method`
 // says FE) and the hand-held ones (FE to `rel_tol`). Throws InputError at the
 // design's JSON path when the design cannot give modes.
-ModesData compute_modes(const DesignFile& design, int modes, double rel_tol, ModeOptions::Method method);
+ModesData compute_modes(const DesignFile& design, int modes, double rel_tol,
+                        ModeOptions::Method method);
 
 // md: frequencies, damping and nodes; json: the same; csv: the shape table
 // (x from the butt, then w of each free mode, then each hand-held mode).

@@ -1,8 +1,8 @@
 #include "reports/optimization_report.hpp"
 
-#include <cmath>
-
 #include <fmt/format.h>
+
+#include <cmath>
 
 namespace sweetspot::io {
 namespace {
@@ -17,18 +17,24 @@ std::string bound_hit(const StudyVariable& v, double x) {
 
 std::string goal_phrase(const ObjectiveTerm& term) {
   switch (term.goal) {
-    case Goal::kMinimize: return "lowest";
-    case Goal::kMaximize: return "highest";
-    case Goal::kTarget: return fmt::format("closest to {}", significant(term.target));
+    case Goal::kMinimize:
+      return "lowest";
+    case Goal::kMaximize:
+      return "highest";
+    case Goal::kTarget:
+      return fmt::format("closest to {}", significant(term.target));
   }
   return "";
 }
 
 const char* outcome_name(Outcome outcome) {
   switch (outcome) {
-    case Outcome::kOptimum: return "optimum";
-    case Outcome::kInfeasible: return "infeasible";
-    case Outcome::kNoValue: return "no_value";
+    case Outcome::kOptimum:
+      return "optimum";
+    case Outcome::kInfeasible:
+      return "infeasible";
+    case Outcome::kNoValue:
+      return "no_value";
   }
   return "";
 }
@@ -38,14 +44,16 @@ std::optional<double> output_value(const OutputSpec& o, const std::optional<Eval
 }
 
 std::string with_unit(double value, std::string_view unit, int digits = 6) {
-  return unit.empty() ? significant(value, digits) : significant(value, digits) + " " + std::string(unit);
+  return unit.empty() ? significant(value, digits)
+                      : significant(value, digits) + " " + std::string(unit);
 }
 
 // "`swingweight_kg_cm2 <= 100` is 234 kg cm^2, outside its limit by 134 (tolerance 0.0001)".
 std::string violated(const ConstraintReport& c) {
   if (!c.value) return fmt::format("`{}` has no value", c.name);
-  return fmt::format("`{}` is {}, outside its limit by {} (tolerance {})", c.name, with_unit(*c.value, c.unit, 4),
-                     significant(c.violation, 4), significant(c.tolerance));
+  return fmt::format("`{}` is {}, outside its limit by {} (tolerance {})", c.name,
+                     with_unit(*c.value, c.unit, 4), significant(c.violation, 4),
+                     significant(c.tolerance));
 }
 
 }  // namespace
@@ -73,7 +81,10 @@ std::string optimization_report(const Study& study, const OptimizationResult& r,
     Json& variables = j["variables"];
     for (std::size_t i = 0; i < study.variables.size(); ++i) {
       const StudyVariable& v = study.variables[i];
-      variables.push_back({{"path", v.pointer}, {"min", v.min}, {"max", v.max}, {"start", r.start_x[i]},
+      variables.push_back({{"path", v.pointer},
+                           {"min", v.min},
+                           {"max", v.max},
+                           {"start", r.start_x[i]},
                            {"best", r.summary.x[i]},
                            {"at_bound", bound_hit(v, r.summary.x[i])}});
     }
@@ -108,8 +119,11 @@ std::string optimization_report(const Study& study, const OptimizationResult& r,
     const StudyVariable& v = study.variables[i];
     const double x = r.summary.x[i];
     const std::string hit = bound_hit(v, x);
-    changes += fmt::format("{}`{}` = {}{}", changes.empty() ? "" : ", ", v.pointer, significant(x, 4),
-                           hit == "min" ? " (its lower bound)" : hit == "max" ? " (its upper bound)" : "");
+    changes +=
+        fmt::format("{}`{}` = {}{}", changes.empty() ? "" : ", ", v.pointer, significant(x, 4),
+                    hit == "min"   ? " (its lower bound)"
+                    : hit == "max" ? " (its upper bound)"
+                                   : "");
   }
   std::string active;
   for (const ConstraintReport& c : r.constraints) {
@@ -118,15 +132,17 @@ std::string optimization_report(const Study& study, const OptimizationResult& r,
   const auto best_lead = output_value(*lead.output, best);
   const auto start_lead = output_value(*lead.output, start);
   const std::string spread =
-      study.over_impacts ? fmt::format(" ({} over impacts {}–{} m from the tip)",
-                                       study.over_impacts->reduce == ImpactSpread::Reduce::kMax ? "worst case" : "mean",
-                                       significant(study.over_impacts->from_tip_lo_m),
-                                       significant(study.over_impacts->from_tip_hi_m))
-                         : std::string();
+      study.over_impacts
+          ? fmt::format(
+                " ({} over impacts {}–{} m from the tip)",
+                study.over_impacts->reduce == ImpactSpread::Reduce::kMax ? "worst case" : "mean",
+                significant(study.over_impacts->from_tip_lo_m),
+                significant(study.over_impacts->from_tip_hi_m))
+          : std::string();
   // The lead output at the best design and at the start: over a spread of
   // impacts that is the objective itself.
-  const std::string best_text =
-      study.over_impacts ? significant(r.summary.objective, 4) : (best_lead ? significant(*best_lead, 4) : "—");
+  const std::string best_text = study.over_impacts ? significant(r.summary.objective, 4)
+                                                   : (best_lead ? significant(*best_lead, 4) : "—");
   const std::string start_text =
       study.over_impacts ? (r.start_objective ? significant(*r.start_objective, 4) : "no value")
                          : (start_lead ? significant(*start_lead, 4) : "no value");
@@ -134,65 +150,78 @@ std::string optimization_report(const Study& study, const OptimizationResult& r,
   if (!study.question.empty()) md += "**Question.** " + study.question + "\n\n";
   switch (r.outcome) {
     case Outcome::kOptimum:
-      md += fmt::format("**Answer.** The {} `{}`{} is {} {} (the starting design gives {}), with {}.{}\n\n",
-                        goal_phrase(lead), lead.output->name, spread, best_text, lead.output->unit, start_text,
-                        changes,
-                        active.empty() ? " No constraint is active." : " Active constraints: " + active + ".");
+      md += fmt::format(
+          "**Answer.** The {} `{}`{} is {} {} (the starting design gives {}), with {}.{}\n\n",
+          goal_phrase(lead), lead.output->name, spread, best_text, lead.output->unit, start_text,
+          changes,
+          active.empty() ? " No constraint is active." : " Active constraints: " + active + ".");
       break;
     case Outcome::kInfeasible: {
       std::string broken;
       for (const ConstraintReport& c : r.constraints) {
         if (!c.satisfied) broken += (broken.empty() ? "" : "; ") + violated(c);
       }
-      md += fmt::format("**Answer.** No design meets the constraints; the least violating one is {}, where {}. "
-                        "Its `{}`{} is {} {} (the starting design gives {}).\n\n",
-                        changes, broken, lead.output->name, spread, best_text, lead.output->unit, start_text);
+      md += fmt::format(
+          "**Answer.** No design meets the constraints; the least violating one is {}, where {}. "
+          "Its `{}`{} is {} {} (the starting design gives {}).\n\n",
+          changes, broken, lead.output->name, spread, best_text, lead.output->unit, start_text);
       break;
     }
     case Outcome::kNoValue:
-      md += fmt::format("**Answer.** No valid design was found: no design the search reached gives `{}`{} a "
-                        "value. At the last one it kept, {}, {}.\n\n",
-                        lead.output->name, spread, changes, r.no_value);
+      md += fmt::format(
+          "**Answer.** No valid design was found: no design the search reached gives `{}`{} a "
+          "value. At the last one it kept, {}, {}.\n\n",
+          lead.output->name, spread, changes, r.no_value);
       break;
   }
   if (r.outcome == Outcome::kOptimum && lead.goal == Goal::kTarget && study.objective.size() == 1 &&
       !study.over_impacts && best_lead &&
       std::abs(*best_lead - lead.target) > kTargetReached * std::max(1.0, std::abs(lead.target))) {
-    md += fmt::format("The target {} cannot be reached within the variables' bounds: {} {} is as close as "
-                      "these designs get.\n\n",
-                      significant(lead.target), significant(*best_lead, 4), lead.output->unit);
+    md += fmt::format(
+        "The target {} cannot be reached within the variables' bounds: {} {} is as close as "
+        "these designs get.\n\n",
+        significant(lead.target), significant(*best_lead, 4), lead.output->unit);
   }
   md += "## Variables\n\n| path | min | max | start | best |\n|---|---:|---:|---:|---:|\n";
   for (std::size_t i = 0; i < study.variables.size(); ++i) {
     const StudyVariable& v = study.variables[i];
-    md += fmt::format("| `{}` | {} | {} | {} | {} |\n", v.pointer, significant(v.min), significant(v.max),
-                      significant(r.start_x[i]), significant(r.summary.x[i]));
+    md += fmt::format("| `{}` | {} | {} | {} | {} |\n", v.pointer, significant(v.min),
+                      significant(v.max), significant(r.start_x[i]), significant(r.summary.x[i]));
   }
   if (!r.constraints.empty()) {
-    md += "\n## Constraints\n\nA constraint is met when its value lies within its tolerance of the limit (the "
-          "study's, or 10⁻⁶ of the limit's size, at least 10⁻⁶).\n\n"
-          "| constraint | value at the best design | tolerance | outside the limit by | satisfied | active |\n"
-          "|---|---:|---:|---:|---|---|\n";
+    md +=
+        "\n## Constraints\n\nA constraint is met when its value lies within its tolerance of the "
+        "limit (the "
+        "study's, or 10⁻⁶ of the limit's size, at least 10⁻⁶).\n\n"
+        "| constraint | value at the best design | tolerance | outside the limit by | satisfied | "
+        "active |\n"
+        "|---|---:|---:|---:|---|---|\n";
     for (const ConstraintReport& c : r.constraints) {
-      md += fmt::format("| `{}` | {} | {} | {} | {} | {} |\n", c.name, c.value ? significant(*c.value) : "—",
-                        significant(c.tolerance), c.value ? significant(c.violation) : "—",
-                        c.satisfied ? "yes" : "**no**", c.active ? "yes" : "no");
+      md += fmt::format("| `{}` | {} | {} | {} | {} | {} |\n", c.name,
+                        c.value ? significant(*c.value) : "—", significant(c.tolerance),
+                        c.value ? significant(c.violation) : "—", c.satisfied ? "yes" : "**no**",
+                        c.active ? "yes" : "no");
     }
   }
-  md += fmt::format("\n## Search\n\nObjective (minimised form) {} after {} evaluations; {}; NLopt termination: {}.{}\n",
-                    has_value ? significant(r.summary.objective) : std::string("—"), r.summary.evaluations,
-                    r.summary.algorithm, r.summary.termination,
-                    with_timing ? fmt::format(" Wall time {:.2f} ms.", r.summary.seconds * 1e3) : std::string());
-  md += "\n## Outputs, start and optimum\n\n| output | start | optimum | unit |\n|---|---:|---:|---|\n";
+  md += fmt::format(
+      "\n## Search\n\nObjective (minimised form) {} after {} evaluations; {}; NLopt termination: "
+      "{}.{}\n",
+      has_value ? significant(r.summary.objective) : std::string("—"), r.summary.evaluations,
+      r.summary.algorithm, r.summary.termination,
+      with_timing ? fmt::format(" Wall time {:.2f} ms.", r.summary.seconds * 1e3) : std::string());
+  md +=
+      "\n## Outputs, start and optimum\n\n| output | start | optimum | unit "
+      "|\n|---|---:|---:|---|\n";
   for (const OutputSpec& o : output_specs()) {
     const auto a = output_value(o, start), b = output_value(o, best);
-    md += fmt::format("| `{}` | {} | {} | {} |\n", o.name, a ? significant(*a) : "—", b ? significant(*b) : "—", o.unit);
+    md += fmt::format("| `{}` | {} | {} | {} |\n", o.name, a ? significant(*a) : "—",
+                      b ? significant(*b) : "—", o.unit);
   }
-  md += std::string(r.outcome == Outcome::kOptimum ? "\nThe best design"
+  md += std::string(r.outcome == Outcome::kOptimum      ? "\nThe best design"
                     : r.outcome == Outcome::kInfeasible ? "\nThe least violating design"
                                                         : "\nThe last design the search kept") +
-        " as a design file (`sweetspot evaluate` accepts it):\n\n```json\n" + design_to_json(r.best).dump(2, ' ', false, Json::error_handler_t::replace) +
-        "\n```\n";
+        " as a design file (`sweetspot evaluate` accepts it):\n\n```json\n" +
+        design_to_json(r.best).dump(2, ' ', false, Json::error_handler_t::replace) + "\n```\n";
   return md;
 }
 
@@ -203,9 +232,14 @@ Plot convergence_plot(const Study& study, const OptimizationResult& r) {
     const double value = r.summary.history[i];
     objective.y.push_back(std::abs(value) < kPenalty / 10 ? std::optional(value) : std::nullopt);
   }
-  Plot plot{"Convergence: " + study.name, "evaluation (including difference gradients)",
-            fmt::format("objective ({})", study.objective.front().output->name), std::nullopt,
-            std::nullopt, {objective}, {}, {}};
+  Plot plot{"Convergence: " + study.name,
+            "evaluation (including difference gradients)",
+            fmt::format("objective ({})", study.objective.front().output->name),
+            std::nullopt,
+            std::nullopt,
+            {objective},
+            {},
+            {}};
   if (!r.constraints.empty()) {
     // Beside the objective, on its own logarithmic axis: how far the best
     // point is outside its worst limit (the line ends where every limit holds).
@@ -214,7 +248,8 @@ Plot convergence_plot(const Study& study, const OptimizationResult& r) {
     for (std::size_t i = 0; i < r.summary.violation_history.size(); ++i) {
       violation.x.push_back(static_cast<double>(i + 1));
       const double value = r.summary.violation_history[i];
-      violation.y.push_back(value > 0 && value < kPenalty / 10 ? std::optional(value) : std::nullopt);
+      violation.y.push_back(value > 0 && value < kPenalty / 10 ? std::optional(value)
+                                                               : std::nullopt);
     }
     plot.series.push_back(std::move(violation));
     plot.y2_label = "constraint violation (multiples of its tolerance; <= 1 is met)";

@@ -1,10 +1,10 @@
 #include "reports/paper_reports.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-
-#include <fmt/format.h>
 
 #include "io/atomic_file.hpp"
 #include "io/input_error.hpp"
@@ -95,15 +95,14 @@ std::string table1_report(const std::vector<Table1Row>& rows, Format format) {
     for (const Table1Row& r : rows) {
       const Design& d = r.design.design;
       const Evaluation& e = r.evaluation;
-      csv += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", r.row, exact(e.mass_kg),
-                         optional_csv(head_to_handle_ratio(d.implement)), exact(d.cor),
-                         exact(d.impact_duration_s), exact(d.hand.mass_kg),
-                         exact(d.forearm_equivalent_mass_kg), exact(e.effective_mass_kg),
-                         exact(e.apparent_cor), exact(e.peak_impact_force_N),
-                         exact(e.peak_wrist_force_N), optional_csv(r.paper_F0_N),
-                         optional_csv(r.paper_Fw_N),
-                         optional_csv(diff(e.peak_impact_force_N, r.paper_F0_N)),
-                         optional_csv(diff(e.peak_wrist_force_N, r.paper_Fw_N)));
+      csv += fmt::format(
+          "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", r.row, exact(e.mass_kg),
+          optional_csv(head_to_handle_ratio(d.implement)), exact(d.cor), exact(d.impact_duration_s),
+          exact(d.hand.mass_kg), exact(d.forearm_equivalent_mass_kg), exact(e.effective_mass_kg),
+          exact(e.apparent_cor), exact(e.peak_impact_force_N), exact(e.peak_wrist_force_N),
+          optional_csv(r.paper_F0_N), optional_csv(r.paper_Fw_N),
+          optional_csv(diff(e.peak_impact_force_N, r.paper_F0_N)),
+          optional_csv(diff(e.peak_wrist_force_N, r.paper_Fw_N)));
     }
     return csv;
   }
@@ -128,14 +127,14 @@ std::string table1_report(const std::vector<Table1Row>& rows, Format format) {
     const auto show = [](const std::optional<double>& v, const char* spec) {
       return v ? fmt::format(fmt::runtime(spec), *v) : std::string("—");
     };
-    md += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {:.4f} | {:.4f} | {:.1f} | {} | {} | "
-                      "{:.1f} | {} | {} |\n",
-                      r.row, significant(e.mass_kg), show(ratio, "{:.2g}"), significant(d.cor),
-                      significant(d.impact_duration_s * 1000.0), significant(d.hand.mass_kg),
-                      significant(d.forearm_equivalent_mass_kg), e.effective_mass_kg,
-                      e.apparent_cor, e.peak_impact_force_N, show(r.paper_F0_N, "{:.0f}"),
-                      show(dF0, "{:+.2f}"), e.peak_wrist_force_N, show(r.paper_Fw_N, "{:.0f}"),
-                      show(dFw, "{:+.2f}"));
+    md += fmt::format(
+        "| {} | {} | {} | {} | {} | {} | {} | {:.4f} | {:.4f} | {:.1f} | {} | {} | "
+        "{:.1f} | {} | {} |\n",
+        r.row, significant(e.mass_kg), show(ratio, "{:.2g}"), significant(d.cor),
+        significant(d.impact_duration_s * 1000.0), significant(d.hand.mass_kg),
+        significant(d.forearm_equivalent_mass_kg), e.effective_mass_kg, e.apparent_cor,
+        e.peak_impact_force_N, show(r.paper_F0_N, "{:.0f}"), show(dF0, "{:+.2f}"),
+        e.peak_wrist_force_N, show(r.paper_Fw_N, "{:.0f}"), show(dFw, "{:+.2f}"));
   }
   md += fmt::format(
       "\nLargest difference from the printed values: {:.2f} N in F0 and {:.2f} N in F_w, "
@@ -171,12 +170,13 @@ Figure figure5(const DesignFile& beam) {
   if (zero) figure.plot.vertical_lines.push_back({(L - *zero) * 100.0, "COP for the 2 cm disk"});
   if (pole) figure.plot.vertical_lines.push_back({(L - *pole) * 100.0, "COP for the 16 cm disk"});
   const auto at_d = [&](std::optional<double> from_butt_m) {
-    return from_butt_m ? fmt::format("at d = {:.1f} cm", (L - *from_butt_m) * 100.0) : std::string("nowhere");
+    return from_butt_m ? fmt::format("at d = {:.1f} cm", (L - *from_butt_m) * 100.0)
+                       : std::string("nowhere");
   };
-  figure.summary = fmt::format("v2/v16 is 0 {}{}, has its pole {}{} and is 1 at the centre, d = {:.0f} cm{}.",
-                               at_d(zero), paper_says(beam, "COP 23.3 cm from the end"), at_d(pole),
-                               paper_says(beam, "14.4 cm"), (L - body.com_from_butt_m) * 100.0,
-                               paper_says(beam, "36 cm"));
+  figure.summary = fmt::format(
+      "v2/v16 is 0 {}{}, has its pole {}{} and is 1 at the centre, d = {:.0f} cm{}.", at_d(zero),
+      paper_says(beam, "COP 23.3 cm from the end"), at_d(pole), paper_says(beam, "14.4 cm"),
+      (L - body.com_from_butt_m) * 100.0, paper_says(beam, "36 cm"));
   return figure;
 }
 
@@ -246,7 +246,8 @@ Figure figure11(const DesignFile& beam) {
   return figure;
 }
 
-std::vector<ReportEntry> write_paper_reports(const std::string& designs_dir, const std::string& out_dir,
+std::vector<ReportEntry> write_paper_reports(const std::string& designs_dir,
+                                             const std::string& out_dir,
                                              const ReportWriter& write) {
   // Read and compute everything before writing anything.
   const std::vector<Table1Row> rows = compute_table1(designs_dir + "/table1");
@@ -265,13 +266,18 @@ std::vector<ReportEntry> write_paper_reports(const std::string& designs_dir, con
   return {
       {"[table1.md](table1.md), [table1.csv](table1.csv)",
        "Table I of the paper: peak force on the strings F0 and on the wrist F_w for eight "
-       "racquet/player combinations, next to the printed values. " + last_line.substr(0, last_line.size() - 1)},
+       "racquet/player combinations, next to the printed values. " +
+           last_line.substr(0, last_line.size() - 1)},
       {"[fig5.csv](fig5.csv), [fig5.png](fig5.png)",
-       "Fig. 5: velocity ratio v2/v16 of the free 72 cm beam against the impact distance d from the "
-       "free end (Eq. 6). " + fig5.summary},
+       "Fig. 5: velocity ratio v2/v16 of the free 72 cm beam against the impact distance d from "
+       "the "
+       "free end (Eq. 6). " +
+           fig5.summary},
       {"[fig11.csv](fig11.csv), [fig11.png](fig11.png)",
-       "Fig. 11: rotation axis s (from the handle end) against d, for the free beam and the beam held "
-       "in the hand. " + fig11.summary},
+       "Fig. 11: rotation axis s (from the handle end) against d, for the free beam and the beam "
+       "held "
+       "in the hand. " +
+           fig11.summary},
   };
 }
 

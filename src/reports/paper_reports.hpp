@@ -8,11 +8,11 @@
 #include <string>
 #include <vector>
 
-#include "sweetspot/evaluate.hpp"
 #include "io/design_reader.hpp"
 #include "io/format.hpp"
 #include "io/plot.hpp"
 #include "reports/report_writer.hpp"
+#include "sweetspot/evaluate.hpp"
 
 namespace sweetspot::io {
 
@@ -53,7 +53,7 @@ Figure figure11(const DesignFile& beam);
 
 // Table I and Figs. 5 and 11 from the designs in `designs_dir`: table1.md,
 // table1.csv, fig5.csv, fig5.png, fig11.csv, fig11.png. Returns their index entries.
-std::vector<ReportEntry> write_paper_reports(const std::string& designs_dir, const std::string& out_dir,
-                                             const ReportWriter& write);
+std::vector<ReportEntry> write_paper_reports(const std::string& designs_dir,
+                                             const std::string& out_dir, const ReportWriter& write);
 
 }  // namespace sweetspot::io

@@ -1,17 +1,17 @@
 #include "reports/reports.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <filesystem>
 #include <sstream>
 
-#include <fmt/format.h>
-
 #include "io/atomic_file.hpp"
 #include "io/input_error.hpp"
 #include "reports/modes_report.hpp"
+#include "reports/optimization_report.hpp"
 #include "reports/paper_reports.hpp"
 #include "reports/response_report.hpp"
-#include "reports/optimization_report.hpp"
 #include "studies/optimization.hpp"
 #include "studies/study.hpp"
 #include "studies/sweep.hpp"
@@ -47,23 +47,24 @@ std::vector<fs::path> study_files(const std::string& designs_dir) {
 void write_reports(const std::string& designs_dir, const std::string& out_dir, std::ostream& log) {
   // Nothing is created before the inputs are known to be there.
   if (!fs::is_directory(designs_dir)) {
-    throw InputError(designs_dir, "", "not a folder of designs (expected table1/, paper-beam.json, studies/)");
+    throw InputError(designs_dir, "",
+                     "not a folder of designs (expected table1/, paper-beam.json, studies/)");
   }
-  const ReportWriter write{
-      [&](const std::string& name, const std::string& content) {
-        // Folders appear with their first file, so a run that fails early leaves none behind.
-        fs::create_directories(fs::path(out_dir + "/" + name).parent_path());
-        write_file_atomically(out_dir + "/" + name, content);
-        log << "wrote " << out_dir << "/" << name << "\n";
-      },
-      [&](const std::string& name, const Plot& plot) {
-        std::string why;
-        if (render_png(plot, out_dir + "/" + name, &why)) {
-          log << "wrote " << out_dir << "/" << name << "\n";
-        } else {
-          log << "skipped " << out_dir << "/" << name << ": " << why << "\n";
-        }
-      }};
+  const ReportWriter write{[&](const std::string& name, const std::string& content) {
+                             // Folders appear with their first file, so a run that fails early
+                             // leaves none behind.
+                             fs::create_directories(fs::path(out_dir + "/" + name).parent_path());
+                             write_file_atomically(out_dir + "/" + name, content);
+                             log << "wrote " << out_dir << "/" << name << "\n";
+                           },
+                           [&](const std::string& name, const Plot& plot) {
+                             std::string why;
+                             if (render_png(plot, out_dir + "/" + name, &why)) {
+                               log << "wrote " << out_dir << "/" << name << "\n";
+                             } else {
+                               log << "skipped " << out_dir << "/" << name << ": " << why << "\n";
+                             }
+                           }};
 
   std::vector<ReportEntry> entries = write_paper_reports(designs_dir, out_dir, write);
 
@@ -75,26 +76,30 @@ void write_reports(const std::string& designs_dir, const std::string& out_dir, s
   entries.push_back(
       {"[modes-paper-beam.md](modes-paper-beam.md), [.csv](modes-paper-beam.csv), "
        "[.png](modes-paper-beam.png)",
-       fmt::format("Vibration modes of the paper's beam, free and hand-held (paper: 193 Hz free, 171 Hz "
-                   "held, nodes 15.8 cm from each end): {:.1f} Hz free with its node {:.1f} cm from the "
-                   "end; {:.1f} Hz held (damping ratio {:.3f}).",
-                   modes.free.modes[0].frequency_Hz,
-                   100 * (beam.design.implement.length_m() - modes.free.modes[0].nodes_from_butt_m.back()),
-                   hand_held_fundamental(modes.held)->frequency_Hz,
-                   hand_held_fundamental(modes.held)->damping_ratio)});
+       fmt::format(
+           "Vibration modes of the paper's beam, free and hand-held (paper: 193 Hz free, 171 Hz "
+           "held, nodes 15.8 cm from each end): {:.1f} Hz free with its node {:.1f} cm from the "
+           "end; {:.1f} Hz held (damping ratio {:.3f}).",
+           modes.free.modes[0].frequency_Hz,
+           100 * (beam.design.implement.length_m() - modes.free.modes[0].nodes_from_butt_m.back()),
+           hand_held_fundamental(modes.held)->frequency_Hz,
+           hand_held_fundamental(modes.held)->damping_ratio)});
 
   const DesignFile thick = load_design(designs_dir + "/paper-beam-timoshenko.json");
   const ModesData shear = compute_modes(thick, 3, 1e-6, ModeOptions::Method::kFiniteElement);
   write.text("modes-paper-beam-timoshenko.md", modes_report(shear, Format::kMarkdown));
   entries.push_back(
       {"[modes-paper-beam-timoshenko.md](modes-paper-beam-timoshenko.md)",
-       fmt::format("The beam with shear and rotary inertia (Timoshenko, G = 1 GPa): modes 2 and 3 at {:.1f} "
-                   "and {:.1f} Hz, against {:.1f} and {:.1f} Hz without (Euler-Bernoulli) and the measured 506 "
+       fmt::format("The beam with shear and rotary inertia (Timoshenko, G = 1 GPa): modes 2 and 3 "
+                   "at {:.1f} "
+                   "and {:.1f} Hz, against {:.1f} and {:.1f} Hz without (Euler-Bernoulli) and the "
+                   "measured 506 "
                    "and 962 Hz.",
                    shear.free.modes[1].frequency_Hz, shear.free.modes[2].frequency_Hz,
                    modes.free.modes[1].frequency_Hz, modes.free.modes[2].frequency_Hz)});
 
-  for (ReportEntry& entry : write_response_reports(designs_dir, write)) entries.push_back(std::move(entry));
+  for (ReportEntry& entry : write_response_reports(designs_dir, write))
+    entries.push_back(std::move(entry));
 
   for (const fs::path& path : study_files(designs_dir)) {
     const Study study = load_study(path.string());
@@ -116,7 +121,8 @@ void write_reports(const std::string& designs_dir, const std::string& out_dir, s
         write.plot(png, plots[k]);
         links += fmt::format(", [{}]({})", study.sweep_outputs[k]->name, png);
       }
-      entries.push_back({links, study.name + (study.question.empty() ? "" : ": " + study.question)});
+      entries.push_back(
+          {links, study.name + (study.question.empty() ? "" : ": " + study.question)});
     }
   }
 

@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "sweetspot/impact_response.hpp"
 #include "io/design_reader.hpp"
-#include "reports/paper_reports.hpp"
 #include "io/plot.hpp"
+#include "reports/paper_reports.hpp"
+#include "sweetspot/impact_response.hpp"
 
 namespace sweetspot::io {
 
@@ -45,6 +45,7 @@ std::vector<Plot> response_plots(const ResponseData& data);
 // Derived COR against the free fundamental for the Table I racquet, the
 // frequencies that give the paper's 0.8 and 0.6, and the impact duration
 // against string tension with the tensions that give Table I's 4 and 6 ms.
-std::vector<ReportEntry> write_response_reports(const std::string& designs_dir, const ReportWriter& write);
+std::vector<ReportEntry> write_response_reports(const std::string& designs_dir,
+                                                const ReportWriter& write);
 
 }  // namespace sweetspot::io

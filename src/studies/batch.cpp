@@ -1,26 +1,26 @@
 #include "studies/batch.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
-#include <cstring>
-#include <array>
 #include <cstdint>
+#include <cstring>
 #include <map>
 #include <memory>
 #include <span>
 #include <vector>
 
-#include <fmt/format.h>
-
-#include "sweetspot/evaluate.hpp"
-#include "sweetspot/frame_modes.hpp"
 #include "io/design_reader.hpp"
 #include "io/input_error.hpp"
 #include "io/outputs.hpp"
 #include "io/parallel.hpp"
 #include "studies/design_binding.hpp"
+#include "sweetspot/evaluate.hpp"
+#include "sweetspot/frame_modes.hpp"
 
 namespace sweetspot::io {
 namespace {
@@ -47,7 +47,8 @@ std::string shown_cell(std::string_view text) { return "'" + one_line(valid_utf8
 // opening the input is skipped.
 class LineReader {
  public:
-  LineReader(std::istream& in, const std::string& source) : in_(in), source_(source), buffer_(1 << 16) {}
+  LineReader(std::istream& in, const std::string& source)
+      : in_(in), source_(source), buffer_(1 << 16) {}
 
   std::size_t line_number() const { return line_; }
 
@@ -66,11 +67,15 @@ class LineReader {
       const auto* newline = static_cast<const char*>(std::memchr(from, '\n', end_ - begin_));
       const std::size_t take = newline ? static_cast<std::size_t>(newline - from) : end_ - begin_;
       if (text.size() + take > kMaxBatchLineBytes) {
-        refuse(line_ + 1, continued ? fmt::format("a CSV record longer than {} bytes, the limit (is a quoted "
-                                                  "field left open?)", kMaxBatchLineBytes)
-                                    : fmt::format("a line longer than {} bytes, the limit", kMaxBatchLineBytes));
+        refuse(line_ + 1,
+               continued
+                   ? fmt::format("a CSV record longer than {} bytes, the limit (is a quoted "
+                                 "field left open?)",
+                                 kMaxBatchLineBytes)
+                   : fmt::format("a line longer than {} bytes, the limit", kMaxBatchLineBytes));
       }
-      if (std::memchr(from, '\0', take)) refuse(line_ + 1, "a NUL byte: the file is binary, expected text");
+      if (std::memchr(from, '\0', take))
+        refuse(line_ + 1, "a NUL byte: the file is binary, expected text");
       text.append(from, take);
       begin_ += take;
       if (newline) {
@@ -84,10 +89,13 @@ class LineReader {
     }
     ++line_;
     if (text.size() > start && text.back() == '\r') text.pop_back();
-    if (line_ == 1 && std::string_view(text).starts_with(kByteOrderMark)) text.erase(0, kByteOrderMark.size());
+    if (line_ == 1 && std::string_view(text).starts_with(kByteOrderMark))
+      text.erase(0, kByteOrderMark.size());
     const std::size_t bad = invalid_utf8_at(std::string_view(text).substr(start));
     if (bad != std::string_view::npos) {
-      refuse(line_, fmt::format("byte {} is not UTF-8 text (expected a UTF-8 CSV or JSON Lines file)", bad + 1));
+      refuse(line_,
+             fmt::format("byte {} is not UTF-8 text (expected a UTF-8 CSV or JSON Lines file)",
+                         bad + 1));
     }
     return true;
   }
@@ -146,7 +154,12 @@ class CsvScan {
   }
 
  private:
-  enum class State { kFieldStart, kUnquoted, kQuoted, kQuote };  // kQuote: a quote inside a quoted field
+  enum class State {
+    kFieldStart,
+    kUnquoted,
+    kQuoted,
+    kQuote
+  };  // kQuote: a quote inside a quoted field
   State state_ = State::kFieldStart;
 };
 
@@ -197,16 +210,20 @@ CsvRecord split_csv(std::string_view record, std::size_t max_fields) {
         }
       }
       if (i < record.size() && record[i] != ',') {
-        out.error = fmt::format("field {}: text after the closing quote (quote the whole field, "
-                                "writing a quote inside it twice)", number);
+        out.error = fmt::format(
+            "field {}: text after the closing quote (quote the whole field, "
+            "writing a quote inside it twice)",
+            number);
         return out;
       }
     } else {
       const std::size_t end = std::min(record.find(',', i), record.size());
       const std::string_view text = record.substr(i, end - i);
       if (text.find('"') != std::string_view::npos) {
-        out.error = fmt::format("field {}: a quote inside an unquoted field (quote the whole field, "
-                                "writing a quote inside it twice)", number);
+        out.error = fmt::format(
+            "field {}: a quote inside an unquoted field (quote the whole field, "
+            "writing a quote inside it twice)",
+            number);
         return out;
       }
       field.assign(text);
@@ -231,14 +248,16 @@ std::string field_problem(std::string_view field) {
   std::size_t start = 0;
   for (int depth = 0;; ++depth) {
     const std::size_t dot = field.find('.', start);
-    const std::string_view name = field.substr(start, dot == std::string_view::npos ? dot : dot - start);
+    const std::string_view name =
+        field.substr(start, dot == std::string_view::npos ? dot : dot - start);
     if (name.empty()) return "an empty name between dots" + std::string(kExample);
     if (name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_") !=
         std::string_view::npos) {
       return "a character other than letters, digits, '_' and '.'" + std::string(kExample);
     }
     if (name.find_first_not_of("0123456789") == std::string_view::npos) {
-      if (depth == 0) return "a path starts with a part of the design, not an index" + std::string(kExample);
+      if (depth == 0)
+        return "a path starts with a part of the design, not an index" + std::string(kExample);
       if (name.size() > 1 && name[0] == '0') return "an array index with a leading zero";
       if (name.size() > 5) return "an array index above 99999";
     }
@@ -253,7 +272,9 @@ std::vector<std::string> read_header(std::string_view line, const std::string& w
   CsvRecord record = split_csv(line, kMaxBatchColumns);
   if (!record.error.empty()) throw InputError(where, "", "the header is not CSV: " + record.error);
   if (record.count > kMaxBatchColumns) {
-    throw InputError(where, "", fmt::format("{} columns, more than the limit of {}", record.count, kMaxBatchColumns));
+    throw InputError(
+        where, "",
+        fmt::format("{} columns, more than the limit of {}", record.count, kMaxBatchColumns));
   }
   std::vector<std::string> header;
   std::map<std::string, std::size_t> column_of;  // pointer -> column index
@@ -266,8 +287,9 @@ std::vector<std::string> read_header(std::string_view line, const std::string& w
     const std::string pointer = field_to_pointer(field);
     const auto [same, inserted] = column_of.emplace(pointer, k);
     if (!inserted) {
-      throw InputError(where, "", fmt::format("{}: repeats column {} (each field may be given once)", column,
-                                              same->second + 1));
+      throw InputError(where, "",
+                       fmt::format("{}: repeats column {} (each field may be given once)", column,
+                                   same->second + 1));
     }
     header.push_back(std::move(field));
   }
@@ -278,17 +300,20 @@ std::vector<std::string> read_header(std::string_view line, const std::string& w
     for (std::size_t at = parent.size(); at > 0; at = parent.rfind('/', at - 1)) {
       const auto outer = column_of.find(parent.substr(0, at));
       if (outer != column_of.end()) {
-        throw InputError(where, "", fmt::format("{}: lies inside column {} {} (give the field or what it holds)",
-                                                column, outer->second + 1, shown(header[outer->second])));
+        throw InputError(
+            where, "",
+            fmt::format("{}: lies inside column {} {} (give the field or what it holds)", column,
+                        outer->second + 1, shown(header[outer->second])));
       }
       if (at == 0) break;
     }
     for (const std::string& other : alternative_spellings(pointer.substr(slash + 1))) {
       const auto contradicted = column_of.find(parent + "/" + other);
       if (contradicted != column_of.end() && contradicted->second < k) {
-        throw InputError(where, "", fmt::format("{}: contradicts column {} {}: give the quantity once, in one unit",
-                                                column, contradicted->second + 1,
-                                                shown(header[contradicted->second])));
+        throw InputError(
+            where, "",
+            fmt::format("{}: contradicts column {} {}: give the quantity once, in one unit", column,
+                        contradicted->second + 1, shown(header[contradicted->second])));
       }
     }
   }
@@ -327,8 +352,12 @@ constexpr std::size_t kMaxCompiledColumns = 64;
 
 class Evaluator {
  public:
-  Evaluator(const std::string& source, const BatchOptions& options, bool csv, std::vector<std::string> header)
-      : source_(source), options_(options), csv_(csv), header_(std::move(header)),
+  Evaluator(const std::string& source, const BatchOptions& options, bool csv,
+            std::vector<std::string> header)
+      : source_(source),
+        options_(options),
+        csv_(csv),
+        header_(std::move(header)),
         shapes_(static_cast<std::size_t>(std::max(1, options.threads))) {
     for (const std::string& field : header_) {
       pointers_.push_back(field_to_pointer(field));
@@ -340,7 +369,8 @@ class Evaluator {
 
   // Evaluates a row on thread `thread` (< options.threads).
   void evaluate_row(Row& row, std::size_t thread) const {
-    if (options_.compiled && csv_ && header_.size() <= kMaxCompiledColumns && evaluate_compiled(row, thread)) {
+    if (options_.compiled && csv_ && header_.size() <= kMaxCompiledColumns &&
+        evaluate_compiled(row, thread)) {
       return;
     }
     evaluate_general(row);
@@ -376,22 +406,23 @@ class Evaluator {
     if (!design) return false;
     try {
       const Fidelity fidelity = resolve_fidelity(
-          options_.fidelity.empty() ? std::string_view(shape.fidelity) : options_.fidelity, *design);
+          options_.fidelity.empty() ? std::string_view(shape.fidelity) : options_.fidelity,
+          *design);
       row.evaluation = evaluate(*design, fidelity, options_.modal_tolerance);
     } catch (const std::exception&) {
       row.evaluation.reset();
       return false;
     }
-    row.name = name_cell < cells.size()  ? cells[name_cell]
-               : shape.name              ? *shape.name
-                                         : fmt::format("{}:{}", source_, row.line);
+    row.name = name_cell < cells.size() ? cells[name_cell]
+               : shape.name             ? *shape.name
+                                        : fmt::format("{}:{}", source_, row.line);
     return true;
   }
 
   // Reads this row's document as the template of its shape and binds the
   // filled columns to it; false when it cannot (the row is then read as JSON).
-  bool compile_shape(Shape& shape, const std::vector<std::string>& cells, std::span<const double> values,
-                     std::size_t line) const {
+  bool compile_shape(Shape& shape, const std::vector<std::string>& cells,
+                     std::span<const double> values, std::size_t line) const {
     if (shape.attempts >= kTemplateAttempts) return false;
     ++shape.attempts;
     try {
@@ -411,7 +442,8 @@ class Evaluator {
       const std::string where = fmt::format("{}:{}", source_, line);
       auto compiled = CompiledDesign::compile(describe_design(document, where), pointers);
       if (!compiled) {
-        shape.attempts = kTemplateAttempts;  // a column no binding sets: every row of the shape reads JSON
+        shape.attempts =
+            kTemplateAttempts;  // a column no binding sets: every row of the shape reads JSON
         return false;
       }
       shape.compiled = std::make_unique<const CompiledDesign>(std::move(*compiled));
@@ -435,8 +467,9 @@ class Evaluator {
         const CsvRecord cells = split_csv(row.text, header_.size());
         if (!cells.error.empty()) throw InputError(where, "", "not CSV: " + cells.error);
         if (cells.count != header_.size()) {
-          throw InputError(where, "", fmt::format("expected {} fields as in the header, got {}",
-                                                  header_.size(), cells.count));
+          throw InputError(where, "",
+                           fmt::format("expected {} fields as in the header, got {}",
+                                       header_.size(), cells.count));
         }
         for (std::size_t k = 0; k < header_.size(); ++k) {
           if (cells.fields[k].empty()) continue;  // the base's value stands
@@ -448,16 +481,19 @@ class Evaluator {
           double value = 0.0;
           const auto [end, error] = std::from_chars(cell.data(), cell.data() + cell.size(), value);
           if (error != std::errc() || end != cell.data() + cell.size() || cell.empty()) {
-            throw InputError(where, pointers_[k], "expected a number, got " + shown_cell(cells.fields[k]));
+            throw InputError(where, pointers_[k],
+                             "expected a number, got " + shown_cell(cells.fields[k]));
           }
           if (!std::isfinite(value)) {
-            throw InputError(where, pointers_[k], "expected a finite number, got " + shown_cell(cells.fields[k]));
+            throw InputError(where, pointers_[k],
+                             "expected a finite number, got " + shown_cell(cells.fields[k]));
           }
           try {
             columns_[k].apply(document, value);
           } catch (const Json::exception&) {
             row.bad_column = k + 1;
-            row.bad_column_detail = "the base design holds a value on its path that is not an object";
+            row.bad_column_detail =
+                "the base design holds a value on its path that is not an object";
             throw InputError(where, pointers_[k], row.bad_column_detail);
           }
         }
@@ -468,14 +504,16 @@ class Evaluator {
       row.name = design.name;
       try {
         const Fidelity fidelity = resolve_fidelity(
-            options_.fidelity.empty() ? std::string_view(design.fidelity) : options_.fidelity, design.design);
+            options_.fidelity.empty() ? std::string_view(design.fidelity) : options_.fidelity,
+            design.design);
         row.evaluation = evaluate(design.design, fidelity, options_.modal_tolerance);
       } catch (const std::invalid_argument& e) {
         rethrow_in(read_design(document, where), e);  // with the key map, to name the user's key
       }
     } catch (const InputError& e) {
       row.error = e.what();
-      const bool shape_fault = e.detail().starts_with("unknown key") || e.detail().starts_with("expected a JSON object") ||
+      const bool shape_fault = e.detail().starts_with("unknown key") ||
+                               e.detail().starts_with("expected a JSON object") ||
                                e.detail().starts_with("expected an array");
       if (csv_ && !row.bad_column && shape_fault) {
         // A field the design does not have, or a number where the design has
@@ -558,8 +596,9 @@ BatchSummary run_batch(std::istream& in, const std::string& source, const BatchO
   // A catalogue with no row at all is a mistake (the wrong file, an empty
   // pipe), not a catalogue of nothing.
   if (!have_line) {
-    throw InputError(source, "", csv ? "the file is empty, expected a CSV header"
-                                     : "the file is empty, expected one design per line (JSON Lines)");
+    throw InputError(source, "",
+                     csv ? "the file is empty, expected a CSV header"
+                         : "the file is empty, expected one design per line (JSON Lines)");
   }
   if (csv) {
     complete_record(reader, line);
@@ -590,7 +629,8 @@ BatchSummary run_batch(std::istream& in, const std::string& source, const BatchO
       if (!row.bad_column) continue;
       const std::size_t k = row.bad_column - 1;
       throw InputError(header_at, "",
-                       fmt::format("column {} {}: {}", k + 1, shown(evaluator.header()[k]), row.bad_column_detail));
+                       fmt::format("column {} {}: {}", k + 1, shown(evaluator.header()[k]),
+                                   row.bad_column_detail));
     }
     for (const std::string& text : texts) out << text;
     for (const Row& row : chunk) {
@@ -617,9 +657,12 @@ BatchSummary run_batch(std::istream& in, const std::string& source, const BatchO
 }
 
 CatalogueFormat catalogue_format(const std::string& path) {
-  const auto ends_with = [&](std::string_view suffix) { return std::string_view(path).ends_with(suffix); };
+  const auto ends_with = [&](std::string_view suffix) {
+    return std::string_view(path).ends_with(suffix);
+  };
   if (ends_with(".csv")) return CatalogueFormat::kCsv;
-  if (ends_with(".jsonl") || ends_with(".ndjson") || ends_with(".json")) return CatalogueFormat::kJsonLines;
+  if (ends_with(".jsonl") || ends_with(".ndjson") || ends_with(".json"))
+    return CatalogueFormat::kJsonLines;
   return CatalogueFormat::kAuto;
 }
 

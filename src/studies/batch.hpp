@@ -31,7 +31,7 @@ inline constexpr std::size_t kMaxBatchLineBytes = std::size_t{1} << 20;
 inline constexpr std::size_t kMaxBatchColumns = 1000;
 
 enum class CatalogueFormat {
-  kAuto,       // CSV unless the first line that is not blank starts with '{'
+  kAuto,  // CSV unless the first line that is not blank starts with '{'
   kCsv,
   kJsonLines,
 };

@@ -25,21 +25,24 @@ struct Field {
 };
 
 // The factor of `key` if it spells one of `fields`, with that field.
-std::optional<std::pair<double, Setter>> match(std::string_view key, std::initializer_list<Field> fields) {
+std::optional<std::pair<double, Setter>> match(std::string_view key,
+                                               std::initializer_list<Field> fields) {
   for (const Field& f : fields) {
     if (!f.available) continue;
     if (!f.dimension) {
       if (key == f.base) return std::pair{1.0, f.set};
       continue;
     }
-    if (const auto factor = unit_factor(key, f.base, *f.dimension)) return std::pair{*factor, f.set};
+    if (const auto factor = unit_factor(key, f.base, *f.dimension))
+      return std::pair{*factor, f.set};
   }
   return std::nullopt;
 }
 
 // "0", "12" (no sign, no leading zero, as a JSON pointer's array index).
 std::optional<std::size_t> index_of(std::string_view token) {
-  if (token.empty() || token.size() > 6 || (token.size() > 1 && token[0] == '0')) return std::nullopt;
+  if (token.empty() || token.size() > 6 || (token.size() > 1 && token[0] == '0'))
+    return std::nullopt;
   std::size_t value = 0;
   for (const char c : token) {
     if (c < '0' || c > '9') return std::nullopt;
@@ -77,12 +80,17 @@ std::optional<FieldBinding> bind_field(const DesignDescription& d, std::string_v
     rebuilds = true;
     found = match(
         t[1],
-        {{"length", Dimension::kLength, [](DesignDescription& x, std::size_t, double v) { x.implement.length_m = v; },
+        {{"length", Dimension::kLength,
+          [](DesignDescription& x, std::size_t, double v) { x.implement.length_m = v; },
           ratio || specs},
-         {"mass", Dimension::kMass, [](DesignDescription& x, std::size_t, double v) { x.implement.mass_kg = v; },
+         {"mass", Dimension::kMass,
+          [](DesignDescription& x, std::size_t, double v) { x.implement.mass_kg = v; },
           ratio || specs},
          {"head_to_handle_mass_ratio", std::nullopt,
-          [](DesignDescription& x, std::size_t, double v) { x.implement.head_to_handle_mass_ratio = v; }, ratio},
+          [](DesignDescription& x, std::size_t, double v) {
+            x.implement.head_to_handle_mass_ratio = v;
+          },
+          ratio},
          {"balance_from_butt_m", std::nullopt,
           [](DesignDescription& x, std::size_t, double v) {
             x.implement.balance_in_points = false;
@@ -96,7 +104,8 @@ std::optional<FieldBinding> bind_field(const DesignDescription& d, std::string_v
           },
           specs},
          {"swingweight", Dimension::kInertia,
-          [](DesignDescription& x, std::size_t, double v) { x.implement.swingweight_kg_m2 = v; }, specs}});
+          [](DesignDescription& x, std::size_t, double v) { x.implement.swingweight_kg_m2 = v; },
+          specs}});
     // The reader scales a balance in cm by 0.01 as a unit factor does.
     if (!found && specs && t[1] == "balance_cm") {
       found = std::pair{0.01, Setter{[](DesignDescription& x, std::size_t, double v) {
@@ -104,7 +113,8 @@ std::optional<FieldBinding> bind_field(const DesignDescription& d, std::string_v
                           x.implement.balance = v;
                         }}};
     }
-  } else if (t[0] == "implement" && t.size() == 4 && (t[1] == "sections" || t[1] == "point_masses")) {
+  } else if (t[0] == "implement" && t.size() == 4 &&
+             (t[1] == "sections" || t[1] == "point_masses")) {
     const auto i = index_of(t[2]);
     if (!i) return std::nullopt;
     index = *i;
@@ -112,13 +122,19 @@ std::optional<FieldBinding> bind_field(const DesignDescription& d, std::string_v
     if (t[1] == "sections") {
       const bool has = implement.form == Form::kSections && index < implement.sections.size();
       found = match(t[3], {{"length", Dimension::kLength,
-                            [](DesignDescription& x, std::size_t k, double v) { x.implement.sections[k].length_m = v; },
+                            [](DesignDescription& x, std::size_t k, double v) {
+                              x.implement.sections[k].length_m = v;
+                            },
                             has},
                            {"mass", Dimension::kMass,
-                            [](DesignDescription& x, std::size_t k, double v) { x.implement.sections[k].mass_kg = v; },
+                            [](DesignDescription& x, std::size_t k, double v) {
+                              x.implement.sections[k].mass_kg = v;
+                            },
                             has},
                            {"EI", Dimension::kStiffness,
-                            [](DesignDescription& x, std::size_t k, double v) { x.implement.sections[k].EI_N_m2 = v; },
+                            [](DesignDescription& x, std::size_t k, double v) {
+                              x.implement.sections[k].EI_N_m2 = v;
+                            },
                             has && implement.sections[index].EI_N_m2.has_value()}});
     } else {
       const bool has = index < implement.point_masses.size();
@@ -128,75 +144,112 @@ std::optional<FieldBinding> bind_field(const DesignDescription& d, std::string_v
                             },
                             has},
                            {"mass", Dimension::kMass,
-                            [](DesignDescription& x, std::size_t k, double v) { x.implement.point_masses[k].mass_kg = v; },
+                            [](DesignDescription& x, std::size_t k, double v) {
+                              x.implement.point_masses[k].mass_kg = v;
+                            },
                             has}});
     }
   } else if (t.size() == 2 && t[0] == "frame") {
     found = match(
-        t[1], {{"cor", std::nullopt, [](DesignDescription& x, std::size_t, double v) { x.design.cor = v; },
-                !design.cor_rigid},
-               {"cor_rigid", std::nullopt, [](DesignDescription& x, std::size_t, double v) { x.design.cor_rigid = v; },
-                design.cor_rigid.has_value()},
-               {"EI", Dimension::kStiffness,
-                [](DesignDescription& x, std::size_t, double v) { x.design.stiffness.EI_N_m2 = v; },
-                design.stiffness.EI_N_m2.has_value()},
-               {"fundamental_free", Dimension::kFrequency,
-                [](DesignDescription& x, std::size_t, double v) { x.design.stiffness.fundamental_free_Hz = v; },
-                design.stiffness.fundamental_free_Hz.has_value()}});
+        t[1],
+        {{"cor", std::nullopt,
+          [](DesignDescription& x, std::size_t, double v) { x.design.cor = v; }, !design.cor_rigid},
+         {"cor_rigid", std::nullopt,
+          [](DesignDescription& x, std::size_t, double v) { x.design.cor_rigid = v; },
+          design.cor_rigid.has_value()},
+         {"EI", Dimension::kStiffness,
+          [](DesignDescription& x, std::size_t, double v) { x.design.stiffness.EI_N_m2 = v; },
+          design.stiffness.EI_N_m2.has_value()},
+         {"fundamental_free", Dimension::kFrequency,
+          [](DesignDescription& x, std::size_t, double v) {
+            x.design.stiffness.fundamental_free_Hz = v;
+          },
+          design.stiffness.fundamental_free_Hz.has_value()}});
   } else if (t.size() == 3 && t[0] == "frame" && t[1] == "cross_section") {
     const bool has = design.stiffness.shear_modulus_Pa.has_value();
     found = match(
-        t[2], {{"shear_modulus_Pa", std::nullopt,
-                [](DesignDescription& x, std::size_t, double v) { x.design.stiffness.shear_modulus_Pa = v; }, has},
-               {"width", Dimension::kLength,
-                [](DesignDescription& x, std::size_t, double v) { x.design.stiffness.width_m = v; }, has},
-               {"thickness", Dimension::kLength,
-                [](DesignDescription& x, std::size_t, double v) { x.design.stiffness.thickness_m = v; }, has}});
+        t[2],
+        {{"shear_modulus_Pa", std::nullopt,
+          [](DesignDescription& x, std::size_t, double v) {
+            x.design.stiffness.shear_modulus_Pa = v;
+          },
+          has},
+         {"width", Dimension::kLength,
+          [](DesignDescription& x, std::size_t, double v) { x.design.stiffness.width_m = v; }, has},
+         {"thickness", Dimension::kLength,
+          [](DesignDescription& x, std::size_t, double v) { x.design.stiffness.thickness_m = v; },
+          has}});
   } else if (t.size() == 2 && t[0] == "strings") {
     const bool bed = design.strings.has_value();
     found = match(
-        t[1], {{"impact_duration", Dimension::kTime,
-                [](DesignDescription& x, std::size_t, double v) { x.design.impact_duration_s = v; }, !bed},
-               {"tension", Dimension::kForce,
-                [](DesignDescription& x, std::size_t, double v) { x.design.strings->tension_N = v; }, bed},
-               {"string_spacing", Dimension::kLength,
-                [](DesignDescription& x, std::size_t, double v) { x.design.strings->string_spacing_m = v; }, bed},
-               {"contact_radius", Dimension::kLength,
-                [](DesignDescription& x, std::size_t, double v) { x.design.strings->contact_radius_m = v; }, bed}});
+        t[1],
+        {{"impact_duration", Dimension::kTime,
+          [](DesignDescription& x, std::size_t, double v) { x.design.impact_duration_s = v; },
+          !bed},
+         {"tension", Dimension::kForce,
+          [](DesignDescription& x, std::size_t, double v) { x.design.strings->tension_N = v; },
+          bed},
+         {"string_spacing", Dimension::kLength,
+          [](DesignDescription& x, std::size_t, double v) {
+            x.design.strings->string_spacing_m = v;
+          },
+          bed},
+         {"contact_radius", Dimension::kLength,
+          [](DesignDescription& x, std::size_t, double v) {
+            x.design.strings->contact_radius_m = v;
+          },
+          bed}});
     // The reader's factors for a head size, as it writes them.
     if (!found && bed && d.head_area_m2 && (t[1] == "head_size_in2" || t[1] == "head_size_cm2")) {
-      found = std::pair{t[1] == "head_size_in2" ? 0.0254 * 0.0254 : 1e-4,
-                        Setter{[](DesignDescription& x, std::size_t, double v) { x.head_area_m2 = v; }}};
+      found = std::pair{
+          t[1] == "head_size_in2" ? 0.0254 * 0.0254 : 1e-4,
+          Setter{[](DesignDescription& x, std::size_t, double v) { x.head_area_m2 = v; }}};
     }
   } else if (t.size() == 2 && t[0] == "hand") {
     found = match(
-        t[1], {{"mass", Dimension::kMass, [](DesignDescription& x, std::size_t, double v) { x.design.hand.mass_kg = v; },
-                true},
-               {"center_from_butt", Dimension::kLength,
-                [](DesignDescription& x, std::size_t, double v) { x.design.hand.center_from_butt_m = v; }, true},
-               {"grip_length", Dimension::kLength,
-                [](DesignDescription& x, std::size_t, double v) { x.design.hand.grip_length_m = v; }, true},
-               {"grip_stiffness", Dimension::kStiffness,
-                [](DesignDescription& x, std::size_t, double v) { x.design.hand.grip_stiffness_N_m2 = v; }, true},
-               {"grip_damping", Dimension::kDamping,
-                [](DesignDescription& x, std::size_t, double v) { x.design.hand.grip_damping_N_s_m2 = v; }, true}});
+        t[1],
+        {{"mass", Dimension::kMass,
+          [](DesignDescription& x, std::size_t, double v) { x.design.hand.mass_kg = v; }, true},
+         {"center_from_butt", Dimension::kLength,
+          [](DesignDescription& x, std::size_t, double v) { x.design.hand.center_from_butt_m = v; },
+          true},
+         {"grip_length", Dimension::kLength,
+          [](DesignDescription& x, std::size_t, double v) { x.design.hand.grip_length_m = v; },
+          true},
+         {"grip_stiffness", Dimension::kStiffness,
+          [](DesignDescription& x, std::size_t, double v) {
+            x.design.hand.grip_stiffness_N_m2 = v;
+          },
+          true},
+         {"grip_damping", Dimension::kDamping,
+          [](DesignDescription& x, std::size_t, double v) {
+            x.design.hand.grip_damping_N_s_m2 = v;
+          },
+          true}});
   } else if (t.size() == 2 && t[0] == "forearm") {
-    found = match(t[1], {{"equivalent_mass", Dimension::kMass,
-                          [](DesignDescription& x, std::size_t, double v) { x.design.forearm_equivalent_mass_kg = v; },
-                          !d.forearm_from_mass},
-                         {"mass", Dimension::kMass,
-                          [](DesignDescription& x, std::size_t, double v) { x.forearm_mass_kg = v; },
-                          d.forearm_from_mass}});
+    found =
+        match(t[1], {{"equivalent_mass", Dimension::kMass,
+                      [](DesignDescription& x, std::size_t, double v) {
+                        x.design.forearm_equivalent_mass_kg = v;
+                      },
+                      !d.forearm_from_mass},
+                     {"mass", Dimension::kMass,
+                      [](DesignDescription& x, std::size_t, double v) { x.forearm_mass_kg = v; },
+                      d.forearm_from_mass}});
   } else if (t.size() == 2 && t[0] == "ball") {
-    found = match(t[1], {{"mass", Dimension::kMass,
-                          [](DesignDescription& x, std::size_t, double v) { x.design.ball.mass_kg = v; }, true},
-                         {"speed", Dimension::kSpeed,
-                          [](DesignDescription& x, std::size_t, double v) { x.design.ball.speed_m_s = v; }, true}});
+    found = match(
+        t[1],
+        {{"mass", Dimension::kMass,
+          [](DesignDescription& x, std::size_t, double v) { x.design.ball.mass_kg = v; }, true},
+         {"speed", Dimension::kSpeed,
+          [](DesignDescription& x, std::size_t, double v) { x.design.ball.speed_m_s = v; }, true}});
   } else if (t.size() == 2 && t[0] == "impact") {
     found = match(t[1], {{"from_tip", Dimension::kLength,
-                          [](DesignDescription& x, std::size_t, double v) { x.impact_m = v; }, d.impact_from_tip},
+                          [](DesignDescription& x, std::size_t, double v) { x.impact_m = v; },
+                          d.impact_from_tip},
                          {"from_butt", Dimension::kLength,
-                          [](DesignDescription& x, std::size_t, double v) { x.impact_m = v; }, !d.impact_from_tip}});
+                          [](DesignDescription& x, std::size_t, double v) { x.impact_m = v; },
+                          !d.impact_from_tip}});
   }
   if (!found) return std::nullopt;
   return FieldBinding{std::string(pointer), found->first, found->second, index, rebuilds};
@@ -229,7 +282,8 @@ const Design* BoundDesign::at(std::span<const double> values) {
     const double si = values[i] * b.factor;
     if (b.implement) {
       // Bit for bit: -0.0 and 0.0 need not build the same implement.
-      rebuild = rebuild || std::bit_cast<std::uint64_t>(si) != std::bit_cast<std::uint64_t>(last_si_[i]);
+      rebuild =
+          rebuild || std::bit_cast<std::uint64_t>(si) != std::bit_cast<std::uint64_t>(last_si_[i]);
       last_si_[i] = si;
     }
     b.set(live_, b.index, si);

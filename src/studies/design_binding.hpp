@@ -21,8 +21,8 @@
 namespace sweetspot::io {
 
 struct FieldBinding {
-  std::string pointer;   // as the study or the header wrote it, e.g. "/hand/mass_g"
-  double factor = 1.0;   // the key's unit to SI (0.001 for mass_g)
+  std::string pointer;  // as the study or the header wrote it, e.g. "/hand/mass_g"
+  double factor = 1.0;  // the key's unit to SI (0.001 for mass_g)
   // Writes the SI value into the description (`index`: the section or point mass).
   void (*set)(DesignDescription&, std::size_t index, double si) = nullptr;
   std::size_t index = 0;
@@ -32,7 +32,8 @@ struct FieldBinding {
 // The binding of `pointer` in a design read as `description`, or std::nullopt
 // when the pointer names no number of that design that a binding can set (a
 // published value, a name, a key of another form of the implement).
-std::optional<FieldBinding> bind_field(const DesignDescription& description, std::string_view pointer);
+std::optional<FieldBinding> bind_field(const DesignDescription& description,
+                                       std::string_view pointer);
 
 // A design read once, with some of its numbers bound to JSON pointers.
 class CompiledDesign {

@@ -1,11 +1,11 @@
 #include "studies/optimization.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <memory>
-
-#include <fmt/format.h>
 
 #include "io/format.hpp"
 #include "io/input_error.hpp"
@@ -40,7 +40,9 @@ double limit_of(const ProblemConstraint& pc) {
 }
 
 std::string constraint_name(const ProblemConstraint& pc) {
-  const char* op = pc.which == ProblemConstraint::kEquals ? "=" : pc.which == ProblemConstraint::kMin ? ">=" : "<=";
+  const char* op = pc.which == ProblemConstraint::kEquals ? "="
+                   : pc.which == ProblemConstraint::kMin  ? ">="
+                                                          : "<=";
   return fmt::format("{} {} {}", pc.source->output->name, op, significant(limit_of(pc)));
 }
 
@@ -49,9 +51,12 @@ double constraint_value(const ProblemConstraint& pc, const Evaluation& e) {
   const auto value = pc.source->output->value(e);
   if (!value) return kPenalty;
   switch (pc.which) {
-    case ProblemConstraint::kEquals: return *value - *pc.source->equals;
-    case ProblemConstraint::kMin: return *pc.source->min - *value;
-    case ProblemConstraint::kMax: return *value - *pc.source->max;
+    case ProblemConstraint::kEquals:
+      return *value - *pc.source->equals;
+    case ProblemConstraint::kMin:
+      return *pc.source->min - *value;
+    case ProblemConstraint::kMax:
+      return *value - *pc.source->max;
   }
   return kPenalty;
 }
@@ -81,26 +86,30 @@ Problem make_problem(const Study& study) {
   }
   const std::vector<ProblemConstraint> constraints = expand_constraints(study);
   for (const ProblemConstraint& pc : constraints) {
-    problem.constraints.push_back(ConstraintInfo{
-        constraint_name(pc), pc.which == ProblemConstraint::kEquals ? ConstraintKind::kZero : ConstraintKind::kAtMostZero,
-        tolerance_at(*pc.source, limit_of(pc))});
+    problem.constraints.push_back(ConstraintInfo{constraint_name(pc),
+                                                 pc.which == ProblemConstraint::kEquals
+                                                     ? ConstraintKind::kZero
+                                                     : ConstraintKind::kAtMostZero,
+                                                 tolerance_at(*pc.source, limit_of(pc))});
   }
   const bool square = minimizes_square(study);
-  problem.smooth = !(study.over_impacts && study.over_impacts->reduce == ImpactSpread::Reduce::kMax);
+  problem.smooth =
+      !(study.over_impacts && study.over_impacts->reduce == ImpactSpread::Reduce::kMax);
   for (const ObjectiveTerm& term : study.objective) {
     problem.smooth = problem.smooth && (square || !term.output->kinked);
   }
   // Each point is set on the study's compiled design (one working copy for
   // the run); a point it cannot vouch for is read from JSON (design_at).
-  const auto bound =
-      compiled_for_variables(study) ? std::make_shared<BoundDesign>(*study.compiled) : std::shared_ptr<BoundDesign>();
+  const auto bound = compiled_for_variables(study) ? std::make_shared<BoundDesign>(*study.compiled)
+                                                   : std::shared_ptr<BoundDesign>();
   problem.evaluate = [&study, constraints, square, bound](std::span<const double> x, double& f,
                                                           std::span<double> c) {
     const auto at = [&](const Design& design) {
       const Evaluation e = evaluate_in(study, design);
       f = study.over_impacts ? objective_of(study, design) : terms_value(study, e);
       if (square) f *= f;
-      for (std::size_t k = 0; k < constraints.size(); ++k) c[k] = constraint_value(constraints[k], e);
+      for (std::size_t k = 0; k < constraints.size(); ++k)
+        c[k] = constraint_value(constraints[k], e);
     };
     try {
       if (const Design* design = bound ? bound->at(x) : nullptr) return at(*design);
@@ -118,7 +127,8 @@ Problem make_problem(const Study& study) {
 
 namespace {
 
-std::optional<Evaluation> outputs_of(const Study& study, const DesignFile& design, std::string* why) {
+std::optional<Evaluation> outputs_of(const Study& study, const DesignFile& design,
+                                     std::string* why) {
   try {
     return evaluate_in(study, design);
   } catch (const std::invalid_argument& e) {
@@ -130,7 +140,8 @@ std::optional<Evaluation> outputs_of(const Study& study, const DesignFile& desig
 }  // namespace
 
 OptimizationResult run_optimization(const Study& study) {
-  if (study.objective.empty()) throw InputError(study.source, "/objective", "missing: optimize needs an objective");
+  if (study.objective.empty())
+    throw InputError(study.source, "/objective", "missing: optimize needs an objective");
   for (std::size_t i = 0; i < study.variables.size(); ++i) {
     const StudyVariable& v = study.variables[i];
     if (!(v.min < v.max)) {
@@ -175,8 +186,9 @@ OptimizationResult run_optimization(const Study& study) {
       const bool equality = pc.which == ProblemConstraint::kEquals;
       c.violation = equality ? std::abs(signed_excess) : std::max(0.0, signed_excess);
       c.satisfied = c.violation <= c.tolerance;
-      c.active = equality ||
-                 std::abs(signed_excess) <= std::max(c.tolerance, kActiveFraction * std::max(1.0, std::abs(c.limit)));
+      c.active =
+          equality || std::abs(signed_excess) <=
+                          std::max(c.tolerance, kActiveFraction * std::max(1.0, std::abs(c.limit)));
     } else {
       c.violation = std::numeric_limits<double>::infinity();
     }

@@ -16,12 +16,14 @@ namespace sweetspot::io {
 Problem make_problem(const Study& study);
 
 struct ConstraintReport {
-  std::string name;  // "swingweight_kg_cm2 <= 330"
-  std::string unit;  // the output's, "" when dimensionless
+  std::string name;             // "swingweight_kg_cm2 <= 330"
+  std::string unit;             // the output's, "" when dimensionless
   std::optional<double> value;  // the output at the best design; std::nullopt: no finite value
   double limit = 0.0;
-  double tolerance = 0.0;  // how far outside the limit still counts as on it (study's, or the default)
-  double violation = 0.0;  // how far outside the limit the value is (0 within it; a missing value: +inf)
+  double tolerance =
+      0.0;  // how far outside the limit still counts as on it (study's, or the default)
+  double violation =
+      0.0;  // how far outside the limit the value is (0 within it; a missing value: +inf)
   bool satisfied = false;  // violation <= tolerance
   bool active = false;     // on its limit: removing it would change the optimum
 };

@@ -1,10 +1,10 @@
 #include "studies/study.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-
-#include <fmt/format.h>
 
 #include "io/input_error.hpp"
 #include "studies/design_binding.hpp"
@@ -25,7 +25,8 @@ const OutputSpec* read_output_name(ObjectReader& r, std::string_view key) {
   const OutputSpec* output = find_output(*name);
   if (!output) {
     std::string known;
-    for (const OutputSpec& o : output_specs()) known += (known.empty() ? "" : ", ") + std::string(o.name);
+    for (const OutputSpec& o : output_specs())
+      known += (known.empty() ? "" : ", ") + std::string(o.name);
     r.fail(key, "unknown output \"" + *name + "\" (known: " + known + ")");
   }
   return output;
@@ -53,7 +54,8 @@ std::vector<double> linspace(double lo, double hi, int points) {
 StudyVariable read_variable(ObjectReader& r, const Json& design, int grid_points) {
   StudyVariable v;
   const auto path = r.string("path");
-  if (!path) r.fail("", "missing \"path\" (a JSON pointer into the design, e.g. /implement/mass_kg)");
+  if (!path)
+    r.fail("", "missing \"path\" (a JSON pointer into the design, e.g. /implement/mass_kg)");
   v.pointer = *path;
   Json::json_pointer pointer;
   try {
@@ -61,7 +63,8 @@ StudyVariable read_variable(ObjectReader& r, const Json& design, int grid_points
   } catch (const Json::exception&) {
     r.fail("path", "\"" + v.pointer + "\" is not a JSON pointer (it starts with /)");
   }
-  if (v.pointer.rfind("/reference", 0) == 0) r.fail("path", "\"" + v.pointer + "\" is a published value, not an input");
+  if (v.pointer.rfind("/reference", 0) == 0)
+    r.fail("path", "\"" + v.pointer + "\" is a published value, not an input");
   if (v.pointer.empty() || !design.contains(pointer)) {
     r.fail("path", "\"" + v.pointer + "\" is not in the design");
   }
@@ -71,12 +74,16 @@ StudyVariable read_variable(ObjectReader& r, const Json& design, int grid_points
   const double current = design.at(pointer).get<double>();
   const Json& values = array_at(r, "values", false);
   if (r.child("values") && values.empty()) {
-    r.fail("values", "expected at least one value (leave \"values\" out for an even grid from min to max)");
+    r.fail("values",
+           "expected at least one value (leave \"values\" out for an even grid from min to max)");
   }
-  const auto value_pointer = [&](std::size_t k) { return r.pointer() + "/values/" + std::to_string(k); };
+  const auto value_pointer = [&](std::size_t k) {
+    return r.pointer() + "/values/" + std::to_string(k);
+  };
   for (std::size_t k = 0; k < values.size(); ++k) {
     if (!values[k].is_number() || !std::isfinite(values[k].get<double>())) {
-      throw InputError(r.source(), value_pointer(k), "expected a finite number, got " + brief(values[k]));
+      throw InputError(r.source(), value_pointer(k),
+                       "expected a finite number, got " + brief(values[k]));
     }
     v.values.push_back(values[k].get<double>());
   }
@@ -85,7 +92,8 @@ StudyVariable read_variable(ObjectReader& r, const Json& design, int grid_points
   if (v.values.empty() || min || max) {
     if (!min || !max) r.fail("", "missing \"min\" and \"max\" (the variable's bounds)");
     if (!(*min < *max)) {
-      r.fail("min", "must be < max, got min " + brief(Json(*min)) + " and max " + brief(Json(*max)));
+      r.fail("min",
+             "must be < max, got min " + brief(Json(*min)) + " and max " + brief(Json(*max)));
     }
     v.min = *min;
     v.max = *max;
@@ -93,8 +101,8 @@ StudyVariable read_variable(ObjectReader& r, const Json& design, int grid_points
     for (std::size_t k = 0; k < v.values.size(); ++k) {
       if (!(v.values[k] >= v.min && v.values[k] <= v.max)) {
         throw InputError(r.source(), value_pointer(k),
-                         "must lie within [min, max] = [" + brief(Json(v.min)) + ", " + brief(Json(v.max)) +
-                             "], got " + brief(Json(v.values[k])));
+                         "must lie within [min, max] = [" + brief(Json(v.min)) + ", " +
+                             brief(Json(v.max)) + "], got " + brief(Json(v.values[k])));
       }
     }
   } else {
@@ -105,13 +113,15 @@ StudyVariable read_variable(ObjectReader& r, const Json& design, int grid_points
   if (points && !(*points >= 1 && *points <= kMaxGridPoints && *points == std::floor(*points))) {
     r.fail("points", "must be a whole number in [1, 1e7], got " + brief(Json(*points)));
   }
-  if (v.values.empty()) v.values = linspace(v.min, v.max, points ? static_cast<int>(*points) : grid_points);
+  if (v.values.empty())
+    v.values = linspace(v.min, v.max, points ? static_cast<int>(*points) : grid_points);
   const auto start = r.number("start");
   if (start && !(*start >= v.min && *start <= v.max)) {
-    r.fail("start", "must lie within [min, max] = [" + brief(Json(v.min)) + ", " + brief(Json(v.max)) +
-                        "], got " + brief(Json(*start)));
+    r.fail("start", "must lie within [min, max] = [" + brief(Json(v.min)) + ", " +
+                        brief(Json(v.max)) + "], got " + brief(Json(*start)));
   }
-  v.start = start ? *start : (current >= v.min && current <= v.max ? current : 0.5 * (v.min + v.max));
+  v.start =
+      start ? *start : (current >= v.min && current <= v.max ? current : 0.5 * (v.min + v.max));
   r.finish({"path", "min", "max", "start", "points", "values"});
   return v;
 }
@@ -120,10 +130,14 @@ ObjectiveTerm read_term(ObjectReader& r, bool allow_spread) {
   ObjectiveTerm term;
   term.output = read_output_name(r, "output");
   const auto goal = r.string("goal").value_or("minimize");
-  if (goal == "minimize") term.goal = Goal::kMinimize;
-  else if (goal == "maximize") term.goal = Goal::kMaximize;
-  else if (goal == "target") term.goal = Goal::kTarget;
-  else r.fail("goal", "expected \"minimize\", \"maximize\" or \"target\", got \"" + goal + "\"");
+  if (goal == "minimize")
+    term.goal = Goal::kMinimize;
+  else if (goal == "maximize")
+    term.goal = Goal::kMaximize;
+  else if (goal == "target")
+    term.goal = Goal::kTarget;
+  else
+    r.fail("goal", "expected \"minimize\", \"maximize\" or \"target\", got \"" + goal + "\"");
   const auto target = r.number("target");
   if (term.goal == Goal::kTarget && !target) r.fail("", "goal \"target\" needs a \"target\" value");
   if (term.goal != Goal::kTarget && target) r.fail("target", "only goal \"target\" takes a target");
@@ -146,8 +160,9 @@ ImpactSpread read_spread(ObjectReader& r) {
   spread.from_tip_lo_m = (*range)[0].get<double>();
   spread.from_tip_hi_m = (*range)[1].get<double>();
   if (!(spread.from_tip_lo_m >= 0)) {
-    throw InputError(r.source(), r.pointer() + "/from_tip_m/0",
-                     "the nearest impact must be >= 0 m from the tip, got " + brief((*range)[0]) + " m");
+    throw InputError(
+        r.source(), r.pointer() + "/from_tip_m/0",
+        "the nearest impact must be >= 0 m from the tip, got " + brief((*range)[0]) + " m");
   }
   if (!(spread.from_tip_lo_m < spread.from_tip_hi_m)) {
     throw InputError(r.source(), r.pointer() + "/from_tip_m/1",
@@ -160,9 +175,12 @@ ImpactSpread read_spread(ObjectReader& r) {
   }
   spread.points = static_cast<int>(points);
   const auto reduce = r.string("reduce").value_or("max");
-  if (reduce == "max") spread.reduce = ImpactSpread::Reduce::kMax;
-  else if (reduce == "mean") spread.reduce = ImpactSpread::Reduce::kMean;
-  else r.fail("reduce", "expected \"max\" or \"mean\", got \"" + reduce + "\"");
+  if (reduce == "max")
+    spread.reduce = ImpactSpread::Reduce::kMax;
+  else if (reduce == "mean")
+    spread.reduce = ImpactSpread::Reduce::kMean;
+  else
+    r.fail("reduce", "expected \"max\" or \"mean\", got \"" + reduce + "\"");
   r.finish({"from_tip_m", "points", "reduce"});
   return spread;
 }
@@ -171,9 +189,12 @@ double term_value(const ObjectiveTerm& term, const Evaluation& e) {
   const auto value = term.output->value(e);
   if (!value) return kPenalty;
   switch (term.goal) {
-    case Goal::kMinimize: return term.weight * *value;
-    case Goal::kMaximize: return -term.weight * *value;
-    case Goal::kTarget: return term.weight * (*value - term.target) * (*value - term.target);
+    case Goal::kMinimize:
+      return term.weight * *value;
+    case Goal::kMaximize:
+      return -term.weight * *value;
+    case Goal::kTarget:
+      return term.weight * (*value - term.target) * (*value - term.target);
   }
   return kPenalty;
 }
@@ -227,7 +248,8 @@ Study read_study(const Json& document, const std::string& source, const std::str
 
   const Json& variables = array_at(top, "variables", true);
   if (variables.empty()) top.fail("variables", "expected at least one variable");
-  if (variables.size() > 64) top.fail("variables", "at most 64 variables, got " + std::to_string(variables.size()));
+  if (variables.size() > 64)
+    top.fail("variables", "at most 64 variables, got " + std::to_string(variables.size()));
   for (std::size_t i = 0; i < variables.size(); ++i) {
     ObjectReader r(variables[i], "/variables/" + std::to_string(i), "", source, nullptr);
     study.variables.push_back(read_variable(r, study.design_document, grid_points));
@@ -270,8 +292,9 @@ Study read_study(const Json& document, const std::string& source, const std::str
     if (study.over_impacts) {
       for (std::size_t i = 0; i < study.variables.size(); ++i) {
         if (study.variables[i].pointer.starts_with("/impact")) {
-          throw InputError(source, "/variables/" + std::to_string(i) + "/path",
-                           "the impact point cannot be a variable of a study over a spread of impacts");
+          throw InputError(
+              source, "/variables/" + std::to_string(i) + "/path",
+              "the impact point cannot be a variable of a study over a spread of impacts");
         }
       }
     }
@@ -288,10 +311,12 @@ Study read_study(const Json& document, const std::string& source, const std::str
     if (!c.min && !c.max && !c.equals) r.fail("", "give \"min\", \"max\" or \"equals\"");
     if (c.equals && (c.min || c.max)) r.fail("equals", "give either \"equals\" or \"min\"/\"max\"");
     if (c.min && c.max && !(*c.min <= *c.max)) {
-      r.fail("min", "must be <= max, got min " + brief(Json(*c.min)) + " and max " + brief(Json(*c.max)));
+      r.fail("min",
+             "must be <= max, got min " + brief(Json(*c.min)) + " and max " + brief(Json(*c.max)));
     }
     c.tolerance = r.number("tolerance");
-    if (c.tolerance && !(*c.tolerance > 0)) r.fail("tolerance", "must be > 0, got " + brief(Json(*c.tolerance)));
+    if (c.tolerance && !(*c.tolerance > 0))
+      r.fail("tolerance", "must be > 0, got " + brief(Json(*c.tolerance)));
     r.finish({"output", "min", "max", "equals", "tolerance"});
     study.constraints.push_back(c);
   }
@@ -323,8 +348,10 @@ Study read_study(const Json& document, const std::string& source, const std::str
     o.f_tolerance_rel = positive("f_rel", o.f_tolerance_rel);
     o.max_seconds = positive("max_seconds", o.max_seconds);
     if (const auto max_evaluations = t.number("max_evaluations")) {
-      if (!(*max_evaluations >= 1 && *max_evaluations <= 1e9 && *max_evaluations == std::floor(*max_evaluations))) {
-        t.fail("max_evaluations", "must be a whole number in [1, 1e9], got " + brief(Json(*max_evaluations)));
+      if (!(*max_evaluations >= 1 && *max_evaluations <= 1e9 &&
+            *max_evaluations == std::floor(*max_evaluations))) {
+        t.fail("max_evaluations",
+               "must be a whole number in [1, 1e9], got " + brief(Json(*max_evaluations)));
       }
       o.max_evaluations = static_cast<int>(*max_evaluations);
     }
@@ -338,7 +365,9 @@ Study read_study(const Json& document, const std::string& source, const std::str
   for (std::size_t i = 0; i < outputs.size(); ++i) {
     const std::string at = "/outputs/" + std::to_string(i);
     if (!outputs[i].is_string() || !find_output(outputs[i].get<std::string>())) {
-      throw InputError(source, at, "expected the name of an output of sweetspot evaluate, got " + brief(outputs[i]));
+      throw InputError(
+          source, at,
+          "expected the name of an output of sweetspot evaluate, got " + brief(outputs[i]));
     }
     study.sweep_outputs.push_back(find_output(outputs[i].get<std::string>()));
   }
@@ -355,7 +384,8 @@ Study read_study(const Json& document, const std::string& source, const std::str
     std::vector<const OutputSpec*> used = study.sweep_outputs;
     for (const ObjectiveTerm& t : study.objective) used.push_back(t.output);
     for (const StudyConstraint& c : study.constraints) used.push_back(c.output);
-    study.fidelity = needed_fidelity(read_design(study.design_document, study.design_source).design);
+    study.fidelity =
+        needed_fidelity(read_design(study.design_document, study.design_source).design);
     for (const OutputSpec* o : used) {
       if (o->needs_response) study.fidelity = Fidelity::kResponse;
       if (o->needs_modes && study.fidelity == Fidelity::kRigid) study.fidelity = Fidelity::kModal;
@@ -381,8 +411,8 @@ Study read_study(const Json& document, const std::string& source, const std::str
     study.modal_tolerance = *tolerance;
   }
   top.finish({"$schema", "name", "question", "description", "design", "variables", "objective",
-              "constraints", "algorithm", "local_algorithm", "seed", "tolerances", "grid", "outputs",
-              "fidelity", "modal_tolerance"});
+              "constraints", "algorithm", "local_algorithm", "seed", "tolerances", "grid",
+              "outputs", "fidelity", "modal_tolerance"});
 
   // The start must be a valid design.
   std::vector<double> start;
@@ -391,7 +421,8 @@ Study read_study(const Json& document, const std::string& source, const std::str
     try {
       return design_at(study, start);
     } catch (const InputError& e) {
-      throw InputError(source, "/variables", "the start point is not a valid design: " + std::string(e.what()));
+      throw InputError(source, "/variables",
+                       "the start point is not a valid design: " + std::string(e.what()));
     }
   }();
   try {
@@ -406,13 +437,15 @@ Study read_study(const Json& document, const std::string& source, const std::str
     if (study.over_impacts->from_tip_hi_m > length_m) {
       throw InputError(source, "/objective/over_impacts/from_tip_m/1",
                        "the farthest impact, " + brief(Json(study.over_impacts->from_tip_hi_m)) +
-                           " m from the tip, is off the implement, which is " + brief(Json(length_m)) +
-                           " m long (at the start); expected at most " + brief(Json(length_m)) + " m");
+                           " m from the tip, is off the implement, which is " +
+                           brief(Json(length_m)) + " m long (at the start); expected at most " +
+                           brief(Json(length_m)) + " m");
     }
   }
   std::vector<std::string> pointers;
   for (const StudyVariable& v : study.variables) pointers.push_back(v.pointer);
-  if (auto compiled = CompiledDesign::compile(describe_design(study.design_document, study.design_source), pointers)) {
+  if (auto compiled = CompiledDesign::compile(
+          describe_design(study.design_document, study.design_source), pointers)) {
     study.compiled = std::make_shared<const CompiledDesign>(std::move(*compiled));
   }
   return study;
@@ -423,7 +456,9 @@ Study load_study(const std::string& path) {
   return read_study(read_json_file(path), input_name(path), folder.empty() ? "." : folder);
 }
 
-Evaluation evaluate_in(const Study& study, const DesignFile& design) { return evaluate_in(study, design.design); }
+Evaluation evaluate_in(const Study& study, const DesignFile& design) {
+  return evaluate_in(study, design.design);
+}
 
 Evaluation evaluate_in(const Study& study, const Design& design) {
   return evaluate(design, study.fidelity, study.modal_tolerance);
@@ -449,15 +484,16 @@ namespace {
 
 // Impact k of a spread, from the butt of an implement `length_m` long.
 double spread_from_butt(const ImpactSpread& spread, double length_m, int k) {
-  return length_m -
-         (spread.from_tip_lo_m + (spread.from_tip_hi_m - spread.from_tip_lo_m) * k / (spread.points - 1));
+  return length_m - (spread.from_tip_lo_m +
+                     (spread.from_tip_hi_m - spread.from_tip_lo_m) * k / (spread.points - 1));
 }
 
 // Why an evaluation gives the objective terms no value, or std::nullopt.
 std::optional<std::string> terms_undefined(const Study& study, const Evaluation& e) {
   for (const ObjectiveTerm& term : study.objective) {
     if (!term.output->value(e)) {
-      return std::string(term.output->name) + " has no finite value (the physics puts it at infinity)";
+      return std::string(term.output->name) +
+             " has no finite value (the physics puts it at infinity)";
     }
   }
   return std::nullopt;
@@ -478,12 +514,15 @@ std::optional<std::string> objective_undefined(const Study& study, const DesignF
     for (int k = 0; k < spread.points; ++k) {
       const double x = spread_from_butt(spread, L, k);
       if (!(x >= 0.0 && x <= L)) {
-        const double from_tip = spread.from_tip_lo_m + (spread.from_tip_hi_m - spread.from_tip_lo_m) * k / (spread.points - 1);
-        return "the impact " + brief(Json(from_tip)) + " m from the tip is off the implement, which is " +
-               brief(Json(L)) + " m long";
+        const double from_tip =
+            spread.from_tip_lo_m +
+            (spread.from_tip_hi_m - spread.from_tip_lo_m) * k / (spread.points - 1);
+        return "the impact " + brief(Json(from_tip)) +
+               " m from the tip is off the implement, which is " + brief(Json(L)) + " m long";
       }
       d.impact_from_butt_m = x;
-      if (auto why = terms_undefined(study, evaluate(d, study.fidelity, study.modal_tolerance))) return why;
+      if (auto why = terms_undefined(study, evaluate(d, study.fidelity, study.modal_tolerance)))
+        return why;
     }
   } catch (const std::invalid_argument& e) {
     return std::string(e.what());
@@ -491,7 +530,9 @@ std::optional<std::string> objective_undefined(const Study& study, const DesignF
   return std::nullopt;
 }
 
-double objective_of(const Study& study, const DesignFile& design) { return objective_of(study, design.design); }
+double objective_of(const Study& study, const DesignFile& design) {
+  return objective_of(study, design.design);
+}
 
 double objective_of(const Study& study, const Design& design) {
   if (!study.over_impacts) return terms_value(study, evaluate_in(study, design));
@@ -517,7 +558,8 @@ double objective_of(const Study& study, const Design& design) {
         }
       }
     }
-    reduced = spread.reduce == ImpactSpread::Reduce::kMax ? std::max(reduced, value) : reduced + value / spread.points;
+    reduced = spread.reduce == ImpactSpread::Reduce::kMax ? std::max(reduced, value)
+                                                          : reduced + value / spread.points;
   }
   return reduced;
 }

@@ -28,7 +28,7 @@ struct StudyVariable {
   std::string pointer;  // JSON pointer into the design, e.g. "/implement/mass_kg"
   double min = 0.0;
   double max = 0.0;
-  double start = 0.0;   // "start", else the design's value if inside the bounds, else the middle
+  double start = 0.0;  // "start", else the design's value if inside the bounds, else the middle
   std::vector<double> values;  // sweep: the grid along this variable
 };
 

@@ -1,9 +1,9 @@
 #include "studies/sweep.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-
-#include <fmt/format.h>
 
 #include "io/format.hpp"
 #include "io/input_error.hpp"
@@ -23,15 +23,18 @@ class SweepWorker {
     for (const StudyVariable& variable : study.variables) pointers_.emplace_back(variable.pointer);
     if (compiled && compiled_for_variables(study)) bound_.emplace(*study.compiled);
     if (study.variables[0].values.size() <= kCachedTexts) {
-      for (const double value : study.variables[0].values) append_exact(first_text_.emplace_back(), value);
+      for (const double value : study.variables[0].values)
+        append_exact(first_text_.emplace_back(), value);
     }
     // The impact point as read_design() reads it: "/impact/from_tip_<unit>" or
     // "/impact/from_butt_<unit>", converted by the same factor.
     const std::string_view pointer = study.variables[0].pointer;
     if (share_rows && study.fidelity == Fidelity::kRigid && pointer.starts_with("/impact/")) {
       const std::string_view key = pointer.substr(std::string_view("/impact/").size());
-      if (const auto f = unit_factor(key, "from_tip", Dimension::kLength)) impact_ = Impact{true, *f};
-      if (const auto f = unit_factor(key, "from_butt", Dimension::kLength)) impact_ = Impact{false, *f};
+      if (const auto f = unit_factor(key, "from_tip", Dimension::kLength))
+        impact_ = Impact{true, *f};
+      if (const auto f = unit_factor(key, "from_butt", Dimension::kLength))
+        impact_ = Impact{false, *f};
     }
   }
 
@@ -153,10 +156,12 @@ std::vector<Plot> run_sweep(const Study& study, std::ostream& csv,
                             const std::function<void(std::size_t, std::size_t)>& progress,
                             const SweepOptions& options) {
   if (study.variables.size() > 2) {
-    throw InputError(study.source, "/variables", "a sweep takes one or two variables, got " +
-                                                     std::to_string(study.variables.size()));
+    throw InputError(
+        study.source, "/variables",
+        "a sweep takes one or two variables, got " + std::to_string(study.variables.size()));
   }
-  if (study.sweep_outputs.empty()) throw InputError(study.source, "/outputs", "missing: the outputs to sweep");
+  if (study.sweep_outputs.empty())
+    throw InputError(study.source, "/outputs", "missing: the outputs to sweep");
   const StudyVariable& first = study.variables[0];
   const std::vector<double> second =
       study.variables.size() == 2 ? study.variables[1].values : std::vector<double>{NAN};
@@ -171,20 +176,28 @@ std::vector<Plot> run_sweep(const Study& study, std::ostream& csv,
 
   std::vector<Plot> plots;
   for (const OutputSpec* o : study.sweep_outputs) {
-    plots.push_back(Plot{fmt::format("{}: {}", study.name, o->name), first.pointer,
-                         fmt::format("{} ({})", o->name, o->unit.empty() ? "dimensionless" : o->unit),
-                         std::pair{first.min, first.max}, std::nullopt, {}, {}, {}});
+    plots.push_back(
+        Plot{fmt::format("{}: {}", study.name, o->name),
+             first.pointer,
+             fmt::format("{} ({})", o->name, o->unit.empty() ? "dimensionless" : o->unit),
+             std::pair{first.min, first.max},
+             std::nullopt,
+             {},
+             {},
+             {}});
   }
   const int threads = std::max(1, options.threads);
   std::vector<SweepWorker> workers;
-  for (int t = 0; t < threads; ++t) workers.emplace_back(study, second, options.share_rows, options.compiled);
+  for (int t = 0; t < threads; ++t)
+    workers.emplace_back(study, second, options.share_rows, options.compiled);
   std::vector<std::string> texts(threads);
   std::vector<std::optional<double>> values(kSweepChunkPoints * outputs);
   for (std::size_t begin = 0; begin < total; begin += kSweepChunkPoints) {
     const std::size_t count = std::min(kSweepChunkPoints, total - begin);
     for (std::string& text : texts) text.clear();
     for_blocks(count, threads, [&](std::size_t t, std::size_t from, std::size_t to) {
-      for (std::size_t i = from; i < to; ++i) workers[t].point(begin + i, texts[t], &values[i * outputs]);
+      for (std::size_t i = from; i < to; ++i)
+        workers[t].point(begin + i, texts[t], &values[i * outputs]);
     });
     for (const std::string& text : texts) csv << text;
     if (keep) {
@@ -192,12 +205,13 @@ std::vector<Plot> run_sweep(const Study& study, std::ostream& csv,
         const std::size_t p = begin + i;
         if (p % first.values.size() == 0) {
           for (std::size_t k = 0; k < outputs; ++k) {
-            plots[k].series.push_back(PlotSeries{
-                study.variables.size() == 2
-                    ? fmt::format("{} = {}", study.variables[1].pointer, significant(second[p / first.values.size()]))
-                    : std::string(study.sweep_outputs[k]->name),
-                {},
-                {}});
+            plots[k].series.push_back(
+                PlotSeries{study.variables.size() == 2
+                               ? fmt::format("{} = {}", study.variables[1].pointer,
+                                             significant(second[p / first.values.size()]))
+                               : std::string(study.sweep_outputs[k]->name),
+                           {},
+                           {}});
           }
         }
         for (std::size_t k = 0; k < outputs; ++k) {

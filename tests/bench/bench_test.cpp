@@ -1,8 +1,8 @@
 // The statistics every benchmark figure is reported with.
 
-#include <catch2/catch.hpp>
-
 #include "bench/bench.hpp"
+
+#include <catch2/catch.hpp>
 
 using sweetspot::io::median;
 

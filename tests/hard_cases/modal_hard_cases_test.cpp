@@ -184,7 +184,8 @@ TEST_CASE("Meshes of 2000 elements keep f1 within discretisation plus 8.4 N^4 ep
   const ModalResult f = free_modes(racquet, tape, fe(3, kFeToleranceFloor, 1000));
   REQUIRE(f.modes.size() == 3);
   for (int k = 0; k < 3; ++k) {
-    CHECK(f.modes[k].frequency_Hz == Approx(e.modes[k].frequency_Hz).epsilon(fe_round_off(f.elements_used)));
+    CHECK(f.modes[k].frequency_Hz ==
+          Approx(e.modes[k].frequency_Hz).epsilon(fe_round_off(f.elements_used)));
   }
 }
 
@@ -330,8 +331,8 @@ TEST_CASE("A 1 micrometre section tends to the beam without it, plus its mass as
 // Two solvers, one answer: finite elements sized for rel_tol on f1 err by
 // about rel_tol (f_k / f_1)^2 on mode k (the h^4 rate scaled by
 // (beta_k / beta_1)^4) plus round-off 8.4 N^4 eps. Returns the exact modes.
-ModalResult fe_agrees_with_exact(const std::vector<Section>& beam, const std::vector<PointMass>& masses,
-                                 int modes) {
+ModalResult fe_agrees_with_exact(const std::vector<Section>& beam,
+                                 const std::vector<PointMass>& masses, int modes) {
   const ModalResult e = free_modes(beam, masses, exact(modes));
   const ModalResult f = free_modes(beam, masses, fe(modes));
   REQUIRE(non_finite_modes(e) == "");
@@ -347,7 +348,9 @@ ModalResult fe_agrees_with_exact(const std::vector<Section>& beam, const std::ve
   return e;
 }
 
-TEST_CASE("Finite elements agree with the exact solver beside a micrometre sliver or a point mass a hair from a boundary") {
+TEST_CASE(
+    "Finite elements agree with the exact solver beside a micrometre sliver or a point mass a hair "
+    "from a boundary") {
   // The exact transfer matrices are the oracle. Finite elements sized for
   // rel_tol on f1 err by about rel_tol (f_k / f_1)^2 on mode k plus round-off;
   // a stretch far shorter than its elements is merged into a neighbour of the
@@ -369,19 +372,23 @@ TEST_CASE("Finite elements agree with the exact solver beside a micrometre slive
   }
 }
 
-TEST_CASE("A micrometre section of another EI is solved exactly free, and refused by finite elements by name") {
+TEST_CASE(
+    "A micrometre section of another EI is solved exactly free, and refused by finite elements by "
+    "name") {
   // A stiffness jump this short is a hinge or a splice the cubic elements
   // cannot bend across; the exact solver takes it (see the limit case above),
   // the finite elements (which the hand-held modes need) name the section.
   const std::vector<Section> beam{{0.35, 0.175, 250.0}, {1e-6, 5e-7, 0.25}, {0.35, 0.175, 250.0}};
   CHECK(non_finite_modes(free_modes(beam, {}, exact(2))) == "");
   CHECK_THAT(refusal([&] { free_modes(beam, {}, fe(2)); }),
-             Catch::StartsWith("sections/1/length_m: ") && Catch::Contains("too short for finite elements"));
+             Catch::StartsWith("sections/1/length_m: ") &&
+                 Catch::Contains("too short for finite elements"));
   CHECK_THAT(refusal([&] { hand_held_modes(beam, {}, calibrated_hand(), fe(1)); }),
              Catch::StartsWith("sections/1/length_m: "));
 }
 
-TEST_CASE("Hand-held, lead tape a micrometre past a section boundary tends to tape on the boundary") {
+TEST_CASE(
+    "Hand-held, lead tape a micrometre past a section boundary tends to tape on the boundary") {
   // Limit delta -> 0: moving 10 g by delta changes f1 by O(delta), so the
   // difference from the tape exactly on the boundary must shrink tenfold
   // with delta (within the FE tolerance of each solve).
@@ -630,7 +637,9 @@ TEST_CASE("A hand damped to and past critical: finite modes, the frame's fundame
 
 // ------------------------------------------------------------ nearly repeated frequencies
 
-TEST_CASE("The exact solver notices a nearly repeated pair it cannot bracket and answers with finite elements") {
+TEST_CASE(
+    "The exact solver notices a nearly repeated pair it cannot bracket and answers with finite "
+    "elements") {
   // The two halves above, 4 modes: the pair (split 1e-6) falls inside one
   // scan step and changes no sign, so the scan alone jumps to the next
   // modes (it returned 7760.9 and 8153.2 Hz as modes 3 and 4). Finite
@@ -796,7 +805,8 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "Derived COR at cor_rigid 1 is (1 - mu kappa) / (1 + mu kappa) and at cor_rigid 0 is refused by name") {
+    "Derived COR at cor_rigid 1 is (1 - mu kappa) / (1 + mu kappa) and at cor_rigid 0 is refused "
+    "by name") {
   // Closed forms of the energy balance e^2 + a (1 + e)^2 = e_r^2 (a = mu kappa):
   //  e_r = 1: e = (1 - a) / (1 + a), and no energy is lost in the strings, so
   //           1/2 m v1^2 = 1/2 m (e_A v1)^2 + J^2 / (2 M_eff) + E_vib exactly;
@@ -849,13 +859,16 @@ TEST_CASE(
 namespace sweetspot {
 namespace {
 
-TEST_CASE("A hundred thousand sections are evaluated with the modes and the response, on a mesh of dozens") {
+TEST_CASE(
+    "A hundred thousand sections are evaluated with the modes and the response, on a mesh of "
+    "dozens") {
   // Every tenth section 20 % heavier: adjacent equal sections merge, the rest
   // are shorter than an element and share elements (no dense 2e5-DOF problem).
   constexpr int kSections = 100000;
   std::vector<Section> sections;
   for (int i = 0; i < kSections; ++i) {
-    sections.push_back(Section{0.7 / kSections, 0.25 / kSections * (i % 10 == 0 ? 1.2 : 1.0), 152.0});
+    sections.push_back(
+        Section{0.7 / kSections, 0.25 / kSections * (i % 10 == 0 ? 1.2 : 1.0), 152.0});
   }
   ModeOptions options;
   options.method = ModeOptions::Method::kFiniteElement;

@@ -12,11 +12,11 @@
 #include <string>
 #include <vector>
 
-#include "sweetspot/evaluate.hpp"
 #include "reports/optimization_report.hpp"
 #include "studies/optimization.hpp"
 #include "studies/study.hpp"
 #include "studies/sweep.hpp"
+#include "sweetspot/evaluate.hpp"
 
 namespace sweetspot::io {
 namespace {
@@ -73,17 +73,20 @@ void check_flat(const char* study_text, double start) {
   CHECK(evaluate(r.best.design).mass_kg == mass);
 }
 
-TEST_CASE("A flat objective stops on a point of the same value, from inside the box or on a bound") {
+TEST_CASE(
+    "A flat objective stops on a point of the same value, from inside the box or on a bound") {
   // Where the ball hits does not change the mass.
   check_flat(R"({
     "design": "table1/row1.json",
     "variables": [{"path": "/impact/from_tip_m", "min": 0.01, "max": 0.30, "start": 0.05}],
-    "objective": {"output": "mass_kg", "goal": "minimize"}})", 0.05);
+    "objective": {"output": "mass_kg", "goal": "minimize"}})",
+             0.05);
   // Nor does the ball's speed; the start sits on the upper bound.
   check_flat(R"({
     "design": "table1/row1.json",
     "variables": [{"path": "/ball/speed_m_s", "min": 10, "max": 70, "start": 70}],
-    "objective": {"output": "mass_kg", "goal": "minimize"}})", 70.0);
+    "objective": {"output": "mass_kg", "goal": "minimize"}})",
+             70.0);
 }
 
 // ------------------------------------------------------------ infeasible study
@@ -127,7 +130,8 @@ TEST_CASE(
   CHECK(r.constraints[0].violation == Approx(0.025).margin(1e-7 * 0.15));
   CHECK(r.constraints[1].violation == Approx(0.025).margin(1e-7 * 0.15));
   CHECK(optimization_report(study, r, Format::kMarkdown, false)
-            .find("No design meets the constraints; the least violating one is") != std::string::npos);
+            .find("No design meets the constraints; the least violating one is") !=
+        std::string::npos);
 }
 
 TEST_CASE(

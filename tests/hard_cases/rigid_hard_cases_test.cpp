@@ -5,14 +5,13 @@
 // a stated error of an exact or limiting answer, or is refused with
 // std::invalid_argument naming the argument. Never NaN, never a crash.
 //
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
-
-#include <catch2/catch.hpp>
 
 #include "sweetspot/design.hpp"
 #include "sweetspot/evaluate.hpp"
@@ -147,12 +146,14 @@ TEST_CASE("An impact exactly at the centre of mass: M_eff = M, free axis at infi
   CHECK(e.effective_mass_kg == body.mass_kg);
   CHECK_FALSE(e.rotation_axis_free_from_butt_m.has_value());
   const double m = Ball{}.mass_kg;
-  CHECK(e.apparent_cor == Approx((0.8 * body.mass_kg - m) / (body.mass_kg + m)).epsilon(kRelRoundOff));
+  CHECK(e.apparent_cor ==
+        Approx((0.8 * body.mass_kg - m) / (body.mass_kg + m)).epsilon(kRelRoundOff));
   // The hand-held system has its centre elsewhere, so its axis is finite.
   CHECK(e.rotation_axis_hand_from_butt_m.has_value());
 }
 
-TEST_CASE("An impact 1e-12 m off the centre of mass: axis huge but finite, M_eff = M to round-off") {
+TEST_CASE(
+    "An impact 1e-12 m off the centre of mass: axis huge but finite, M_eff = M to round-off") {
   // Limit: Eq. (5) with A = -delta gives the axis at x_cm - I_cm / (M delta),
   // |.| ~ 1e10 m; Eq. (17) gives M_eff = M / (1 + M delta^2 / I_cm) = M (1 - O(1e-22)).
   const Implement racquet = table_racquet();
@@ -171,7 +172,9 @@ TEST_CASE("An impact 1e-12 m off the centre of mass: axis huge but finite, M_eff
   }
 }
 
-TEST_CASE("An impact at the hand-held centre of mass: axis at infinity without a forearm, else -I/(M_e h)") {
+TEST_CASE(
+    "An impact at the hand-held centre of mass: axis at infinity without a forearm, else -I/(M_e "
+    "h)") {
   // Eq. (12) with b = 0: A = (I + M_e h^2) / (M_e h), so s = h - A = -I / (M_e h);
   // with M_e = 0 the system only translates (std::nullopt) and F_w = 0.
   const Implement racquet = table_racquet();
@@ -275,14 +278,13 @@ TEST_CASE("A forearm of 1e9 kg makes the wrist a fixed pivot") {
     const Evaluation e = evaluate(d);
     CHECK(non_finite_fields(e) == "");
     CHECK(e.wrist_force_ratio == Approx(printed_eq11(s, kMe, x)).epsilon(kRelRoundOff));
-    CHECK(e.wrist_force_ratio ==
-          Approx((M * b * h - I) / (M * h * h + I)).epsilon(2.0 * M / kMe));
+    CHECK(e.wrist_force_ratio == Approx((M * b * h - I) / (M * h * h + I)).epsilon(2.0 * M / kMe));
     REQUIRE(e.rotation_axis_hand_from_butt_m.has_value());
     // s ~ 1e-10 m comes out of h - A with A ~ h: a few ulps of h absolute (see
     // the [!mayfail] case on its relative accuracy below).
-    CHECK(*e.rotation_axis_hand_from_butt_m == Approx(axis_closed_form(s, kMe, x))
-                                                   .epsilon(kRelRoundOff)
-                                                   .margin(position_round_off(0.70)));
+    CHECK(
+        *e.rotation_axis_hand_from_butt_m ==
+        Approx(axis_closed_form(s, kMe, x)).epsilon(kRelRoundOff).margin(position_round_off(0.70)));
     CHECK(std::abs(*e.rotation_axis_hand_from_butt_m) <=
           2.0 * std::abs(M * b * h - I) / (kMe * x) + position_round_off(0.70));
   }
@@ -304,7 +306,8 @@ TEST_CASE("An impact on the wrist itself with a near-rigid forearm is finite") {
     CHECK(*e.rotation_axis_hand_from_butt_m ==
           Approx(s.com_from_butt_m + s.I_cm_kg_m2 / (s.mass_kg * s.com_from_butt_m))
               .epsilon(kRelRoundOff));
-    if (Me > 0.0) CHECK(e.wrist_force_ratio == Approx(printed_eq11(s, Me, 0.0)).epsilon(kRelRoundOff));
+    if (Me > 0.0)
+      CHECK(e.wrist_force_ratio == Approx(printed_eq11(s, Me, 0.0)).epsilon(kRelRoundOff));
   }
 }
 
@@ -364,7 +367,8 @@ TEST_CASE("A hand at the butt adds its mass at the wrist: closed form of Eq. (14
   }
 }
 
-TEST_CASE("A point mass beyond the model's range is refused, and at its edge the wrist force is finite") {
+TEST_CASE(
+    "A point mass beyond the model's range is refused, and at its edge the wrist force is finite") {
   // A 1e20 kg point mass at the butt would put the centre of mass at
   // 0.25 c / 1e20, which rounds to exactly 0, where Eqs. (11) and (13) divide by
   // h: refused before that, by the range kMaxMass_kg (a clear message, no NaN).
@@ -387,7 +391,8 @@ TEST_CASE("Two uniform sections with mass ratios from 1e-6 to 1e6 match the clos
     INFO("m2 / m1 = " << ratio);
     const double m1 = kMass / (1.0 + ratio);
     const double m2 = kMass * ratio / (1.0 + ratio);
-    const Implement implement = Implement::from_sections({Section{kL1, m1, {}}, Section{kL2, m2, {}}});
+    const Implement implement =
+        Implement::from_sections({Section{kL1, m1, {}}, Section{kL2, m2, {}}});
     check_same_body(implement.mass_properties(), two_sections_closed_form(kL1, m1, kL2, m2),
                     kRelRoundOff, kL1 + kL2);
     for (const double x : {0.0, 0.35, 0.70}) {
@@ -404,10 +409,10 @@ TEST_CASE("The paper's racquet keeps its head-to-handle ratio from 1e-6 to 1e6")
     const Implement racquet = Implement::paper_racquet(0.70, 0.25, ratio);
     const double head = racquet.sections()[1].mass_kg, handle = racquet.sections()[0].mass_kg;
     CHECK(head / handle == Approx(ratio).epsilon(8.0 * kEpsilon * (1.0 + 1.0 / ratio)));
-    check_same_body(racquet.mass_properties(),
-                    two_sections_closed_form(0.35, 0.25 / (1.0 + ratio), 0.35,
-                                             0.25 * ratio / (1.0 + ratio)),
-                    8.0 * kEpsilon * (1.0 + 1.0 / ratio) + kRelRoundOff, 0.70);
+    check_same_body(
+        racquet.mass_properties(),
+        two_sections_closed_form(0.35, 0.25 / (1.0 + ratio), 0.35, 0.25 * ratio / (1.0 + ratio)),
+        8.0 * kEpsilon * (1.0 + 1.0 / ratio) + kRelRoundOff, 0.70);
     CHECK(non_finite_fields(evaluate(Design{racquet})) == "");
   }
 }
@@ -424,10 +429,9 @@ TEST_CASE("Point masses at the very butt and tip match the closed form") {
           Implement::from_sections({Section{kL, kBeam, {}}}, {{kL, p}, {0.0, q}});
       const double M = kBeam + p + q;
       const double c = (kBeam * kL / 2 + p * kL) / M;
-      const MassProperties expected{
-          M, c,
-          kBeam * kL * kL / 12 + kBeam * (kL / 2 - c) * (kL / 2 - c) + p * (kL - c) * (kL - c) +
-              q * c * c};
+      const MassProperties expected{M, c,
+                                    kBeam * kL * kL / 12 + kBeam * (kL / 2 - c) * (kL / 2 - c) +
+                                        p * (kL - c) * (kL - c) + q * c * c};
       check_same_body(implement.mass_properties(), expected, kRelRoundOff, kL);
       for (const double x : {0.0, kL}) {
         Design d = design_with_impact(implement, x);
@@ -586,8 +590,8 @@ TEST_CASE("A swingweight one ulp above its minimum gives a tiny positive I_cm an
       CHECK(non_finite_fields(no_hand) == "");
       const double b = x - kB;
       if (b != 0.0) {
-        CHECK(no_hand.effective_mass_kg == Approx(I / (b * b)).epsilon(2.0 * I / (kM * b * b) +
-                                                                        kRelRoundOff));
+        CHECK(no_hand.effective_mass_kg ==
+              Approx(I / (b * b)).epsilon(2.0 * I / (kM * b * b) + kRelRoundOff));
         CHECK(no_hand.wrist_force_ratio == Approx(b / kB).epsilon(1e-6));
       } else {
         CHECK(no_hand.effective_mass_kg == kM);
@@ -599,8 +603,8 @@ TEST_CASE("A swingweight one ulp above its minimum gives a tiny positive I_cm an
   CHECK_THROWS_AS(Implement::from_specs(IndustrySpecs{kL, kM, kB, std::nextafter(sw_min, 0.0)}),
                   std::invalid_argument);
   // The upper end (all the mass at the two ends) is feasible, one ulp more is not.
-  CHECK(non_finite_fields(evaluate(Design{Implement::from_specs(IndustrySpecs{kL, kM, kB, sw_max})})) ==
-        "");
+  CHECK(non_finite_fields(
+            evaluate(Design{Implement::from_specs(IndustrySpecs{kL, kM, kB, sw_max})})) == "");
   CHECK_THROWS_WITH(Implement::from_specs(IndustrySpecs{kL, kM, kB, std::nextafter(sw_max, 1.0)}),
                     Catch::StartsWith("swingweight_kg_m2: must be in ("));
   CHECK_THROWS_WITH(from_swingweight(kM, kB, std::nextafter(sw_min, 0.0)),

@@ -7,6 +7,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <catch2/catch.hpp>
 #include <cerrno>
 #include <csignal>
 #include <filesystem>
@@ -15,8 +16,6 @@
 #include <sstream>
 #include <string>
 #include <thread>
-
-#include <catch2/catch.hpp>
 
 namespace sweetspot::io {
 namespace {
@@ -38,7 +37,8 @@ class Folder {
   // The names in `sub` (the folder itself by default), hidden ones included.
   std::set<std::string> names(const std::string& sub = "") const {
     std::set<std::string> out;
-    for (const auto& entry : fs::directory_iterator(dir_ / sub)) out.insert(entry.path().filename().string());
+    for (const auto& entry : fs::directory_iterator(dir_ / sub))
+      out.insert(entry.path().filename().string());
     return out;
   }
 
@@ -208,7 +208,8 @@ TEST_CASE("A directory, a missing folder and a failing writer leave everything a
   CHECK(folder.names() == std::set<std::string>{"dir", "kept.csv"});
 }
 
-TEST_CASE("A signal during a write removes the temporary file and ends the process by that signal") {
+TEST_CASE(
+    "A signal during a write removes the temporary file and ends the process by that signal") {
   const Folder folder;
   const std::string kept = folder.file("kept.csv", "old\n");
   for (const int signal_number : {SIGINT, SIGTERM, SIGHUP}) {

@@ -1,19 +1,20 @@
 #include "io/design_reader.hpp"
 
 #include <catch2/catch.hpp>
-
-#include "sweetspot/evaluate.hpp"
-#include "io/input_error.hpp"
-#include "sweetspot/string_bed.hpp"
-
 #include <cmath>
+
+#include "io/input_error.hpp"
+#include "sweetspot/evaluate.hpp"
+#include "sweetspot/string_bed.hpp"
 
 namespace sweetspot::io {
 namespace {
 
 constexpr double kRoundOff = 1e-12;
 
-DesignFile read(const char* text) { return read_design(parse_json(text, "test.json"), "test.json"); }
+DesignFile read(const char* text) {
+  return read_design(parse_json(text, "test.json"), "test.json");
+}
 
 TEST_CASE("Industry units are converted to SI by their key suffix") {
   const DesignFile d = read(R"({
@@ -81,10 +82,12 @@ TEST_CASE("A design written by design_to_json reads back to the same evaluation"
 
 TEST_CASE("The three implement forms read from files give the same evaluation") {
   const Evaluation paper = evaluate(read(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25,
-      "head_to_handle_mass_ratio": 0.8}})").design);
+      "head_to_handle_mass_ratio": 0.8}})")
+                                        .design);
   const Evaluation sections = evaluate(read(R"({"implement": {"sections": [
       {"length_m": 0.35, "mass_kg": 0.1388888888888889},
-      {"length_m": 0.35, "mass_kg": 0.1111111111111111}]}})").design);
+      {"length_m": 0.35, "mass_kg": 0.1111111111111111}]}})")
+                                           .design);
   CHECK(sections.peak_wrist_force_N == Approx(paper.peak_wrist_force_N).epsilon(1e-12));
   const std::string specs_text =
       R"({"implement": {"length_m": 0.7, "mass_kg": 0.25, "balance_from_butt_m": )" +
@@ -120,7 +123,8 @@ namespace sweetspot::io {
 namespace {
 
 TEST_CASE("cor_rigid and a string tension are read, and contradict a given COR or duration") {
-  const DesignFile d = read(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8},
+  const DesignFile d =
+      read(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8},
       "frame": {"cor_rigid": 0.85, "fundamental_free_Hz": 150},
       "strings": {"tension_lb": 55, "head_size_in2": 100, "string_spacing_mm": 16.5}})");
   REQUIRE(d.design.cor_rigid);
@@ -128,19 +132,28 @@ TEST_CASE("cor_rigid and a string tension are read, and contradict a given COR o
   REQUIRE(d.design.strings);
   CHECK(d.design.strings->tension_N == Approx(55 * 4.4482216152605).epsilon(1e-12));
   // 100 in^2 as the circle of the same area.
-  CHECK(d.design.strings->head_radius_m == Approx(std::sqrt(100 * 0.0254 * 0.0254 / 3.141592653589793)).epsilon(1e-12));
+  CHECK(d.design.strings->head_radius_m ==
+        Approx(std::sqrt(100 * 0.0254 * 0.0254 / 3.141592653589793)).epsilon(1e-12));
   CHECK(d.design.strings->string_spacing_m == Approx(0.0165).epsilon(1e-12));
   CHECK(d.provenance.at("frame/cor").find("derived") != std::string::npos);
-  CHECK_THROWS_WITH(read(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8},
-      "frame": {"cor": 0.8, "cor_rigid": 0.85}})"), Catch::Contains("/frame/cor_rigid: contradicts"));
-  CHECK_THROWS_WITH(read(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8},
-      "strings": {"impact_duration_ms": 4, "tension_N": 250}})"), Catch::Contains("/strings/tension_N: contradicts"));
-  CHECK_THROWS_WITH(read(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8},
-      "strings": {"tension_N": -250}})"), Catch::Contains("/strings/tension_N"));
+  CHECK_THROWS_WITH(
+      read(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8},
+      "frame": {"cor": 0.8, "cor_rigid": 0.85}})"),
+      Catch::Contains("/frame/cor_rigid: contradicts"));
+  CHECK_THROWS_WITH(
+      read(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8},
+      "strings": {"impact_duration_ms": 4, "tension_N": 250}})"),
+      Catch::Contains("/strings/tension_N: contradicts"));
+  CHECK_THROWS_WITH(
+      read(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8},
+      "strings": {"tension_N": -250}})"),
+      Catch::Contains("/strings/tension_N"));
 }
 
-TEST_CASE("A derived COR is below cor_rigid and the tension sets the duration the evaluation uses") {
-  const DesignFile d = read(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8},
+TEST_CASE(
+    "A derived COR is below cor_rigid and the tension sets the duration the evaluation uses") {
+  const DesignFile d =
+      read(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8},
       "frame": {"cor_rigid": 0.85, "fundamental_free_Hz": 150}, "strings": {"tension_N": 250}})");
   CHECK(needed_fidelity(d.design) == Fidelity::kResponse);
   CHECK_THROWS_WITH(evaluate(d.design, Fidelity::kModal), Catch::StartsWith("frame/cor_rigid"));
@@ -152,7 +165,8 @@ TEST_CASE("A derived COR is below cor_rigid and the tension sets the duration th
   CHECK(*e.vibration_energy_J > 0.0);
   // The energy balance of the derived COR: (1 - e^2) = (1 - e_r^2) + 2 E_vib / (mu v1^2).
   const double mu = 0.057 * e.effective_mass_kg / (0.057 + e.effective_mass_kg);
-  CHECK(1 - e.cor * e.cor == Approx(1 - 0.85 * 0.85 + 2 * *e.vibration_energy_J / (mu * 50 * 50)).epsilon(1e-9));
+  CHECK(1 - e.cor * e.cor ==
+        Approx(1 - 0.85 * 0.85 + 2 * *e.vibration_energy_J / (mu * 50 * 50)).epsilon(1e-9));
   CHECK(e.impact_duration_derived);
   const StringBed bed{250.0};
   CHECK(e.impact_duration_s ==
@@ -162,7 +176,8 @@ TEST_CASE("A derived COR is below cor_rigid and the tension sets the duration th
 TEST_CASE("A tension whose derived duration is out of range is blamed, at the key the file used") {
   // 1e-9 lb of tension: a string bed so slack that the contact would last
   // minutes; the duration was never given, so the error names the tension.
-  const DesignFile d = read(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8},
+  const DesignFile d =
+      read(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8},
       "strings": {"tension_lb": 1e-9}})");
   const auto error_of = [&](auto&& call) {
     try {
@@ -176,8 +191,10 @@ TEST_CASE("A tension whose derived duration is out of range is blamed, at the ke
     }
     return std::string("(no error)");
   };
-  for (const std::string& error : {error_of([&] { evaluate(d.design); }), error_of([&] { rigid_case(d.design); })}) {
-    CHECK_THAT(error, Catch::StartsWith("/strings/tension_lb: ") && Catch::Contains("gives an impact duration of") &&
+  for (const std::string& error :
+       {error_of([&] { evaluate(d.design); }), error_of([&] { rigid_case(d.design); })}) {
+    CHECK_THAT(error, Catch::StartsWith("/strings/tension_lb: ") &&
+                          Catch::Contains("gives an impact duration of") &&
                           Catch::Contains("outside [1e-09, 10] s"));
   }
 }
@@ -194,20 +211,24 @@ TEST_CASE("A lean read gives the same design and the same errors, without proven
       return std::string(e.what());
     }
   };
-  for (const char* text : {
-           R"({"name": "specs", "implement": {"length_in": 27, "mass_g": 305, "balance_cm": 32.5,
+  for (
+      const char* text : {
+          R"({"name": "specs", "implement": {"length_in": 27, "mass_g": 305, "balance_cm": 32.5,
                "swingweight_kg_cm2": 320}, "impact": {"from_tip_cm": 15}})",
-           R"({"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8},
+          R"({"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8},
                "hand": {"mass_g": -5}})",
-           R"({"implement": {"length_in": 27, "mass_g": 305, "balance_cm": 80, "swingweight_kg_cm2": 320}})",
-           R"({"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8},
+          R"({"implement": {"length_in": 27, "mass_g": 305, "balance_cm": 80, "swingweight_kg_cm2": 320}})",
+          R"({"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8},
                "impact": {"from_butt_m": 0.9}})"}) {
     INFO(text);
     const std::string full = outcome(read_design, text);
     CHECK(outcome(read_design_lean, text) == full);
   }
-  const DesignFile lean = read_design_lean(parse_json(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25,
-      "head_to_handle_mass_ratio": 0.8}})", "test.json"), "test.json");
+  const DesignFile lean =
+      read_design_lean(parse_json(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25,
+      "head_to_handle_mass_ratio": 0.8}})",
+                                  "test.json"),
+                       "test.json");
   CHECK(lean.provenance.empty());
   CHECK(lean.keys.empty());
 }
@@ -230,7 +251,8 @@ InputError error_of(const std::string& text, const char* fidelity = nullptr) {
 }
 
 TEST_CASE("A core error names the key the file used and quotes the value it gave") {
-  const InputError e = error_of(R"({"implement": {"sections": [{"length_cm": 5e-324, "mass_kg": 0.1},
+  const InputError e =
+      error_of(R"({"implement": {"sections": [{"length_cm": 5e-324, "mass_kg": 0.1},
                                    {"length_m": 0.7, "mass_kg": 0.2}]}})");
   CHECK(e.pointer() == "/implement/sections/0/length_cm");
   CHECK_THAT(e.detail(), Catch::Contains("length_cm: 5e-324"));
@@ -246,14 +268,17 @@ TEST_CASE("A section error found while evaluating keeps the /implement prefix") 
   const InputError e = error_of(R"({"implement": {"sections": [
       {"length_m": 0.3, "mass_kg": 0.1, "EI_N_m2": 150},
       {"length_m": 1e-6, "mass_kg": 1e-6, "EI_N_m2": 1e6},
-      {"length_m": 0.4, "mass_kg": 0.15, "EI_N_m2": 150}]}})", "modal");
+      {"length_m": 0.4, "mass_kg": 0.15, "EI_N_m2": 150}]}})",
+                                "modal");
   CHECK(e.pointer() == "/implement/sections/1/length_m");
   CHECK_THAT(e.detail(), Catch::Contains("too short for finite elements"));
 }
 
 TEST_CASE("A file name that is not UTF-8 stands in for a missing name as valid UTF-8") {
   const DesignFile d = read_design(parse_json(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25,
-      "head_to_handle_mass_ratio": 0.8}})", "bad\xFF.json"), "bad\xFF.json");
+      "head_to_handle_mass_ratio": 0.8}})",
+                                              "bad\xFF.json"),
+                                   "bad\xFF.json");
   CHECK(d.name == "bad\xEF\xBF\xBD.json");
   CHECK(d.source == "bad\xFF.json");
 }

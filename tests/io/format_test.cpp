@@ -2,6 +2,7 @@
 // short, and the text of a cell never breaks its table.
 #include "io/format.hpp"
 
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -10,8 +11,6 @@
 #include <random>
 #include <string>
 #include <vector>
-
-#include <catch2/catch.hpp>
 
 #include "io/outputs.hpp"
 
@@ -50,8 +49,14 @@ TEST_CASE("A Markdown cell escapes pipes; a CSV field is quoted only when it mus
 }
 
 TEST_CASE("Every output of an evaluation is in the JSON, null only with a note") {
-  DesignFile file{"row1.json", "Table I top row", Design{Implement::paper_racquet(0.70, 0.25, 0.8)},
-                  "head_to_handle_mass_ratio", {}, Json::object(), {}, "auto"};
+  DesignFile file{"row1.json",
+                  "Table I top row",
+                  Design{Implement::paper_racquet(0.70, 0.25, 0.8)},
+                  "head_to_handle_mass_ratio",
+                  {},
+                  Json::object(),
+                  {},
+                  "auto"};
   const Evaluation e = evaluate(file.design);
   const Json j = evaluation_json(file, e);
   CHECK(j["fidelity"] == "rigid");
@@ -70,9 +75,21 @@ TEST_CASE("Appending a number writes exactly the text exact() gives, shortest an
   const unsigned seed = 20040622;
   INFO("seed " << seed);
   std::mt19937_64 random(seed);
-  std::vector<double> values{0.0, -0.0, 1.0, -1.0, 0.1, 0.3, 1e-300, 5e-324, -2.2250738585072014e-308,
-                             std::numeric_limits<double>::max(), 1e21, 123456789012345680.0, 250.06908906015684,
-                             std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
+  std::vector<double> values{0.0,
+                             -0.0,
+                             1.0,
+                             -1.0,
+                             0.1,
+                             0.3,
+                             1e-300,
+                             5e-324,
+                             -2.2250738585072014e-308,
+                             std::numeric_limits<double>::max(),
+                             1e21,
+                             123456789012345680.0,
+                             250.06908906015684,
+                             std::numeric_limits<double>::infinity(),
+                             -std::numeric_limits<double>::infinity()};
   for (int i = 0; i < 10000; ++i) {
     double value = 0.0;
     const std::uint64_t bits = random();

@@ -2,9 +2,8 @@
 #include "io/input_error.hpp"
 
 #include <algorithm>
-#include <string>
-
 #include <catch2/catch.hpp>
+#include <string>
 
 namespace sweetspot::io {
 namespace {

@@ -6,14 +6,13 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
-
-#include <catch2/catch.hpp>
 
 #include "io/input_error.hpp"
 
@@ -87,15 +86,18 @@ class Folder {
 
 constexpr std::size_t kSmallLimit = 1000;
 
-TEST_CASE("A file up to the limit is read whole, one byte more is refused naming the file and the limit") {
+TEST_CASE(
+    "A file up to the limit is read whole, one byte more is refused naming the file and the "
+    "limit") {
   const Folder folder;
   const std::string at_limit = folder.path("at-limit.json");
   std::ofstream(at_limit) << "{}" << std::string(kSmallLimit - 2, ' ');
   CHECK(read_input_file(at_limit, kSmallLimit).size() == kSmallLimit);
   const std::string over = folder.path("over.json");
   std::ofstream(over) << "{}" << std::string(kSmallLimit - 1, ' ');
-  CHECK_THROWS_WITH(read_input_file(over, kSmallLimit),
-                    over + ": the file is larger than the limit of 1000 bytes for a design or study file");
+  CHECK_THROWS_WITH(
+      read_input_file(over, kSmallLimit),
+      over + ": the file is larger than the limit of 1000 bytes for a design or study file");
   CHECK(read_input_file(over, std::size_t{1} << 20).size() == kSmallLimit + 1);
 }
 
@@ -103,7 +105,8 @@ TEST_CASE("A device that never ends is read only up to the limit") {
   // /dev/zero reports size 0 and never ends: st_size cannot be trusted. Its
   // first chunk holds a NUL byte, so reading stops there and the parser says binary.
   const auto start = std::chrono::steady_clock::now();
-  CHECK_THROWS_WITH(read_json_file("/dev/zero"), Catch::Contains("/dev/zero") && Catch::Contains("binary"));
+  CHECK_THROWS_WITH(read_json_file("/dev/zero"),
+                    Catch::Contains("/dev/zero") && Catch::Contains("binary"));
   CHECK_THROWS_WITH(read_json_file("/dev/urandom"), Catch::Contains("/dev/urandom"));
   CHECK(std::chrono::steady_clock::now() - start < std::chrono::seconds(2));
 }

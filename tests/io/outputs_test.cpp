@@ -2,10 +2,9 @@
 // writer, report and objective.
 #include "io/outputs.hpp"
 
+#include <catch2/catch.hpp>
 #include <set>
 #include <string>
-
-#include <catch2/catch.hpp>
 
 namespace sweetspot::io {
 namespace {
@@ -36,7 +35,8 @@ TEST_CASE("Outputs that need the modes are absent from a rigid evaluation, the r
       CHECK(output.value(e).has_value());
     }
   }
-  CHECK(find_output("peak_wrist_force_N")->value(e).value() == Approx(568).margin(0.5));  // Table I, row 1
+  CHECK(find_output("peak_wrist_force_N")->value(e).value() ==
+        Approx(568).margin(0.5));  // Table I, row 1
 }
 
 }  // namespace

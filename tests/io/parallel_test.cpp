@@ -3,12 +3,10 @@
 #include "io/parallel.hpp"
 
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <numeric>
 #include <stdexcept>
 #include <vector>
-
-#include <catch2/catch.hpp>
-
 
 namespace sweetspot::io {
 namespace {
@@ -17,10 +15,12 @@ TEST_CASE("for_blocks covers every index once, in contiguous blocks, on as many 
   // Oracle: each index written once by the block that holds it; blocks are
   // contiguous, ascending and never more than the threads or the items.
   for (const int threads : {1, 2, 3, 8}) {
-    for (const std::size_t count : {std::size_t{0}, std::size_t{1}, std::size_t{5}, std::size_t{1000}}) {
+    for (const std::size_t count :
+         {std::size_t{0}, std::size_t{1}, std::size_t{5}, std::size_t{1000}}) {
       INFO(threads << " threads, " << count << " items");
       std::vector<int> hits(count, 0);
-      std::vector<std::pair<std::size_t, std::size_t>> blocks(static_cast<std::size_t>(threads), {0, 0});
+      std::vector<std::pair<std::size_t, std::size_t>> blocks(static_cast<std::size_t>(threads),
+                                                              {0, 0});
       for_blocks(count, threads, [&](std::size_t t, std::size_t from, std::size_t to) {
         blocks[t] = {from, to};
         for (std::size_t i = from; i < to; ++i) ++hits[i];
@@ -47,7 +47,6 @@ TEST_CASE("for_blocks rethrows what a block throws, after every block has ended"
                     "block 2 failed");
   CHECK(std::accumulate(done.begin(), done.end(), 0) == 4);
 }
-
 
 }  // namespace
 }  // namespace sweetspot::io

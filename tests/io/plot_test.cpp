@@ -5,6 +5,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <catch2/catch.hpp>
 #include <cerrno>
 #include <cstdio>
 #include <filesystem>
@@ -12,18 +13,19 @@
 #include <sstream>
 #include <thread>
 
-#include <catch2/catch.hpp>
-
 namespace sweetspot::io {
 namespace {
 
 Plot two_points(const std::string& title) {
-  return Plot{title, "x_label (m)", "y (N)", std::nullopt, std::nullopt,
-              {PlotSeries{"peak_wrist_force_N", {0.0, 1.0}, {1.0, 2.0}}}, {}, {}};
+  return Plot{title,        "x_label (m)",
+              "y (N)",      std::nullopt,
+              std::nullopt, {PlotSeries{"peak_wrist_force_N", {0.0, 1.0}, {1.0, 2.0}}},
+              {},           {}};
 }
 
 TEST_CASE("Labels print underscores literally while file names are left alone") {
-  const std::string script = gnuplot_script(two_points("peak_wrist_force_N"), "/tmp/out_dir/a_b.png");
+  const std::string script =
+      gnuplot_script(two_points("peak_wrist_force_N"), "/tmp/out_dir/a_b.png");
   CHECK(script.find("set output '/tmp/out_dir/a_b.png'") != std::string::npos);
   CHECK(script.find("set title 'peak\\_wrist\\_force\\_N'") != std::string::npos);
   CHECK(script.find("title 'peak\\_wrist\\_force\\_N'") != std::string::npos);
@@ -38,8 +40,8 @@ TEST_CASE("Text from a user's file never runs as a command: gnuplot strings are 
   const std::string name = "`touch " + witness + "` it's \"quoted\"\nand {odd}";
   const std::string script = gnuplot_script(two_points(name), "");
   CHECK(script.find("set title '`touch") != std::string::npos);  // inside single quotes
-  CHECK(script.find("it''s") != std::string::npos);       // a quote is written twice
-  CHECK(script.find("\"quoted\" and") != std::string::npos);  // the newline became a space
+  CHECK(script.find("it''s") != std::string::npos);              // a quote is written twice
+  CHECK(script.find("\"quoted\" and") != std::string::npos);     // the newline became a space
   std::string why;
   CHECK(render_png(two_points(name), (dir / "p.png").string(), &why));
   CHECK_FALSE(std::filesystem::exists(witness));
@@ -110,17 +112,19 @@ std::string standard_output_of(const std::string& file, F f) {
   return slurp(file);
 }
 
-TEST_CASE("A plot gnuplot cannot draw fails with its message on one line, no file and nothing on stdout") {
+TEST_CASE(
+    "A plot gnuplot cannot draw fails with its message on one line, no file and nothing on "
+    "stdout") {
   const auto dir = std::filesystem::temp_directory_path() / "sweetspot_plot_fail_test";
   std::filesystem::create_directories(dir);
   const std::string png = (dir / "empty.png").string();
   // No point at all: gnuplot warns "Skipping data file with no valid points", then fails.
-  const Plot empty{"empty", "x (m)", "y (N)", std::nullopt, std::nullopt,
-                   {PlotSeries{"none", {}, {}}}, {}, {}};
+  const Plot empty{
+      "empty", "x (m)", "y (N)", std::nullopt, std::nullopt, {PlotSeries{"none", {}, {}}}, {}, {}};
   std::string why;
   bool rendered = true;
-  const std::string printed =
-      standard_output_of((dir / "stdout").string(), [&] { rendered = render_png(empty, png, &why); });
+  const std::string printed = standard_output_of((dir / "stdout").string(),
+                                                 [&] { rendered = render_png(empty, png, &why); });
   CHECK_FALSE(rendered);
   CHECK(printed.empty());
   CHECK(why.find("gnuplot failed (exit status 1)") == 0);

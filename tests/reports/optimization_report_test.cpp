@@ -1,10 +1,10 @@
 // The optimisation report says what the optimizer found, in words first.
 #include "reports/optimization_report.hpp"
 
-#include <string>
+#include <fmt/format.h>
 
 #include <catch2/catch.hpp>
-#include <fmt/format.h>
+#include <string>
 
 #include "studies/optimization.hpp"
 #include "studies/study.hpp"
@@ -21,14 +21,16 @@ TEST_CASE("The report of an infeasible study leads with it and names each violat
   REQUIRE(r.outcome == Outcome::kInfeasible);
   REQUIRE(r.constraints[0].value.has_value());
   const std::string md = optimization_report(study, r, Format::kMarkdown, false);
-  CHECK(md.find("**Answer.** No design meets the constraints; the least violating one is `/implement/mass_kg` = ") !=
-        std::string::npos);
+  CHECK(md.find("**Answer.** No design meets the constraints; the least violating one is "
+                "`/implement/mass_kg` = ") != std::string::npos);
   // The constraint, its value, how far outside its limit and the tolerance it was judged by.
-  CHECK(md.find(fmt::format("`swingweight_kg_cm2 <= 100` is {} kg cm^2, outside its limit by {} (tolerance 0.0001)",
-                            significant(*r.constraints[0].value, 4), significant(*r.constraints[0].value - 100, 4))) !=
-        std::string::npos);
+  CHECK(md.find(fmt::format(
+            "`swingweight_kg_cm2 <= 100` is {} kg cm^2, outside its limit by {} (tolerance 0.0001)",
+            significant(*r.constraints[0].value, 4),
+            significant(*r.constraints[0].value - 100, 4))) != std::string::npos);
   CHECK(md.find("the lowest") == std::string::npos);
-  const nlohmann::json j = nlohmann::json::parse(optimization_report(study, r, Format::kJson, false));
+  const nlohmann::json j =
+      nlohmann::json::parse(optimization_report(study, r, Format::kJson, false));
   CHECK(j["outcome"] == "infeasible");
   CHECK(j["feasible"] == false);
   CHECK(j["constraints"][0]["tolerance"].get<double>() == Approx(1e-4).epsilon(1e-12));
@@ -48,7 +50,8 @@ TEST_CASE("The convergence plot shows the constraint violation beside the object
   // Infeasible throughout: every point of the violation is drawn, the last the least.
   REQUIRE(plot.series[1].y.size() == r.summary.history.size());
   for (const auto& y : plot.series[1].y) CHECK(y.has_value());
-  CHECK(*plot.series[1].y.back() == Approx(r.constraints[0].violation / r.constraints[0].tolerance).epsilon(1e-9));
+  CHECK(*plot.series[1].y.back() ==
+        Approx(r.constraints[0].violation / r.constraints[0].tolerance).epsilon(1e-9));
   CHECK(gnuplot_script(plot, "c.png").find("axes x1y2") != std::string::npos);
   // Without constraints, the objective alone.
   study.constraints.clear();
@@ -68,7 +71,8 @@ TEST_CASE("A report never shows the optimizer's penalty as a value") {
   CHECK(md.find("**Answer.** No valid design was found") != std::string::npos);
   CHECK(md.find("e+12") == std::string::npos);
   CHECK(md.find("1000000000000") == std::string::npos);
-  const nlohmann::json j = nlohmann::json::parse(optimization_report(study, r, Format::kJson, false));
+  const nlohmann::json j =
+      nlohmann::json::parse(optimization_report(study, r, Format::kJson, false));
   CHECK(j["outcome"] == "no_value");
   CHECK(j["objective_value"].is_null());
   CHECK(j["start_objective_value"].is_null());

@@ -12,7 +12,9 @@ namespace {
 // The paper prints these positions to 1 mm.
 constexpr double kHalfMillimetre = 0.5e-3;
 
-DesignFile beam() { return load_design(std::string(SWEETSPOT_SOURCE_DIR) + "/designs/paper-beam.json"); }
+DesignFile beam() {
+  return load_design(std::string(SWEETSPOT_SOURCE_DIR) + "/designs/paper-beam.json");
+}
 
 TEST_CASE("Fig. 11: free and hand-held axes coincide at d = 22.8 cm, 3.2 cm from the handle end") {
   const auto crossing = figure11_crossing(beam());

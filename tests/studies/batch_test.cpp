@@ -3,14 +3,13 @@
 // limits whatever the input, and a read failure is never the end of the file.
 #include "studies/batch.hpp"
 
+#include <catch2/catch.hpp>
 #include <sstream>
 #include <stdexcept>
 #include <streambuf>
 #include <string>
 #include <utility>
 #include <vector>
-
-#include <catch2/catch.hpp>
 
 #include "io/input_error.hpp"
 
@@ -155,9 +154,11 @@ TEST_CASE("A malformed or non-numeric cell is that row's error, quoting the valu
   CHECK_FALSE(rows[5].contains("error"));
 }
 
-TEST_CASE("In CSV output an error quotes a cell's value in single quotes, which CSV leaves as they are") {
+TEST_CASE(
+    "In CSV output an error quotes a cell's value in single quotes, which CSV leaves as they are") {
   const Outcome out = run("name,implement.mass_kg\nA,VS5\n", CatalogueFormat::kAuto, Format::kCsv);
-  CHECK_THAT(out.out, Catch::EndsWith(",\"cat.csv:2: /implement/mass_kg: expected a number, got 'VS5'\"\n"));
+  CHECK_THAT(out.out,
+             Catch::EndsWith(",\"cat.csv:2: /implement/mass_kg: expected a number, got 'VS5'\"\n"));
   CHECK(out.out.find("\"\"") == std::string::npos);
 }
 

@@ -5,13 +5,12 @@
 #include "studies/design_binding.hpp"
 
 #include <bit>
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdint>
 #include <sstream>
 #include <string>
 #include <vector>
-
-#include <catch2/catch.hpp>
 
 #include "io/design_reader.hpp"
 #include "studies/batch.hpp"
@@ -24,7 +23,9 @@ namespace {
 
 std::string studies() { return std::string(SWEETSPOT_SOURCE_DIR) + "/designs/studies/"; }
 
-bool same_bits(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
+bool same_bits(double a, double b) {
+  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+}
 
 // Every number of the rigid model and the implement, compared bit for bit.
 void check_same_design(const Design& a, const Design& b) {
@@ -99,7 +100,9 @@ const std::vector<Case>& cases() {
   return list;
 }
 
-TEST_CASE("A bound field gives, bit for bit, the design read from the file with the value written there") {
+TEST_CASE(
+    "A bound field gives, bit for bit, the design read from the file with the value written "
+    "there") {
   for (const Case& c : cases()) {
     const Json document = Json::parse(c.design);
     const DesignDescription description = describe_design(document, "design.json");
@@ -132,9 +135,11 @@ TEST_CASE("A bound field gives, bit for bit, the design read from the file with 
 TEST_CASE("Fields no binding can set are not compiled") {
   const Json document = Json::parse(cases()[0].design);
   const DesignDescription description = describe_design(document, "design.json");
-  for (const char* pointer : {"/name", "/reference/peak_wrist_force_N", "/implement/balance_cm",
-                              "/implement/sections/0/mass_kg", "/impact/from_butt_m", "/forearm/equivalent_mass_kg",
-                              "/strings/tension_N", "/frame/cor_rigid", "/hand", "/implement/mass_kg/x", "hand/mass_kg"}) {
+  for (const char* pointer :
+       {"/name", "/reference/peak_wrist_force_N", "/implement/balance_cm",
+        "/implement/sections/0/mass_kg", "/impact/from_butt_m", "/forearm/equivalent_mass_kg",
+        "/strings/tension_N", "/frame/cor_rigid", "/hand", "/implement/mass_kg/x",
+        "hand/mass_kg"}) {
     INFO(pointer);
     CHECK_FALSE(bind_field(description, pointer));
   }
@@ -146,11 +151,13 @@ TEST_CASE("Fields no binding can set are not compiled") {
 
 std::string sweep_csv(const Study& study, SweepOptions options) {
   std::ostringstream csv;
-  run_sweep(study, csv, [](std::size_t, std::size_t) {}, options);
+  run_sweep(
+      study, csv, [](std::size_t, std::size_t) {}, options);
   return csv.str();
 }
 
-TEST_CASE("A compiled sweep writes the bytes of the sweep that reads every point, error rows included") {
+TEST_CASE(
+    "A compiled sweep writes the bytes of the sweep that reads every point, error rows included") {
   for (const Case& c : cases()) {
     for (std::size_t i = 0; i + 1 < c.fields.size(); ++i) {
       const auto& [first, a] = c.fields[i];
@@ -158,7 +165,8 @@ TEST_CASE("A compiled sweep writes the bytes of the sweep that reads every point
       Json text = Json::parse(R"({"outputs": ["peak_wrist_force_N", "mass_kg", "swingweight_kg_cm2",
                                   "impact_from_tip_m", "impact_duration_s", "rotation_axis_free_from_butt_m"]})");
       text["design"] = Json::parse(c.design);
-      text["variables"] = Json::array({Json{{"path", first}, {"values", a}}, Json{{"path", second}, {"values", b}}});
+      text["variables"] = Json::array(
+          {Json{{"path", first}, {"values", a}}, Json{{"path", second}, {"values", b}}});
       INFO(text.dump());
       Study study;
       try {
@@ -195,7 +203,8 @@ std::string batch_output(const std::string& csv, const BatchOptions& options) {
 
 TEST_CASE("A compiled batch writes the rows and error rows of the batch that reads every row") {
   const std::string catalogue =
-      "name,implement.length_in,implement.mass_g,implement.balance_cm,implement.swingweight_kg_cm2,impact.from_tip_m\n"
+      "name,implement.length_in,implement.mass_g,implement.balance_cm,implement.swingweight_kg_cm2,"
+      "impact.from_tip_m\n"
       "a,27,305,32.5,320,0.1\n"
       ",27.5,290,33,310,0.12\n"
       "\"quoted, name\",27,300,31,330,\n"
@@ -208,9 +217,10 @@ TEST_CASE("A compiled batch writes the rows and error rows of the batch that rea
       "balance outside,27,305,90,320,0.1\n"
       ",,,,,\n"
       "b,26.5,310,32,315,0.05\n";
-  for (const char* base : {R"({"implement": {"length_in": 27, "mass_g": 305, "balance_cm": 32.5,
+  for (const char* base :
+       {R"({"implement": {"length_in": 27, "mass_g": 305, "balance_cm": 32.5,
                                "swingweight_kg_cm2": 320}, "frame": {"cor": 0.8}})",
-                           R"({"name": "base", "implement": {"length_in": 27, "mass_g": 305, "balance_pts_hl": 4,
+        R"({"name": "base", "implement": {"length_in": 27, "mass_g": 305, "balance_pts_hl": 4,
                                "swingweight_kg_cm2": 320}, "forearm": {"mass_kg": 1.2}})"}) {
     for (const Format format : {Format::kCsv, Format::kJson}) {
       INFO(base << (format == Format::kCsv ? " to CSV" : " to JSON"));
@@ -236,21 +246,25 @@ TEST_CASE("A column the base's implement form does not have is the header's erro
   for (const bool compiled : {false, true}) {
     BatchOptions options;
     options.input = CatalogueFormat::kCsv;
-    options.base = Json::parse(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8}})");
+    options.base = Json::parse(
+        R"({"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8}})");
     options.compiled = compiled;
-    CHECK_THROWS_WITH(batch_output(catalogue, options),
-                      Catch::StartsWith("catalogue.csv:1: column 2 \"implement.balance_cm\": unknown key"));
+    CHECK_THROWS_WITH(
+        batch_output(catalogue, options),
+        Catch::StartsWith("catalogue.csv:1: column 2 \"implement.balance_cm\": unknown key"));
   }
 }
 
 TEST_CASE("A column no binding sets leaves its rows to the JSON path with the same output") {
-  const std::string catalogue = "name,reference.peak_wrist_force_N,hand.mass_kg,frame.cor_rigid\n"
-                                "a,500,0.4,\n"
-                                "b,,0.45,\n"
-                                "c,,0.5,0.9\n";
+  const std::string catalogue =
+      "name,reference.peak_wrist_force_N,hand.mass_kg,frame.cor_rigid\n"
+      "a,500,0.4,\n"
+      "b,,0.45,\n"
+      "c,,0.5,0.9\n";
   BatchOptions options;
   options.input = CatalogueFormat::kCsv;
-  options.base = Json::parse(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8}})");
+  options.base = Json::parse(
+      R"({"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8}})");
   options.compiled = false;
   const std::string reference = batch_output(catalogue, options);
   options.compiled = true;
@@ -258,8 +272,9 @@ TEST_CASE("A column no binding sets leaves its rows to the JSON path with the sa
 }
 
 TEST_CASE("An optimisation's compiled evaluations equal the JSON path's, at good and bad points") {
-  for (const char* name : {"1-lowest-wrist-force-table1-ranges.json", "2-lowest-wrist-force-fixed-feel.json",
-                           "3a-cop-on-node-table1-racquet.json", "4-robust-lowest-worst-wrist-force.json"}) {
+  for (const char* name :
+       {"1-lowest-wrist-force-table1-ranges.json", "2-lowest-wrist-force-fixed-feel.json",
+        "3a-cop-on-node-table1-racquet.json", "4-robust-lowest-worst-wrist-force.json"}) {
     INFO(name);
     Study study = load_study(studies() + name);
     REQUIRE(compiled_for_variables(study));
@@ -272,7 +287,8 @@ TEST_CASE("An optimisation's compiled evaluations equal the JSON path's, at good
     for (const double t : {0.0, 0.3, 1.0, -0.5, 2.0}) {
       std::vector<double> x(n);
       for (std::size_t i = 0; i < n; ++i) {
-        x[i] = compiled.lower[i] + (compiled.upper[i] - compiled.lower[i]) * (t + 0.1 * static_cast<double>(i));
+        x[i] = compiled.lower[i] +
+               (compiled.upper[i] - compiled.lower[i]) * (t + 0.1 * static_cast<double>(i));
       }
       INFO("t = " << t);
       double f1 = 0.0, f2 = 0.0;

@@ -1,23 +1,23 @@
 // Evidence that the optimum is right: every shipped study against brute force
 // on a grid of the same model, gradients against central differences, KKT
 // conditions at the optimum, and agreement from several starts.
-#include "studies/optimization.hpp"
 #include "studies/study.hpp"
-#include "studies/sweep.hpp"
+
+#include <fmt/format.h>
 
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
 #include <optional>
-#include <string>
 #include <sstream>
+#include <string>
 #include <utility>
 #include <vector>
 
-#include <catch2/catch.hpp>
-#include <fmt/format.h>
-
 #include "io/input_error.hpp"
+#include "studies/optimization.hpp"
+#include "studies/sweep.hpp"
 #include "sweetspot/roots.hpp"
 
 namespace sweetspot::io {
@@ -25,7 +25,9 @@ namespace {
 
 std::string studies() { return std::string(SWEETSPOT_SOURCE_DIR) + "/designs/studies/"; }
 
-double objective_at(const Study& study, std::vector<double> x) { return objective_of(study, design_at(study, x)); }
+double objective_at(const Study& study, std::vector<double> x) {
+  return objective_of(study, design_at(study, x));
+}
 
 // The optimizer may beat a grid (it is continuous) but never lose to it by
 // more than its own convergence tolerance, relative to the objective.
@@ -69,25 +71,32 @@ TEST_CASE("Study 1: every variable sits on the bound its derivative points to (K
   const OptimizationResult r = run_optimization(study);
   const Problem problem = make_problem(study);
   std::vector<double> grad(r.summary.x.size());
-  difference_gradient([&](std::span<const double> x) { return objective_at(study, {x.begin(), x.end()}); },
-                      r.summary.x, problem.lower, problem.upper, 1e-6, grad);
+  difference_gradient(
+      [&](std::span<const double> x) {
+        return objective_at(study, {x.begin(), x.end()});
+      },
+      r.summary.x, problem.lower, problem.upper, 1e-6, grad);
   for (std::size_t i = 0; i < grad.size(); ++i) {
     INFO(study.variables[i].pointer << ": gradient " << grad[i]);
     const StudyVariable& v = study.variables[i];
     const double slack = 1e-6 * (v.max - v.min);
-    if (r.summary.x[i] <= v.min + slack) CHECK(grad[i] >= 0.0);        // at the lower bound: f rises inward
-    else if (r.summary.x[i] >= v.max - slack) CHECK(grad[i] <= 0.0);   // at the upper bound: f falls outward
-    else CHECK(std::abs(grad[i]) <= 1e-3 * std::abs(r.summary.objective));
+    if (r.summary.x[i] <= v.min + slack)
+      CHECK(grad[i] >= 0.0);  // at the lower bound: f rises inward
+    else if (r.summary.x[i] >= v.max - slack)
+      CHECK(grad[i] <= 0.0);  // at the upper bound: f falls outward
+    else
+      CHECK(std::abs(grad[i]) <= 1e-3 * std::abs(r.summary.objective));
   }
 }
 
 TEST_CASE("Study 1: an inactive constraint changes nothing") {
   Study study = load_study(studies() + "1-lowest-wrist-force-table1-ranges.json");
   const OptimizationResult free = run_optimization(study);
-  study.constraints.push_back(StudyConstraint{find_output("swingweight_kg_cm2"), std::nullopt, 1000.0,
-                                              std::nullopt, 1e-6});
+  study.constraints.push_back(
+      StudyConstraint{find_output("swingweight_kg_cm2"), std::nullopt, 1000.0, std::nullopt, 1e-6});
   const OptimizationResult constrained = run_optimization(study);
-  CHECK(constrained.summary.objective == Approx(free.summary.objective).epsilon(kBeatsGridTolerance));
+  CHECK(constrained.summary.objective ==
+        Approx(free.summary.objective).epsilon(kBeatsGridTolerance));
   REQUIRE(constrained.constraints.size() == 1);
   CHECK_FALSE(constrained.constraints[0].active);
 }
@@ -110,10 +119,14 @@ TEST_CASE("Study 2: fixed mass and swingweight, against a grid that solves the t
       const double p = position.min + (position.max - position.min) * j / (kPoints - 1);
       const auto x_for = [&](double tape) { return std::vector<double>{0.305 - tape, q, p, tape}; };
       const auto swingweight_gap = [&](double tape) {
-        return *find_output("swingweight_kg_cm2")->value(evaluate_in(study, design_at(study, x_for(tape)))) - 320.0;
+        return *find_output("swingweight_kg_cm2")
+                    ->value(evaluate_in(study, design_at(study, x_for(tape)))) -
+               320.0;
       };
-      const auto tape = find_root(swingweight_gap, study.variables[3].min, study.variables[3].max, 1e-12);
-      if (!tape || 0.305 - *tape < study.variables[0].min || 0.305 - *tape > study.variables[0].max) continue;
+      const auto tape =
+          find_root(swingweight_gap, study.variables[3].min, study.variables[3].max, 1e-12);
+      if (!tape || 0.305 - *tape < study.variables[0].min || 0.305 - *tape > study.variables[0].max)
+        continue;
       best = std::min(best, objective_at(study, x_for(*tape)));
     }
   }
@@ -132,8 +145,10 @@ TEST_CASE("Study 2: the same optimum from several seeds") {
   }
 }
 
-TEST_CASE("Studies 3: the COP cannot be put on the node, and the optimizer finds the closest corner") {
-  for (const char* name : {"3a-cop-on-node-table1-racquet.json", "3b-cop-on-node-paper-beam.json"}) {
+TEST_CASE(
+    "Studies 3: the COP cannot be put on the node, and the optimizer finds the closest corner") {
+  for (const char* name :
+       {"3a-cop-on-node-table1-racquet.json", "3b-cop-on-node-paper-beam.json"}) {
     INFO(name);
     const Study study = load_study(studies() + name);
     CHECK(study.fidelity == Fidelity::kModal);
@@ -178,7 +193,9 @@ TEST_CASE("Study gradients agree with a wide-step Richardson central difference"
   const Problem problem = make_problem(study);
   std::vector<double> x{0.29, 1.05, 0.6, 0.01};
   std::vector<double> grad(4);
-  const auto f = [&](std::span<const double> y) { return objective_at(study, {y.begin(), y.end()}); };
+  const auto f = [&](std::span<const double> y) {
+    return objective_at(study, {y.begin(), y.end()});
+  };
   difference_gradient(f, x, problem.lower, problem.upper, 1e-6, grad);
   for (std::size_t i = 0; i < 4; ++i) {
     const double h = 1e-3 * (problem.upper[i] - problem.lower[i]);
@@ -204,17 +221,22 @@ TEST_CASE("Bad studies are refused with the study's JSON path") {
     return std::string("(no error)");
   };
   CHECK_THAT(error_of(R"({"design": "../table1/row1.json", "variables": [{"path": "/implement/nope",
-              "min": 0, "max": 1}]})"), Catch::StartsWith("/variables/0/path") && Catch::Contains("not in the design"));
+              "min": 0, "max": 1}]})"),
+             Catch::StartsWith("/variables/0/path") && Catch::Contains("not in the design"));
   CHECK_THAT(error_of(R"({"design": "../table1/row1.json", "variables": [{"path": "/name",
-              "min": 0, "max": 1}]})"), Catch::StartsWith("/variables/0/path") && Catch::Contains("expected a number"));
+              "min": 0, "max": 1}]})"),
+             Catch::StartsWith("/variables/0/path") && Catch::Contains("expected a number"));
   CHECK_THAT(error_of(R"({"design": "../table1/row1.json", "variables": [{"path": "/frame/cor",
-              "min": 0.9, "max": 0.6}]})"), Catch::StartsWith("/variables/0/min") && Catch::Contains("must be < max"));
+              "min": 0.9, "max": 0.6}]})"),
+             Catch::StartsWith("/variables/0/min") && Catch::Contains("must be < max"));
   CHECK_THAT(error_of(R"({"design": "../table1/row1.json", "variables": [{"path": "/frame/cor",
               "min": 0.6, "max": 0.8}], "objective": {"output": "happiness"}})"),
              Catch::StartsWith("/objective/output") && Catch::Contains("unknown output"));
   CHECK_THAT(error_of(R"({"design": "../table1/row1.json", "variables": [{"path": "/frame/cor",
-              "min": 0.6, "max": 0.8}], "algorithm": "LD_MAGIC"})"), Catch::StartsWith("/algorithm"));
-  CHECK_THAT(error_of(R"({"design": "nowhere.json", "variables": []})"), Catch::StartsWith("/design"));
+              "min": 0.6, "max": 0.8}], "algorithm": "LD_MAGIC"})"),
+             Catch::StartsWith("/algorithm"));
+  CHECK_THAT(error_of(R"({"design": "nowhere.json", "variables": []})"),
+             Catch::StartsWith("/design"));
   CHECK_THAT(error_of(R"({"design": "../table1/row1.json", "variables": [{"path": "/frame/cor",
               "min": 0.6, "max": 0.8}], "constraints": [{"output": "mass_kg"}]})"),
              Catch::StartsWith("/constraints/0"));
@@ -235,9 +257,10 @@ TEST_CASE("An infeasible study says so and returns the least violating design") 
   CHECK(c.violation == *c.value - 100.0);
   // The least violating design swings as lightly as the box allows: the
   // lightest frame with its mass towards the handle, a corner of the box.
-  CHECK(*c.value == Approx(*find_output("swingweight_kg_cm2")->value(
-                               evaluate_in(study, design_at(study, std::vector<double>{0.25, 0.8}))))
-                        .epsilon(1e-9));
+  CHECK(*c.value ==
+        Approx(*find_output("swingweight_kg_cm2")
+                    ->value(evaluate_in(study, design_at(study, std::vector<double>{0.25, 0.8}))))
+            .epsilon(1e-9));
 }
 
 // A study whose one variable cannot change the swingweight (the ball's
@@ -253,10 +276,12 @@ Study study_with_swingweight_limit(const std::string& constraint) {
 
 TEST_CASE("A constraint missed by less than its default tolerance, 1e-6 of the limit, is met") {
   const double swingweight =
-      *find_output("swingweight_kg_cm2")->value(evaluate(load_design(studies() + "../table1/row1.json").design));
+      *find_output("swingweight_kg_cm2")
+           ->value(evaluate(load_design(studies() + "../table1/row1.json").design));
   const auto run = [&](double limit, const std::string& extra) {
-    return run_optimization(study_with_swingweight_limit(
-        R"({"output": "swingweight_kg_cm2", "min": )" + fmt::format("{:.17g}", limit) + extra + "}"));
+    return run_optimization(
+        study_with_swingweight_limit(R"({"output": "swingweight_kg_cm2", "min": )" +
+                                     fmt::format("{:.17g}", limit) + extra + "}"));
   };
   // Short of the limit by 3e-8 of it (the "309.99999 >= 310" of the issue): met.
   const OptimizationResult within = run(swingweight * (1 + 3e-8), "");
@@ -277,7 +302,8 @@ TEST_CASE("A constraint missed by less than its default tolerance, 1e-6 of the l
   CHECK(loose.constraints[0].satisfied);
 }
 
-TEST_CASE("An objective with no value anywhere is reported as no valid design, never as the penalty") {
+TEST_CASE(
+    "An objective with no value anywhere is reported as no valid design, never as the penalty") {
   // A uniform beam hit at its centre of mass turns about no axis: the free
   // rotation axis is at infinity whatever the ball's speed.
   const Study study = read_study(nlohmann::json::parse(R"({
@@ -286,27 +312,32 @@ TEST_CASE("An objective with no value anywhere is reported as no valid design, n
       "variables": [{"path": "/ball/speed_m_s", "min": 40, "max": 60}],
       "objective": {"output": "rotation_axis_free_from_butt_m"}})"),
                                  "study.json", studies());
-  REQUIRE_FALSE(find_output("rotation_axis_free_from_butt_m")->value(evaluate_in(study, design_at(study, std::vector<double>{50}))));
+  REQUIRE_FALSE(find_output("rotation_axis_free_from_butt_m")
+                    ->value(evaluate_in(study, design_at(study, std::vector<double>{50}))));
   const OptimizationResult r = run_optimization(study);
   CHECK(r.outcome == Outcome::kNoValue);
   CHECK_THAT(r.no_value, Catch::Contains("rotation_axis_free_from_butt_m"));
   CHECK_FALSE(r.start_objective.has_value());
 }
 
-TEST_CASE("auto costs at most twice the best single algorithm on every shipped study, and finds the best optimum") {
+TEST_CASE(
+    "auto costs at most twice the best single algorithm on every shipped study, and finds the best "
+    "optimum") {
   // The single algorithms run from the study's start; "best" is the cheapest
   // that reaches the best objective any of them (or auto) finds. Where the
   // optimum lies on equality constraints, an algorithm may end anywhere
   // within their tolerance (1e-6 of the limit), which moves the objective by
   // about as much: optima agreeing to 1e-5 are the same.
   constexpr double kSameOptimum = 1e-5;  // relative
-  for (const char* name : {"1-lowest-wrist-force-table1-ranges.json", "2-lowest-wrist-force-fixed-feel.json",
-                           "3a-cop-on-node-table1-racquet.json", "3b-cop-on-node-paper-beam.json",
-                           "4-robust-lowest-worst-wrist-force.json"}) {
+  for (const char* name :
+       {"1-lowest-wrist-force-table1-ranges.json", "2-lowest-wrist-force-fixed-feel.json",
+        "3a-cop-on-node-table1-racquet.json", "3b-cop-on-node-paper-beam.json",
+        "4-robust-lowest-worst-wrist-force.json"}) {
     Study study = load_study(studies() + name);
     const Problem problem = make_problem(study);
-    const bool equality = std::any_of(study.constraints.begin(), study.constraints.end(),
-                                      [](const StudyConstraint& c) { return c.equals.has_value(); });
+    const bool equality =
+        std::any_of(study.constraints.begin(), study.constraints.end(),
+                    [](const StudyConstraint& c) { return c.equals.has_value(); });
     std::vector<std::string> singles{"LN_COBYLA"};
     if (problem.smooth) singles.push_back("LD_SLSQP");
     if (problem.smooth && !equality) singles.push_back("LD_MMA");
@@ -319,11 +350,13 @@ TEST_CASE("auto costs at most twice the best single algorithm on every shipped s
     for (const std::string& algorithm : singles) {
       study.options.algorithm = algorithm;
       runs.emplace_back(algorithm, run_optimization(study));
-      if (runs.back().second.summary.feasible) best = std::min(best, runs.back().second.summary.objective);
+      if (runs.back().second.summary.feasible)
+        best = std::min(best, runs.back().second.summary.objective);
     }
     const double reached = best + kSameOptimum * std::max(1.0, std::abs(best));
     int cheapest = std::numeric_limits<int>::max();
-    std::string report = std::string(name) + ": auto " + std::to_string(automatic.summary.evaluations);
+    std::string report =
+        std::string(name) + ": auto " + std::to_string(automatic.summary.evaluations);
     for (const auto& [algorithm, r] : runs) {
       report += ", " + algorithm + " " + std::to_string(r.summary.evaluations);
       if (r.summary.feasible && r.summary.objective <= reached) {
@@ -339,9 +372,11 @@ TEST_CASE("auto costs at most twice the best single algorithm on every shipped s
 TEST_CASE("Sweep values outside the variable's bounds are refused with their JSON path") {
   const auto error_of = [](const char* values) {
     try {
-      read_study(nlohmann::json::parse(std::string(R"({"design": "../table1/row1.json", "outputs": ["mass_kg"],
+      read_study(nlohmann::json::parse(
+                     std::string(R"({"design": "../table1/row1.json", "outputs": ["mass_kg"],
           "variables": [{"path": "/frame/cor", "min": 0.6, "max": 0.8},
-                        {"path": "/hand/mass_kg", "min": 0.3, "max": 0.6, "values": )") + values + "}]}"),
+                        {"path": "/hand/mass_kg", "min": 0.3, "max": 0.6, "values": )") +
+                     values + "}]}"),
                  "study.json", studies());
     } catch (const InputError& e) {
       return e.pointer() + ": " + e.detail();
@@ -349,18 +384,22 @@ TEST_CASE("Sweep values outside the variable's bounds are refused with their JSO
     return std::string("(no error)");
   };
   CHECK(error_of("[0.3, 0.45, 0.6]") == "(no error)");
-  CHECK_THAT(error_of("[0.3, 0.7, 0.5]"),
-             Catch::StartsWith("/variables/1/values/1:") && Catch::Contains("0.7") && Catch::Contains("[0.3, 0.6]"));
+  CHECK_THAT(error_of("[0.3, 0.7, 0.5]"), Catch::StartsWith("/variables/1/values/1:") &&
+                                              Catch::Contains("0.7") &&
+                                              Catch::Contains("[0.3, 0.6]"));
   CHECK_THAT(error_of("[0.29, 0.5]"), Catch::StartsWith("/variables/1/values/0:"));
-  CHECK_THAT(error_of("[0.5, \"x\"]"), Catch::StartsWith("/variables/1/values/1:") && Catch::Contains("finite number"));
+  CHECK_THAT(error_of("[0.5, \"x\"]"),
+             Catch::StartsWith("/variables/1/values/1:") && Catch::Contains("finite number"));
 }
 
-TEST_CASE("An impact spread off the implement is refused naming its end and the implement's length") {
+TEST_CASE(
+    "An impact spread off the implement is refused naming its end and the implement's length") {
   const auto error_of = [](const char* range) {
     try {
       read_study(nlohmann::json::parse(std::string(R"({"design": "../table1/row1.json",
           "variables": [{"path": "/implement/mass_kg", "min": 0.25, "max": 0.4}],
-          "objective": {"output": "peak_wrist_force_N", "over_impacts": {"from_tip_m": )") + range + "}}}"),
+          "objective": {"output": "peak_wrist_force_N", "over_impacts": {"from_tip_m": )") +
+                                       range + "}}}"),
                  "study.json", studies());
     } catch (const InputError& e) {
       return e.pointer() + ": " + e.detail();
@@ -379,7 +418,8 @@ TEST_CASE("Optimizer tolerances are refused under their own keys") {
     try {
       read_study(nlohmann::json::parse(std::string(R"({"design": "../table1/row1.json",
           "variables": [{"path": "/implement/mass_kg", "min": 0.25, "max": 0.4}],
-          "objective": {"output": "peak_wrist_force_N"}, "tolerances": )") + tolerances + "}"),
+          "objective": {"output": "peak_wrist_force_N"}, "tolerances": )") +
+                                       tolerances + "}"),
                  "study.json", studies());
     } catch (const InputError& e) {
       return e.pointer() + ": " + e.detail();
@@ -390,11 +430,15 @@ TEST_CASE("Optimizer tolerances are refused under their own keys") {
   CHECK_THAT(error_of(R"({"x_rel": 0})"), Catch::StartsWith("/tolerances/x_rel:"));
   CHECK_THAT(error_of(R"({"f_rel": -1})"), Catch::StartsWith("/tolerances/f_rel:"));
   CHECK_THAT(error_of(R"({"max_seconds": 0})"), Catch::StartsWith("/tolerances/max_seconds:"));
-  CHECK_THAT(error_of(R"({"max_evaluations": 0})"), Catch::StartsWith("/tolerances/max_evaluations:"));
-  CHECK_THAT(error_of(R"({"max_evaluations": 2.5})"), Catch::StartsWith("/tolerances/max_evaluations:"));
+  CHECK_THAT(error_of(R"({"max_evaluations": 0})"),
+             Catch::StartsWith("/tolerances/max_evaluations:"));
+  CHECK_THAT(error_of(R"({"max_evaluations": 2.5})"),
+             Catch::StartsWith("/tolerances/max_evaluations:"));
 }
 
-TEST_CASE("A sweep along the impact shares each row's design and writes what reading every point writes") {
+TEST_CASE(
+    "A sweep along the impact shares each row's design and writes what reading every point "
+    "writes") {
   // The oracle is the sweep that reads and evaluates every point on its own:
   // sharing a row's design (ImpactSweep) and splitting the grid among threads
   // must change no byte, including the rows that fail (off the implement, a
@@ -416,7 +460,8 @@ TEST_CASE("A sweep along the impact shares each row's design and writes what rea
     const Study study = read_study(nlohmann::json::parse(text), "sweep.json", studies());
     const auto sweep = [&](SweepOptions options) {
       std::ostringstream csv;
-      const std::vector<Plot> plots = run_sweep(study, csv, [](std::size_t, std::size_t) {}, options);
+      const std::vector<Plot> plots = run_sweep(
+          study, csv, [](std::size_t, std::size_t) {}, options);
       std::vector<std::vector<std::optional<double>>> y;
       for (const Plot& plot : plots) {
         for (const PlotSeries& series : plot.series) y.push_back(series.y);
@@ -426,7 +471,8 @@ TEST_CASE("A sweep along the impact shares each row's design and writes what rea
     const auto reference = sweep(SweepOptions{1, false, false});
     const bool has_failed_rows = reference.first.find("must be") != std::string::npos;
     CHECK(has_failed_rows == (text != texts[1]));  // the first and last grids reach bad points
-    for (const SweepOptions options : {SweepOptions{1, true}, SweepOptions{3, true}, SweepOptions{2, false}}) {
+    for (const SweepOptions options :
+         {SweepOptions{1, true}, SweepOptions{3, true}, SweepOptions{2, false}}) {
       INFO(text << " with " << options.threads << " threads, sharing " << options.share_rows);
       const auto result = sweep(options);
       CHECK(result.first == reference.first);
