@@ -21,8 +21,10 @@ void validate(const Design& d) {
   detail::require_in_range("ball/speed_m_s", d.ball.speed_m_s, 0.0, kMaxSpeed_m_s, "m/s");
   detail::require_in_range("impact/from_butt_m", d.impact_from_butt_m, 0.0, L, "m");
   detail::require_positive("hand/grip_length_m", d.hand.grip_length_m, "m");
-  detail::require_at_least("hand/grip_stiffness_N_m2", d.hand.grip_stiffness_N_m2, 0.0, "N/m^2");
-  detail::require_at_least("hand/grip_damping_N_s_m2", d.hand.grip_damping_N_s_m2, 0.0, "N s/m^2");
+  detail::require_in_range("hand/grip_stiffness_N_m2", d.hand.grip_stiffness_N_m2, 0.0,
+                           kMaxGripStiffness_N_m2, "N/m^2");
+  detail::require_in_range("hand/grip_damping_N_s_m2", d.hand.grip_damping_N_s_m2, 0.0,
+                           kMaxGripDamping_N_s_m2, "N s/m^2");
   if (d.cor_rigid) detail::require_in_range("frame/cor_rigid", *d.cor_rigid, 0.0, 1.0, "");
   if (d.strings) {
     if (const std::string why = d.strings->validate(); !why.empty()) {
@@ -30,13 +32,21 @@ void validate(const Design& d) {
     }
   }
   const FrameStiffness& k = d.stiffness;
-  if (k.EI_N_m2) detail::require_positive("frame/EI_N_m2", *k.EI_N_m2, "N m^2");
+  if (k.EI_N_m2) {
+    detail::require_positive("frame/EI_N_m2", *k.EI_N_m2, "N m^2");
+    detail::require_in_range("frame/EI_N_m2", *k.EI_N_m2, 0.0, kMaxEI_N_m2, "N m^2");
+  }
   if (k.fundamental_free_Hz)
     detail::require_positive("frame/fundamental_free_Hz", *k.fundamental_free_Hz, "Hz");
   if (k.shear_modulus_Pa) {
     detail::require_positive("frame/cross_section/shear_modulus_Pa", *k.shear_modulus_Pa, "Pa");
+    detail::require_in_range("frame/cross_section/shear_modulus_Pa", *k.shear_modulus_Pa, 0.0,
+                             kMaxShearModulus_Pa, "Pa");
     detail::require_positive("frame/cross_section/width_m", k.width_m, "m");
+    detail::require_in_range("frame/cross_section/width_m", k.width_m, 0.0, kMaxLength_m, "m");
     detail::require_positive("frame/cross_section/thickness_m", k.thickness_m, "m");
+    detail::require_in_range("frame/cross_section/thickness_m", k.thickness_m, 0.0, kMaxLength_m,
+                             "m");
   }
   if (!(hand_held_system(d).com_from_butt_m > 0.0)) {
     throw std::invalid_argument(

@@ -25,10 +25,18 @@ MassProperties section_mass_properties(const std::vector<Section>& sections) {
   double x_start = 0.0;
   for (std::size_t i = 0; i < sections.size(); ++i) {
     const Section& s = sections[i];
+    // Each section within the model's range on its own, so that a section
+    // out of range is named, not the sums it would spoil.
     detail::require_positive(detail::indexed("sections", i, "length_m"), s.length_m, "m");
-    detail::require_at_least(detail::indexed("sections", i, "mass_kg"), s.mass_kg, 0.0, "kg");
-    if (s.EI_N_m2)
+    detail::require_in_range(detail::indexed("sections", i, "length_m"), s.length_m, 0.0,
+                             kMaxLength_m, "m");
+    detail::require_in_range(detail::indexed("sections", i, "mass_kg"), s.mass_kg, 0.0, kMaxMass_kg,
+                             "kg");
+    if (s.EI_N_m2) {
       detail::require_positive(detail::indexed("sections", i, "EI_N_m2"), *s.EI_N_m2, "N m^2");
+      detail::require_in_range(detail::indexed("sections", i, "EI_N_m2"), *s.EI_N_m2, 0.0,
+                               kMaxEI_N_m2, "N m^2");
+    }
     mass += s.mass_kg;
     first_moment += s.mass_kg * (x_start + 0.5 * s.length_m);
     x_start += s.length_m;
@@ -48,9 +56,17 @@ MassProperties section_mass_properties(const std::vector<Section>& sections) {
     x_start += s.length_m;
   }
   if (!(I_cm >= std::numeric_limits<double>::min())) {
-    throw std::invalid_argument("sections: the moment of inertia underflows (" +
-                                detail::format_number(I_cm) +
-                                " kg m^2); the implement is too small or too light to model");
+    // Every section is too small for its inertia to be a normal number: name
+    // the longest, the one that would have to grow.
+    std::size_t longest = 0;
+    for (std::size_t i = 1; i < sections.size(); ++i) {
+      if (sections[i].length_m > sections[longest].length_m) longest = i;
+    }
+    throw std::invalid_argument(
+        detail::indexed("sections", longest, "length_m") + ": too short to model, got " +
+        detail::format_number(sections[longest].length_m) +
+        " m (the implement's moment of inertia underflows: " + detail::format_number(I_cm) +
+        " kg m^2)");
   }
   return MassProperties{mass, com, I_cm};
 }
@@ -72,7 +88,21 @@ Implement Implement::paper_racquet(double length_m, double mass_kg,
                                    std::vector<PointMass> point_masses) {
   detail::require_positive("length_m", length_m, "m");
   detail::require_positive("mass_kg", mass_kg, "kg");
+  detail::require_in_range("length_m", length_m, 0.0, kMaxLength_m, "m");
+  detail::require_in_range("mass_kg", mass_kg, 0.0, kMaxMass_kg, "kg");
   detail::require_positive("head_to_handle_mass_ratio", head_to_handle_mass_ratio, "");
+  // The inertia M L^2 / 12 must be a normal number: name the input that makes
+  // it underflow rather than the halves built from it.
+  if (!(0.5 * length_m * length_m >= std::numeric_limits<double>::min())) {
+    throw std::invalid_argument("length_m: too short to model, got " +
+                                detail::format_number(length_m) +
+                                " m (its moment of inertia underflows)");
+  }
+  if (!(mass_kg * length_m * length_m / 48.0 >= std::numeric_limits<double>::min())) {
+    throw std::invalid_argument("mass_kg: too light to model at this length, got " +
+                                detail::format_number(mass_kg) +
+                                " kg (its moment of inertia underflows)");
+  }
   // M1 / M2 = ratio and M1 + M2 = M  =>  M2 = M / (1 + ratio).
   const double handle_kg = mass_kg / (1.0 + head_to_handle_mass_ratio);
   const double head_kg = mass_kg * head_to_handle_mass_ratio / (1.0 + head_to_handle_mass_ratio);

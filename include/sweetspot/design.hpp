@@ -16,6 +16,13 @@ namespace sweetspot {
 // impact lasts between a microsecond and ten seconds.
 inline constexpr double kMaxForearmMass_kg = 1e12;
 inline constexpr double kMaxSpeed_m_s = 1e4;
+// A grip a million times stiffer (and its dashpot a hundred thousand times
+// stronger) than the calibrated hand: past these the hand is rigid for every
+// mode the model resolves.
+inline constexpr double kMaxGripStiffness_N_m2 = 1e12;
+inline constexpr double kMaxGripDamping_N_s_m2 = 1e8;
+// A cross-section's size; its shear modulus (steel: 8e10 Pa).
+inline constexpr double kMaxShearModulus_Pa = 1e13;
 inline constexpr double kMinDuration_s = 1e-9;
 inline constexpr double kMaxDuration_s = 10.0;
 

@@ -11,6 +11,8 @@ namespace sweetspot {
 // (a bat is about 1 m and 1 kg; these leave every real implement far inside).
 inline constexpr double kMaxLength_m = 100.0;
 inline constexpr double kMaxMass_kg = 1e6;
+// Bending stiffness: a solid steel bar 30 cm thick has about 1.4e8 N m^2.
+inline constexpr double kMaxEI_N_m2 = 1e12;
 
 // A uniform slice of an implement. Sections are listed butt to tip.
 struct Section {

@@ -410,6 +410,15 @@ namespace {
 void override_below(Json& document, const Json& patch, const std::string& pointer) {
   for (const auto& [key, value] : patch.items()) {
     const std::string at = pointer + "/" + escape_pointer_token(key);
+    // A patch that itself gives a quantity twice (mass_kg and mass_g) is
+    // refused, as a design file is: neither spelling may silently win.
+    for (const std::string& other : alternative_spellings(key)) {
+      if (other != key && patch.contains(other)) {
+        throw std::invalid_argument(at + ": contradicts " + pointer + "/" +
+                                    escape_pointer_token(other) +
+                                    ": give the quantity once, in one unit");
+      }
+    }
     if (value.is_object() && !value.empty()) {
       override_below(document, value, at);
     } else {

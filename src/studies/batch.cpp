@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <deque>
 #include <map>
 #include <memory>
 #include <span>
@@ -52,11 +53,25 @@ class LineReader {
 
   std::size_t line_number() const { return line_; }
 
+  // Hands `lines` back, to be read again in order by next().
+  void unread(std::vector<std::string> lines) {
+    for (auto line = lines.rbegin(); line != lines.rend(); ++line)
+      unread_.push_front(std::move(*line));
+    line_ -= lines.size();
+  }
+
   // The next line without its "\n" (or "\r\n"), appended to `text` after a
   // "\n" when `continued` (a CSV record going on inside quotes); false at the
   // end of the input.
   bool next(std::string& text, bool continued = false) {
     if (!continued) text.clear();
+    if (!unread_.empty()) {  // a line handed back, already checked
+      if (continued) text += '\n';
+      text += unread_.front();
+      unread_.pop_front();
+      ++line_;
+      return true;
+    }
     const std::size_t start = text.size() + (continued ? 1 : 0);
     if (continued) text += '\n';
     bool any = false;
@@ -126,6 +141,7 @@ class LineReader {
   std::size_t begin_ = 0;
   std::size_t end_ = 0;
   std::size_t line_ = 0;
+  std::deque<std::string> unread_;
   bool end_of_input_ = false;
 };
 
@@ -163,13 +179,27 @@ class CsvScan {
   State state_ = State::kFieldStart;
 };
 
-// Reads the lines that continue `record` while a quoted field is open.
+// Reads the lines that continue `record` while a quoted field is open. A
+// quote left open to the end of the input makes the record its first line
+// alone (that row's error says the quote is not closed) and hands the lines
+// after it back, to be read as rows of their own.
 void complete_record(LineReader& reader, std::string& record) {
   CsvScan scan;
   scan.read(record);
+  const std::size_t first_line_end = record.size();
   while (scan.inside_quotes()) {
     const std::size_t from = record.size();
-    if (!reader.next(record, true)) return;
+    if (!reader.next(record, true)) {
+      std::vector<std::string> rest;
+      for (std::size_t at = first_line_end; at < record.size();) {
+        const std::size_t end = std::min(record.find('\n', at + 1), record.size());
+        rest.emplace_back(record, at + 1, end - at - 1);
+        at = end;
+      }
+      record.resize(first_line_end);
+      reader.unread(std::move(rest));
+      return;
+    }
     scan.read(std::string_view(record).substr(from));
   }
 }

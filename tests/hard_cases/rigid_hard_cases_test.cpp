@@ -656,6 +656,9 @@ TEST_CASE("Inputs whose products would overflow are refused with the argument na
   // infinite impulse. The model's range (kMaxLength_m, kMaxMass_kg,
   // kMaxSpeed_m_s) refuses them before any product is formed.
   CHECK_THROWS_WITH(Implement::from_sections({Section{1e200, 0.3, {}}}),
+                    Catch::StartsWith("sections/0/length_m: must be in [0, 100] m"));
+  // Sections each in range whose sum is not: the total is named.
+  CHECK_THROWS_WITH(Implement::from_sections({Section{60.0, 0.3, {}}, Section{60.0, 0.3, {}}}),
                     Catch::Contains("total length"));
   Design fast = design_with_impact(table_racquet(), 0.65);
   fast.ball = Ball{1e200, 1e200};

@@ -162,6 +162,17 @@ TEST_CASE(
   CHECK(out.out.find("\"\"") == std::string::npos);
 }
 
+TEST_CASE("A quote left open to the end of the file spoils its own row, not the rows after it") {
+  const Outcome out =
+      run("name,implement.mass_kg\n\"a,0.3\nb,0.31\nc,0.32\n", CatalogueFormat::kCsv, Format::kCsv);
+  CHECK(out.summary.rows == 3);
+  CHECK(out.summary.failed == 1);
+  CHECK(out.out.find("cat.csv:2: not CSV: field 1: a quoted field is not closed") !=
+        std::string::npos);
+  CHECK(out.out.find("\n3,b,") != std::string::npos);  // each later line keeps its own number
+  CHECK(out.out.find("\n4,c,") != std::string::npos);
+}
+
 TEST_CASE("More columns than the limit are refused, naming the limit") {
   std::string header = "name";
   for (std::size_t k = 1; k <= kMaxBatchColumns; ++k) header += ",hand.mass_kg";
