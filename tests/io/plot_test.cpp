@@ -13,6 +13,8 @@
 #include <sstream>
 #include <thread>
 
+#include "file_helpers.hpp"
+
 namespace sweetspot::io {
 namespace {
 
@@ -62,40 +64,8 @@ TEST_CASE("A plot renders to a real PNG at a path with underscores") {
   std::filesystem::remove_all(dir);
 }
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-// Reads a FIFO in the background until its writer closes it, or nothing
-// comes for 10 s (so that a writer that never opens it cannot hang the test).
-class FifoReader {
- public:
-  explicit FifoReader(const std::string& path)
-      : fd_(::open(path.c_str(), O_RDONLY | O_NONBLOCK)), thread_([this] { run(); }) {}
-  std::string finish() {
-    thread_.join();
-    if (fd_ >= 0) ::close(fd_);
-    return text_;
-  }
-
- private:
-  void run() {
-    char buffer[1 << 16];
-    while (fd_ >= 0) {
-      pollfd wanted{fd_, POLLIN, 0};
-      if (::poll(&wanted, 1, 10'000) <= 0) return;
-      const ssize_t n = ::read(fd_, buffer, sizeof buffer);
-      if (n > 0) text_.append(buffer, static_cast<std::size_t>(n));
-      if (n == 0 || (n < 0 && errno != EAGAIN && errno != EINTR)) return;
-    }
-  }
-  int fd_;
-  std::string text_;
-  std::thread thread_;
-};
+using testing::FifoReader;
+using testing::slurp;
 
 // Runs `f` with this process's standard output going to a file; returns what reached it.
 template <typename F>
