@@ -119,10 +119,9 @@ FrameAtImpact frame_at_impact(const ResponseModel& model, double impact_from_but
                                 detail::format_number(impact_from_butt_m));
   }
   FrameAtImpact frame;
-  frame.inverse_effective_mass_per_kg =
-      1.0 / effective_mass(model.rigid_body, impact_from_butt_m);
-  const std::size_t count = modes < 0 ? model.modes.size()
-                                      : std::min<std::size_t>(model.modes.size(), modes);
+  frame.inverse_effective_mass_per_kg = 1.0 / effective_mass(model.rigid_body, impact_from_butt_m);
+  const std::size_t count =
+      modes < 0 ? model.modes.size() : std::min<std::size_t>(model.modes.size(), modes);
   for (std::size_t k = 0; k < count; ++k) {
     const ResponseMode& m = model.modes[k];
     frame.modes.push_back(
@@ -184,14 +183,12 @@ CollisionResult integrate(const FrameAtImpact& frame,
     if (!(strings->damping_ratio >= 0.0 && strings->damping_ratio < 1.0))
       detail::fail_in_range("strings.damping_ratio", strings->damping_ratio, 0.0, 1.0, "");
   }
-  const Law law{ball_law.stiffness, ball_law.exponent, ball_law.damping,
-                ball_law.damping_exponent};
+  const Law law{ball_law.stiffness, ball_law.exponent, ball_law.damping, ball_law.damping_exponent};
   const double m = ball_mass_kg, v1 = speed_m_s;
 
   // Time step from the linearised contact: the ball's secant stiffness at
   // its elastic peak compression on a rigid surface, in series with the strings.
-  const double x_peak =
-      std::pow((law.n + 1.0) * m * v1 * v1 / (2.0 * law.k), 1.0 / (law.n + 1.0));
+  const double x_peak = std::pow((law.n + 1.0) * m * v1 * v1 / (2.0 * law.k), 1.0 / (law.n + 1.0));
   double k_lin = law.k * std::pow(x_peak, law.n - 1.0);
   if (strings) k_lin = series_stiffness(k_lin, strings->stiffness_N_m);
   const double mu = m / (1.0 + m * frame.inverse_effective_mass_per_kg);
@@ -255,6 +252,8 @@ CollisionResult integrate(const FrameAtImpact& frame,
   auto snapshot = [&] {
     res.ball_velocity_after_m_s = vy;
     res.frame_velocity_after_m_s = phi[0] * v[0];
+    res.implement_momentum_N_s =
+        (frame.inverse_effective_mass_per_kg > 0.0 ? v[0] / phi[0] : 0.0) + ms * vs;
     res.apparent_cor = -vy / v1;
     res.ball_in_J = 0.5 * m * v1 * v1;
     res.ball_out_J = 0.5 * m * vy * vy + u_x;  // u_x = 0 once separated
@@ -356,7 +355,9 @@ CollisionResult integrate(const FrameAtImpact& frame,
     res.impulse_N_s += h * F;
     if (F > res.peak_force_N) res.peak_force_N = F;
     if (x_new > res.peak_ball_compression_m) res.peak_ball_compression_m = x_new;
-    if (has_strings) res.peak_string_deflection_m = std::max(res.peak_string_deflection_m, x_new > 0.0 ? std::abs(s - (w0 + h * w_dot_mid)) : 0.0);
+    if (has_strings)
+      res.peak_string_deflection_m = std::max(
+          res.peak_string_deflection_m, x_new > 0.0 ? std::abs(s - (w0 + h * w_dot_mid)) : 0.0);
     if (options.record_history) {
       res.time_s.push_back(t + 0.5 * h);
       res.force_N.push_back(F);
@@ -428,11 +429,11 @@ CollisionResult collide(const FrameAtImpact& frame, const std::optional<StringBe
   for (double CollisionResult::*field :
        {&CollisionResult::contact_time_s, &CollisionResult::in_contact_s,
         &CollisionResult::impulse_N_s, &CollisionResult::ball_velocity_after_m_s,
-        &CollisionResult::frame_velocity_after_m_s, &CollisionResult::apparent_cor,
-        &CollisionResult::string_bed_energy_J, &CollisionResult::ball_out_J,
-        &CollisionResult::implement_rigid_J, &CollisionResult::vibration_J,
-        &CollisionResult::modal_damping_loss_J, &CollisionResult::ball_loss_J,
-        &CollisionResult::strings_loss_J}) {
+        &CollisionResult::frame_velocity_after_m_s, &CollisionResult::implement_momentum_N_s,
+        &CollisionResult::apparent_cor, &CollisionResult::string_bed_energy_J,
+        &CollisionResult::ball_out_J, &CollisionResult::implement_rigid_J,
+        &CollisionResult::vibration_J, &CollisionResult::modal_damping_loss_J,
+        &CollisionResult::ball_loss_J, &CollisionResult::strings_loss_J}) {
     r.*field = extrapolated(coarse.*field, r.*field);
   }
   for (std::size_t k = 0; k < r.mode_energy_J.size(); ++k)

@@ -84,9 +84,9 @@ inline constexpr double kTennisBallDiameter_m = 0.065;
 // z_s = c_s / (2 sqrt(k_s m_ball)) (a string bed alone returns e_s^2 =
 // exp(-2 pi z_s / sqrt(1 - z_s^2)) of the energy a rigid ball gives it).
 struct StringBedDynamics {
-  double stiffness_N_m = 0.0;   // k_s [N/m], > 0 (string_bed_stiffness)
-  double mass_kg = 0.004;       // m_s [kg], > 0
-  double damping_ratio = 0.008; // z_s, in [0, 1)
+  double stiffness_N_m = 0.0;    // k_s [N/m], > 0 (string_bed_stiffness)
+  double mass_kg = 0.004;        // m_s [kg], > 0
+  double damping_ratio = 0.008;  // z_s, in [0, 1)
 };
 
 // Defaults of the string bed's mass and loss (README: 1-8 g plausible; a bed
@@ -143,11 +143,13 @@ struct CollisionResult {
   double impulse_N_s = 0.0;               // int F_b dt, the ball's loss of momentum
   double ball_velocity_after_m_s = 0.0;   // along the incident direction (< 0: rebounding)
   double frame_velocity_after_m_s = 0.0;  // the rigid-body velocity of the impact point
+  double implement_momentum_N_s = 0.0;    // M_eff u' + m_s s' then (at the impact point)
   double apparent_cor = 0.0;              // e_A = -ball_velocity_after / v1
   // Every mode's energy 1/2 (q'^2 + w^2 q^2) when the ball leaves for good [J].
   std::vector<double> mode_energy_J;
   double string_bed_energy_J = 0.0;  // 1/2 m_s s'^2 + 1/2 k_s (s - w)^2 then [J]
-  // The energy ledger [J]: ball_in = ball_out + implement_rigid + vibration + ball_loss + strings_loss.
+  // The energy ledger [J]: ball_in = ball_out + implement_rigid + vibration + ball_loss +
+  // strings_loss.
   double ball_in_J = 0.0;
   double ball_out_J = 0.0;
   double implement_rigid_J = 0.0;  // 1/2 M_eff u'^2
