@@ -97,12 +97,12 @@ double solve_force(const Law& law, double x0, double u0, double a, double c, dou
 }  // namespace
 
 std::string BallContactLaw::validate() const {
-  if (!(stiffness > 0.0 && std::isfinite(stiffness)))
-    return "stiffness: must be > 0, got " + detail::format_number(stiffness);
+  if (!(stiffness > 0.0 && stiffness <= 1e15))
+    return "stiffness: must be in (0, 1e15], got " + detail::format_number(stiffness);
   if (!(exponent >= 1.0 && exponent <= 3.0))
     return "exponent: must be in [1, 3], got " + detail::format_number(exponent);
-  if (!(damping >= 0.0 && std::isfinite(damping)))
-    return "damping: must be >= 0, got " + detail::format_number(damping);
+  if (!(damping >= 0.0 && damping <= 1e12))
+    return "damping: must be in [0, 1e12], got " + detail::format_number(damping);
   if (!(damping_exponent >= 0.0 && damping_exponent <= 3.0))
     return "damping_exponent: must be in [0, 3], got " + detail::format_number(damping_exponent);
   return {};
