@@ -1,9 +1,10 @@
 // `sweetspot bench collision`: one solved collision of the typical racquet,
 // its time against its error.
 
+#include <fmt/format.h>
+
 #include <chrono>
 #include <cmath>
-#include <fmt/format.h>
 #include <vector>
 
 #include "bench/bench.hpp"
@@ -49,18 +50,18 @@ void bench_collision(const BenchOptions& options, std::ostream& log) {
     o.extrapolate = extrapolate;
     return collide(frame, bed, d.ball.mass_kg, d.ball_contact, d.ball.speed_m_s, o);
   };
-  std::string md = "# The solved collision: speed against error\n\nMeasured by `sweetspot bench "
-                   "collision` on " +
-                   machine_description() +
-                   ". Median of " + std::to_string(options.repeats) +
-                   " runs on one core.\n\nThe typical racquet (designs/racquets/tour-100.json, "
-                   "free, 6 modes to 3 kHz), strung at 250 N, hit 16 cm from the tip at 50 m/s "
-                   "by the calibrated tennis ball. Error: against the same solve at a tenth of "
-                   "the step (extrapolated likewise), and against a 100 000-step unextrapolated "
-                   "reference.\n\n"
-                   "| steps per contact | extrapolated | steps taken | time (us) | e_A | error vs "
-                   "a tenth of the step | error vs reference | contact time error (s) |\n"
-                   "|---:|---|---:|---:|---:|---:|---:|---:|\n";
+  std::string md =
+      "# The solved collision: speed against error\n\nMeasured by `sweetspot bench "
+      "collision` on " +
+      machine_description() + ". Median of " + std::to_string(options.repeats) +
+      " runs on one core.\n\nThe typical racquet (designs/racquets/tour-100.json, "
+      "free, 6 modes to 3 kHz), strung at 250 N, hit 16 cm from the tip at 50 m/s "
+      "by the calibrated tennis ball. Error: against the same solve at a tenth of "
+      "the step (extrapolated likewise), and against a 100 000-step unextrapolated "
+      "reference.\n\n"
+      "| steps per contact | extrapolated | steps taken | time (us) | e_A | error vs "
+      "a tenth of the step | error vs reference | contact time error (s) |\n"
+      "|---:|---|---:|---:|---:|---:|---:|---:|\n";
   std::string csv =
       "steps_per_contact,extrapolated,steps,median_us,apparent_cor,error_tenth,error_reference\n";
   const CollisionResult reference = solve(100000, false);

@@ -47,9 +47,12 @@ StepForce step_force(const Law& law, double x0, double u0, double x1, double h) 
   double g, dg;
   const double scale = std::abs(x0) + std::abs(x1);
   if (std::abs(dx) > 1e-7 * scale && (x0 > 0.0 || x1 > 0.0)) {
-    const double u1 = law.energy(x1);
-    g = (u1 - u0) / dx;
-    dg = (law.force(x1) - g) / dx;
+    // U(x1) and U'(x1) from one power: x^n, then x^(n+1) = x x^n.
+    const double xn = x1 > 0.0 ? power(x1, law.n) : 0.0;
+    const double u1 = law.k * x1 * xn / (law.n + 1.0);
+    const double inv_dx = 1.0 / dx;
+    g = (u1 - u0) * inv_dx;
+    dg = (law.k * xn - g) * inv_dx;
   } else {
     g = law.force(xm);
     dg = 0.5 * law.stiffness(xm);
@@ -66,29 +69,33 @@ StepForce step_force(const Law& law, double x0, double u0, double x1, double h) 
 }
 
 // Solves F = Phi(a - c F) for F >= 0 (Phi the step force, increasing in x1):
-// g(F) = F - Phi(a - c F) is increasing with g' >= 1, so the root is unique
-// and |F - F*| <= |g(F)|. Safeguarded Newton on [0, Phi(a)].
+// g(F) = F - Phi(a - c F) is increasing with g' >= 1, so the root is unique,
+// lies in [0, Phi(a)], and |F - F*| <= |g(F)|. Newton from `guess`, kept in
+// the bracket (Phi(a) is evaluated only if Newton leaves [0, inf)).
 double solve_force(const Law& law, double x0, double u0, double a, double c, double h,
                    double guess) {
   if (x0 <= 0.0 && a <= 0.0) return 0.0;
-  const double hi0 = step_force(law, x0, u0, a, h).force;
-  if (hi0 <= 0.0) return 0.0;
-  double lo = 0.0, hi = hi0;
-  double f = std::clamp(guess, lo, hi);
-  const double tol = 1e-15 * hi0;
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  double lo = 0.0, hi = kInf;
+  double f = std::max(guess, 0.0);
   for (int it = 0; it < 100; ++it) {
     const StepForce s = step_force(law, x0, u0, a - c * f, h);
     const double g = f - s.force;
-    if (std::abs(g) <= tol) return f;
+    const double scale = std::max(f, s.force);
+    if (std::abs(g) <= 1e-15 * scale) return f;
     if (g > 0.0)
       hi = f;
     else
       lo = f;
     const double newton = f - g / (1.0 + c * s.d_force_dx1);
     // Newton converges quadratically: a step this small leaves ~its square.
-    if (newton > lo && newton < hi && std::abs(newton - f) <= 1e-9 * hi0) return newton;
-    const double next = newton > lo && newton < hi ? newton : 0.5 * (lo + hi);
-    if (next == f || hi - lo <= tol) return next;
+    if (newton > lo && newton < hi && std::abs(newton - f) <= 1e-9 * scale) return newton;
+    double next = newton;
+    if (!(next > lo && next < hi)) {
+      if (hi == kInf) hi = std::max(step_force(law, x0, u0, a, h).force, lo);
+      next = 0.5 * (lo + hi);
+    }
+    if (next == f || hi - lo <= 1e-15 * hi) return next;
     f = next;
   }
   return f;

@@ -70,9 +70,10 @@ Evaluation evaluate_collision(const Design& design, double rel_tol) {
   if (!e.details) e.details.emplace();
   e.details->fidelity_note.clear();
   if (!r.separated) {
-    e.details->fidelity_note =
-        "the ball had not left for good after " + detail::format_number(collision_options.max_time_s) +
-        " s (" + std::to_string(r.contacts) + " contacts); the outputs are those at the last separation";
+    e.details->fidelity_note = "the ball had not left for good after " +
+                               detail::format_number(collision_options.max_time_s) + " s (" +
+                               std::to_string(r.contacts) +
+                               " contacts); the outputs are those at the last separation";
   }
   e.details->vibration_modes.clear();
   for (std::size_t k = 0; k < r.mode_energy_J.size(); ++k) {

@@ -362,6 +362,37 @@ TEST_CASE(
   CHECK(cor_at(400.0) > 0.8);
 }
 
+TEST_CASE("auto solves the collision for a strung racquet without a COR, and says so") {
+  Design d = tour_100();
+  d.strings = StringBed{};
+  d.cor_given = false;
+  REQUIRE(needed_fidelity(d) == Fidelity::kCollision);
+  const Evaluation e = evaluate(d, Fidelity::kCollision);
+  CHECK(fidelity_of(e) == Fidelity::kCollision);
+  REQUIRE(e.details);
+  REQUIRE(e.details->collision);
+  const CollisionResult& c = *e.details->collision;
+  // The evaluation's numbers are the solved ones, and Eq. (16) with the
+  // derived COR gives back the solved apparent COR.
+  CHECK(e.apparent_cor == c.apparent_cor);
+  CHECK(e.impact_duration_s == c.contact_time_s);
+  CHECK(e.peak_impact_force_N == c.peak_force_N);
+  CHECK(e.peak_wrist_force_N == Approx(std::abs(e.wrist_force_ratio) * c.peak_force_N));
+  CHECK((e.cor * e.effective_mass_kg - kBall_kg) / (e.effective_mass_kg + kBall_kg) ==
+        Approx(e.apparent_cor).epsilon(1e-12));
+  CHECK(std::abs(ledger_residual(c)) <= kRoundOff * c.ball_in_J);
+  // A given COR, or cor_rigid, keeps the cheaper models.
+  d.cor_given = true;
+  CHECK(needed_fidelity(d) == Fidelity::kModal);
+  d.cor_given = false;
+  d.cor_rigid = 0.85;
+  CHECK(needed_fidelity(d) == Fidelity::kResponse);
+  CHECK_THROWS_WITH(evaluate(d, Fidelity::kCollision), Catch::Contains("frame/cor_rigid"));
+  d.cor_rigid.reset();
+  d.strings.reset();
+  CHECK_THROWS_WITH(evaluate(d, Fidelity::kCollision), Catch::Contains("strings/tension_N"));
+}
+
 TEST_CASE("A collision refuses bad arguments by name") {
   auto message = [](auto&& call) {
     try {

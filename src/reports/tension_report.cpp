@@ -1,7 +1,8 @@
 #include "reports/tension_report.hpp"
 
-#include <cmath>
 #include <fmt/format.h>
+
+#include <cmath>
 #include <optional>
 
 #include "io/design_reader.hpp"
@@ -31,8 +32,8 @@ Point solve(Design d, double tension_N, double f1_Hz) {
   const CollisionResult& c = *e.details->collision;
   double frame_J = 0.0;
   for (const double mode : c.mode_energy_J) frame_J += mode;
-  return {e.rebound_speed_m_s, c.contact_time_s,        frame_J,
-          e.peak_wrist_force_N, c.peak_force_N, c.peak_ball_compression_m};
+  return {e.rebound_speed_m_s,  c.contact_time_s, frame_J,
+          e.peak_wrist_force_N, c.peak_force_N,   c.peak_ball_compression_m};
 }
 
 // The free fundamental [Hz] in [lo, hi] at which the Table I racquet's COR
@@ -64,7 +65,8 @@ std::vector<ReportEntry> write_tension_report(const std::string& designs_dir,
                                               const ReportWriter& write) {
   const DesignFile racquet = load_design(designs_dir + "/racquets/tour-100.json");
   const Design& d = racquet.design;
-  const std::vector<double> tensions{180, 190, 200, 210, 220, 230, 240, 250, 260, 270, 280, 290, 300};
+  const std::vector<double> tensions{180, 190, 200, 210, 220, 230, 240,
+                                     250, 260, 270, 280, 290, 300};
   const std::vector<double> frequencies{100, 125, 155, 175, 200};
   std::string csv =
       "tension_N,fundamental_free_Hz,rebound_speed_m_s,contact_time_s,frame_vibration_J,"
@@ -83,10 +85,11 @@ std::vector<ReportEntry> write_tension_report(const std::string& designs_dir,
                          exact(p.contact_s), exact(p.vibration_J), exact(p.wrist_N),
                          exact(p.peak_N), exact(p.compression_m));
       if (static_cast<int>(t) % 40 == 20 || t == 300)
-        table += fmt::format("| {:.0f} | {:.0f} | {:.2f} | {:.1f} | {:.2f} | {:.2f} | {:.0f} | "
-                             "{:.0f} | {:.1f} |\n",
-                             t, f1, p.rebound_m_s, p.rebound_m_s * kKmhPerMs, p.contact_s * 1e3,
-                             p.vibration_J, p.wrist_N, p.peak_N, p.compression_m * 1e3);
+        table += fmt::format(
+            "| {:.0f} | {:.0f} | {:.2f} | {:.1f} | {:.2f} | {:.2f} | {:.0f} | "
+            "{:.0f} | {:.1f} |\n",
+            t, f1, p.rebound_m_s, p.rebound_m_s * kKmhPerMs, p.contact_s * 1e3, p.vibration_J,
+            p.wrist_N, p.peak_N, p.compression_m * 1e3);
       for (PlotSeries* s : {&r, &c, &v, &w}) s->x.push_back(t);
       r.y.push_back(p.rebound_m_s);
       c.y.push_back(p.contact_s * 1e3);
@@ -109,7 +112,8 @@ std::vector<ReportEntry> write_tension_report(const std::string& designs_dir,
       "string bed a 100 in^2 membrane at the tension (4 g moving, damping ratio 0.008). "
       "Rebound speed is the ball's, off a racquet at rest; the frame vibration is the energy "
       "its bending modes keep when the ball leaves; the wrist force is Cross (2004) Eq. (11)'s "
-      "ratio times the solved peak force. Study: `designs/studies/6-tension-and-stiffness.json`.\n\n"
+      "ratio times the solved peak force. Study: "
+      "`designs/studies/6-tension-and-stiffness.json`.\n\n"
       "{}\n"
       "## Against published numbers\n\n"
       "| what | published | model |\n|---|---|---|\n"
@@ -145,7 +149,8 @@ std::vector<ReportEntry> write_tension_report(const std::string& designs_dir,
   md +=
       "\n## Table I: which frame gives e = 0.8 and e = 0.6\n\nThe Table I racquet (0.70 m, "
       "0.25 kg, M1/M2 = 0.8, uniform EI) hit 5 cm from the tip; the COR at the impact point from "
-      "the solved collision (Eq. 16 inverted). The prescribed pulse (reports/cor-from-stiffness.md) "
+      "the solved collision (Eq. 16 inverted). The prescribed pulse "
+      "(reports/cor-from-stiffness.md) "
       "gave e = 0.8 at 217-255 Hz and e = 0.6 at 111-137 Hz.\n\n"
       "| tension (N) | f1 for e = 0.8 | f1 for e = 0.6 |\n|---:|---:|---:|\n";
   for (const double t : {180.0, 250.0}) {
@@ -181,16 +186,17 @@ std::vector<ReportEntry> write_tension_report(const std::string& designs_dir,
   plot("contact", "contact time (ms)", contact);
   plot("vibration", "frame vibration energy (J)", vibration);
   plot("wrist", "peak wrist force (N)", wrist);
-  return {{"[tension-and-stiffness.md](tension-and-stiffness.md), "
-           "[.csv](tension-and-stiffness.csv), [rebound](tension-and-stiffness-rebound.png), "
-           "[contact](tension-and-stiffness-contact.png), "
-           "[vibration](tension-and-stiffness-vibration.png), "
-           "[wrist](tension-and-stiffness-wrist.png)",
-           fmt::format("The solved collision over 180-300 N and 100-200 Hz: from 280 to 180 N the "
-                       "ball returns {:+.1f} % faster (published: +2.9 %), the contact lasts "
-                       "{:.2f} instead of {:.2f} ms.",
-                       100 * (low.rebound_m_s / high.rebound_m_s - 1), low.contact_s * 1e3,
-                       high.contact_s * 1e3)}};
+  return {
+      {"[tension-and-stiffness.md](tension-and-stiffness.md), "
+       "[.csv](tension-and-stiffness.csv), [rebound](tension-and-stiffness-rebound.png), "
+       "[contact](tension-and-stiffness-contact.png), "
+       "[vibration](tension-and-stiffness-vibration.png), "
+       "[wrist](tension-and-stiffness-wrist.png)",
+       fmt::format("The solved collision over 180-300 N and 100-200 Hz: from 280 to 180 N the "
+                   "ball returns {:+.1f} % faster (published: +2.9 %), the contact lasts "
+                   "{:.2f} instead of {:.2f} ms.",
+                   100 * (low.rebound_m_s / high.rebound_m_s - 1), low.contact_s * 1e3,
+                   high.contact_s * 1e3)}};
 }
 
 }  // namespace sweetspot::io
