@@ -72,6 +72,11 @@ struct PeerFigures {
 };
 PeerFigures bench_peers(const BenchOptions& options, std::ostream& log);
 
+// One solved collision of the typical racquet (collision.hpp): time and error
+// against the step, against a tenth of the step and a fine reference, into
+// speed-vs-error-collision.md (+ .csv) in out_dir.
+void bench_collision(const BenchOptions& options, std::ostream& log);
+
 // Speed against error of every modal solver on the optimizer's study racquet
 // (two sections, f1 = 150 Hz, 6 g of tape at 0.68 m; hand-held with the
 // calibrated hand), as CSV: method, resolution, elements, median_us, f1_Hz,

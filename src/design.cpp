@@ -31,6 +31,13 @@ void validate(const Design& d) {
       throw std::invalid_argument("strings/" + why);
     }
   }
+  if (const std::string why = d.ball_contact.validate(); !why.empty()) {
+    throw std::invalid_argument("ball/contact/" + why);
+  }
+  detail::require_in_range("strings/bed_mass_kg", d.string_bed_mass_kg, 1e-9, kMaxMass_kg, "kg");
+  if (!(d.string_bed_damping_ratio >= 0.0 && d.string_bed_damping_ratio < 1.0)) {
+    detail::fail_in_range("strings/bed_damping_ratio", d.string_bed_damping_ratio, 0.0, 1.0, "");
+  }
   const FrameStiffness& k = d.stiffness;
   if (k.EI_N_m2) {
     detail::require_positive("frame/EI_N_m2", *k.EI_N_m2, "N m^2");

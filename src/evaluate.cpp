@@ -5,6 +5,7 @@
 #include <string>
 
 #include "check.hpp"
+#include "collision_evaluation.hpp"
 #include "sweetspot/impact_response.hpp"
 #include "sweetspot/rigid_impact.hpp"
 
@@ -53,11 +54,14 @@ double settled_duration(const Design& design) {
 Evaluation evaluate(const Design& design) { return evaluate(design, Fidelity::kRigid); }
 
 Fidelity needed_fidelity(const Design& design) {
+  if (design.strings && !design.cor_given && !design.cor_rigid && has_stiffness(design))
+    return Fidelity::kCollision;
   if (design.cor_rigid) return Fidelity::kResponse;
   return has_stiffness(design) ? Fidelity::kModal : Fidelity::kRigid;
 }
 
 Evaluation evaluate(const Design& design, Fidelity fidelity, double rel_tol) {
+  if (fidelity == Fidelity::kCollision) return evaluate_collision(design, rel_tol);
   if (design.cor_rigid && fidelity != Fidelity::kResponse) {
     throw std::invalid_argument(
         "frame/cor_rigid: a COR derived from the frame's vibration needs the response model "
@@ -231,17 +235,21 @@ std::string_view to_string(Fidelity fidelity) {
       return "modal";
     case Fidelity::kResponse:
       return "response";
+    case Fidelity::kCollision:
+      return "collision";
   }
   return "rigid";
 }
 
 std::optional<Fidelity> parse_fidelity(std::string_view name) {
-  for (const Fidelity f : {Fidelity::kRigid, Fidelity::kModal, Fidelity::kResponse}) {
+  for (const Fidelity f :
+       {Fidelity::kRigid, Fidelity::kModal, Fidelity::kResponse, Fidelity::kCollision}) {
     if (name == to_string(f)) return f;
   }
   if (name == "auto") return std::nullopt;
-  throw std::invalid_argument("expected \"rigid\", \"modal\", \"response\" or \"auto\", got \"" +
-                              std::string(name) + "\"");
+  throw std::invalid_argument(
+      "expected \"rigid\", \"modal\", \"response\", \"collision\" or \"auto\", got \"" +
+      std::string(name) + "\"");
 }
 
 Fidelity resolve_fidelity(std::string_view name, const Design& design) {
@@ -249,6 +257,7 @@ Fidelity resolve_fidelity(std::string_view name, const Design& design) {
 }
 
 Fidelity fidelity_of(const Evaluation& evaluation) {
+  if (evaluation.details && evaluation.details->collision) return Fidelity::kCollision;
   return evaluation.vibration_energy_J ? Fidelity::kResponse
          : evaluation.modal            ? Fidelity::kModal
                                        : Fidelity::kRigid;

@@ -5,6 +5,7 @@
 
 #include <optional>
 
+#include "sweetspot/ball_contact.hpp"
 #include "sweetspot/beam_modes.hpp"
 #include "sweetspot/implement.hpp"
 #include "sweetspot/string_bed.hpp"
@@ -69,6 +70,15 @@ struct Design {
   std::optional<double> cor_rigid{};
   // When given, the impact duration is derived from the string tension.
   std::optional<StringBed> strings{};
+  // The solved collision (Fidelity::kCollision, collision.hpp): the ball's
+  // contact law and the string bed's moving mass [kg] (> 0) and damping ratio
+  // (in [0, 1)). Defaults: the calibrated tennis ball, 4 g and 0.008.
+  BallContactLaw ball_contact = kTennisBallLaw;
+  double string_bed_mass_kg = kStringBedMass_kg;
+  double string_bed_damping_ratio = kStringBedDampingRatio;
+  // False when a design file leaves the frame's COR to its default: with a
+  // string tension and the frame's stiffness, "auto" then solves the collision.
+  bool cor_given = true;
 };
 
 // Throws std::invalid_argument if any value is out of range. The message

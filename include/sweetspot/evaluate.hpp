@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "sweetspot/collision.hpp"
 #include "sweetspot/design.hpp"
 #include "sweetspot/frame_modes.hpp"
 #include "sweetspot/rigid_impact.hpp"
@@ -66,6 +67,8 @@ struct Evaluation {
     // Why a cheaper model would have done (empty when nothing to say), e.g. a
     // fundamental above 1.5/T, which the impact barely excites.
     std::string fidelity_note;
+    // Fidelity::kCollision: the solved collision (force history, energy ledger).
+    std::optional<CollisionResult> collision;
   };
   std::optional<Details> details;
 };
@@ -73,14 +76,16 @@ struct Evaluation {
 // How much model an evaluation uses: the rigid body of the paper alone; also
 // the vibration modes of the flexible frame (which need its stiffness); or
 // also the frame's response to the ball (vibration energy, a derived COR).
-enum class Fidelity { kRigid, kModal, kResponse };
+// Above them, the collision solved as a dynamic problem (collision.hpp): the
+// COR, the contact time, the peak force and the vibration come out of it.
+enum class Fidelity { kRigid, kModal, kResponse, kCollision };
 
-// Every name a fidelity is asked by: the three levels and "auto" (the
+// Every name a fidelity is asked by: the four levels and "auto" (the
 // cheapest that answers the design, needed_fidelity).
-inline constexpr std::array<std::string_view, 4> kFidelityNames{"rigid", "modal", "response",
-                                                                "auto"};
+inline constexpr std::array<std::string_view, 5> kFidelityNames{"rigid", "modal", "response",
+                                                                "collision", "auto"};
 
-// "rigid", "modal" or "response".
+// "rigid", "modal", "response" or "collision".
 std::string_view to_string(Fidelity fidelity);
 
 // The level `name` asks for; std::nullopt for "auto". Throws
@@ -94,8 +99,10 @@ Fidelity resolve_fidelity(std::string_view name, const Design& design);
 // The level an evaluation was made at.
 Fidelity fidelity_of(const Evaluation& evaluation);
 
-// The cheapest fidelity that answers everything the design asks: kResponse
-// when the COR is to be derived, kModal when the stiffness is given, else kRigid.
+// The cheapest fidelity that answers everything the design asks: kCollision
+// when a string tension and the frame's stiffness are given and the COR is
+// not (neither given nor cor_rigid), kResponse when the COR is to be derived
+// from cor_rigid, kModal when the stiffness is given, else kRigid.
 Fidelity needed_fidelity(const Design& design);
 
 // Evaluates every quantity of the rigid model for a valid design (validate()
@@ -104,6 +111,12 @@ Fidelity needed_fidelity(const Design& design);
 // COR to be derived (cor_rigid) needs Fidelity::kResponse and throws here.
 Evaluation evaluate(const Design& design);
 
+// kCollision solves the collision (collision.hpp) with the design's ball
+// law and string bed on the free frame's modes: the COR is derived (Eq. 16
+// inverted with M_eff), the duration is the solved contact time, the peak
+// force, the impulse and the vibration energy are the solved ones, and the
+// peak wrist force is Eq. (11)'s ratio times the solved peak force. It needs
+// a string tension and the frame's stiffness, and refuses cor_rigid.
 // The same with the modes too when `fidelity` is kModal or kResponse (the
 // hand-held ones to `rel_tol`, the frequency's relative error) and the impact
 // response with kResponse. A design whose COR is to be derived (cor_rigid)

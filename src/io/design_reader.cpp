@@ -274,6 +274,7 @@ DesignFile read_design_impl(const Json& document, const std::string& source, boo
   design.cor = frame.get_number("cor", defaults.cor);
   {
     ObjectReader& r = frame.reader();
+    design.cor_given = r.has("cor");
     design.cor_rigid = r.number("cor_rigid");
     if (design.cor_rigid && r.has("cor")) {
       r.fail("cor_rigid",
@@ -329,9 +330,14 @@ DesignFile read_design_impl(const Json& document, const std::string& source, boo
       design.strings = bed;
       note("strings/impact_duration_s", "derived from the string tension");
     }
+    // The solved collision's string bed: its moving mass and loss.
+    design.string_bed_mass_kg =
+        r.quantity("bed_mass", Dimension::kMass).value_or(defaults.string_bed_mass_kg);
+    design.string_bed_damping_ratio =
+        r.number("bed_damping_ratio").value_or(defaults.string_bed_damping_ratio);
     r.finish({"impact_duration_s", "impact_duration_ms", "tension_N", "tension_lb", "tension_kg",
               "string_spacing_m", "string_spacing_mm", "head_size_in2", "head_size_cm2",
-              "contact_radius_m"});
+              "contact_radius_m", "bed_mass_kg", "bed_mass_g", "bed_damping_ratio"});
   }
 
   Part hand(top, "hand", keys, provenance);
@@ -377,7 +383,18 @@ DesignFile read_design_impl(const Json& document, const std::string& source, boo
   design.ball.mass_kg = ball.get("mass", Dimension::kMass, "mass_kg", defaults.ball.mass_kg);
   design.ball.speed_m_s =
       ball.get("speed", Dimension::kSpeed, "speed_m_s", defaults.ball.speed_m_s);
-  ball.reader().finish({"mass_kg", "speed_m_s"});
+  if (const Json* contact = ball.reader().child("contact")) {
+    // The ball's contact law F = k x^n + b x^p x' (collision.hpp); the
+    // calibrated tennis ball for every coefficient not given.
+    ObjectReader c(*contact, "/ball/contact", "ball/contact", source, keys);
+    design.ball_contact.stiffness = c.number("stiffness").value_or(kTennisBallLaw.stiffness);
+    design.ball_contact.exponent = c.number("exponent").value_or(kTennisBallLaw.exponent);
+    design.ball_contact.damping = c.number("damping").value_or(kTennisBallLaw.damping);
+    design.ball_contact.damping_exponent =
+        c.number("damping_exponent").value_or(kTennisBallLaw.damping_exponent);
+    c.finish({"stiffness", "exponent", "damping", "damping_exponent"});
+  }
+  ball.reader().finish({"mass_kg", "speed_m_s", "contact"});
 
   Part impact(top, "impact", keys, provenance);
   bool impact_from_tip = true;

@@ -95,6 +95,21 @@ Json evaluation_json(const DesignFile& file, const Evaluation& e) {
     if (!value) notes[std::string(output.name)] = output.when_absent;
   }
   const Evaluation::Details details = e.details.value_or(Evaluation::Details{});
+  if (details.collision) {
+    const CollisionResult& c = *details.collision;
+    outputs["energy_ledger"] = {{"ball_in_J", c.ball_in_J},
+                                {"ball_out_J", c.ball_out_J},
+                                {"implement_rigid_J", c.implement_rigid_J},
+                                {"vibration_J", c.vibration_J},
+                                {"ball_loss_J", c.ball_loss_J},
+                                {"strings_loss_J", c.strings_loss_J}};
+    j["collision"] = {{"contacts", c.contacts},
+                      {"peak_ball_compression_m", c.peak_ball_compression_m},
+                      {"peak_string_deflection_m", c.peak_string_deflection_m},
+                      {"string_bed_energy_J", c.string_bed_energy_J},
+                      {"time_s", c.time_s},
+                      {"force_N", c.force_N}};
+  }
   if (!details.fidelity_note.empty()) notes["fidelity"] = details.fidelity_note;
   j["notes"] = notes;
   if (!details.vibration_modes.empty()) {

@@ -18,6 +18,10 @@ constexpr std::string_view kNeedsResponse =
     "needs the response model: give the frame's stiffness and evaluate with --fidelity response "
     "(or auto with frame cor_rigid)";
 
+constexpr std::string_view kNeedsCollision =
+    "needs the solved collision: give the string tension and the frame's stiffness and evaluate "
+    "with --fidelity collision (or auto without frame cor)";
+
 std::optional<double> from_tip(const Evaluation& e, const std::optional<double>& from_butt) {
   if (!from_butt) return std::nullopt;
   return e.length_m - *from_butt;
@@ -128,6 +132,13 @@ const std::array kOutputs{
     OutputSpec{"vibration_share", "", "vibration energy over the ball's incident kinetic energy",
                [](const Evaluation& e) { return e.vibration_share; }, kNeedsResponse, false, true,
                true},
+    OutputSpec{"contact_time_s", "s",
+               "contact time of the solved collision, first touch to the ball's last separation",
+               [](const Evaluation& e) -> std::optional<double> {
+                 if (!e.details || !e.details->collision) return std::nullopt;
+                 return e.details->collision->contact_time_s;
+               },
+               kNeedsCollision, false, true, true},
     OutputSpec{"system_mass_kg", "kg", "implement plus hand, M",
                [](const Evaluation& e) -> std::optional<double> { return e.system_mass_kg; }, ""},
     OutputSpec{

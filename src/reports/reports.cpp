@@ -12,6 +12,7 @@
 #include "reports/optimization_report.hpp"
 #include "reports/paper_reports.hpp"
 #include "reports/response_report.hpp"
+#include "reports/tension_report.hpp"
 #include "studies/optimization.hpp"
 #include "studies/study.hpp"
 #include "studies/sweep.hpp"
@@ -99,6 +100,8 @@ void write_reports(const std::string& designs_dir, const std::string& out_dir, s
                    modes.free.modes[1].frequency_Hz, modes.free.modes[2].frequency_Hz)});
 
   for (ReportEntry& entry : write_response_reports(designs_dir, write))
+    entries.push_back(std::move(entry));
+  for (ReportEntry& entry : write_tension_report(designs_dir, write))
     entries.push_back(std::move(entry));
 
   for (const fs::path& path : study_files(designs_dir)) {

@@ -387,7 +387,8 @@ Study read_study(const Json& document, const std::string& source, const std::str
     study.fidelity =
         needed_fidelity(read_design(study.design_document, study.design_source).design);
     for (const OutputSpec* o : used) {
-      if (o->needs_response) study.fidelity = Fidelity::kResponse;
+      if (o->needs_response && study.fidelity != Fidelity::kCollision)
+        study.fidelity = Fidelity::kResponse;
       if (o->needs_modes && study.fidelity == Fidelity::kRigid) study.fidelity = Fidelity::kModal;
     }
   }
@@ -396,7 +397,8 @@ Study read_study(const Json& document, const std::string& source, const std::str
     for (const ObjectiveTerm& t : study.objective) used.push_back(t.output);
     for (const StudyConstraint& c : study.constraints) used.push_back(c.output);
     for (const OutputSpec* o : used) {
-      const bool too_low = (o->needs_response && study.fidelity != Fidelity::kResponse) ||
+      const bool too_low = (o->needs_response && study.fidelity != Fidelity::kResponse &&
+                            study.fidelity != Fidelity::kCollision) ||
                            (o->needs_modes && study.fidelity == Fidelity::kRigid);
       if (too_low) {
         top.fail("fidelity", "\"" + fidelity + "\" cannot give " + std::string(o->name) +

@@ -1,0 +1,86 @@
+#include "collision_evaluation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "check.hpp"
+#include "sweetspot/collision.hpp"
+#include "sweetspot/frame_modes.hpp"
+#include "sweetspot/impact_response.hpp"
+
+namespace sweetspot {
+
+Evaluation evaluate_collision(const Design& design, double rel_tol) {
+  if (design.cor_rigid) {
+    throw std::invalid_argument(
+        "frame/cor_rigid: the solved collision derives the COR itself; give neither cor nor "
+        "cor_rigid (or evaluate with --fidelity response)");
+  }
+  validate(design);
+  if (!design.strings) {
+    throw std::invalid_argument(
+        "strings/tension_N: the solved collision needs the string tension (the string bed's "
+        "stiffness), not a given impact duration");
+  }
+  if (!has_stiffness(design)) {
+    throw std::invalid_argument(
+        "frame/EI_N_m2: the solved collision needs the frame's stiffness (EI_N_m2 or "
+        "fundamental_free_Hz)");
+  }
+  ResponseOptions options;
+  options.modes = kCollisionModes;
+  options.rel_tol = rel_tol;
+  const ResponseModel model = response_model(design, options);
+  const FrameAtImpact frame = frame_at_impact(model, design.impact_from_butt_m);
+  const StringBedDynamics bed = string_bed_dynamics(*design.strings, design.string_bed_mass_kg,
+                                                    design.string_bed_damping_ratio);
+  CollisionOptions collision_options;
+  collision_options.record_history = true;
+  CollisionResult r = collide(frame, bed, design.ball.mass_kg, design.ball_contact,
+                              design.ball.speed_m_s, collision_options);
+  if (!(r.contact_time_s >= kMinDuration_s && r.contact_time_s <= kMaxDuration_s) ||
+      !std::isfinite(r.apparent_cor)) {
+    throw std::invalid_argument("ball/contact: the solved contact lasts " +
+                                detail::format_number(r.contact_time_s) + " s, outside [" +
+                                detail::format_number(kMinDuration_s) + ", " +
+                                detail::format_number(kMaxDuration_s) + "] s");
+  }
+  // The rigid model's quantities at the COR that Eq. (16) maps to the solved
+  // apparent COR; then the solved numbers replace the prescribed ones.
+  const double M_eff = 1.0 / frame.inverse_effective_mass_per_kg;
+  const double cor = cor_from_apparent(r.apparent_cor, design.ball.mass_kg, M_eff);
+  Design resolved = design;
+  resolved.strings.reset();
+  resolved.cor = std::clamp(cor, 0.0, 1.0);
+  resolved.impact_duration_s = r.contact_time_s;
+  Evaluation e = evaluate(resolved, Fidelity::kModal, rel_tol);
+  e.cor = cor;
+  e.cor_derived = true;
+  e.impact_duration_s = r.contact_time_s;
+  e.impact_duration_derived = true;
+  e.apparent_cor = r.apparent_cor;
+  e.rebound_speed_m_s = r.apparent_cor * design.ball.speed_m_s;
+  e.impulse_N_s = r.impulse_N_s;
+  e.peak_impact_force_N = r.peak_force_N;
+  e.peak_wrist_force_N = std::abs(e.wrist_force_ratio) * r.peak_force_N;  // Eq. (11)
+  e.vibration_energy_J = r.vibration_J;
+  e.vibration_share = r.vibration_J / r.ball_in_J;
+  if (!e.details) e.details.emplace();
+  e.details->fidelity_note.clear();
+  if (!r.separated) {
+    e.details->fidelity_note = "the ball had not left for good after " +
+                               detail::format_number(collision_options.max_time_s) + " s (" +
+                               std::to_string(r.contacts) +
+                               " contacts); the outputs are those at the last separation";
+  }
+  e.details->vibration_modes.clear();
+  for (std::size_t k = 0; k < r.mode_energy_J.size(); ++k) {
+    e.details->vibration_modes.emplace_back(model.modes[k].mode.frequency_Hz, r.mode_energy_J[k]);
+  }
+  e.details->collision = std::move(r);
+  return e;
+}
+
+}  // namespace sweetspot

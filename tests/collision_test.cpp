@@ -1,0 +1,425 @@
+// Oracles for the solved collision: the energy ledger and the momentum
+// balance (identities of the discrete-gradient step), closed forms of a linear
+// ball, the rigid-surface measurements the ball is calibrated to, the
+// prescribed-pulse model where it is valid, observed orders of convergence,
+// and published measurements on racquets (each cited where it is used).
+#include "sweetspot/collision.hpp"
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "sweetspot/evaluate.hpp"
+#include "sweetspot/frame_modes.hpp"
+#include "sweetspot/rigid_impact.hpp"
+
+namespace sweetspot {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+// The ledger and the momentum balance are identities of the step: round-off
+// over a few thousand steps (relative to the ball's energy / momentum).
+constexpr double kRoundOff = 1e-11;
+// Extrapolated runs at the default step: the COR to ~1e-6 (see the convergence test).
+constexpr double kStepError = 5e-6;
+constexpr double kBall_kg = kTennisBallMass_kg;
+// ITF rules: a ball dropped 100 in (2.54 m) onto concrete must rebound 53-58 in
+// (1.35-1.47 m), e = sqrt(h2/h1) = 0.729-0.761 (Cross, "Dynamic properties of
+// tennis balls", Sports Eng. 2, 23-33, 1999, quoting the ITF's rules).
+const double kDropSpeed = std::sqrt(2.0 * 9.81 * 2.54);
+const double kItfCorLow = std::sqrt(1.35 / 2.54), kItfCorHigh = std::sqrt(1.47 / 2.54);
+
+double ledger_residual(const CollisionResult& r) {
+  return r.ball_in_J -
+         (r.ball_out_J + r.implement_rigid_J + r.vibration_J + r.ball_loss_J + r.strings_loss_J);
+}
+
+// designs/racquets/tour-100.json: a 27 in, 305 g racquet, balance 32.5 cm,
+// swingweight 320 kg cm^2, free fundamental 155 Hz (typical strung specs).
+Design tour_100() {
+  Design d{Implement::from_specs({27.0 * 0.0254, 0.305, 0.325, 0.0320})};
+  d.stiffness.fundamental_free_Hz = 155.0;
+  d.impact_from_butt_m = d.implement.length_m() - 0.16;
+  return d;
+}
+ResponseModel tour_100_model(int modes = 6) {
+  ResponseOptions o;
+  o.modes = modes;
+  return response_model(tour_100(), o);
+}
+StringBedDynamics strings_at(double tension_N, double mass_kg = kStringBedMass_kg,
+                             double damping_ratio = kStringBedDampingRatio) {
+  StringBed bed;
+  bed.tension_N = tension_N;
+  return string_bed_dynamics(bed, mass_kg, damping_ratio);
+}
+// A uniform 0.25 kg beam of EI 152 N m^2 hit 5 cm from its tip (the
+// implements on which the prescribed pulse breaks down, evaluate_test.cpp).
+FrameAtImpact long_beam(double length_m, int modes) {
+  Design d{Implement::from_sections({Section{length_m, 0.25, {}}}, {})};
+  d.stiffness.EI_N_m2 = 152.0;
+  ResponseOptions o;
+  o.modes = modes;
+  return frame_at_impact(response_model(d, o), length_m - 0.05);
+}
+
+TEST_CASE("The calibrated tennis ball bounces off a rigid surface as the ITF's rules require") {
+  const CollisionResult r =
+      collide(rigid_frame(), std::nullopt, kBall_kg, kTennisBallLaw, kDropSpeed);
+  CHECK(r.separated);
+  CHECK(r.apparent_cor >= kItfCorLow);
+  CHECK(r.apparent_cor <= kItfCorHigh);
+  // The calibration targets: the middle of the band, 4.5 ms of contact (tennis
+  // balls on rigid surfaces: 4-5 ms, Cross 1999 above).
+  CHECK(r.apparent_cor == Approx(0.745).margin(1e-4));
+  CHECK(r.contact_time_s == Approx(4.5e-3).margin(1e-6));
+  // A plausible squeeze of a 65 mm ball: about 1 cm at the drop test's speed.
+  CHECK(r.peak_ball_compression_m > 0.005);
+  CHECK(r.peak_ball_compression_m < 0.015);
+}
+
+TEST_CASE(
+    "The ball's COR falls and its contact shortens as it hits harder, never squashing it flat") {
+  // Haake, Carre & Goodwill, J. Sports Sci. 21, 839-850 (2003): the COR of
+  // tennis balls on a rigid surface falls with impact speed, their dynamic
+  // stiffness rises.
+  double previous_cor = 1.0, previous_time = 1.0;
+  for (const double v : {3.0, 7.0, 15.0, 30.0, 50.0}) {
+    INFO(v << " m/s");
+    const CollisionResult r = collide(rigid_frame(), std::nullopt, kBall_kg, kTennisBallLaw, v);
+    CHECK(r.apparent_cor < previous_cor);
+    CHECK(r.contact_time_s < previous_time);
+    CHECK(r.peak_ball_compression_m < 0.7 * kTennisBallDiameter_m);
+    previous_cor = r.apparent_cor;
+    previous_time = r.contact_time_s;
+  }
+}
+
+TEST_CASE("The energy ledger closes to round-off, from a rigid wall to a 100 m implement") {
+  std::vector<std::pair<std::string, FrameAtImpact>> frames;
+  frames.emplace_back("rigid", rigid_frame());
+  const ResponseModel racquet = tour_100_model();
+  const double L = tour_100().implement.length_m();
+  for (const double from_tip : {0.02, 0.12, 0.16, 0.25})
+    frames.emplace_back("tour 100 " + std::to_string(from_tip),
+                        frame_at_impact(racquet, L - from_tip));
+  ResponseOptions held;
+  held.support = ResponseOptions::Support::kHandHeld;
+  held.modes = 6;
+  frames.emplace_back("tour 100 hand-held",
+                      frame_at_impact(response_model(tour_100(), held), L - 0.16));
+  frames.emplace_back("2 m beam", long_beam(2.0, 20));
+  frames.emplace_back("100 m beam", long_beam(100.0, 30));
+  for (const auto& [name, frame] : frames) {
+    for (const bool with_strings : {true, false}) {
+      for (const bool extrapolate : {true, false}) {
+        INFO(name << (with_strings ? ", strings" : ", no strings")
+                  << (extrapolate ? ", extrapolated" : ""));
+        CollisionOptions o;
+        o.extrapolate = extrapolate;
+        const auto strings = with_strings ? std::optional(strings_at(250.0)) : std::nullopt;
+        const CollisionResult r = collide(frame, strings, kBall_kg, kTennisBallLaw, 50.0, o);
+        CHECK(std::abs(ledger_residual(r)) <= kRoundOff * r.ball_in_J);
+        for (const double part :
+             {r.ball_out_J, r.implement_rigid_J, r.vibration_J, r.ball_loss_J, r.strings_loss_J})
+          CHECK(part >= -kRoundOff * r.ball_in_J);
+        // No output reports more energy than went in.
+        CHECK(r.vibration_J <= r.ball_in_J);
+        CHECK(r.ball_out_J <= r.ball_in_J);
+      }
+    }
+  }
+}
+
+TEST_CASE("The long implements catch the ball again and the ledger still closes") {
+  CollisionOptions o;
+  o.extrapolate = false;
+  const CollisionResult r =
+      collide(long_beam(2.0, 20), strings_at(250.0), kBall_kg, kTennisBallLaw, 50.0, o);
+  CHECK(r.contacts >= 2);
+  CHECK(std::abs(ledger_residual(r)) <= kRoundOff * r.ball_in_J);
+}
+
+TEST_CASE("The impulse is the ball's loss of momentum and the implement's gain") {
+  const ResponseModel racquet = tour_100_model();
+  const double L = tour_100().implement.length_m();
+  for (const double from_tip : {0.03, 0.16}) {
+    const CollisionResult r = collide(frame_at_impact(racquet, L - from_tip), strings_at(250.0),
+                                      kBall_kg, kTennisBallLaw, 50.0);
+    const double p_in = kBall_kg * 50.0;
+    CHECK(r.impulse_N_s ==
+          Approx(kBall_kg * (50.0 - r.ball_velocity_after_m_s)).epsilon(kRoundOff));
+    CHECK(r.implement_momentum_N_s == Approx(r.impulse_N_s).margin(kRoundOff * p_in));
+  }
+}
+
+TEST_CASE("Rigid strings on a rigid frame give the ball's own COR and contact time") {
+  const CollisionResult wall = collide(rigid_frame(), std::nullopt, kBall_kg, kTennisBallLaw, 30.0);
+  // Strings 1e4 times stiffer than the ball's secant stiffness, weighing a
+  // microgram: their compliance changes the contact by ~1e-4.
+  const StringBedDynamics stiff{1e9, 1e-9, 0.0};
+  const CollisionResult r = collide(rigid_frame(), stiff, kBall_kg, kTennisBallLaw, 30.0);
+  CHECK(r.apparent_cor == Approx(wall.apparent_cor).epsilon(1e-4));
+  CHECK(r.contact_time_s == Approx(wall.contact_time_s).epsilon(1e-4));
+}
+
+TEST_CASE("A linear ball on strings lasts pi sqrt(mu/k) with k the two springs in series") {
+  // Undamped: a half period of the relative motion of m and M_eff on
+  // 1/k = 1/k_ball + 1/k_strings (string_bed.hpp), and e = 1.
+  // The string bed weighs 1e-11 kg: its own vibration (resolved by the step)
+  // moves the instant the ball's spring relaxes by ~sqrt(m_s / mu) of T
+  // (3e-4 at 1 mg, 3e-6 at 1e-10 kg), ~1e-6 here.
+  const BallContactLaw linear{40e3, 1.0, 0.0, 0.0};
+  const StringBedDynamics strings{60e3, 1e-11, 0.0};
+  FrameAtImpact body;
+  body.inverse_effective_mass_per_kg = 1.0 / 0.2;
+  CollisionOptions o;
+  o.steps_per_contact = 100000;
+  const CollisionResult r = collide(body, strings, kBall_kg, linear, 40.0, o);
+  const double mu = reduced_mass(kBall_kg, 0.2), k = series_stiffness(40e3, 60e3);
+  CHECK(r.contact_time_s == Approx(kPi * std::sqrt(mu / k)).epsilon(kStepError));
+  // e = 1: the apparent COR is Eq. (16) with e = 1.
+  CHECK(r.apparent_cor == Approx((0.2 - kBall_kg) / (0.2 + kBall_kg)).epsilon(1e-8));
+}
+
+TEST_CASE("A linear spring-dashpot ball has the damped oscillator's COR") {
+  // m x'' + b x' + k x = 0, x(0) = 0, x'(0) = v: x = (v/w_d) e^{-s t} sin(w_d t),
+  // s = b/2m. The force k x + b x' = -m x'' falls to 0 (and would pull after)
+  // where tan(w_d t) = 2 s w_d / (s^2 - w_d^2); the ball leaves with x'(t*).
+  const double k = 40e3, b = 6.0, m = kBall_kg;
+  const double s = b / (2 * m), wd = std::sqrt(k / m - s * s);
+  const double t_star = (kPi - std::atan(2 * s * wd / (wd * wd - s * s))) / wd;
+  const double e =
+      -std::exp(-s * t_star) * (std::cos(wd * t_star) - s / wd * std::sin(wd * t_star));
+  const CollisionResult r =
+      collide(rigid_frame(), std::nullopt, m, BallContactLaw{k, 1.0, b, 0.0}, 20.0);
+  CHECK(r.apparent_cor == Approx(e).epsilon(kStepError));
+  // The undamped classic, e = exp(-pi s / w_d) when the force may pull, lies above.
+  CHECK(e < std::exp(-kPi * s / wd) + 0.05);
+}
+
+TEST_CASE("Convergence: second order in the step, third after extrapolation, and in the modes") {
+  const ResponseModel racquet = tour_100_model();
+  const FrameAtImpact frame = frame_at_impact(racquet, tour_100().impact_from_butt_m);
+  const StringBedDynamics strings = strings_at(250.0);
+  CollisionOptions o;
+  o.extrapolate = false;
+  o.steps_per_contact = 8192;
+  const double reference = collide(frame, strings, kBall_kg, kTennisBallLaw, 50.0, o).apparent_cor;
+  std::vector<double> plain, extrapolated;
+  for (const int steps : {64, 128, 256}) {
+    o.steps_per_contact = steps;
+    o.extrapolate = false;
+    plain.push_back(std::abs(
+        collide(frame, strings, kBall_kg, kTennisBallLaw, 50.0, o).apparent_cor - reference));
+    o.extrapolate = true;
+    extrapolated.push_back(std::abs(
+        collide(frame, strings, kBall_kg, kTennisBallLaw, 50.0, o).apparent_cor - reference));
+  }
+  for (std::size_t i = 1; i < plain.size(); ++i) {
+    const double order = std::log2(plain[i - 1] / plain[i]);
+    INFO("observed order " << order);
+    CHECK(order > 1.8);
+    CHECK(order < 2.3);
+    CHECK(std::log2(extrapolated[i - 1] / extrapolated[i]) > 2.5);
+  }
+  // The default (64 steps, extrapolated) to 1e-6 in the COR.
+  CHECK(std::abs(collide(frame, strings, kBall_kg, kTennisBallLaw, 50.0).apparent_cor - reference) <
+        1e-6);
+
+  // Modes: each pair added changes the COR less; from six modes (to ~3 kHz,
+  // far beyond 1.5/T ~ 370 Hz) on, the truncation error is < 1e-4.
+  const ResponseModel many = tour_100_model(12);
+  const FrameAtImpact f12 = frame_at_impact(many, tour_100().impact_from_butt_m);
+  auto cor_with = [&](int modes) {
+    return collide(frame_at_impact(many, tour_100().impact_from_butt_m, modes), strings, kBall_kg,
+                   kTennisBallLaw, 50.0)
+        .apparent_cor;
+  };
+  const double converged = collide(f12, strings, kBall_kg, kTennisBallLaw, 50.0).apparent_cor;
+  double previous_change = 1.0;
+  for (const int modes : {4, 6, 8, 10}) {
+    const double change = std::abs(cor_with(modes + 2) - cor_with(modes));
+    CHECK(change < previous_change);
+    previous_change = change;
+    if (modes >= 6) CHECK(std::abs(cor_with(modes) - converged) < 1e-4);
+  }
+  CHECK(std::abs(cor_with(1) - converged) > 1e-3);  // the fundamental alone is not enough
+}
+
+TEST_CASE("A stiff frame keeps the vibration energy the prescribed pulse gives it") {
+  // Where the prescribed half-sine is valid (f1 >> 1.5/T) both models leave
+  // the frame little energy; with the solved impulse and duration the
+  // half-sine's modal energies (impact_response.hpp) match the solved ones to
+  // the pulse-shape difference of the spectrum's tail.
+  const ResponseModel racquet = with_fundamental(tour_100_model(), 155.0);
+  const double x = tour_100().impact_from_butt_m;
+  for (const double f1 : {155.0, 1000.0}) {
+    INFO(f1 << " Hz");
+    const ResponseModel model = with_fundamental(racquet, f1);
+    const CollisionResult r =
+        collide(frame_at_impact(model, x), strings_at(250.0), kBall_kg, kTennisBallLaw, 50.0);
+    double modes_J = 0.0;
+    for (const double e : r.mode_energy_J) modes_J += e;
+    const double prescribed_J =
+        0.5 * r.impulse_N_s * r.impulse_N_s * vibration_compliance(model, x, r.contact_time_s);
+    if (f1 > 1.5 / r.contact_time_s * 2.0) {
+      CHECK(modes_J < 0.01 * r.ball_in_J);
+      CHECK(prescribed_J < 0.01 * r.ball_in_J);
+    } else {
+      // A real racquet (f1 ~ 0.6 / T): the same order, the prescribed pulse more.
+      CHECK(modes_J == Approx(prescribed_J).epsilon(0.5));
+    }
+  }
+}
+
+// ---------------------------------------------------------------- published numbers
+
+TEST_CASE("The typical racquet's apparent COR: about 0.4 mid-strings, about 0.1 near the tip") {
+  // Cross (2004) Sec. VI: e_A "is typically about 0.4 in the middle of the
+  // strings and about 0.1 near the tip". Accepted: 0.3-0.5 and 0-0.2 (the
+  // paper's "about" to one figure).
+  const ResponseModel racquet = tour_100_model();
+  const double L = tour_100().implement.length_m();
+  const StringBedDynamics strings = strings_at(250.0);
+  const double middle =
+      collide(frame_at_impact(racquet, L - 0.16), strings, kBall_kg, kTennisBallLaw, 50.0)
+          .apparent_cor;
+  const double tip =
+      collide(frame_at_impact(racquet, L - 0.04), strings, kBall_kg, kTennisBallLaw, 50.0)
+          .apparent_cor;
+  CHECK(middle > 0.3);
+  CHECK(middle < 0.5);
+  CHECK(tip > 0.0);
+  CHECK(tip < 0.2);
+}
+
+TEST_CASE("The COR along the strings peaks at the fundamental's node") {
+  // Cross, Am. J. Phys. 68, 1025 (2000) ("happy and unhappy balls"): the COR
+  // of a racket "varies with the impact point and is a maximum at the
+  // vibration node near the center of the strings".
+  const Design d = tour_100();
+  const ResponseModel racquet = tour_100_model();
+  const double node = *evaluate_modes(d).node_free_from_butt_m;
+  const StringBedDynamics strings = strings_at(250.0);
+  double best = 0.0, best_x = 0.0;
+  for (double x = d.implement.length_m() - 0.30; x <= d.implement.length_m() - 0.01; x += 0.0025) {
+    const FrameAtImpact f = frame_at_impact(racquet, x);
+    const double e =
+        cor_from_apparent(collide(f, strings, kBall_kg, kTennisBallLaw, 50.0).apparent_cor,
+                          kBall_kg, 1.0 / f.inverse_effective_mass_per_kg);
+    if (e > best) best = e, best_x = x;
+  }
+  CHECK(best_x == Approx(node).margin(0.01));
+}
+
+TEST_CASE("Lower string tension returns the ball slightly faster, the contact lasts 4-6 ms") {
+  // Bower & Cross, J. Sports Sci. 23, 765-771 (2005), in play: about 108 km/h at
+  // 180 N against 105 km/h at 280 N, a 2.9 % faster ball at the lower tension.
+  // The solved model's sign must agree; its size depends on the string bed's
+  // moving mass and loss (issue 12: 0-6 % over 1-8 g): checked in (0, 8 %).
+  const ResponseModel racquet = tour_100_model();
+  const FrameAtImpact f = frame_at_impact(racquet, tour_100().impact_from_butt_m);
+  for (const double mass : {0.001, 0.004, 0.008}) {
+    const double low =
+        collide(f, strings_at(180.0, mass), kBall_kg, kTennisBallLaw, 50.0).apparent_cor;
+    const double high =
+        collide(f, strings_at(280.0, mass), kBall_kg, kTennisBallLaw, 50.0).apparent_cor;
+    INFO(mass << " kg: " << low / high);
+    CHECK(low > high);
+    CHECK(low / high < 1.08);
+  }
+  // Contact times of 4-6 ms at common tensions (200-250 N; Brody, Cross &
+  // Lindsey, The Physics and Technology of Tennis, 2002).
+  for (const double tension : {200.0, 250.0}) {
+    const double T = collide(f, strings_at(tension), kBall_kg, kTennisBallLaw, 50.0).contact_time_s;
+    CHECK(T > 4e-3);
+    CHECK(T < 6e-3);
+  }
+}
+
+TEST_CASE(
+    "Table I racquet: a flexible frame gives e = 0.6 inside the racquet range, 0.8 only above") {
+  // Free frames of racquets run about 100-180 Hz (Brody, Cross & Lindsey
+  // 2002). The prescribed pulse gave e = 0.6 at 137 Hz and 0.8 at 217-255 Hz
+  // (reports/cor-from-stiffness.md); the solved collision, with the calibrated
+  // ball and a 250 N string bed, is checked for the same ordering.
+  Design d{Implement::paper_racquet(0.70, 0.25, 0.8)};
+  d.stiffness.EI_N_m2 = 152.0;
+  ResponseOptions o;
+  o.modes = 6;
+  const ResponseModel base = response_model(d, o);
+  auto cor_at = [&](double f1) {
+    const FrameAtImpact f = frame_at_impact(with_fundamental(base, f1), 0.65);
+    return cor_from_apparent(
+        collide(f, strings_at(250.0), kBall_kg, kTennisBallLaw, 50.0).apparent_cor, kBall_kg,
+        1.0 / f.inverse_effective_mass_per_kg);
+  };
+  CHECK(cor_at(100.0) < 0.6);
+  CHECK(cor_at(180.0) > 0.6);
+  CHECK(cor_at(180.0) < 0.8);
+  CHECK(cor_at(400.0) > 0.8);
+}
+
+TEST_CASE("auto solves the collision for a strung racquet without a COR, and says so") {
+  Design d = tour_100();
+  d.strings = StringBed{};
+  d.cor_given = false;
+  REQUIRE(needed_fidelity(d) == Fidelity::kCollision);
+  const Evaluation e = evaluate(d, Fidelity::kCollision);
+  CHECK(fidelity_of(e) == Fidelity::kCollision);
+  REQUIRE(e.details);
+  REQUIRE(e.details->collision);
+  const CollisionResult& c = *e.details->collision;
+  // The evaluation's numbers are the solved ones, and Eq. (16) with the
+  // derived COR gives back the solved apparent COR.
+  CHECK(e.apparent_cor == c.apparent_cor);
+  CHECK(e.impact_duration_s == c.contact_time_s);
+  CHECK(e.peak_impact_force_N == c.peak_force_N);
+  CHECK(e.peak_wrist_force_N == Approx(std::abs(e.wrist_force_ratio) * c.peak_force_N));
+  CHECK((e.cor * e.effective_mass_kg - kBall_kg) / (e.effective_mass_kg + kBall_kg) ==
+        Approx(e.apparent_cor).epsilon(1e-12));
+  CHECK(std::abs(ledger_residual(c)) <= kRoundOff * c.ball_in_J);
+  // A given COR, or cor_rigid, keeps the cheaper models.
+  d.cor_given = true;
+  CHECK(needed_fidelity(d) == Fidelity::kModal);
+  d.cor_given = false;
+  d.cor_rigid = 0.85;
+  CHECK(needed_fidelity(d) == Fidelity::kResponse);
+  CHECK_THROWS_WITH(evaluate(d, Fidelity::kCollision), Catch::Contains("frame/cor_rigid"));
+  d.cor_rigid.reset();
+  d.strings.reset();
+  CHECK_THROWS_WITH(evaluate(d, Fidelity::kCollision), Catch::Contains("strings/tension_N"));
+}
+
+TEST_CASE("A collision refuses bad arguments by name") {
+  auto message = [](auto&& call) {
+    try {
+      call();
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  CHECK(message([] {
+          collide(rigid_frame(), std::nullopt, -1.0, kTennisBallLaw, 50.0);
+        }).rfind("ball_mass_kg", 0) == 0);
+  CHECK(message([] {
+          collide(rigid_frame(), std::nullopt, kBall_kg, kTennisBallLaw, 0.0);
+        }).rfind("speed_m_s", 0) == 0);
+  CHECK(message([] {
+          collide(rigid_frame(), std::nullopt, kBall_kg, BallContactLaw{-1, 1.5, 0, 0}, 50.0);
+        }).rfind("law.stiffness", 0) == 0);
+  CHECK(message([] {
+          collide(rigid_frame(), StringBedDynamics{1e4, 0.0, 0.0}, kBall_kg, kTennisBallLaw, 50.0);
+        }).rfind("strings.mass_kg", 0) == 0);
+  CollisionOptions o;
+  o.steps_per_contact = 2;
+  CHECK(message([&] {
+          collide(rigid_frame(), std::nullopt, kBall_kg, kTennisBallLaw, 50.0, o);
+        }).rfind("options.steps_per_contact", 0) == 0);
+}
+
+}  // namespace
+}  // namespace sweetspot
