@@ -74,7 +74,8 @@ TEST_CASE("A design given by RA has the free fundamental the relation gives") {
         Approx(modes.node_free_from_butt_m.value()).epsilon(1e-9));
 }
 
-TEST_CASE("Lead tape on a frame rated by RA lowers its fundamental: the rating holds the stiffness") {
+TEST_CASE(
+    "Lead tape on a frame rated by RA lowers its fundamental: the rating holds the stiffness") {
   const Design bare = coach_racquet(66);
   Design taped{Implement::from_specs(IndustrySpecs{27 * 0.0254, 0.318, 0.325, 0.0325},
                                      {PointMass{0.60, 0.006}})};

@@ -640,6 +640,14 @@ class Evaluator {
       row.evaluation.reset();
       row.file.reset();
       row.error = e.what();
+      for (std::size_t j = 0; csv_ && j < pointers_.size(); ++j) {
+        // A value the model refuses at a mapped column's field names the column too.
+        const DesignColumn& column = header_.design[j];
+        if (pointers_[j] == e.pointer() && header_.names[column.cell] != column.field &&
+            !e.detail().starts_with("column ")) {
+          row.error = InputError(e.source(), e.pointer(), cell_problem(j, e.detail())).what();
+        }
+      }
       const bool shape_fault = e.detail().starts_with("unknown key") ||
                                e.detail().starts_with("expected a JSON object") ||
                                e.detail().starts_with("expected an array");

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <catch2/catch.hpp>
+#include <fstream>
 #include <sstream>
 #include <stdexcept>
 #include <streambuf>
@@ -16,6 +17,7 @@
 #include "io/format.hpp"
 #include "io/input_error.hpp"
 #include "io/outputs.hpp"
+#include "sweetspot/frame_specs.hpp"
 
 namespace sweetspot::io {
 namespace {
@@ -517,6 +519,40 @@ TEST_CASE("A tension column in lb or kg gives the tension in N it converts to") 
   CHECK(rows[1]["outputs"]["impact_duration_s"].get<double>() == Approx(duration).epsilon(1e-9));
   CHECK(rows[2]["outputs"]["impact_duration_s"].get<double>() == Approx(duration).epsilon(1e-9));
   CHECK(rows[1]["inputs"]["strings/tension_N"]["given"] == Json({{"/strings/tension_lb", 50}}));
+}
+
+TEST_CASE(
+    "The shipped catalogue, map and base of the README evaluate every row but the one with n/a") {
+  const std::string dir = std::string(SWEETSPOT_SOURCE_DIR) + "/designs/catalogues/";
+  BatchOptions options;
+  options.input = CatalogueFormat::kCsv;
+  options.base = read_json_file(dir + "base-52lb.json");
+  options.map = column_map_from_json(read_json_file(dir + "retailer-map.json"), "map");
+  options.format = Format::kJson;
+  options.sort_output = "peak_wrist_force_N";
+  std::ifstream in(dir + "spec-sheets.csv", std::ios::binary);
+  std::ostringstream out;
+  const BatchSummary summary = run_batch(in, "spec-sheets.csv", options, out);
+  CHECK(summary.rows == 6);
+  CHECK(summary.failed == 1);
+  const std::vector<Json> rows = rows_of(Outcome{summary, out.str()});
+  REQUIRE(rows.size() == 6);
+  for (std::size_t i = 0; i + 1 < rows.size(); ++i) {
+    INFO(rows[i]["name"]);
+    CHECK(rows[i]["fidelity"] == "modal");  // the RA column gives the frame's stiffness
+    // Its frequency is the RA relation's for the row's RA and mass (no lead tape).
+    const Json& outputs = rows[i]["outputs"];
+    CHECK(outputs["fundamental_free_Hz"].get<double>() ==
+          Approx(fundamental_free_Hz_from_RA(rows[i]["inputs"]["frame/RA"]["value"].get<double>(),
+                                             outputs["mass_kg"].get<double>()))
+              .epsilon(1e-6));
+    if (i > 0) {
+      CHECK(outputs["peak_wrist_force_N"].get<double>() >=
+            rows[i - 1]["outputs"]["peak_wrist_force_N"].get<double>());
+    }
+  }
+  CHECK(rows.back()["columns"]["pcode"] == "BAD1");
+  CHECK_THAT(rows.back()["error"].get<std::string>(), Catch::Contains("column 'swingweight'"));
 }
 
 }  // namespace
