@@ -35,7 +35,7 @@ TEST_CASE("The RA relation is its closed form: the reference frequency at the re
 }
 
 TEST_CASE("A stiffer frame vibrates faster, a heavier one slower, over the whole range") {
-  for (double m = kMinRAFrameMass_kg; m <= kMaxRAFrameMass_kg; m += 0.02) {
+  for (double m = kMinRAFrameMass_kg + 0.01; m <= kMaxRAFrameMass_kg; m += 0.02) {
     double previous = 0.0;
     for (double RA = kMinRA; RA <= kMaxRA; RA += 1.0) {
       const double f = fundamental_free_Hz_from_RA(RA, m);

@@ -484,7 +484,7 @@ TEST_CASE("Sorted rows come in the output's order, failed rows last; --top keeps
   CHECK(top.summary.rows == 61);  // every row was evaluated, and counted
 }
 
-TEST_CASE("--top over more rows than a chunk keeps the same best rows as sorting them all") {
+TEST_CASE("The top N over more rows than a chunk are the first N of sorting them all") {
   std::string table = "name,implement.mass_g\n";
   const int rows = static_cast<int>(kBatchChunkRows) * 2 + 77;
   for (int i = 0; i < rows; ++i)
