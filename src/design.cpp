@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "check.hpp"
+#include "sweetspot/frame_specs.hpp"
 
 namespace sweetspot {
 
@@ -45,6 +46,14 @@ void validate(const Design& d) {
   }
   if (k.fundamental_free_Hz)
     detail::require_positive("frame/fundamental_free_Hz", *k.fundamental_free_Hz, "Hz");
+  if (k.RA) {
+    if (k.EI_N_m2 || k.fundamental_free_Hz) {
+      throw std::invalid_argument(
+          "frame/RA: contradicts the frame's EI_N_m2 or fundamental_free_Hz: give the stiffness "
+          "once");
+    }
+    fundamental_free_Hz_from_RA(*k.RA, d.implement.frame_mass_properties().mass_kg);  // its range
+  }
   if (k.shear_modulus_Pa) {
     detail::require_positive("frame/cross_section/shear_modulus_Pa", *k.shear_modulus_Pa, "Pa");
     detail::require_in_range("frame/cross_section/shear_modulus_Pa", *k.shear_modulus_Pa, 0.0,

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "check.hpp"
+#include "sweetspot/frame_specs.hpp"
 
 namespace sweetspot {
 namespace {
@@ -53,7 +54,8 @@ std::vector<Section> fitted_sections(double length_m, const MassProperties& fram
 }
 
 bool has_stiffness(const Design& design) {
-  if (design.stiffness.EI_N_m2 || design.stiffness.fundamental_free_Hz) return true;
+  if (design.stiffness.EI_N_m2 || design.stiffness.fundamental_free_Hz || design.stiffness.RA)
+    return true;
   const auto& sections = design.implement.sections();
   return !sections.empty() && std::all_of(sections.begin(), sections.end(),
                                           [](const Section& s) { return s.EI_N_m2.has_value(); });
@@ -78,7 +80,8 @@ FlexibleFrame flexible_frame(const Design& design) {
   if (stiffness.EI_N_m2) detail::require_positive("frame/EI_N_m2", *stiffness.EI_N_m2, "N m^2");
   for (Section& s : frame.sections) {
     if (!s.EI_N_m2) s.EI_N_m2 = stiffness.EI_N_m2;
-    if (!s.EI_N_m2 && stiffness.fundamental_free_Hz) s.EI_N_m2 = 1.0;  // scaled below
+    if (!s.EI_N_m2 && (stiffness.fundamental_free_Hz || stiffness.RA))
+      s.EI_N_m2 = 1.0;  // scaled below
     if (!s.EI_N_m2) {
       throw std::invalid_argument(
           "frame/EI_N_m2: the modes need the frame's stiffness: give frame EI_N_m2, "
@@ -89,6 +92,12 @@ FlexibleFrame flexible_frame(const Design& design) {
     detail::require_positive("frame/fundamental_free_Hz", *stiffness.fundamental_free_Hz, "Hz");
     frame.sections = scale_EI_to_fundamental(frame.sections, frame.point_masses,
                                              *stiffness.fundamental_free_Hz, frame.options);
+  } else if (stiffness.RA) {
+    // RA rates the frame as sold: its fundamental without the design's point
+    // masses sets the stiffness, which the point masses then load.
+    const double f1 =
+        fundamental_free_Hz_from_RA(*stiffness.RA, implement.frame_mass_properties().mass_kg);
+    frame.sections = scale_EI_to_fundamental(frame.sections, {}, f1, frame.options);
   }
   return frame;
 }

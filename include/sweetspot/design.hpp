@@ -44,6 +44,11 @@ struct Hand {
 struct FrameStiffness {
   std::optional<double> EI_N_m2;              // [N m^2], > 0
   std::optional<double> fundamental_free_Hz;  // [Hz], > 0
+  // The spec sheet's stiffness rating RA, in [kMinRA, kMaxRA]: the free
+  // fundamental of the frame without its point masses (lead tape added after
+  // the rating) is derived from it and the frame's mass (frame_specs.hpp),
+  // and one scale for every EI solved from that; point masses then lower it.
+  std::optional<double> RA;
   // Timoshenko theory (shear and rotary inertia) when given: a solid
   // rectangle of this shear modulus and size for every section.
   std::optional<double> shear_modulus_Pa;

@@ -19,6 +19,10 @@ struct EvaluateCommand {
   std::string design_path;
   std::string batch_path;
   std::string batch_base;
+  std::string batch_map;   // --map: a JSON file, or COLUMN=field,... inline
+  std::string batch_sort;  // --sort OUTPUT
+  bool batch_descending = false;
+  std::size_t batch_top = 0;
   std::string fidelity = "auto";
   double tolerance = 1e-6;
   int threads = 1;

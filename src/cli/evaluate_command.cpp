@@ -12,6 +12,7 @@
 #include "io/design_reader.hpp"
 #include "io/input_error.hpp"
 #include "io/json_reader.hpp"
+#include "io/outputs.hpp"
 #include "io/parallel.hpp"
 #include "reports/summary.hpp"
 #include "studies/batch.hpp"
@@ -33,6 +34,18 @@ int run_batch(const EvaluateCommand& c) {
     // ... and a value it gets wrong is wrong for every row: said once, at the base's own path.
     io::evaluate_design_file(io::read_design(*options.base, c.batch_base), "", c.tolerance);
   }
+  if (!c.batch_map.empty()) {
+    // COLUMN=field,... inline; anything else is a JSON file holding the map.
+    if (c.batch_map.find('=') != std::string::npos) {
+      options.map = io::parse_column_map(c.batch_map, "--map");
+    } else {
+      options.map_source = io::input_name(c.batch_map);
+      options.map = io::column_map_from_json(io::read_json_file(c.batch_map), options.map_source);
+    }
+  }
+  options.sort_output = c.batch_sort;
+  options.descending = c.batch_descending;
+  options.top = c.batch_top;
   options.format = c.out.parsed() == io::Format::kJson ? io::Format::kJson : io::Format::kCsv;
   options.threads = c.threads;
   options.fidelity = c.command->count("--fidelity") ? c.fidelity : std::string();
@@ -87,6 +100,26 @@ void EvaluateCommand::add_to(CLI::App& app) {
                       "With --batch: a design file giving every row's defaults");
   command->add_option("--threads", threads, "With --batch: threads to use (default: all cores)")
       ->check(whole_in(1, 1024));
+  command->add_option("--map", batch_map,
+                      "With --batch: the catalogue's own column names mapped onto design fields, "
+                      "as a JSON file ({\"weight\": \"implement.mass_g\"}) or inline "
+                      "(weight=implement.mass_g,flex=frame.RA); the field's suffix is the unit of "
+                      "the column's values. Columns neither mapped nor design fields are passed "
+                      "through to the output");
+  command
+      ->add_option("--sort", batch_sort,
+                   "With --batch: order the rows by this output, ascending (failed rows last)")
+      ->check(CLI::Validator(
+          [](std::string& name) -> std::string {
+            if (io::find_output(name)) return "";
+            return "expected an output of evaluate, such as peak_wrist_force_N, got " +
+                   io::one_line(name) +
+                   (name.starts_with("-") ? " (for descending order add --desc)" : "");
+          },
+          "OUTPUT"));
+  command->add_flag("--desc", batch_descending, "With --sort: descending order");
+  command->add_option("--top", batch_top, "With --sort: only the first N rows")
+      ->check(whole_in(1, 1000000000));
   command
       ->add_option(
           "--fidelity", fidelity,
@@ -102,6 +135,15 @@ void EvaluateCommand::add_to(CLI::App& app) {
 }
 
 int EvaluateCommand::run() const {
+  for (const char* option : {"--map", "--sort", "--desc", "--top"}) {
+    if (batch_path.empty() && command->count(option)) {
+      throw CLI::ValidationError(std::string(option) + ": only with --batch FILE");
+    }
+  }
+  if (batch_sort.empty() && (command->count("--desc") || command->count("--top"))) {
+    throw CLI::ValidationError(std::string(command->count("--top") ? "--top" : "--desc") +
+                               ": only with --sort OUTPUT (the order to take the rows in)");
+  }
   if (!batch_path.empty()) {
     if (!design_path.empty()) throw CLI::ValidationError("give a design file or --batch, not both");
     return run_batch(*this);

@@ -287,6 +287,12 @@ DesignFile read_design_impl(const Json& document, const std::string& source, boo
     if (design.stiffness.EI_N_m2 && design.stiffness.fundamental_free_Hz) {
       r.fail("fundamental_free_Hz", "contradicts /frame/EI_N_m2: give the stiffness once");
     }
+    design.stiffness.RA = r.number("RA");
+    if (design.stiffness.RA && (design.stiffness.EI_N_m2 || design.stiffness.fundamental_free_Hz)) {
+      r.fail("RA", std::string("contradicts /frame/") +
+                       (design.stiffness.EI_N_m2 ? "EI_N_m2" : "fundamental_free_Hz") +
+                       ": give the stiffness once (RA derives the free fundamental)");
+    }
     if (const Json* section = r.child("cross_section")) {
       ObjectReader c(*section, "/frame/cross_section", "frame/cross_section", source, keys);
       design.stiffness.shear_modulus_Pa = c.number("shear_modulus_Pa");
@@ -299,7 +305,7 @@ DesignFile read_design_impl(const Json& document, const std::string& source, boo
       design.stiffness.thickness_m = *thickness;
       c.finish({"shear_modulus_Pa", "width_m", "thickness_m"});
     }
-    r.finish({"cor", "cor_rigid", "EI_N_m2", "fundamental_free_Hz", "cross_section"});
+    r.finish({"cor", "cor_rigid", "EI_N_m2", "fundamental_free_Hz", "RA", "cross_section"});
   }
 
   std::optional<double> head_area_m2;
@@ -524,6 +530,7 @@ Json design_to_json(const DesignFile& file) {
   if (d.stiffness.EI_N_m2) j["frame"]["EI_N_m2"] = *d.stiffness.EI_N_m2;
   if (d.stiffness.fundamental_free_Hz)
     j["frame"]["fundamental_free_Hz"] = *d.stiffness.fundamental_free_Hz;
+  if (d.stiffness.RA) j["frame"]["RA"] = *d.stiffness.RA;
   if (d.stiffness.shear_modulus_Pa) {
     j["frame"]["cross_section"] = {{"shear_modulus_Pa", *d.stiffness.shear_modulus_Pa},
                                    {"width_m", d.stiffness.width_m},

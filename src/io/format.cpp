@@ -74,6 +74,17 @@ Json inputs_json(const DesignFile& file, const Evaluation& e) {
   inputs["ball/mass_kg"] = input("ball/mass_kg", d.ball.mass_kg, "kg");
   inputs["ball/speed_m_s"] = input("ball/speed_m_s", d.ball.speed_m_s, "m/s");
   inputs["impact/from_butt_m"] = input("impact/from_butt_m", d.impact_from_butt_m, "m");
+  if (d.stiffness.RA) inputs["frame/RA"] = input("frame/RA", *d.stiffness.RA, "");
+  // An input the file gave in another unit is echoed as given too
+  // ("strings/tension_N" given as {"/strings/tension_lb": 52}).
+  for (auto& [name, value] : inputs.items()) {
+    const auto origin = file.keys.find(name);
+    if (!value.is_object() || origin == file.keys.end()) continue;
+    const std::string& pointer = origin->second.pointer;
+    if (pointer.substr(pointer.rfind('/') + 1) == name.substr(name.rfind('/') + 1)) continue;
+    const Json given = Json::parse(origin->second.given, nullptr, false);
+    if (given.is_number()) value["given"] = Json{{pointer, given}};
+  }
   return inputs;
 }
 

@@ -351,10 +351,10 @@ std::vector<std::string> alternative_spellings(std::string_view key) {
   static const std::vector<std::vector<std::string>> kForms{
       {"balance_from_butt_m", "balance_cm", "balance_pts_hl"},
       {"from_tip", "from_butt"},
-      {"mass", "equivalent_mass"},     // the forearm: M_F or M_e
-      {"EI", "fundamental_free"},      // the frame's stiffness
-      {"cor", "cor_rigid"},            // the frame's COR, or the one it is derived from
-      {"impact_duration", "tension"},  // the strings' duration, or the tension it is derived from
+      {"mass", "equivalent_mass"},       // the forearm: M_F or M_e
+      {"EI", "fundamental_free", "RA"},  // the frame's stiffness
+      {"cor", "cor_rigid"},              // the frame's COR, or the one it is derived from
+      {"impact_duration", "tension"},    // the strings' duration, or the tension it is derived from
   };
   constexpr Dimension kDimensions[] = {
       Dimension::kLength,    Dimension::kMass,    Dimension::kTime,
@@ -375,14 +375,20 @@ std::vector<std::string> alternative_spellings(std::string_view key) {
       add_all_units(base);
       for (const auto& form : kForms) {
         if (std::find(form.begin(), form.end(), base) == form.end()) continue;
-        for (const std::string& other : form) add_all_units(other);
+        for (const std::string& other : form) {
+          add_all_units(other);
+          if (other == "RA" && std::find(out.begin(), out.end(), other) == out.end())
+            out.push_back(other);  // a number without a unit
+        }
       }
     }
   }
   for (const auto& form : kForms) {
     if (std::find(form.begin(), form.end(), std::string(key)) == form.end()) continue;
     for (const std::string& other : form) {
-      if (other != key) out.push_back(other);
+      if (other == key) continue;
+      out.push_back(other);
+      if (key == "RA") add_all_units(other);  // EI_N_m2, fundamental_free_Hz
     }
   }
   return out;

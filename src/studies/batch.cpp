@@ -270,6 +270,16 @@ bool is_text_field(std::string_view field) {
   return field == "name" || field == "description" || field == "fidelity";
 }
 
+// The parts of a design a column may name directly when a map is given.
+bool names_design_part(std::string_view field) {
+  constexpr std::string_view kParts[] = {"implement", "frame", "strings", "hand",
+                                         "forearm",   "ball",  "impact"};
+  const std::string_view part = field.substr(0, field.find('.'));
+  return is_text_field(field) ||
+         (part.size() < field.size() &&
+          std::find(std::begin(kParts), std::end(kParts), part) != std::end(kParts));
+}
+
 // Why `field` cannot name a design field, "" when it can: dot-separated
 // names of ASCII letters, digits and '_', an all-digit name an array index.
 std::string field_problem(std::string_view field) {
@@ -296,9 +306,24 @@ std::string field_problem(std::string_view field) {
   }
 }
 
-// The header, checked once: every column a design field, none given twice,
-// in two units or forms, or inside another.
-std::vector<std::string> read_header(std::string_view line, const std::string& where) {
+// A column that sets a design field.
+struct DesignColumn {
+  std::size_t cell = 0;  // its index among the record's fields
+  std::string field;     // "implement.mass_g"
+  std::string label;     // for messages: "column 7 'weight' (mapped to implement.mass_g)"
+};
+
+struct Header {
+  std::size_t count = 0;             // fields in every record
+  std::vector<DesignColumn> design;  // the columns that set design fields
+  std::vector<std::size_t> passed;   // the columns passed through, in order
+  std::vector<std::string> names;    // every column's name as the file gives it
+};
+
+// The header, checked once: every column a design field (or, with a map,
+// mapped onto one or passed through), none given twice, in two units or
+// forms, or inside another; every column of the map in the header.
+Header read_header(std::string_view line, const std::string& where, const BatchOptions& options) {
   CsvRecord record = split_csv(line, kMaxBatchColumns);
   if (!record.error.empty()) throw InputError(where, "", "the header is not CSV: " + record.error);
   if (record.count > kMaxBatchColumns) {
@@ -306,44 +331,79 @@ std::vector<std::string> read_header(std::string_view line, const std::string& w
         where, "",
         fmt::format("{} columns, more than the limit of {}", record.count, kMaxBatchColumns));
   }
-  std::vector<std::string> header;
-  std::map<std::string, std::size_t> column_of;  // pointer -> column index
-  for (std::size_t k = 0; k < record.fields.size(); ++k) {
-    std::string field(trimmed(record.fields[k]));
-    const std::string column = fmt::format("column {} {}", k + 1, shown(field));
+  Header header;
+  header.count = record.count;
+  for (const std::string& field : record.fields) header.names.emplace_back(trimmed(field));
+  const bool mapped = !options.map.empty();
+  std::map<std::string, std::string> target_of;  // column name -> design field
+  for (const auto& [column, field] : options.map) {
+    const auto first = std::find(header.names.begin(), header.names.end(), column);
+    if (first == header.names.end()) {
+      std::string columns;
+      for (std::size_t k = 0; k < header.names.size() && k < 12; ++k)
+        columns += (k ? ", " : "") + shown(header.names[k]);
+      if (header.names.size() > 12) columns += ", ...";
+      throw InputError(options.map_source, "",
+                       fmt::format("column {}: not in the header of {} (expected one of {})",
+                                   shown(column), where, columns));
+    }
+    if (std::find(first + 1, header.names.end(), column) != header.names.end()) {
+      throw InputError(
+          options.map_source, "",
+          fmt::format("column {}: the header of {} has it twice (columns {} and {}), "
+                      "expected a column name given once",
+                      shown(column), where, first - header.names.begin() + 1,
+                      std::find(first + 1, header.names.end(), column) - header.names.begin() + 1));
+    }
+    target_of.emplace(column, field);
+  }
+  std::map<std::string, std::size_t> column_of;  // pointer -> index in header.design
+  for (std::size_t k = 0; k < header.names.size(); ++k) {
+    const std::string& name = header.names[k];
+    const auto target = target_of.find(name);
+    if (mapped && target == target_of.end() && !names_design_part(name)) {
+      header.passed.push_back(k);
+      continue;
+    }
+    const std::string& field = target == target_of.end() ? name : target->second;
+    std::string label = fmt::format("column {} {}", k + 1, shown(name));
+    if (target != target_of.end()) label += " (mapped to " + shown(field) + ")";
     if (const std::string problem = field_problem(field); !problem.empty()) {
-      throw InputError(where, "", column + ": " + problem);
+      if (target != target_of.end()) {
+        throw InputError(
+            options.map_source, "",
+            fmt::format("column {}: the field {}: {}", shown(name), shown(field), problem));
+      }
+      throw InputError(where, "", label + ": " + problem);
     }
     const std::string pointer = field_to_pointer(field);
-    const auto [same, inserted] = column_of.emplace(pointer, k);
+    const auto [same, inserted] = column_of.emplace(pointer, header.design.size());
     if (!inserted) {
       throw InputError(where, "",
-                       fmt::format("{}: repeats column {} (each field may be given once)", column,
-                                   same->second + 1));
+                       fmt::format("{}: repeats {} (each field may be given once)", label,
+                                   header.design[same->second].label));
     }
-    header.push_back(std::move(field));
+    header.design.push_back(DesignColumn{k, field, std::move(label)});
   }
-  for (const auto& [pointer, k] : column_of) {
-    const std::string column = fmt::format("column {} {}", k + 1, shown(header[k]));
+  for (const auto& [pointer, j] : column_of) {
+    const std::string& label = header.design[j].label;
     const std::size_t slash = pointer.rfind('/');
     const std::string parent = pointer.substr(0, slash);
     for (std::size_t at = parent.size(); at > 0; at = parent.rfind('/', at - 1)) {
       const auto outer = column_of.find(parent.substr(0, at));
       if (outer != column_of.end()) {
-        throw InputError(
-            where, "",
-            fmt::format("{}: lies inside column {} {} (give the field or what it holds)", column,
-                        outer->second + 1, shown(header[outer->second])));
+        throw InputError(where, "",
+                         fmt::format("{}: lies inside {} (give the field or what it holds)", label,
+                                     header.design[outer->second].label));
       }
       if (at == 0) break;
     }
     for (const std::string& other : alternative_spellings(pointer.substr(slash + 1))) {
       const auto contradicted = column_of.find(parent + "/" + other);
-      if (contradicted != column_of.end() && contradicted->second < k) {
-        throw InputError(
-            where, "",
-            fmt::format("{}: contradicts column {} {}: give the quantity once, in one unit", column,
-                        contradicted->second + 1, shown(header[contradicted->second])));
+      if (contradicted != column_of.end() && contradicted->second < j) {
+        throw InputError(where, "",
+                         fmt::format("{}: contradicts {}: give the quantity once, in one unit",
+                                     label, header.design[contradicted->second].label));
       }
     }
   }
@@ -355,11 +415,15 @@ struct Row {
   std::string text;
   std::string name;
   std::optional<Evaluation> evaluation;
+  std::optional<DesignFile> file;  // the design as read, for complete JSON rows
   std::string error;
-  // A column (from 1) the header names wrongly, found by this row: the
-  // design has no such field, or the base holds a value where it leads.
+  // A design column (from 1) the header names wrongly, found by this row:
+  // the design has no such field, or the base holds a value where it leads.
   std::size_t bad_column = 0;
   std::string bad_column_detail;
+  std::vector<std::string> passed;  // the cells passed through
+  std::optional<double> key;        // the sort output's value
+  std::string out;                  // the row's text, when sorted
 };
 
 // A CSV row's design compiled once per thread for each set of filled cells
@@ -377,30 +441,37 @@ struct Shape {
 };
 // Rows of a shape tried as its template before the shape is left to the JSON path.
 constexpr int kTemplateAttempts = 4;
-// A row's shape is a bit per column.
+// A row's shape is a bit per design column.
 constexpr std::size_t kMaxCompiledColumns = 64;
 
 class Evaluator {
  public:
-  Evaluator(const std::string& source, const BatchOptions& options, bool csv,
-            std::vector<std::string> header)
+  Evaluator(const std::string& source, const BatchOptions& options, bool csv, Header header)
       : source_(source),
         options_(options),
         csv_(csv),
         header_(std::move(header)),
         shapes_(static_cast<std::size_t>(std::max(1, options.threads))) {
-    for (const std::string& field : header_) {
-      pointers_.push_back(field_to_pointer(field));
+    for (const DesignColumn& column : header_.design) {
+      pointers_.push_back(field_to_pointer(column.field));
       columns_.emplace_back(pointers_.back());  // read_header checked the path
     }
   }
 
-  const std::vector<std::string>& header() const { return header_; }
+  const Header& header() const { return header_; }
 
-  // Evaluates a row on thread `thread` (< options.threads).
+  // Evaluates a row on thread `thread` (< options.threads). JSON output
+  // takes the JSON path, which keeps the design as read (its inputs and
+  // their provenance).
   void evaluate_row(Row& row, std::size_t thread) const {
-    if (options_.compiled && csv_ && header_.size() <= kMaxCompiledColumns &&
-        evaluate_compiled(row, thread)) {
+    if (csv_ && !header_.passed.empty()) {
+      const CsvRecord record = split_csv(row.text, header_.count);
+      if (record.error.empty() && record.count == header_.count) {
+        for (const std::size_t k : header_.passed) row.passed.push_back(record.fields[k]);
+      }
+    }
+    if (options_.compiled && csv_ && options_.format != Format::kJson &&
+        header_.design.size() <= kMaxCompiledColumns && evaluate_compiled(row, thread)) {
       return;
     }
     evaluate_general(row);
@@ -410,23 +481,25 @@ class Evaluator {
   // The row set on its shape's compiled design; false (and the row as it
   // was) when the JSON path must read it.
   bool evaluate_compiled(Row& row, std::size_t thread) const {
-    const CsvRecord record = split_csv(row.text, header_.size());
-    if (!record.error.empty() || record.count != header_.size()) return false;
+    const CsvRecord record = split_csv(row.text, header_.count);
+    if (!record.error.empty() || record.count != header_.count) return false;
     const std::vector<std::string>& cells = record.fields;
     std::uint64_t mask = 0;
-    std::size_t name_cell = cells.size();
+    const std::string* name_cell = nullptr;
     std::array<double, kMaxCompiledColumns> values{};
     std::size_t count = 0;
-    for (std::size_t k = 0; k < cells.size(); ++k) {
-      if (cells[k].empty()) continue;
-      mask |= std::uint64_t{1} << k;
-      if (header_[k] == "name") {
-        name_cell = k;
+    for (std::size_t j = 0; j < header_.design.size(); ++j) {
+      const DesignColumn& column = header_.design[j];
+      const std::string& cell = cells[column.cell];
+      if (cell.empty()) continue;
+      mask |= std::uint64_t{1} << j;
+      if (column.field == "name") {
+        name_cell = &cell;
         continue;
       }
-      if (is_text_field(header_[k])) return false;
-      const char* end = cells[k].data() + cells[k].size();
-      const auto [stop, error] = std::from_chars(cells[k].data(), end, values[count]);
+      if (is_text_field(column.field)) return false;
+      const char* end = cell.data() + cell.size();
+      const auto [stop, error] = std::from_chars(cell.data(), end, values[count]);
       if (error != std::errc() || stop != end) return false;
       ++count;
     }
@@ -443,9 +516,9 @@ class Evaluator {
       row.evaluation.reset();
       return false;
     }
-    row.name = name_cell < cells.size() ? cells[name_cell]
-               : shape.name             ? *shape.name
-                                        : fmt::format("{}:{}", source_, row.line);
+    row.name = name_cell    ? *name_cell
+               : shape.name ? *shape.name
+                            : fmt::format("{}:{}", source_, row.line);
     return true;
   }
 
@@ -459,15 +532,16 @@ class Evaluator {
       Json document = options_.base ? *options_.base : Json::object();
       std::vector<std::string> pointers;
       bool named = false;
-      for (std::size_t k = 0; k < cells.size(); ++k) {
-        if (cells[k].empty()) continue;
-        if (header_[k] == "name") {
-          document["name"] = cells[k];
+      for (std::size_t j = 0; j < header_.design.size(); ++j) {
+        const std::string& cell = cells[header_.design[j].cell];
+        if (cell.empty()) continue;
+        if (header_.design[j].field == "name") {
+          document["name"] = cell;
           named = true;
           continue;
         }
-        columns_[k].apply(document, values[pointers.size()]);
-        pointers.push_back(pointers_[k]);
+        columns_[j].apply(document, values[pointers.size()]);
+        pointers.push_back(pointers_[j]);
       }
       const std::string where = fmt::format("{}:{}", source_, line);
       auto compiled = CompiledDesign::compile(describe_design(document, where), pointers);
@@ -488,47 +562,69 @@ class Evaluator {
     }
   }
 
+  // A cell's problem in a row's error: the column is named when it is not
+  // the field itself (a mapped column).
+  std::string cell_problem(std::size_t j, const std::string& what) const {
+    const DesignColumn& column = header_.design[j];
+    if (header_.names[column.cell] == column.field) return what;
+    return fmt::format("column {}: {}", shown_cell(header_.names[column.cell]), what);
+  }
+
   // The JSON path: the row written over the base document and read again.
   void evaluate_general(Row& row) const {
     const std::string where = fmt::format("{}:{}", source_, row.line);
     try {
       Json document = options_.base ? *options_.base : Json::object();
       if (csv_) {
-        const CsvRecord cells = split_csv(row.text, header_.size());
+        const CsvRecord cells = split_csv(row.text, header_.count);
         if (!cells.error.empty()) throw InputError(where, "", "not CSV: " + cells.error);
-        if (cells.count != header_.size()) {
+        if (cells.count != header_.count) {
           throw InputError(where, "",
-                           fmt::format("expected {} fields as in the header, got {}",
-                                       header_.size(), cells.count));
+                           fmt::format("expected {} fields as in the header, got {}", header_.count,
+                                       cells.count));
         }
-        for (std::size_t k = 0; k < header_.size(); ++k) {
-          if (cells.fields[k].empty()) continue;  // the base's value stands
-          if (is_text_field(header_[k])) {
-            document[header_[k]] = cells.fields[k];
+        for (const DesignColumn& column : header_.design) {
+          // A row that fails still shows its own name.
+          if (column.field == "name") row.name = cells.fields[column.cell];
+        }
+        for (std::size_t j = 0; j < header_.design.size(); ++j) {
+          const DesignColumn& column = header_.design[j];
+          const std::string& text = cells.fields[column.cell];
+          if (text.empty()) continue;  // the base's value stands
+          if (is_text_field(column.field)) {
+            document[column.field] = text;
             continue;
           }
-          const std::string_view cell = trimmed(cells.fields[k]);
+          const std::string_view cell = trimmed(text);
           double value = 0.0;
           const auto [end, error] = std::from_chars(cell.data(), cell.data() + cell.size(), value);
           if (error != std::errc() || end != cell.data() + cell.size() || cell.empty()) {
-            throw InputError(where, pointers_[k],
-                             "expected a number, got " + shown_cell(cells.fields[k]));
+            throw InputError(where, pointers_[j],
+                             cell_problem(j, "expected a number, got " + shown_cell(text)));
           }
           if (!std::isfinite(value)) {
-            throw InputError(where, pointers_[k],
-                             "expected a finite number, got " + shown_cell(cells.fields[k]));
+            throw InputError(where, pointers_[j],
+                             cell_problem(j, "expected a finite number, got " + shown_cell(text)));
           }
           try {
-            columns_[k].apply(document, value);
+            columns_[j].apply(document, value);
           } catch (const Json::exception&) {
-            row.bad_column = k + 1;
+            row.bad_column = j + 1;
             row.bad_column_detail =
                 "the base design holds a value on its path that is not an object";
-            throw InputError(where, pointers_[k], row.bad_column_detail);
+            throw InputError(where, pointers_[j], row.bad_column_detail);
           }
         }
       } else {
         override_fields(document, parse_json(row.text, where));
+      }
+      if (options_.format == Format::kJson) {
+        // The design with its inputs' provenance, for a row as complete as `evaluate`'s.
+        DesignFile design = read_design(document, where);
+        row.name = design.name;
+        row.evaluation = evaluate_design_file(design, options_.fidelity, options_.modal_tolerance);
+        row.file = std::move(design);
+        return;
       }
       const DesignFile design = read_design_lean(document, where);
       row.name = design.name;
@@ -541,22 +637,34 @@ class Evaluator {
         rethrow_in(read_design(document, where), e);  // with the key map, to name the user's key
       }
     } catch (const InputError& e) {
+      row.evaluation.reset();
+      row.file.reset();
       row.error = e.what();
+      for (std::size_t j = 0; csv_ && j < pointers_.size(); ++j) {
+        // A value the model refuses at a mapped column's field names the column too.
+        const DesignColumn& column = header_.design[j];
+        if (pointers_[j] == e.pointer() && header_.names[column.cell] != column.field &&
+            !e.detail().starts_with("column ")) {
+          row.error = InputError(e.source(), e.pointer(), cell_problem(j, e.detail())).what();
+        }
+      }
       const bool shape_fault = e.detail().starts_with("unknown key") ||
                                e.detail().starts_with("expected a JSON object") ||
                                e.detail().starts_with("expected an array");
       if (csv_ && !row.bad_column && shape_fault) {
         // A field the design does not have, or a number where the design has
         // an object or a list, is the header's fault, not the row's.
-        for (std::size_t k = 0; k < pointers_.size(); ++k) {
-          if (pointers_[k] == e.pointer() || pointers_[k].starts_with(e.pointer() + "/")) {
-            row.bad_column = k + 1;
+        for (std::size_t j = 0; j < pointers_.size(); ++j) {
+          if (pointers_[j] == e.pointer() || pointers_[j].starts_with(e.pointer() + "/")) {
+            row.bad_column = j + 1;
             row.bad_column_detail = e.detail();
             break;
           }
         }
       }
     } catch (const std::exception& e) {
+      row.evaluation.reset();
+      row.file.reset();
       row.error = InputError(where, "", e.what()).what();
     }
   }
@@ -564,23 +672,26 @@ class Evaluator {
   const std::string& source_;
   const BatchOptions& options_;
   bool csv_;
-  std::vector<std::string> header_;
+  Header header_;
   std::vector<std::string> pointers_;
   std::vector<FieldOverride> columns_;
   mutable std::vector<std::map<std::uint64_t, Shape>> shapes_;  // per thread
 };
 
-void write_row(const Row& row, Format format, std::string& out) {
+void write_row(const Row& row, const Header& header, Format format, std::string& out) {
   if (format == Format::kJson) {
-    Json j{{"line", row.line}};
-    if (row.evaluation) {
-      j["name"] = row.name;
-      for (const OutputSpec& o : output_specs()) {
-        const auto value = o.value(*row.evaluation);
-        j["outputs"][std::string(o.name)] = value ? Json(*value) : Json(nullptr);
-      }
-    } else {
+    Json j =
+        row.evaluation && row.file ? evaluation_json(*row.file, *row.evaluation) : Json::object();
+    j["line"] = row.line;
+    if (!row.evaluation) {
       j["error"] = row.error;
+      if (!row.name.empty()) j["name"] = row.name;
+    }
+    if (!header.passed.empty() && !row.passed.empty()) {
+      Json& columns = j["columns"];
+      columns = Json::object();
+      for (std::size_t i = 0; i < header.passed.size(); ++i)
+        columns[header.names[header.passed[i]]] = row.passed[i];
     }
     out += j.dump(-1, ' ', false, Json::error_handler_t::replace);
     out += "\n";
@@ -589,6 +700,10 @@ void write_row(const Row& row, Format format, std::string& out) {
   out += std::to_string(row.line);
   out += ",";
   out += csv_field(one_line(row.name));  // a row is one line of the table
+  for (std::size_t i = 0; i < header.passed.size(); ++i) {
+    out += ',';
+    if (i < row.passed.size()) out += csv_field(one_line(row.passed[i]));
+  }
   for (const OutputSpec& o : output_specs()) {
     const auto value = row.evaluation ? o.value(*row.evaluation) : std::nullopt;
     out += ',';
@@ -599,12 +714,83 @@ void write_row(const Row& row, Format format, std::string& out) {
   out += '\n';
 }
 
+// Rows kept for sorting: the best first (by key, in the asked direction),
+// rows without a key last, each group in input order.
+struct SortedRow {
+  std::optional<double> key;
+  std::size_t line = 0;
+  std::string text;
+};
+
+void order_rows(std::vector<SortedRow>& rows, bool descending) {
+  std::stable_sort(rows.begin(), rows.end(), [descending](const SortedRow& a, const SortedRow& b) {
+    if (a.key.has_value() != b.key.has_value()) return a.key.has_value();
+    if (!a.key) return false;
+    return descending ? *a.key > *b.key : *a.key < *b.key;
+  });
+}
+
 }  // namespace
 
 std::string field_to_pointer(const std::string& field) {
   std::string pointer = "/";
   for (const char c : field) pointer += c == '.' ? '/' : c;
   return pointer;
+}
+
+std::vector<std::pair<std::string, std::string>> parse_column_map(std::string_view text,
+                                                                  const std::string& source) {
+  std::vector<std::pair<std::string, std::string>> map;
+  std::size_t start = 0;
+  for (std::size_t item = 1;; ++item) {
+    const std::size_t comma = std::min(text.find(',', start), text.size());
+    const std::string_view entry = trimmed(text.substr(start, comma - start));
+    const std::size_t equals = entry.find('=');
+    if (equals == std::string_view::npos) {
+      throw InputError(source, "",
+                       fmt::format("item {} {}: expected COLUMN=design.field, such as "
+                                   "weight=implement.mass_g",
+                                   item, shown(entry)));
+    }
+    std::string column(trimmed(entry.substr(0, equals)));
+    std::string field(trimmed(entry.substr(equals + 1)));
+    if (column.empty() || field.empty()) {
+      throw InputError(source, "",
+                       fmt::format("item {} {}: expected a column name and a design field on "
+                                   "either side of '=', such as weight=implement.mass_g",
+                                   item, shown(entry)));
+    }
+    for (const auto& [other, _] : map) {
+      if (other == column) {
+        throw InputError(
+            source, "",
+            fmt::format("column {}: mapped twice (expected each column once)", shown(column)));
+      }
+    }
+    map.emplace_back(std::move(column), std::move(field));
+    if (comma == text.size()) return map;
+    start = comma + 1;
+  }
+}
+
+std::vector<std::pair<std::string, std::string>> column_map_from_json(const Json& json,
+                                                                      const std::string& source) {
+  if (!json.is_object() || json.empty()) {
+    throw InputError(source, "",
+                     "expected a JSON object from the catalogue's column names to design fields, "
+                     "such as {\"weight\": \"implement.mass_g\"}, got " +
+                         brief(json));
+  }
+  std::vector<std::pair<std::string, std::string>> map;
+  for (const auto& [column, field] : json.items()) {
+    if (!field.is_string()) {
+      throw InputError(
+          source, (Json::json_pointer() / column).to_string(),
+          "expected a design field as text, such as \"implement.mass_g\", got " + brief(field));
+    }
+    map.emplace_back(column, field.get<std::string>());
+  }
+  return map;
 }
 
 BatchSummary run_batch(std::istream& in, const std::string& source, const BatchOptions& options,
@@ -621,7 +807,7 @@ BatchSummary run_batch(std::istream& in, const std::string& source, const BatchO
   }
   bool csv = options.input == CatalogueFormat::kCsv;
   if (options.input == CatalogueFormat::kAuto) csv = have_line && !trimmed(line).starts_with('{');
-  std::vector<std::string> header;
+  Header header;
   const std::string header_at = fmt::format("{}:{}", source, reader.line_number());
   // A catalogue with no row at all is a mistake (the wrong file, an empty
   // pipe), not a catalogue of nothing.
@@ -630,39 +816,75 @@ BatchSummary run_batch(std::istream& in, const std::string& source, const BatchO
                      csv ? "the file is empty, expected a CSV header"
                          : "the file is empty, expected one design per line (JSON Lines)");
   }
+  if (!csv && !options.map.empty()) {
+    throw InputError(options.map_source, "",
+                     "a column map is for a CSV catalogue, and " + source +
+                         " is JSON Lines (expected its rows to name design fields themselves)");
+  }
+  const OutputSpec* sort_by = nullptr;
+  if (!options.sort_output.empty()) {
+    sort_by = find_output(options.sort_output);
+    if (!sort_by) throw std::invalid_argument("sort_output: no output " + options.sort_output);
+  }
   if (csv) {
     complete_record(reader, line);
-    header = read_header(line, header_at);
+    header = read_header(line, header_at, options);
   }
   if (options.format == Format::kCsv) {
+    // A column passed through keeps its name, which must not be one of the output's own.
+    std::vector<std::string_view> own{"line", "name", "error"};
+    for (const OutputSpec& o : output_specs()) own.push_back(o.name);
+    for (const std::size_t k : header.passed) {
+      if (std::find(own.begin(), own.end(), header.names[k]) != own.end()) {
+        throw InputError(header_at, "",
+                         fmt::format("column {} {}: passed through, it would repeat the output's "
+                                     "own column {}: map it onto a design field, or rename it",
+                                     k + 1, shown(header.names[k]), shown(header.names[k])));
+      }
+    }
     out << "line,name";
+    for (const std::size_t k : header.passed) out << "," << csv_field(one_line(header.names[k]));
     for (const OutputSpec& o : output_specs()) out << "," << o.name;
     out << ",error\n";
   }
-  const Evaluator evaluator(source, options, csv, header);
+  const Evaluator evaluator(source, options, csv, std::move(header));
   BatchSummary summary;
   std::vector<Row> chunk;
   std::size_t chunk_bytes = 0;
   chunk.reserve(kBatchChunkRows);
   std::vector<std::string> texts(std::max(1, options.threads));
+  std::vector<SortedRow> kept;  // with sort_by
   const auto flush = [&] {
     // Rows are read, evaluated and formatted by the threads, each into its
-    // own block of text; the blocks are written in order.
+    // own block of text (or, sorted, its own row); the blocks are written in order.
     for (std::string& text : texts) text.clear();
     for_blocks(chunk.size(), options.threads, [&](std::size_t t, std::size_t from, std::size_t to) {
       for (std::size_t i = from; i < to; ++i) {
-        evaluator.evaluate_row(chunk[i], t);
-        write_row(chunk[i], options.format, texts[t]);
+        Row& row = chunk[i];
+        evaluator.evaluate_row(row, t);
+        if (sort_by) {
+          if (row.evaluation) row.key = sort_by->value(*row.evaluation);
+          write_row(row, evaluator.header(), options.format, row.out);
+        } else {
+          write_row(row, evaluator.header(), options.format, texts[t]);
+        }
+        row.file.reset();  // written: its memory back before the next chunk
       }
     });
     for (const Row& row : chunk) {
       if (!row.bad_column) continue;
-      const std::size_t k = row.bad_column - 1;
-      throw InputError(header_at, "",
-                       fmt::format("column {} {}: {}", k + 1, shown(evaluator.header()[k]),
-                                   row.bad_column_detail));
+      const DesignColumn& column = evaluator.header().design[row.bad_column - 1];
+      throw InputError(header_at, "", fmt::format("{}: {}", column.label, row.bad_column_detail));
     }
-    for (const std::string& text : texts) out << text;
+    if (sort_by) {
+      for (Row& row : chunk) kept.push_back(SortedRow{row.key, row.line, std::move(row.out)});
+      if (options.top > 0 && kept.size() > 2 * options.top + kBatchChunkRows) {
+        order_rows(kept, options.descending);
+        kept.resize(options.top);
+      }
+    } else {
+      for (const std::string& text : texts) out << text;
+    }
     for (const Row& row : chunk) {
       ++summary.rows;
       if (!row.error.empty()) ++summary.failed;
@@ -679,10 +901,18 @@ BatchSummary run_batch(std::istream& in, const std::string& source, const BatchO
     if (trimmed(line).empty()) continue;
     if (csv) complete_record(reader, line);
     chunk_bytes += line.size();
-    chunk.push_back(Row{line_number, line, {}, std::nullopt, {}, 0, {}});
+    Row row;
+    row.line = line_number;
+    row.text = line;
+    chunk.push_back(std::move(row));
     if (chunk.size() == kBatchChunkRows || chunk_bytes >= kBatchChunkBytes) flush();
   }
   if (!chunk.empty()) flush();
+  if (sort_by) {
+    order_rows(kept, options.descending);
+    if (options.top > 0 && kept.size() > options.top) kept.resize(options.top);
+    for (const SortedRow& row : kept) out << row.text;
+  }
   return summary;
 }
 

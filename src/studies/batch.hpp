@@ -14,6 +14,9 @@
 #include <optional>
 #include <ostream>
 #include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
 
 #include "io/format.hpp"
 #include "io/json_reader.hpp"
@@ -47,7 +50,33 @@ struct BatchOptions {
   // (design_binding.hpp). Off, every row is written into a JSON document and
   // read again: the reference the tests compare the compiled path with.
   bool compiled = true;
+  // A catalogue as it comes (CSV only): its column names mapped onto design
+  // fields ("weight" -> "implement.mass_g"; the field's suffix is the unit of
+  // the column's values), in the order given. With a map, a column neither
+  // mapped nor naming a design field itself (a path under implement, frame,
+  // strings, hand, forearm, ball or impact; name, description, fidelity) is
+  // passed through to the output as it is.
+  std::vector<std::pair<std::string, std::string>> map;
+  std::string map_source = "--map";  // how messages name the map
+  // Rows ordered by this output (a name of outputs.hpp), ascending, or
+  // descending with `descending`; rows without it (failed, or null) last, in
+  // input order. Empty: input order, streamed. Sorting keeps the rows' text
+  // in memory (with `top`, only the best `top` and a chunk).
+  std::string sort_output;
+  bool descending = false;
+  std::size_t top = 0;  // with sort_output: only the first `top` rows (0: all)
 };
+
+// A column map written inline, "weight=implement.mass_g,length=implement.length_in".
+// Throws InputError naming `source` and the item for an item without '=', an
+// empty name or field, or a column mapped twice.
+std::vector<std::pair<std::string, std::string>> parse_column_map(std::string_view text,
+                                                                  const std::string& source);
+
+// A column map from a JSON object {"weight": "implement.mass_g", ...}.
+// Throws InputError naming `source` and the key for anything else.
+std::vector<std::pair<std::string, std::string>> column_map_from_json(const Json& map,
+                                                                      const std::string& source);
 
 struct BatchSummary {
   std::size_t rows = 0;

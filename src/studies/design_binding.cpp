@@ -164,7 +164,10 @@ std::optional<FieldBinding> bind_field(const DesignDescription& d, std::string_v
           [](DesignDescription& x, std::size_t, double v) {
             x.design.stiffness.fundamental_free_Hz = v;
           },
-          design.stiffness.fundamental_free_Hz.has_value()}});
+          design.stiffness.fundamental_free_Hz.has_value()},
+         {"RA", std::nullopt,
+          [](DesignDescription& x, std::size_t, double v) { x.design.stiffness.RA = v; },
+          design.stiffness.RA.has_value()}});
   } else if (t.size() == 3 && t[0] == "frame" && t[1] == "cross_section") {
     const bool has = design.stiffness.shear_modulus_Pa.has_value();
     found = match(

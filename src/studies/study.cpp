@@ -51,7 +51,39 @@ std::vector<double> linspace(double lo, double hi, int points) {
   return values;
 }
 
-StudyVariable read_variable(ObjectReader& r, const Json& design, int grid_points) {
+// A variable may name a quantity in another unit than the design file used
+// (/strings/tension_lb over a design giving tension_N; /impact/from_tip_cm
+// over from_tip_m): the design's value is rewritten in the variable's unit,
+// so the study varies it in the unit it names. Another form of the quantity
+// (from_butt for from_tip) is not converted. False when there is no such value.
+bool respell_in_unit(Json& design, const Json::json_pointer& pointer) {
+  if (pointer.empty() || !design.contains(pointer.parent_pointer())) return false;
+  Json& parent = design.at(pointer.parent_pointer());
+  if (!parent.is_object()) return false;
+  const std::string key = pointer.back();
+  for (const Dimension dimension :
+       {Dimension::kLength, Dimension::kMass, Dimension::kTime, Dimension::kSpeed,
+        Dimension::kInertia, Dimension::kForce, Dimension::kStiffness, Dimension::kDamping,
+        Dimension::kFrequency}) {
+    for (const std::string& spelling : spellings("", dimension)) {
+      if (key.size() <= spelling.size() || !key.ends_with(spelling)) continue;
+      const std::string base = key.substr(0, key.size() - spelling.size());
+      const double to_si = *unit_factor(key, base, dimension);
+      for (const std::string& other : spellings(base, dimension)) {
+        const auto it = parent.find(other);
+        if (other == key || it == parent.end() || !it->is_number()) continue;
+        const double value = it->get<double>() * *unit_factor(other, base, dimension) / to_si;
+        if (!std::isfinite(value)) return false;
+        parent.erase(other);
+        parent[key] = value;
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+StudyVariable read_variable(ObjectReader& r, Json& design, int grid_points) {
   StudyVariable v;
   const auto path = r.string("path");
   if (!path)
@@ -65,6 +97,7 @@ StudyVariable read_variable(ObjectReader& r, const Json& design, int grid_points
   }
   if (v.pointer.rfind("/reference", 0) == 0)
     r.fail("path", "\"" + v.pointer + "\" is a published value, not an input");
+  if (!v.pointer.empty() && !design.contains(pointer)) respell_in_unit(design, pointer);
   if (v.pointer.empty() || !design.contains(pointer)) {
     r.fail("path", "\"" + v.pointer + "\" is not in the design");
   }

@@ -3,7 +3,9 @@
 // limits whatever the input, and a read failure is never the end of the file.
 #include "studies/batch.hpp"
 
+#include <algorithm>
 #include <catch2/catch.hpp>
+#include <fstream>
 #include <sstream>
 #include <stdexcept>
 #include <streambuf>
@@ -11,7 +13,11 @@
 #include <utility>
 #include <vector>
 
+#include "io/design_reader.hpp"
+#include "io/format.hpp"
 #include "io/input_error.hpp"
+#include "io/outputs.hpp"
+#include "sweetspot/frame_specs.hpp"
 
 namespace sweetspot::io {
 namespace {
@@ -278,6 +284,275 @@ TEST_CASE("A row overriding the base with another form of a quantity replaces it
   const BatchSummary summary = run_batch(in, "rows.jsonl", options, out);
   CHECK(summary.failed == 0);
   CHECK_THAT(out.str(), !Catch::Contains("error"));
+}
+
+// A retailer's table as it comes: its own column names, units and columns
+// the design does not use (invented rows in the headers of a real retailer's lab table).
+constexpr const char* kRetailerTable =
+    "pcode,mfg,racquet,headsize,length,weight,balance,swingweight,flex,vibration\n"
+    "A1,Acme,Club 100,100,27.0,300,32.5,318,66,150\n"
+    "B2,Acme,Tour 97,97,27.0,335,31.5,330,62,142\n"
+    "C3,Bolt,Lite 105,105,27.25,275,34.0,300,70,158\n";
+const std::vector<std::pair<std::string, std::string>> kRetailerMap{
+    {"racquet", "name"},
+    {"headsize", "strings.head_size_in2"},
+    {"length", "implement.length_in"},
+    {"weight", "implement.mass_g"},
+    {"balance", "implement.balance_cm"},
+    {"swingweight", "implement.swingweight_kg_cm2"},
+    {"flex", "frame.RA"}};
+constexpr const char* kStrungBase =
+    R"({"implement": {"length_in": 27, "mass_g": 318, "balance_cm": 32.5, "swingweight_kg_cm2": 325},
+        "strings": {"tension_lb": 52}, "impact": {"from_tip_cm": 17}})";
+
+Outcome run_with(const std::string& text, BatchOptions options) {
+  std::istringstream in(text);
+  std::ostringstream out;
+  Outcome outcome;
+  outcome.summary = run_batch(in, "cat.csv", options, out);
+  outcome.out = out.str();
+  return outcome;
+}
+
+BatchOptions mapped(Format format = Format::kJson) {
+  BatchOptions options;
+  options.input = CatalogueFormat::kCsv;
+  options.base = parse_json(kStrungBase, "base.json");
+  options.format = format;
+  options.map = kRetailerMap;
+  return options;
+}
+
+std::string refusal_with(const std::string& text, const BatchOptions& options) {
+  try {
+    run_with(text, options);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+TEST_CASE("A mapped catalogue gives what the same designs written as design files give") {
+  const std::vector<Json> rows = rows_of(run_with(kRetailerTable, mapped()));
+  REQUIRE(rows.size() == 3);
+  // Row 2 by hand, as a design file: the map's targets name the units of the table.
+  Json design = parse_json(kStrungBase, "b2.json");
+  design["name"] = "Tour 97";
+  design["implement"] = {
+      {"length_in", 27.0}, {"mass_g", 335.0}, {"balance_cm", 31.5}, {"swingweight_kg_cm2", 330.0}};
+  design["frame"] = {{"RA", 62.0}};
+  design["strings"]["head_size_in2"] = 97.0;
+  const DesignFile file = read_design(design, "cat.csv:3");
+  const Json single = evaluation_json(file, evaluate_design_file(file, "", 1e-6));
+  Json row = rows[1];
+  CHECK(row["line"] == 3);
+  CHECK(row["columns"] == Json({{"pcode", "B2"}, {"mfg", "Acme"}, {"vibration", "142"}}));
+  // As complete as a single evaluate: fidelity, inputs, outputs, notes, and nothing else differs.
+  row.erase("line");
+  row.erase("columns");
+  CHECK(row == single);
+  CHECK(row["fidelity"] == "modal");
+  CHECK(row["inputs"]["frame/RA"]["value"] == 62.0);
+  CHECK(row["inputs"]["strings/tension_N"]["given"] == Json({{"/strings/tension_lb", 52}}));
+}
+
+TEST_CASE("Unmapped columns pass through to CSV beside the outputs, as they were written") {
+  const Outcome out = run_with(kRetailerTable, mapped(Format::kCsv));
+  CHECK(out.summary.failed == 0);
+  CHECK_THAT(out.out, Catch::StartsWith("line,name,pcode,mfg,vibration,length_m,"));
+  CHECK(out.out.find("\n2,Club 100,A1,Acme,150,0.6858,") != std::string::npos);
+  CHECK(out.out.find("\n4,Lite 105,C3,Bolt,158,") != std::string::npos);
+}
+
+TEST_CASE("An inline map and a JSON map are the same map") {
+  const auto inline_map = parse_column_map(
+      "racquet=name, headsize=strings.head_size_in2,length=implement.length_in,"
+      "weight=implement.mass_g,balance=implement.balance_cm,"
+      "swingweight=implement.swingweight_kg_cm2,flex=frame.RA",
+      "--map");
+  CHECK(inline_map == kRetailerMap);
+  Json json = Json::object();
+  for (const auto& [column, field] : kRetailerMap) json[column] = field;
+  auto from_json = column_map_from_json(json, "map.json");
+  std::sort(from_json.begin(), from_json.end());
+  auto expected = kRetailerMap;
+  std::sort(expected.begin(), expected.end());
+  CHECK(from_json == expected);
+}
+
+TEST_CASE("A bad map is refused once, naming the map, the column and what was expected") {
+  CHECK_THROWS_WITH(parse_column_map("weight=implement.mass_g,weight=implement.mass_kg", "--map"),
+                    "--map: column \"weight\": mapped twice (expected each column once)");
+  CHECK_THROWS_WITH(parse_column_map("weight", "--map"),
+                    Catch::StartsWith("--map: item 1 \"weight\": expected COLUMN=design.field"));
+  CHECK_THROWS_WITH(parse_column_map("weight=implement.mass_g,", "--map"),
+                    Catch::StartsWith("--map: item 2 \"\": expected COLUMN=design.field"));
+  CHECK_THROWS_WITH(parse_column_map("=implement.mass_g", "--map"),
+                    Catch::Contains("expected a column name and a design field"));
+  CHECK_THROWS_WITH(column_map_from_json(Json::array(), "map.json"),
+                    Catch::StartsWith("map.json: expected a JSON object"));
+  CHECK_THROWS_WITH(column_map_from_json(Json::object(), "map.json"),
+                    Catch::StartsWith("map.json: expected a JSON object"));
+  CHECK_THROWS_WITH(column_map_from_json(Json{{"weight", 300}}, "map.json"),
+                    "map.json: /weight: expected a design field as text, such as "
+                    "\"implement.mass_g\", got 300");
+  BatchOptions options = mapped();
+  options.map.emplace_back("wieght", "implement.mass_g");
+  CHECK_THAT(refusal_with(kRetailerTable, options),
+             Catch::StartsWith("--map: column \"wieght\": not in the header of cat.csv:1 "
+                               "(expected one of \"pcode\", \"mfg\""));
+  options = mapped();
+  options.map.emplace_back("vibration", "frame.fundamental_free_Hz");
+  CHECK_THAT(refusal_with(kRetailerTable, options),
+             Catch::StartsWith("cat.csv:1: column 10 \"vibration\" (mapped to "
+                               "\"frame.fundamental_free_Hz\"): contradicts column 9 \"flex\""));
+  options = mapped();
+  options.map.emplace_back("pcode", "implement.mass_kg");
+  CHECK_THAT(refusal_with(kRetailerTable, options),
+             Catch::Contains("contradicts column 1 \"pcode\" (mapped to \"implement.mass_kg\")"));
+  options = mapped();
+  options.map.emplace_back("mfg", "implement.mass g");
+  CHECK_THAT(
+      refusal_with(kRetailerTable, options),
+      Catch::StartsWith("--map: column \"mfg\": the field \"implement.mass g\": a character"));
+  options = mapped();
+  options.map[3].second = "implement.weight_g";  // a field the design does not have
+  CHECK_THAT(refusal_with(kRetailerTable, options),
+             Catch::StartsWith("cat.csv:1: column 6 \"weight\" (mapped to "
+                               "\"implement.weight_g\"): unknown key"));
+  // A map is for CSV: a JSON Lines row names its fields itself.
+  options = mapped();
+  options.input = CatalogueFormat::kJsonLines;
+  CHECK_THAT(refusal_with("{\"name\": \"x\"}\n", options),
+             Catch::StartsWith("--map: a column map is for a CSV catalogue"));
+  // A column passed through may not take an output's own name in CSV.
+  options = mapped(Format::kCsv);
+  options.map = {{"racquet", "name"}};
+  CHECK_THAT(refusal_with("racquet,error\nx,1\n", options),
+             Catch::Contains("column 2 \"error\": passed through, it would repeat the output's"));
+}
+
+TEST_CASE("A cell of a mapped column that is not a number is its row's error, naming the column") {
+  std::string table = kRetailerTable;
+  table += "D4,Bolt,Unlisted,100,27.0,300,32.5,n/a,66,150\n";
+  const Outcome out = run_with(table, mapped());
+  CHECK(out.summary.failed == 1);
+  const std::vector<Json> rows = rows_of(out);
+  CHECK(rows[3]["error"] ==
+        "cat.csv:5: /implement/swingweight_kg_cm2: column 'swingweight': expected a number, got "
+        "'n/a'");
+  CHECK(rows[3]["name"] == "Unlisted");
+  CHECK(rows[3]["columns"]["pcode"] == "D4");
+}
+
+std::vector<double> sorted_values(const Outcome& out, const std::string& output) {
+  std::vector<double> values;
+  for (const Json& row : rows_of(out)) {
+    if (row.contains("outputs")) values.push_back(row["outputs"][output].get<double>());
+  }
+  return values;
+}
+
+TEST_CASE("Sorted rows come in the output's order, failed rows last; --top keeps the first N") {
+  std::string table = "name,implement.mass_g,impact.from_tip_cm\n";
+  for (int i = 0; i < 60; ++i)
+    table += "r" + std::to_string(i) + "," + std::to_string(250 + (i * 37) % 120) + "," +
+             std::to_string(5 + (i * 13) % 25) + "\n";
+  table += "bad,heavy,10\n";
+  BatchOptions options;
+  options.base = parse_json(kBase, "base.json");
+  options.format = Format::kJson;
+  const Outcome plain = run_with(table, options);
+  std::vector<double> expected = sorted_values(plain, "peak_wrist_force_N");
+  std::sort(expected.begin(), expected.end());
+  options.sort_output = "peak_wrist_force_N";
+  const Outcome ascending = run_with(table, options);
+  CHECK(ascending.summary.rows == 61);
+  CHECK(ascending.summary.failed == 1);
+  CHECK(sorted_values(ascending, "peak_wrist_force_N") == expected);
+  CHECK(rows_of(ascending).back()["name"] == "bad");  // failed: last
+  options.descending = true;
+  const Outcome descending = run_with(table, options);
+  std::reverse(expected.begin(), expected.end());
+  CHECK(sorted_values(descending, "peak_wrist_force_N") == expected);
+  CHECK(rows_of(descending).back()["name"] == "bad");
+  options.top = 5;
+  const Outcome top = run_with(table, options);
+  CHECK(rows_of(top).size() == 5);
+  CHECK(sorted_values(top, "peak_wrist_force_N") ==
+        std::vector<double>(expected.begin(), expected.begin() + 5));
+  CHECK(top.summary.rows == 61);  // every row was evaluated, and counted
+}
+
+TEST_CASE("The top N over more rows than a chunk are the first N of sorting them all") {
+  std::string table = "name,implement.mass_g\n";
+  const int rows = static_cast<int>(kBatchChunkRows) * 2 + 77;
+  for (int i = 0; i < rows; ++i)
+    table += "r" + std::to_string(i) + "," + std::to_string(200 + (i * 7919) % 2000 * 0.1) + "\n";
+  BatchOptions options;
+  options.base = parse_json(kBase, "base.json");
+  options.format = Format::kCsv;
+  options.sort_output = "swingweight_kg_cm2";
+  options.threads = 2;
+  const std::string all = run_with(table, options).out;
+  options.top = 3;
+  const std::string top = run_with(table, options).out;
+  // The header and the first three rows of the full sort.
+  std::size_t end = 0;
+  for (int i = 0; i < 4; ++i) end = all.find('\n', end) + 1;
+  CHECK(top == all.substr(0, end));
+}
+
+TEST_CASE("A tension column in lb or kg gives the tension in N it converts to") {
+  BatchOptions options;
+  options.base = parse_json(kBase, "base.json");
+  options.format = Format::kJson;
+  // 50 lb is 222.41108076 N and 22.6796185 kgf.
+  std::vector<Json> rows;
+  for (const char* table : {"strings.tension_N\n222.41108076302\n", "strings.tension_lb\n50\n",
+                            "strings.tension_kg\n22.6796185\n"}) {
+    const Outcome out = run_with(table, options);
+    REQUIRE(out.summary.failed == 0);
+    rows.push_back(rows_of(out).at(0));
+  }
+  const double duration = rows[0]["outputs"]["impact_duration_s"];
+  CHECK(rows[1]["outputs"]["impact_duration_s"].get<double>() == Approx(duration).epsilon(1e-9));
+  CHECK(rows[2]["outputs"]["impact_duration_s"].get<double>() == Approx(duration).epsilon(1e-9));
+  CHECK(rows[1]["inputs"]["strings/tension_N"]["given"] == Json({{"/strings/tension_lb", 50}}));
+}
+
+TEST_CASE(
+    "The shipped catalogue, map and base of the README evaluate every row but the one with n/a") {
+  const std::string dir = std::string(SWEETSPOT_SOURCE_DIR) + "/designs/catalogues/";
+  BatchOptions options;
+  options.input = CatalogueFormat::kCsv;
+  options.base = read_json_file(dir + "base-52lb.json");
+  options.map = column_map_from_json(read_json_file(dir + "retailer-map.json"), "map");
+  options.format = Format::kJson;
+  options.sort_output = "peak_wrist_force_N";
+  std::ifstream in(dir + "spec-sheets.csv", std::ios::binary);
+  std::ostringstream out;
+  const BatchSummary summary = run_batch(in, "spec-sheets.csv", options, out);
+  CHECK(summary.rows == 6);
+  CHECK(summary.failed == 1);
+  const std::vector<Json> rows = rows_of(Outcome{summary, out.str()});
+  REQUIRE(rows.size() == 6);
+  for (std::size_t i = 0; i + 1 < rows.size(); ++i) {
+    INFO(rows[i]["name"]);
+    CHECK(rows[i]["fidelity"] == "modal");  // the RA column gives the frame's stiffness
+    // Its frequency is the RA relation's for the row's RA and mass (no lead tape).
+    const Json& outputs = rows[i]["outputs"];
+    CHECK(outputs["fundamental_free_Hz"].get<double>() ==
+          Approx(fundamental_free_Hz_from_RA(rows[i]["inputs"]["frame/RA"]["value"].get<double>(),
+                                             outputs["mass_kg"].get<double>()))
+              .epsilon(1e-6));
+    if (i > 0) {
+      CHECK(outputs["peak_wrist_force_N"].get<double>() >=
+            rows[i - 1]["outputs"]["peak_wrist_force_N"].get<double>());
+    }
+  }
+  CHECK(rows.back()["columns"]["pcode"] == "BAD1");
+  CHECK_THAT(rows.back()["error"].get<std::string>(), Catch::Contains("column 'swingweight'"));
 }
 
 }  // namespace

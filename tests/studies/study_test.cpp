@@ -481,5 +481,28 @@ TEST_CASE(
   }
 }
 
+TEST_CASE("A variable in another unit than the design's varies the same quantity in that unit") {
+  // The design gives the tension in N; the study varies it in lb (1 lb = 4.4482216152605 N).
+  const auto study_over = [](const std::string& path) {
+    return read_study(nlohmann::json::parse(R"({"design": {"implement": {"length_m": 0.7,
+        "mass_kg": 0.3, "head_to_handle_mass_ratio": 0.8}, "strings": {"tension_N": 230}},
+        "variables": [{"path": ")" + path + R"(", "min": 1, "max": 500}],
+        "objective": {"output": "peak_wrist_force_N"}})"),
+                      "study.json", studies());
+  };
+  const Study in_lb = study_over("/strings/tension_lb");
+  const Study in_kg = study_over("/strings/tension_kg");
+  const Study in_N = study_over("/strings/tension_N");
+  const auto duration = [](const Study& study, double x) {
+    return evaluate_in(study, design_at(study, std::vector<double>{x})).impact_duration_s;
+  };
+  CHECK(duration(in_lb, 50) == Approx(duration(in_N, 50 * 4.4482216152605)).epsilon(1e-12));
+  CHECK(duration(in_kg, 22) == Approx(duration(in_N, 22 * 9.80665)).epsilon(1e-12));
+  // The start is the design's own tension, in the variable's unit.
+  CHECK(in_lb.design_document["strings"]["tension_lb"].get<double>() ==
+        Approx(230 / 4.4482216152605).epsilon(1e-12));
+  CHECK_FALSE(in_lb.design_document["strings"].contains("tension_N"));
+}
+
 }  // namespace
 }  // namespace sweetspot::io
