@@ -187,6 +187,12 @@ std::string evaluation_report(const DesignFile& file, const Evaluation& e, Forma
     if (!input.is_object()) continue;
     md += fmt::format("- `{}` = {} {} ({})\n", name, significant(input["value"].get<double>()),
                       input["unit"].get<std::string>(), input["provenance"].get<std::string>());
+    if (input.contains("given")) {  // as the file wrote it: "given as `tension_lb` = 52"
+      const auto given = input["given"].begin();
+      const std::string& pointer = given.key();
+      md.insert(md.size() - 2, fmt::format(", as `{}` = {}", pointer.substr(pointer.rfind('/') + 1),
+                                           significant(given.value().get<double>())));
+    }
   }
   return md;
 }

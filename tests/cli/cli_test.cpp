@@ -1169,4 +1169,28 @@ TEST_CASE(
         Approx(j["free"][0]["frequency_Hz"].get<double>()).epsilon(1e-4));
 }
 
+TEST_CASE("The README's catalogue runs as written: mapped, sorted, with a file map or inline") {
+  const Sandbox box;
+  const std::string dir = std::string(SWEETSPOT_SOURCE_DIR) + "/designs/catalogues/";
+  const std::string common = "evaluate --batch \"" + dir + "spec-sheets.csv\" --base \"" + dir +
+                             "base-52lb.json\" --sort peak_wrist_force_N --map ";
+  const Run file = box.run(common + "\"" + dir + "retailer-map.json\"");
+  CHECK(file.status == 1);  // the row with n/a
+  CHECK(file.err == "sweetspot: 1 of 6 rows failed (see their error column)\n");
+  std::istringstream rows(file.out);
+  std::string header, first;
+  std::getline(rows, header);
+  std::getline(rows, first);
+  CHECK(header.rfind("line,name,pcode,mfg,twistweight,vibration,length_m,", 0) == 0);
+  CHECK(first.rfind("2,Coach's 100,CO100,Example,14.0,151,", 0) == 0);
+  const Run inline_map =
+      box.run(common +
+              "racquet=name,headsize=strings.head_size_in2,length=implement.length_in,"
+              "weight=implement.mass_g,balance=implement.balance_cm,"
+              "swingweight=implement.swingweight_kg_cm2,flex=frame.RA");
+  CHECK(inline_map.out == file.out);
+  const Run top = box.run(common + "\"" + dir + "retailer-map.json\" --top 3 --format json");
+  CHECK(std::count(top.out.begin(), top.out.end(), '\n') == 3);
+}
+
 }  // namespace

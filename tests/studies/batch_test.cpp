@@ -555,5 +555,22 @@ TEST_CASE(
   CHECK_THAT(rows.back()["error"].get<std::string>(), Catch::Contains("column 'swingweight'"));
 }
 
+TEST_CASE("A mapped catalogue with an RA column gives the same rows compiled as read as JSON") {
+  const std::string dir = std::string(SWEETSPOT_SOURCE_DIR) + "/designs/catalogues/";
+  const auto run_shipped = [&](bool compiled) {
+    BatchOptions options;
+    options.input = CatalogueFormat::kCsv;
+    options.base = read_json_file(dir + "base-52lb.json");
+    options.map = column_map_from_json(read_json_file(dir + "retailer-map.json"), "map");
+    options.format = Format::kCsv;
+    options.compiled = compiled;
+    std::ifstream in(dir + "spec-sheets.csv", std::ios::binary);
+    std::ostringstream out;
+    run_batch(in, "spec-sheets.csv", options, out);
+    return out.str();
+  };
+  CHECK(run_shipped(true) == run_shipped(false));
+}
+
 }  // namespace
 }  // namespace sweetspot::io
