@@ -520,9 +520,10 @@ Json design_to_json(const DesignFile& file) {
       impl["point_masses"].push_back({{"from_butt_m", p.from_butt_m}, {"mass_kg", p.mass_kg}});
     }
   }
-  j["frame"] = d.cor_rigid   ? Json{{"cor_rigid", *d.cor_rigid}}
-               : d.cor_given ? Json{{"cor", d.cor}}
-                             : Json::object();  // the solved collision derives it
+  // A strung design without a COR has it derived by the solved collision.
+  j["frame"] = d.cor_rigid                 ? Json{{"cor_rigid", *d.cor_rigid}}
+               : d.cor_given || !d.strings ? Json{{"cor", d.cor}}
+                                           : Json::object();
   if (d.stiffness.EI_N_m2) j["frame"]["EI_N_m2"] = *d.stiffness.EI_N_m2;
   if (d.stiffness.fundamental_free_Hz)
     j["frame"]["fundamental_free_Hz"] = *d.stiffness.fundamental_free_Hz;
