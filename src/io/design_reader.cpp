@@ -526,7 +526,10 @@ Json design_to_json(const DesignFile& file) {
       impl["point_masses"].push_back({{"from_butt_m", p.from_butt_m}, {"mass_kg", p.mass_kg}});
     }
   }
-  j["frame"] = d.cor_rigid ? Json{{"cor_rigid", *d.cor_rigid}} : Json{{"cor", d.cor}};
+  // A strung design without a COR has it derived by the solved collision.
+  j["frame"] = d.cor_rigid                 ? Json{{"cor_rigid", *d.cor_rigid}}
+               : d.cor_given || !d.strings ? Json{{"cor", d.cor}}
+                                           : Json::object();
   if (d.stiffness.EI_N_m2) j["frame"]["EI_N_m2"] = *d.stiffness.EI_N_m2;
   if (d.stiffness.fundamental_free_Hz)
     j["frame"]["fundamental_free_Hz"] = *d.stiffness.fundamental_free_Hz;
@@ -545,6 +548,14 @@ Json design_to_json(const DesignFile& file) {
   } else {
     j["strings"] = {{"impact_duration_s", d.impact_duration_s}};
   }
+  // The solved collision's inputs, when not the defaults.
+  if (d.string_bed_mass_kg != kStringBedMass_kg) j["strings"]["bed_mass_kg"] = d.string_bed_mass_kg;
+  if (d.string_bed_damping_ratio != kStringBedDampingRatio)
+    j["strings"]["bed_damping_ratio"] = d.string_bed_damping_ratio;
+  const BallContactLaw& c = d.ball_contact;
+  const BallContactLaw& t = kTennisBallLaw;
+  const bool tennis = c.stiffness == t.stiffness && c.exponent == t.exponent &&
+                      c.damping == t.damping && c.damping_exponent == t.damping_exponent;
   j["hand"] = {{"mass_kg", d.hand.mass_kg},
                {"center_from_butt_m", d.hand.center_from_butt_m},
                {"grip_length_m", d.hand.grip_length_m},
@@ -552,6 +563,12 @@ Json design_to_json(const DesignFile& file) {
                {"grip_damping_N_s_m2", d.hand.grip_damping_N_s_m2}};
   j["forearm"] = {{"equivalent_mass_kg", d.forearm_equivalent_mass_kg}};
   j["ball"] = {{"mass_kg", d.ball.mass_kg}, {"speed_m_s", d.ball.speed_m_s}};
+  if (!tennis) {
+    j["ball"]["contact"] = {{"stiffness", c.stiffness},
+                            {"exponent", c.exponent},
+                            {"damping", c.damping},
+                            {"damping_exponent", c.damping_exponent}};
+  }
   j["impact"] = {{"from_butt_m", d.impact_from_butt_m}};
   return j;
 }

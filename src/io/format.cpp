@@ -63,6 +63,10 @@ Json inputs_json(const DesignFile& file, const Evaluation& e) {
   inputs["frame/cor"] = input("frame/cor", e.cor, "");
   inputs["strings/impact_duration_s"] =
       input("strings/impact_duration_s", e.impact_duration_s, "s");
+  if (e.details && e.details->collision) {
+    inputs["frame/cor"]["provenance"] = "derived from the solved collision (Eq. 16 inverted)";
+    inputs["strings/impact_duration_s"]["provenance"] = "the solved collision's contact time";
+  }
   if (d.cor_rigid) inputs["frame/cor_rigid"] = input("frame/cor_rigid", *d.cor_rigid, "");
   if (d.strings)
     inputs["strings/tension_N"] = input("strings/tension_N", d.strings->tension_N, "N");

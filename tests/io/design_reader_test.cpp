@@ -80,6 +80,24 @@ TEST_CASE("A design written by design_to_json reads back to the same evaluation"
   }
 }
 
+TEST_CASE("A strung design without a COR reads back solving the same collision") {
+  // The solved collision's inputs survive design_to_json: no COR (auto keeps
+  // choosing collision), the string bed's mass and loss, the ball's law.
+  const DesignFile original = read(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25,
+      "head_to_handle_mass_ratio": 0.8}, "frame": {"fundamental_free_Hz": 150},
+      "strings": {"tension_N": 230, "bed_mass_g": 6, "bed_damping_ratio": 0.01},
+      "ball": {"contact": {"stiffness": 3e5, "damping_exponent": 1.0}}})");
+  CHECK(original.design.string_bed_mass_kg == Approx(0.006));
+  CHECK(original.design.ball_contact.exponent == kTennisBallLaw.exponent);
+  CHECK(needed_fidelity(original.design) == Fidelity::kCollision);
+  const DesignFile again = read_design(design_to_json(original), "again.json");
+  REQUIRE(needed_fidelity(again.design) == Fidelity::kCollision);
+  const Evaluation a = evaluate(original.design, Fidelity::kCollision);
+  const Evaluation b = evaluate(again.design, Fidelity::kCollision);
+  CHECK(b.apparent_cor == Approx(a.apparent_cor).epsilon(kRoundOff));
+  CHECK(b.impact_duration_s == Approx(a.impact_duration_s).epsilon(kRoundOff));
+}
+
 TEST_CASE("The three implement forms read from files give the same evaluation") {
   const Evaluation paper = evaluate(read(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25,
       "head_to_handle_mass_ratio": 0.8}})")
