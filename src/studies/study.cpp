@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <limits>
+#include <string>
 
 #include "io/input_error.hpp"
 #include "studies/design_binding.hpp"
@@ -43,12 +45,64 @@ const Json& array_at(ObjectReader& r, std::string_view key, bool required) {
   return *list;
 }
 
+// The grid point as the decimal it stands for: lo + (hi - lo) i / (n - 1) in
+// binary is 0.30000000000000004 for 0.1 + 0.4 * 2 / 4; the nearest double to
+// its 15-digit decimal is taken when it lies within a few rounding errors.
+double decimal_grid_point(double lo, double hi, double x) {
+  const double decimal = std::stod(fmt::format("{:.15g}", x));
+  const double slack = 4 * std::numeric_limits<double>::epsilon() *
+                       std::max({std::fabs(lo), std::fabs(hi), std::fabs(x)});
+  if (std::fabs(decimal - x) <= slack && decimal >= lo && decimal <= hi) return decimal;
+  return x;
+}
+
 std::vector<double> linspace(double lo, double hi, int points) {
   std::vector<double> values(points);
   for (int i = 0; i < points; ++i) {
-    values[i] = points == 1 ? lo : lo + (hi - lo) * static_cast<double>(i) / (points - 1);
+    values[i] =
+        points == 1 || i == 0 ? lo
+        : i == points - 1
+            ? hi
+            : decimal_grid_point(lo, hi, lo + (hi - lo) * static_cast<double>(i) / (points - 1));
   }
   return values;
+}
+
+// A variable's path in another unit of a quantity the design gives
+// ("/impact/from_tip_m" when the file says "from_tip_cm"): the design is
+// rewritten in the path's unit (same value in SI), so the sweep sets the key
+// it names and no contradiction remains.
+void respell_for(Json& design, const std::string& path) {
+  Json::json_pointer pointer;
+  try {
+    pointer = Json::json_pointer(path);
+  } catch (const Json::exception&) {
+    return;  // read_variable() says why
+  }
+  if (path.empty() || design.contains(pointer)) return;
+  const Json::json_pointer parent_pointer = pointer.parent_pointer();
+  if (!design.contains(parent_pointer) || !design.at(parent_pointer).is_object()) return;
+  Json& parent = design.at(parent_pointer);
+  const std::string key = pointer.back();
+  constexpr Dimension kDimensions[] = {
+      Dimension::kLength,    Dimension::kMass,    Dimension::kTime,
+      Dimension::kSpeed,     Dimension::kInertia, Dimension::kForce,
+      Dimension::kStiffness, Dimension::kDamping, Dimension::kFrequency};
+  for (std::size_t cut = key.find('_'); cut != std::string::npos; cut = key.find('_', cut + 1)) {
+    const std::string base = key.substr(0, cut);
+    for (const Dimension d : kDimensions) {
+      const auto to_si = unit_factor(key, base, d);
+      if (!to_si) continue;
+      for (const std::string& other : spellings(base, d)) {
+        const auto it = parent.find(other);
+        if (other == key || it == parent.end() || !it->is_number()) continue;
+        const double si = it->get<double>() * *unit_factor(other, base, d);
+        parent.erase(other);
+        parent[key] = si / *to_si;
+        return;
+      }
+    }
+  }
 }
 
 StudyVariable read_variable(ObjectReader& r, const Json& design, int grid_points) {
@@ -252,6 +306,9 @@ Study read_study(const Json& document, const std::string& source, const std::str
     top.fail("variables", "at most 64 variables, got " + std::to_string(variables.size()));
   for (std::size_t i = 0; i < variables.size(); ++i) {
     ObjectReader r(variables[i], "/variables/" + std::to_string(i), "", source, nullptr);
+    if (variables[i].is_object() && variables[i].contains("path") &&
+        variables[i]["path"].is_string())
+      respell_for(study.design_document, variables[i]["path"].get<std::string>());
     study.variables.push_back(read_variable(r, study.design_document, grid_points));
     for (std::size_t j = 0; j < i; ++j) {
       if (study.variables[j].pointer == study.variables[i].pointer) {
