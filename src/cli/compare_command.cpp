@@ -16,7 +16,9 @@ void CompareCommand::add_to(CLI::App& app) {
       "Designs side by side (before and after lead tape, two racquets): the sweet spots, the "
       "wrist force and the rebound of each, and what changes from the first to the others in "
       "words");
-  command->add_option("designs", design_paths, "Two or more design files (JSON; - for standard input, once)")
+  command
+      ->add_option("designs", design_paths,
+                   "Two or more design files (JSON; - for standard input, once)")
       ->required()
       ->expected(2, 64);
   command
@@ -38,7 +40,8 @@ void CompareCommand::add_to(CLI::App& app) {
 int CompareCommand::run() const {
   int stdin_uses = 0;
   for (const std::string& path : design_paths) stdin_uses += path == "-";
-  if (stdin_uses > 1) throw CLI::ValidationError("designs: standard input (-) can be read only once");
+  if (stdin_uses > 1)
+    throw CLI::ValidationError("designs: standard input (-) can be read only once");
   std::vector<reports::ComparedDesign> designs;
   const std::string level = command->count("--fidelity") ? fidelity : std::string();
   for (const std::string& path : design_paths) {

@@ -115,8 +115,8 @@ std::optional<std::string> force_change(double before, double after) {
 }
 
 std::string where_hit(const ComparedDesign& c) {
-  const bool centre = c.spots.centre_of_strings &&
-                      cm_text(c.spots.centre_of_strings->from_tip_m) == cm_text(c.spots.asked.from_tip_m);
+  const bool centre = c.spots.centre_of_strings && cm_text(c.spots.centre_of_strings->from_tip_m) ==
+                                                       cm_text(c.spots.asked.from_tip_m);
   return centre ? fmt::format("at the centre of the strings ({} from the tip)",
                               cm_text(c.spots.asked.from_tip_m))
                 : fmt::format("{} from the tip", cm_text(c.spots.asked.from_tip_m));
@@ -142,15 +142,16 @@ std::vector<std::string> input_changes(const ComparedDesign& a, const ComparedDe
   }
   const double dm = eb.mass_kg - ea.mass_kg;
   if (!lead_described && std::fabs(dm) >= 0.0005)
-    changes.push_back(fmt::format("{:.3g} g {}", std::fabs(dm) * 1000, dm > 0 ? "heavier" : "lighter"));
+    changes.push_back(
+        fmt::format("{:.3g} g {}", std::fabs(dm) * 1000, dm > 0 ? "heavier" : "lighter"));
   const double db = eb.balance_from_butt_m - ea.balance_from_butt_m;
   if (std::fabs(db) >= 0.001)
     changes.push_back(fmt::format("the balance {:.2g} cm {}", std::fabs(db) * 100,
                                   db > 0 ? "nearer the tip" : "nearer the handle"));
   const double ds = (eb.swingweight_kg_m2 - ea.swingweight_kg_m2) * 1e4;
   if (std::fabs(ds) >= 0.5)
-    changes.push_back(fmt::format("a swingweight {:.0f} kg·cm² {}", std::fabs(ds),
-                                  ds > 0 ? "higher" : "lower"));
+    changes.push_back(
+        fmt::format("a swingweight {:.0f} kg·cm² {}", std::fabs(ds), ds > 0 ? "higher" : "lower"));
   const auto& sa = a.design.design.strings;
   const auto& sb = b.design.design.strings;
   if (sa && sb && std::fabs(sa->tension_N - sb->tension_N) >= 0.5 * kNewtonsPerPound)
@@ -159,11 +160,10 @@ std::vector<std::string> input_changes(const ComparedDesign& a, const ComparedDe
                                   sa->tension_N / kNewtonsPerPound));
   if (ea.modal && eb.modal &&
       std::fabs(ea.modal->fundamental_free_Hz - eb.modal->fundamental_free_Hz) >= 1.0)
-    changes.push_back(fmt::format("a {} frame ({:.0f} Hz instead of {:.0f} Hz)",
-                                  eb.modal->fundamental_free_Hz > ea.modal->fundamental_free_Hz
-                                      ? "stiffer"
-                                      : "more flexible",
-                                  eb.modal->fundamental_free_Hz, ea.modal->fundamental_free_Hz));
+    changes.push_back(fmt::format(
+        "a {} frame ({:.0f} Hz instead of {:.0f} Hz)",
+        eb.modal->fundamental_free_Hz > ea.modal->fundamental_free_Hz ? "stiffer" : "more flexible",
+        eb.modal->fundamental_free_Hz, ea.modal->fundamental_free_Hz));
   return changes;
 }
 
@@ -187,9 +187,9 @@ ComparedDesign compare_one(io::DesignFile design, std::string_view fidelity, dou
 std::vector<std::string> differences(const ComparedDesign& a, const ComparedDesign& b) {
   std::vector<std::string> sentences;
   const std::vector<std::string> changes = input_changes(a, b);
-  sentences.push_back(fmt::format("{} against {}: {}.", b.design.name, a.design.name,
-                                  changes.empty() ? std::string("the same implement")
-                                                  : joined(changes)));
+  sentences.push_back(
+      fmt::format("{} against {}: {}.", b.design.name, a.design.name,
+                  changes.empty() ? std::string("the same implement") : joined(changes)));
   std::vector<std::string> effects;
   if (const auto m = moved(cop_of(a), cop_of(b)))
     effects.push_back("the hand-held centre of percussion " + *m);
@@ -197,10 +197,10 @@ std::vector<std::string> differences(const ComparedDesign& a, const ComparedDesi
   const Evaluation& ea = a.spots.asked.evaluation;
   const Evaluation& eb = b.spots.asked.evaluation;
   const bool same_impact = cm_text(a.spots.asked.from_tip_m) == cm_text(b.spots.asked.from_tip_m);
-  const std::string impact =
-      same_impact ? "a hit " + where_hit(a)
-                  : fmt::format("a hit at the impact each asks about ({} and {})", where_hit(a),
-                                where_hit(b));
+  const std::string impact = same_impact
+                                 ? "a hit " + where_hit(a)
+                                 : fmt::format("a hit at the impact each asks about ({} and {})",
+                                               where_hit(a), where_hit(b));
   if (const auto f = force_change(ea.peak_wrist_force_N, eb.peak_wrist_force_N))
     effects.push_back("the wrist force of " + impact + " " + *f);
   if (std::fabs(eb.apparent_cor - ea.apparent_cor) >= kCorThreshold)
@@ -250,10 +250,9 @@ std::string comparison_report(const std::vector<ComparedDesign>& designs, io::Fo
     }
     j["differences"] = io::Json::array();
     for (std::size_t k = 1; k < designs.size(); ++k) {
-      j["differences"].push_back(
-          {{"from", designs[0].design.name},
-           {"to", designs[k].design.name},
-           {"sentences", differences(designs[0], designs[k])}});
+      j["differences"].push_back({{"from", designs[0].design.name},
+                                  {"to", designs[k].design.name},
+                                  {"sentences", differences(designs[0], designs[k])}});
     }
     return j.dump(2, ' ', false, io::Json::error_handler_t::replace) + "\n";
   }
@@ -273,7 +272,10 @@ std::string comparison_report(const std::vector<ComparedDesign>& designs, io::Fo
   }
   std::string md = "# Compared";
   for (std::size_t k = 0; k < designs.size(); ++k)
-    md += (k == 0 ? ": " : k + 1 == designs.size() ? " and " : ", ") + io::md_cell(designs[k].design.name);
+    md += (k == 0                    ? ": "
+           : k + 1 == designs.size() ? " and "
+                                     : ", ") +
+          io::md_cell(designs[k].design.name);
   md += "\n\n";
   for (std::size_t k = 1; k < designs.size(); ++k) {
     std::string paragraph;
