@@ -112,6 +112,8 @@ TEST_CASE("Appending a number writes exactly the text exact() gives, shortest an
 }  // namespace
 }  // namespace sweetspot::io
 
+namespace sweetspot::io {
+
 TEST_CASE("People's units: cm, g, kg cm^2 and ms, with the key's suffix changed to match") {
   CHECK(people_unit("m").unit == "cm");
   CHECK(people_unit("m").factor == 100.0);
@@ -138,3 +140,5 @@ TEST_CASE("A design key's unit is read from its suffix, the longest first") {
   CHECK(unit_of_key("from_tip_cm") == "cm");
   CHECK(unit_of_key("head_to_handle_mass_ratio").empty());
 }
+
+}  // namespace sweetspot::io
