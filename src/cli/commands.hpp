@@ -84,6 +84,7 @@ struct SweepCommand {
   std::string study_path;
   std::string csv_path;
   std::string plot;
+  std::string format = "csv";  // or "json": JSON Lines, one object per grid point
   bool quiet = false;
   int threads = 1;
 
