@@ -26,6 +26,18 @@ struct EvaluateCommand {
   std::string fidelity = "auto";
   double tolerance = 1e-6;
   int threads = 1;
+  std::string units = "si";  // "people": CSV and JSON also in cm, g, kg·cm², ms
+  OutputOptions out;
+
+  void add_to(CLI::App& app);
+  int run() const;
+};
+
+struct CompareCommand {
+  CLI::App* command = nullptr;
+  std::vector<std::string> design_paths;
+  std::string fidelity = "auto";
+  double tolerance = 1e-6;
   OutputOptions out;
 
   void add_to(CLI::App& app);
@@ -76,6 +88,7 @@ struct SweepCommand {
   std::string study_path;
   std::string csv_path;
   std::string plot;
+  std::string format = "csv";  // or "json": JSON Lines, one object per grid point
   bool quiet = false;
   int threads = 1;
 

@@ -131,6 +131,13 @@ void EvaluateCommand::add_to(CLI::App& app) {
   command->add_option("--tol", tolerance, "Relative error allowed in the hand-held frequency")
       ->check(finite_in(kMinRelTol, kMaxRelTol))
       ->capture_default_str();
+  command
+      ->add_option("--units", units,
+                   "si: CSV and JSON in SI only (stable keys for programs); people: also a "
+                   "column (CSV) or an outputs_people key (JSON) in cm, g, kg·cm², ms for each "
+                   "output in m, kg, kg m^2, s. Markdown is always in people's units")
+      ->check(CLI::IsMember({"si", "people"}))
+      ->capture_default_str();
   out.add_to(command);
 }
 
@@ -160,7 +167,7 @@ int EvaluateCommand::run() const {
     answer =
         reports::sweet_spot_paragraph(design, reports::find_sweet_spots(design, result, tolerance));
   }
-  out.emit(io::evaluation_report(design, result, out.parsed(), answer));
+  out.emit(io::evaluation_report(design, result, out.parsed(), answer, units == "people"));
   return kExitOk;
 }
 

@@ -9,6 +9,7 @@
 #include <iostream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "cli/commands.hpp"
 #include "io/atomic_file.hpp"
@@ -25,6 +26,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
 
   EvaluateCommand evaluate;
+  CompareCommand compare;
   Table1Command table1;
   FigureCommand figure;
   ReportCommand report;
@@ -34,6 +36,7 @@ int main(int argc, char** argv) {
   ResponseCommand response;
   BenchCommand bench;
   evaluate.add_to(app);
+  compare.add_to(app);
   table1.add_to(app);
   figure.add_to(app);
   report.add_to(app);
@@ -42,6 +45,44 @@ int main(int argc, char** argv) {
   modes.add_to(app);
   response.add_to(app);
   bench.add_to(app);
+  // Every --help ends with examples that run as written from the repository.
+  const std::pair<const char*, const char*> kExamples[] = {
+      {"evaluate",
+       "Examples:\n  sweetspot evaluate designs/racquets/tour-100.json\n"
+       "  cat racquet.json | sweetspot evaluate - --format json --units people"},
+      {"table1",
+       "Examples:\n  sweetspot table1\n  sweetspot table1 --dir "
+       "/usr/local/share/sweetspot/designs/table1 "
+       "--format csv"},
+      {"figure",
+       "Examples:\n  sweetspot figure 11 --plot fig11.png > fig11.csv\n"
+       "  sweetspot figure 5 --design designs/paper-beam.json -o fig5.csv"},
+      {"report", "Example:\n  sweetspot report --designs designs --out reports"},
+      {"optimize",
+       "Examples:\n  sweetspot optimize designs/studies/1-lowest-wrist-force-table1-ranges.json\n"
+       "  sweetspot optimize STUDY.json --format json -o best.json --plot convergence.png"},
+      {"sweep",
+       "Examples:\n  sweetspot sweep designs/studies/5a-sweep-wrist-force-hand-mass.json -o "
+       "sweep.csv\n"
+       "  sweetspot sweep STUDY.json --plot sweep.png --threads 2"},
+      {"modes",
+       "Examples:\n  sweetspot modes designs/paper-beam.json\n"
+       "  sweetspot modes designs/racquets/tour-100.json -n 2 --plot modes.png"},
+      {"response",
+       "Examples:\n  sweetspot response designs/paper-beam.json --at 0.02,0.16 --plot "
+       "response.png\n"
+       "  sweetspot response designs/paper-beam.json --held --impacts 0.05,0.16"},
+      {"bench", "Example:\n  sweetspot bench speed --repeats 3"},
+  };
+  for (const auto& [name, examples] : kExamples) {
+    if (CLI::App* command = app.get_subcommand(name)) {
+      if (command->get_footer().empty()) command->footer(examples);
+    }
+  }
+  app.footer(
+      "Examples:\n  sweetspot evaluate designs/racquets/tour-100.json\n"
+      "  sweetspot compare designs/racquets/tour-100.json "
+      "designs/racquets/tour-100-lead-at-tip.json");
 
   try {
     app.parse(argc, argv);
@@ -78,6 +119,8 @@ int main(int argc, char** argv) {
   try {
     if (*evaluate.command)
       status = evaluate.run();
+    else if (*compare.command)
+      status = compare.run();
     else if (*table1.command)
       status = table1.run();
     else if (*figure.command)

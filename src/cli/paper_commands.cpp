@@ -1,10 +1,14 @@
 // The paper's results: `sweetspot table1`, `sweetspot figure 5|11` and
 // `sweetspot report` (everything into a folder).
 
+#include <filesystem>
 #include <iostream>
+#include <string>
+#include <system_error>
 
 #include "cli/commands.hpp"
 #include "io/design_reader.hpp"
+#include "io/input_error.hpp"
 #include "reports/paper_reports.hpp"
 #include "reports/reports.hpp"
 
@@ -16,8 +20,25 @@ void Table1Command::add_to(CLI::App& app) {
   out.add_to(command);
 }
 
+namespace {
+
+// The default folder of the shipped designs: the repository's when run from it,
+// else the installed copy; a folder found in neither says which option points at it.
+std::string shipped(const std::string& path, const std::string& option, bool given) {
+  std::error_code error;
+  if (given || std::filesystem::exists(path, error)) return path;
+  const std::string installed = std::string(SWEETSPOT_DATA_DIR) + "/" + path;
+  if (std::filesystem::exists(installed, error)) return installed;
+  throw io::InputError(path, "",
+                       "not found here (run from the sweetspot repository) nor installed at " +
+                           installed + ": give " + option + " with the shipped designs' path");
+}
+
+}  // namespace
+
 int Table1Command::run() const {
-  out.emit(io::table1_report(io::compute_table1(dir), out.parsed()));
+  const std::string folder = shipped(dir, "--dir", command->count("--dir") > 0);
+  out.emit(io::table1_report(io::compute_table1(folder), out.parsed()));
   return kExitOk;
 }
 
@@ -30,7 +51,8 @@ void FigureCommand::add_to(CLI::App& app) {
 }
 
 int FigureCommand::run() const {
-  const io::DesignFile beam = io::load_design(design);
+  const io::DesignFile beam =
+      io::load_design(shipped(design, "--design", command->count("--design") > 0));
   const io::Figure data = number == 5 ? io::figure5(beam) : io::figure11(beam);
   OutputOptions{"csv", csv_path}.emit(data.csv);
   std::cerr << data.summary << "\n";

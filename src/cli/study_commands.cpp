@@ -5,6 +5,10 @@
 
 #include <algorithm>
 #include <iostream>
+#include <nlohmann/json.hpp>
+#include <streambuf>
+#include <string>
+#include <vector>
 
 #include "cli/commands.hpp"
 #include "io/input_error.hpp"
@@ -64,6 +68,75 @@ int OptimizeCommand::run() const {
   return kExitOk;
 }
 
+namespace {
+
+// A stream buffer that turns the sweep's CSV (header, then one row a line;
+// a quoted field never spans lines) into JSON Lines as it streams.
+class JsonLinesFromCsv : public std::streambuf {
+ public:
+  explicit JsonLinesFromCsv(std::ostream& out) : out_(out) {}
+
+ protected:
+  int overflow(int c) override {
+    if (c == traits_type::eof()) return traits_type::not_eof(c);
+    if (c == '\n') {
+      line_done();
+    } else {
+      line_ += static_cast<char>(c);
+    }
+    return c;
+  }
+  std::streamsize xsputn(const char* s, std::streamsize n) override {
+    for (std::streamsize i = 0; i < n; ++i) overflow(static_cast<unsigned char>(s[i]));
+    return n;
+  }
+
+ private:
+  static std::vector<std::string> fields(const std::string& line) {
+    std::vector<std::string> out(1);
+    bool quoted = false;
+    for (std::size_t i = 0; i < line.size(); ++i) {
+      const char c = line[i];
+      if (quoted && c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+        out.back() += '"';
+        ++i;
+      } else if (c == '"') {
+        quoted = !quoted;
+      } else if (c == ',' && !quoted) {
+        out.emplace_back();
+      } else {
+        out.back() += c;
+      }
+    }
+    return out;
+  }
+  void line_done() {
+    std::vector<std::string> row = fields(line_);
+    line_.clear();
+    if (header_.empty()) {
+      header_ = std::move(row);
+      return;
+    }
+    nlohmann::ordered_json object = nlohmann::ordered_json::object();
+    for (std::size_t k = 0; k < header_.size() && k < row.size(); ++k) {
+      if (header_[k] == "error") {
+        object["error"] =
+            row[k].empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(row[k]);
+      } else {
+        object[header_[k]] = row[k].empty() ? nlohmann::ordered_json(nullptr)
+                                            : nlohmann::ordered_json(std::stod(row[k]));
+      }
+    }
+    out_ << object.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace) << '\n';
+  }
+
+  std::ostream& out_;
+  std::string line_;
+  std::vector<std::string> header_;
+};
+
+}  // namespace
+
 void SweepCommand::add_to(CLI::App& app) {
   command = app.add_subcommand(
       "sweep",
@@ -75,6 +148,13 @@ void SweepCommand::add_to(CLI::App& app) {
                       "Write the CSV to FILE (atomically) instead of stdout");
   command->add_option("--plot", plot,
                       "Also render plots: FILE.png, or FILE-<output>.png for several outputs");
+  command
+      ->add_option("--format", format,
+                   "csv (streamed in grid order), or json: JSON Lines, one object per grid point "
+                   "with the same keys as the CSV header (numbers as numbers, a missing value "
+                   "null), in grid order")
+      ->check(CLI::IsMember({"csv", "json"}))
+      ->capture_default_str();
   command->add_flag("--quiet,-q", quiet, "No progress on the terminal");
   command
       ->add_option("--threads", threads,
@@ -91,8 +171,16 @@ int SweepCommand::run() const {
     if (show_progress && done == total) std::cerr << "\n";
   };
   std::vector<io::Plot> plots;
-  OutputOptions{"csv", csv_path}.emit_stream(
-      [&](std::ostream& csv) { plots = io::run_sweep(study, csv, progress, options); });
+  OutputOptions{"csv", csv_path}.emit_stream([&](std::ostream& out) {
+    if (format == "json") {
+      JsonLinesFromCsv json(out);
+      std::ostream csv(&json);
+      plots = io::run_sweep(study, csv, progress, options);
+      csv.flush();
+    } else {
+      plots = io::run_sweep(study, out, progress, options);
+    }
+  });
   if (plot.empty()) return kExitOk;
   if (plots.empty()) {
     std::cerr << "sweetspot: no plot: the grid has more than " << io::kMaxPlotPoints << " points\n";

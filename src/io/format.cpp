@@ -3,7 +3,10 @@
 #include <fmt/compile.h>
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
+#include <string>
+#include <utility>
 
 #include "io/outputs.hpp"
 
@@ -37,7 +40,9 @@ void append_exact(std::string& out, double value) {
 
 std::string md_cell(std::string_view text) {
   std::string cell;
-  for (const char c : text) cell += c == '|' ? std::string("\\|") : std::string(1, c);
+  // A pipe would end the cell, and its escape shows as "\|" wherever Markdown
+  // is read as text: the divides sign looks the same and needs none.
+  for (const char c : text) cell += c == '|' ? std::string("\u2223") : std::string(1, c);
   return cell;
 }
 
@@ -48,7 +53,109 @@ std::string csv_field(std::string_view text) {
   return quoted + "\"";
 }
 
+PeopleUnit people_unit(std::string_view si_unit) {
+  if (si_unit == "m") return {"cm", 100.0, "_cm"};
+  if (si_unit == "kg") return {"g", 1000.0, "_g"};
+  if (si_unit == "kg m^2") return {"kg·cm²", 1e4, "_kg_cm2"};
+  if (si_unit == "kg cm^2") return {"kg·cm²", 1.0, ""};
+  if (si_unit == "s") return {"ms", 1000.0, "_ms"};
+  if (si_unit == "m/s") return {"m/s", 1.0, ""};
+  if (si_unit == "N s") return {"N·s", 1.0, ""};
+  return {si_unit, 1.0, ""};
+}
+
+std::string people_name(std::string_view name, std::string_view si_unit) {
+  const PeopleUnit unit = people_unit(si_unit);
+  if (unit.suffix.empty()) return std::string(name);
+  for (const std::string_view si_suffix : {"_kg_m2", "_m", "_kg", "_s"}) {
+    if (name.ends_with(si_suffix))
+      return std::string(name.substr(0, name.size() - si_suffix.size())) + std::string(unit.suffix);
+  }
+  return std::string(name) + std::string(unit.suffix);
+}
+
+double people_value(double value_si, std::string_view si_unit) {
+  const double value = value_si * people_unit(si_unit).factor;
+  if (!std::isfinite(value) || value == 0.0) return value;
+  return std::stod(fmt::format("{:.6g}", value));
+}
+
+std::string_view unit_of_key(std::string_view key) {
+  static constexpr std::pair<std::string_view, std::string_view> kSuffixes[] = {
+      {"_km_h", "km/h"},   {"_m_s", "m/s"},
+      {"_mph", "mph"},     {"_kg_cm2", "kg·cm²"},
+      {"_kg_m2", "kg·m²"}, {"_N_s_m2", "N·s/m²"},
+      {"_N_m2", "N/m²"},   {"_in2", "sq in"},
+      {"_cm2", "cm²"},     {"_pts_hl", "pts head-light"},
+      {"_Hz", "Hz"},       {"_Pa", "Pa"},
+      {"_ms", "ms"},       {"_mm", "mm"},
+      {"_cm", "cm"},       {"_in", "in"},
+      {"_lb", "lb"},       {"_kg", "kg"},
+      {"_g", "g"},         {"_N", "N"},
+      {"_s", "s"},         {"_m", "m"}};
+  for (const auto& [suffix, unit] : kSuffixes) {
+    if (key.ends_with(suffix)) return unit;
+  }
+  return {};
+}
+
 namespace {
+
+// A number for people: four significant digits, no exponent for everyday sizes.
+std::string people_text(double value) { return significant(value, 4); }
+
+// Every input of the design as people read it: what the file gave, in the unit
+// and words it used ("/strings/tension_lb = 52 lb, 231.3 N"), then what was
+// left to its default or derived, in people's units.
+std::string inputs_markdown(const DesignFile& file, const Evaluation& e) {
+  std::string md = "\nInputs as given in the file:\n\n";
+  std::vector<std::string> shown;  // a key recorded under two canonical names is shown once
+  for (const auto& [canonical, origin] : file.keys) {
+    if (std::find(shown.begin(), shown.end(), origin.pointer) != shown.end()) continue;
+    shown.push_back(origin.pointer);
+    const std::string_view key =
+        std::string_view(origin.pointer).substr(origin.pointer.rfind('/') + 1);
+    const std::string_view unit = unit_of_key(key);
+    md += fmt::format("- `{}` = {}{}{}\n", origin.pointer, md_cell(origin.given),
+                      unit.empty() ? "" : " ", unit);
+  }
+  const Design& d = file.design;
+  const auto line = [&](const char* name, const char* what, double si, std::string_view si_unit) {
+    const auto it = file.provenance.find(name);
+    if (it == file.provenance.end() || it->second == "given" || it->second.starts_with("given"))
+      return std::string();
+    const PeopleUnit unit = people_unit(si_unit);
+    return fmt::format("- {}: {}{}{} ({})\n", what, people_text(si * unit.factor),
+                       unit.unit.empty() ? "" : " ", unit.unit, md_cell(it->second));
+  };
+  std::string rest;
+  rest += line("impact/from_butt_m", "impact from the tip", e.length_m - d.impact_from_butt_m, "m");
+  rest += line("strings/impact_duration_s", "impact duration", e.impact_duration_s, "s");
+  rest += line("frame/cor", "frame COR", e.cor, "");
+  rest += line("hand/mass_kg", "hand mass", d.hand.mass_kg, "kg");
+  rest +=
+      line("hand/center_from_butt_m", "hand centre from the butt", d.hand.center_from_butt_m, "m");
+  rest += line("forearm/equivalent_mass_kg", "forearm equivalent mass",
+               d.forearm_equivalent_mass_kg, "kg");
+  rest += line("ball/mass_kg", "ball mass", d.ball.mass_kg, "kg");
+  rest += line("ball/speed_m_s", "ball speed", d.ball.speed_m_s, "m/s");
+  if (!rest.empty())
+    md += "\nDefaulted or derived (defaults are Cross (2004) Table I, top row):\n\n" + rest;
+  // The implement in a spec sheet's words.
+  const double points_head_light = (0.5 * e.length_m - e.balance_from_butt_m) / kPointHeadLight_m;
+  md += fmt::format(
+      "\nThe implement as a spec sheet says it: length {} cm ({} in), mass {} g, balance {} cm "
+      "from the butt ({} pts {}), swingweight {} kg·cm².\n",
+      people_text(e.length_m * 100), people_text(e.length_m / 0.0254),
+      people_text(e.mass_kg * 1000), people_text(e.balance_from_butt_m * 100),
+      people_text(std::fabs(points_head_light)),
+      points_head_light >= 0 ? "head-light" : "head-heavy", people_text(e.swingweight_kg_m2 * 1e4));
+  if (d.strings) {
+    md += fmt::format("String tension {} N ({} lb).\n", people_text(d.strings->tension_N),
+                      people_text(d.strings->tension_N / 4.4482216152605));
+  }
+  return md;
+}
 
 Json inputs_json(const DesignFile& file, const Evaluation& e) {
   const Design& d = file.design;
@@ -137,9 +244,21 @@ Json evaluation_json(const DesignFile& file, const Evaluation& e) {
 }
 
 std::string evaluation_report(const DesignFile& file, const Evaluation& e, Format format,
-                              std::string_view answer) {
-  if (format == Format::kJson)
-    return evaluation_json(file, e).dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
+                              std::string_view answer, bool people_units) {
+  if (format == Format::kJson) {
+    Json j = evaluation_json(file, e);
+    if (people_units) {
+      Json& people = j["outputs_people"];
+      people = Json::object();
+      for (const OutputSpec& output : output_specs()) {
+        if (people_unit(output.unit).suffix.empty()) continue;
+        const auto value = output.value(e);
+        people[people_name(output.name, output.unit)] =
+            value ? Json(people_value(*value, output.unit)) : Json(nullptr);
+      }
+    }
+    return j.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
+  }
   if (format == Format::kCsv) {
     std::string header = "name";
     std::string row = csv_field(file.name);
@@ -147,6 +266,14 @@ std::string evaluation_report(const DesignFile& file, const Evaluation& e, Forma
       header += "," + std::string(output.name);
       const auto value = output.value(e);
       row += "," + (value ? exact(*value) : std::string());
+    }
+    if (people_units) {
+      for (const OutputSpec& output : output_specs()) {
+        if (people_unit(output.unit).suffix.empty()) continue;
+        header += "," + people_name(output.name, output.unit);
+        const auto value = output.value(e);
+        row += "," + (value ? exact(people_value(*value, output.unit)) : std::string());
+      }
     }
     return header + "\n" + row + "\n";
   }
@@ -161,15 +288,16 @@ std::string evaluation_report(const DesignFile& file, const Evaluation& e, Forma
       e.modal && e.modal->mass_distribution_fitted
           ? " The mass distribution for the modes was fitted to the specs (quadratic density)."
           : "");
-  md += "| output | value | unit | meaning |\n|---|---:|---|---|\n";
+  md += "| quantity | value | unit | output (SI in JSON and CSV) |\n|---|---:|---|---|\n";
   for (const OutputSpec& output : output_specs()) {
     if (output.needs_modes && !output.value(e)) continue;
     const auto value = output.value(e);
+    const PeopleUnit unit = people_unit(output.unit);
     md += fmt::format(
-        "| `{}` | {} | {} | {} |\n", output.name, value ? significant(*value) : std::string("—"),
-        output.unit,
+        "| {} | {} | {} | `{}` |\n",
         md_cell(value ? std::string(output.description)
-                      : std::string(output.description) + "; " + std::string(output.when_absent)));
+                      : std::string(output.description) + "; " + std::string(output.when_absent)),
+        value ? people_text(*value * unit.factor) : std::string("—"), unit.unit, output.name);
   }
   if (!e.modal) {
     md += "\nVibration modes: not evaluated (rigid fidelity; they need the frame's stiffness).\n";
@@ -185,19 +313,7 @@ std::string evaluation_report(const DesignFile& file, const Evaluation& e, Forma
     }
   }
   if (!details.fidelity_note.empty()) md += "\nNote: " + details.fidelity_note + ".\n";
-  md += "\nInputs (SI; *default* values are Cross (2004) Table I, top row):\n\n";
-  const Json inputs = inputs_json(file, e);
-  for (const auto& [name, input] : inputs.items()) {
-    if (!input.is_object()) continue;
-    md += fmt::format("- `{}` = {} {} ({})\n", name, significant(input["value"].get<double>()),
-                      input["unit"].get<std::string>(), input["provenance"].get<std::string>());
-    if (input.contains("given")) {  // as the file wrote it: "given as `tension_lb` = 52"
-      const auto given = input["given"].begin();
-      const std::string& pointer = given.key();
-      md.insert(md.size() - 2, fmt::format(", as `{}` = {}", pointer.substr(pointer.rfind('/') + 1),
-                                           significant(given.value().get<double>())));
-    }
-  }
+  md += inputs_markdown(file, e);
   return md;
 }
 

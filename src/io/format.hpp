@@ -28,6 +28,24 @@ std::string md_cell(std::string_view text);
 // A CSV field, quoted when it holds a comma, quote or newline.
 std::string csv_field(std::string_view text);
 
+// An output's unit as people read it: cm for m, g for kg, kg·cm² for kg m²,
+// ms for s; the others as they are. value_SI * factor is the value in `unit`.
+struct PeopleUnit {
+  std::string_view unit;    // "cm"
+  double factor = 1.0;      // from the SI unit
+  std::string_view suffix;  // the key's suffix in that unit ("_cm"), "" when the SI one stands
+};
+PeopleUnit people_unit(std::string_view si_unit);
+// The output's name in people's units: "cop_hand_from_tip_m" -> "cop_hand_from_tip_cm"
+// (the SI name when its unit stays).
+std::string people_name(std::string_view name, std::string_view si_unit);
+// A value in people's units for CSV and JSON: six significant digits (the
+// conversion's float noise, 30.676100000000002, is not a digit anyone needs).
+double people_value(double value_si, std::string_view si_unit);
+// The unit a design key is written in, from its suffix: "tension_lb" -> "lb",
+// "speed_km_h" -> "km/h", "balance_pts_hl" -> "pts head-light"; "" when none.
+std::string_view unit_of_key(std::string_view key);
+
 // {"name", "inputs": {canonical name: {"value", "provenance"}}, "outputs": {...},
 //  "notes": {output: why null}}.
 Json evaluation_json(const DesignFile& design, const Evaluation& evaluation);
@@ -36,6 +54,9 @@ Json evaluation_json(const DesignFile& design, const Evaluation& evaluation);
 // In Markdown, `answer` (a paragraph of plain sentences, reports/summary.hpp)
 // comes right after the title, before the tables.
 std::string evaluation_report(const DesignFile& design, const Evaluation& evaluation, Format format,
-                              std::string_view answer = {});
+                              std::string_view answer = {}, bool people_units = false);
+// With `people_units`, CSV gets a column and JSON a key under "outputs_people"
+// for every output whose unit people read otherwise (cm, g, kg·cm², ms),
+// after the SI ones, which stay as they are.
 
 }  // namespace sweetspot::io

@@ -29,9 +29,10 @@ std::optional<double> on_implement_from_tip(const Evaluation& e, std::optional<d
 // "the wrist feels a jolt of 470 N and the ball comes back at 0.42 of its speed"; the
 // first time with "(apparent COR)".
 std::string feel(const Evaluation& e, bool first = false) {
-  const std::string wrist = e.peak_wrist_force_N == 0.0 || newton_text(e.peak_wrist_force_N) == "0 N"
-                                ? std::string("the wrist feels no jolt")
-                                : "the wrist feels a jolt of " + newton_text(e.peak_wrist_force_N);
+  const std::string wrist =
+      e.peak_wrist_force_N == 0.0 || newton_text(e.peak_wrist_force_N) == "0 N"
+          ? std::string("the wrist feels no jolt")
+          : "the wrist feels a jolt of " + newton_text(e.peak_wrist_force_N);
   return fmt::format("{} and the ball comes back at {} of its speed{}", wrist,
                      ratio_text(e.apparent_cor), first ? " (the apparent COR)" : "");
 }
@@ -83,8 +84,7 @@ io::DesignFile with_default_impact(io::DesignFile design) {
   return design;
 }
 
-SweetSpots find_sweet_spots(const io::DesignFile& design, const Evaluation& asked,
-                            double rel_tol) {
+SweetSpots find_sweet_spots(const io::DesignFile& design, const Evaluation& asked, double rel_tol) {
   const std::string_view fidelity = to_string(fidelity_of(asked));
   SweetSpots spots;
   spots.asked = SpotOutcome{asked.length_m - asked.impact_from_butt_m, asked};
@@ -123,13 +123,12 @@ std::vector<std::string> sweet_spot_sentences(const io::DesignFile& design,
         is_racquet(design) ? "racquet" : "implement", cm_text(spots.cop_hand->from_tip_m),
         asked.modal->fundamental_hand_Hz, cm_text(spots.node_hand->from_tip_m)));
     const double gap = std::fabs(spots.cop_hand->from_tip_m - spots.node_hand->from_tip_m);
-    sentences.push_back(
-        cm_text(gap) == "0 cm"
-            ? std::string("The two coincide.")
-            : fmt::format("They are {} apart, the {} nearer the tip.", cm_text(gap),
-                          spots.node_hand->from_tip_m < spots.cop_hand->from_tip_m
-                              ? "node"
-                              : "centre of percussion"));
+    sentences.push_back(cm_text(gap) == "0 cm"
+                            ? std::string("The two coincide.")
+                            : fmt::format("They are {} apart, the {} nearer the tip.", cm_text(gap),
+                                          spots.node_hand->from_tip_m < spots.cop_hand->from_tip_m
+                                              ? "node"
+                                              : "centre of percussion"));
   } else if (spots.cop_hand) {
     sentences.push_back(fmt::format(
         "Held in the hand, this {}'s centre of percussion, where the wrist feels the least jolt, "
@@ -152,8 +151,8 @@ std::vector<std::string> sweet_spot_sentences(const io::DesignFile& design,
                                     feel(spots.cop_hand->evaluation, true)));
   }
   if (spots.node_hand) {
-    sentences.push_back(fmt::format("At the node {}.",
-                                    feel(spots.node_hand->evaluation, !spots.cop_hand)));
+    sentences.push_back(
+        fmt::format("At the node {}.", feel(spots.node_hand->evaluation, !spots.cop_hand)));
   }
   // 3. The point of best rebound (the collision fidelity) slots in here.
   if (spots.best_rebound) {
@@ -171,15 +170,17 @@ std::vector<std::string> sweet_spot_sentences(const io::DesignFile& design,
                                     feel(spots.centre_of_strings->evaluation)));
   }
   const std::string where =
-      spots.asked_provenance == "given"
-          ? fmt::format("At the impact asked about, {} from the tip,", cm_text(spots.asked.from_tip_m))
+      spots.asked_provenance == "given" ? fmt::format("At the impact asked about, {} from the tip,",
+                                                      cm_text(spots.asked.from_tip_m))
       : asked_is_centre
-          ? fmt::format("At the centre of the strings, about {} from the tip (no impact was given, "
-                        "so the tables below are for this one),",
-                        cm_text(spots.asked.from_tip_m))
-          : fmt::format("At {} from the tip (no impact was given: {}; the tables below are for "
-                        "this one),",
-                        cm_text(spots.asked.from_tip_m), spots.asked_provenance);
+          ? fmt::format(
+                "At the centre of the strings, about {} from the tip (no impact was given, "
+                "so the tables below are for this one),",
+                cm_text(spots.asked.from_tip_m))
+          : fmt::format(
+                "At {} from the tip (no impact was given: {}; the tables below are for "
+                "this one),",
+                cm_text(spots.asked.from_tip_m), spots.asked_provenance);
   sentences.push_back(fmt::format("{} {}.", where, feel(asked)));
   sentences.push_back(
       "Positions are rounded to 0.5 cm and forces to two figures: the hand's place and the "

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <limits>
+#include <string>
 
 #include "io/input_error.hpp"
 #include "studies/design_binding.hpp"
@@ -43,10 +45,25 @@ const Json& array_at(ObjectReader& r, std::string_view key, bool required) {
   return *list;
 }
 
+// The grid point as the decimal it stands for: lo + (hi - lo) i / (n - 1) in
+// binary is 0.30000000000000004 for 0.1 + 0.4 * 2 / 4; the nearest double to
+// its 15-digit decimal is taken when it lies within a few rounding errors.
+double decimal_grid_point(double lo, double hi, double x) {
+  const double decimal = std::stod(fmt::format("{:.15g}", x));
+  const double slack = 4 * std::numeric_limits<double>::epsilon() *
+                       std::max({std::fabs(lo), std::fabs(hi), std::fabs(x)});
+  if (std::fabs(decimal - x) <= slack && decimal >= lo && decimal <= hi) return decimal;
+  return x;
+}
+
 std::vector<double> linspace(double lo, double hi, int points) {
   std::vector<double> values(points);
   for (int i = 0; i < points; ++i) {
-    values[i] = points == 1 ? lo : lo + (hi - lo) * static_cast<double>(i) / (points - 1);
+    values[i] =
+        points == 1 || i == 0 ? lo
+        : i == points - 1
+            ? hi
+            : decimal_grid_point(lo, hi, lo + (hi - lo) * static_cast<double>(i) / (points - 1));
   }
   return values;
 }

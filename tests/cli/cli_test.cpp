@@ -1194,3 +1194,62 @@ TEST_CASE("The README's catalogue runs as written: mapped, sorted, with a file m
 }
 
 }  // namespace
+
+namespace {
+
+const std::string kRacquet =
+    R"({"name": "r", "implement": {"length_in": 27, "mass_g": 318, "balance_cm": 32.5,
+        "swingweight_kg_cm2": 325}, "strings": {"tension_lb": 52}})";
+
+TEST_CASE("evaluate reads a design from standard input, and opens with the sweet spots") {
+  Sandbox box;
+  const fs::path design = box.file("r.json", kRacquet);
+  const Run run = box.run("evaluate -", design.string());
+  CHECK(run.status == 0);
+  CHECK(run.out.find("Held in the hand, this racquet") != std::string::npos);
+  CHECK(run.out.find("`/strings/tension_lb` = 52 lb") != std::string::npos);
+  CHECK(run.out.find("\\|") == std::string::npos);
+}
+
+TEST_CASE("sweep --format json writes one JSON object per grid point, with decimal grid points") {
+  Sandbox box;
+  box.file("r.json", kRacquet);
+  const fs::path study = box.file("s.json", R"({"design": "r.json", "variables": [
+      {"path": "/impact/from_tip_cm", "min": 10, "max": 30, "points": 3}],
+      "outputs": ["peak_wrist_force_N"]})");
+  const Run run = box.run("sweep -q --format json " + study.string());
+  REQUIRE(run.status == 0);
+  std::istringstream lines(run.out);
+  std::string line;
+  std::vector<double> points;
+  while (std::getline(lines, line)) {
+    const nlohmann::json row = nlohmann::json::parse(line);
+    points.push_back(row.at("/impact/from_tip_cm").get<double>());
+    CHECK(row.at("error").is_null());
+  }
+  CHECK(points == std::vector<double>{10, 20, 30});
+}
+
+TEST_CASE("Every subcommand's help ends with an example") {
+  Sandbox box;
+  for (const char* command : {"evaluate", "compare", "table1", "figure", "report", "optimize",
+                              "sweep", "modes", "response", "bench"}) {
+    INFO(command);
+    const Run run = box.run(std::string(command) + " --help");
+    CHECK(run.status == 0);
+    const auto example = run.out.rfind("Example");
+    REQUIRE(example != std::string::npos);
+    CHECK(run.out.find("sweetspot " + std::string(command), example) != std::string::npos);
+  }
+}
+
+TEST_CASE("table1 outside the repository names the option that points at its designs") {
+  Sandbox box;
+  // The runner puts the program first: a harmless --version, then table1 from /.
+  const Run run =
+      box.run("--version >/dev/null; cd / && \"" + std::string(SWEETSPOT_CLI) + "\" table1");
+  CHECK(run.status == 2);
+  CHECK(run.err.find("--dir") != std::string::npos);
+}
+
+}  // namespace

@@ -40,8 +40,10 @@ TEST_CASE("significant() keeps the digits asked for and never prints -0") {
   CHECK(significant(-0.0) == "0");
 }
 
-TEST_CASE("A Markdown cell escapes pipes; a CSV field is quoted only when it must be") {
-  CHECK(md_cell("|F_w / F|") == "\\|F_w / F\\|");
+TEST_CASE(
+    "A Markdown cell shows a pipe as the divides sign, never an escape; a CSV field is "
+    "quoted only when it must be") {
+  CHECK(md_cell("|F_w / F|") == "\u2223F_w / F\u2223");
   CHECK(csv_field("plain") == "plain");
   CHECK(csv_field("a,b") == "\"a,b\"");
   CHECK(csv_field("say \"hi\"") == "\"say \"\"hi\"\"\"");
@@ -108,4 +110,35 @@ TEST_CASE("Appending a number writes exactly the text exact() gives, shortest an
 }
 
 }  // namespace
+}  // namespace sweetspot::io
+
+namespace sweetspot::io {
+
+TEST_CASE("People's units: cm, g, kg cm^2 and ms, with the key's suffix changed to match") {
+  CHECK(people_unit("m").unit == "cm");
+  CHECK(people_unit("m").factor == 100.0);
+  CHECK(people_unit("kg").unit == "g");
+  CHECK(people_unit("kg m^2").factor == 1e4);
+  CHECK(people_unit("s").unit == "ms");
+  CHECK(people_unit("Hz").unit == "Hz");
+  CHECK(people_unit("Hz").suffix.empty());
+  CHECK(people_name("cop_hand_from_tip_m", "m") == "cop_hand_from_tip_cm");
+  CHECK(people_name("mass_kg", "kg") == "mass_g");
+  CHECK(people_name("I_cm_kg_m2", "kg m^2") == "I_cm_kg_cm2");
+  CHECK(people_name("impact_duration_s", "s") == "impact_duration_ms");
+  CHECK(people_name("rebound_speed_m_s", "m/s") == "rebound_speed_m_s");
+  // 0.306761 m * 100 is 30.676100000000002 in binary: six digits are what a person reads.
+  CHECK(exact(people_value(0.306761, "m")) == "30.6761");
+}
+
+TEST_CASE("A design key's unit is read from its suffix, the longest first") {
+  CHECK(unit_of_key("tension_lb") == "lb");
+  CHECK(unit_of_key("speed_km_h") == "km/h");
+  CHECK(unit_of_key("speed_m_s") == "m/s");
+  CHECK(unit_of_key("balance_pts_hl") == "pts head-light");
+  CHECK(unit_of_key("swingweight_kg_cm2") == "kg\u00b7cm\u00b2");
+  CHECK(unit_of_key("from_tip_cm") == "cm");
+  CHECK(unit_of_key("head_to_handle_mass_ratio").empty());
+}
+
 }  // namespace sweetspot::io

@@ -26,8 +26,9 @@ bool contains(const std::string& text, const std::string& part) {
 
 }  // namespace
 
-TEST_CASE("Positions are rounded to half a centimetre, forces to two figures, ratios to two "
-          "decimals") {
+TEST_CASE(
+    "Positions are rounded to half a centimetre, forces to two figures, ratios to two "
+    "decimals") {
   CHECK(cm_text(0.306761) == "30.5 cm");
   CHECK(cm_text(0.129363) == "13 cm");
   CHECK(cm_text(0.0) == "0 cm");
@@ -39,8 +40,9 @@ TEST_CASE("Positions are rounded to half a centimetre, forces to two figures, ra
   CHECK(ratio_text(-0.001) == "0.00");  // never "-0.00"
 }
 
-TEST_CASE("The centre of the strings of a 100 sq in head is the ITF-shaped ellipse's half length "
-          "inside the rim") {
+TEST_CASE(
+    "The centre of the strings of a 100 sq in head is the ITF-shaped ellipse's half length "
+    "inside the rim") {
   // Closed form: 1.5 cm + sqrt(A (15.5 / 11.5) / pi), A = 100 sq in.
   const double area = 100 * 0.0254 * 0.0254;
   const double expected = 0.015 + std::sqrt(area * (15.5 / 11.5) / std::numbers::pi);
@@ -53,8 +55,9 @@ TEST_CASE("The centre of the strings of a 100 sq in head is the ITF-shaped ellip
   CHECK(expected == Approx(0.1814).margin(1e-4));
 }
 
-TEST_CASE("A racquet without an impact is hit at the centre of its strings; the paper's designs "
-          "keep 5 cm from the tip") {
+TEST_CASE(
+    "A racquet without an impact is hit at the centre of its strings; the paper's designs "
+    "keep 5 cm from the tip") {
   const io::DesignFile racquet = with_default_impact(design_from(kSpecSheet));
   CHECK(racquet.design.implement.length_m() - racquet.design.impact_from_butt_m ==
         Approx(centre_of_strings_from_tip_m(racquet)));
@@ -70,8 +73,9 @@ TEST_CASE("A racquet without an impact is hit at the centre of its strings; the 
   CHECK(given.design.implement.length_m() - given.design.impact_from_butt_m == Approx(0.05));
 }
 
-TEST_CASE("The sweet spots: no wrist force at the hand-held COP, and the node's distance from it "
-          "is the COP-node gap") {
+TEST_CASE(
+    "The sweet spots: no wrist force at the hand-held COP, and the node's distance from it "
+    "is the COP-node gap") {
   const io::DesignFile design = with_default_impact(design_from(kSpecSheet));
   const Evaluation asked = io::evaluate_design_file(design, "", 1e-6);
   const SweetSpots spots = find_sweet_spots(design, asked, 1e-6);
@@ -89,8 +93,8 @@ TEST_CASE("The sweet spots: no wrist force at the hand-held COP, and the node's 
   const std::string text = sweet_spot_paragraph(design, spots);
   CHECK(contains(text, cm_text(spots.cop_hand->from_tip_m) + " from the tip"));
   CHECK(contains(text, cm_text(spots.node_hand->from_tip_m) + " from the tip"));
-  CHECK(contains(text,
-                 cm_text(spots.cop_hand->from_tip_m - spots.node_hand->from_tip_m) + " apart"));
+  CHECK(
+      contains(text, cm_text(spots.cop_hand->from_tip_m - spots.node_hand->from_tip_m) + " apart"));
   CHECK(contains(text, newton_text(spots.node_hand->evaluation.peak_wrist_force_N)));
   CHECK(contains(text, "no impact was given"));
 }

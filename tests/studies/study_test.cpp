@@ -506,3 +506,48 @@ TEST_CASE("A variable in another unit than the design's varies the same quantity
 
 }  // namespace
 }  // namespace sweetspot::io
+
+namespace sweetspot::io {
+
+TEST_CASE(
+    "Sweep grids are the decimals they stand for: 0.1 to 0.5 in 5 points is 0.1, 0.2, "
+    "0.3, 0.4, 0.5 exactly") {
+  const Study study = read_study(Json::parse(R"({
+    "design": {"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8}},
+    "variables": [{"path": "/implement/mass_kg", "min": 0.1, "max": 0.5, "points": 5},
+                  {"path": "/implement/length_m", "min": 0.6, "max": 0.7, "points": 11}],
+    "outputs": ["mass_kg"]})"),
+                                 "grid.json", ".");
+  // lo + (hi - lo) i / (n - 1) in binary gives 0.30000000000000004 for the third.
+  CHECK(0.1 + (0.5 - 0.1) * 2.0 / 4.0 != 0.3);
+  CHECK(study.variables[0].values == std::vector<double>{0.1, 0.2, 0.3, 0.4, 0.5});
+  for (int i = 0; i <= 10; ++i) {
+    CHECK(study.variables[1].values[i] == std::stod(fmt::format("0.{}", 60 + i)));
+  }
+}
+
+TEST_CASE("A sweep path in another unit of a key the design gives sweeps that key") {
+  const Study study = read_study(Json::parse(R"({
+    "design": {"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8},
+               "impact": {"from_tip_cm": 5}},
+    "variables": [{"path": "/impact/from_tip_m", "min": 0.1, "max": 0.3, "points": 3}],
+    "outputs": ["impact_from_tip_m"]})"),
+                                 "respell.json", ".");
+  // The design's 5 cm is outside [0.1, 0.3] m: the start is the middle.
+  CHECK(study.variables[0].start == Approx(0.2));
+  std::ostringstream csv;
+  run_sweep(
+      study, csv, [](std::size_t, std::size_t) {}, SweepOptions{1});
+  std::istringstream lines(csv.str());
+  std::string line;
+  std::getline(lines, line);
+  CHECK(line == "/impact/from_tip_m,impact_from_tip_m,error");
+  for (const double expected : {0.1, 0.2, 0.3}) {
+    std::getline(lines, line);
+    CHECK(line.substr(0, 4) == fmt::format("{},", expected));
+    CHECK(std::stod(line.substr(4)) == Approx(expected).epsilon(1e-12));
+    CHECK(line.back() == ',');  // no error
+  }
+}
+
+}  // namespace sweetspot::io

@@ -1,0 +1,313 @@
+#include "reports/comparison.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <functional>
+#include <optional>
+
+namespace sweetspot::reports {
+namespace {
+
+constexpr double kNewtonsPerPound = 4.4482216152605;  // 1 lbf
+// What a player would notice (the model's own rounding, summary.hpp).
+constexpr double kPositionThreshold_m = 0.005;
+constexpr double kForceThreshold = 0.02;  // relative
+constexpr double kCorThreshold = 0.01;
+
+// One line of the side-by-side table: a number of a compared design in SI.
+struct Row {
+  const char* label;  // for people
+  const char* key;    // JSON and CSV, SI
+  const char* unit;   // SI unit, as outputs.hpp writes it
+  std::function<std::optional<double>(const ComparedDesign&)> value;
+};
+
+std::optional<double> node_of(const ComparedDesign& c) {
+  if (!c.spots.node_hand) return std::nullopt;
+  return c.spots.node_hand->from_tip_m;
+}
+
+std::optional<double> cop_of(const ComparedDesign& c) {
+  if (!c.spots.cop_hand) return std::nullopt;
+  return c.spots.cop_hand->from_tip_m;
+}
+
+const std::vector<Row>& rows() {
+  static const std::vector<Row> kRows{
+      {"mass", "mass_kg", "kg",
+       [](const ComparedDesign& c) -> std::optional<double> {
+         return c.spots.asked.evaluation.mass_kg;
+       }},
+      {"balance from the butt", "balance_from_butt_m", "m",
+       [](const ComparedDesign& c) -> std::optional<double> {
+         return c.spots.asked.evaluation.balance_from_butt_m;
+       }},
+      {"swingweight", "swingweight_kg_cm2", "kg cm^2",
+       [](const ComparedDesign& c) -> std::optional<double> {
+         return c.spots.asked.evaluation.swingweight_kg_m2 * 1e4;
+       }},
+      {"string tension", "string_tension_N", "N",
+       [](const ComparedDesign& c) -> std::optional<double> {
+         if (!c.design.design.strings) return std::nullopt;
+         return c.design.design.strings->tension_N;
+       }},
+      {"free fundamental", "fundamental_free_Hz", "Hz",
+       [](const ComparedDesign& c) -> std::optional<double> {
+         if (!c.spots.asked.evaluation.modal) return std::nullopt;
+         return c.spots.asked.evaluation.modal->fundamental_free_Hz;
+       }},
+      {"hand-held centre of percussion from the tip (least jolt)", "cop_hand_from_tip_m", "m",
+       cop_of},
+      {"hand-held node from the tip (least vibration)", "node_hand_from_tip_m", "m", node_of},
+      {"distance between them", "cop_node_distance_m", "m",
+       [](const ComparedDesign& c) -> std::optional<double> {
+         if (!cop_of(c) || !node_of(c)) return std::nullopt;
+         return std::fabs(*cop_of(c) - *node_of(c));
+       }},
+      {"impact from the tip", "impact_from_tip_m", "m",
+       [](const ComparedDesign& c) -> std::optional<double> { return c.spots.asked.from_tip_m; }},
+      {"peak wrist force at the impact", "peak_wrist_force_N", "N",
+       [](const ComparedDesign& c) -> std::optional<double> {
+         return c.spots.asked.evaluation.peak_wrist_force_N;
+       }},
+      {"apparent COR at the impact (rebound / incoming speed)", "apparent_cor", "",
+       [](const ComparedDesign& c) -> std::optional<double> {
+         return c.spots.asked.evaluation.apparent_cor;
+       }},
+      {"peak wrist force at the node", "peak_wrist_force_at_node_N", "N",
+       [](const ComparedDesign& c) -> std::optional<double> {
+         if (!c.spots.node_hand) return std::nullopt;
+         return c.spots.node_hand->evaluation.peak_wrist_force_N;
+       }},
+      {"apparent COR at the node", "apparent_cor_at_node", "",
+       [](const ComparedDesign& c) -> std::optional<double> {
+         if (!c.spots.node_hand) return std::nullopt;
+         return c.spots.node_hand->evaluation.apparent_cor;
+       }},
+      {"apparent COR at the centre of percussion", "apparent_cor_at_cop", "",
+       [](const ComparedDesign& c) -> std::optional<double> {
+         if (!c.spots.cop_hand) return std::nullopt;
+         return c.spots.cop_hand->evaluation.apparent_cor;
+       }},
+  };
+  return kRows;
+}
+
+std::string toward(double delta_from_tip_m) {
+  return delta_from_tip_m < 0 ? "toward the tip" : "toward the handle";
+}
+
+// "moves 1.4 cm toward the tip (30.5 -> 29 cm from the tip)", or std::nullopt when it does not.
+std::optional<std::string> moved(std::optional<double> before, std::optional<double> after) {
+  if (!before || !after || std::fabs(*after - *before) < kPositionThreshold_m) return std::nullopt;
+  return fmt::format("moves {} {} ({} → {} from the tip)", cm_text(std::fabs(*after - *before)),
+                     toward(*after - *before), cm_text(*before), cm_text(*after));
+}
+
+// "falls by 7 % (250 N → 230 N)", or std::nullopt below the threshold.
+std::optional<std::string> force_change(double before, double after) {
+  const double scale = std::max(std::fabs(before), 1.0);
+  if (std::fabs(after - before) / scale < kForceThreshold) return std::nullopt;
+  const double percent = 100.0 * (after - before) / scale;
+  return fmt::format("{} by {:.0f} % ({} → {})", percent < 0 ? "falls" : "rises",
+                     std::fabs(percent), newton_text(before), newton_text(after));
+}
+
+std::string where_hit(const ComparedDesign& c) {
+  const bool centre = c.spots.centre_of_strings && cm_text(c.spots.centre_of_strings->from_tip_m) ==
+                                                       cm_text(c.spots.asked.from_tip_m);
+  return centre ? fmt::format("at the centre of the strings ({} from the tip)",
+                              cm_text(c.spots.asked.from_tip_m))
+                : fmt::format("{} from the tip", cm_text(c.spots.asked.from_tip_m));
+}
+
+// The inputs that differ, in a player's words.
+std::vector<std::string> input_changes(const ComparedDesign& a, const ComparedDesign& b) {
+  std::vector<std::string> changes;
+  const Evaluation& ea = a.spots.asked.evaluation;
+  const Evaluation& eb = b.spots.asked.evaluation;
+  const auto& pa = a.design.design.implement.point_masses();
+  const auto& pb = b.design.design.implement.point_masses();
+  // Lead added on top of the first design's: each extra point mass by where it sits.
+  bool lead_described = false;
+  if (pb.size() > pa.size() && std::equal(pa.begin(), pa.end(), pb.begin(), [](auto& x, auto& y) {
+        return x.mass_kg == y.mass_kg && x.from_butt_m == y.from_butt_m;
+      })) {
+    for (std::size_t k = pa.size(); k < pb.size(); ++k) {
+      changes.push_back(fmt::format("{:.3g} g of added mass {} from the tip", pb[k].mass_kg * 1000,
+                                    cm_text(eb.length_m - pb[k].from_butt_m)));
+    }
+    lead_described = true;
+  }
+  const double dm = eb.mass_kg - ea.mass_kg;
+  if (!lead_described && std::fabs(dm) >= 0.0005)
+    changes.push_back(
+        fmt::format("{:.3g} g {}", std::fabs(dm) * 1000, dm > 0 ? "heavier" : "lighter"));
+  const double db = eb.balance_from_butt_m - ea.balance_from_butt_m;
+  if (std::fabs(db) >= 0.001)
+    changes.push_back(fmt::format("the balance {:.2g} cm {}", std::fabs(db) * 100,
+                                  db > 0 ? "nearer the tip" : "nearer the handle"));
+  const double ds = (eb.swingweight_kg_m2 - ea.swingweight_kg_m2) * 1e4;
+  if (std::fabs(ds) >= 0.5)
+    changes.push_back(
+        fmt::format("a swingweight {:.0f} kg·cm² {}", std::fabs(ds), ds > 0 ? "higher" : "lower"));
+  const auto& sa = a.design.design.strings;
+  const auto& sb = b.design.design.strings;
+  if (sa && sb && std::fabs(sa->tension_N - sb->tension_N) >= 0.5 * kNewtonsPerPound)
+    changes.push_back(fmt::format("strings at {:.0f} lb instead of {:.0f} lb",
+                                  sb->tension_N / kNewtonsPerPound,
+                                  sa->tension_N / kNewtonsPerPound));
+  if (ea.modal && eb.modal &&
+      std::fabs(ea.modal->fundamental_free_Hz - eb.modal->fundamental_free_Hz) >= 1.0)
+    changes.push_back(fmt::format(
+        "a {} frame ({:.0f} Hz instead of {:.0f} Hz)",
+        eb.modal->fundamental_free_Hz > ea.modal->fundamental_free_Hz ? "stiffer" : "more flexible",
+        eb.modal->fundamental_free_Hz, ea.modal->fundamental_free_Hz));
+  return changes;
+}
+
+std::string joined(const std::vector<std::string>& parts) {
+  std::string text;
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    text += (k == 0 ? "" : k + 1 == parts.size() ? " and " : ", ") + parts[k];
+  }
+  return text;
+}
+
+}  // namespace
+
+ComparedDesign compare_one(io::DesignFile design, std::string_view fidelity, double rel_tol) {
+  io::DesignFile placed = with_default_impact(std::move(design));
+  const Evaluation asked = io::evaluate_design_file(placed, fidelity, rel_tol);
+  SweetSpots spots = find_sweet_spots(placed, asked, rel_tol);
+  return ComparedDesign{std::move(placed), std::move(spots)};
+}
+
+std::vector<std::string> differences(const ComparedDesign& a, const ComparedDesign& b) {
+  std::vector<std::string> sentences;
+  const std::vector<std::string> changes = input_changes(a, b);
+  sentences.push_back(
+      fmt::format("{} against {}: {}.", b.design.name, a.design.name,
+                  changes.empty() ? std::string("the same implement") : joined(changes)));
+  std::vector<std::string> effects;
+  if (const auto m = moved(cop_of(a), cop_of(b)))
+    effects.push_back("the hand-held centre of percussion " + *m);
+  if (const auto m = moved(node_of(a), node_of(b))) effects.push_back("the node " + *m);
+  const Evaluation& ea = a.spots.asked.evaluation;
+  const Evaluation& eb = b.spots.asked.evaluation;
+  const bool same_impact = cm_text(a.spots.asked.from_tip_m) == cm_text(b.spots.asked.from_tip_m);
+  const std::string impact = same_impact
+                                 ? "a hit " + where_hit(a)
+                                 : fmt::format("a hit at the impact each asks about ({} and {})",
+                                               where_hit(a), where_hit(b));
+  if (const auto f = force_change(ea.peak_wrist_force_N, eb.peak_wrist_force_N))
+    effects.push_back("the wrist force of " + impact + " " + *f);
+  if (std::fabs(eb.apparent_cor - ea.apparent_cor) >= kCorThreshold)
+    effects.push_back(fmt::format("its rebound goes from {} to {} of the ball's speed",
+                                  ratio_text(ea.apparent_cor), ratio_text(eb.apparent_cor)));
+  if (a.spots.node_hand && b.spots.node_hand) {
+    if (const auto f = force_change(a.spots.node_hand->evaluation.peak_wrist_force_N,
+                                    b.spots.node_hand->evaluation.peak_wrist_force_N))
+      effects.push_back("the wrist force of a hit on the node " + *f);
+  }
+  if (effects.empty()) {
+    sentences.push_back(
+        "No difference that matters: the sweet spots move less than 0.5 cm, the wrist force "
+        "changes less than 2 % and the rebound less than 0.01.");
+  } else {
+    std::string first = joined(effects);
+    first[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(first[0])));
+    sentences.push_back(first + ".");
+    const auto f = force_change(ea.peak_wrist_force_N, eb.peak_wrist_force_N);
+    if (f) {
+      sentences.push_back(fmt::format(
+          "For a sore elbow, {} is the kinder of the two for {}.",
+          eb.peak_wrist_force_N < ea.peak_wrist_force_N ? b.design.name : a.design.name, impact));
+    }
+  }
+  return sentences;
+}
+
+std::string comparison_report(const std::vector<ComparedDesign>& designs, io::Format format) {
+  if (format == io::Format::kJson) {
+    io::Json j;
+    j["designs"] = io::Json::array();
+    for (const ComparedDesign& c : designs) {
+      io::Json d;
+      d["name"] = c.design.name;
+      d["source"] = c.design.source;
+      d["fidelity"] = to_string(fidelity_of(c.spots.asked.evaluation));
+      d["impact_provenance"] = c.spots.asked_provenance;
+      io::Json& values = d["values"];
+      values = io::Json::object();
+      for (const Row& row : rows()) {
+        const auto v = row.value(c);
+        values[row.key] = v ? io::Json(*v) : io::Json(nullptr);
+      }
+      d["sweet_spots"] = sweet_spot_sentences(c.design, c.spots);
+      j["designs"].push_back(d);
+    }
+    j["differences"] = io::Json::array();
+    for (std::size_t k = 1; k < designs.size(); ++k) {
+      j["differences"].push_back({{"from", designs[0].design.name},
+                                  {"to", designs[k].design.name},
+                                  {"sentences", differences(designs[0], designs[k])}});
+    }
+    return j.dump(2, ' ', false, io::Json::error_handler_t::replace) + "\n";
+  }
+  if (format == io::Format::kCsv) {
+    std::string csv = "name,source";
+    for (const Row& row : rows()) csv += std::string(",") + row.key;
+    csv += "\n";
+    for (const ComparedDesign& c : designs) {
+      csv += io::csv_field(c.design.name) + "," + io::csv_field(c.design.source);
+      for (const Row& row : rows()) {
+        csv += ",";
+        if (const auto v = row.value(c)) io::append_exact(csv, *v);
+      }
+      csv += "\n";
+    }
+    return csv;
+  }
+  std::string md = "# Compared";
+  for (std::size_t k = 0; k < designs.size(); ++k)
+    md += (k == 0                    ? ": "
+           : k + 1 == designs.size() ? " and "
+                                     : ", ") +
+          io::md_cell(designs[k].design.name);
+  md += "\n\n";
+  for (std::size_t k = 1; k < designs.size(); ++k) {
+    std::string paragraph;
+    for (const std::string& s : differences(designs[0], designs[k]))
+      paragraph += (paragraph.empty() ? "" : " ") + s;
+    md += paragraph + "\n\n";
+  }
+  md += "| | unit";
+  for (const ComparedDesign& c : designs) md += " | " + io::md_cell(c.design.name);
+  md += " |\n|---|---";
+  for (std::size_t k = 0; k < designs.size(); ++k) md += "|---:";
+  md += "|\n";
+  for (const Row& row : rows()) {
+    bool any = false;
+    for (const ComparedDesign& c : designs) any = any || row.value(c).has_value();
+    if (!any) continue;
+    const io::PeopleUnit unit = io::people_unit(row.unit);
+    const bool tension = std::string_view(row.key) == "string_tension_N";
+    md += fmt::format("| {} | {}", row.label, tension ? "lb" : unit.unit);
+    for (const ComparedDesign& c : designs) {
+      const auto v = row.value(c);
+      md += " | " + (v ? io::significant(tension ? *v / kNewtonsPerPound : *v * unit.factor, 4)
+                       : std::string("—"));
+    }
+    md += " |\n";
+  }
+  md += "\nEach design alone, as `sweetspot evaluate` says it:\n\n";
+  for (const ComparedDesign& c : designs) {
+    md += "- **" + io::md_cell(c.design.name) + "** (`" + c.design.source +
+          "`): " + sweet_spot_paragraph(c.design, c.spots) + "\n";
+  }
+  return md;
+}
+
+}  // namespace sweetspot::reports

@@ -1,0 +1,39 @@
+#pragma once
+
+// `sweetspot compare A.json B.json ...`: designs side by side (each at its
+// own impact and at its sweet spots), and what changes from the first to each
+// of the others stated in words.
+
+#include <string>
+#include <vector>
+
+#include "io/design_reader.hpp"
+#include "io/format.hpp"
+#include "reports/summary.hpp"
+
+namespace sweetspot::reports {
+
+struct ComparedDesign {
+  io::DesignFile design;  // with the default impact a racquet gets (with_default_impact)
+  SweetSpots spots;       // spots.asked.evaluation is the design's own evaluation
+};
+
+// Reads nothing: evaluates each design (at `fidelity`, "" for the file's own,
+// the hand-held modes to `rel_tol`) and finds its sweet spots. Throws like
+// io::evaluate_design_file, naming the file and the JSON path.
+ComparedDesign compare_one(io::DesignFile design, std::string_view fidelity, double rel_tol);
+
+// What changes from `before` to `after` that a player would notice, one
+// sentence each: the inputs that differ (mass, balance, swingweight, lead,
+// tension, stiffness), then where the sweet spots move (0.5 cm or more) and
+// how the wrist force (2 % or more) and the rebound (0.01 or more) change at
+// the impact asked about and at the sweet spots. "No difference that matters"
+// when nothing passes those thresholds.
+std::vector<std::string> differences(const ComparedDesign& before, const ComparedDesign& after);
+
+// The comparison in `format`: Markdown (a table in people's units, then the
+// differences in words), JSON ({"designs": [...], "differences": [...]}, SI)
+// or CSV (one row per design, SI).
+std::string comparison_report(const std::vector<ComparedDesign>& designs, io::Format format);
+
+}  // namespace sweetspot::reports
