@@ -32,6 +32,7 @@ int main(int argc, char** argv) {
   SweepCommand sweep;
   ModesCommand modes;
   ResponseCommand response;
+  MapCommand map;
   BenchCommand bench;
   evaluate.add_to(app);
   table1.add_to(app);
@@ -41,6 +42,7 @@ int main(int argc, char** argv) {
   sweep.add_to(app);
   modes.add_to(app);
   response.add_to(app);
+  map.add_to(app);
   bench.add_to(app);
 
   try {
@@ -92,6 +94,8 @@ int main(int argc, char** argv) {
       status = modes.run();
     else if (*response.command)
       status = response.run();
+    else if (*map.command)
+      status = map.run();
     else if (*bench.command)
       status = bench.run();
   } catch (const CLI::ParseError& e) {
