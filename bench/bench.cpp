@@ -13,6 +13,7 @@
 #include <optional>
 #include <sstream>
 #include <thread>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -23,9 +24,11 @@
 #include "reports/optimization_report.hpp"
 #include "studies/design_binding.hpp"
 #include "studies/optimization.hpp"
+#include "studies/string_bed_map.hpp"
 #include "studies/study.hpp"
 #include "studies/sweep.hpp"
 #include "sweetspot/evaluate.hpp"
+#include "sweetspot/string_bed.hpp"
 
 namespace sweetspot::io {
 namespace {
@@ -157,6 +160,38 @@ std::string machine_description() {
                      "g++", __VERSION__,
 #endif
                      SWEETSPOT_CXX_FLAGS);
+}
+
+std::string bench_maps(const BenchOptions& options, std::ostream& log) {
+  // A 27 in, 320 g racquet with a 100 in^2 head, Table I's player and ball.
+  Design racquet{Implement::paper_racquet(0.6858, 0.320, 1.0)};
+  racquet.head = HeadShape{100 * 0.0254 * 0.0254};
+  racquet.impact_from_butt_m = 0.6858 - 0.16;
+  Design tension = racquet;
+  tension.strings = StringBed{};
+  Design flexible = racquet;
+  flexible.stiffness.fundamental_free_Hz = 150.0;
+  std::string md =
+      "\n## String-bed maps\n\n`sweetspot map`'s grid evaluation (`string_bed_map()`), 50 x 50 "
+      "points over a 100 in^2 head (about 1960 on the string bed), median of the library call. "
+      "Target (issue 14): well under 100 ms at the rigid level, under 1 s at the modal level.\n\n"
+      "| map | median (ms) | per point on the bed (us) |\n|---|---:|---:|\n";
+  for (const auto& [name, design, fidelity] :
+       {std::tuple{"rigid, given duration", &racquet, Fidelity::kRigid},
+        std::tuple{"rigid, duration from the string tension", &tension, Fidelity::kRigid},
+        std::tuple{"modal (vibration energy; modes solved once)", &flexible, Fidelity::kModal}}) {
+    const StringBedMapOptions grid{50, 50, fidelity};
+    std::size_t on_bed = 0;
+    const double seconds = median_seconds(options.repeats, [&, design = design] {
+      const StringBedMap map = string_bed_map(*design, grid);
+      on_bed = 0;
+      for (const StringBedMapPoint& p : map.points) on_bed += p.on_bed ? 1 : 0;
+    });
+    md += fmt::format("| {} | {:.2f} | {:.2f} |\n", name, seconds * 1e3,
+                      seconds * 1e6 / static_cast<double>(on_bed));
+    log << fmt::format("map 50 x 50, {}: {:.2f} ms\n", name, seconds * 1e3);
+  }
+  return md;
 }
 
 void bench_speed(const BenchOptions& options, std::ostream& log) {
@@ -448,6 +483,7 @@ void bench_speed(const BenchOptions& options, std::ostream& log) {
       "and frame together: a different model, not a finer one, so its 'error' is the prescribed "
       "pulse's (see speed-vs-error-collision.md for its own error).\n\n(checksum {:.3g})\n",
       sink);
+  md += bench_maps(options, log);
   fs::create_directories(options.out_dir);
   write_file_atomically(options.out_dir + "/speed-vs-error.md", md);
   write_file_atomically(options.out_dir + "/speed-vs-error.csv", csv);

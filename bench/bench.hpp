@@ -41,6 +41,13 @@ std::string machine_description();
 // reached); the cost of each fidelity against its error. Logs a summary.
 void bench_speed(const BenchOptions& options, std::ostream& log);
 
+// The string-bed map (`sweetspot map`): a 50 x 50 grid over a 100 in^2 head at
+// the rigid level (with a given duration and with one derived from the string
+// tension at every point) and at the modal level (the vibration energy too,
+// modes solved once): median wall time of the library call. Returns the
+// Markdown section that bench_speed() puts in speed-vs-error.md.
+std::string bench_maps(const BenchOptions& options, std::ostream& log);
+
 // The command line end to end: a one-million-point sweep along the impact, a
 // million-point sweep that reads every point, and a 100 000-row CSV catalogue through
 // `evaluate --batch`, each on 1, 2, 4, ... and all cores: median wall time,

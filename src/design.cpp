@@ -1,6 +1,7 @@
 #include "sweetspot/design.hpp"
 
 #include <stdexcept>
+#include <string>
 
 #include "check.hpp"
 #include "sweetspot/frame_specs.hpp"
@@ -64,12 +65,43 @@ void validate(const Design& d) {
     detail::require_in_range("frame/cross_section/thickness_m", k.thickness_m, 0.0, kMaxLength_m,
                              "m");
   }
+  detail::require_in_range("impact/off_axis_m", d.impact_off_axis_m, -L, L, "m");
+  if (d.twistweight_kg_m2) {
+    detail::require_positive("implement/twistweight_kg_m2", *d.twistweight_kg_m2, "kg m^2");
+    detail::require_in_range("implement/twistweight_kg_m2", *d.twistweight_kg_m2, 0.0,
+                             kMaxMass_kg * kMaxLength_m * kMaxLength_m, "kg m^2");
+  }
+  if (d.head) {
+    try {
+      (void)string_bed(*d.head, L);
+    } catch (const std::invalid_argument& error) {
+      throw std::invalid_argument("implement/" + std::string(error.what()));
+    }
+  }
+  if (d.impact_off_axis_m != 0.0 && !d.twistweight_kg_m2 && !d.head) {
+    throw std::invalid_argument(
+        "impact/off_axis_m: an impact off the long axis twists the implement, which needs its "
+        "polar inertia: give implement/twistweight_kg_cm2 or implement/headsize_sq_in, got " +
+        detail::format_number(d.impact_off_axis_m) + " m");
+  }
   if (!(hand_held_system(d).com_from_butt_m > 0.0)) {
     throw std::invalid_argument(
         "hand/center_from_butt_m: implement and hand have all their mass at the butt; the wrist "
         "force (Cross 2004 Eq. 11) needs a centre of mass beyond the wrist");
   }
 }
+
+std::optional<double> polar_inertia_kg_m2(const Design& d) {
+  std::optional<double> frame = d.twistweight_kg_m2;
+  if (!frame && d.head) {
+    frame = estimated_polar_inertia_kg_m2(*d.head, d.implement.length_m(),
+                                          d.implement.frame_mass_properties().mass_kg);
+  }
+  if (!frame) return std::nullopt;
+  return polar_inertia_with_point_masses(*frame, d.implement.point_masses());
+}
+
+bool polar_inertia_estimated(const Design& d) { return !d.twistweight_kg_m2 && d.head; }
 
 MassProperties hand_held_system(const Design& d) {
   return with_point_mass(d.implement.mass_properties(),

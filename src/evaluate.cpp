@@ -36,7 +36,8 @@ double settled_duration(const Design& design) {
   const double duration_s =
       tension_impact_duration(
           *design.strings, design.ball.mass_kg,
-          effective_mass(design.implement.mass_properties(), design.impact_from_butt_m))
+          effective_mass(design.implement.mass_properties(), design.impact_from_butt_m,
+                         design.impact_off_axis_m, polar_inertia_kg_m2(design).value_or(0.0)))
           .duration_s;
   // Out of range, the tension is to blame: the duration is not the user's.
   if (!(duration_s >= kMinDuration_s && duration_s <= kMaxDuration_s)) {
@@ -155,11 +156,13 @@ Evaluation design_part(const Design& d, const MassProperties& body, const MassPr
   e.system_com_from_butt_m = system.com_from_butt_m;
   e.system_I_cm_kg_m2 = system.I_cm_kg_m2;
   e.cop_hand_from_butt_m = hand_held_cop_from_butt(system);
+  e.polar_inertia_kg_m2 = polar_inertia_kg_m2(d);
+  e.polar_inertia_estimated = polar_inertia_estimated(d);
   return e;
 }
 
 // The design's numbers as the rigid model reads them, unchecked.
-RigidCase case_of(const Design& d, double impact_duration_s) {
+RigidCase case_of(const Design& d, double impact_duration_s, double twist_per_kg) {
   return RigidCase{d.implement.mass_properties(),
                    PointMass{d.hand.center_from_butt_m, d.hand.mass_kg},
                    d.forearm_equivalent_mass_kg,
@@ -167,14 +170,27 @@ RigidCase case_of(const Design& d, double impact_duration_s) {
                    d.ball.speed_m_s,
                    d.cor,
                    impact_duration_s,
-                   d.impact_from_butt_m};
+                   d.impact_from_butt_m,
+                   twist_per_kg};
+}
+
+// y^2 / I_polar for an impact y off the axis; names the input when the polar
+// inertia is unknown.
+double twist_per_kg(const std::optional<double>& polar_inertia_kg_m2, double off_axis_m) {
+  if (off_axis_m != 0.0 && !polar_inertia_kg_m2) {
+    throw std::invalid_argument(
+        "impact/off_axis_m: an impact off the long axis needs the polar inertia "
+        "(implement/twistweight_kg_cm2 or implement/headsize_sq_in), got " +
+        detail::format_number(off_axis_m) + " m");
+  }
+  return impact_twist_per_kg(off_axis_m, polar_inertia_kg_m2.value_or(0.0));
 }
 
 // The parts that do: Eqs. (5), (11), (12), (15)-(17) at x: rigid_outcome()
 // and the rotation axes.
 void impact_part(const Design& d, const MassProperties& body, const MassProperties& system,
-                 double x, Evaluation& e) {
-  RigidCase c = case_of(d, d.impact_duration_s);
+                 double x, double y, Evaluation& e) {
+  RigidCase c = case_of(d, d.impact_duration_s, twist_per_kg(e.polar_inertia_kg_m2, y));
   c.impact_from_butt_m = x;
   const RigidOutcome o = rigid_outcome(c, system);
   e.impact_from_butt_m = x;
@@ -189,6 +205,14 @@ void impact_part(const Design& d, const MassProperties& body, const MassProperti
       hand_held_rotation_axis_from_butt(system, d.forearm_equivalent_mass_kg, x);
   e.wrist_force_ratio = o.wrist_force_ratio;
   e.peak_wrist_force_N = o.peak_wrist_force_N;
+  e.impact_off_axis_m = y;
+  if (y != 0.0) {
+    e.twist_rate_rad_s = o.impulse_N_s * y / *e.polar_inertia_kg_m2;
+    e.peak_twist_torque_N_m = o.peak_impact_force_N * std::abs(y);
+  } else {
+    e.twist_rate_rad_s = 0.0;
+    e.peak_twist_torque_N_m = 0.0;
+  }
 }
 
 }  // namespace
@@ -197,7 +221,7 @@ Evaluation evaluate_unchecked(const Design& d) {
   const MassProperties& body = d.implement.mass_properties();
   const MassProperties system = hand_held_system(d);
   Evaluation e = design_part(d, body, system);
-  impact_part(d, body, system, d.impact_from_butt_m, e);
+  impact_part(d, body, system, d.impact_from_butt_m, d.impact_off_axis_m, e);
   return e;
 }
 
@@ -208,7 +232,8 @@ RigidCase rigid_case(const Design& design) {
         "rigid case");
   }
   validate(design);
-  return case_of(design, settled_duration(design));
+  return case_of(design, settled_duration(design),
+                 twist_per_kg(polar_inertia_kg_m2(design), design.impact_off_axis_m));
 }
 
 ImpactSweep::ImpactSweep(const Design& design)
@@ -222,8 +247,13 @@ ImpactSweep::ImpactSweep(const Design& design)
 }
 
 Evaluation ImpactSweep::at(double impact_from_butt_m) const {
+  return at(impact_from_butt_m, design_.impact_off_axis_m);
+}
+
+Evaluation ImpactSweep::at(double impact_from_butt_m, double off_axis_m) const {
   Evaluation e = base_;
-  impact_part(design_, design_.implement.mass_properties(), system_, impact_from_butt_m, e);
+  impact_part(design_, design_.implement.mass_properties(), system_, impact_from_butt_m, off_axis_m,
+              e);
   return e;
 }
 

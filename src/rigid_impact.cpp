@@ -89,6 +89,19 @@ double effective_mass(const MassProperties& body, double impact_from_butt_m) {
                                 impact_from_butt_m);  // (17)
 }
 
+double impact_twist_per_kg(double off_axis_m, double polar_inertia_kg_m2) {
+  detail::require_finite("off_axis_m", off_axis_m);
+  if (off_axis_m == 0.0) return 0.0;
+  detail::require_positive("polar_inertia_kg_m2", polar_inertia_kg_m2, "kg m^2");
+  return off_axis_m * off_axis_m / polar_inertia_kg_m2;
+}
+
+double effective_mass(const MassProperties& body, double impact_from_butt_m, double off_axis_m,
+                      double polar_inertia_kg_m2) {
+  return kernel::twisted_effective_mass(effective_mass(body, impact_from_butt_m),
+                                        impact_twist_per_kg(off_axis_m, polar_inertia_kg_m2));
+}
+
 double apparent_cor(double cor, double effective_mass_kg, double ball_mass_kg) {
   return kernel::apparent_cor(cor, effective_mass_kg, ball_mass_kg);  // Eq. (16)
 }
@@ -114,7 +127,8 @@ RigidOutcome rigid_outcome(const RigidCase& c) {
 
 RigidOutcome rigid_outcome(const RigidCase& c, const MassProperties& system) {
   RigidOutcome o;
-  o.effective_mass_kg = effective_mass(c.body, c.impact_from_butt_m);
+  o.effective_mass_kg = kernel::twisted_effective_mass(effective_mass(c.body, c.impact_from_butt_m),
+                                                       c.impact_twist_per_kg);
   o.apparent_cor = apparent_cor(c.cor, o.effective_mass_kg, c.ball_mass_kg);
   o.impulse_N_s = ball_impulse(c.ball_mass_kg, c.ball_speed_m_s, o.apparent_cor);
   o.peak_impact_force_N = half_sine_peak_force(o.impulse_N_s, c.impact_duration_s);
@@ -138,11 +152,12 @@ void outcomes_loop(std::size_t n, const double* __restrict M, const double* __re
                    const double* __restrict I, const double* __restrict hand_x, const double* __restrict hand_m,
                    const double* __restrict Me, const double* __restrict ball_m, const double* __restrict ball_v,
                    const double* __restrict cor, const double* __restrict T, const double* __restrict x,
-                   double* __restrict m_eff, double* __restrict e_A, double* __restrict J, double* __restrict F0,
+                   const double* __restrict twist, double* __restrict m_eff, double* __restrict e_A, double* __restrict J, double* __restrict F0,
                    double* __restrict cop, double* __restrict ratio, double* __restrict F_w) {
   for (std::size_t i = 0; i < n; ++i) {
     const kernel::System s = kernel::with_point_mass(M[i], c[i], I[i], hand_x[i], hand_m[i]);
-    const double effective = kernel::effective_mass(M[i], c[i], I[i], x[i]);
+    const double effective =
+        kernel::twisted_effective_mass(kernel::effective_mass(M[i], c[i], I[i], x[i]), twist[i]);
     const double apparent = kernel::apparent_cor(cor[i], effective, ball_m[i]);
     const double impulse = kernel::ball_impulse(ball_m[i], ball_v[i], apparent);
     const double peak = kernel::half_sine_peak_force(impulse, T[i]);
@@ -179,6 +194,7 @@ void rigid_outcomes(const RigidCases& in, const RigidOutcomes& out) {
   check(in.cor.size(), "cor");
   check(in.impact_duration_s.size(), "impact_duration_s");
   check(in.impact_from_butt_m.size(), "impact_from_butt_m");
+  if (!in.impact_twist_per_kg.empty()) check(in.impact_twist_per_kg.size(), "impact_twist_per_kg");
   check(out.effective_mass_kg.size(), "effective_mass_kg");
   check(out.apparent_cor.size(), "apparent_cor");
   check(out.impulse_N_s.size(), "impulse_N_s");
@@ -186,13 +202,32 @@ void rigid_outcomes(const RigidCases& in, const RigidOutcomes& out) {
   check(out.cop_hand_from_butt_m.size(), "cop_hand_from_butt_m");
   check(out.wrist_force_ratio.size(), "wrist_force_ratio");
   check(out.peak_wrist_force_N.size(), "peak_wrist_force_N");
-  outcomes_loop(
-      n, in.body_mass_kg.data(), in.body_com_from_butt_m.data(), in.body_I_cm_kg_m2.data(),
-      in.hand_from_butt_m.data(), in.hand_mass_kg.data(), in.forearm_equivalent_mass_kg.data(),
-      in.ball_mass_kg.data(), in.ball_speed_m_s.data(), in.cor.data(), in.impact_duration_s.data(),
-      in.impact_from_butt_m.data(), out.effective_mass_kg.data(), out.apparent_cor.data(),
-      out.impulse_N_s.data(), out.peak_impact_force_N.data(), out.cop_hand_from_butt_m.data(),
-      out.wrist_force_ratio.data(), out.peak_wrist_force_N.data());
+  if (!in.impact_twist_per_kg.empty() || n == 0) {
+    outcomes_loop(n, in.body_mass_kg.data(), in.body_com_from_butt_m.data(),
+                  in.body_I_cm_kg_m2.data(), in.hand_from_butt_m.data(), in.hand_mass_kg.data(),
+                  in.forearm_equivalent_mass_kg.data(), in.ball_mass_kg.data(),
+                  in.ball_speed_m_s.data(), in.cor.data(), in.impact_duration_s.data(),
+                  in.impact_from_butt_m.data(), in.impact_twist_per_kg.data(),
+                  out.effective_mass_kg.data(), out.apparent_cor.data(), out.impulse_N_s.data(),
+                  out.peak_impact_force_N.data(), out.cop_hand_from_butt_m.data(),
+                  out.wrist_force_ratio.data(), out.peak_wrist_force_N.data());
+    return;
+  }
+  // No twist given: every case on the axis, a block of zeros at a time.
+  constexpr std::size_t kBlock = 256;
+  static const double kZeros[kBlock] = {};
+  for (std::size_t b = 0; b < n; b += kBlock) {
+    const std::size_t m = std::min(kBlock, n - b);
+    outcomes_loop(m, in.body_mass_kg.data() + b, in.body_com_from_butt_m.data() + b,
+                  in.body_I_cm_kg_m2.data() + b, in.hand_from_butt_m.data() + b,
+                  in.hand_mass_kg.data() + b, in.forearm_equivalent_mass_kg.data() + b,
+                  in.ball_mass_kg.data() + b, in.ball_speed_m_s.data() + b, in.cor.data() + b,
+                  in.impact_duration_s.data() + b, in.impact_from_butt_m.data() + b, kZeros,
+                  out.effective_mass_kg.data() + b, out.apparent_cor.data() + b,
+                  out.impulse_N_s.data() + b, out.peak_impact_force_N.data() + b,
+                  out.cop_hand_from_butt_m.data() + b, out.wrist_force_ratio.data() + b,
+                  out.peak_wrist_force_N.data() + b);
+  }
 }
 
 void rigid_outcomes(std::span<const RigidCase> cases, std::span<RigidOutcome> out) {
@@ -200,9 +235,9 @@ void rigid_outcomes(std::span<const RigidCase> cases, std::span<RigidOutcome> ou
     throw std::invalid_argument("rigid_outcomes: " + std::to_string(cases.size()) +
                                 " cases but room for " + std::to_string(out.size()) + " outcomes");
   }
-  // A block at a time laid out as arrays (18 kB on the stack), then back.
+  // A block at a time laid out as arrays (19 kB on the stack), then back.
   constexpr std::size_t kBlock = 128;
-  constexpr std::size_t kIn = 11, kOut = 7;
+  constexpr std::size_t kIn = 12, kOut = 7;
   double a[kIn][kBlock];
   double b[kOut][kBlock];
   for (std::size_t begin = 0; begin < cases.size(); begin += kBlock) {
@@ -220,9 +255,10 @@ void rigid_outcomes(std::span<const RigidCase> cases, std::span<RigidOutcome> ou
       a[8][i] = c.cor;
       a[9][i] = c.impact_duration_s;
       a[10][i] = c.impact_from_butt_m;
+      a[11][i] = c.impact_twist_per_kg;
     }
-    outcomes_loop(n, a[0], a[1], a[2], a[3], a[4], a[5], a[6], a[7], a[8], a[9], a[10], b[0], b[1],
-                  b[2], b[3], b[4], b[5], b[6]);
+    outcomes_loop(n, a[0], a[1], a[2], a[3], a[4], a[5], a[6], a[7], a[8], a[9], a[10], a[11], b[0],
+                  b[1], b[2], b[3], b[4], b[5], b[6]);
     for (std::size_t i = 0; i < n; ++i) {
       out[begin + i] = RigidOutcome{b[0][i], b[1][i], b[2][i], b[3][i], b[4][i], b[5][i], b[6][i]};
     }

@@ -34,6 +34,13 @@ inline double effective_mass(double M, double c, double I, double x) {
   return b == 0.0 ? M : general;
 }
 
+// Eq. (17) with the twist about the long axis of an impact a distance y off it:
+// 1/M_eff = 1/M + b^2/I_cm + y^2/I_polar, written M_eff,axis / (1 + M_eff,axis t)
+// with t = y^2 / I_polar [1/kg], so that t = 0 gives M_eff,axis exactly.
+inline double twisted_effective_mass(double axis_effective_mass_kg, double twist_per_kg) {
+  return axis_effective_mass_kg / (1.0 + axis_effective_mass_kg * twist_per_kg);
+}
+
 // Cross (2004) Eq. (16): e_A = (e M_eff - m) / (M_eff + m).
 inline double apparent_cor(double cor, double effective_mass_kg, double ball_mass_kg) {
   return (cor * effective_mass_kg - ball_mass_kg) / (effective_mass_kg + ball_mass_kg);

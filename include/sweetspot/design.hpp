@@ -7,6 +7,7 @@
 
 #include "sweetspot/ball_contact.hpp"
 #include "sweetspot/beam_modes.hpp"
+#include "sweetspot/head_geometry.hpp"
 #include "sweetspot/implement.hpp"
 #include "sweetspot/string_bed.hpp"
 
@@ -84,7 +85,22 @@ struct Design {
   // False when a design file leaves the frame's COR to its default: with a
   // string tension and the frame's stiffness, "auto" then solves the collision.
   bool cor_given = true;
+  // The second dimension (head_geometry.hpp): the impact's distance off the
+  // long axis, y [m] (either sign, |y| <= L); the measured polar inertia of the
+  // implement without its point masses (its twistweight) [kg m^2], > 0; the
+  // head, from which the polar inertia is estimated when not measured.
+  double impact_off_axis_m = 0.0;
+  std::optional<double> twistweight_kg_m2{};
+  std::optional<HeadShape> head{};
 };
+
+// The polar inertia of the implement about its long axis [kg m^2]: the
+// measured twistweight, else the estimate from the head, plus m y^2 for every
+// point mass; std::nullopt when neither twistweight nor head is given.
+std::optional<double> polar_inertia_kg_m2(const Design& design);
+
+// Whether the polar inertia is the head's estimate rather than measured.
+bool polar_inertia_estimated(const Design& design);
 
 // Throws std::invalid_argument if any value is out of range. The message
 // starts with the value's JSON pointer relative to a design file

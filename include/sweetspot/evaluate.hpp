@@ -46,6 +46,22 @@ struct Evaluation {
   double wrist_force_ratio = 0.0;                        // F_w / F, Eq. (11)
   double peak_wrist_force_N = 0.0;                       // |F_w / F| F0
 
+  // The second dimension (head_geometry.hpp): the impact's distance off the long
+  // axis, the polar inertia about that axis (frame plus point masses; absent when
+  // neither a twistweight nor a head is given), and what the twist does.
+  double impact_off_axis_m = 0.0;
+  std::optional<double> polar_inertia_kg_m2;
+  bool polar_inertia_estimated = false;  // from the head's size, not measured
+  // The handle's roll rate about the long axis just after the impact,
+  // J y / I_polar [rad/s] (free implement, as Eq. 17), signed like y; 0 on the axis.
+  double twist_rate_rad_s = 0.0;
+  // The peak torque of the impact about the long axis, F0 |y| [N m]: what the
+  // hand must supply to stop the handle turning in it. The paper's hand is a
+  // point mass on the axis, so its model passes no torque about the long axis to
+  // the forearm; this is the upper bound, reached by a grip that lets no roll
+  // through (see README, "The second dimension").
+  double peak_twist_torque_N_m = 0.0;
+
   // The flexible frame, when evaluated with Fidelity::kModal or kResponse.
   std::optional<ModalOutputs> modal;
 
@@ -143,7 +159,12 @@ class ImpactSweep {
  public:
   // Validates the design; throws std::invalid_argument like evaluate().
   explicit ImpactSweep(const Design& design);
+  // At the design's distance off the axis (Design::impact_off_axis_m).
   Evaluation at(double impact_from_butt_m) const;
+  // The same at a distance `off_axis_m` off the long axis, which needs the
+  // polar inertia (Design::twistweight_kg_m2 or head): throws
+  // std::invalid_argument naming "impact/off_axis_m" without it when y != 0.
+  Evaluation at(double impact_from_butt_m, double off_axis_m) const;
 
  private:
   Design design_;

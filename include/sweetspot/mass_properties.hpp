@@ -8,10 +8,14 @@ namespace sweetspot {
 // The axis of the industry swingweight: 10 cm from the butt.
 inline constexpr double kSwingweightAxisFromButt_m = 0.10;
 
-// A mass at a point on the long axis: lead tape, a hand on a handle.
+// A mass at a point of the implement: lead tape, a hand on a handle. The
+// transverse mass properties below use from_butt_m only (a mass off the axis
+// turns the implement about a transverse axis exactly as one on it); the
+// off-axis distance counts in the polar inertia (head_geometry.hpp).
 struct PointMass {
   double from_butt_m = 0.0;  // [m], in [0, L]
   double mass_kg = 0.0;      // [kg], >= 0
+  double off_axis_m = 0.0;   // y [m], across the face, positive towards 3 o'clock; 0: on the axis
 };
 
 // Total mass, centre of mass and moment of inertia about the centre of mass

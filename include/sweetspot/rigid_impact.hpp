@@ -88,6 +88,20 @@ std::optional<double> hand_held_impact_for_axis(const MassProperties& system,
 // M_eff = M_b / (1 + M_b b^2 / I_cm) [kg]; M_eff <= M_b, equal at the centre of mass.
 double effective_mass(const MassProperties& body, double impact_from_butt_m);
 
+// Eq. (17) extended to an impact a distance y off the long axis, which also
+// turns the implement about that axis (its polar inertia I_polar):
+//   1 / M_eff = 1 / M_b + b^2 / I_cm + y^2 / I_polar  [kg].
+// A rigid body with no product of inertia between the long axis and the
+// transverse one (a head symmetric about the long axis); y = 0 gives Eq. (17)
+// exactly. Throws std::invalid_argument naming "polar_inertia_kg_m2" unless it
+// is > 0 when y != 0, and "off_axis_m" unless y is finite.
+double effective_mass(const MassProperties& body, double impact_from_butt_m, double off_axis_m,
+                      double polar_inertia_kg_m2);
+
+// The twist term of the above, t = y^2 / I_polar [1/kg]: 0 when y = 0 (whatever
+// I_polar, which may then be 0 for "unknown"). Throws like effective_mass().
+double impact_twist_per_kg(double off_axis_m, double polar_inertia_kg_m2);
+
 // Cross (2004) Eq. (16): apparent coefficient of restitution
 // e_A = (e M_eff - m) / (M_eff + m), the ball's rebound speed over its incident
 // speed when the implement is initially at rest. In (-1, 1].
@@ -109,7 +123,7 @@ double peak_impact_force(double ball_mass_kg, double ball_speed_m_s, double appa
 // The whole rigid model of one impact reduced to numbers, for evaluating
 // millions of designs: the implement's mass properties (with its point masses),
 // the hand, the forearm, the ball, the frame's COR, the impact duration and the
-// impact point. Plain data (88 bytes); a Design makes one with rigid_case().
+// impact point. Plain data (104 bytes); a Design makes one with rigid_case().
 struct RigidCase {
   MassProperties body;                      // the implement with its point masses
   PointMass hand;                           // the hand's mass at its centre
@@ -119,6 +133,9 @@ struct RigidCase {
   double cor = 0.0;                // e of Eq. (16)
   double impact_duration_s = 0.0;  // T of Eq. (15), > 0
   double impact_from_butt_m = 0.0;
+  // y^2 / I_polar of an impact off the long axis [1/kg] (impact_twist_per_kg()):
+  // lowers M_eff; 0 on the axis.
+  double impact_twist_per_kg = 0.0;
 };
 
 // What the paper asks of one impact, as plain numbers (56 bytes).
@@ -155,6 +172,8 @@ struct RigidCases {
   std::span<const double> forearm_equivalent_mass_kg;
   std::span<const double> ball_mass_kg, ball_speed_m_s;
   std::span<const double> cor, impact_duration_s, impact_from_butt_m;
+  // RigidCase::impact_twist_per_kg; empty means 0 for every case.
+  std::span<const double> impact_twist_per_kg{};
 };
 
 // The outcomes as one array per field, each as long as the cases.

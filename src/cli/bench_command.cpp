@@ -15,8 +15,8 @@ void BenchCommand::add_to(CLI::App& app) {
       ->add_option(
           "what", what,
           "speed (the rigid model, the command line end to end, the optimizer, each fidelity), "
-          "modes, collision (one solved collision), or all")
-      ->check(CLI::IsMember({"speed", "modes", "collision", "all"}))
+          "modes, collision (one solved collision), map (the string-bed map alone, printed), or all")
+      ->check(CLI::IsMember({"speed", "modes", "collision", "map", "all"}))
       ->capture_default_str();
   command->add_option("--designs", options.designs_dir, "Folder holding studies/")
       ->capture_default_str();
@@ -32,6 +32,10 @@ int BenchCommand::run() const {
   io::BenchOptions with_exe = options;
   std::error_code no_exe;  // the command-line figures run this very program
   with_exe.executable = std::filesystem::read_symlink("/proc/self/exe", no_exe).string();
+  if (what == "map") {
+    std::cout << io::bench_maps(with_exe, std::cout);
+    return kExitOk;
+  }
   if (what == "speed" || what == "all") io::bench_speed(with_exe, std::cout);
   if (what == "modes" || what == "all") io::bench_modes(with_exe, std::cout);
   if (what == "collision" || what == "all") io::bench_collision(with_exe, std::cout);

@@ -109,6 +109,19 @@ struct ModesCommand {
   int run() const;
 };
 
+struct MapCommand {
+  CLI::App* command = nullptr;
+  std::string design_path;
+  std::string fidelity = "auto";
+  int columns = 50;
+  int rows = 50;
+  std::string plot;
+  OutputOptions out{"csv", ""};
+
+  void add_to(CLI::App& app);
+  int run() const;
+};
+
 struct ResponseCommand {
   CLI::App* command = nullptr;
   std::string design_path;

@@ -34,6 +34,7 @@ int main(int argc, char** argv) {
   SweepCommand sweep;
   ModesCommand modes;
   ResponseCommand response;
+  MapCommand map;
   BenchCommand bench;
   evaluate.add_to(app);
   compare.add_to(app);
@@ -44,6 +45,7 @@ int main(int argc, char** argv) {
   sweep.add_to(app);
   modes.add_to(app);
   response.add_to(app);
+  map.add_to(app);
   bench.add_to(app);
   // Every --help ends with examples that run as written from the repository.
   const std::pair<const char*, const char*> kExamples[] = {
@@ -135,6 +137,8 @@ int main(int argc, char** argv) {
       status = modes.run();
     else if (*response.command)
       status = response.run();
+    else if (*map.command)
+      status = map.run();
     else if (*bench.command)
       status = bench.run();
   } catch (const CLI::ParseError& e) {

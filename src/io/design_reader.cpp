@@ -9,6 +9,7 @@
 
 #include "io/input_error.hpp"
 #include "io/outputs.hpp"
+#include "sweetspot/head_geometry.hpp"
 #include "sweetspot/rigid_impact.hpp"
 
 namespace sweetspot::io {
@@ -89,9 +90,22 @@ Section read_section(ObjectReader& r) {
   return section;
 }
 
-std::vector<PointMass> read_point_masses(ObjectReader& implement, const std::string& source,
-                                         KeyMap* keys) {
-  std::vector<PointMass> points;
+// A point mass as the file places it: on the axis from the butt or the tip
+// (optionally off it), or at clock positions on the hoop, each piece of mass_*.
+struct PointMassSpec {
+  std::size_t index = 0;  // in the file's list
+  double mass_kg = 0.0;
+  std::optional<double> from_butt_m, from_tip_m;
+  double off_axis_m = 0.0;
+  std::vector<double> clock_hours;  // a piece at each; empty: on the axis (or off_axis_m)
+  bool handle = false;              // under the butt cap
+  std::string pointer;              // of this entry
+  std::string where_key;            // the key that placed it
+};
+
+std::vector<PointMassSpec> read_point_masses(ObjectReader& implement, const std::string& source,
+                                             KeyMap* keys) {
+  std::vector<PointMassSpec> points;
   const Json* list = implement.child("point_masses");
   if (!list) return points;
   const std::string pointer = implement.pointer_of("point_masses");
@@ -101,19 +115,182 @@ std::vector<PointMass> read_point_masses(ObjectReader& implement, const std::str
     const std::string index = std::to_string(i);
     ObjectReader r((*list)[i], pointer + "/" + index, "implement/point_masses/" + index, source,
                    keys);
-    const auto at = r.quantity("from_butt", Dimension::kLength);
+    PointMassSpec spec;
+    spec.index = i;
+    spec.pointer = r.pointer();
     const auto mass = r.quantity("mass", Dimension::kMass);
-    if (!at) r.fail("", "missing from_butt_m (or from_butt_cm, from_butt_in)");
     if (!mass) r.fail("", "missing mass_kg (or mass_g)");
-    r.finish({"from_butt_m", "mass_kg"});
-    points.push_back(PointMass{*at, *mass});
+    spec.mass_kg = *mass;
+    spec.from_butt_m = r.quantity("from_butt", Dimension::kLength);
+    spec.from_tip_m = r.quantity("from_tip", Dimension::kLength);
+    const auto off_axis = r.quantity("off_axis", Dimension::kLength);
+    const bool clock = r.has("clock");
+    const int placed = (spec.from_butt_m ? 1 : 0) + (spec.from_tip_m ? 1 : 0) + (clock ? 1 : 0);
+    if (placed == 0) {
+      r.fail("",
+             "missing its place: from_butt_m or from_tip_m (or _cm, _in), or clock (12, "
+             "[3, 9], \"throat\", \"handle\")");
+    }
+    if (placed > 1) {
+      r.fail(clock ? "clock" : r.one_of(spellings("from_tip", Dimension::kLength)),
+             "give the place once: from_butt_*, from_tip_* or clock");
+    }
+    if (clock && off_axis) {
+      r.fail(r.one_of(spellings("off_axis", Dimension::kLength)),
+             "contradicts /clock, which places the mass on the hoop");
+    }
+    spec.off_axis_m = off_axis.value_or(0.0);
+    if (clock) {
+      spec.where_key = "clock";
+      const Json& value = *r.child("clock");
+      const auto hours = [&](const Json& item) {
+        if (item.is_number()) {
+          const double h = item.get<double>();
+          if (!(h >= 0.0 && h <= 12.0)) {
+            r.fail("clock", "an hour must be in [0, 12] (12 the tip, 3 and 9 the sides), got " +
+                                brief(item));
+          }
+          spec.clock_hours.push_back(h);
+          return;
+        }
+        if (item.is_string() && item.get<std::string>() == "throat") {
+          spec.clock_hours.push_back(6.0);
+          return;
+        }
+        if (item.is_string() && item.get<std::string>() == "handle" && value.is_string()) {
+          spec.handle = true;
+          return;
+        }
+        r.fail("clock",
+               "expected an hour in [0, 12], a list of hours ([3, 9]), \"throat\" or "
+               "\"handle\", got " +
+                   brief(value));
+      };
+      if (value.is_array()) {
+        if (value.empty() || value.size() > 12)
+          r.fail("clock", "expected 1 to 12 hours, got " + brief(value));
+        for (const Json& item : value) hours(item);
+      } else {
+        hours(value);
+      }
+    } else {
+      std::vector<std::string> keys_given = spellings("from_butt", Dimension::kLength);
+      for (const std::string& k : spellings("from_tip", Dimension::kLength))
+        keys_given.push_back(k);
+      spec.where_key = r.one_of(keys_given);
+    }
+    r.finish({"from_butt_m", "from_tip_m", "mass_kg", "off_axis_m", "clock"});
+    points.push_back(std::move(spec));
   }
   return points;
+}
+
+// The point masses on an implement of length L with this head: a clock list
+// becomes one point mass per hour. Each is checked here against the file's
+// entry (the core would name the expanded list's index).
+std::vector<PointMass> place_point_masses(const std::vector<PointMassSpec>& specs, double L,
+                                          const std::optional<HeadShape>& head,
+                                          const std::string& source) {
+  std::vector<PointMass> points;
+  for (const PointMassSpec& spec : specs) {
+    const auto fail = [&](const std::string& key, const std::string& detail) {
+      throw InputError(source, key.empty() ? spec.pointer : spec.pointer + "/" + key, detail);
+    };
+    if (!(spec.mass_kg >= 0.0 && spec.mass_kg <= kMaxMass_kg)) {
+      fail("", "mass must be in [0, " + brief(Json(kMaxMass_kg)) + "] kg, got " +
+                   brief(Json(spec.mass_kg)) + " kg");
+    }
+    if (spec.handle) {
+      points.push_back(PointMass{std::min(kHandleWeightFromButt_m, L), spec.mass_kg, 0.0});
+      continue;
+    }
+    if (!spec.clock_hours.empty()) {
+      if (!head) {
+        fail("clock",
+             "a clock position needs the head: give /implement/headsize_sq_in (or headsize_cm2)");
+      }
+      for (const double h : spec.clock_hours) {
+        try {
+          const FacePoint p = clock_position(*head, L, h);
+          points.push_back(PointMass{p.from_butt_m, spec.mass_kg, p.off_axis_m});
+        } catch (const std::invalid_argument& error) {
+          throw InputError(source, "/implement", error.what());
+        }
+      }
+      continue;
+    }
+    const double x = spec.from_butt_m ? *spec.from_butt_m : L - *spec.from_tip_m;
+    const double given = spec.from_butt_m ? *spec.from_butt_m : *spec.from_tip_m;
+    if (!(given >= 0.0 && given <= L)) {
+      fail(spec.where_key, "must be in [0, " + brief(Json(L)) + "] m (on the implement), got " +
+                               brief(Json(given)) + " m");
+    }
+    if (!(spec.off_axis_m >= -L && spec.off_axis_m <= L)) {
+      fail("off_axis_m", "must be in [-" + brief(Json(L)) + ", " + brief(Json(L)) + "] m, got " +
+                             brief(Json(spec.off_axis_m)) + " m");
+    }
+    points.push_back(PointMass{x, spec.mass_kg, spec.off_axis_m});
+  }
+  return points;
+}
+
+// The head (implement.headsize_sq_in or headsize_cm2, head_aspect_ratio,
+// hoop_width_*) and the measured twistweight, when given.
+struct HeadRead {
+  std::optional<HeadShape> head;
+  std::optional<double> twistweight_kg_m2;
+};
+
+HeadRead read_head(ObjectReader& r) {
+  HeadRead out;
+  const std::string key = r.one_of({"headsize_sq_in", "headsize_cm2"});
+  if (!key.empty()) {
+    const double given = *r.number(key);
+    HeadShape head;
+    head.area_m2 = given * (key == "headsize_sq_in" ? 0.0254 * 0.0254 : 1e-4);
+    if (!(head.area_m2 > 0.0)) r.fail(key, "must be > 0, got " + brief(Json(given)));
+    if (const auto aspect = r.number("head_aspect_ratio")) {
+      if (!(*aspect >= 1.0 && *aspect <= 10.0)) {
+        r.fail("head_aspect_ratio",
+               "must be in [1, 10] (strung length over width), got " + brief(Json(*aspect)));
+      }
+      head.aspect_ratio = *aspect;
+    }
+    if (const auto hoop = r.quantity("hoop_width", Dimension::kLength)) {
+      if (!(*hoop >= 0.0 && *hoop <= 1.0)) {
+        r.fail(r.one_of(spellings("hoop_width", Dimension::kLength)),
+               "must be in [0, 1] m, got " + brief(Json(*hoop)) + " m");
+      }
+      head.hoop_width_m = *hoop;
+    }
+    r.record("headsize", key);
+    out.head = head;
+  } else {
+    for (const char* shape_key :
+         {"head_aspect_ratio", "hoop_width_m", "hoop_width_cm", "hoop_width_mm", "hoop_width_in"}) {
+      if (r.has(shape_key)) r.fail(shape_key, "describes the head: give headsize_sq_in with it");
+    }
+  }
+  out.twistweight_kg_m2 = r.quantity("twistweight", Dimension::kInertia);
+  if (out.twistweight_kg_m2 && !(*out.twistweight_kg_m2 > 0.0)) {
+    r.fail(r.one_of(spellings("twistweight", Dimension::kInertia)),
+           "must be > 0, got " + brief(Json(*out.twistweight_kg_m2 * 1e4)) + " kg cm^2");
+  }
+  return out;
+}
+
+const std::vector<std::string> kHeadKeys{"headsize_sq_in", "headsize_cm2", "head_aspect_ratio",
+                                         "hoop_width_m", "twistweight_kg_m2"};
+
+std::vector<std::string> with_head_keys(std::vector<std::string> keys) {
+  keys.insert(keys.end(), kHeadKeys.begin(), kHeadKeys.end());
+  return keys;
 }
 
 struct ImplementRead {
   Implement implement;
   std::string form;
+  HeadRead head;
 };
 
 // `described`, when given, receives the implement's numbers before it is built.
@@ -123,7 +300,24 @@ ImplementRead read_implement(const Json& document, const std::string& source, Ke
   if (it == document.end())
     throw InputError(source, "/implement", "missing: every design needs an implement");
   ObjectReader r(*it, "/implement", "implement", source, keys);
-  std::vector<PointMass> points = read_point_masses(r, source, keys);
+  const std::vector<PointMassSpec> point_specs = read_point_masses(r, source, keys);
+  const HeadRead head = read_head(r);
+  std::vector<PointMass> points;
+  // The head is checked against the implement's length by validate(); here
+  // it places the clock positions, and a head too long for the implement is
+  // named at its key.
+  const auto place = [&](double length_m) {
+    if (head.head) {
+      try {
+        (void)string_bed(*head.head, length_m);
+      } catch (const std::invalid_argument& error) {
+        const std::string message = error.what();
+        r.fail(r.one_of({"headsize_sq_in", "headsize_cm2"}),
+               message.substr(message.find(": ") + 2));
+      }
+    }
+    points = place_point_masses(point_specs, length_m, head.head, source);
+  };
   try {
     if (r.has("sections")) {
       const Json* list = r.child("sections");
@@ -137,13 +331,16 @@ ImplementRead read_implement(const Json& document, const std::string& source, Ke
                        "implement/sections/" + index, source, keys);
         sections.push_back(read_section(s));
       }
-      r.finish({"sections", "point_masses"});
+      r.finish(with_head_keys({"sections", "point_masses"}));
+      double total_length_m = 0.0;
+      for (const Section& section : sections) total_length_m += section.length_m;
+      if (std::isfinite(total_length_m) && total_length_m > 0.0) place(total_length_m);
       if (described) {
         described->form = ImplementDescription::Form::kSections;
         described->sections = sections;
         described->point_masses = points;
       }
-      return {Implement::from_sections(std::move(sections), std::move(points)), "sections"};
+      return {Implement::from_sections(std::move(sections), std::move(points)), "sections", head};
     }
     const auto length = r.quantity("length", Dimension::kLength);
     const auto mass = r.quantity("mass", Dimension::kMass);
@@ -151,7 +348,9 @@ ImplementRead read_implement(const Json& document, const std::string& source, Ke
     if (!mass) r.fail("", "missing mass_kg (or mass_g), or give sections");
     if (r.has("head_to_handle_mass_ratio")) {
       const double ratio = *r.number("head_to_handle_mass_ratio");
-      r.finish({"length_m", "mass_kg", "head_to_handle_mass_ratio", "point_masses"});
+      r.finish(
+          with_head_keys({"length_m", "mass_kg", "head_to_handle_mass_ratio", "point_masses"}));
+      place(*length);
       if (described) {
         *described = ImplementDescription{.form = ImplementDescription::Form::kHeadToHandleRatio,
                                           .length_m = *length,
@@ -161,7 +360,7 @@ ImplementRead read_implement(const Json& document, const std::string& source, Ke
                                           .point_masses = points};
       }
       return {Implement::paper_racquet(*length, *mass, ratio, std::move(points)),
-              "head_to_handle_mass_ratio"};
+              "head_to_handle_mass_ratio", head};
     }
     const std::string balance_key =
         r.one_of({"balance_from_butt_m", "balance_cm", "balance_pts_hl"});
@@ -185,8 +384,9 @@ ImplementRead read_implement(const Json& document, const std::string& source, Ke
     const auto swingweight = r.quantity("swingweight", Dimension::kInertia);
     if (!swingweight)
       r.fail("", "missing swingweight_kg_cm2 (with the balance it fixes the inertia)");
-    r.finish({"length_m", "mass_kg", "balance_from_butt_m", "balance_cm", "balance_pts_hl",
-              "swingweight_kg_cm2", "point_masses"});
+    r.finish(with_head_keys({"length_m", "mass_kg", "balance_from_butt_m", "balance_cm",
+                             "balance_pts_hl", "swingweight_kg_cm2", "point_masses"}));
+    place(*length);
     if (described) {
       *described = ImplementDescription{.form = ImplementDescription::Form::kSpecs,
                                         .length_m = *length,
@@ -199,7 +399,7 @@ ImplementRead read_implement(const Json& document, const std::string& source, Ke
     }
     return {Implement::from_specs(IndustrySpecs{*length, *mass, balance, *swingweight},
                                   std::move(points)),
-            "specs"};
+            "specs", head};
   } catch (const std::invalid_argument& error) {
     if (!keys) throw;  // a lean read: the caller reads again with the key map
     rethrow_at(error, "implement/", *keys, source, "/implement");
@@ -269,6 +469,13 @@ DesignFile read_design_impl(const Json& document, const std::string& source, boo
 
   const Design defaults{implement.implement};
   Design design = defaults;
+  design.head = implement.head.head;
+  design.twistweight_kg_m2 = implement.head.twistweight_kg_m2;
+  if (design.twistweight_kg_m2) {
+    note("implement/twistweight_kg_m2", "given");
+  } else if (design.head) {
+    note("implement/twistweight_kg_m2", "estimated from the head's size (about +-15 %)");
+  }
 
   Part frame(top, "frame", keys, provenance);
   design.cor = frame.get_number("cor", defaults.cor);
@@ -428,7 +635,11 @@ DesignFile read_design_impl(const Json& document, const std::string& source, boo
       design.impact_from_butt_m = L - 0.05;
       note("impact/from_butt_m", "default (5 cm from the tip)");
     }
-    r.finish({"from_tip_m", "from_butt_m"});
+    if (const auto off_axis = r.quantity("off_axis", Dimension::kLength)) {
+      design.impact_off_axis_m = *off_axis;
+      note("impact/off_axis_m", "given");
+    }
+    r.finish({"from_tip_m", "from_butt_m", "off_axis_m"});
   }
 
   Json reference;
@@ -523,9 +734,17 @@ Json design_to_json(const DesignFile& file) {
   if (!implement.point_masses().empty()) {
     impl["point_masses"] = Json::array();
     for (const PointMass& p : implement.point_masses()) {
-      impl["point_masses"].push_back({{"from_butt_m", p.from_butt_m}, {"mass_kg", p.mass_kg}});
+      Json point{{"from_butt_m", p.from_butt_m}, {"mass_kg", p.mass_kg}};
+      if (p.off_axis_m != 0.0) point["off_axis_m"] = p.off_axis_m;
+      impl["point_masses"].push_back(point);
     }
   }
+  if (d.head) {
+    impl["headsize_cm2"] = d.head->area_m2 * 1e4;
+    impl["head_aspect_ratio"] = d.head->aspect_ratio;
+    impl["hoop_width_m"] = d.head->hoop_width_m;
+  }
+  if (d.twistweight_kg_m2) impl["twistweight_kg_m2"] = *d.twistweight_kg_m2;
   // A strung design without a COR has it derived by the solved collision.
   j["frame"] = d.cor_rigid                 ? Json{{"cor_rigid", *d.cor_rigid}}
                : d.cor_given || !d.strings ? Json{{"cor", d.cor}}
@@ -570,6 +789,7 @@ Json design_to_json(const DesignFile& file) {
                             {"damping_exponent", c.damping_exponent}};
   }
   j["impact"] = {{"from_butt_m", d.impact_from_butt_m}};
+  if (d.impact_off_axis_m != 0.0) j["impact"]["off_axis_m"] = d.impact_off_axis_m;
   return j;
 }
 

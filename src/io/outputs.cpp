@@ -14,6 +14,8 @@ constexpr std::string_view kNeedsModes =
     "needs the modal model: give the frame's stiffness (frame EI_N_m2 or fundamental_free_Hz) "
     "and evaluate with --fidelity modal or auto";
 
+constexpr std::string_view kNoPolarInertia =
+    "no polar inertia: give implement/twistweight_kg_cm2 or implement/headsize_sq_in";
 constexpr std::string_view kNeedsResponse =
     "needs the response model: give the frame's stiffness and evaluate with --fidelity response "
     "(or auto with frame cor_rigid)";
@@ -147,6 +149,40 @@ const std::array kOutputs{
     OutputSpec{"system_I_cm_kg_m2", "kg m^2", "inertia of implement plus hand about h, I_cm",
                [](const Evaluation& e) -> std::optional<double> { return e.system_I_cm_kg_m2; },
                ""},
+    // The second dimension: twist about the long axis (head_geometry.hpp).
+    OutputSpec{"twistweight_kg_cm2", "kg cm^2",
+               "polar inertia about the long axis with point masses (twistweight): measured, or "
+               "estimated from the head's size (about +-15 %)",
+               [](const Evaluation& e) -> std::optional<double> {
+                 if (!e.polar_inertia_kg_m2) return std::nullopt;
+                 return *e.polar_inertia_kg_m2 * kCm2PerM2;
+               },
+               kNoPolarInertia},
+    OutputSpec{"polar_inertia_kg_m2", "kg m^2", "the same in SI, I_polar",
+               [](const Evaluation& e) { return e.polar_inertia_kg_m2; }, kNoPolarInertia},
+    OutputSpec{"impact_off_axis_m", "m",
+               "impact point off the long axis, y (> 0 towards 3 o'clock)",
+               [](const Evaluation& e) -> std::optional<double> {
+                 if (!e.polar_inertia_kg_m2) return std::nullopt;
+                 return e.impact_off_axis_m;
+               },
+               kNoPolarInertia},
+    OutputSpec{
+        "twist_rate_rad_s", "rad/s",
+        "roll rate of the free implement about its long axis after the impact, J y / I_polar",
+        [](const Evaluation& e) -> std::optional<double> {
+          if (!e.polar_inertia_kg_m2) return std::nullopt;
+          return e.twist_rate_rad_s;
+        },
+        kNoPolarInertia},
+    OutputSpec{"peak_twist_torque_N_m", "N m",
+               "peak torque about the long axis, F0 |y|: what a grip that lets no roll through "
+               "takes",
+               [](const Evaluation& e) -> std::optional<double> {
+                 if (!e.polar_inertia_kg_m2) return std::nullopt;
+                 return e.peak_twist_torque_N_m;
+               },
+               kNoPolarInertia, true},
 };
 
 }  // namespace

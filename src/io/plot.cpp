@@ -258,6 +258,12 @@ std::string gnuplot_script(const Plot& plot, const std::string& png_path) {
 }
 
 bool render_png(const Plot& plot, const std::string& png_path, std::string* why) {
+  return render_script_png(gnuplot_script(plot, ""), png_path, why);
+}
+
+std::string gnuplot_label(const std::string& text) { return label(text); }
+
+bool render_script_png(const std::string& script, const std::string& png_path, std::string* why) {
   try {
     OutputFile out(png_path);
     // gnuplot renders into a temporary file: beside a regular target, or in
@@ -265,7 +271,7 @@ bool render_png(const Plot& plot, const std::string& png_path, std::string* why)
     std::optional<TemporaryFile> scratch;
     if (out.direct()) scratch.emplace(scratch_directory(), "sweetspot-plot", png_path);
     const int png_fd = out.direct() ? scratch->fd() : out.fd();
-    run_gnuplot(gnuplot_script(plot, ""), png_fd);
+    run_gnuplot(script, png_fd);
     const std::string problem = png_problem(png_fd);
     if (!problem.empty()) throw PlotFailure(problem);
     if (out.direct()) copy_file(png_fd, out);

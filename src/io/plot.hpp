@@ -53,4 +53,12 @@ std::string gnuplot_script(const Plot& plot, const std::string& png_path);
 // as it was.
 bool render_png(const Plot& plot, const std::string& png_path, std::string* why);
 
+// The same for any gnuplot script that sets a png terminal and no output
+// (a heat map, say): rendered, checked and written like render_png().
+bool render_script_png(const std::string& script, const std::string& png_path, std::string* why);
+
+// `text` as a gnuplot string that prints literally (quotes and enhanced-text
+// markup escaped), for scripts built outside this file.
+std::string gnuplot_label(const std::string& text);
+
 }  // namespace sweetspot::io

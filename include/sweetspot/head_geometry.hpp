@@ -1,0 +1,95 @@
+#pragma once
+
+// The head of a racquet seen from the front: the string bed as an ellipse, the
+// hoop (the frame around it) where lead tape goes, clock positions on it, and
+// an estimate of the implement's polar inertia (its twistweight) from the
+// head's size when it was not measured.
+//
+// Coordinates: x along the long axis from the butt (as everywhere), y across
+// the face, off the long axis, positive towards 3 o'clock (the right-hand side
+// of the face seen with the tip up). 12 o'clock is the tip.
+
+#include <optional>
+
+#include "sweetspot/implement.hpp"
+
+namespace sweetspot {
+
+// The default shape of a head. The industry "head size" is the strung area,
+// pi/4 times the strung length times the strung width; a modern 100 in^2 head
+// is about 13.5 in long and 10 in wide, so the strung length is 1.35 times the
+// width (ITF rules allow at most 15.5 in by 11.5 in, aspect 1.35 as well).
+inline constexpr double kDefaultHeadAspectRatio = 1.35;
+// The hoop's width in the plane of the face (the frame's tube with its
+// grommets, 13-18 mm on graphite frames): lead tape sits on its centre line,
+// and the string bed ends this far below the tip.
+inline constexpr double kDefaultHoopWidth_m = 0.015;
+// Lead "in the handle" goes under the butt cap, this far from the butt.
+inline constexpr double kHandleWeightFromButt_m = 0.02;
+
+// The estimate of the polar inertia from the head (estimated_polar_inertia_kg_m2):
+// the hoop carries half the frame's mass, on its centre line, and a set of
+// strings (17 g) is spread evenly over the string bed. The half comes from a
+// mass budget of a 320 g strung frame: a graphite tube of nearly uniform mass per
+// length, 96 cm of it in the hoop against 34 cm in the two shafts and 19 cm in
+// the handle, plus grip, butt cap, strings and grommets.
+inline constexpr double kHoopMassShare = 0.5;
+inline constexpr double kStringSetMass_kg = 0.017;
+// Its error against 263 strung racquets measured by a retailer's lab (head size,
+// strung mass and twistweight side by side): mean +3.7 %, standard deviation
+// 6.6 %, 81 % of racquets within +-10 %, 90 % within -7.6 % and +14.5 %, the
+// extremes -15 % and +23 %. Taraborrelli et al., Sports Eng. 22:1-9 (2019)
+// report -11 % to +12 % for their geometric model on 416 rackets and up to 25 %
+// with 30 g added: an estimate, not a measurement.
+
+// The head's shape: its strung area and the ratio of strung length to width.
+struct HeadShape {
+  double area_m2 = 0.0645;                        // strung area [m^2], > 0 (100 in^2)
+  double aspect_ratio = kDefaultHeadAspectRatio;  // strung length / strung width, >= 1
+  double hoop_width_m = kDefaultHoopWidth_m;      // [m], >= 0
+};
+
+// The string bed as an ellipse on the implement of length L: its far end
+// hoop_width_m below the tip, semi-axes a (along x) and c (across), pi a c = area.
+struct HeadEllipse {
+  double center_from_butt_m = 0.0;  // [m]
+  double semi_length_m = 0.0;       // a [m]
+  double semi_width_m = 0.0;        // c [m]
+};
+
+// The string bed of `head` on an implement of length `length_m`. Throws
+// std::invalid_argument naming "headsize" when the area is not > 0 or the
+// aspect ratio not in [1, 10], and when the head (with its hoop) would be longer
+// than the implement.
+HeadEllipse string_bed(const HeadShape& head, double length_m);
+
+// Whether (x, y) lies on the string bed (inside or on the ellipse).
+bool on_string_bed(const HeadEllipse& bed, double from_butt_m, double off_axis_m);
+
+// A point of the implement in the plane of the face.
+struct FacePoint {
+  double from_butt_m = 0.0;  // x [m]
+  double off_axis_m = 0.0;   // y [m], positive towards 3 o'clock
+};
+
+// A clock position on the hoop's centre line (the ellipse of semi-axes a + w/2
+// and c + w/2, w the hoop width): the point where the ray from the head's centre
+// at clock angle theta = 30 deg per hour (clockwise from 12, the tip) meets it,
+// r = 1 / sqrt(cos^2 theta / A^2 + sin^2 theta / C^2). 3 and 9 o'clock are at
+// y = +C and -C, 12 at the tip, 6 at the throat. `hours` in [0, 12] (0 is 12);
+// throws std::invalid_argument naming "clock" otherwise.
+FacePoint clock_position(const HeadShape& head, double length_m, double hours);
+
+// The polar inertia about the long axis of a frame of mass `frame_mass_kg`
+// with this head, estimated (see kHoopMassShare):
+//   I = kHoopMassShare M <y^2>_hoop + m_strings c^2 / 4,
+// <y^2>_hoop the mean of y^2 along the hoop's centre line [kg m^2]. Error: see
+// kHoopMassShare. Throws std::invalid_argument for a mass <= 0.
+double estimated_polar_inertia_kg_m2(const HeadShape& head, double length_m, double frame_mass_kg);
+
+// The polar inertia of frame plus point masses about the long axis:
+// I_frame + sum m y^2 [kg m^2] (each point mass's own size neglected).
+double polar_inertia_with_point_masses(double frame_polar_inertia_kg_m2,
+                                       const std::vector<PointMass>& point_masses);
+
+}  // namespace sweetspot

@@ -1,0 +1,75 @@
+// The string bed in two dimensions: `sweetspot map DESIGN.json`.
+
+#include <iostream>
+#include <stdexcept>
+#include <string>
+
+#include "cli/checks.hpp"
+#include "cli/commands.hpp"
+#include "io/design_reader.hpp"
+#include "io/plot.hpp"
+#include "reports/string_bed_map_report.hpp"
+#include "studies/string_bed_map.hpp"
+
+namespace sweetspot::cli {
+
+void MapCommand::add_to(CLI::App& app) {
+  command = app.add_subcommand(
+      "map",
+      "A grid over the string bed: power (apparent COR), shock (peak wrist force) and, with the "
+      "frame's stiffness, feel (vibration energy), as CSV and heat maps");
+  command
+      ->add_option("design", design_path,
+                   "Design file (JSON) with implement headsize_sq_in (or twistweight_kg_cm2)")
+      ->required();
+  command
+      ->add_option("--fidelity", fidelity,
+                   "rigid: power and shock; modal or response: also feel (needs the frame's "
+                   "stiffness); auto: modal when the stiffness is given, else rigid")
+      ->check(CLI::IsMember({"rigid", "modal", "response", "auto"}))
+      ->capture_default_str();
+  command->add_option("--columns", columns, "Grid points along the long axis")
+      ->check(whole_in(2, 1000))
+      ->capture_default_str();
+  command->add_option("--rows", rows, "Grid points across the head")
+      ->check(whole_in(2, 1000))
+      ->capture_default_str();
+  command->add_option("--plot", plot,
+                      "Also render heat maps: FILE-power.png, FILE-shock.png (and FILE-feel.png)");
+  out.add_to(command, {"csv"});
+  command->footer(
+      "Examples:\n"
+      "  sweetspot map designs/racquets/tour-100.json -o tour-100-map.csv\n"
+      "  sweetspot map designs/racquets/tour-100.json --plot maps/tour-100.png > map.csv");
+}
+
+int MapCommand::run() const {
+  const io::DesignFile design = io::load_design(design_path);
+  io::StringBedMapOptions options;
+  options.columns = columns;
+  options.rows = rows;
+  io::StringBedMap map;
+  try {
+    const std::string name = command->count("--fidelity") ? fidelity : design.fidelity;
+    options.fidelity = resolve_fidelity(name == "response" ? "modal" : name, design.design);
+    if (options.fidelity == Fidelity::kResponse) options.fidelity = Fidelity::kModal;
+    map = io::string_bed_map(design.design, options);
+  } catch (const std::invalid_argument& e) {
+    io::rethrow_in(design, e);
+  }
+  const double length_m = design.design.implement.length_m();
+  out.emit(io::string_bed_map_csv(map, length_m));
+  if (plot.empty()) return kExitOk;
+  for (const io::MapQuantity quantity : io::map_quantities(map)) {
+    const std::string png = plot_file(plot, "-" + io::map_quantity_name(quantity));
+    std::string why;
+    if (!io::render_script_png(io::string_bed_heat_map_script(map, quantity, length_m, design.name),
+                               png, &why)) {
+      std::cerr << "sweetspot: cannot write " << io::one_line(png) << ": " << why << "\n";
+      return kExitRuntimeError;
+    }
+  }
+  return kExitOk;
+}
+
+}  // namespace sweetspot::cli

@@ -1,0 +1,113 @@
+#include "studies/string_bed_map.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "sweetspot/frame_modes.hpp"
+#include "sweetspot/impact_response.hpp"
+#include "sweetspot/rigid_impact.hpp"
+#include "sweetspot/string_bed.hpp"
+
+namespace sweetspot::io {
+namespace {
+
+void check_grid(const char* name, int n) {
+  if (!(n >= 2 && n <= 1000)) {
+    throw std::invalid_argument(std::string(name) + ": expected a whole number in [2, 1000], got " +
+                                std::to_string(n));
+  }
+}
+
+}  // namespace
+
+StringBedMap string_bed_map(const Design& design, const StringBedMapOptions& options) {
+  check_grid("--columns", options.columns);
+  check_grid("--rows", options.rows);
+  if (design.cor_rigid) {
+    throw std::invalid_argument(
+        "frame/cor_rigid: a map uses the given COR (frame/cor); a COR derived at every point of "
+        "the string bed is not supported");
+  }
+  // Validates the design and derives the duration at its own impact point.
+  RigidCase base = rigid_case(design);
+  const std::optional<double> polar = polar_inertia_kg_m2(design);
+  if (!polar) {
+    throw std::invalid_argument(
+        "implement: a map of the string bed needs the head's size: give headsize_sq_in (or "
+        "twistweight_kg_cm2, for the default 100 in^2 head)");
+  }
+  StringBedMap map;
+  map.bed = string_bed(design.head.value_or(HeadShape{}), design.implement.length_m());
+  map.columns = options.columns;
+  map.rows = options.rows;
+  map.polar_inertia_kg_m2 = *polar;
+  map.polar_inertia_estimated = polar_inertia_estimated(design);
+  map.fidelity = options.fidelity;
+  const MassProperties system = hand_held_system(design);
+  map.cop_hand_from_butt_m = hand_held_cop_from_butt(system);
+
+  std::optional<ResponseModel> model;
+  if (options.fidelity != Fidelity::kRigid) {
+    if (!has_stiffness(design)) {
+      throw std::invalid_argument(
+          "frame/EI_N_m2: the vibration map needs the frame's stiffness (frame EI_N_m2 or "
+          "fundamental_free_Hz)");
+    }
+    map.node_free_from_butt_m = evaluate_modes(design).node_free_from_butt_m;
+    model = response_model(design, ResponseOptions{});
+  }
+
+  const HeadEllipse& bed = map.bed;
+  const double x0 = bed.center_from_butt_m - bed.semi_length_m;
+  const double dx = 2.0 * bed.semi_length_m / options.columns;
+  const double dy = 2.0 * bed.semi_width_m / options.rows;
+  const MassProperties& body = design.implement.mass_properties();
+  map.points.resize(static_cast<std::size_t>(options.columns) * options.rows);
+  for (int i = 0; i < options.columns; ++i) {
+    const double x = x0 + (i + 0.5) * dx;
+    // With a given duration the vibration per unit impulse depends on x only.
+    std::optional<double> column_kappa;
+    if (model && !design.strings)
+      column_kappa = vibration_compliance(*model, x, base.impact_duration_s);
+    for (int j = 0; j < options.rows; ++j) {
+      // -c + k dy and c - k dy round alike: y_j = -y_{rows-1-j} exactly.
+      // The middle row of an odd count is the axis itself.
+      const double y = 2 * j + 1 == options.rows ? 0.0
+                       : j < options.rows / 2    ? -bed.semi_width_m + (j + 0.5) * dy
+                                                 : bed.semi_width_m - (options.rows - j - 0.5) * dy;
+      StringBedMapPoint& p = map.points[static_cast<std::size_t>(j) * options.columns + i];
+      p.from_butt_m = x;
+      p.off_axis_m = y;
+      p.on_bed = on_string_bed(bed, x, y);
+      if (!p.on_bed) continue;
+      RigidCase c = base;
+      c.impact_from_butt_m = x;
+      c.impact_twist_per_kg = impact_twist_per_kg(y, *polar);
+      if (design.strings) {
+        c.impact_duration_s = tension_impact_duration(*design.strings, design.ball.mass_kg,
+                                                      effective_mass(body, x, y, *polar))
+                                  .duration_s;
+      }
+      const RigidOutcome o = rigid_outcome(c, system);
+      p.effective_mass_kg = o.effective_mass_kg;
+      p.apparent_cor = o.apparent_cor;
+      p.peak_wrist_force_N = o.peak_wrist_force_N;
+      p.peak_twist_torque_N_m = o.peak_impact_force_N * std::abs(y);
+      if (model) {
+        const double kappa =
+            column_kappa ? *column_kappa : vibration_compliance(*model, x, c.impact_duration_s);
+        const double energy_J = 0.5 * o.impulse_N_s * o.impulse_N_s * kappa;
+        // The energy ledger of evaluate(): the frame cannot keep more than the
+        // ball loses; past that the prescribed pulse does not hold (no value).
+        const double v1 = design.ball.speed_m_s;
+        const double ball_loss_J =
+            0.5 * design.ball.mass_kg * v1 * v1 * (1.0 - o.apparent_cor * o.apparent_cor);
+        if (energy_J <= ball_loss_J * (1.0 + 1e-12)) p.vibration_energy_J = energy_J;
+      }
+    }
+  }
+  return map;
+}
+
+}  // namespace sweetspot::io

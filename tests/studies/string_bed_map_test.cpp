@@ -1,0 +1,106 @@
+// The string-bed map: each point is evaluate() at (x, y); a head symmetric
+// about the long axis gives a map symmetric in y, exactly.
+#include "studies/string_bed_map.hpp"
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstring>
+
+#include "sweetspot/evaluate.hpp"
+#include "sweetspot/string_bed.hpp"
+
+namespace sweetspot::io {
+namespace {
+
+constexpr double kRoundOff = 1e-12;
+
+Design racquet() {
+  Design d{Implement::paper_racquet(0.6858, 0.32, 1.0)};
+  d.head = HeadShape{100 * 0.0254 * 0.0254};
+  d.impact_from_butt_m = 0.52;
+  return d;
+}
+
+bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+TEST_CASE("Every map point is the evaluation of an impact there") {
+  Design d = racquet();
+  const StringBedMap map = string_bed_map(d, StringBedMapOptions{9, 7});
+  REQUIRE(map.points.size() == 63);
+  int on_bed = 0;
+  for (const StringBedMapPoint& p : map.points) {
+    if (!p.on_bed) continue;
+    ++on_bed;
+    Design at = d;
+    at.impact_from_butt_m = p.from_butt_m;
+    at.impact_off_axis_m = p.off_axis_m;
+    const Evaluation e = evaluate(at);
+    CHECK(p.apparent_cor == Approx(e.apparent_cor).epsilon(kRoundOff));
+    CHECK(p.peak_wrist_force_N == Approx(e.peak_wrist_force_N).epsilon(kRoundOff));
+    CHECK(p.peak_twist_torque_N_m == Approx(e.peak_twist_torque_N_m).epsilon(kRoundOff));
+  }
+  // A 9 x 7 grid of cell centres over an ellipse covers about pi/4 of it.
+  CHECK(on_bed > 63 / 2);
+  CHECK(on_bed < 63);
+}
+
+TEST_CASE("A map of a symmetric head is symmetric in y, bit for bit") {
+  Design d = racquet();
+  d.strings = StringBed{};  // the duration from the tension varies over the bed too
+  const StringBedMap map = string_bed_map(d, StringBedMapOptions{20, 15});
+  for (int j = 0; j < map.rows; ++j) {
+    for (int i = 0; i < map.columns; ++i) {
+      const StringBedMapPoint& a = map.points[j * map.columns + i];
+      const StringBedMapPoint& b = map.points[(map.rows - 1 - j) * map.columns + i];
+      CHECK(a.off_axis_m == -b.off_axis_m);
+      CHECK(a.on_bed == b.on_bed);
+      CHECK(same_bits(a.apparent_cor, b.apparent_cor));
+      CHECK(same_bits(a.peak_wrist_force_N, b.peak_wrist_force_N));
+    }
+  }
+}
+
+TEST_CASE("Power falls and shock is least along the hand-held COP's line") {
+  const StringBedMap map = string_bed_map(racquet(), StringBedMapOptions{30, 31});
+  // The middle row is the long axis (31 rows: y = 0 exactly).
+  const int mid = 15;
+  CHECK(map.points[mid * 30].off_axis_m == 0.0);
+  for (int i = 0; i < 30; ++i) {
+    const StringBedMapPoint& axis = map.points[mid * 30 + i];
+    const StringBedMapPoint& off = map.points[(mid + 3) * 30 + i];
+    if (!off.on_bed) continue;
+    CHECK(off.apparent_cor < axis.apparent_cor);
+  }
+  REQUIRE(map.cop_hand_from_butt_m);
+}
+
+TEST_CASE("The feel map is the vibration energy of the response model at each point") {
+  Design d = racquet();
+  d.stiffness.fundamental_free_Hz = 150.0;
+  const StringBedMap map = string_bed_map(d, StringBedMapOptions{8, 5, Fidelity::kModal});
+  REQUIRE(map.node_free_from_butt_m);
+  for (const StringBedMapPoint& p : map.points) {
+    if (!p.on_bed) continue;
+    Design at = d;
+    at.impact_from_butt_m = p.from_butt_m;
+    at.impact_off_axis_m = p.off_axis_m;
+    if (!p.vibration_energy_J) {
+      // Past the energy ledger's limit evaluate() refuses the design too.
+      CHECK_THROWS_WITH(evaluate(at, Fidelity::kResponse), Catch::StartsWith("frame/cor"));
+      continue;
+    }
+    const Evaluation e = evaluate(at, Fidelity::kResponse);
+    CHECK(*p.vibration_energy_J == Approx(*e.vibration_energy_J).epsilon(1e-9));
+  }
+}
+
+TEST_CASE("A map needs the head or a twistweight, and a grid of at least 2 x 2") {
+  Design d{Implement::paper_racquet(0.6858, 0.32, 1.0)};
+  CHECK_THROWS_WITH(string_bed_map(d),
+                    Catch::StartsWith("implement: ") && Catch::Contains("headsize_sq_in"));
+  CHECK_THROWS_WITH(string_bed_map(racquet(), StringBedMapOptions{1, 50}),
+                    Catch::StartsWith("--columns"));
+}
+
+}  // namespace
+}  // namespace sweetspot::io
