@@ -1213,11 +1213,14 @@ TEST_CASE("evaluate reads a design from standard input, and opens with the sweet
 
 TEST_CASE("sweep --format json writes one JSON object per grid point, with decimal grid points") {
   Sandbox box;
-  box.file("r.json", kRacquet);
+  // The design gives the impact in metres; the sweep names it in centimetres.
+  box.file("r.json", R"({"implement": {"length_in": 27, "mass_g": 318, "balance_cm": 32.5,
+      "swingweight_kg_cm2": 325}, "impact": {"from_tip_m": 0.18}})");
   const fs::path study = box.file("s.json", R"({"design": "r.json", "variables": [
       {"path": "/impact/from_tip_cm", "min": 10, "max": 30, "points": 3}],
       "outputs": ["peak_wrist_force_N"]})");
   const Run run = box.run("sweep -q --format json " + study.string());
+  INFO(run.err);
   REQUIRE(run.status == 0);
   std::istringstream lines(run.out);
   std::string line;
