@@ -13,6 +13,7 @@
 #include "io/input_error.hpp"
 #include "io/json_reader.hpp"
 #include "io/parallel.hpp"
+#include "reports/summary.hpp"
 #include "studies/batch.hpp"
 
 namespace sweetspot::cli {
@@ -107,11 +108,17 @@ int EvaluateCommand::run() const {
   }
   if (design_path.empty())
     throw CLI::ValidationError("design: a design file (or --batch FILE) is required");
-  const io::DesignFile design = io::load_design(design_path);
+  // A racquet without an impact is evaluated at the centre of its strings.
+  const io::DesignFile design = reports::with_default_impact(io::load_design(design_path));
   // The command line's --fidelity wins over the file's "fidelity".
   const Evaluation result = io::evaluate_design_file(
       design, command->count("--fidelity") ? fidelity : std::string(), tolerance);
-  out.emit(io::evaluation_report(design, result, out.parsed()));
+  std::string answer;
+  if (out.parsed() == io::Format::kMarkdown) {
+    answer =
+        reports::sweet_spot_paragraph(design, reports::find_sweet_spots(design, result, tolerance));
+  }
+  out.emit(io::evaluation_report(design, result, out.parsed(), answer));
   return kExitOk;
 }
 

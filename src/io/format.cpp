@@ -106,7 +106,8 @@ Json evaluation_json(const DesignFile& file, const Evaluation& e) {
   return j;
 }
 
-std::string evaluation_report(const DesignFile& file, const Evaluation& e, Format format) {
+std::string evaluation_report(const DesignFile& file, const Evaluation& e, Format format,
+                              std::string_view answer) {
   if (format == Format::kJson)
     return evaluation_json(file, e).dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
   if (format == Format::kCsv) {
@@ -119,8 +120,10 @@ std::string evaluation_report(const DesignFile& file, const Evaluation& e, Forma
     }
     return header + "\n" + row + "\n";
   }
-  std::string md = fmt::format(
-      "# {}\n\n{} of Cross (2004); source `{}`.{}\n\n", md_cell(file.name),
+  std::string md = fmt::format("# {}\n\n", md_cell(file.name));
+  if (!answer.empty()) md += std::string(answer) + "\n\n";
+  md += fmt::format(
+      "{} of Cross (2004); source `{}`.{}\n\n",
       e.vibration_energy_J ? "Rigid-body model, vibration modes and impact response"
       : e.modal            ? "Rigid-body model and vibration modes"
                            : "Rigid-body model",

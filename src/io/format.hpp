@@ -33,7 +33,9 @@ std::string csv_field(std::string_view text);
 Json evaluation_json(const DesignFile& design, const Evaluation& evaluation);
 
 // The whole evaluation in `format`.
-std::string evaluation_report(const DesignFile& design, const Evaluation& evaluation,
-                              Format format);
+// In Markdown, `answer` (a paragraph of plain sentences, reports/summary.hpp)
+// comes right after the title, before the tables.
+std::string evaluation_report(const DesignFile& design, const Evaluation& evaluation, Format format,
+                              std::string_view answer = {});
 
 }  // namespace sweetspot::io

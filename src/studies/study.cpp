@@ -482,10 +482,15 @@ DesignFile design_at(const Study& study, std::span<const double> x) {
 
 namespace {
 
+// Impact k of a spread, from the tip.
+double spread_from_tip(const ImpactSpread& spread, int k) {
+  return spread.from_tip_lo_m +
+         (spread.from_tip_hi_m - spread.from_tip_lo_m) * k / (spread.points - 1);
+}
+
 // Impact k of a spread, from the butt of an implement `length_m` long.
 double spread_from_butt(const ImpactSpread& spread, double length_m, int k) {
-  return length_m - (spread.from_tip_lo_m +
-                     (spread.from_tip_hi_m - spread.from_tip_lo_m) * k / (spread.points - 1));
+  return length_m - spread_from_tip(spread, k);
 }
 
 // Why an evaluation gives the objective terms no value, or std::nullopt.
@@ -514,10 +519,7 @@ std::optional<std::string> objective_undefined(const Study& study, const DesignF
     for (int k = 0; k < spread.points; ++k) {
       const double x = spread_from_butt(spread, L, k);
       if (!(x >= 0.0 && x <= L)) {
-        const double from_tip =
-            spread.from_tip_lo_m +
-            (spread.from_tip_hi_m - spread.from_tip_lo_m) * k / (spread.points - 1);
-        return "the impact " + brief(Json(from_tip)) +
+        return "the impact " + brief(Json(spread_from_tip(spread, k))) +
                " m from the tip is off the implement, which is " + brief(Json(L)) + " m long";
       }
       d.impact_from_butt_m = x;

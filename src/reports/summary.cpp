@@ -1,0 +1,198 @@
+#include "reports/summary.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <numbers>
+
+namespace sweetspot::reports {
+namespace {
+
+constexpr double kDefaultHeadArea_m2 = 100 * 0.0254 * 0.0254;  // 100 sq in
+// ITF Rules of Tennis, Appendix II: the strung surface at most 15.5 in long and 11.5 in wide.
+constexpr double kHeadLengthOverWidth = 15.5 / 11.5;
+constexpr double kRim_m = 0.015;  // the frame between the tip and the first cross string
+
+// The design with the ball at `from_tip_m`, evaluated at `fidelity`.
+Evaluation evaluate_at(const io::DesignFile& design, double from_tip_m, std::string_view fidelity,
+                       double rel_tol) {
+  io::DesignFile moved = design;
+  moved.design.impact_from_butt_m = design.design.implement.length_m() - from_tip_m;
+  return io::evaluate_design_file(moved, fidelity, rel_tol);
+}
+
+std::optional<double> on_implement_from_tip(const Evaluation& e, std::optional<double> from_butt) {
+  if (!from_butt || !(*from_butt >= 0.0 && *from_butt <= e.length_m)) return std::nullopt;
+  return e.length_m - *from_butt;
+}
+
+// "the wrist feels a jolt of 470 N and the ball comes back at 0.42 of its speed"; the
+// first time with "(apparent COR)".
+std::string feel(const Evaluation& e, bool first = false) {
+  const std::string wrist = e.peak_wrist_force_N == 0.0 || newton_text(e.peak_wrist_force_N) == "0 N"
+                                ? std::string("the wrist feels no jolt")
+                                : "the wrist feels a jolt of " + newton_text(e.peak_wrist_force_N);
+  return fmt::format("{} and the ball comes back at {} of its speed{}", wrist,
+                     ratio_text(e.apparent_cor), first ? " (the apparent COR)" : "");
+}
+
+}  // namespace
+
+std::string cm_text(double metres) {
+  const double half_cm = std::round(metres * 200.0) / 2.0;
+  if (half_cm == std::floor(half_cm)) return fmt::format("{:.0f} cm", half_cm == 0 ? 0.0 : half_cm);
+  return fmt::format("{:.1f} cm", half_cm);
+}
+
+std::string newton_text(double newtons) {
+  const double magnitude = std::fabs(newtons);
+  if (magnitude < 0.5) return "0 N";
+  const int digits = static_cast<int>(std::floor(std::log10(magnitude)));
+  const double scale = std::pow(10.0, digits - 1);
+  const double rounded = std::round(newtons / scale) * scale;
+  return fmt::format("{:.{}f} N", rounded, std::max(0, 1 - digits));
+}
+
+std::string ratio_text(double ratio) {
+  const double hundredths = std::round(ratio * 100.0);
+  return fmt::format("{:.2f}", hundredths == 0.0 ? 0.0 : hundredths / 100.0);  // no "-0.00"
+}
+
+bool is_racquet(const io::DesignFile& design) {
+  return design.implement_form == "specs" || design.design.strings.has_value();
+}
+
+double centre_of_strings_from_tip_m(const io::DesignFile& design) {
+  double area_m2 = kDefaultHeadArea_m2;
+  if (design.design.strings) {
+    const double r = design.design.strings->head_radius_m;
+    area_m2 = std::numbers::pi * r * r;
+  }
+  const double half_length = std::sqrt(area_m2 * kHeadLengthOverWidth / std::numbers::pi);
+  return std::min(kRim_m + half_length, 0.5 * design.design.implement.length_m());
+}
+
+io::DesignFile with_default_impact(io::DesignFile design) {
+  const auto it = design.provenance.find("impact/from_butt_m");
+  if (it == design.provenance.end() || !it->second.starts_with("default")) return design;
+  if (!is_racquet(design)) return design;
+  const double from_tip = centre_of_strings_from_tip_m(design);
+  design.design.impact_from_butt_m = design.design.implement.length_m() - from_tip;
+  it->second = fmt::format("default for a racquet: the centre of the strings, {} from the tip",
+                           cm_text(from_tip));
+  return design;
+}
+
+SweetSpots find_sweet_spots(const io::DesignFile& design, const Evaluation& asked,
+                            double rel_tol) {
+  const std::string_view fidelity = to_string(fidelity_of(asked));
+  SweetSpots spots;
+  spots.asked = SpotOutcome{asked.length_m - asked.impact_from_butt_m, asked};
+  if (const auto it = design.provenance.find("impact/from_butt_m");
+      it != design.provenance.end() && it->second.starts_with("default"))
+    spots.asked_provenance = it->second;
+  if (const auto cop = on_implement_from_tip(asked, asked.cop_hand_from_butt_m))
+    spots.cop_hand = SpotOutcome{*cop, evaluate_at(design, *cop, fidelity, rel_tol)};
+  if (asked.modal) {
+    if (const auto node = on_implement_from_tip(asked, asked.modal->node_hand_from_butt_m))
+      spots.node_hand = SpotOutcome{*node, evaluate_at(design, *node, fidelity, rel_tol)};
+    spots.node_free_from_tip_m = on_implement_from_tip(asked, asked.modal->node_free_from_butt_m);
+    if (!spots.node_hand) spots.node_missing = "the hand-held fundamental has no node on the frame";
+  } else {
+    spots.node_missing =
+        "give the frame's stiffness (frame.fundamental_free_Hz, the free frame's fundamental "
+        "frequency, or frame.EI_N_m2) to locate the node of least vibration";
+  }
+  if (is_racquet(design)) {
+    const double centre = centre_of_strings_from_tip_m(design);
+    spots.centre_of_strings = SpotOutcome{centre, evaluate_at(design, centre, fidelity, rel_tol)};
+  }
+  return spots;
+}
+
+std::vector<std::string> sweet_spot_sentences(const io::DesignFile& design,
+                                              const SweetSpots& spots) {
+  std::vector<std::string> sentences;
+  const Evaluation& asked = spots.asked.evaluation;
+  // 1. Where the sweet spots are, and how far apart.
+  if (spots.cop_hand && spots.node_hand) {
+    sentences.push_back(fmt::format(
+        "Held in the hand, this {} has two sweet spots: the centre of percussion, {} from the "
+        "tip, where the wrist feels the least jolt, and the node of its fundamental vibration "
+        "({:.0f} Hz in the hand), {} from the tip, where the frame vibrates least.",
+        is_racquet(design) ? "racquet" : "implement", cm_text(spots.cop_hand->from_tip_m),
+        asked.modal->fundamental_hand_Hz, cm_text(spots.node_hand->from_tip_m)));
+    const double gap = std::fabs(spots.cop_hand->from_tip_m - spots.node_hand->from_tip_m);
+    sentences.push_back(
+        cm_text(gap) == "0 cm"
+            ? std::string("The two coincide.")
+            : fmt::format("They are {} apart, the {} nearer the tip.", cm_text(gap),
+                          spots.node_hand->from_tip_m < spots.cop_hand->from_tip_m
+                              ? "node"
+                              : "centre of percussion"));
+  } else if (spots.cop_hand) {
+    sentences.push_back(fmt::format(
+        "Held in the hand, this {}'s centre of percussion, where the wrist feels the least jolt, "
+        "is {} from the tip.",
+        is_racquet(design) ? "racquet" : "implement", cm_text(spots.cop_hand->from_tip_m)));
+    sentences.push_back("The node of least vibration is not located: " + spots.node_missing + ".");
+  } else {
+    sentences.push_back(
+        "Held in the hand, this implement has no centre of percussion on its length (implement "
+        "and hand balance at the wrist), so every impact jolts the wrist.");
+    if (spots.node_hand) {
+      sentences.push_back(fmt::format("The node of least vibration is {} from the tip.",
+                                      cm_text(spots.node_hand->from_tip_m)));
+    }
+  }
+  // 2. What the arm and the ball feel at each.
+  const std::string speed = fmt::format("{:.3g} m/s", design.design.ball.speed_m_s);
+  if (spots.cop_hand) {
+    sentences.push_back(fmt::format("For a ball at {}, at the centre of percussion {}.", speed,
+                                    feel(spots.cop_hand->evaluation, true)));
+  }
+  if (spots.node_hand) {
+    sentences.push_back(fmt::format("At the node {}.",
+                                    feel(spots.node_hand->evaluation, !spots.cop_hand)));
+  }
+  // 3. The point of best rebound (the collision fidelity) slots in here.
+  if (spots.best_rebound) {
+    sentences.push_back(fmt::format("The ball comes back fastest {} from the tip, where {}.",
+                                    cm_text(spots.best_rebound->from_tip_m),
+                                    feel(spots.best_rebound->evaluation)));
+  }
+  // 4. The centre of the strings and the impact asked about.
+  const bool asked_is_centre =
+      spots.centre_of_strings &&
+      cm_text(spots.centre_of_strings->from_tip_m) == cm_text(spots.asked.from_tip_m);
+  if (spots.centre_of_strings && !asked_is_centre) {
+    sentences.push_back(fmt::format("At the centre of the strings, about {} from the tip, {}.",
+                                    cm_text(spots.centre_of_strings->from_tip_m),
+                                    feel(spots.centre_of_strings->evaluation)));
+  }
+  const std::string where =
+      spots.asked_provenance == "given"
+          ? fmt::format("At the impact asked about, {} from the tip,", cm_text(spots.asked.from_tip_m))
+      : asked_is_centre
+          ? fmt::format("At the centre of the strings, about {} from the tip (no impact was given, "
+                        "so the tables below are for this one),",
+                        cm_text(spots.asked.from_tip_m))
+          : fmt::format("At {} from the tip (no impact was given: {}; the tables below are for "
+                        "this one),",
+                        cm_text(spots.asked.from_tip_m), spots.asked_provenance);
+  sentences.push_back(fmt::format("{} {}.", where, feel(asked)));
+  sentences.push_back(
+      "Positions are rounded to 0.5 cm and forces to two figures: the hand's place and the "
+      "arm's mass are assumed, not measured.");
+  return sentences;
+}
+
+std::string sweet_spot_paragraph(const io::DesignFile& design, const SweetSpots& spots) {
+  std::string paragraph;
+  for (const std::string& sentence : sweet_spot_sentences(design, spots)) {
+    paragraph += (paragraph.empty() ? "" : " ") + sentence;
+  }
+  return paragraph;
+}
+
+}  // namespace sweetspot::reports

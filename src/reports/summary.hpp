@@ -1,0 +1,91 @@
+#pragma once
+
+// The answer first: where the sweet spots of a design held in the hand are,
+// how far apart, and what the wrist and the ball feel at each, in a few plain
+// sentences (centimetres from the tip, newtons rounded to what the model can
+// claim). `evaluate`'s Markdown opens with them; the HTML report and `compare`
+// reuse them.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "io/design_reader.hpp"
+#include "sweetspot/evaluate.hpp"
+
+namespace sweetspot::reports {
+
+// One point on the implement the answer speaks about, and the design
+// evaluated with the ball there (same fidelity as the impact asked about).
+struct SpotOutcome {
+  double from_tip_m = 0.0;
+  Evaluation evaluation;
+};
+
+// The sweet spots of a design held in the hand.
+struct SweetSpots {
+  // The hand-held centre of percussion (Eq. 13): the least jolt to the wrist
+  // (the rigid model's wrist force is zero there). Absent when it is at
+  // infinity or off the implement.
+  std::optional<SpotOutcome> cop_hand;
+  // The node of the hand-held fundamental nearest the tip: the least
+  // vibration. Needs the frame's stiffness (modal fidelity).
+  std::optional<SpotOutcome> node_hand;
+  // The free frame's node [m from the tip], for comparison (modal fidelity).
+  std::optional<double> node_free_from_tip_m;
+  // When there is no node: the input that would give it.
+  std::string node_missing;
+  // Reserved for the collision fidelity: the point where the ball rebounds
+  // fastest (the "power point"). find_sweet_spots() leaves it empty;
+  // sweet_spot_sentences() speaks of it once it is set.
+  std::optional<SpotOutcome> best_rebound;
+  // The centre of the strings, for a racquet (centre_of_strings_from_tip_m).
+  std::optional<SpotOutcome> centre_of_strings;
+  // The impact the design asks about (its own, or the default).
+  SpotOutcome asked;
+  // How that impact was chosen: "given", or what the default was.
+  std::string asked_provenance = "given";
+};
+
+// Whether a design is a racquet with strings: its implement is given by a
+// spec sheet (length, mass, balance, swingweight) or it has a string tension.
+bool is_racquet(const io::DesignFile& design);
+
+// The centre of the string bed [m from the tip] of a racquet: an ellipse of
+// the head's area (strings.head_size, 100 sq in by default) whose length is
+// 1.35 times its width (the ratio of the ITF's largest strung surface,
+// 15.5 in by 11.5 in, ITF Rules of Tennis, Appendix II), inside a 1.5 cm rim:
+// 18.1 cm from the tip for 100 sq in. A stated assumption of shape, not a
+// measurement: real heads differ by about a centimetre.
+double centre_of_strings_from_tip_m(const io::DesignFile& design);
+
+// The impact `evaluate` uses when the file gives none: for a racquet, the
+// centre of the strings (a coach's "centre hit"); for the paper's designs
+// (head-to-handle ratio, sections) the paper's 5 cm from the tip. Returns the
+// design with the impact moved and its provenance said, or the design as it is.
+io::DesignFile with_default_impact(io::DesignFile design);
+
+// Evaluates `design` at its sweet spots at the fidelity of `asked` (the
+// design's own evaluation), the hand-held modes to `rel_tol`. Throws like
+// io::evaluate_design_file.
+SweetSpots find_sweet_spots(const io::DesignFile& design, const Evaluation& asked, double rel_tol);
+
+// A few plain sentences answering "where are the sweet spots, how far apart,
+// and what does the arm feel at each and at my impact": positions to 0.5 cm
+// from the tip, forces to two significant figures, the apparent COR to two
+// decimals (the model's inputs, a hand 7 cm from the butt and a forearm of
+// 0.5 kg, are not known better).
+std::vector<std::string> sweet_spot_sentences(const io::DesignFile& design,
+                                              const SweetSpots& spots);
+
+// The sentences as one Markdown paragraph (no trailing newline).
+std::string sweet_spot_paragraph(const io::DesignFile& design, const SweetSpots& spots);
+
+// Rounding shared by the sentences and `compare`: a position in cm to 0.5 cm
+// ("30.5 cm"), a force to two significant figures ("470 N"), a ratio to two
+// decimals ("0.42").
+std::string cm_text(double metres);
+std::string newton_text(double newtons);
+std::string ratio_text(double ratio);
+
+}  // namespace sweetspot::reports

@@ -1,0 +1,110 @@
+#include "reports/summary.hpp"
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "io/design_reader.hpp"
+
+namespace sweetspot::reports {
+namespace {
+
+io::DesignFile design_from(const char* text) {
+  return io::read_design(io::Json::parse(text), "test.json");
+}
+
+constexpr const char* kSpecSheet = R"({
+  "name": "spec sheet",
+  "implement": {"length_in": 27, "mass_g": 318, "balance_cm": 32.5, "swingweight_kg_cm2": 325},
+  "frame": {"fundamental_free_Hz": 150},
+  "strings": {"tension_lb": 52}})";
+
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+}  // namespace
+
+TEST_CASE("Positions are rounded to half a centimetre, forces to two figures, ratios to two "
+          "decimals") {
+  CHECK(cm_text(0.306761) == "30.5 cm");
+  CHECK(cm_text(0.129363) == "13 cm");
+  CHECK(cm_text(0.0) == "0 cm");
+  CHECK(newton_text(474.449) == "470 N");
+  CHECK(newton_text(1334.95) == "1300 N");
+  CHECK(newton_text(5.44) == "5.4 N");
+  CHECK(newton_text(0.2) == "0 N");
+  CHECK(ratio_text(0.188157) == "0.19");
+  CHECK(ratio_text(-0.001) == "0.00");  // never "-0.00"
+}
+
+TEST_CASE("The centre of the strings of a 100 sq in head is the ITF-shaped ellipse's half length "
+          "inside the rim") {
+  // Closed form: 1.5 cm + sqrt(A (15.5 / 11.5) / pi), A = 100 sq in.
+  const double area = 100 * 0.0254 * 0.0254;
+  const double expected = 0.015 + std::sqrt(area * (15.5 / 11.5) / std::numbers::pi);
+  // A spec sheet without strings: the default head of exactly 100 sq in.
+  CHECK(centre_of_strings_from_tip_m(design_from(
+            R"({"implement": {"length_in": 27, "mass_g": 318, "balance_cm": 32.5,
+                "swingweight_kg_cm2": 325}})")) == Approx(expected).epsilon(1e-12));
+  // With strings, the string bed's head (its default radius, 0.1433 m, is 100 sq in to 4 digits).
+  CHECK(centre_of_strings_from_tip_m(design_from(kSpecSheet)) == Approx(expected).epsilon(1e-4));
+  CHECK(expected == Approx(0.1814).margin(1e-4));
+}
+
+TEST_CASE("A racquet without an impact is hit at the centre of its strings; the paper's designs "
+          "keep 5 cm from the tip") {
+  const io::DesignFile racquet = with_default_impact(design_from(kSpecSheet));
+  CHECK(racquet.design.implement.length_m() - racquet.design.impact_from_butt_m ==
+        Approx(centre_of_strings_from_tip_m(racquet)));
+  CHECK(contains(racquet.provenance.at("impact/from_butt_m"), "centre of the strings"));
+
+  const io::DesignFile paper = with_default_impact(design_from(
+      R"({"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8}})"));
+  CHECK(paper.design.impact_from_butt_m == Approx(0.65));
+
+  const io::DesignFile given = with_default_impact(design_from(
+      R"({"implement": {"length_in": 27, "mass_g": 318, "balance_cm": 32.5,
+          "swingweight_kg_cm2": 325}, "impact": {"from_tip_cm": 5}})"));
+  CHECK(given.design.implement.length_m() - given.design.impact_from_butt_m == Approx(0.05));
+}
+
+TEST_CASE("The sweet spots: no wrist force at the hand-held COP, and the node's distance from it "
+          "is the COP-node gap") {
+  const io::DesignFile design = with_default_impact(design_from(kSpecSheet));
+  const Evaluation asked = io::evaluate_design_file(design, "", 1e-6);
+  const SweetSpots spots = find_sweet_spots(design, asked, 1e-6);
+  REQUIRE(spots.cop_hand);
+  REQUIRE(spots.node_hand);
+  REQUIRE(spots.centre_of_strings);
+  // Cross (2004) Eq. (11): F_w / F vanishes at the COP of Eq. (13).
+  CHECK(spots.cop_hand->evaluation.wrist_force_ratio == Approx(0.0).margin(1e-12));
+  CHECK(spots.cop_hand->from_tip_m ==
+        Approx(asked.length_m - *asked.cop_hand_from_butt_m).epsilon(1e-12));
+  CHECK(spots.node_hand->from_tip_m ==
+        Approx(asked.length_m - *asked.modal->node_hand_from_butt_m).epsilon(1e-12));
+  CHECK_FALSE(spots.best_rebound);  // the collision fidelity's
+
+  const std::string text = sweet_spot_paragraph(design, spots);
+  CHECK(contains(text, cm_text(spots.cop_hand->from_tip_m) + " from the tip"));
+  CHECK(contains(text, cm_text(spots.node_hand->from_tip_m) + " from the tip"));
+  CHECK(contains(text,
+                 cm_text(spots.cop_hand->from_tip_m - spots.node_hand->from_tip_m) + " apart"));
+  CHECK(contains(text, newton_text(spots.node_hand->evaluation.peak_wrist_force_N)));
+  CHECK(contains(text, "no impact was given"));
+}
+
+TEST_CASE("Without the stiffness the sentences say which input would locate the node") {
+  const io::DesignFile design = design_from(
+      R"({"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8}})");
+  const Evaluation asked = io::evaluate_design_file(design, "", 1e-6);
+  const SweetSpots spots = find_sweet_spots(design, asked, 1e-6);
+  CHECK_FALSE(spots.node_hand);
+  CHECK_FALSE(spots.centre_of_strings);
+  const std::string text = sweet_spot_paragraph(design, spots);
+  CHECK(contains(text, "frame.fundamental_free_Hz"));
+  CHECK(contains(text, "5 cm from the tip"));
+}
+
+}  // namespace sweetspot::reports
