@@ -9,6 +9,7 @@
 #include "io/format.hpp"
 #include "io/outputs.hpp"
 #include "io/plot.hpp"
+#include "reports/summary.hpp"
 #include "sweetspot/evaluate.hpp"
 
 namespace sweetspot::io {
@@ -22,13 +23,15 @@ constexpr double kDefaultHeadArea_m2 = 100.0 * kSquareInch_m2;
 constexpr double kHeadAspect = 1.35;
 // Drawing sizes [cm]: the frame's rim, the handle's width, the throat's
 // length, a tennis ball's diameter (ITF: 6.54-6.86 cm), the profile's depth.
-constexpr double kRim_cm = 1.2;
+constexpr double kRim_cm = 1.5;  // as reports/summary.hpp places the centre of the strings
 constexpr double kHandleWidth_cm = 2.8;
 constexpr double kThroat_cm = 14.0;
 constexpr double kBall_cm = 6.7;
 constexpr double kBeamDepth_cm = 2.4;
 // Steps of the curves along the frame.
 constexpr double kFrameStep_m = 0.01;
+// The hand-held modes' relative tolerance (evaluate's default).
+constexpr double kRelTol = 1e-6;
 
 std::string cm(double metres, int decimals = 1) {
   return fmt::format("{:.{}f}", metres * 100.0, decimals);
@@ -71,9 +74,9 @@ void flatten(const Json& value, const std::string& pointer, std::string& rows) {
     return;
   }
   const std::string key = pointer.substr(pointer.rfind('/') + 1);
-  const std::string shown =
-      value.is_string() ? value.get<std::string>()
-                        : value.dump(-1, ' ', false, Json::error_handler_t::replace);
+  const std::string shown = value.is_string()
+                                ? value.get<std::string>()
+                                : value.dump(-1, ' ', false, Json::error_handler_t::replace);
   rows += fmt::format("<tr><td><code>{}</code></td><td class=\"num\">{}</td><td>{}</td></tr>\n",
                       html_escape(pointer), html_escape(shown), html_escape(unit_of_key(key)));
 }
@@ -84,48 +87,15 @@ Evaluation evaluate_at(const Design& design, double from_butt_m) {
   return evaluate(at, Fidelity::kRigid);
 }
 
-// The answer in sentences. A placeholder for the coach issue's sentence
-// builders (reports/summary.hpp), which will take its place.
+// The answer in sentences (reports/summary.hpp, the same as `evaluate`'s
+// Markdown opens with), one paragraph each, then what the rigid model gives
+// at the COP, which the drawing marks.
 std::string answer_html(const DesignFile& file, const Evaluation& e) {
-  const double L = file.design.implement.length_m();
   std::string html;
-  const auto from_tip = [&](double from_butt_m) { return L - from_butt_m; };
-  if (e.cop_hand_from_butt_m) {
-    const double cop = from_tip(*e.cop_hand_from_butt_m);
-    html += fmt::format(
-        "<p>Held in the hand, this racquet's <b>sweet spot for the arm</b> (the hand-held centre "
-        "of percussion, where a hit gives the wrist no jolt) is <b data-answer=\"cop_cm\">{} cm "
-        "from the tip</b>.",
-        cm(cop));
-    if (e.modal && e.modal->node_hand_from_butt_m) {
-      const double node = from_tip(*e.modal->node_hand_from_butt_m);
-      html += fmt::format(
-          " Its <b>sweet spot for feel</b> (the node of the fundamental vibration, {:.0f} Hz "
-          "held, where a hit rings least) is <b data-answer=\"node_cm\">{} cm from the tip</b>, "
-          "{} cm {} the COP.",
-          e.modal->fundamental_hand_Hz, cm(node), cm(std::abs(node - cop)),
-          node < cop ? "nearer the tip than" : "nearer the hand than");
-    }
-    html += "</p>\n";
-  } else {
-    html +=
-        "<p>This racquet held in the hand has no centre of percussion on the frame: every hit "
-        "jolts the wrist.</p>\n";
-  }
-  const double d = from_tip(file.design.impact_from_butt_m);
-  html += fmt::format(
-      "<p>A hit <b>{} cm from the tip</b> (the impact this design asks about) puts {:.0f} N on "
-      "the strings and <b data-answer=\"wrist_N\">{:.0f} N on the wrist</b> ({:.0f} % of it), and "
-      "the ball comes back at <b>{:.2f}</b> of its speed towards the racquet (apparent COR).",
-      cm(d), e.peak_impact_force_N, e.peak_wrist_force_N,
-      100.0 * std::abs(e.wrist_force_ratio), e.apparent_cor);
-  if (e.cop_hand_from_butt_m) {
-    const Evaluation at_cop = evaluate_at(file.design, *e.cop_hand_from_butt_m);
-    html += fmt::format(
-        " At the COP the wrist feels {:.0f} N and the ball comes back at {:.2f}.",
-        at_cop.peak_wrist_force_N, at_cop.apparent_cor);
-  }
-  return html + "</p>\n";
+  for (const std::string& sentence :
+       reports::sweet_spot_sentences(file, reports::find_sweet_spots(file, e, kRelTol)))
+    html += "<p>" + html_escape(sentence) + "</p>\n";
+  return html;
 }
 
 // A marker along the racquet: where (cm from the tip), its symbol and label.
@@ -139,9 +109,9 @@ std::vector<Mark> marks(const DesignFile& file, const Evaluation& e, double y) {
   const double L = file.design.implement.length_m();
   std::vector<Mark> out;
   const double bx = (L - e.balance_from_butt_m) * 100.0;
-  out.push_back({bx, "balance",
-                 fmt::format("<path class=\"balance\" d=\"M{} {} l-1.3 2.4 h2.6 z\"/>", n(bx),
-                             n(y + 0.2))});
+  out.push_back(
+      {bx, "balance",
+       fmt::format("<path class=\"balance\" d=\"M{} {} l-1.3 2.4 h2.6 z\"/>", n(bx), n(y + 0.2))});
   if (e.cop_hand_from_butt_m) {
     const double x = (L - *e.cop_hand_from_butt_m) * 100.0;
     out.push_back({x, "COP (hand-held)",
@@ -149,9 +119,10 @@ std::vector<Mark> marks(const DesignFile& file, const Evaluation& e, double y) {
   }
   if (e.modal && e.modal->node_hand_from_butt_m) {
     const double x = (L - *e.modal->node_hand_from_butt_m) * 100.0;
-    out.push_back({x, "node",
-                   fmt::format("<path class=\"node\" d=\"M{} {} l1.1 1.1 l-1.1 1.1 l-1.1 -1.1 z\"/>",
-                               n(x), n(y - 1.1))});
+    out.push_back(
+        {x, "node",
+         fmt::format("<path class=\"node\" d=\"M{} {} l1.1 1.1 l-1.1 1.1 l-1.1 -1.1 z\"/>", n(x),
+                     n(y - 1.1))});
   }
   return out;
 }
@@ -217,7 +188,8 @@ std::string hand_and_tape(const DesignFile& file, double half_height, bool profi
 void tape_marks(const DesignFile& file, std::vector<Mark>& ms) {
   const double L = file.design.implement.length_m();
   for (const PointMass& p : file.design.implement.point_masses())
-    ms.push_back({(L - p.from_butt_m) * 100.0, fmt::format("lead {:.0f} g", p.mass_kg * 1000.0), ""});
+    ms.push_back(
+        {(L - p.from_butt_m) * 100.0, fmt::format("lead {:.0f} g", p.mass_kg * 1000.0), ""});
 }
 
 // The plot's SVG twice, laid out for a wide screen and for a phone (the page
@@ -227,9 +199,9 @@ std::string figure(const Plot& plot, const std::string& id, const std::string& c
   const auto wide = render_svg(plot, id + "-w-", &why, 960, 560);
   const auto narrow = wide ? render_svg(plot, id + "-n-", &why, 520, 460) : std::nullopt;
   const std::string body =
-      wide && narrow ? "<div class=\"wide\">" + *wide + "</div><div class=\"narrow\">" + *narrow +
-                           "</div>"
-                     : "<p class=\"missing\">Plot not drawn: " + html_escape(why) + "</p>";
+      wide && narrow
+          ? "<div class=\"wide\">" + *wide + "</div><div class=\"narrow\">" + *narrow + "</div>"
+          : "<p class=\"missing\">Plot not drawn: " + html_escape(why) + "</p>";
   return fmt::format("<figure id=\"{}\">{}<figcaption>{}</figcaption></figure>\n", id, body,
                      caption);
 }
@@ -296,11 +268,21 @@ std::string html_escape(std::string_view text) {
   out.reserve(text.size());
   for (const char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&#39;"; break;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&#39;";
+        break;
       default:
         if ((static_cast<unsigned char>(c) < 0x20 && c != '\n' && c != '\t') || c == 0x7f) break;
         out += c;
@@ -322,14 +304,15 @@ std::vector<FramePoint> frame_curves(const Design& design, double step_m) {
   return points;
 }
 
-double drawn_head_area_m2(const Json& document) {
-  if (document.is_object() && document.contains("implement") &&
-      document["implement"].is_object()) {
+double drawn_head_area_m2(const DesignFile& file, const Json& document) {
+  if (file.design.strings) {
+    const double r = file.design.strings->head_radius_m;
+    return M_PI * r * r;
+  }
+  if (document.is_object() && document.contains("implement") && document["implement"].is_object()) {
     const Json& implement = document["implement"];
     if (implement.contains("headsize_sq_in") && implement["headsize_sq_in"].is_number())
       return implement["headsize_sq_in"].get<double>() * kSquareInch_m2;
-    if (implement.contains("headsize_cm2") && implement["headsize_cm2"].is_number())
-      return implement["headsize_cm2"].get<double>() * 1e-4;
   }
   return kDefaultHeadArea_m2;
 }
@@ -394,8 +377,9 @@ std::string racquet_side_svg(const DesignFile& file, const Evaluation& e) {
       "xmlns=\"http://www.w3.org/2000/svg\"><title id=\"side-title\">The racquet from the side, "
       "to scale</title>\n",
       n(top), n(L + 4), n(bottom - top));
-  svg += fmt::format("<rect class=\"shaft\" x=\"0\" y=\"{}\" width=\"{}\" height=\"{}\" rx=\"0.8\"/>\n",
-                     n(-half), n(L), n(kBeamDepth_cm));
+  svg += fmt::format(
+      "<rect class=\"shaft\" x=\"0\" y=\"{}\" width=\"{}\" height=\"{}\" rx=\"0.8\"/>\n", n(-half),
+      n(L), n(kBeamDepth_cm));
   svg += hand_and_tape(file, half, true);
   // The ball arrives on the strings' face (from above in this view).
   svg += fmt::format(
@@ -411,14 +395,14 @@ std::string racquet_side_svg(const DesignFile& file, const Evaluation& e) {
 std::string design_html_report(const DesignFile& file, const Json& document) {
   const Design& d = file.design;
   const double L = d.implement.length_m();
-  const Evaluation e = evaluate_design_file(file, "", 1e-6);
+  const Evaluation e = evaluate_design_file(file, "", kRelTol);
   const std::vector<FramePoint> curve = frame_curves(d, kFrameStep_m);
-  const double head_area = drawn_head_area_m2(document);
-  const bool head_given = head_area != kDefaultHeadArea_m2;
-  const std::string description =
-      document.is_object() && document.contains("description") && document["description"].is_string()
-          ? document["description"].get<std::string>()
-          : std::string();
+  const double head_area = drawn_head_area_m2(file, document);
+  const bool head_given = file.design.strings || head_area != kDefaultHeadArea_m2;
+  const std::string description = document.is_object() && document.contains("description") &&
+                                          document["description"].is_string()
+                                      ? document["description"].get<std::string>()
+                                      : std::string();
 
   std::string html =
       "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\"/>\n"
@@ -435,10 +419,11 @@ std::string design_html_report(const DesignFile& file, const Json& document) {
   // The racquet drawn to scale.
   html += "<section id=\"racquet\"><h2>The racquet, to scale</h2>\n";
   html += "<figure class=\"drawing-figure\">" + racquet_top_svg(file, e, head_area) +
-          fmt::format("<figcaption>From above. The head is drawn as an ellipse of {:.0f} sq in{}; "
-                      "the outline is a sketch, the positions are computed.</figcaption></figure>\n",
-                      head_area / kSquareInch_m2,
-                      head_given ? " (as given)" : " (not given: a mid-size head assumed)");
+          fmt::format(
+              "<figcaption>From above. The head is drawn as an ellipse of {:.0f} sq in{}; "
+              "the outline is a sketch, the positions are computed.</figcaption></figure>\n",
+              head_area / kSquareInch_m2,
+              head_given ? " (as given)" : " (not given: a mid-size head assumed)");
   html += "<figure class=\"drawing-figure\">" + racquet_side_svg(file, e) +
           "<figcaption>From the side, the ball arriving on the strings.</figcaption></figure>\n";
   // The numbers behind the drawing.
@@ -568,10 +553,10 @@ std::string design_html_report(const DesignFile& file, const Json& document) {
   std::string defaults;
   for (auto it = inputs.begin(); it != inputs.end(); ++it) {
     if (!it.value().is_object() || it.value().value("provenance", "") != "default") continue;
-    defaults += fmt::format(
-        "<tr><td><code>{}</code></td><td class=\"num\">{}</td><td>{}</td></tr>\n",
-        html_escape(it.key()), significant(it.value()["value"].get<double>(), 4),
-        html_escape(it.value().value("unit", "")));
+    defaults +=
+        fmt::format("<tr><td><code>{}</code></td><td class=\"num\">{}</td><td>{}</td></tr>\n",
+                    html_escape(it.key()), significant(it.value()["value"].get<double>(), 4),
+                    html_escape(it.value().value("unit", "")));
   }
   if (!defaults.empty()) {
     html +=

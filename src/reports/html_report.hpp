@@ -31,9 +31,10 @@ struct FramePoint {
 // std::invalid_argument for a step <= 0.
 std::vector<FramePoint> frame_curves(const Design& design, double step_m);
 
-// The head's size used for the drawing [m^2]: `implement.headsize_sq_in` (or
-// `_cm2`) when the file gives it, else 100 sq in, a mid-size tennis head.
-double drawn_head_area_m2(const Json& document);
+// The head's size used for the drawing [m^2]: the strings' head size when the
+// design has strings, `implement.headsize_sq_in` when the file gives it, else
+// 100 sq in, a mid-size tennis head.
+double drawn_head_area_m2(const DesignFile& design, const Json& document);
 
 // The racquet drawn to scale from above and from the side, as inline SVG
 // (centimetres as user units): outline from the length and the head's size,
@@ -44,7 +45,8 @@ std::string racquet_top_svg(const DesignFile& design, const Evaluation& evaluati
 std::string racquet_side_svg(const DesignFile& design, const Evaluation& evaluation);
 
 // The whole page for `design` (read from `document`, the file as written, for
-// its inputs in the units they were given). Plots that gnuplot cannot draw
+// its inputs in the units they were given; its impact as `evaluate` takes it,
+// reports::with_default_impact). Plots that gnuplot cannot draw
 // are replaced by a sentence saying why; the tables are always there.
 std::string design_html_report(const DesignFile& design, const Json& document);
 

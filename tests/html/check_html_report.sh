@@ -66,11 +66,18 @@ node=$(value node_hand_from_tip_m)
 wrist=$(value peak_wrist_force_N)
 length=$(value length_m)
 [ -n "$cop" ] && [ -n "$node" ] && [ -n "$wrist" ] || fail "evaluate gave no COP, node or wrist force"
-expect "<b data-answer=\"cop_cm\">$(fixed "$cop" 100 1) cm from the tip</b>"
-expect "<b data-answer=\"node_cm\">$(fixed "$node" 100 1) cm from the tip</b>"
-expect "<b data-answer=\"wrist_N\">$(fixed "$wrist" 1 0) N on the wrist</b>"
-from_butt=$(awk -v l="$length" -v c="$cop" 'BEGIN { printf "%.17g", l - c }')
-expect "<td class=\"num\">$(fixed "$cop" 100 1)</td><td class=\"num\">$(fixed "$from_butt" 100 1)</td>"
+half_cm() { # reports/summary's rounding of a position: to 0.5 cm, "30.5 cm" or "30 cm"
+  awk -v v="$1" 'BEGIN { h = int(v * 200 + 0.5) / 2; if (h == int(h)) printf "%d cm", h; else printf "%.1f cm", h }'
+}
+from_butt() { awk -v l="$length" -v c="$1" 'BEGIN { printf "%.17g", l - c }'; }
+# The answer's sentences name the COP and the node as the summary rounds them.
+expect "$(half_cm "$cop") from the tip"
+expect "$(half_cm "$node") from the tip"
+# The positions under the drawing, from the tip and from the butt, to 0.1 cm.
+expect "<td class=\"num\">$(fixed "$cop" 100 1)</td><td class=\"num\">$(fixed "$(from_butt "$cop")" 100 1)</td></tr>"
+expect "<td class=\"num\">$(fixed "$node" 100 1)</td><td class=\"num\">$(fixed "$(from_butt "$node")" 100 1)</td></tr>"
+# Every output, to four significant figures.
+expect "<tr id=\"out-peak_wrist_force_N\"><td>peak wrist force</td><td class=\"num\">$(awk -v v="$wrist" 'BEGIN { printf "%.4g", v }')</td><td>N</td>"
 expect "Length $(fixed "$length" 100 1) cm"
 # The drawings and the plots (two layouts each) are in the DOM.
 svgs=$(grep -o '<svg' "$out/dom.html" | wc -l)

@@ -3,8 +3,8 @@
 #include <fmt/format.h>
 
 #include <catch2/catch.hpp>
-#include <cstdio>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "sweetspot/evaluate.hpp"
@@ -13,7 +13,9 @@
 namespace sweetspot::io {
 namespace {
 
-DesignFile tour_100() { return load_design(SWEETSPOT_SOURCE_DIR "/designs/racquets/tour-100.json"); }
+DesignFile tour_100() {
+  return load_design(SWEETSPOT_SOURCE_DIR "/designs/racquets/tour-100.json");
+}
 
 std::size_t count(const std::string& text, const std::string& piece) {
   std::size_t n = 0;
@@ -24,7 +26,10 @@ std::size_t count(const std::string& text, const std::string& piece) {
 TEST_CASE("Every user string is escaped: markup in a racquet's name is shown, never run") {
   CHECK(html_escape("<script>alert('x')</script> & \"Pro\"") ==
         "&lt;script&gt;alert(&#39;x&#39;)&lt;/script&gt; &amp; &quot;Pro&quot;");
-  CHECK(html_escape(std::string("a\x01" "b\x7f" "c\td\n", 8)) == "abc\td\n");
+  CHECK(html_escape(std::string("a\x01"
+                                "b\x7f"
+                                "c\td\n",
+                                8)) == "abc\td\n");
   Json document = read_json_file(SWEETSPOT_SOURCE_DIR "/designs/racquets/tour-100.json");
   document["name"] = "<img src=x onerror=alert(1)> & Co";
   document["description"] = "</style><script>x()</script>";
@@ -39,8 +44,8 @@ TEST_CASE("Every user string is escaped: markup in a racquet's name is shown, ne
 
 TEST_CASE("The page is self-contained: nothing fetched, no script, one stylesheet inline") {
   const DesignFile file = tour_100();
-  const std::string page =
-      design_html_report(file, read_json_file(SWEETSPOT_SOURCE_DIR "/designs/racquets/tour-100.json"));
+  const std::string page = design_html_report(
+      file, read_json_file(SWEETSPOT_SOURCE_DIR "/designs/racquets/tour-100.json"));
   CHECK(page.rfind("<!DOCTYPE html>", 0) == 0);
   CHECK(page.find("http://") == page.find("http://www.w3.org"));  // only SVG's namespaces
   CHECK(page.find("https://") == std::string::npos);
@@ -97,11 +102,12 @@ TEST_CASE("The drawing is to scale: the racquet's length and each marker where t
   const auto rx_at = top.find("<ellipse class=\"bed\"");
   REQUIRE(rx_at != std::string::npos);
   double cx = 0, rx = 0, ry = 0;
-  REQUIRE(std::sscanf(top.c_str() + rx_at, "<ellipse class=\"bed\" cx=\"%lf\" cy=\"0\" rx=\"%lf\" ry=\"%lf\"",
-                      &cx, &rx, &ry) == 3);
+  REQUIRE(std::sscanf(top.c_str() + rx_at,
+                      "<ellipse class=\"bed\" cx=\"%lf\" cy=\"0\" rx=\"%lf\" ry=\"%lf\"", &cx, &rx,
+                      &ry) == 3);
   CHECK(M_PI * rx * ry == Approx(645.16).epsilon(1e-3));  // two decimals drawn
-  CHECK(drawn_head_area_m2(Json::object()) == Approx(100 * 0.00064516));
-  CHECK(drawn_head_area_m2(Json{{"implement", {{"headsize_sq_in", 98}}}}) ==
+  CHECK(drawn_head_area_m2(file, Json::object()) == Approx(100 * 0.00064516));
+  CHECK(drawn_head_area_m2(file, Json{{"implement", {{"headsize_sq_in", 98}}}}) ==
         Approx(98 * 0.00064516));
 }
 
