@@ -170,6 +170,7 @@ ThroughputReport bench_throughput(const BenchOptions& options, std::ostream& log
             {},
             {}};
   plot.log_y = true;
+  plot.integer_x_tics = true;  // threads are counted
   plot.key_position = "outside bottom";
   try {
     for (const Workload& w : workloads(dir)) {

@@ -68,6 +68,8 @@ struct ReportCommand {
   CLI::App* command = nullptr;
   std::string designs = "designs";
   std::string out_dir = "reports";
+  std::string design;  // `report DESIGN.json --html FILE`: one design's page
+  std::string html;
 
   void add_to(CLI::App& app);
   int run() const;

@@ -7,10 +7,13 @@
 #include <system_error>
 
 #include "cli/commands.hpp"
+#include "io/atomic_file.hpp"
 #include "io/design_reader.hpp"
 #include "io/input_error.hpp"
+#include "reports/html_report.hpp"
 #include "reports/paper_reports.hpp"
 #include "reports/reports.hpp"
+#include "reports/summary.hpp"
 
 namespace sweetspot::cli {
 
@@ -66,10 +69,32 @@ void ReportCommand::add_to(CLI::App& app) {
   command->add_option("--designs", designs, "Folder holding table1/ and paper-beam.json")
       ->capture_default_str();
   command->add_option("--out", out_dir, "Folder to write")->capture_default_str();
+  command->add_option("design", design,
+                      "A design file: write its report as one HTML page (with --html) instead");
+  command->add_option("--html", html,
+                      "With a design: the self-contained HTML page to write (a phone or a "
+                      "desktop browser opens it; no network needed)");
 }
 
 int ReportCommand::run() const {
-  io::write_reports(designs, out_dir, std::cout);
+  if (design.empty() && html.empty()) {
+    io::write_reports(designs, out_dir, std::cout);
+    return kExitOk;
+  }
+  if (design.empty()) {
+    std::cerr << "sweetspot: report --html: needs a design file (sweetspot report DESIGN.json "
+                 "--html FILE)\n";
+    return kExitBadInput;
+  }
+  if (html.empty()) {
+    std::cerr << "sweetspot: report " << design
+              << ": a design's report is a web page: give --html FILE\n";
+    return kExitBadInput;
+  }
+  const io::DesignFile file = reports::with_default_impact(io::load_design(design));
+  const io::Json document = io::read_json_file(design);
+  io::write_file_atomically(html, io::design_html_report(file, document));
+  std::cerr << "wrote " << html << "\n";
   return kExitOk;
 }
 

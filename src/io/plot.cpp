@@ -198,20 +198,34 @@ bool on_plot(const Plot& plot, double y) {
 
 }  // namespace
 
-std::string gnuplot_script(const Plot& plot, const std::string& png_path) {
+namespace {
+
+// The plot's commands after the terminal and output.
+std::string plot_commands(const Plot& plot) {
   std::string s;
-  s += "set terminal pngcairo size 960,640 enhanced font 'DejaVu Sans,11'\n";
-  if (!png_path.empty()) s += "set output " + quoted(png_path) + "\n";
   s += "set title " + label(plot.title) + "\n";
   s += "set xlabel " + label(plot.x_label) + "\n";
   s += "set ylabel " + label(plot.y_label) + "\n";
-  s += "set grid\nset key " + plot.key_position + " box opaque\n";
+  s += plot.key_position == "off"
+           ? "set grid\nunset key\n"
+           : "set grid\nset key " + plot.key_position + " box opaque" +
+                 (plot.key_title.empty() ? std::string() : " title " + label(plot.key_title)) +
+                 "\n";
+  // Labels on an opaque ground: a line under a label stops at its edge.
+  s += "set style textbox opaque noborder\n";
   if (plot.log_x) s += "set logscale x\nset format x '10^{%L}'\n";
   if (plot.log_y) s += "set logscale y\nset format y '10^{%L}'\n";
+  if (plot.integer_x_tics) s += "set xtics 1\nset mxtics 1\n";
   if (plot.x_range)
     s += fmt::format("set xrange [{}:{}]\n", plot.x_range->first, plot.x_range->second);
   if (plot.y_range)
     s += fmt::format("set yrange [{}:{}]\n", plot.y_range->first, plot.y_range->second);
+  if (plot.x2) {
+    s += "set x2label " + label(plot.x2->label) + "\nset xtics nomirror\n";
+    s += fmt::format("set link x2 via x*{0} inverse x/{0}\n", plot.x2->factor);
+    s += plot.x2->tic_step > 0 ? fmt::format("set x2tics {}\n", plot.x2->tic_step)
+                               : std::string("set x2tics\n");
+  }
   if (!plot.y2_label.empty()) {
     s += "set y2label " + label(plot.y2_label) + "\nset ytics nomirror\nset y2tics\n";
     if (plot.log_y2) s += "set logscale y2\nset format y2 '10^{%L}'\n";
@@ -220,14 +234,17 @@ std::string gnuplot_script(const Plot& plot, const std::string& png_path) {
   for (const auto& [x, text] : plot.vertical_lines) {
     s += fmt::format("set arrow {} from {},graph 0 to {},graph 1 nohead dt 2 lc rgb 'gray40'\n",
                      tag, x, x);
-    // Stagger the labels so that neighbouring lines do not overwrite each other.
-    s += fmt::format("set label {} {} at {},graph {} left offset 0.5,0 tc rgb 'gray30'\n", tag,
-                     label(text), x, 0.96 - 0.06 * (tag - 1));
+    // Written along its own line, down from the top, so that neighbouring
+    // lines' labels never run into each other.
+    s += fmt::format(
+        "set label {} {} at {},graph 0.98 right rotate by 90 offset -0.3,0 boxed tc rgb "
+        "'black' front\n",
+        tag, label(text), x);
     ++tag;
   }
   for (const PlotMarker& m : plot.markers) {
-    s += fmt::format("set label {} {} at {},{} left offset 1,-1 point pt 7 ps 1.2\n", tag++,
-                     label(m.label), m.x, m.y);
+    s += fmt::format("set label {} {} at {},{} left offset 1,{} boxed point pt 7 ps 1.2 front\n",
+                     tag++, label(m.label), m.x, m.y, m.label_above ? 1 : -1);
   }
   for (std::size_t i = 0; i < plot.series.size(); ++i) {
     const PlotSeries& series = plot.series[i];
@@ -249,12 +266,142 @@ std::string gnuplot_script(const Plot& plot, const std::string& png_path) {
   }
   s += "plot ";
   for (std::size_t i = 0; i < plot.series.size(); ++i) {
+    const PlotSeries& series = plot.series[i];
     if (i) s += ", \\\n     ";
-    s += fmt::format("$series{} using 1:2{} with {} title {}", i,
-                     plot.series[i].right_axis ? " axes x1y2" : "", plot.series[i].style,
-                     label(plot.series[i].title));
+    s += fmt::format("$series{} using 1:2{} with {} lc rgb {} {}", i,
+                     series.right_axis ? " axes x1y2" : "", series.style,
+                     quoted(series.color.empty() ? plot_color(i) : series.color),
+                     series.title.empty() ? "notitle" : "title " + label(series.title));
   }
   return s + "\n";
+}
+
+// What a key means in words: its unit suffix (longest first) and how to show it.
+struct UnitSuffix {
+  std::string_view suffix;
+  std::string_view unit;
+  double factor;
+};
+constexpr UnitSuffix kUnitSuffixes[] = {
+    {"_kg_cm2", "kg·cm²", 1.0}, {"_kg_m2", "kg·m²", 1.0}, {"_N_m2", "N·m²", 1.0},
+    {"_N_s", "N·s", 1.0},       {"_m_s", "m/s", 1.0},     {"_cm", "cm", 1.0},
+    {"_mm", "mm", 1.0},         {"_in", "in", 1.0},       {"_kg", "kg", 1.0},
+    {"_oz", "oz", 1.0},         {"_lb", "lb", 1.0},       {"_Hz", "Hz", 1.0},
+    {"_ms", "ms", 1.0},         {"_g", "g", 1.0},         {"_m", "cm", 100.0},
+    {"_N", "N", 1.0},           {"_J", "J", 1.0},         {"_s", "ms", 1000.0},
+};
+
+bool ends_with(std::string_view text, std::string_view end) {
+  return text.size() >= end.size() && text.substr(text.size() - end.size()) == end;
+}
+
+// A key with this unit suffix: something before the suffix.
+bool has_suffix(std::string_view key, std::string_view suffix) {
+  return key.size() > suffix.size() && ends_with(key, suffix);
+}
+
+// snake_case words as a phrase: "cop_hand_from_tip" -> "COP hand from the tip".
+std::string words(std::string_view name) {
+  std::string phrase;
+  std::size_t start = 0;
+  while (start <= name.size()) {
+    std::size_t end = name.find('_', start);
+    if (end == std::string_view::npos) end = name.size();
+    std::string word(name.substr(start, end - start));
+    if (word == "cop" || word == "cor") {
+      for (char& c : word) c = static_cast<char>(c - 'a' + 'A');
+    }
+    if ((word == "tip" || word == "butt" || word == "com") && ends_with(phrase, "from"))
+      phrase += " the";
+    if (word == "com") word = "centre of mass";
+    if (!word.empty()) phrase += (phrase.empty() ? "" : " ") + word;
+    start = end + 1;
+  }
+  return phrase;
+}
+
+AxisQuantity with_unit(std::string name_in_words, std::string_view unit, double factor) {
+  // The gap between two points reads as one: "COP–node gap".
+  const std::size_t pair = name_in_words.find("COP node");
+  if (pair != std::string::npos) name_in_words.replace(pair, 8, "COP–node");
+  std::string label = unit.empty() ? name_in_words : name_in_words + " (" + std::string(unit) + ")";
+  return {std::move(label), factor, std::move(name_in_words), std::string(unit)};
+}
+
+}  // namespace
+
+std::string plot_color(std::size_t i) {
+  static constexpr const char* kColors[] = {"#0072b2", "#d55e00", "#009e73", "#cc79a7",
+                                            "#e69f00", "#56b4e9", "#000000", "#8c564b",
+                                            "#7f7f7f", "#6a3d9a", "#b8b800", "#17becf"};
+  return kColors[i % (sizeof kColors / sizeof kColors[0])];
+}
+
+AxisQuantity output_axis(const OutputSpec& output) {
+  std::string_view name = output.name;
+  for (const UnitSuffix& u : kUnitSuffixes) {
+    if (has_suffix(name, u.suffix)) {
+      name.remove_suffix(u.suffix.size());
+      return with_unit(words(name), u.unit, u.factor);
+    }
+  }
+  return with_unit(words(name), "", 1.0);
+}
+
+AxisQuantity pointer_axis(std::string_view pointer) {
+  std::vector<std::string> parts;
+  for (std::size_t at = 0; at < pointer.size();) {
+    std::size_t next = pointer.find('/', at + 1);
+    if (next == std::string_view::npos) next = pointer.size();
+    std::string part(pointer.substr(at + 1, next - at - 1));
+    if (!part.empty()) parts.push_back(part);
+    at = next;
+  }
+  if (parts.empty()) return with_unit(std::string(pointer), "", 1.0);
+  std::string key = parts.back();
+  parts.pop_back();
+  std::string_view unit;
+  double factor = 1.0;
+  for (const UnitSuffix& u : kUnitSuffixes) {
+    if (has_suffix(key, u.suffix)) {
+      key.resize(key.size() - u.suffix.size());
+      unit = u.unit;
+      factor = u.factor;
+      break;
+    }
+  }
+  // The path in words, the implement and its frame being understood.
+  std::string phrase;
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    const std::string& part = parts[i];
+    if (part == "implement" || part == "frame") continue;
+    if (part == "point_masses" && i + 1 < parts.size() &&
+        parts[i + 1].find_first_not_of("0123456789") == std::string::npos) {
+      phrase +=
+          (phrase.empty() ? "" : " ") + fmt::format("lead mass {}", std::stoul(parts[i + 1]) + 1);
+      ++i;
+      continue;
+    }
+    phrase += (phrase.empty() ? "" : " ") + words(part);
+  }
+  // "lead mass 1" + "mass" says mass once; "impact" + "from tip" reads "impact from the tip".
+  if (!(key == "mass" && phrase.rfind("lead mass", 0) == 0))
+    phrase += (phrase.empty() ? "" : " ") + words(key);
+  return with_unit(phrase, unit, factor);
+}
+
+std::string gnuplot_script(const Plot& plot, const std::string& png_path) {
+  std::string s = "set terminal pngcairo size 960,640 enhanced font 'DejaVu Sans,11'\n";
+  if (!png_path.empty()) s += "set output " + quoted(png_path) + "\n";
+  return s + plot_commands(plot);
+}
+
+std::string gnuplot_svg_script(const Plot& plot, int width, int height) {
+  return fmt::format(
+             "set terminal svg size {},{} dynamic enhanced font 'DejaVu Sans,13' background "
+             "'#ffffff'\n",
+             width, height) +
+         plot_commands(plot);
 }
 
 bool render_png(const Plot& plot, const std::string& png_path, std::string* why) {
@@ -283,6 +430,62 @@ bool render_script_png(const std::string& script, const std::string& png_path, s
     if (why) *why = e.what();
   }
   return false;
+}
+
+namespace {
+
+// Every occurrence of `from` in `text` replaced by `to`.
+std::string replace_all(std::string text, std::string_view from, std::string_view to) {
+  for (std::size_t at = text.find(from); at != std::string::npos;
+       at = text.find(from, at + to.size()))
+    text.replace(at, from.size(), to);
+  return text;
+}
+
+}  // namespace
+
+std::optional<std::string> render_svg(const Plot& plot, const std::string& id_prefix,
+                                      std::string* why, int width, int height) {
+  try {
+    const int fd = ::memfd_create("sweetspot-svg", MFD_CLOEXEC);
+    if (fd < 0) throw PlotFailure(std::string("cannot hold the plot: ") + std::strerror(errno));
+    struct Closer {
+      int fd;
+      ~Closer() { ::close(fd); }
+    } closer{fd};
+    run_gnuplot(gnuplot_svg_script(plot, width, height), fd);
+    std::string svg;
+    std::array<char, 1 << 16> buffer{};
+    for (off_t at = 0;;) {
+      const ssize_t n = ::pread(fd, buffer.data(), buffer.size(), at);
+      if (n < 0 && errno == EINTR) continue;
+      if (n < 0) throw PlotFailure(std::string("cannot read the plot: ") + std::strerror(errno));
+      if (n == 0) break;
+      svg.append(buffer.data(), static_cast<std::size_t>(n));
+      at += n;
+    }
+    const std::size_t start = svg.find("<svg");
+    const std::size_t end = svg.rfind("</svg>");
+    if (start == std::string::npos || end == std::string::npos || end < start)
+      throw PlotFailure("gnuplot wrote no complete SVG");
+    svg = svg.substr(start, end + 6 - start);
+    // The ids gnuplot gives its groups serve its mouse script only (not
+    // written): dropped, since each plot repeats them. The rest get the prefix.
+    for (const char* group : {"gnuplot_canvas", "gnuplot_plot_"}) {
+      for (std::size_t at = svg.find(std::string(" id=\"") + group); at != std::string::npos;
+           at = svg.find(std::string(" id=\"") + group, at)) {
+        const std::size_t close = svg.find('"', at + 5);
+        svg.erase(at, close + 1 - at);
+      }
+    }
+    svg = replace_all(std::move(svg), "id='", "id='" + id_prefix);
+    svg = replace_all(std::move(svg), "href='#", "href='#" + id_prefix);
+    svg = replace_all(std::move(svg), "url(#", "url(#" + id_prefix);
+    return svg;
+  } catch (const std::exception& e) {
+    if (why) *why = e.what();
+  }
+  return std::nullopt;
 }
 
 }  // namespace sweetspot::io

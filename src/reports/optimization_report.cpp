@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace sweetspot::io {
@@ -226,15 +227,46 @@ std::string optimization_report(const Study& study, const OptimizationResult& r,
 }
 
 Plot convergence_plot(const Study& study, const OptimizationResult& r) {
-  PlotSeries objective{"best objective so far", {}, {}, "lines lw 2"};
+  // One objective term is plotted as the output itself, in its unit: the
+  // minimised form of a target is weight (value - target)^2, whose square
+  // root is the distance from the target (the COP-node gap, not its square).
+  const bool single = study.objective.size() == 1;
+  const ObjectiveTerm* term = single ? &study.objective.front() : nullptr;
+  const AxisQuantity axis = output_axis(*study.objective.front().output);
+  std::string y_label = "objective (weighted sum of the terms, minimised form)";
+  if (single) {
+    const std::string over = !study.over_impacts ? ""
+                             : study.over_impacts->reduce == ImpactSpread::Reduce::kMax
+                                 ? ", the worst of the impacts"
+                                 : ", mean over the impacts";
+    y_label = term->goal == Goal::kTarget
+                  ? fmt::format("{}{}: distance from its target {}{}", axis.label, over,
+                                significant(term->target * axis.factor),
+                                axis.unit.empty() ? "" : " " + axis.unit)
+                  : axis.label + over;
+  }
+  const auto shown = [&](double value) {
+    if (!single) return value;
+    switch (term->goal) {
+      case Goal::kMinimize:
+        return value / term->weight * axis.factor;
+      case Goal::kMaximize:
+        return -value / term->weight * axis.factor;
+      case Goal::kTarget:
+        return std::sqrt(std::max(0.0, value / term->weight)) * axis.factor;
+    }
+    return value;
+  };
+  PlotSeries objective{single ? "best so far" : "best objective so far", {}, {}, "lines lw 2"};
   for (std::size_t i = 0; i < r.summary.history.size(); ++i) {
     objective.x.push_back(static_cast<double>(i + 1));
     const double value = r.summary.history[i];
-    objective.y.push_back(std::abs(value) < kPenalty / 10 ? std::optional(value) : std::nullopt);
+    objective.y.push_back(std::abs(value) < kPenalty / 10 ? std::optional(shown(value))
+                                                          : std::nullopt);
   }
   Plot plot{"Convergence: " + study.name,
             "evaluation (including difference gradients)",
-            fmt::format("objective ({})", study.objective.front().output->name),
+            y_label,
             std::nullopt,
             std::nullopt,
             {objective},

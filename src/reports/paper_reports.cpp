@@ -23,6 +23,9 @@ constexpr double kFigureStep_m = 0.005;
 constexpr double kCrossingSearchLo_m = 0.10;
 constexpr double kCrossingSearchHi_m = 0.30;
 constexpr double kCrossingTolerance_m = 1e-9;
+// The range of Fig. 11's axis s, as the paper draws it [cm].
+constexpr double kFigure11Low_cm = -30.0;
+constexpr double kFigure11High_cm = 40.0;
 
 std::optional<double> reference(const DesignFile& file, const char* name) {
   if (!file.reference.is_object() || !file.reference.contains(name)) return std::nullopt;
@@ -223,11 +226,27 @@ Figure figure11(const DesignFile& beam) {
     free.y.push_back(s_free ? std::optional(*s_free * 100.0) : std::nullopt);
     hand.y.push_back(s_hand ? std::optional(*s_hand * 100.0) : std::nullopt);
   }
+  // Each curve is drawn up to its pole, where the axis runs off the plot; the
+  // branch beyond it (the axis past the far end of the beam, coming back into
+  // view near the handle) would be a stray segment without its context. The
+  // CSV keeps every value.
+  for (PlotSeries* series : {&free, &hand}) {
+    bool shown = false, left = false;
+    for (auto& y : series->y) {
+      const bool in_view = y && *y >= kFigure11Low_cm && *y <= kFigure11High_cm;
+      if (left)
+        y.reset();
+      else if (in_view)
+        shown = true;
+      else if (shown)
+        left = true;
+    }
+  }
   figure.plot = Plot{"Fig. 11: rotation axis s against impact point d (Cross 2004)",
                      "impact distance d from the free end (cm)",
                      "rotation axis s from the handle end (cm)",
                      std::pair{0.0, L * 100.0},
-                     std::pair{-30.0, 40.0},
+                     std::pair{kFigure11Low_cm, kFigure11High_cm},
                      {free, hand},
                      {},
                      {}};
@@ -235,7 +254,8 @@ Figure figure11(const DesignFile& beam) {
   if (crossing) {
     figure.plot.markers.push_back(PlotMarker{
         crossing->d_m * 100.0, crossing->s_m * 100.0,
-        fmt::format("d = {:.1f} cm, s = {:.1f} cm", crossing->d_m * 100.0, crossing->s_m * 100.0)});
+        fmt::format("d = {:.1f} cm, s = {:.1f} cm", crossing->d_m * 100.0, crossing->s_m * 100.0),
+        true});
     figure.summary = fmt::format(
         "The free and hand-held axes coincide at d = {:.1f} cm with the axis {:.1f} cm from the "
         "handle end{}.",

@@ -81,30 +81,46 @@ std::vector<Plot> response_plots(const ResponseData& data) {
         swing = std::max(swing, std::abs(r.points[k].dc_m_s[i] + r.points[k].ac_m_s[i]));
       }
     }
+    // Each impact's trace sits below the one before (the first impact at the
+    // top, as the key lists them), shifted by a little more than the largest
+    // swing, with a dotted line of its colour at its own zero.
     const double shift = data.responses.size() > 1 ? 1.2 * swing : 0.0;
-    Plot plot{fmt::format("Velocity {:.0f} cm from the handle end, {} (cf. Cross 2004 Figs. {})",
-                          point * 100, data.request.hand_held ? "hand-held" : "free",
-                          data.request.hand_held ? "6 and 7" : "3 and 4"),
-              "time (ms)",
-              fmt::format("velocity (m/s){}", shift > 0 ? ", traces shifted apart" : ""),
-              std::nullopt,
-              std::nullopt,
-              {},
-              {},
-              {}};
+    Plot plot{
+        fmt::format("Velocity {:.0f} cm from the tip ({:.0f} cm from the handle end), {} "
+                    "(cf. Cross 2004 Figs. {})",
+                    (L - point) * 100, point * 100, data.request.hand_held ? "hand-held" : "free",
+                    data.request.hand_held ? "6 and 7" : "3 and 4"),
+        "time (ms)",
+        shift > 0 ? fmt::format("velocity (m/s), traces {} m/s apart", significant(shift, 2))
+                  : std::string("velocity (m/s)"),
+        std::nullopt,
+        std::nullopt,
+        {},
+        {},
+        {}};
+    plot.key_title = shift > 0 ? "impact d (dotted: its zero)" : "impact";
     plot.key_position = "outside right";
     for (std::size_t j = 0; j < data.responses.size(); ++j) {
       const ImpactResponse& r = data.responses[j];
       const double x = data.request.impacts_from_butt_m.empty()
                            ? data.design.design.impact_from_butt_m
                            : data.request.impacts_from_butt_m[j];
+      const double offset = -shift * static_cast<double>(j);
       PlotSeries s{fmt::format("d = {:.0f} cm", (L - x) * 100), {}, {}, "lines lw 1.5"};
+      s.color = plot_color(j);
       for (std::size_t i = 0; i < r.time_s.size(); ++i) {
         s.x.push_back(r.time_s[i] * 1e3);
-        s.y.push_back(r.points[k].dc_m_s[i] + r.points[k].ac_m_s[i] +
-                      shift * static_cast<double>(j));
+        s.y.push_back(r.points[k].dc_m_s[i] + r.points[k].ac_m_s[i] + offset);
       }
       plot.series.push_back(std::move(s));
+    }
+    for (std::size_t j = 0; j < data.responses.size() && shift > 0; ++j) {
+      const double offset = -shift * static_cast<double>(j);
+      PlotSeries zero{"", {}, {}, "lines lw 1 dt 3"};
+      zero.color = plot_color(j);
+      zero.x = {data.time_s.front() * 1e3, data.time_s.back() * 1e3};
+      zero.y = {offset, offset};
+      plot.series.push_back(std::move(zero));
     }
     plots.push_back(std::move(plot));
   }
@@ -270,15 +286,19 @@ std::vector<ReportEntry> write_response_reports(const std::string& designs_dir,
          "\"soft strings\" needs a softer ball or a longer contact than springs in series give.\n";
   write.text("duration-from-tension.md", tmd);
   write.text("duration-from-tension.csv", tcsv);
-  write.plot("duration-from-tension.png",
-             Plot{"Impact duration against string tension (Table I racquet, 5 cm from the tip)",
-                  "string tension (N)",
-                  "impact duration T (ms)",
-                  std::nullopt,
-                  std::nullopt,
-                  {series},
-                  {},
-                  {}});
+  write.plot("duration-from-tension.png", [&] {
+    Plot plot{"Impact duration against string tension (Table I racquet, 5 cm from the tip)",
+              "string tension (N)",
+              "impact duration T (ms)",
+              std::nullopt,
+              std::nullopt,
+              {series},
+              {},
+              {}};
+    plot.x2 = SecondXAxis{"string tension (lb, as stringers quote it)", 1.0 / kNewtonsPerPoundForce,
+                          10.0};
+    return plot;
+  }());
   entries.push_back(
       {"[duration-from-tension.md](duration-from-tension.md), [.csv](duration-from-tension.csv), "
        "[.png](duration-from-tension.png)",

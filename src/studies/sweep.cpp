@@ -174,17 +174,24 @@ std::vector<Plot> run_sweep(const Study& study, std::ostream& csv,
   for (const OutputSpec* o : study.sweep_outputs) csv << "," << o->name;
   csv << ",error\n";
 
+  // Axes and keys in a reader's words and units (io/plot.hpp), never the pointers.
+  const AxisQuantity x_axis = pointer_axis(first.pointer);
+  const std::optional<AxisQuantity> key_axis =
+      study.variables.size() == 2 ? std::optional(pointer_axis(study.variables[1].pointer))
+                                  : std::nullopt;
   std::vector<Plot> plots;
+  std::vector<double> y_factors;
   for (const OutputSpec* o : study.sweep_outputs) {
-    plots.push_back(
-        Plot{fmt::format("{}: {}", study.name, o->name),
-             first.pointer,
-             fmt::format("{} ({})", o->name, o->unit.empty() ? "dimensionless" : o->unit),
-             std::pair{first.min, first.max},
-             std::nullopt,
-             {},
-             {},
-             {}});
+    const AxisQuantity y_axis = output_axis(*o);
+    y_factors.push_back(y_axis.factor);
+    plots.push_back(Plot{fmt::format("{}: {}", study.name, y_axis.label),
+                         x_axis.label,
+                         y_axis.label,
+                         std::pair{first.min * x_axis.factor, first.max * x_axis.factor},
+                         std::nullopt,
+                         {},
+                         {},
+                         {}});
   }
   const int threads = std::max(1, options.threads);
   std::vector<SweepWorker> workers;
@@ -205,18 +212,21 @@ std::vector<Plot> run_sweep(const Study& study, std::ostream& csv,
         const std::size_t p = begin + i;
         if (p % first.values.size() == 0) {
           for (std::size_t k = 0; k < outputs; ++k) {
-            plots[k].series.push_back(
-                PlotSeries{study.variables.size() == 2
-                               ? fmt::format("{} = {}", study.variables[1].pointer,
-                                             significant(second[p / first.values.size()]))
-                               : std::string(study.sweep_outputs[k]->name),
-                           {},
-                           {}});
+            plots[k].series.push_back(PlotSeries{
+                key_axis
+                    ? fmt::format("{} {}{}", key_axis->name,
+                                  significant(second[p / first.values.size()] * key_axis->factor),
+                                  key_axis->unit.empty() ? "" : " " + key_axis->unit)
+                    : output_axis(*study.sweep_outputs[k]).label,
+                {},
+                {}});
           }
         }
         for (std::size_t k = 0; k < outputs; ++k) {
-          plots[k].series.back().x.push_back(first.values[p % first.values.size()]);
-          plots[k].series.back().y.push_back(values[i * outputs + k]);
+          const double y_factor = y_factors[k];
+          const auto& y = values[i * outputs + k];
+          plots[k].series.back().x.push_back(first.values[p % first.values.size()] * x_axis.factor);
+          plots[k].series.back().y.push_back(y ? std::optional(*y * y_factor) : std::nullopt);
         }
       }
     }

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <thread>
 
@@ -121,6 +122,70 @@ TEST_CASE("A plot onto a FIFO is the whole PNG, and the FIFO stays one") {
   REQUIRE(::lstat(fifo.c_str(), &info) == 0);
   CHECK(S_ISFIFO(info.st_mode));
   std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("Axes read as words with one unit, never a JSON pointer or a doubled unit") {
+  // The labels issue 13 quotes, and what a reader should see instead.
+  CHECK(pointer_axis("/implement/point_masses/0/mass_g").label == "lead mass 1 (g)");
+  CHECK(pointer_axis("/implement/point_masses/2/from_tip_cm").label ==
+        "lead mass 3 from the tip (cm)");
+  CHECK(pointer_axis("/hand/mass_kg").label == "hand mass (kg)");
+  CHECK(pointer_axis("/implement/head_to_handle_mass_ratio").label == "head to handle mass ratio");
+  const AxisQuantity impact = pointer_axis("/impact/from_tip_m");
+  CHECK(impact.label == "impact from the tip (cm)");  // metres shown as centimetres
+  CHECK(impact.factor == 100.0);
+  CHECK(impact.name == "impact from the tip");
+  CHECK(impact.unit == "cm");
+  for (const OutputSpec& o : output_specs()) {
+    const AxisQuantity axis = output_axis(o);
+    INFO(o.name << " -> " << axis.label);
+    CHECK(axis.label.find('_') == std::string::npos);
+    CHECK((axis.label.find('/') == std::string::npos || o.unit == "m/s"));
+    // The unit once: the name's suffix is gone when the unit is shown.
+    if (!axis.unit.empty()) CHECK(axis.name.find(axis.unit) == std::string::npos);
+  }
+  CHECK(output_axis(*find_output("peak_wrist_force_N")).label == "peak wrist force (N)");
+  CHECK(output_axis(*find_output("cop_hand_from_tip_m")).label == "COP hand from the tip (cm)");
+  CHECK(output_axis(*find_output("cop_node_gap_m")).label == "COP–node gap (cm)");
+  CHECK(output_axis(*find_output("apparent_cor")).label == "apparent COR");
+}
+
+TEST_CASE("Twelve series get twelve different colours, in the order they are plotted") {
+  Plot plot = two_points("colours");
+  for (int i = 1; i < 12; ++i) plot.series.push_back(plot.series.front());
+  const std::string script = gnuplot_script(plot, "");
+  std::set<std::string> colours;
+  for (std::size_t i = 0; i < 12; ++i) {
+    colours.insert(plot_color(i));
+    CHECK(script.find("$series" + std::to_string(i) + " using 1:2 with lines lw 2 lc rgb '" +
+                      plot_color(i) + "'") != std::string::npos);
+  }
+  CHECK(colours.size() == 12);
+  CHECK(plot_color(12) == plot_color(0));
+}
+
+TEST_CASE("A second x axis in another unit is linked to the first, with tics at its own steps") {
+  Plot plot = two_points("tension");
+  plot.x2 = SecondXAxis{"tension (lb)", 1.0 / 4.4482216152605, 10.0};
+  plot.integer_x_tics = true;
+  const std::string script = gnuplot_script(plot, "");
+  CHECK(script.find("set link x2 via x*0.224808943") != std::string::npos);
+  CHECK(script.find("set x2tics 10\n") != std::string::npos);
+  CHECK(script.find("set xtics 1\n") != std::string::npos);
+}
+
+TEST_CASE("A plot as inline SVG: no XML prologue, its ids prefixed so two plots share a page") {
+  std::string why;
+  const auto svg = render_svg(two_points("svg"), "first-", &why);
+  REQUIRE(svg);
+  CHECK(svg->rfind("<svg", 0) == 0);
+  CHECK(svg->size() > 6);
+  CHECK(svg->compare(svg->size() - 6, 6, "</svg>") == 0);
+  CHECK(svg->find("<?xml") == std::string::npos);
+  CHECK(svg->find("id='gpPt") == std::string::npos);  // every id carries the prefix
+  CHECK(svg->find("id='first-gpPt") != std::string::npos);
+  CHECK(svg->find("gnuplot_canvas") == std::string::npos);
+  CHECK(svg->find("<script") == std::string::npos);
 }
 
 }  // namespace

@@ -4,8 +4,11 @@
 #include <fmt/format.h>
 
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <string>
 
+#include "io/design_reader.hpp"
+#include "io/outputs.hpp"
 #include "studies/optimization.hpp"
 #include "studies/study.hpp"
 
@@ -76,6 +79,21 @@ TEST_CASE("A report never shows the optimizer's penalty as a value") {
   CHECK(j["outcome"] == "no_value");
   CHECK(j["objective_value"].is_null());
   CHECK(j["start_objective_value"].is_null());
+}
+
+TEST_CASE("A target's convergence is plotted as the distance from it, unsquared, in cm") {
+  // Study 3a minimises (cop_node_gap_m - 0)^2; a reader wants the gap itself.
+  const Study study = load_study(studies() + "3a-cop-on-node-table1-racquet.json");
+  const OptimizationResult r = run_optimization(study);
+  const Plot plot = convergence_plot(study, r);
+  REQUIRE(!plot.series.empty());
+  REQUIRE(plot.series[0].y.back());
+  // The best design's gap, evaluated afresh: the plot's last point, in cm.
+  const auto gap =
+      find_output("cop_node_gap_m")->value(evaluate_design_file(r.best, "modal", 1e-6));
+  REQUIRE(gap);
+  CHECK(*plot.series[0].y.back() == Approx(std::abs(*gap) * 100.0).epsilon(1e-6));
+  CHECK(plot.y_label == "COP–node gap (cm): distance from its target 0 cm");
 }
 
 }  // namespace

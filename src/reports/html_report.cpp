@@ -1,0 +1,578 @@
+#include "reports/html_report.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "io/format.hpp"
+#include "io/outputs.hpp"
+#include "io/plot.hpp"
+#include "reports/summary.hpp"
+#include "sweetspot/evaluate.hpp"
+
+namespace sweetspot::io {
+namespace {
+
+constexpr double kSquareInch_m2 = 0.00064516;
+// A mid-size tennis head (100 sq in) when the file does not say.
+constexpr double kDefaultHeadArea_m2 = 100.0 * kSquareInch_m2;
+// The drawn head: an ellipse this much longer than wide (a 100 sq in head is
+// about 34 cm by 25 cm).
+constexpr double kHeadAspect = 1.35;
+// Drawing sizes [cm]: the frame's rim, the handle's width, the throat's
+// length, a tennis ball's diameter (ITF: 6.54-6.86 cm), the profile's depth.
+constexpr double kRim_cm = 1.5;  // as reports/summary.hpp places the centre of the strings
+constexpr double kHandleWidth_cm = 2.8;
+constexpr double kThroat_cm = 14.0;
+constexpr double kBall_cm = 6.7;
+constexpr double kBeamDepth_cm = 2.4;
+// Steps of the curves along the frame.
+constexpr double kFrameStep_m = 0.01;
+// The hand-held modes' relative tolerance (evaluate's default).
+constexpr double kRelTol = 1e-6;
+
+std::string cm(double metres, int decimals = 1) {
+  return fmt::format("{:.{}f}", metres * 100.0, decimals);
+}
+
+// A number for an SVG attribute (centimetres, two decimals are plenty).
+std::string n(double v) { return fmt::format("{:.2f}", v); }
+
+// The unit of a design key from its suffix, as the file wrote it.
+std::string unit_of_key(std::string_view key) {
+  static constexpr std::pair<std::string_view, std::string_view> kUnits[] = {
+      {"_kg_cm2", "kg·cm²"}, {"_kg_m2", "kg·m²"}, {"_N_m2", "N·m²"}, {"_sq_in", "sq in"},
+      {"_cm2", "cm²"},       {"_m_s", "m/s"},     {"_N_s", "N·s"},   {"_mph", "mph"},
+      {"_km_h", "km/h"},     {"_cm", "cm"},       {"_mm", "mm"},     {"_in", "in"},
+      {"_kg", "kg"},         {"_oz", "oz"},       {"_lb", "lb"},     {"_Hz", "Hz"},
+      {"_ms", "ms"},         {"_g", "g"},         {"_m", "m"},       {"_N", "N"},
+      {"_s", "s"},           {"_pts", "points"},  {"_J", "J"},
+  };
+  for (const auto& [suffix, unit] : kUnits) {
+    if (key.size() > suffix.size() && key.substr(key.size() - suffix.size()) == suffix)
+      return std::string(unit);
+  }
+  return "";
+}
+
+// Every leaf of the file as written: JSON pointer, value, unit.
+void flatten(const Json& value, const std::string& pointer, std::string& rows) {
+  if (value.is_object()) {
+    for (auto it = value.begin(); it != value.end(); ++it) {
+      if (pointer.empty() && (it.key() == "$schema" || it.key() == "name" ||
+                              it.key() == "description" || it.key() == "reference"))
+        continue;
+      flatten(it.value(), pointer + "/" + it.key(), rows);
+    }
+    return;
+  }
+  if (value.is_array()) {
+    for (std::size_t i = 0; i < value.size(); ++i)
+      flatten(value[i], pointer + "/" + std::to_string(i), rows);
+    return;
+  }
+  const std::string key = pointer.substr(pointer.rfind('/') + 1);
+  const std::string shown = value.is_string()
+                                ? value.get<std::string>()
+                                : value.dump(-1, ' ', false, Json::error_handler_t::replace);
+  rows += fmt::format("<tr><td><code>{}</code></td><td class=\"num\">{}</td><td>{}</td></tr>\n",
+                      html_escape(pointer), html_escape(shown), html_escape(unit_of_key(key)));
+}
+
+Evaluation evaluate_at(const Design& design, double from_butt_m) {
+  Design at = design;
+  at.impact_from_butt_m = std::clamp(from_butt_m, 0.0, design.implement.length_m());
+  return evaluate(at, Fidelity::kRigid);
+}
+
+// The answer in sentences (reports/summary.hpp, the same as `evaluate`'s
+// Markdown opens with), one paragraph each, then what the rigid model gives
+// at the COP, which the drawing marks.
+std::string answer_html(const DesignFile& file, const Evaluation& e) {
+  std::string html;
+  for (const std::string& sentence :
+       reports::sweet_spot_sentences(file, reports::find_sweet_spots(file, e, kRelTol)))
+    html += "<p>" + html_escape(sentence) + "</p>\n";
+  return html;
+}
+
+// A marker along the racquet: where (cm from the tip), its symbol and label.
+struct Mark {
+  double x_cm;
+  std::string label;
+  std::string symbol;  // SVG drawn at (x, y)
+};
+
+std::vector<Mark> marks(const DesignFile& file, const Evaluation& e, double y) {
+  const double L = file.design.implement.length_m();
+  std::vector<Mark> out;
+  const double bx = (L - e.balance_from_butt_m) * 100.0;
+  out.push_back(
+      {bx, "balance",
+       fmt::format("<path class=\"balance\" d=\"M{} {} l-1.3 2.4 h2.6 z\"/>", n(bx), n(y + 0.2))});
+  if (e.cop_hand_from_butt_m) {
+    const double x = (L - *e.cop_hand_from_butt_m) * 100.0;
+    out.push_back({x, "COP (hand-held)",
+                   fmt::format("<circle class=\"cop\" cx=\"{}\" cy=\"{}\" r=\"1\"/>", n(x), n(y))});
+  }
+  if (e.modal && e.modal->node_hand_from_butt_m) {
+    const double x = (L - *e.modal->node_hand_from_butt_m) * 100.0;
+    out.push_back(
+        {x, "node",
+         fmt::format("<path class=\"node\" d=\"M{} {} l1.1 1.1 l-1.1 1.1 l-1.1 -1.1 z\"/>", n(x),
+                     n(y - 1.1))});
+  }
+  return out;
+}
+
+// Labels above the drawing, one row per label when neighbours would touch,
+// each with a leader line down to its marker at height `y`.
+std::string labels(std::vector<Mark> ms, double y, double top) {
+  std::sort(ms.begin(), ms.end(), [](const Mark& a, const Mark& b) { return a.x_cm < b.x_cm; });
+  std::string svg;
+  std::vector<double> row_end;
+  for (const Mark& m : ms) {
+    // Laid out for the phone's larger text (font 2.4 cm): about 1.35 cm a letter.
+    const double width = 1.35 * static_cast<double>(m.label.size()) + 1.0;
+    std::size_t row = 0;
+    while (row < row_end.size() && row_end[row] > m.x_cm - 0.5) ++row;
+    if (row == row_end.size()) row_end.push_back(0.0);
+    row_end[row] = m.x_cm + width;
+    const double ty = top + 3.0 * static_cast<double>(row);
+    svg += fmt::format(
+        "<line class=\"leader\" x1=\"{0}\" y1=\"{1}\" x2=\"{0}\" y2=\"{2}\"/>"
+        "<text x=\"{3}\" y=\"{1}\">{4}</text>\n",
+        n(m.x_cm), n(ty), n(y), n(m.x_cm + 0.3), html_escape(m.label));
+  }
+  return svg;
+}
+
+std::string ruler(double length_cm, double y) {
+  std::string svg = fmt::format("<line class=\"ruler\" x1=\"0\" y1=\"{0}\" x2=\"{1}\" y2=\"{0}\"/>",
+                                n(y), n(length_cm));
+  for (int t = 0; t <= static_cast<int>(length_cm); t += 10) {
+    svg += fmt::format(
+        "<line class=\"ruler\" x1=\"{0}\" y1=\"{1}\" x2=\"{0}\" y2=\"{2}\"/>"
+        "<text class=\"tick\" x=\"{0}\" y=\"{3}\">{4}</text>",
+        t, n(y), n(y + 1.0), n(y + 3.0), t);
+  }
+  return svg + fmt::format("<text class=\"tick\" x=\"{}\" y=\"{}\">cm from the tip</text>\n",
+                           n(length_cm / 2), n(y + 5.6));
+}
+
+std::string hand_and_tape(const DesignFile& file, double half_height, bool profile) {
+  const Design& d = file.design;
+  const double L = d.implement.length_m() * 100.0;
+  std::string svg;
+  if (d.hand.mass_kg > 0) {
+    const double cx = L - d.hand.center_from_butt_m * 100.0;
+    svg += fmt::format(
+        "<ellipse class=\"hand\" cx=\"{}\" cy=\"0\" rx=\"{}\" ry=\"{}\"><title>the hand, {} cm "
+        "from the butt</title></ellipse>\n",
+        n(cx), n(d.hand.grip_length_m * 50.0 + 1.0), n(profile ? 4.0 : 4.8),
+        cm(d.hand.center_from_butt_m));
+  }
+  for (const PointMass& p : d.implement.point_masses()) {
+    const double x = L - p.from_butt_m * 100.0;
+    svg += fmt::format(
+        "<rect class=\"tape\" x=\"{}\" y=\"{}\" width=\"1.6\" height=\"{}\"><title>lead, {:.0f} g, "
+        "{} cm from the tip</title></rect>\n",
+        n(std::clamp(x - 0.8, 0.0, L - 1.6)), n(-half_height), n(2 * half_height),
+        p.mass_kg * 1000.0, cm(d.implement.length_m() - p.from_butt_m));
+  }
+  return svg;
+}
+
+void tape_marks(const DesignFile& file, std::vector<Mark>& ms) {
+  const double L = file.design.implement.length_m();
+  for (const PointMass& p : file.design.implement.point_masses())
+    ms.push_back(
+        {(L - p.from_butt_m) * 100.0, fmt::format("lead {:.0f} g", p.mass_kg * 1000.0), ""});
+}
+
+// The plot's SVG twice, laid out for a wide screen and for a phone (the page
+// shows one of them), or a sentence saying why it is missing.
+std::string figure(const Plot& plot, const std::string& id, const std::string& caption) {
+  std::string why;
+  const auto wide = render_svg(plot, id + "-w-", &why, 960, 560);
+  const auto narrow = wide ? render_svg(plot, id + "-n-", &why, 520, 460) : std::nullopt;
+  const std::string body =
+      wide && narrow
+          ? "<div class=\"wide\">" + *wide + "</div><div class=\"narrow\">" + *narrow + "</div>"
+          : "<p class=\"missing\">Plot not drawn: " + html_escape(why) + "</p>";
+  return fmt::format("<figure id=\"{}\">{}<figcaption>{}</figcaption></figure>\n", id, body,
+                     caption);
+}
+
+constexpr const char* kStyle = R"(
+:root { --ink: #1b1f24; --muted: #5b6470; --line: #d5dae0; --accent: #0b5fa5; }
+* { box-sizing: border-box; }
+body { margin: 0; font-family: system-ui, -apple-system, "Segoe UI", Roboto, "DejaVu Sans", sans-serif;
+       color: var(--ink); background: #fff; line-height: 1.5; }
+main { max-width: 62rem; margin: 0 auto; padding: 1rem 1.2rem 3rem; }
+h1 { font-size: 1.7rem; line-height: 1.25; margin: 0.6rem 0 0.2rem; }
+h2 { font-size: 1.25rem; margin: 2.2rem 0 0.6rem; border-bottom: 2px solid var(--line); padding-bottom: 0.2rem; }
+.lede { color: var(--muted); margin-top: 0; }
+.answer { background: #f1f6fb; border-left: 5px solid var(--accent); padding: 0.4rem 1rem; font-size: 1.12rem; }
+figure { margin: 1rem 0; }
+figure svg { width: 100%; height: auto; display: block; }
+figure.drawing-figure { max-width: 46rem; }
+.narrow { display: none; }
+.means { color: var(--muted); font-size: 0.88rem; }
+figcaption { color: var(--muted); font-size: 0.92rem; }
+.drawing text { font-size: 1.6px; fill: var(--ink); }
+.drawing .tick { font-size: 1.5px; text-anchor: middle; fill: var(--muted); }
+.drawing .frame { fill: none; stroke: #2b3138; stroke-width: 1.2; }
+.drawing .bed { fill: #eef3e2; stroke: #9aa58a; stroke-width: 0.15; }
+.drawing .shaft { fill: #59616b; }
+.drawing .hand { fill: #d99a6c; fill-opacity: 0.55; stroke: #a86a3e; stroke-width: 0.2; }
+.drawing .tape { fill: #ef8a17; stroke: #9c5200; stroke-width: 0.15; }
+.drawing .cop { fill: #d62728; stroke: #fff; stroke-width: 0.25; }
+.drawing .node { fill: #1f5fbf; stroke: #fff; stroke-width: 0.2; }
+.drawing .balance { fill: #2b3138; }
+.drawing .ball { fill: #d4e157; fill-opacity: 0.6; stroke: #7c8a12; stroke-width: 0.2; stroke-dasharray: 0.6 0.4; }
+.drawing .leader { stroke: var(--muted); stroke-width: 0.12; }
+.drawing .ruler { stroke: var(--muted); stroke-width: 0.12; }
+.table-wrap { overflow-x: auto; -webkit-overflow-scrolling: touch; }
+table { border-collapse: collapse; margin: 0.6rem 0; min-width: 60%; }
+th, td { padding: 0.3rem 0.6rem; border-bottom: 1px solid var(--line); text-align: left; vertical-align: top; }
+th { background: #f6f8fa; }
+td.num, th.num { text-align: right; font-variant-numeric: tabular-nums; }
+td.num { white-space: nowrap; }
+#positions td:first-child { min-width: 10rem; }
+code { font-size: 0.9em; overflow-wrap: anywhere; }
+details summary { cursor: pointer; color: var(--accent); }
+.hook { border: 2px dashed var(--line); padding: 0.6rem 1rem; color: var(--muted); }
+.missing { color: #9c2a00; }
+footer { color: var(--muted); font-size: 0.88rem; margin-top: 2.5rem; }
+@media (max-width: 640px) {
+  main { padding: 0.6rem 0.7rem 2rem; }
+  h1 { font-size: 1.35rem; }
+  .answer { font-size: 1rem; padding: 0.3rem 0.7rem; }
+  th, td { padding: 0.25rem 0.35rem; font-size: 0.9rem; }
+  table { width: 100%; }
+  #positions td:first-child { min-width: 8.5rem; }
+  .drawing text { font-size: 2.4px; }
+  .drawing .tick { font-size: 2.2px; }
+  .wide { display: none; }
+  .narrow { display: block; }
+}
+)";
+
+}  // namespace
+
+std::string html_escape(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  for (const char c : text) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&#39;";
+        break;
+      default:
+        if ((static_cast<unsigned char>(c) < 0x20 && c != '\n' && c != '\t') || c == 0x7f) break;
+        out += c;
+    }
+  }
+  return out;
+}
+
+std::vector<FramePoint> frame_curves(const Design& design, double step_m) {
+  if (!(step_m > 0)) throw std::invalid_argument("step_m: must be > 0 m, got " + exact(step_m));
+  const double L = design.implement.length_m();
+  std::vector<FramePoint> points;
+  const auto steps = static_cast<std::size_t>(std::ceil(L / step_m - 1e-9));
+  for (std::size_t i = 0; i <= steps; ++i) {
+    const double d = std::min(L, static_cast<double>(i) * step_m);
+    const Evaluation e = evaluate_at(design, L - d);
+    points.push_back({d, e.wrist_force_ratio, e.apparent_cor, e.peak_wrist_force_N});
+  }
+  return points;
+}
+
+double drawn_head_area_m2(const DesignFile& file, const Json& document) {
+  if (file.design.strings) {
+    const double r = file.design.strings->head_radius_m;
+    return M_PI * r * r;
+  }
+  if (document.is_object() && document.contains("implement") && document["implement"].is_object()) {
+    const Json& implement = document["implement"];
+    if (implement.contains("headsize_sq_in") && implement["headsize_sq_in"].is_number())
+      return implement["headsize_sq_in"].get<double>() * kSquareInch_m2;
+  }
+  return kDefaultHeadArea_m2;
+}
+
+std::string racquet_top_svg(const DesignFile& file, const Evaluation& e, double head_area_m2) {
+  const double L = file.design.implement.length_m() * 100.0;
+  // The head's string bed: an ellipse of the head's area, a = kHeadAspect b,
+  // no longer than half the implement.
+  const double area_cm2 = std::max(head_area_m2, 0.0) * 1e4;
+  double a = std::sqrt(4.0 * area_cm2 * kHeadAspect / M_PI);
+  a = std::min(a, 0.5 * L);
+  const double b = a > 0 ? 4.0 * area_cm2 / (M_PI * a) : 0.0;
+  const double head_cx = kRim_cm + a / 2;
+  const double head_end = kRim_cm + a;
+  const double throat_end = std::min(head_end + kThroat_cm, L * 0.75);
+  const double half = b / 2 + kRim_cm;
+  std::vector<Mark> ms = marks(file, e, 0.0);
+  tape_marks(file, ms);
+  const double impact = L - file.design.impact_from_butt_m * 100.0;
+  ms.push_back({impact, "impact", ""});
+  // Room above the head for a few rows of labels, below for the ruler.
+  const double top = -half - 13.0;
+  const double bottom = half + 8.0;
+  std::string svg = fmt::format(
+      "<svg class=\"drawing\" viewBox=\"-2 {} {} {}\" role=\"img\" aria-labelledby=\"top-title\" "
+      "xmlns=\"http://www.w3.org/2000/svg\"><title id=\"top-title\">The racquet from above, to "
+      "scale</title>\n",
+      n(top), n(L + 4), n(bottom - top));
+  // Shaft and throat, then the head over them.
+  svg += fmt::format(
+      "<rect class=\"shaft\" x=\"{0}\" y=\"{1}\" width=\"{2}\" height=\"{3}\" rx=\"0.6\"/>\n"
+      "<path class=\"frame\" d=\"M{4} {5} Q{6} {7} {0} {8} M{4} {9} Q{6} {10} {0} {11}\"/>\n",
+      n(throat_end), n(-kHandleWidth_cm / 2), n(L - throat_end), n(kHandleWidth_cm),
+      n(head_end - a * 0.12), n(-b * 0.42), n((head_end + throat_end) / 2), n(-b * 0.12),
+      n(-kHandleWidth_cm / 2 + 0.3), n(b * 0.42), n(b * 0.12), n(kHandleWidth_cm / 2 - 0.3));
+  svg += fmt::format(
+      "<ellipse class=\"bed\" cx=\"{0}\" cy=\"0\" rx=\"{1}\" ry=\"{2}\"/>"
+      "<ellipse class=\"frame\" cx=\"{0}\" cy=\"0\" rx=\"{3}\" ry=\"{4}\"/>\n",
+      n(head_cx), n(a / 2), n(b / 2), n(a / 2 + kRim_cm / 2), n(b / 2 + kRim_cm / 2));
+  svg += hand_and_tape(file, half, false);
+  svg += fmt::format(
+      "<circle class=\"ball\" cx=\"{}\" cy=\"0\" r=\"{}\"><title>the ball at the impact, {} cm "
+      "from the tip</title></circle>\n",
+      n(impact), n(kBall_cm / 2), n(impact));
+  for (const Mark& m : marks(file, e, 0.0)) svg += m.symbol + "\n";
+  svg += labels(ms, 0.0, top + 1.8);
+  svg += ruler(L, half + 1.5);
+  return svg + "</svg>\n";
+}
+
+std::string racquet_side_svg(const DesignFile& file, const Evaluation& e) {
+  const double L = file.design.implement.length_m() * 100.0;
+  const double half = kBeamDepth_cm / 2;
+  std::vector<Mark> ms = marks(file, e, 0.0);
+  tape_marks(file, ms);
+  const double impact = L - file.design.impact_from_butt_m * 100.0;
+  ms.push_back({impact, "impact", ""});
+  const double top = -half - kBall_cm - 12.0;
+  const double bottom = half + 9.0;
+  std::string svg = fmt::format(
+      "<svg class=\"drawing\" viewBox=\"-2 {} {} {}\" role=\"img\" aria-labelledby=\"side-title\" "
+      "xmlns=\"http://www.w3.org/2000/svg\"><title id=\"side-title\">The racquet from the side, "
+      "to scale</title>\n",
+      n(top), n(L + 4), n(bottom - top));
+  svg += fmt::format(
+      "<rect class=\"shaft\" x=\"0\" y=\"{}\" width=\"{}\" height=\"{}\" rx=\"0.8\"/>\n", n(-half),
+      n(L), n(kBeamDepth_cm));
+  svg += hand_and_tape(file, half, true);
+  // The ball arrives on the strings' face (from above in this view).
+  svg += fmt::format(
+      "<circle class=\"ball\" cx=\"{}\" cy=\"{}\" r=\"{}\"><title>the ball at the impact</title>"
+      "</circle>\n",
+      n(impact), n(-half - kBall_cm / 2), n(kBall_cm / 2));
+  for (const Mark& m : marks(file, e, 0.0)) svg += m.symbol + "\n";
+  svg += labels(ms, 0.0, top + 1.8);
+  svg += ruler(L, half + 3.0);
+  return svg + "</svg>\n";
+}
+
+std::string design_html_report(const DesignFile& file, const Json& document) {
+  const Design& d = file.design;
+  const double L = d.implement.length_m();
+  const Evaluation e = evaluate_design_file(file, "", kRelTol);
+  const std::vector<FramePoint> curve = frame_curves(d, kFrameStep_m);
+  const double head_area = drawn_head_area_m2(file, document);
+  const bool head_given = file.design.strings || head_area != kDefaultHeadArea_m2;
+  const std::string description = document.is_object() && document.contains("description") &&
+                                          document["description"].is_string()
+                                      ? document["description"].get<std::string>()
+                                      : std::string();
+
+  std::string html =
+      "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\"/>\n"
+      "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\"/>\n"
+      "<meta name=\"generator\" content=\"sweetspot\"/>\n";
+  html += "<title>" + html_escape(file.name) + " — sweetspot</title>\n<style>" + kStyle +
+          "</style>\n</head>\n<body>\n<main>\n";
+  html += "<h1 id=\"name\">" + html_escape(file.name) + "</h1>\n";
+  if (!description.empty()) html += "<p class=\"lede\">" + html_escape(description) + "</p>\n";
+
+  html += "<section id=\"answer\"><h2>The answer</h2>\n<div class=\"answer\">\n" +
+          answer_html(file, e) + "</div></section>\n";
+
+  // The racquet drawn to scale.
+  html += "<section id=\"racquet\"><h2>The racquet, to scale</h2>\n";
+  html += "<figure class=\"drawing-figure\">" + racquet_top_svg(file, e, head_area) +
+          fmt::format(
+              "<figcaption>From above. The head is drawn as an ellipse of {:.0f} sq in{}; "
+              "the outline is a sketch, the positions are computed.</figcaption></figure>\n",
+              head_area / kSquareInch_m2,
+              head_given ? " (as given)" : " (not given: a mid-size head assumed)");
+  html += "<figure class=\"drawing-figure\">" + racquet_side_svg(file, e) +
+          "<figcaption>From the side, the ball arriving on the strings.</figcaption></figure>\n";
+  // The numbers behind the drawing.
+  html +=
+      "<div class=\"table-wrap\"><table id=\"positions\"><thead><tr><th>where</th>"
+      "<th class=\"num\">from the tip (cm)</th><th class=\"num\">from the butt (cm)</th>"
+      "</tr></thead><tbody>\n";
+  const auto row = [&](const char* id, const std::string& what, double from_butt_m,
+                       const std::string& means) {
+    html += fmt::format(
+        "<tr id=\"pos-{}\"><td>{}<div class=\"means\">{}</div></td><td class=\"num\">{}</td>"
+        "<td class=\"num\">{}</td></tr>\n",
+        id, what, means, cm(L - from_butt_m), cm(from_butt_m));
+  };
+  row("balance", "balance point", e.balance_from_butt_m, "the centre of mass");
+  if (e.cop_hand_from_butt_m)
+    row("cop", "hand-held COP", *e.cop_hand_from_butt_m,
+        "a hit here gives the wrist no jolt (Cross 2004, Eq. 13)");
+  if (e.cop_free_from_butt_m)
+    row("cop-free", "free COP", *e.cop_free_from_butt_m,
+        "the COP about the handle end of a free racquet (Eq. 5)");
+  if (e.modal && e.modal->node_hand_from_butt_m)
+    row("node", "node, held", *e.modal->node_hand_from_butt_m,
+        "a hit here excites the least vibration");
+  row("impact", "impact", d.impact_from_butt_m, "the hit this report is about");
+  if (d.hand.mass_kg > 0)
+    row("hand", "hand centre", d.hand.center_from_butt_m, "where the hand holds");
+  for (std::size_t i = 0; i < d.implement.point_masses().size(); ++i) {
+    const PointMass& p = d.implement.point_masses()[i];
+    row(fmt::format("lead{}", i + 1).c_str(), fmt::format("lead, {:.1f} g", p.mass_kg * 1000.0),
+        p.from_butt_m, "added mass (tape)");
+  }
+  html += fmt::format(
+      "</tbody></table></div>\n<p>Length {} cm, mass {:.0f} g, swingweight {:.0f} kg·cm².</p>\n"
+      "</section>\n",
+      cm(L), e.mass_kg * 1000.0, e.swingweight_kg_m2 * 1e4);
+
+  // The curves along the frame.
+  html += "<section id=\"frame\"><h2>Along the frame</h2>\n";
+  PlotSeries wrist{"wrist force / string force, |F_w / F|", {}, {}, "lines lw 2.5"};
+  PlotSeries cor{"apparent COR e_A", {}, {}, "lines lw 2.5"};
+  cor.color = plot_color(1);
+  for (const FramePoint& p : curve) {
+    wrist.x.push_back(p.from_tip_m * 100.0);
+    wrist.y.push_back(std::abs(p.wrist_force_ratio));
+    cor.x.push_back(p.from_tip_m * 100.0);
+    cor.y.push_back(p.apparent_cor);
+  }
+  std::vector<std::pair<double, std::string>> lines;
+  if (e.cop_hand_from_butt_m) lines.push_back({(L - *e.cop_hand_from_butt_m) * 100.0, "COP"});
+  if (e.modal && e.modal->node_hand_from_butt_m)
+    lines.push_back({(L - *e.modal->node_hand_from_butt_m) * 100.0, "node"});
+  lines.push_back({(L - d.impact_from_butt_m) * 100.0, "impact"});
+  Plot wrist_plot{"What the wrist feels, for a hit along the frame",
+                  "impact point from the tip (cm)",
+                  "wrist force over the force on the strings",
+                  std::pair{0.0, L * 100.0},
+                  std::nullopt,
+                  {wrist},
+                  {},
+                  lines};
+  Plot cor_plot{"How the ball comes back, for a hit along the frame",
+                "impact point from the tip (cm)",
+                "apparent COR (rebound over incoming speed)",
+                std::pair{0.0, L * 100.0},
+                std::nullopt,
+                {cor},
+                {},
+                lines};
+  wrist_plot.key_position = "off";
+  cor_plot.key_position = "off";
+  html += figure(wrist_plot, "plot-wrist",
+                 "The share of the force on the strings that reaches the wrist (Cross 2004, Eq. "
+                 "11), rigid model: zero at the hand-held COP.");
+  html += figure(cor_plot, "plot-cor",
+                 "The apparent COR (Eq. 16): highest near the hand, falling towards the tip.");
+  html +=
+      "<details><summary>The numbers behind these curves</summary><div class=\"table-wrap\">"
+      "<table id=\"curve\"><thead><tr><th class=\"num\">impact from the tip (cm)</th>"
+      "<th class=\"num\">|F_w / F|</th><th class=\"num\">wrist force (N)</th>"
+      "<th class=\"num\">apparent COR</th></tr></thead><tbody>\n";
+  for (const FramePoint& p : curve) {
+    html += fmt::format(
+        "<tr><td class=\"num\">{}</td><td class=\"num\">{:.3f}</td><td class=\"num\">{:.0f}</td>"
+        "<td class=\"num\">{:.3f}</td></tr>\n",
+        cm(p.from_tip_m), std::abs(p.wrist_force_ratio), p.peak_wrist_force_N, p.apparent_cor);
+  }
+  html += "</tbody></table></div></details>\n</section>\n";
+
+  // The string-bed maps (power, shock, feel) belong here once `sweetspot map`
+  // exists: the hook below is replaced by their section.
+  html +=
+      "<section id=\"maps\"><h2>Over the string bed</h2>\n<!-- sweetspot:maps -->\n"
+      "<p class=\"hook\">Maps of power (apparent COR), shock (wrist force) and feel (vibration) "
+      "over the whole string bed come with the string-bed map model; this version of sweetspot "
+      "models hits on the racquet's long axis only.</p>\n</section>\n";
+
+  // Every output, in people's units.
+  html +=
+      "<section id=\"outputs\"><h2>Every number</h2>\n<div class=\"table-wrap\"><table "
+      "id=\"all-outputs\"><thead><tr><th>quantity</th><th class=\"num\">value</th><th>unit</th>"
+      "<th>output</th></tr></thead><tbody>\n";
+  for (const OutputSpec& o : output_specs()) {
+    const auto value = o.value(e);
+    const AxisQuantity axis = output_axis(o);
+    const std::size_t open = axis.label.rfind(" (");
+    const std::string words = open == std::string::npos ? axis.label : axis.label.substr(0, open);
+    const std::string unit =
+        open == std::string::npos ? "" : axis.label.substr(open + 2, axis.label.size() - open - 3);
+    html += fmt::format(
+        "<tr id=\"out-{}\"><td>{}</td><td class=\"num\">{}</td><td>{}</td><td><code>{}</code>"
+        "</td></tr>\n",
+        o.name, html_escape(words), value ? significant(*value * axis.factor, 4) : "—",
+        html_escape(unit), o.name);
+  }
+  html += "</tbody></table></div></section>\n";
+
+  // The inputs as the file gave them, then the defaults the model filled in.
+  std::string given;
+  flatten(document, "", given);
+  html +=
+      "<section id=\"inputs\"><h2>The inputs</h2>\n<p>As the file gives them, in its units:</p>\n"
+      "<div class=\"table-wrap\"><table id=\"inputs-given\"><thead><tr><th>input</th>"
+      "<th class=\"num\">value</th><th>unit</th></tr></thead><tbody>\n" +
+      given + "</tbody></table></div>\n";
+  const Json inputs = evaluation_json(file, e)["inputs"];
+  std::string defaults;
+  for (auto it = inputs.begin(); it != inputs.end(); ++it) {
+    if (!it.value().is_object() || it.value().value("provenance", "") != "default") continue;
+    defaults +=
+        fmt::format("<tr><td><code>{}</code></td><td class=\"num\">{}</td><td>{}</td></tr>\n",
+                    html_escape(it.key()), significant(it.value()["value"].get<double>(), 4),
+                    html_escape(it.value().value("unit", "")));
+  }
+  if (!defaults.empty()) {
+    html +=
+        "<p>Not in the file, so the model's defaults (the paper's player and ball):</p>\n"
+        "<div class=\"table-wrap\"><table id=\"inputs-default\"><thead><tr><th>input</th>"
+        "<th class=\"num\">value</th><th>unit</th></tr></thead><tbody>\n" +
+        defaults + "</tbody></table></div>\n";
+  }
+  html += "</section>\n";
+
+  html += fmt::format(
+      "<footer>Computed by sweetspot ({} model) from <code>{}</code>, after R. Cross, \"Center of "
+      "percussion of hand-held implements\", Am. J. Phys. 72 (2004). Positions are measured "
+      "from the tip of the racquet.</footer>\n</main>\n</body>\n</html>\n",
+      to_string(fidelity_of(e)), html_escape(file.source));
+  return html;
+}
+
+}  // namespace sweetspot::io

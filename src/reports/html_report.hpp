@@ -1,0 +1,53 @@
+#pragma once
+
+// The report a coach opens: one self-contained HTML page for a design (no
+// network, no scripts, no fonts fetched; CSS inline; plots are gnuplot's SVG
+// inlined), readable on a phone. Everything the page shows is computed here;
+// the command line only writes it (`sweetspot report DESIGN.json --html FILE`).
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "io/design_reader.hpp"
+#include "io/json_reader.hpp"
+
+namespace sweetspot::io {
+
+// `text` safe inside HTML text and attribute values: & < > " ' as
+// entities, control characters other than tab and newline dropped.
+std::string html_escape(std::string_view text);
+
+// One impact point along the frame, from the rigid model (Eqs. 11, 15-17).
+struct FramePoint {
+  double from_tip_m = 0.0;
+  double wrist_force_ratio = 0.0;  // F_w / F (Eq. 11), signed
+  double apparent_cor = 0.0;       // e_A (Eq. 16)
+  double peak_wrist_force_N = 0.0;
+};
+
+// The impact moved along the frame from the tip to the butt in steps of
+// `step_m` (> 0; the butt itself always included). Throws
+// std::invalid_argument for a step <= 0.
+std::vector<FramePoint> frame_curves(const Design& design, double step_m);
+
+// The head's size used for the drawing [m^2]: the strings' head size when the
+// design has strings, `implement.headsize_sq_in` when the file gives it, else
+// 100 sq in, a mid-size tennis head.
+double drawn_head_area_m2(const DesignFile& design, const Json& document);
+
+// The racquet drawn to scale from above and from the side, as inline SVG
+// (centimetres as user units): outline from the length and the head's size,
+// the hand, the balance point, the hand-held COP, the node (when known), the
+// impact point and the lead tape.
+std::string racquet_top_svg(const DesignFile& design, const Evaluation& evaluation,
+                            double head_area_m2);
+std::string racquet_side_svg(const DesignFile& design, const Evaluation& evaluation);
+
+// The whole page for `design` (read from `document`, the file as written, for
+// its inputs in the units they were given; its impact as `evaluate` takes it,
+// reports::with_default_impact). Plots that gnuplot cannot draw
+// are replaced by a sentence saying why; the tables are always there.
+std::string design_html_report(const DesignFile& design, const Json& document);
+
+}  // namespace sweetspot::io
