@@ -101,6 +101,7 @@ struct PointMassSpec {
   bool handle = false;              // under the butt cap
   std::string pointer;              // of this entry
   std::string where_key;            // the key that placed it
+  std::string mass_key;             // the key that gave its mass
 };
 
 std::vector<PointMassSpec> read_point_masses(ObjectReader& implement, const std::string& source,
@@ -121,6 +122,7 @@ std::vector<PointMassSpec> read_point_masses(ObjectReader& implement, const std:
     const auto mass = r.quantity("mass", Dimension::kMass);
     if (!mass) r.fail("", "missing mass_kg (or mass_g)");
     spec.mass_kg = *mass;
+    spec.mass_key = r.one_of(spellings("mass", Dimension::kMass));
     spec.from_butt_m = r.quantity("from_butt", Dimension::kLength);
     spec.from_tip_m = r.quantity("from_tip", Dimension::kLength);
     const auto off_axis = r.quantity("off_axis", Dimension::kLength);
@@ -197,8 +199,8 @@ std::vector<PointMass> place_point_masses(const std::vector<PointMassSpec>& spec
       throw InputError(source, key.empty() ? spec.pointer : spec.pointer + "/" + key, detail);
     };
     if (!(spec.mass_kg >= 0.0 && spec.mass_kg <= kMaxMass_kg)) {
-      fail("", "mass must be in [0, " + brief(Json(kMaxMass_kg)) + "] kg, got " +
-                   brief(Json(spec.mass_kg)) + " kg");
+      fail(spec.mass_key, "must be in [0, " + brief(Json(kMaxMass_kg)) + "] kg, got " +
+                              brief(Json(spec.mass_kg)) + " kg");
     }
     if (spec.handle) {
       points.push_back(PointMass{std::min(kHandleWeightFromButt_m, L), spec.mass_kg, 0.0});
@@ -222,8 +224,8 @@ std::vector<PointMass> place_point_masses(const std::vector<PointMassSpec>& spec
     const double x = spec.from_butt_m ? *spec.from_butt_m : L - *spec.from_tip_m;
     const double given = spec.from_butt_m ? *spec.from_butt_m : *spec.from_tip_m;
     if (!(given >= 0.0 && given <= L)) {
-      fail(spec.where_key, "must be in [0, " + brief(Json(L)) + "] m (on the implement), got " +
-                               brief(Json(given)) + " m");
+      fail(spec.where_key,
+           "must be in [0, " + brief(Json(L)) + "] m, got " + brief(Json(given)) + " m");
     }
     if (!(spec.off_axis_m >= -L && spec.off_axis_m <= L)) {
       fail("off_axis_m", "must be in [-" + brief(Json(L)) + ", " + brief(Json(L)) + "] m, got " +
