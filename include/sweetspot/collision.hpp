@@ -29,10 +29,13 @@
 // step size; the solution is second-order accurate in h. The linear part is
 // solved in closed form for the one unknown F_b, a scalar monotone equation
 // solved by safeguarded Newton iteration: O(modes) work per step. The force
-// has fractional powers of time where a contact starts and ends (and where
-// the damping term clamps it to 0), so the mesh is graded there like t^2
-// down to 1e-6 of the base step; on it the error is c h^2 + O(h^3), and two
-// runs at h and h/2 are Richardson-extrapolated (CollisionOptions::extrapolate).
+// has fractional powers of time where a contact starts and ends (and a kink
+// where the damping term clamps it to 0), so the mesh is graded there: from
+// the onset t_i = 2 T (i/N)^2 until it reaches the base step T/N, towards the
+// force's or the compression's zero like t^2 and geometrically down to 1e-3
+// of the base step, and once the force is 0 the step lands on the
+// separation. On it the error is c h^2 + O(h^3), and two runs at h and h/2
+// are Richardson-extrapolated (CollisionOptions::extrapolate).
 // The outputs are taken at the last separation.
 // Contacts are followed until the ball has left for good: after a separation
 // the integration goes on until the gap exceeds twice the largest
