@@ -9,9 +9,6 @@ namespace sweetspot::reports {
 namespace {
 
 constexpr double kDefaultHeadArea_m2 = 100 * 0.0254 * 0.0254;  // 100 sq in
-// ITF Rules of Tennis, Appendix II: the strung surface at most 15.5 in long and 11.5 in wide.
-constexpr double kHeadLengthOverWidth = 15.5 / 11.5;
-constexpr double kRim_m = 0.015;  // the frame between the tip and the first cross string
 
 // The design with the ball at `from_tip_m`, evaluated at `fidelity`.
 Evaluation evaluate_at(const io::DesignFile& design, double from_tip_m, std::string_view fidelity,
@@ -63,14 +60,26 @@ bool is_racquet(const io::DesignFile& design) {
   return design.implement_form == "specs" || design.design.strings.has_value();
 }
 
-double centre_of_strings_from_tip_m(const io::DesignFile& design) {
-  double area_m2 = kDefaultHeadArea_m2;
+HeadShape head_shape_of(const io::DesignFile& design) {
+  if (design.design.head) return *design.design.head;
+  HeadShape head;  // the default aspect ratio and hoop width of head_geometry.hpp
+  head.area_m2 = kDefaultHeadArea_m2;
   if (design.design.strings) {
     const double r = design.design.strings->head_radius_m;
-    area_m2 = std::numbers::pi * r * r;
+    head.area_m2 = std::numbers::pi * r * r;
   }
-  const double half_length = std::sqrt(area_m2 * kHeadLengthOverWidth / std::numbers::pi);
-  return std::min(kRim_m + half_length, 0.5 * design.design.implement.length_m());
+  return head;
+}
+
+double centre_of_strings_from_tip_m(const io::DesignFile& design) {
+  const HeadShape head = head_shape_of(design);
+  const double length = design.design.implement.length_m();
+  // The string bed's far end is one hoop width below the tip, its centre one
+  // semi-length a = sqrt(area aspect / pi) further (string_bed()); a head too
+  // long for the implement is put at its middle.
+  const double semi_length = std::sqrt(head.area_m2 * head.aspect_ratio / std::numbers::pi);
+  if (!(2.0 * (semi_length + head.hoop_width_m) <= length)) return 0.5 * length;
+  return length - string_bed(head, length).center_from_butt_m;
 }
 
 io::DesignFile with_default_impact(io::DesignFile design) {

@@ -12,6 +12,7 @@
 
 #include "io/design_reader.hpp"
 #include "sweetspot/evaluate.hpp"
+#include "sweetspot/head_geometry.hpp"
 
 namespace sweetspot::reports {
 
@@ -51,13 +52,20 @@ struct SweetSpots {
 // spec sheet (length, mass, balance, swingweight) or it has a string tension.
 bool is_racquet(const io::DesignFile& design);
 
-// The centre of the string bed [m from the tip] of a racquet: an ellipse of
-// the head's area (strings.head_size, 100 sq in by default) whose length is
-// 1.35 times its width (the ratio of the ITF's largest strung surface,
-// 15.5 in by 11.5 in, ITF Rules of Tennis, Appendix II), inside a 1.5 cm rim:
-// 18.1 cm from the tip for 100 sq in. A stated assumption of shape, not a
-// measurement: real heads differ by about a centimetre.
+// The centre of the string bed [m from the tip] of a racquet: the centre of
+// head_geometry.hpp's string bed (string_bed()), one hoop width plus the
+// ellipse's semi-length below the tip. The head is the design's own
+// (implement.headsize_sq_in, head_aspect_ratio, hoop_width_*) or else an ellipse
+// of the string bed's area (strings.head_size, 100 sq in by default) with the
+// default aspect ratio (1.35) and hoop width (1.5 cm): 18.15 cm from the tip
+// for 100 sq in. A stated assumption of shape, not a measurement: real heads
+// differ by about a centimetre. Half the length when the head would not fit.
 double centre_of_strings_from_tip_m(const io::DesignFile& design);
+
+// The head of a racquet design: implement.headsize_sq_in (with its aspect
+// ratio and hoop width) when given, else the default shape with the string
+// bed's area (pi strings.head_radius_m^2), else 100 sq in.
+HeadShape head_shape_of(const io::DesignFile& design);
 
 // The impact `evaluate` uses when the file gives none: for a racquet, the
 // centre of the strings (a coach's "centre hit"); for the paper's designs

@@ -41,18 +41,26 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "The centre of the strings of a 100 sq in head is the ITF-shaped ellipse's half length "
-    "inside the rim") {
-  // Closed form: 1.5 cm + sqrt(A (15.5 / 11.5) / pi), A = 100 sq in.
+    "The centre of the strings of a 100 sq in head is the head ellipse's half length inside "
+    "the hoop") {
+  // Closed form of head_geometry.hpp's string bed: one hoop width (1.5 cm) plus the
+  // semi-length a = sqrt(A k / pi) (pi a c = A, a = k c) below the tip, A = 100 sq in,
+  // aspect k = 1.35.
   const double area = 100 * 0.0254 * 0.0254;
-  const double expected = 0.015 + std::sqrt(area * (15.5 / 11.5) / std::numbers::pi);
+  const double expected = 0.015 + std::sqrt(area * 1.35 / std::numbers::pi);
   // A spec sheet without strings: the default head of exactly 100 sq in.
   CHECK(centre_of_strings_from_tip_m(design_from(
             R"({"implement": {"length_in": 27, "mass_g": 318, "balance_cm": 32.5,
                 "swingweight_kg_cm2": 325}})")) == Approx(expected).epsilon(1e-12));
   // With strings, the string bed's head (its default radius, 0.1433 m, is 100 sq in to 4 digits).
   CHECK(centre_of_strings_from_tip_m(design_from(kSpecSheet)) == Approx(expected).epsilon(1e-4));
-  CHECK(expected == Approx(0.1814).margin(1e-4));
+  CHECK(expected == Approx(0.1815).margin(1e-4));
+  // A head given on the implement is used as it is: 110 sq in, aspect 1.2, a 2 cm hoop.
+  const double a110 = std::sqrt(110 * 0.0254 * 0.0254 * 1.2 / std::numbers::pi);
+  CHECK(centre_of_strings_from_tip_m(design_from(
+            R"({"implement": {"length_in": 27, "mass_g": 318, "balance_cm": 32.5,
+                "swingweight_kg_cm2": 325, "headsize_sq_in": 110, "head_aspect_ratio": 1.2,
+                "hoop_width_cm": 2}})")) == Approx(0.02 + a110).epsilon(1e-12));
 }
 
 TEST_CASE(
