@@ -4,6 +4,9 @@
 
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
+
+#include "sweetspot/frame_modes.hpp"
 
 namespace sweetspot::reports {
 namespace {
@@ -35,6 +38,42 @@ std::string feel(const Evaluation& e, bool first = false) {
 }
 
 }  // namespace
+
+std::optional<SpotOutcome> best_rebound_on_axis(const io::DesignFile& design, double rel_tol,
+                                                double tolerance_m) {
+  if (!(tolerance_m > 0.0)) {
+    throw std::invalid_argument("tolerance_m: must be > 0 m, got " + std::to_string(tolerance_m));
+  }
+  if (!design.design.strings || !has_stiffness(design.design) || design.design.cor_rigid)
+    return std::nullopt;
+  const double length = design.design.implement.length_m();
+  const HeadShape head = head_shape_of(design);
+  const double semi_length = std::sqrt(head.area_m2 * head.aspect_ratio / std::numbers::pi);
+  double lo = std::min(head.hoop_width_m, length);  // from the tip
+  double hi = std::min(head.hoop_width_m + 2.0 * semi_length, length);
+  auto cor_at = [&](double from_tip) {
+    return evaluate_at(design, from_tip, "collision", rel_tol).apparent_cor;
+  };
+  // Golden-section search for the largest apparent COR: each step keeps the
+  // part of [lo, hi] that holds the maximum of a unimodal function and
+  // shrinks it by 1/phi, reusing one interior point.
+  const double inv_phi = (std::sqrt(5.0) - 1.0) / 2.0;
+  double x1 = hi - inv_phi * (hi - lo), x2 = lo + inv_phi * (hi - lo);
+  double f1 = cor_at(x1), f2 = cor_at(x2);
+  while (hi - lo > tolerance_m) {
+    if (f1 >= f2) {
+      hi = x2, x2 = x1, f2 = f1;
+      x1 = hi - inv_phi * (hi - lo);
+      f1 = cor_at(x1);
+    } else {
+      lo = x1, x1 = x2, f1 = f2;
+      x2 = lo + inv_phi * (hi - lo);
+      f2 = cor_at(x2);
+    }
+  }
+  const double best = 0.5 * (lo + hi);
+  return SpotOutcome{best, evaluate_at(design, best, "collision", rel_tol)};
+}
 
 std::string cm_text(double metres) {
   const double half_cm = std::round(metres * 200.0) / 2.0;
@@ -112,6 +151,8 @@ SweetSpots find_sweet_spots(const io::DesignFile& design, const Evaluation& aske
         "give the frame's stiffness (frame.fundamental_free_Hz, the free frame's fundamental "
         "frequency, or frame.EI_N_m2) to locate the node of least vibration";
   }
+  if (fidelity_of(asked) == Fidelity::kCollision)
+    spots.best_rebound = best_rebound_on_axis(design, rel_tol, kBestReboundTolerance_m);
   if (is_racquet(design)) {
     const double centre = centre_of_strings_from_tip_m(design);
     spots.centre_of_strings = SpotOutcome{centre, evaluate_at(design, centre, fidelity, rel_tol)};
@@ -165,9 +206,10 @@ std::vector<std::string> sweet_spot_sentences(const io::DesignFile& design,
   }
   // 3. The point of best rebound (the collision fidelity) slots in here.
   if (spots.best_rebound) {
-    sentences.push_back(fmt::format("The ball comes back fastest {} from the tip, where {}.",
-                                    cm_text(spots.best_rebound->from_tip_m),
-                                    feel(spots.best_rebound->evaluation)));
+    sentences.push_back(
+        fmt::format("The ball comes back fastest, at {:.2g} m/s, {} from the tip, where {}.",
+                    spots.best_rebound->evaluation.rebound_speed_m_s,
+                    cm_text(spots.best_rebound->from_tip_m), feel(spots.best_rebound->evaluation)));
   }
   // 4. The centre of the strings and the impact asked about.
   const bool asked_is_centre =

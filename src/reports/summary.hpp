@@ -36,9 +36,9 @@ struct SweetSpots {
   std::optional<double> node_free_from_tip_m;
   // When there is no node: the input that would give it.
   std::string node_missing;
-  // Reserved for the collision fidelity: the point where the ball rebounds
-  // fastest (the "power point"). find_sweet_spots() leaves it empty;
-  // sweet_spot_sentences() speaks of it once it is set.
+  // The point on the long axis of the string bed where the ball rebounds
+  // fastest (the "power point", best_rebound_on_axis()), evaluated by the
+  // solved collision; set when `asked` is at the collision fidelity.
   std::optional<SpotOutcome> best_rebound;
   // The centre of the strings, for a racquet (centre_of_strings_from_tip_m).
   std::optional<SpotOutcome> centre_of_strings;
@@ -72,6 +72,25 @@ HeadShape head_shape_of(const io::DesignFile& design);
 // (head-to-handle ratio, sections) the paper's 5 cm from the tip. Returns the
 // design with the impact moved and its provenance said, or the design as it is.
 io::DesignFile with_default_impact(io::DesignFile design);
+
+// How closely best_rebound is located [m]: the 0.5 cm the sentences round to.
+inline constexpr double kBestReboundTolerance_m = 0.005;
+
+// The impact point on the long axis of the string bed (head_shape_of(): from
+// one hoop width below the tip to the throat end of the ellipse) where the
+// solved collision (Fidelity::kCollision) returns the ball fastest, i.e. the
+// largest apparent COR e_A, found by golden-section search until the bracket
+// is at most `tolerance_m` wide (> 0, else std::invalid_argument naming
+// "tolerance_m"); the midpoint of the bracket, within tolerance_m / 2 of the
+// maximiser when e_A is unimodal along the bed. The frame's COR e peaks at the
+// fundamental's node (Cross, Am. J. Phys. 68, 1025 (2000)), but e_A = (e M_eff
+// - m) / (M_eff + m) also grows with M_eff towards the handle, so the point is
+// throat-side of the node (5.5 cm on designs/racquets/tour-100-strung.json,
+// 17.7 cm from the tip; the node is 12.2 cm). std::nullopt when the
+// design lacks what the collision needs (a string tension, the frame's
+// stiffness, no cor_rigid). Throws like io::evaluate_design_file.
+std::optional<SpotOutcome> best_rebound_on_axis(const io::DesignFile& design, double rel_tol,
+                                                double tolerance_m = kBestReboundTolerance_m);
 
 // Evaluates `design` at its sweet spots at the fidelity of `asked` (the
 // design's own evaluation), the hand-held modes to `rel_tol`. Throws like
