@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -9,6 +10,7 @@
 #include "sweetspot/collision.hpp"
 #include "sweetspot/frame_modes.hpp"
 #include "sweetspot/impact_response.hpp"
+#include "sweetspot/rigid_impact.hpp"
 
 namespace sweetspot {
 
@@ -33,7 +35,22 @@ Evaluation evaluate_collision(const Design& design, double rel_tol) {
   options.modes = kCollisionModes;
   options.rel_tol = rel_tol;
   const ResponseModel model = response_model(design, options);
-  const FrameAtImpact frame = frame_at_impact(model, design.impact_from_butt_m);
+  FrameAtImpact frame = frame_at_impact(model, design.impact_from_butt_m);
+  // An impact y off the long axis also twists the implement: the rigid body's
+  // effective mass at the impact point is the rigid model's (evaluate()),
+  // 1/M_eff = 1/M + b^2/I + y^2/I_polar (rigid_impact.hpp). The flexible modes
+  // stay the bending modes (torsional modes are not modelled). Nothing is
+  // added on the axis, so y = 0 is the in-plane collision to the bit.
+  if (design.impact_off_axis_m != 0.0) {
+    const std::optional<double> polar = polar_inertia_kg_m2(design);
+    if (!polar) {
+      throw std::invalid_argument(
+          "impact/off_axis_m: an impact off the long axis needs the polar inertia "
+          "(implement/twistweight_kg_cm2 or implement/headsize_sq_in), got " +
+          detail::format_number(design.impact_off_axis_m) + " m");
+    }
+    frame.inverse_effective_mass_per_kg += impact_twist_per_kg(design.impact_off_axis_m, *polar);
+  }
   const StringBedDynamics bed = string_bed_dynamics(*design.strings, design.string_bed_mass_kg,
                                                     design.string_bed_damping_ratio);
   CollisionOptions collision_options;

@@ -15,7 +15,8 @@ void BenchCommand::add_to(CLI::App& app) {
       ->add_option(
           "what", what,
           "speed (the rigid model, the command line end to end, the optimizer, each fidelity), "
-          "modes, collision (one solved collision), map (the string-bed map alone, printed), or all")
+          "modes, collision (one solved collision), map (the string-bed map alone, printed), or "
+          "all")
       ->check(CLI::IsMember({"speed", "modes", "collision", "map", "all"}))
       ->capture_default_str();
   command->add_option("--designs", options.designs_dir, "Folder holding studies/")

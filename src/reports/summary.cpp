@@ -4,14 +4,14 @@
 
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
+
+#include "sweetspot/frame_modes.hpp"
 
 namespace sweetspot::reports {
 namespace {
 
 constexpr double kDefaultHeadArea_m2 = 100 * 0.0254 * 0.0254;  // 100 sq in
-// ITF Rules of Tennis, Appendix II: the strung surface at most 15.5 in long and 11.5 in wide.
-constexpr double kHeadLengthOverWidth = 15.5 / 11.5;
-constexpr double kRim_m = 0.015;  // the frame between the tip and the first cross string
 
 // The design with the ball at `from_tip_m`, evaluated at `fidelity`.
 Evaluation evaluate_at(const io::DesignFile& design, double from_tip_m, std::string_view fidelity,
@@ -39,6 +39,42 @@ std::string feel(const Evaluation& e, bool first = false) {
 
 }  // namespace
 
+std::optional<SpotOutcome> best_rebound_on_axis(const io::DesignFile& design, double rel_tol,
+                                                double tolerance_m) {
+  if (!(tolerance_m > 0.0)) {
+    throw std::invalid_argument("tolerance_m: must be > 0 m, got " + std::to_string(tolerance_m));
+  }
+  if (!design.design.strings || !has_stiffness(design.design) || design.design.cor_rigid)
+    return std::nullopt;
+  const double length = design.design.implement.length_m();
+  const HeadShape head = head_shape_of(design);
+  const double semi_length = std::sqrt(head.area_m2 * head.aspect_ratio / std::numbers::pi);
+  double lo = std::min(head.hoop_width_m, length);  // from the tip
+  double hi = std::min(head.hoop_width_m + 2.0 * semi_length, length);
+  auto cor_at = [&](double from_tip) {
+    return evaluate_at(design, from_tip, "collision", rel_tol).apparent_cor;
+  };
+  // Golden-section search for the largest apparent COR: each step keeps the
+  // part of [lo, hi] that holds the maximum of a unimodal function and
+  // shrinks it by 1/phi, reusing one interior point.
+  const double inv_phi = (std::sqrt(5.0) - 1.0) / 2.0;
+  double x1 = hi - inv_phi * (hi - lo), x2 = lo + inv_phi * (hi - lo);
+  double f1 = cor_at(x1), f2 = cor_at(x2);
+  while (hi - lo > tolerance_m) {
+    if (f1 >= f2) {
+      hi = x2, x2 = x1, f2 = f1;
+      x1 = hi - inv_phi * (hi - lo);
+      f1 = cor_at(x1);
+    } else {
+      lo = x1, x1 = x2, f1 = f2;
+      x2 = lo + inv_phi * (hi - lo);
+      f2 = cor_at(x2);
+    }
+  }
+  const double best = 0.5 * (lo + hi);
+  return SpotOutcome{best, evaluate_at(design, best, "collision", rel_tol)};
+}
+
 std::string cm_text(double metres) {
   const double half_cm = std::round(metres * 200.0) / 2.0;
   if (half_cm == std::floor(half_cm)) return fmt::format("{:.0f} cm", half_cm == 0 ? 0.0 : half_cm);
@@ -63,14 +99,26 @@ bool is_racquet(const io::DesignFile& design) {
   return design.implement_form == "specs" || design.design.strings.has_value();
 }
 
-double centre_of_strings_from_tip_m(const io::DesignFile& design) {
-  double area_m2 = kDefaultHeadArea_m2;
+HeadShape head_shape_of(const io::DesignFile& design) {
+  if (design.design.head) return *design.design.head;
+  HeadShape head;  // the default aspect ratio and hoop width of head_geometry.hpp
+  head.area_m2 = kDefaultHeadArea_m2;
   if (design.design.strings) {
     const double r = design.design.strings->head_radius_m;
-    area_m2 = std::numbers::pi * r * r;
+    head.area_m2 = std::numbers::pi * r * r;
   }
-  const double half_length = std::sqrt(area_m2 * kHeadLengthOverWidth / std::numbers::pi);
-  return std::min(kRim_m + half_length, 0.5 * design.design.implement.length_m());
+  return head;
+}
+
+double centre_of_strings_from_tip_m(const io::DesignFile& design) {
+  const HeadShape head = head_shape_of(design);
+  const double length = design.design.implement.length_m();
+  // The string bed's far end is one hoop width below the tip, its centre one
+  // semi-length a = sqrt(area aspect / pi) further (string_bed()); a head too
+  // long for the implement is put at its middle.
+  const double semi_length = std::sqrt(head.area_m2 * head.aspect_ratio / std::numbers::pi);
+  if (!(2.0 * (semi_length + head.hoop_width_m) <= length)) return 0.5 * length;
+  return length - string_bed(head, length).center_from_butt_m;
 }
 
 io::DesignFile with_default_impact(io::DesignFile design) {
@@ -103,6 +151,8 @@ SweetSpots find_sweet_spots(const io::DesignFile& design, const Evaluation& aske
         "give the frame's stiffness (frame.fundamental_free_Hz, the free frame's fundamental "
         "frequency, or frame.EI_N_m2) to locate the node of least vibration";
   }
+  if (fidelity_of(asked) == Fidelity::kCollision)
+    spots.best_rebound = best_rebound_on_axis(design, rel_tol, kBestReboundTolerance_m);
   if (is_racquet(design)) {
     const double centre = centre_of_strings_from_tip_m(design);
     spots.centre_of_strings = SpotOutcome{centre, evaluate_at(design, centre, fidelity, rel_tol)};
@@ -156,9 +206,10 @@ std::vector<std::string> sweet_spot_sentences(const io::DesignFile& design,
   }
   // 3. The point of best rebound (the collision fidelity) slots in here.
   if (spots.best_rebound) {
-    sentences.push_back(fmt::format("The ball comes back fastest {} from the tip, where {}.",
-                                    cm_text(spots.best_rebound->from_tip_m),
-                                    feel(spots.best_rebound->evaluation)));
+    sentences.push_back(
+        fmt::format("The ball comes back fastest, at {:.2g} m/s, {} from the tip, where {}.",
+                    spots.best_rebound->evaluation.rebound_speed_m_s,
+                    cm_text(spots.best_rebound->from_tip_m), feel(spots.best_rebound->evaluation)));
   }
   // 4. The centre of the strings and the impact asked about.
   const bool asked_is_centre =

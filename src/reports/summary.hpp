@@ -12,6 +12,7 @@
 
 #include "io/design_reader.hpp"
 #include "sweetspot/evaluate.hpp"
+#include "sweetspot/head_geometry.hpp"
 
 namespace sweetspot::reports {
 
@@ -35,9 +36,9 @@ struct SweetSpots {
   std::optional<double> node_free_from_tip_m;
   // When there is no node: the input that would give it.
   std::string node_missing;
-  // Reserved for the collision fidelity: the point where the ball rebounds
-  // fastest (the "power point"). find_sweet_spots() leaves it empty;
-  // sweet_spot_sentences() speaks of it once it is set.
+  // The point on the long axis of the string bed where the ball rebounds
+  // fastest (the "power point", best_rebound_on_axis()), evaluated by the
+  // solved collision; set when `asked` is at the collision fidelity.
   std::optional<SpotOutcome> best_rebound;
   // The centre of the strings, for a racquet (centre_of_strings_from_tip_m).
   std::optional<SpotOutcome> centre_of_strings;
@@ -51,19 +52,45 @@ struct SweetSpots {
 // spec sheet (length, mass, balance, swingweight) or it has a string tension.
 bool is_racquet(const io::DesignFile& design);
 
-// The centre of the string bed [m from the tip] of a racquet: an ellipse of
-// the head's area (strings.head_size, 100 sq in by default) whose length is
-// 1.35 times its width (the ratio of the ITF's largest strung surface,
-// 15.5 in by 11.5 in, ITF Rules of Tennis, Appendix II), inside a 1.5 cm rim:
-// 18.1 cm from the tip for 100 sq in. A stated assumption of shape, not a
-// measurement: real heads differ by about a centimetre.
+// The centre of the string bed [m from the tip] of a racquet: the centre of
+// head_geometry.hpp's string bed (string_bed()), one hoop width plus the
+// ellipse's semi-length below the tip. The head is the design's own
+// (implement.headsize_sq_in, head_aspect_ratio, hoop_width_*) or else an ellipse
+// of the string bed's area (strings.head_size, 100 sq in by default) with the
+// default aspect ratio (1.35) and hoop width (1.5 cm): 18.15 cm from the tip
+// for 100 sq in. A stated assumption of shape, not a measurement: real heads
+// differ by about a centimetre. Half the length when the head would not fit.
 double centre_of_strings_from_tip_m(const io::DesignFile& design);
+
+// The head of a racquet design: implement.headsize_sq_in (with its aspect
+// ratio and hoop width) when given, else the default shape with the string
+// bed's area (pi strings.head_radius_m^2), else 100 sq in.
+HeadShape head_shape_of(const io::DesignFile& design);
 
 // The impact `evaluate` uses when the file gives none: for a racquet, the
 // centre of the strings (a coach's "centre hit"); for the paper's designs
 // (head-to-handle ratio, sections) the paper's 5 cm from the tip. Returns the
 // design with the impact moved and its provenance said, or the design as it is.
 io::DesignFile with_default_impact(io::DesignFile design);
+
+// How closely best_rebound is located [m]: the 0.5 cm the sentences round to.
+inline constexpr double kBestReboundTolerance_m = 0.005;
+
+// The impact point on the long axis of the string bed (head_shape_of(): from
+// one hoop width below the tip to the throat end of the ellipse) where the
+// solved collision (Fidelity::kCollision) returns the ball fastest, i.e. the
+// largest apparent COR e_A, found by golden-section search until the bracket
+// is at most `tolerance_m` wide (> 0, else std::invalid_argument naming
+// "tolerance_m"); the midpoint of the bracket, within tolerance_m / 2 of the
+// maximiser when e_A is unimodal along the bed. The frame's COR e peaks at the
+// fundamental's node (Cross, Am. J. Phys. 68, 1025 (2000)), but e_A = (e M_eff
+// - m) / (M_eff + m) also grows with M_eff towards the handle, so the point is
+// throat-side of the node (5.5 cm on designs/racquets/tour-100-strung.json,
+// 17.7 cm from the tip; the node is 12.2 cm). std::nullopt when the
+// design lacks what the collision needs (a string tension, the frame's
+// stiffness, no cor_rigid). Throws like io::evaluate_design_file.
+std::optional<SpotOutcome> best_rebound_on_axis(const io::DesignFile& design, double rel_tol,
+                                                double tolerance_m = kBestReboundTolerance_m);
 
 // Evaluates `design` at its sweet spots at the fidelity of `asked` (the
 // design's own evaluation), the hand-held modes to `rel_tol`. Throws like

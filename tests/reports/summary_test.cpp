@@ -41,18 +41,26 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "The centre of the strings of a 100 sq in head is the ITF-shaped ellipse's half length "
-    "inside the rim") {
-  // Closed form: 1.5 cm + sqrt(A (15.5 / 11.5) / pi), A = 100 sq in.
+    "The centre of the strings of a 100 sq in head is the head ellipse's half length inside "
+    "the hoop") {
+  // Closed form of head_geometry.hpp's string bed: one hoop width (1.5 cm) plus the
+  // semi-length a = sqrt(A k / pi) (pi a c = A, a = k c) below the tip, A = 100 sq in,
+  // aspect k = 1.35.
   const double area = 100 * 0.0254 * 0.0254;
-  const double expected = 0.015 + std::sqrt(area * (15.5 / 11.5) / std::numbers::pi);
+  const double expected = 0.015 + std::sqrt(area * 1.35 / std::numbers::pi);
   // A spec sheet without strings: the default head of exactly 100 sq in.
   CHECK(centre_of_strings_from_tip_m(design_from(
             R"({"implement": {"length_in": 27, "mass_g": 318, "balance_cm": 32.5,
                 "swingweight_kg_cm2": 325}})")) == Approx(expected).epsilon(1e-12));
   // With strings, the string bed's head (its default radius, 0.1433 m, is 100 sq in to 4 digits).
   CHECK(centre_of_strings_from_tip_m(design_from(kSpecSheet)) == Approx(expected).epsilon(1e-4));
-  CHECK(expected == Approx(0.1814).margin(1e-4));
+  CHECK(expected == Approx(0.1815).margin(1e-4));
+  // A head given on the implement is used as it is: 110 sq in, aspect 1.2, a 2 cm hoop.
+  const double a110 = std::sqrt(110 * 0.0254 * 0.0254 * 1.2 / std::numbers::pi);
+  CHECK(centre_of_strings_from_tip_m(design_from(
+            R"({"implement": {"length_in": 27, "mass_g": 318, "balance_cm": 32.5,
+                "swingweight_kg_cm2": 325, "headsize_sq_in": 110, "head_aspect_ratio": 1.2,
+                "hoop_width_cm": 2}})")) == Approx(0.02 + a110).epsilon(1e-12));
 }
 
 TEST_CASE(
@@ -88,7 +96,10 @@ TEST_CASE(
         Approx(asked.length_m - *asked.cop_hand_from_butt_m).epsilon(1e-12));
   CHECK(spots.node_hand->from_tip_m ==
         Approx(asked.length_m - *asked.modal->node_hand_from_butt_m).epsilon(1e-12));
-  CHECK_FALSE(spots.best_rebound);  // the collision fidelity's
+  CHECK(spots.best_rebound.has_value() == (fidelity_of(asked) == Fidelity::kCollision));
+  const SweetSpots modal =
+      find_sweet_spots(design, io::evaluate_design_file(design, "modal", 1e-6), 1e-6);
+  CHECK_FALSE(modal.best_rebound);  // the collision fidelity's
 
   const std::string text = sweet_spot_paragraph(design, spots);
   CHECK(contains(text, cm_text(spots.cop_hand->from_tip_m) + " from the tip"));
@@ -109,6 +120,53 @@ TEST_CASE("Without the stiffness the sentences say which input would locate the 
   const std::string text = sweet_spot_paragraph(design, spots);
   CHECK(contains(text, "frame.fundamental_free_Hz"));
   CHECK(contains(text, "5 cm from the tip"));
+}
+
+}  // namespace sweetspot::reports
+
+namespace sweetspot::reports {
+
+TEST_CASE(
+    "The point of best rebound: the golden-section search agrees with a brute-force scan, near "
+    "the fundamental's node") {
+  const io::DesignFile design =
+      io::load_design(SWEETSPOT_SOURCE_DIR "/designs/racquets/tour-100-strung.json");
+  const Evaluation asked = io::evaluate_design_file(design, "collision", 1e-6);
+  const SweetSpots spots = find_sweet_spots(design, asked, 1e-6);
+  REQUIRE(spots.best_rebound);
+  const double found = spots.best_rebound->from_tip_m;
+  // Brute force: every 2.5 mm along the string bed's axis (head_geometry.hpp:
+  // one hoop width below the tip to 2a further).
+  const HeadShape head = head_shape_of(design);
+  const double a = std::sqrt(head.area_m2 * head.aspect_ratio / std::numbers::pi);
+  double best_x = 0.0, best_cor = -1.0;
+  for (double x = head.hoop_width_m; x <= head.hoop_width_m + 2.0 * a; x += 0.0025) {
+    io::DesignFile moved = design;
+    moved.design.impact_from_butt_m = asked.length_m - x;
+    const double cor = io::evaluate_design_file(moved, "collision", 1e-6).apparent_cor;
+    if (cor > best_cor) best_cor = cor, best_x = x;
+  }
+  // The search's tolerance (0.5 cm) plus the scan's half step.
+  CHECK(found == Approx(best_x).margin(kBestReboundTolerance_m + 0.00125));
+  CHECK(spots.best_rebound->evaluation.apparent_cor >= best_cor - 1e-3);
+  const std::string text = sweet_spot_paragraph(design, spots);
+  CHECK(contains(text, "comes back fastest"));
+  CHECK(contains(text, cm_text(found) + " from the tip"));
+  CHECK(contains(text, newton_text(spots.best_rebound->evaluation.peak_wrist_force_N)));
+  // Where it lies. Cross, Am. J. Phys. 68, 1025 (2000): the frame's COR e is
+  // largest at the fundamental's node (collision_test.cpp checks it to 1 cm);
+  // the rebound speed is the apparent COR e_A = (e M_eff - m) / (M_eff + m)
+  // (Eq. 16), and M_eff grows towards the handle, so e_A peaks between the node
+  // and the throat: on this racquet 5.5 cm throat-side of the hand-held node
+  // (17.7 cm against 12.2 cm from the tip), inside the string bed. Checked: at
+  // the node e is higher and e_A lower than at the point found, and the point is
+  // throat-side of the node by less than the string bed's semi-length a.
+  REQUIRE(spots.node_hand);
+  CHECK(spots.node_hand->evaluation.cor > spots.best_rebound->evaluation.cor);
+  CHECK(spots.node_hand->evaluation.apparent_cor < spots.best_rebound->evaluation.apparent_cor);
+  CHECK(found > spots.node_hand->from_tip_m);
+  CHECK(found - spots.node_hand->from_tip_m < a);
+  CHECK_THROWS_WITH(best_rebound_on_axis(design, 1e-6, 0.0), Catch::Contains("tolerance_m"));
 }
 
 }  // namespace sweetspot::reports
