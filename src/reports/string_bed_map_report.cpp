@@ -170,7 +170,10 @@ std::string string_bed_heat_map_svg_script(const StringBedMap& map, MapQuantity 
                                            int width, int height) {
   return fmt::format(
              "set terminal svg size {},{} dynamic enhanced font 'DejaVu Sans,12' background "
-             "'#ffffff'\n",
+             "'#ffffff'\n"
+             // The svg terminal's text is measured smaller than drawn: room
+             // below for the axis label and the key under it.
+             "set bmargin 8\n",
              width, height) +
          heat_map_commands(map, quantity, length_m, design_name);
 }
