@@ -446,6 +446,11 @@ std::string replace_all(std::string text, std::string_view from, std::string_vie
 
 std::optional<std::string> render_svg(const Plot& plot, const std::string& id_prefix,
                                       std::string* why, int width, int height) {
+  return render_script_svg(gnuplot_svg_script(plot, width, height), id_prefix, why);
+}
+
+std::optional<std::string> render_script_svg(const std::string& script,
+                                             const std::string& id_prefix, std::string* why) {
   try {
     const int fd = ::memfd_create("sweetspot-svg", MFD_CLOEXEC);
     if (fd < 0) throw PlotFailure(std::string("cannot hold the plot: ") + std::strerror(errno));
@@ -453,7 +458,7 @@ std::optional<std::string> render_svg(const Plot& plot, const std::string& id_pr
       int fd;
       ~Closer() { ::close(fd); }
     } closer{fd};
-    run_gnuplot(gnuplot_svg_script(plot, width, height), fd);
+    run_gnuplot(script, fd);
     std::string svg;
     std::array<char, 1 << 16> buffer{};
     for (off_t at = 0;;) {

@@ -112,4 +112,9 @@ std::string gnuplot_label(const std::string& text);
 std::optional<std::string> render_svg(const Plot& plot, const std::string& id_prefix,
                                       std::string* why, int width = 960, int height = 640);
 
+// The same for any gnuplot script that sets an svg terminal and no output (a
+// heat map, say).
+std::optional<std::string> render_script_svg(const std::string& script,
+                                             const std::string& id_prefix, std::string* why);
+
 }  // namespace sweetspot::io

@@ -9,7 +9,9 @@
 #include "io/format.hpp"
 #include "io/outputs.hpp"
 #include "io/plot.hpp"
+#include "reports/string_bed_map_report.hpp"
 #include "reports/summary.hpp"
+#include "studies/string_bed_map.hpp"
 #include "sweetspot/evaluate.hpp"
 
 namespace sweetspot::io {
@@ -206,6 +208,110 @@ std::string figure(const Plot& plot, const std::string& id, const std::string& c
                      caption);
 }
 
+// The table under the maps takes every kMapTableStep-th grid point, from the
+// third, along and across (a 50 x 50 grid gives 10 x 10, those on the bed).
+constexpr int kMapTableStep = 5;
+constexpr int kMapTableFirst = 2;
+
+// The string-bed maps (power, shock and, with the frame's stiffness, feel):
+// gnuplot's heat maps as inline SVG, a caption each, the numbers behind them.
+// Without a head size the drawing's mid-size head is assumed, and said.
+std::string maps_html(const DesignFile& file) {
+  Design d = file.design;
+  const double L = d.implement.length_m();
+  const bool head_assumed = !d.head && !d.twistweight_kg_m2;
+  if (head_assumed) {
+    HeadShape head;
+    head.area_m2 = kDefaultHeadArea_m2;
+    d.head = head;
+  }
+  StringBedMapOptions options;
+  StringBedMap map;
+  std::string html = "<section id=\"maps\"><h2>Over the string bed</h2>\n<!-- sweetspot:maps -->\n";
+  try {
+    options.fidelity =
+        resolve_fidelity("auto", d) == Fidelity::kRigid ? Fidelity::kRigid : Fidelity::kModal;
+    map = string_bed_map(d, options);
+  } catch (const std::invalid_argument& e) {
+    return html + "<p class=\"missing\">No maps for this design: " + html_escape(e.what()) +
+           "</p>\n</section>\n";
+  }
+  std::string lines;
+  if (map.cop_hand_from_butt_m)
+    lines += fmt::format("the solid line across the head is the hand-held COP, {} cm from the tip",
+                         cm(L - *map.cop_hand_from_butt_m));
+  if (map.node_free_from_butt_m)
+    lines += fmt::format(
+        "{}the dashed line the node of the free frame's fundamental, {} cm from "
+        "the tip",
+        lines.empty() ? "" : "; ", cm(L - *map.node_free_from_butt_m));
+  if (lines.empty()) lines = "neither the COP nor the node falls on the string bed";
+  html += fmt::format(
+      "<p>The head seen from the front, tip up, for a hit anywhere on the strings ({} by {} "
+      "points over the bed's ellipse{}). Warm colours are more of what each map shows.</p>\n",
+      map.columns, map.rows,
+      head_assumed
+          ? ": the head's size is not given, so a 100 sq in head is assumed, as in the drawing; "
+            "give <code>implement.headsize_sq_in</code> for yours"
+          : "");
+  html += "<div class=\"maps\">\n";
+  for (const MapQuantity q : map_quantities(map)) {
+    const std::string name = map_quantity_name(q);
+    std::string why;
+    const auto svg =
+        render_script_svg(string_bed_heat_map_svg_script(map, q, L, ""), "map-" + name + "-", &why);
+    std::string says;
+    switch (q) {
+      case MapQuantity::kPower:
+        says =
+            "Power: how fast the ball comes back (the apparent COR, Eq. 16 with the twist "
+            "about the long axis), highest near the throat and on the axis";
+        break;
+      case MapQuantity::kShock:
+        says = "Shock: the peak force on the wrist, least along the hand-held COP";
+        break;
+      case MapQuantity::kFeel:
+        says = "Feel: the vibration energy the hit leaves in the frame, least near the node";
+        break;
+    }
+    html +=
+        fmt::format("<figure id=\"map-{}\">{}<figcaption>{}; {}.</figcaption></figure>\n", name,
+                    svg ? *svg : "<p class=\"missing\">Map not drawn: " + html_escape(why) + "</p>",
+                    says, lines);
+  }
+  html += "</div>\n";
+  const bool feel = map.fidelity != Fidelity::kRigid;
+  if (!feel) {
+    html +=
+        "<p>No feel map: the vibration a hit excites needs the frame's stiffness; give "
+        "<code>frame.fundamental_free_Hz</code> (or <code>frame.RA</code>, or "
+        "<code>frame.EI_N_m2</code>).</p>\n";
+  }
+  html += fmt::format(
+      "<details><summary>The numbers behind these maps</summary><p>Every {}th grid point along "
+      "and across, from the {}rd, where it is on the strings (the CSV of <code>sweetspot map"
+      "</code> has them all).</p><div class=\"table-wrap\"><table id=\"map-numbers\"><thead>"
+      "<tr><th class=\"num\">from the tip (cm)</th><th class=\"num\">off the axis (cm)</th>"
+      "<th class=\"num\">apparent COR</th><th class=\"num\">peak wrist force (N)</th>{}</tr>"
+      "</thead><tbody>\n",
+      kMapTableStep, kMapTableFirst + 1, feel ? "<th class=\"num\">vibration energy (J)</th>" : "");
+  for (int j = kMapTableFirst; j < map.rows; j += kMapTableStep) {
+    for (int i = kMapTableFirst; i < map.columns; i += kMapTableStep) {
+      const StringBedMapPoint& p = map.points[static_cast<std::size_t>(j) * map.columns + i];
+      if (!p.on_bed) continue;
+      html += fmt::format(
+          "<tr><td class=\"num\">{:.1f}</td><td class=\"num\">{:.1f}</td><td class=\"num\">"
+          "{:.3f}</td><td class=\"num\">{:.0f}</td>",
+          (L - p.from_butt_m) * 100.0, p.off_axis_m * 100.0, p.apparent_cor, p.peak_wrist_force_N);
+      if (feel)
+        html += "<td class=\"num\">" +
+                (p.vibration_energy_J ? significant(*p.vibration_energy_J, 3) : "—") + "</td>";
+      html += "</tr>\n";
+    }
+  }
+  return html + "</tbody></table></div></details>\n</section>\n";
+}
+
 constexpr const char* kStyle = R"(
 :root { --ink: #1b1f24; --muted: #5b6470; --line: #d5dae0; --accent: #0b5fa5; }
 * { box-sizing: border-box; }
@@ -244,7 +350,7 @@ td.num { white-space: nowrap; }
 #positions td:first-child { min-width: 10rem; }
 code { font-size: 0.9em; overflow-wrap: anywhere; }
 details summary { cursor: pointer; color: var(--accent); }
-.hook { border: 2px dashed var(--line); padding: 0.6rem 1rem; color: var(--muted); }
+.maps { display: grid; grid-template-columns: repeat(auto-fit, minmax(24rem, 1fr)); gap: 0 1.2rem; }
 .missing { color: #9c2a00; }
 footer { color: var(--muted); font-size: 0.88rem; margin-top: 2.5rem; }
 @media (max-width: 640px) {
@@ -513,13 +619,7 @@ std::string design_html_report(const DesignFile& file, const Json& document) {
   }
   html += "</tbody></table></div></details>\n</section>\n";
 
-  // The string-bed maps (power, shock, feel) belong here once `sweetspot map`
-  // exists: the hook below is replaced by their section.
-  html +=
-      "<section id=\"maps\"><h2>Over the string bed</h2>\n<!-- sweetspot:maps -->\n"
-      "<p class=\"hook\">Maps of power (apparent COR), shock (wrist force) and feel (vibration) "
-      "over the whole string bed come with the string-bed map model; this version of sweetspot "
-      "models hits on the racquet's long axis only.</p>\n</section>\n";
+  html += maps_html(file);
 
   // Every output, in people's units.
   html +=

@@ -69,8 +69,11 @@ double value_of(const StringBedMapPoint& p, MapQuantity quantity) {
 
 }  // namespace
 
-std::string string_bed_heat_map_script(const StringBedMap& map, MapQuantity quantity,
-                                       double length_m, const std::string& design_name) {
+namespace {
+
+// Everything of a heat map but the terminal.
+std::string heat_map_commands(const StringBedMap& map, MapQuantity quantity, double length_m,
+                              const std::string& design_name) {
   const HeadEllipse& bed = map.bed;
   const double cm = 100.0;
   // Seen from the front, tip up: x across (cm off the axis), y along (cm from the tip, down).
@@ -96,8 +99,8 @@ std::string string_bed_heat_map_script(const StringBedMap& map, MapQuantity quan
       break;
   }
   std::string s;
-  s += "set terminal pngcairo size 720,900 enhanced font 'DejaVu Sans,11'\n";
-  s += "set title " + gnuplot_label(design_name + ": " + title) + "\n";
+  s +=
+      "set title " + gnuplot_label(design_name.empty() ? title : design_name + ": " + title) + "\n";
   s += "set xlabel " + gnuplot_label("off the long axis (cm; 3 o'clock to the right)") + "\n";
   s += "set ylabel " + gnuplot_label("from the tip (cm)") + "\n";
   s += "set cblabel " + gnuplot_label(colour_label) + "\n";
@@ -152,6 +155,27 @@ std::string string_bed_heat_map_script(const StringBedMap& map, MapQuantity quan
        "'gray20' title " +
        gnuplot_label("string bed") + lines + "\n";
   return s;
+}
+
+}  // namespace
+
+std::string string_bed_heat_map_script(const StringBedMap& map, MapQuantity quantity,
+                                       double length_m, const std::string& design_name) {
+  return "set terminal pngcairo size 720,900 enhanced font 'DejaVu Sans,11'\n" +
+         heat_map_commands(map, quantity, length_m, design_name);
+}
+
+std::string string_bed_heat_map_svg_script(const StringBedMap& map, MapQuantity quantity,
+                                           double length_m, const std::string& design_name,
+                                           int width, int height) {
+  return fmt::format(
+             "set terminal svg size {},{} dynamic enhanced font 'DejaVu Sans,12' background "
+             "'#ffffff'\n"
+             // The svg terminal's text is measured smaller than drawn: room
+             // below for the axis label and the key under it.
+             "set bmargin 8\n",
+             width, height) +
+         heat_map_commands(map, quantity, length_m, design_name);
 }
 
 }  // namespace sweetspot::io

@@ -33,4 +33,11 @@ std::string map_quantity_name(MapQuantity quantity);
 std::string string_bed_heat_map_script(const StringBedMap& map, MapQuantity quantity,
                                        double length_m, const std::string& design_name);
 
+// The same heat map for gnuplot's svg terminal ("dynamic": it scales with the
+// page), laid out at `width` x `height` pixels, for io::render_script_svg();
+// an empty `design_name` leaves the title to the quantity alone.
+std::string string_bed_heat_map_svg_script(const StringBedMap& map, MapQuantity quantity,
+                                           double length_m, const std::string& design_name,
+                                           int width = 600, int height = 680);
+
 }  // namespace sweetspot::io

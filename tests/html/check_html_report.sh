@@ -5,7 +5,8 @@
 # 2. the page is well-formed XML (xmllint), so no tag is left open;
 # 3. chromium's rendered DOM (--dump-dom) holds the numbers `sweetspot evaluate
 #    --format json` gives, rounded here with awk (not read from the page), and
-#    the hostile name only as text;
+#    the hostile name only as text; the maps over the string bed are there
+#    and the numbers under them are those of `sweetspot map --format csv`;
 # 4. screenshots at desktop (1280 px) and phone (390 px) widths are not blank:
 #    a blank page's PNG is almost all one colour and compresses to a few kB,
 #    so each must be several times the size of chromium's screenshot of an
@@ -82,6 +83,31 @@ expect "Length $(fixed "$length" 100 1) cm"
 # The drawings and the plots (two layouts each) are in the DOM.
 svgs=$(grep -o '<svg' "$out/dom.html" | wc -l)
 ((svgs >= 6)) || fail "the rendered page has $svgs SVG pictures, expected the 2 drawings and 2 plots twice"
+
+# The maps over the string bed: three heat maps, and every row of the table
+# under them is a point of `sweetspot map --format csv` (same 50 x 50 grid,
+# same level: auto), rounded here with awk. The page assumes a 100 sq in head
+# when the file gives none, so the CSV is of a copy that gives that head.
+expect '<section id="maps">'
+for quantity in power shock feel; do
+  grep -q "<figure id=\"map-$quantity\"><svg" "$out/dom.html" || fail "the rendered page lacks the $quantity map"
+done
+if grep -q 'headsize_sq_in' "$design"; then
+  cp "$design" "$out/headed.json"
+else
+  sed 's|"implement": *{|"implement": { "headsize_sq_in": 100,|' "$design" >"$out/headed.json"
+fi
+"$sweetspot" map "$out/headed.json" --format csv >"$out/map.csv" || fail "sweetspot map failed"
+sed -n '/<table id="map-numbers">/,/<\/table>/p' "$out/dom.html" | grep '^<tr><td' >"$out/map-rows.html" || true
+rows=$(wc -l <"$out/map-rows.html")
+((rows >= 20)) || fail "the maps' table has $rows rows, expected a subsample of the grid"
+# A row as the page writes it: cm to 0.1, the COR to 0.001, the force to 1 N
+# (the energy column is left out: it is rounded to significant figures).
+awk -F, 'NR > 1 { printf "<tr><td class=\"num\">%.1f</td><td class=\"num\">%.1f</td><td class=\"num\">%.3f</td><td class=\"num\">%.0f</td>\n", $2 * 100, $3 * 100, $5, $6 }' \
+  "$out/map.csv" >"$out/map-expected.txt"
+matched=$(grep -cFf "$out/map-expected.txt" "$out/map-rows.html" || true)
+((matched == rows)) || fail "only $matched of the maps' $rows table rows are points of sweetspot map's CSV"
+echo "maps: $rows table rows, each a point of sweetspot map's CSV"
 
 # The hostile name is text, never markup.
 browse "file://$out/hostile.html" --dump-dom >"$out/hostile-dom.html" || fail "chromium could not render the hostile page"
