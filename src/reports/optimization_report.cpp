@@ -272,6 +272,8 @@ Plot convergence_plot(const Study& study, const OptimizationResult& r) {
             {objective},
             {},
             {}};
+  // Where the best-so-far curve is not: it rises when maximising.
+  if (single && term->goal == Goal::kMaximize) plot.key_position = "bottom right";
   if (!r.constraints.empty()) {
     // Beside the objective, on its own logarithmic axis: how far the best
     // point is outside its worst limit (the line ends where every limit holds).
