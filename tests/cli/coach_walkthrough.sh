@@ -27,10 +27,14 @@ expect out.txt "At the centre of the strings, about 18 cm from the tip (no impac
 expect out.txt '`/strings/tension_lb` = 52 lb'
 expect out.txt '| 318 | g | `mass_kg` |'
 # compare states the tape's effect in words.
-expect out.txt "Club racquet + 10 g at 12 against Club racquet: 10 g of added mass 1 cm from the tip"
+expect out.txt "Club racquet + 10 g at 12 against Club racquet: 10 g of added mass 0.5 cm from the tip"
 expect out.txt "The hand-held centre of percussion moves"
 expect out.txt "toward the tip"
+# A looser string bed, in the unit the coach gave.
+expect out.txt "strings at 48 lb instead of 52 lb"
 expect compared.csv "name,source,mass_kg"
+# The page opens with the same answer.
+expect racquet.html "Held in the hand, this racquet has two sweet spots"
 expect racquet-out.json '"cop_hand_from_tip_cm"'
 # No escapes and no float noise in what the coach reads.
 if grep -qF '\|' out.txt; then echo "a Markdown escape in the output"; fail=1; fi
