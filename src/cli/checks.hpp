@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "io/input_error.hpp"
+#include "sweetspot/evaluate.hpp"
 
 namespace sweetspot::cli {
 
@@ -30,6 +31,12 @@ inline std::string parse_finite(std::string_view text, double& value) {
   if (error == std::errc::result_out_of_range || !std::isfinite(value))
     return "not a finite number";
   return "";
+}
+
+// A CLI11 check that a value names a fidelity (kFidelityNames: every level
+// and "auto"), so that a new level is accepted wherever a level is asked.
+inline CLI::Validator fidelity_name() {
+  return CLI::IsMember(std::vector<std::string>(kFidelityNames.begin(), kFidelityNames.end()));
 }
 
 // A CLI11 check that a value is a finite number in [min, max], the bounds

@@ -23,9 +23,9 @@ void CompareCommand::add_to(CLI::App& app) {
       ->expected(2, 64);
   command
       ->add_option("--fidelity", fidelity,
-                   "rigid, modal, response or auto (each file's own, else the cheapest that "
-                   "answers it)")
-      ->check(CLI::IsMember({"rigid", "modal", "response", "auto"}))
+                   "rigid, modal, response, collision or auto (each file's own, else the "
+                   "cheapest that answers it)")
+      ->check(fidelity_name())
       ->capture_default_str();
   command->add_option("--tol", tolerance, "Relative error allowed in the hand-held frequency")
       ->check(finite_in(kMinRelTol, kMaxRelTol))

@@ -125,8 +125,10 @@ void EvaluateCommand::add_to(CLI::App& app) {
           "--fidelity", fidelity,
           "rigid: the paper's rigid body; modal: also the vibration modes (needs the "
           "frame's stiffness); response: also the frame's response to the ball (vibration "
-          "energy, a COR derived from cor_rigid); auto: the cheapest that answers the design")
-      ->check(CLI::IsMember({"rigid", "modal", "response", "auto"}))
+          "energy, a COR derived from cor_rigid); collision: the ball, strings and frame solved "
+          "together (needs a tension and the frame's stiffness); auto: the cheapest that answers "
+          "the design")
+      ->check(fidelity_name())
       ->capture_default_str();
   command->add_option("--tol", tolerance, "Relative error allowed in the hand-held frequency")
       ->check(finite_in(kMinRelTol, kMaxRelTol))

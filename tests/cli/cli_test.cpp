@@ -560,6 +560,23 @@ TEST_CASE("A design's own fidelity is used unless the command line says otherwis
   CHECK(nlohmann::json::parse(modal.out)["fidelity"] == "modal");
 }
 
+TEST_CASE("Every fidelity level can be asked for on the command line, the solved collision too") {
+  const Sandbox box;
+  const fs::path design = box.file(
+      "d.json", std::string(R"({"fidelity": "rigid", "implement": {"length_in": 27, "mass_g": 318,
+      "balance_cm": 32.5, "swingweight_kg_cm2": 325}, "frame": {"RA": 66},
+      "strings": {"tension_lb": 52}})"));
+  for (const char* level : {"rigid", "modal", "collision"}) {
+    const Run run =
+        box.run("evaluate \"" + design.string() + "\" --format json --fidelity " + level);
+    REQUIRE(run.status == 0);
+    CHECK(nlohmann::json::parse(run.out)["fidelity"] == level);
+  }
+  const Run compared = box.run("compare \"" + design.string() + "\" \"" + design.string() +
+                               "\" --format json --fidelity collision");
+  CHECK(compared.status == 0);
+}
+
 }  // namespace
 
 namespace {
