@@ -30,18 +30,22 @@ struct Outcome {
   std::string out;
 };
 
-Outcome run(const std::string& text, CatalogueFormat input = CatalogueFormat::kAuto,
-            Format format = Format::kJson) {
-  BatchOptions options;
-  options.input = input;
-  options.base = parse_json(kBase, "base.json");
-  options.format = format;
+Outcome run_with(const std::string& text, BatchOptions options) {
   std::istringstream in(text);
   std::ostringstream out;
   Outcome outcome;
   outcome.summary = run_batch(in, "cat.csv", options, out);
   outcome.out = out.str();
   return outcome;
+}
+
+Outcome run(const std::string& text, CatalogueFormat input = CatalogueFormat::kAuto,
+            Format format = Format::kJson) {
+  BatchOptions options;
+  options.input = input;
+  options.base = parse_json(kBase, "base.json");
+  options.format = format;
+  return run_with(text, options);
 }
 
 // The message of the InputError run() throws, or "(no error)".
@@ -304,15 +308,6 @@ const std::vector<std::pair<std::string, std::string>> kRetailerMap{
 constexpr const char* kStrungBase =
     R"({"implement": {"length_in": 27, "mass_g": 318, "balance_cm": 32.5, "swingweight_kg_cm2": 325},
         "strings": {"tension_lb": 52}, "impact": {"from_tip_cm": 17}})";
-
-Outcome run_with(const std::string& text, BatchOptions options) {
-  std::istringstream in(text);
-  std::ostringstream out;
-  Outcome outcome;
-  outcome.summary = run_batch(in, "cat.csv", options, out);
-  outcome.out = out.str();
-  return outcome;
-}
 
 BatchOptions mapped(Format format = Format::kJson) {
   BatchOptions options;
