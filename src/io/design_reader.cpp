@@ -249,7 +249,7 @@ HeadRead read_head(ObjectReader& r) {
   if (!key.empty()) {
     const double given = *r.number(key);
     HeadShape head;
-    head.area_m2 = given * (key == "headsize_sq_in" ? 0.0254 * 0.0254 : 1e-4);
+    head.area_m2 = given * (key == "headsize_sq_in" ? kSquareInch_m2 : 1e-4);
     if (!(head.area_m2 > 0.0)) r.fail(key, "must be > 0, got " + brief(Json(given)));
     if (const auto aspect = r.number("head_aspect_ratio")) {
       if (!(*aspect >= 1.0 && *aspect <= 10.0)) {
@@ -534,7 +534,7 @@ DesignFile read_design_impl(const Json& document, const std::string& source, boo
           r.quantity("string_spacing", Dimension::kLength).value_or(bed.string_spacing_m);
       const std::string head = r.one_of({"head_size_in2", "head_size_cm2"});
       if (!head.empty()) {
-        const double area_m2 = *r.number(head) * (head == "head_size_in2" ? 0.0254 * 0.0254 : 1e-4);
+        const double area_m2 = *r.number(head) * (head == "head_size_in2" ? kSquareInch_m2 : 1e-4);
         if (!(area_m2 > 0)) r.fail(head, "must be > 0, got " + brief(Json(*r.number(head))));
         bed.head_radius_m = head_radius_from_area(area_m2);
         head_area_m2 = area_m2;

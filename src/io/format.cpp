@@ -8,6 +8,7 @@
 #include <string>
 #include <utility>
 
+#include "io/json_reader.hpp"
 #include "io/outputs.hpp"
 
 namespace sweetspot::io {
@@ -152,7 +153,7 @@ std::string inputs_markdown(const DesignFile& file, const Evaluation& e) {
       points_head_light >= 0 ? "head-light" : "head-heavy", people_text(e.swingweight_kg_m2 * 1e4));
   if (d.strings) {
     md += fmt::format("String tension {} N ({} lb).\n", people_text(d.strings->tension_N),
-                      people_text(d.strings->tension_N / 4.4482216152605));
+                      people_text(d.strings->tension_N / kPoundForce_N));
   }
   return md;
 }

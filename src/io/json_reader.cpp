@@ -283,12 +283,12 @@ struct Unit {
 
 const std::vector<Unit>& units(Dimension dimension) {
   static const std::vector<Unit> length{
-      {"_m", 1.0}, {"_cm", 0.01}, {"_mm", 0.001}, {"_in", 0.0254}};
+      {"_m", 1.0}, {"_cm", 0.01}, {"_mm", 0.001}, {"_in", kInch_m}};
   static const std::vector<Unit> mass{{"_kg", 1.0}, {"_g", 0.001}};
   static const std::vector<Unit> time{{"_s", 1.0}, {"_ms", 0.001}};
   static const std::vector<Unit> speed{{"_m_s", 1.0}, {"_km_h", 1.0 / 3.6}, {"_mph", 0.44704}};
   static const std::vector<Unit> inertia{{"_kg_m2", 1.0}, {"_kg_cm2", 1e-4}};
-  static const std::vector<Unit> force{{"_N", 1.0}, {"_lb", 4.4482216152605}, {"_kg", 9.80665}};
+  static const std::vector<Unit> force{{"_N", 1.0}, {"_lb", kPoundForce_N}, {"_kg", 9.80665}};
   static const std::vector<Unit> stiffness{{"_N_m2", 1.0}};
   static const std::vector<Unit> damping{{"_N_s_m2", 1.0}};
   static const std::vector<Unit> frequency{{"_Hz", 1.0}};

@@ -18,6 +18,12 @@ namespace sweetspot::io {
 using Json = nlohmann::json;
 
 // Deepest nesting accepted; real designs and studies use 4 or 5 levels.
+// People's units the readers accept and the reports print, in SI, defined
+// once: the inch, the square inch (head sizes) and the pound-force.
+inline constexpr double kInch_m = 0.0254;
+inline constexpr double kSquareInch_m2 = kInch_m * kInch_m;
+inline constexpr double kPoundForce_N = 4.4482216152605;
+
 inline constexpr int kMaxJsonDepth = 64;
 
 // Parses `text` as one JSON document. Throws InputError for empty or binary

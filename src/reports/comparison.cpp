@@ -6,10 +6,12 @@
 #include <functional>
 #include <optional>
 
+#include "io/json_reader.hpp"
+
 namespace sweetspot::reports {
 namespace {
 
-constexpr double kNewtonsPerPound = 4.4482216152605;  // 1 lbf
+constexpr double kNewtonsPerPound = io::kPoundForce_N;
 // What a player would notice (the model's own rounding, summary.hpp).
 constexpr double kPositionThreshold_m = 0.005;
 constexpr double kForceThreshold = 0.02;  // relative

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "io/format.hpp"
+#include "io/json_reader.hpp"
 #include "io/outputs.hpp"
 #include "io/plot.hpp"
 #include "reports/string_bed_map_report.hpp"
@@ -17,7 +18,6 @@
 namespace sweetspot::io {
 namespace {
 
-constexpr double kSquareInch_m2 = 0.00064516;
 // A mid-size tennis head (100 sq in) when the file does not say.
 constexpr double kDefaultHeadArea_m2 = 100.0 * kSquareInch_m2;
 // The drawn head: an ellipse this much longer than wide (a 100 sq in head is

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "io/format.hpp"
+#include "io/json_reader.hpp"
 #include "sweetspot/evaluate.hpp"
 #include "sweetspot/rigid_impact.hpp"
 #include "sweetspot/string_bed.hpp"
@@ -13,7 +14,7 @@ namespace sweetspot::io {
 namespace {
 
 // One pound-force [N], for tensions as stringers quote them.
-constexpr double kNewtonsPerPoundForce = 4.4482216152605;
+constexpr double kNewtonsPerPoundForce = kPoundForce_N;
 
 // Modes summed in the response (the paper saw one; the rest show 1.5/T at work).
 constexpr int kResponseModes = 6;

@@ -6,12 +6,13 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "io/json_reader.hpp"
 #include "sweetspot/frame_modes.hpp"
 
 namespace sweetspot::reports {
 namespace {
 
-constexpr double kDefaultHeadArea_m2 = 100 * 0.0254 * 0.0254;  // 100 sq in
+constexpr double kDefaultHeadArea_m2 = 100 * io::kSquareInch_m2;  // 100 sq in
 
 // The design with the ball at `from_tip_m`, evaluated at `fidelity`.
 Evaluation evaluate_at(const io::DesignFile& design, double from_tip_m, std::string_view fidelity,

@@ -205,7 +205,7 @@ std::optional<FieldBinding> bind_field(const DesignDescription& d, std::string_v
     // The reader's factors for a head size, as it writes them.
     if (!found && bed && d.head_area_m2 && (t[1] == "head_size_in2" || t[1] == "head_size_cm2")) {
       found = std::pair{
-          t[1] == "head_size_in2" ? 0.0254 * 0.0254 : 1e-4,
+          t[1] == "head_size_in2" ? kSquareInch_m2 : 1e-4,
           Setter{[](DesignDescription& x, std::size_t, double v) { x.head_area_m2 = v; }}};
     }
   } else if (t.size() == 2 && t[0] == "hand") {
