@@ -10,9 +10,6 @@
 namespace sweetspot {
 namespace {
 
-// A hand mode carries most of its kinetic energy in the hand.
-constexpr double kHandModeEnergyShare = 0.5;
-
 std::optional<double> node_nearest_tip(const Mode& mode) {
   if (mode.nodes_from_butt_m.empty()) return std::nullopt;
   return mode.nodes_from_butt_m.back();
@@ -152,8 +149,8 @@ ModalOutputs evaluate_modes(const Design& design, double rel_tol) {
   hand_options.method = ModeOptions::Method::kFiniteElement;
   hand_options.rel_tol = rel_tol;
   hand_options.modes = 3;  // the hand's rocking modes come first
-  const ModalResult held =
-      hand_held_modes(frame.sections, frame.point_masses, hand_coupling(design), hand_options);
+  const ModalResult held = hand_held_beam_fundamental(frame.sections, frame.point_masses,
+                                                      hand_coupling(design), hand_options);
   const Mode* fundamental = hand_held_fundamental(held);
   if (!fundamental)
     throw std::invalid_argument("hand: no beam mode found among the hand-held modes");

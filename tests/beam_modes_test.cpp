@@ -10,6 +10,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "sweetspot/frame_modes.hpp"
+
 namespace sweetspot {
 namespace {
 
@@ -576,6 +578,53 @@ TEST_CASE("The refined hand-held solver gives the dense state-space modes to rou
         }
       }
     }
+  }
+}
+
+TEST_CASE(
+    "The beam's hand-held fundamental alone is the one hand_held_modes reports, bit for bit") {
+  // The identity the fast path rests on: the coarse mesh picks the mode, the
+  // refinement of that one estimate is the refinement hand_held_modes does.
+  struct Case {
+    const char* name;
+    std::vector<Section> sections;
+    std::vector<PointMass> masses;
+    HandCoupling hand;
+    ModeOptions options;
+  };
+  HandCoupling light = calibrated_hand();
+  light.mass_kg = 0.05;  // the beam mode comes before the hand's
+  HandCoupling loose = calibrated_hand();
+  loose.stiffness_N_m2 = 2e3;  // the hand's rocking modes far below the beam's
+  HandCoupling bare = calibrated_hand();
+  bare.damping_N_s_m2 = 0.0;
+  ModeOptions coarse_mesh = fe(3);
+  coarse_mesh.elements = 4;  // no refinement: the dense solve, then the pick
+  const std::vector<Case> cases{
+      {"paper beam", paper_beam(), {}, calibrated_hand(), fe(3)},
+      {"racquet with tape", racquet(), racquet_masses(), calibrated_hand(), fe(3)},
+      {"racquet, rel_tol 1e-4", racquet(), racquet_masses(), calibrated_hand(), fe(3, 1e-4)},
+      {"light hand", racquet(), racquet_masses(), light, fe(3)},
+      {"loose grip", paper_beam(), {}, loose, fe(3)},
+      {"undamped grip", paper_beam(), {}, bare, fe(3)},
+      {"dense solve", paper_beam(), {}, calibrated_hand(), coarse_mesh},
+  };
+  for (const Case& c : cases) {
+    INFO(c.name);
+    const ModalResult all = hand_held_modes(c.sections, c.masses, c.hand, c.options);
+    const ModalResult one = hand_held_beam_fundamental(c.sections, c.masses, c.hand, c.options);
+    const Mode* expected = hand_held_fundamental(all);
+    REQUIRE(expected != nullptr);
+    REQUIRE(one.modes.size() == 1);
+    CHECK(one.complete);
+    CHECK(one.elements_used == all.elements_used);
+    const Mode& got = one.modes[0];
+    CHECK(got.frequency_Hz == expected->frequency_Hz);
+    CHECK(got.damping_ratio == expected->damping_ratio);
+    CHECK(got.hand_energy_fraction == expected->hand_energy_fraction);
+    CHECK(got.complexity == expected->complexity);
+    CHECK(got.nodes_from_butt_m == expected->nodes_from_butt_m);
+    CHECK(got.fe_dofs == expected->fe_dofs);
   }
 }
 

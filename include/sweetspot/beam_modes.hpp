@@ -208,6 +208,20 @@ ModalResult hand_held_modes(const std::vector<Section>& sections,
                             const std::vector<PointMass>& point_masses, const HandCoupling& hand,
                             const ModeOptions& options);
 
+// A hand-held mode whose kinetic energy the hand carries at least this share
+// of is the hand rocking on the grip; below it, a bending mode of the beam.
+inline constexpr double kHandModeEnergyShare = 0.5;
+
+// The beam's hand-held fundamental alone: the first of the lowest
+// options.modes modes of hand_held_modes() in which the hand carries less than
+// kHandModeEnergyShare of the kinetic energy, bit for bit as hand_held_modes()
+// reports it, in result.modes (empty, with complete = false, when none of them
+// is a beam mode). Faster: the coarse mesh tells which mode that is, so only
+// it is refined and shaped. Throws as hand_held_modes().
+ModalResult hand_held_beam_fundamental(const std::vector<Section>& sections,
+                                       const std::vector<PointMass>& point_masses,
+                                       const HandCoupling& hand, const ModeOptions& options);
+
 // Copies of `sections` with every EI multiplied by one factor so that the free
 // fundamental equals `f1_Hz`. For Euler-Bernoulli f is proportional to sqrt(EI),
 // so this is closed form after one solve; for Timoshenko the factor is iterated

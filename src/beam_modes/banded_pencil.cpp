@@ -54,9 +54,10 @@ std::optional<DampedPair> refine_damped_pair(QuadraticPencil& t, Complex s, Vect
 std::optional<std::vector<DampedPair>> refine_estimates(QuadraticPencil& pencil, const Mesh& coarse,
                                                         const Mesh& mesh, int size,
                                                         const std::vector<DampedPair>& guesses,
-                                                        int count, std::string* why) {
+                                                        const std::vector<int>& which,
+                                                        std::string* why) {
   std::vector<DampedPair> out;
-  for (int k = 0; k < count; ++k) {
+  for (const int k : which) {
     const Complex s0 = guesses[k].s;
     double gap = std::numeric_limits<double>::infinity();
     for (std::size_t j = 0; j < guesses.size(); ++j) {

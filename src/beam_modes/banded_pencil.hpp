@@ -176,13 +176,16 @@ class QuadraticPencil {
 // reach kRefineAccept.
 std::optional<DampedPair> refine_damped_pair(QuadraticPencil& t, Complex s, VectorXcd q);
 
-// Each of the first `count` coarse estimates (s, q on `coarse`; `guesses`
-// ascending, one more than wanted so the last is matched unambiguously)
-// refined on `mesh`. Each must stay within kMatchFraction of the distance to
-// its nearest neighbour (or its conjugate root); else empty with a reason.
+// The coarse estimates guesses[k] for each k of `which` (s, q on `coarse`;
+// `guesses` ascending, one more than the last wanted so it is matched
+// unambiguously) refined on `mesh`, in the order of `which`. Each must stay
+// within kMatchFraction of the distance to its nearest neighbour (or its
+// conjugate root); else empty with a reason. Each refinement depends on its
+// own estimate only.
 std::optional<std::vector<DampedPair>> refine_estimates(QuadraticPencil& pencil, const Mesh& coarse,
                                                         const Mesh& mesh, int size,
                                                         const std::vector<DampedPair>& guesses,
-                                                        int count, std::string* why);
+                                                        const std::vector<int>& which,
+                                                        std::string* why);
 
 }  // namespace sweetspot::beam_detail

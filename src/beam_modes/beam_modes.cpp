@@ -121,9 +121,12 @@ BeamMatrices assemble_beam_matrices(const std::vector<Section>& sections,
   return out;
 }
 
-ModalResult hand_held_modes(const std::vector<Section>& sections,
+namespace {
+
+// hand_held_modes(), or with `beam_fundamental_only` the first beam mode alone.
+ModalResult solve_hand_held(const std::vector<Section>& sections,
                             const std::vector<PointMass>& point_masses, const HandCoupling& hand,
-                            const ModeOptions& options) {
+                            const ModeOptions& options, bool beam_fundamental_only) {
   const double length = validated_length(sections, true);
   detail::validate_point_masses(point_masses, length);
   validate_options(options, sections.size());
@@ -148,7 +151,8 @@ ModalResult hand_held_modes(const std::vector<Section>& sections,
     const Mesh coarse = coarse_mesh(seg, options);
     std::string why = "mesh no finer than the coarse one";
     if (coarse.elements.size() < mesh.elements.size()) {
-      spectrum = refined_damped_spectrum(mesh, a, hand, options, coarse, &why);
+      spectrum =
+          refined_damped_spectrum(mesh, a, hand, options, coarse, &why, beam_fundamental_only);
     }
     how = spectrum ? "quadratic eigenproblem refined from a " +
                          std::to_string(coarse.elements.size()) + "-element state-space solve"
@@ -161,11 +165,36 @@ ModalResult hand_held_modes(const std::vector<Section>& sections,
     result.modes.push_back(damped_mode(mesh, a, pair.s, pair.q));
   }
   result.complete = static_cast<int>(result.modes.size()) == options.modes;
+  if (beam_fundamental_only) {
+    // The refinement may have shaped every mode (a coarse share near the
+    // line, or the dense solve): keep the first beam mode.
+    const auto beam = std::find_if(result.modes.begin(), result.modes.end(), [](const Mode& m) {
+      return m.hand_energy_fraction < kHandModeEnergyShare;
+    });
+    std::vector<Mode> kept;
+    if (beam != result.modes.end()) kept.push_back(std::move(*beam));
+    result.complete = !kept.empty();
+    result.modes = std::move(kept);
+  }
   result.message = "finite elements: " + std::to_string(result.elements_used) + " elements, " +
                    how + "; " + std::to_string(spectrum->overdamped) +
                    " overdamped (real) roots not reported";
   fill_shape_table(result, length, options.shape_samples);
   return result;
+}
+
+}  // namespace
+
+ModalResult hand_held_modes(const std::vector<Section>& sections,
+                            const std::vector<PointMass>& point_masses, const HandCoupling& hand,
+                            const ModeOptions& options) {
+  return solve_hand_held(sections, point_masses, hand, options, false);
+}
+
+ModalResult hand_held_beam_fundamental(const std::vector<Section>& sections,
+                                       const std::vector<PointMass>& point_masses,
+                                       const HandCoupling& hand, const ModeOptions& options) {
+  return solve_hand_held(sections, point_masses, hand, options, true);
 }
 
 HandCoupling calibrated_hand() {

@@ -3,6 +3,7 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 #include "beam_modes/banded_pencil.hpp"
 #include "beam_modes/shapes.hpp"
@@ -46,7 +47,9 @@ std::optional<std::pair<VectorXd, MatrixXd>> refined_free_spectrum(const Mesh& m
     guesses.push_back({Complex(0.0, std::sqrt(std::max(coarse_omega2(k), 0.0))), std::move(q0)});
   }
   QuadraticPencil pencil(a);
-  const auto pairs = refine_estimates(pencil, coarse, mesh, n + 2, guesses, options.modes, why);
+  std::vector<int> wanted(options.modes);
+  std::iota(wanted.begin(), wanted.end(), 0);
+  const auto pairs = refine_estimates(pencil, coarse, mesh, n + 2, guesses, wanted, why);
   if (!pairs) return std::nullopt;
   VectorXd omega2(options.modes);
   MatrixXd vectors(n, options.modes);

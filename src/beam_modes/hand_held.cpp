@@ -4,6 +4,7 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 #include "beam_modes/free_fe.hpp"
 #include "beam_modes/shapes.hpp"
@@ -14,6 +15,9 @@ namespace {
 // The coarse damped problem is solved in the basis of this many undamped
 // modes more than requested.
 constexpr int kExtraBasisModes = 4;
+// A coarse mode whose hand share lies this near kHandModeEnergyShare is not
+// classified on the coarse mesh (shares are near 1 or near 0 in practice).
+constexpr double kShareMargin = 0.2;
 
 }  // namespace
 
@@ -107,35 +111,65 @@ DampedSpectrum modal_damped_spectrum(const Mesh& mesh, const Assembled& a, const
   return out;
 }
 
-Mode damped_mode(const Mesh& mesh, const Assembled& a, Complex s, VectorXcd q) {
-  // Turn the shape to be as real as possible: maximise the beam's kinetic
-  // energy norm of Re(e^{i a} q), i.e. make q_b^T M_b q_b real and positive.
-  // Mass-weighted rather than a sum over nodes, so the angle (and the nodes
-  // of the turned shape) converge with the mesh at the element's rate.
+namespace {
+
+// The shape of q turned to be as real as possible and its real part
+// mass-normalised (phi^T M phi = 1), with |Im|/|Re| of the turned beam part.
+// Mass-weighted rather than a sum over nodes, so the angle (and the nodes of
+// the turned shape) converge with the mesh at the element's rate. M is real
+// and symmetric: q_b^T M_b q_b = a^T M a - b^T M b + 2i a^T M b for q = a + ib.
+struct TurnedShape {
+  VectorXd re;
+  double complexity = 0.0;
+};
+TurnedShape turned_shape(const Assembled& a, VectorXcd q) {
   const int nb = a.beam_dofs;
   const auto Mb = a.M.topLeftCorner(nb, nb);
-  const Complex sum_sq = (q.head(nb).transpose() * (Mb.cast<Complex>() * q.head(nb)))(0);
-  q *= std::exp(Complex(0, -0.5 * std::arg(sum_sq)));
+  {
+    const VectorXd qa = q.head(nb).real(), qb = q.head(nb).imag();
+    const VectorXd Ma = Mb * qa, Mqb = Mb * qb;
+    const Complex sum_sq(qa.dot(Ma) - qb.dot(Mqb), 2.0 * qa.dot(Mqb));
+    q *= std::exp(Complex(0, -0.5 * std::arg(sum_sq)));
+  }
   const VectorXd q_re = q.head(nb).real(), q_im = q.head(nb).imag();
   const double re2 = q_re.dot(Mb * q_re), im2 = q_im.dot(Mb * q_im);
-  VectorXd re = q.real();
-  re /= std::sqrt(re.dot(a.M * re));
-  auto [mode, scale] = fe_mode(mesh, re, std::abs(s));
+  TurnedShape out;
+  out.re = q.real();
+  out.re /= std::sqrt(out.re.dot(a.M * out.re));
+  out.complexity = std::sqrt(im2 / re2);
+  return out;
+}
+
+// The hand's share of the kinetic energy of a mass-normalised real shape.
+double hand_share(const Assembled& a, const VectorXd& re) {
+  const int u = a.beam_dofs;
+  return a.M(u, u) * re(u) * re(u) + a.M(u + 1, u + 1) * re(u + 1) * re(u + 1);
+}
+
+}  // namespace
+
+Mode damped_mode(const Mesh& mesh, const Assembled& a, Complex s, VectorXcd q) {
+  const TurnedShape turned = turned_shape(a, std::move(q));
+  auto [mode, scale] = fe_mode(mesh, turned.re, std::abs(s));
   mode.frequency_Hz = s.imag() / (2.0 * kPi);
   // The grip's dashpot can only take energy out: a root a rounding error to
   // the right of the axis (an undamped grip) is undamped, not negatively damped.
   mode.damping_ratio = std::max(0.0, -s.real() / std::abs(s));
-  mode.complexity = std::sqrt(im2 / re2);
-  mode.hand_displacement = scale * re(a.beam_dofs);
-  const int u = a.beam_dofs;
-  mode.hand_energy_fraction = a.M(u, u) * re(u) * re(u) + a.M(u + 1, u + 1) * re(u + 1) * re(u + 1);
+  mode.complexity = turned.complexity;
+  mode.hand_displacement = scale * turned.re(a.beam_dofs);
+  mode.hand_energy_fraction = hand_share(a, turned.re);
   return mode;
+}
+
+double damped_hand_share(const Assembled& a, const VectorXcd& q) {
+  return hand_share(a, turned_shape(a, q).re);
 }
 
 std::optional<DampedSpectrum> refined_damped_spectrum(const Mesh& mesh, const Assembled& a,
                                                       const HandCoupling& hand,
                                                       const ModeOptions& options,
-                                                      const Mesh& coarse, std::string* why) {
+                                                      const Mesh& coarse, std::string* why,
+                                                      bool beam_fundamental_only) {
   const Assembled ca = assemble(coarse, &hand);
   const DampedSpectrum guess =
       modal_damped_spectrum(coarse, ca, hand, options.modes + 1, options.modes + kExtraBasisModes);
@@ -143,9 +177,27 @@ std::optional<DampedSpectrum> refined_damped_spectrum(const Mesh& mesh, const As
     *why = "coarse mesh has too few oscillatory modes";
     return std::nullopt;
   }
+  std::vector<int> wanted;
+  if (beam_fundamental_only) {
+    for (int k = 0; k < options.modes; ++k) {
+      const double share = damped_hand_share(ca, guess.pairs[k].q);
+      if (std::abs(share - kHandModeEnergyShare) < kShareMargin) {
+        wanted.clear();  // too near the line to trust the coarse mesh: refine them all
+        break;
+      }
+      if (share < kHandModeEnergyShare) {
+        wanted.push_back(k);
+        break;
+      }
+    }
+  }
+  if (wanted.empty()) {
+    wanted.resize(options.modes);
+    std::iota(wanted.begin(), wanted.end(), 0);
+  }
   QuadraticPencil pencil(a);
   auto pairs = refine_estimates(pencil, coarse, mesh, static_cast<int>(a.M.rows()), guess.pairs,
-                                options.modes, why);
+                                wanted, why);
   if (!pairs) return std::nullopt;
   return DampedSpectrum{std::move(*pairs), guess.overdamped};
 }

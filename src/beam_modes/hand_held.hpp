@@ -48,11 +48,20 @@ DampedSpectrum modal_damped_spectrum(const Mesh& mesh, const Assembled& a, const
 // real as possible, its real part mass-normalised.
 Mode damped_mode(const Mesh& mesh, const Assembled& a, Complex s, VectorXcd q);
 
-// The lowest `wanted` modes on `mesh` located on a coarse mesh and refined;
-// empty with a reason in `why` when a mode cannot be matched.
+// The hand's share of the kinetic energy in the mode damped_mode() reports
+// for the eigenvector q (Mode::hand_energy_fraction), without its shape.
+double damped_hand_share(const Assembled& a, const VectorXcd& q);
+
+// The lowest options.modes modes on `mesh` located on a coarse mesh and
+// refined; empty with a reason in `why` when a mode cannot be matched. With
+// `beam_fundamental_only`, only the first of them whose coarse estimate the
+// hand carries less than kHandModeEnergyShare of is refined (all are when a
+// coarse share lies within kShareMargin of that line): the pair is the one
+// the full refinement gives, bit for bit.
 std::optional<DampedSpectrum> refined_damped_spectrum(const Mesh& mesh, const Assembled& a,
                                                       const HandCoupling& hand,
                                                       const ModeOptions& options,
-                                                      const Mesh& coarse, std::string* why);
+                                                      const Mesh& coarse, std::string* why,
+                                                      bool beam_fundamental_only = false);
 
 }  // namespace sweetspot::beam_detail
