@@ -14,7 +14,7 @@
 
 namespace sweetspot {
 
-Evaluation evaluate_collision(const Design& design, double rel_tol) {
+DesignCollision::DesignCollision(const Design& design, double rel_tol) : design_(design) {
   if (design.cor_rigid) {
     throw std::invalid_argument(
         "frame/cor_rigid: the solved collision derives the COR itself; give neither cor nor "
@@ -34,29 +34,31 @@ Evaluation evaluate_collision(const Design& design, double rel_tol) {
   ResponseOptions options;
   options.modes = kCollisionModes;
   options.rel_tol = rel_tol;
-  const ResponseModel model = response_model(design, options);
-  FrameAtImpact frame = frame_at_impact(model, design.impact_from_butt_m);
-  // An impact y off the long axis also twists the implement: the rigid body's
-  // effective mass at the impact point is the rigid model's (evaluate()),
-  // 1/M_eff = 1/M + b^2/I + y^2/I_polar (rigid_impact.hpp). The flexible modes
-  // stay the bending modes (torsional modes are not modelled). Nothing is
-  // added on the axis, so y = 0 is the in-plane collision to the bit.
-  if (design.impact_off_axis_m != 0.0) {
-    const std::optional<double> polar = polar_inertia_kg_m2(design);
-    if (!polar) {
+  model_ = response_model(design, options);
+  bed_ = string_bed_dynamics(*design.strings, design.string_bed_mass_kg,
+                             design.string_bed_damping_ratio);
+  polar_inertia_kg_m2_ = polar_inertia_kg_m2(design);
+}
+
+FrameAtImpact DesignCollision::frame_at(double from_butt_m, double off_axis_m) const {
+  FrameAtImpact frame = frame_at_impact(model_, from_butt_m);
+  if (off_axis_m != 0.0) {
+    if (!polar_inertia_kg_m2_) {
       throw std::invalid_argument(
           "impact/off_axis_m: an impact off the long axis needs the polar inertia "
           "(implement/twistweight_kg_cm2 or implement/headsize_sq_in), got " +
-          detail::format_number(design.impact_off_axis_m) + " m");
+          detail::format_number(off_axis_m) + " m");
     }
-    frame.inverse_effective_mass_per_kg += impact_twist_per_kg(design.impact_off_axis_m, *polar);
+    frame.inverse_effective_mass_per_kg += impact_twist_per_kg(off_axis_m, *polar_inertia_kg_m2_);
   }
-  const StringBedDynamics bed = string_bed_dynamics(*design.strings, design.string_bed_mass_kg,
-                                                    design.string_bed_damping_ratio);
-  CollisionOptions collision_options;
-  collision_options.record_history = true;
-  CollisionResult r = collide(frame, bed, design.ball.mass_kg, design.ball_contact,
-                              design.ball.speed_m_s, collision_options);
+  return frame;
+}
+
+CollisionResult DesignCollision::at(double from_butt_m, double off_axis_m,
+                                    const CollisionOptions& options) const {
+  const Design& design = design_;
+  CollisionResult r = collide(frame_at(from_butt_m, off_axis_m), bed_, design.ball.mass_kg,
+                              design.ball_contact, design.ball.speed_m_s, options);
   if (!(r.contact_time_s >= kMinDuration_s && r.contact_time_s <= kMaxDuration_s) ||
       !std::isfinite(r.apparent_cor)) {
     throw std::invalid_argument("ball/contact: the solved contact lasts " +
@@ -64,9 +66,19 @@ Evaluation evaluate_collision(const Design& design, double rel_tol) {
                                 detail::format_number(kMinDuration_s) + ", " +
                                 detail::format_number(kMaxDuration_s) + "] s");
   }
+  return r;
+}
+
+Evaluation evaluate_collision(const Design& design, double rel_tol) {
+  const DesignCollision collision(design, rel_tol);
+  CollisionOptions collision_options;
+  collision_options.record_history = true;
+  CollisionResult r =
+      collision.at(design.impact_from_butt_m, design.impact_off_axis_m, collision_options);
+  const double M_eff = 1.0 / collision.frame_at(design.impact_from_butt_m, design.impact_off_axis_m)
+                                 .inverse_effective_mass_per_kg;
   // The rigid model's quantities at the COR that Eq. (16) maps to the solved
   // apparent COR; then the solved numbers replace the prescribed ones.
-  const double M_eff = 1.0 / frame.inverse_effective_mass_per_kg;
   const double cor = cor_from_apparent(r.apparent_cor, design.ball.mass_kg, M_eff);
   Design resolved = design;
   resolved.strings.reset();
@@ -82,6 +94,11 @@ Evaluation evaluate_collision(const Design& design, double rel_tol) {
   e.impulse_N_s = r.impulse_N_s;
   e.peak_impact_force_N = r.peak_force_N;
   e.peak_wrist_force_N = std::abs(e.wrist_force_ratio) * r.peak_force_N;  // Eq. (11)
+  if (const double y = design.impact_off_axis_m; y != 0.0) {
+    // The twist of the solved impulse and force (evaluate()'s formulas).
+    e.twist_rate_rad_s = r.impulse_N_s * y / *e.polar_inertia_kg_m2;
+    e.peak_twist_torque_N_m = r.peak_force_N * std::abs(y);
+  }
   e.vibration_energy_J = r.vibration_J;
   e.vibration_share = r.vibration_J / r.ball_in_J;
   if (!e.details) e.details.emplace();
@@ -94,7 +111,8 @@ Evaluation evaluate_collision(const Design& design, double rel_tol) {
   }
   e.details->vibration_modes.clear();
   for (std::size_t k = 0; k < r.mode_energy_J.size(); ++k) {
-    e.details->vibration_modes.emplace_back(model.modes[k].mode.frequency_Hz, r.mode_energy_J[k]);
+    e.details->vibration_modes.emplace_back(collision.model().modes[k].mode.frequency_Hz,
+                                            r.mode_energy_J[k]);
   }
   e.details->collision = std::move(r);
   return e;

@@ -431,9 +431,12 @@ TEST_CASE(
         Approx(ey.apparent_cor).epsilon(1e-12));
   FrameAtImpact twisted = on_axis;
   twisted.inverse_effective_mass_per_kg += y * y / 14e-4;
-  CHECK(ey.apparent_cor == collide(twisted, string_bed_dynamics(*d.strings), kBall_kg,
-                                   kTennisBallLaw, d.ball.speed_m_s, with_history)
-                               .apparent_cor);
+  const CollisionResult twisted_direct = collide(twisted, string_bed_dynamics(*d.strings), kBall_kg,
+                                                 kTennisBallLaw, d.ball.speed_m_s, with_history);
+  CHECK(ey.apparent_cor == twisted_direct.apparent_cor);
+  // The twist is the solved impulse's and force's: J y / I_polar and F0 |y|.
+  CHECK(ey.twist_rate_rad_s == twisted_direct.impulse_N_s * y / 14e-4);
+  CHECK(ey.peak_twist_torque_N_m == twisted_direct.peak_force_N * y);
   // The lighter effective mass returns the ball slower. With the frame's COR
   // held at its on-axis value, Eq. (16) predicts the drop from M_eff alone; the
   // solved drop differs from it only by the vibration, which M_eff also changes

@@ -47,6 +47,7 @@
 #include <vector>
 
 #include "sweetspot/ball_contact.hpp"
+#include "sweetspot/design.hpp"
 #include "sweetspot/impact_response.hpp"
 
 namespace sweetspot {
@@ -148,5 +149,47 @@ double cor_from_apparent(double apparent_cor, double ball_mass_kg, double effect
 // The dynamic string bed of `bed` (string_bed_stiffness) with mass and loss.
 StringBedDynamics string_bed_dynamics(const StringBed& bed, double mass_kg = kStringBedMass_kg,
                                       double damping_ratio = kStringBedDampingRatio);
+
+// ------------------------------------------------------------ a design's collision
+
+// Flexible modes of the free frame a design's collision uses (the exact
+// solver's most; convergence: tests/collision_test.cpp, truncation < 1e-4 in e_A).
+inline constexpr int kCollisionModes = 6;
+
+// A design's collision, set up once (the free frame's kCollisionModes modes
+// to `rel_tol`, the string bed, the polar inertia) and solved at any impact
+// point: what evaluate() at Fidelity::kCollision solves at the design's own.
+// An impact y off the long axis also twists the implement: the rigid body's
+// effective mass is the rigid model's, 1/M_eff = 1/M + b^2/I + y^2/I_polar
+// (rigid_impact.hpp); the flexible modes stay the bending modes (torsional
+// modes are not modelled). Nothing is added on the axis, so y = 0 is the
+// in-plane collision to the bit.
+class DesignCollision {
+ public:
+  // Validates the design (validate()) and throws std::invalid_argument naming
+  // the design's path: a derived COR (frame/cor_rigid), no string tension
+  // (strings/tension_N) or no stiffness (frame/EI_N_m2).
+  explicit DesignCollision(const Design& design, double rel_tol = 1e-6);
+
+  // The frame as the ball sees it at `from_butt_m` on the axis and
+  // `off_axis_m` across it. Throws std::invalid_argument (impact/off_axis_m)
+  // for an off-axis impact without a polar inertia, or for an impact off the
+  // implement.
+  FrameAtImpact frame_at(double from_butt_m, double off_axis_m) const;
+
+  // The collision there. Throws as frame_at(), or (ball/contact) when the
+  // solved contact time is outside [kMinDuration_s, kMaxDuration_s] or the
+  // rebound is not finite.
+  CollisionResult at(double from_butt_m, double off_axis_m,
+                     const CollisionOptions& options = {}) const;
+
+  const ResponseModel& model() const { return model_; }
+
+ private:
+  Design design_;
+  ResponseModel model_;
+  StringBedDynamics bed_;
+  std::optional<double> polar_inertia_kg_m2_;
+};
 
 }  // namespace sweetspot

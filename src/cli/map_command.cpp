@@ -25,8 +25,10 @@ void MapCommand::add_to(CLI::App& app) {
   command
       ->add_option("--fidelity", fidelity,
                    "rigid: power and shock; modal or response: also feel (needs the frame's "
-                   "stiffness); auto: modal when the stiffness is given, else rigid")
-      ->check(CLI::IsMember({"rigid", "modal", "response", "auto"}))
+                   "stiffness); collision: the solved collision at every point (needs the "
+                   "string tension and the stiffness, no COR); auto: as evaluate's auto "
+                   "(collision, modal or rigid)")
+      ->check(CLI::IsMember({"rigid", "modal", "response", "collision", "auto"}))
       ->capture_default_str();
   command->add_option("--columns", columns, "Grid points along the long axis")
       ->check(whole_in(2, 1000))

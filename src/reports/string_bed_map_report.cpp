@@ -83,7 +83,9 @@ std::string heat_map_commands(const StringBedMap& map, MapQuantity quantity, dou
   std::string title, colour_label, palette;
   switch (quantity) {
     case MapQuantity::kPower:
-      title = "power, the apparent COR e_A (rebound / incident speed)";
+      title = map.fidelity == Fidelity::kCollision
+                  ? "power, the solved collision's e_A (rebound / incident speed)"
+                  : "power, the apparent COR e_A at the frame's COR (Eq. 16)";
       colour_label = "apparent COR";
       palette = "set palette defined (0 '#2c7bb6', 0.5 '#ffffbf', 1 '#d7191c')\n";
       break;

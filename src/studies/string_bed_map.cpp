@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "sweetspot/collision.hpp"
 #include "sweetspot/frame_modes.hpp"
 #include "sweetspot/impact_response.hpp"
 #include "sweetspot/rigid_impact.hpp"
@@ -48,7 +49,11 @@ StringBedMap string_bed_map(const Design& design, const StringBedMapOptions& opt
   map.cop_hand_from_butt_m = hand_held_cop_from_butt(system);
 
   std::optional<ResponseModel> model;
-  if (options.fidelity != Fidelity::kRigid) {
+  std::optional<DesignCollision> collision;
+  if (options.fidelity == Fidelity::kCollision) {
+    collision.emplace(design);  // throws for a design that cannot be solved
+    map.node_free_from_butt_m = evaluate_modes(design).node_free_from_butt_m;
+  } else if (options.fidelity != Fidelity::kRigid) {
     if (!has_stiffness(design)) {
       throw std::invalid_argument(
           "frame/EI_N_m2: the vibration map needs the frame's stiffness (frame EI_N_m2 or "
@@ -91,6 +96,17 @@ StringBedMap string_bed_map(const Design& design, const StringBedMapOptions& opt
       }
       const RigidOutcome o = rigid_outcome(c, system);
       p.effective_mass_kg = o.effective_mass_kg;
+      if (collision) {
+        // The solved collision's rebound, force and vibration; the wrist
+        // feels the rigid model's share of the solved peak force (Eq. 11),
+        // as evaluate() at Fidelity::kCollision.
+        const CollisionResult r = collision->at(x, y);
+        p.apparent_cor = r.apparent_cor;
+        p.peak_wrist_force_N = std::abs(o.wrist_force_ratio) * r.peak_force_N;
+        p.peak_twist_torque_N_m = r.peak_force_N * std::abs(y);
+        p.vibration_energy_J = r.vibration_J;
+        continue;
+      }
       p.apparent_cor = o.apparent_cor;
       p.peak_wrist_force_N = o.peak_wrist_force_N;
       p.peak_twist_torque_N_m = o.peak_impact_force_N * std::abs(y);

@@ -17,7 +17,10 @@ struct StringBedMapOptions {
   int columns = 50;  // grid points along the long axis (x), in [2, 1000]
   int rows = 50;     // grid points across it (y), in [2, 1000]
   // kModal or kResponse: also the vibration energy each impact leaves in the
-  // free frame's modes (needs the frame's stiffness); kRigid: not.
+  // free frame's modes (needs the frame's stiffness); kCollision: the solved
+  // collision at every point (needs the string tension and the stiffness, no
+  // COR): its rebound, its peak force and the vibration it leaves; kRigid:
+  // power and shock only.
   Fidelity fidelity = Fidelity::kRigid;
 };
 
