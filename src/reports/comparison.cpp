@@ -331,8 +331,8 @@ std::string title_of(const std::vector<ComparedDesign>& designs) {
 // The side-by-side table: each value in people's units, the SI value under it.
 std::string side_by_side_html(const std::vector<ComparedDesign>& designs) {
   std::string html =
-      "<div class=\"table-wrap\"><table id=\"compared\"><thead><tr><th>quantity</th>"
-      "<th>unit</th>";
+      "<div class=\"table-wrap\"><table id=\"compared\" class=\"side-by-side\"><thead><tr>"
+      "<th>quantity (unit)</th>";
   for (const ComparedDesign& c : designs)
     html += "<th class=\"num\">" + io::html_escape(c.design.name) + "</th>";
   html += "</tr></thead><tbody>\n";
@@ -343,10 +343,10 @@ std::string side_by_side_html(const std::vector<ComparedDesign>& designs) {
     const io::PeopleUnit unit = io::people_unit(row.unit);
     const bool tension = std::string_view(row.key) == "string_tension_N";
     const std::string shown_unit = tension ? "lb" : std::string(unit.unit);
-    html += fmt::format(
-        "<tr id=\"cmp-{}\"><td>{}<div class=\"means\"><code>{}</code></div></td>"
-        "<td>{}</td>",
-        row.key, io::html_escape(row.label), row.key, io::html_escape(shown_unit));
+    html +=
+        fmt::format("<tr id=\"cmp-{}\"><td>{}{}<div class=\"means\"><code>{}</code></div></td>",
+                    row.key, io::html_escape(row.label),
+                    shown_unit.empty() ? "" : " (" + io::html_escape(shown_unit) + ")", row.key);
     for (const ComparedDesign& c : designs) {
       const auto v = row.value(c);
       if (!v) {
@@ -381,7 +381,9 @@ std::string wrist_along_frame_html(const std::vector<ComparedDesign>& designs) {
   for (std::size_t k = 0; k < designs.size(); ++k) {
     const std::vector<io::FramePoint> curve =
         io::frame_curves(designs[k].design.design, kCurveStep_m);
-    io::PlotSeries series{io::plot_text_for_html(designs[k].design.name), {}, {}, "lines lw 2.5"};
+    // The key numbers the lines (a name would not fit a phone's layout);
+    // the caption names them.
+    io::PlotSeries series{std::to_string(k + 1), {}, {}, "lines lw 2.5"};
     series.color = io::plot_color(k);
     for (const io::FramePoint& p : curve) {
       series.x.push_back(p.from_tip_m * 100.0);
@@ -394,16 +396,24 @@ std::string wrist_along_frame_html(const std::vector<ComparedDesign>& designs) {
     plot.series.push_back(std::move(series));
   }
   plot.x_range = std::pair{0.0, longest_cm};
-  plot.key_position = "top left";
+  // Above the hand-held COP, where the curves are least.
+  plot.key_position = "top center";
+  std::string lines;
+  for (std::size_t k = 0; k < designs.size(); ++k)
+    lines += fmt::format("{}<span class=\"swatch\" style=\"background: {}\"></span> {}: {}",
+                         k == 0 ? "" : "; ", io::plot_color(k), k + 1,
+                         io::html_escape(designs[k].design.name));
   std::string html = io::html_figure(
       plot, "plot-wrist",
       "The peak force on the wrist (rigid model, Cross 2004 Eqs. 11 and 17) for a hit at each "
-      "point along the frame, one line per design: least at each design's hand-held COP.");
+      "point along the frame, one line per design (" +
+          lines + "): least at each design's hand-held COP.");
   html +=
       "<details><summary>The numbers behind this plot</summary><div class=\"table-wrap\">"
       "<table id=\"curve\"><thead><tr><th class=\"num\">impact from the tip (cm)</th>";
-  for (const ComparedDesign& c : designs)
-    html += "<th class=\"num\">" + io::html_escape(c.design.name) + " (N)</th>";
+  for (std::size_t k = 0; k < designs.size(); ++k)
+    html += fmt::format("<th class=\"num\">{}: {} (N)</th>", k + 1,
+                        io::html_escape(designs[k].design.name));
   html += "</tr></thead><tbody>\n";
   for (const auto& [at, cells] : table) {
     html += fmt::format("<tr><td class=\"num\">{:.1f}</td>", static_cast<double>(at) / 100.0);

@@ -21,6 +21,7 @@ figure.drawing-figure { max-width: 46rem; }
 .narrow { display: none; }
 .means { color: var(--muted); font-size: 0.88rem; }
 .si { display: block; color: var(--muted); font-size: 0.78rem; }
+.swatch { display: inline-block; width: 1.4em; height: 0.3em; vertical-align: middle; }
 figcaption { color: var(--muted); font-size: 0.92rem; }
 .drawing text { font-size: 1.6px; fill: var(--ink); }
 .drawing .tick { font-size: 1.5px; text-anchor: middle; fill: var(--muted); }
@@ -56,6 +57,7 @@ footer { color: var(--muted); font-size: 0.88rem; margin-top: 2.5rem; }
   #positions td:first-child { min-width: 8.5rem; }
   .drawing text { font-size: 2.4px; }
   .drawing .tick { font-size: 2.2px; }
+  .side-by-side .means code { display: none; }
   .wide { display: none; }
   .narrow { display: block; }
 }

@@ -320,8 +320,8 @@ std::pair<std::string, std::string> words_and_unit(const AxisQuantity& axis) {
 
 std::string variables_html(const Study& study, const OptimizationResult& r) {
   std::string html =
-      "<div class=\"table-wrap\"><table id=\"variables\"><thead><tr><th>variable</th>"
-      "<th>unit</th><th class=\"num\">min</th><th class=\"num\">max</th>"
+      "<div class=\"table-wrap\"><table id=\"variables\" class=\"side-by-side\"><thead><tr>"
+      "<th>variable (unit)</th><th class=\"num\">min</th><th class=\"num\">max</th>"
       "<th class=\"num\">start</th><th class=\"num\">best</th></tr></thead><tbody>\n";
   // Each value in the reader's unit, the file's value under it.
   for (std::size_t i = 0; i < study.variables.size(); ++i) {
@@ -334,13 +334,14 @@ std::string variables_html(const Study& study, const OptimizationResult& r) {
     };
     const std::string hit = bound_hit(v, r.summary.x[i]);
     html += fmt::format(
-        "<tr id=\"var-{}\"><td>{}<div class=\"means\"><code>{}</code>{}</div></td>"
-        "<td>{}</td>{}{}{}{}</tr>\n",
-        i + 1, html_escape(words), html_escape(v.pointer),
+        "<tr id=\"var-{}\"><td>{}{}<div class=\"means\"><code>{}</code></div>{}</td>{}{}{}{}"
+        "</tr>\n",
+        i + 1, html_escape(words), unit.empty() ? "" : " (" + html_escape(unit) + ")",
+        html_escape(v.pointer),
         hit.empty()    ? ""
-        : hit == "min" ? " (best at its lower bound)"
-                       : " (best at its upper bound)",
-        html_escape(unit), cell(v.min), cell(v.max), cell(r.start_x[i]), cell(r.summary.x[i]));
+        : hit == "min" ? "<div class=\"means\">best at its lower bound</div>"
+                       : "<div class=\"means\">best at its upper bound</div>",
+        cell(v.min), cell(v.max), cell(r.start_x[i]), cell(r.summary.x[i]));
   }
   return html + "</tbody></table></div>\n";
 }
@@ -368,16 +369,17 @@ std::string constraints_html(const OptimizationResult& r) {
 // the best so far improved (the plotted curve is flat in between).
 std::string convergence_html(const Study& study, const OptimizationResult& r) {
   Plot plot = convergence_plot(study, r);
-  // Below the plot, where a phone's narrow layout has room for its entries.
-  plot.key_position = "below";
+  // No key: on a phone's narrow layout it covers the curves or the axis
+  // label; the caption says which line is which.
+  plot.key_position = "off";
   plot.title = "Convergence: " + plot_text_for_html(study.name);
   std::string html = html_figure(
       plot, "plot-convergence",
-      "The best objective found so far after each evaluation of the design (" +
-          html_escape(r.summary.algorithm) +
-          (r.constraints.empty() ? std::string(")")
+      "Solid: the best objective found so far after each evaluation of the design (" +
+          html_escape(r.summary.algorithm) + ")" +
+          (r.constraints.empty() ? std::string()
                                  : "; dashed, on the right axis: how far the best design is "
-                                   "outside its worst constraint)") +
+                                   "outside its worst constraint, in multiples of its tolerance") +
           ".");
   const PlotSeries& curve = plot.series.front();
   html += fmt::format(
