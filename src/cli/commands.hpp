@@ -39,6 +39,7 @@ struct CompareCommand {
   std::string fidelity = "auto";
   double tolerance = 1e-6;
   OutputOptions out;
+  std::string html;  // --html FILE: the comparison as one web page
 
   void add_to(CLI::App& app);
   int run() const;
@@ -80,6 +81,7 @@ struct OptimizeCommand {
   std::string study_path;
   std::string plot;
   OutputOptions out;
+  std::string html;  // --html FILE: the study's report as one web page
 
   void add_to(CLI::App& app);
   int run() const;

@@ -1,10 +1,12 @@
 // `sweetspot compare A.json B.json [C.json ...]`: designs side by side, and
 // what changes from the first to each of the others in words.
 
+#include <iostream>
 #include <vector>
 
 #include "cli/checks.hpp"
 #include "cli/commands.hpp"
+#include "io/atomic_file.hpp"
 #include "io/design_reader.hpp"
 #include "reports/comparison.hpp"
 
@@ -31,9 +33,14 @@ void CompareCommand::add_to(CLI::App& app) {
       ->check(finite_in(kMinRelTol, kMaxRelTol))
       ->capture_default_str();
   out.add_to(command);
+  command->add_option("--html", html,
+                      "Also write the comparison as one self-contained web page (a phone or a "
+                      "desktop browser opens it; no network needed); standard output then says "
+                      "only what was written, the text report going to --output when given");
   command->footer(
       "Examples:\n"
       "  sweetspot compare racquet.json racquet-with-lead.json\n"
+      "  sweetspot compare racquet.json racquet-with-lead.json --html compared.html\n"
       "  sweetspot compare a.json b.json c.json --format csv -o compared.csv");
 }
 
@@ -47,7 +54,13 @@ int CompareCommand::run() const {
   for (const std::string& path : design_paths) {
     designs.push_back(reports::compare_one(io::load_design(path), level, tolerance));
   }
-  out.emit(reports::comparison_report(designs, out.parsed()));
+  if (html.empty()) {
+    out.emit(reports::comparison_report(designs, out.parsed()));
+    return kExitOk;
+  }
+  if (!out.output.empty()) out.emit(reports::comparison_report(designs, out.parsed()));
+  io::write_file_atomically(html, reports::comparison_html(designs));
+  std::cout << "wrote " << html << "\n";
   return kExitOk;
 }
 

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "io/atomic_file.hpp"
 #include "io/input_error.hpp"
 #include "io/parallel.hpp"
 #include "reports/optimization_report.hpp"
@@ -26,6 +27,16 @@ void OptimizeCommand::add_to(CLI::App& app) {
   command->add_option("study", study_path, "Study file (JSON)")->required();
   command->add_option("--plot", plot, "Also render the convergence plot to this PNG file");
   out.add_to(command);
+  command->add_option("--html", html,
+                      "Also write the report as one self-contained web page (a phone or a desktop "
+                      "browser opens it; no network needed), when the study has an optimum; "
+                      "standard output then says only what was written, the text report going to "
+                      "--output when given");
+  command->footer(
+      "Examples:\n"
+      "  sweetspot optimize designs/studies/1-lowest-wrist-force-table1-ranges.json\n"
+      "  sweetspot optimize study.json --html study.html\n"
+      "  sweetspot optimize study.json --format json -o result.json --plot convergence.png");
 }
 
 int OptimizeCommand::run() const {
@@ -37,7 +48,11 @@ int OptimizeCommand::run() const {
   // standard output, and the file is left as it was.
   const bool optimum = result.outcome == io::Outcome::kOptimum;
   const std::string report = io::optimization_report(study, result, out.parsed(), true);
-  if (optimum) {
+  if (optimum && !html.empty()) {
+    if (!out.output.empty()) out.emit(report);
+    io::write_file_atomically(html, io::optimization_html(study, result));
+    std::cout << "wrote " << html << "\n";
+  } else if (optimum) {
     out.emit(report);
   } else {
     std::cout << report;
@@ -48,10 +63,13 @@ int OptimizeCommand::run() const {
   const int plotted =
       plot.empty() ? kExitOk : render_or_warn(io::convergence_plot(study, result), plot);
   if (plotted != kExitOk) return plotted;  // a file that could not be written comes first
-  const std::string where =
-      out.output.empty() ? std::string("the report gives") : "the report on standard output gives";
-  const std::string kept =
-      out.output.empty() ? "" : " (" + io::one_line(out.output) + " left as it was)";
+  const std::string where = out.output.empty() && html.empty()
+                                ? std::string("the report gives")
+                                : "the report on standard output gives";
+  std::string kept_files;
+  for (const std::string& file : {out.output, html})
+    if (!file.empty()) kept_files += (kept_files.empty() ? "" : " and ") + io::one_line(file);
+  const std::string kept = kept_files.empty() ? "" : " (" + kept_files + " left as it was)";
   switch (result.outcome) {
     case io::Outcome::kOptimum:
       return kExitOk;

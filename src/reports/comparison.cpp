@@ -4,9 +4,13 @@
 
 #include <cmath>
 #include <functional>
+#include <map>
 #include <optional>
 
 #include "io/json_reader.hpp"
+#include "io/plot.hpp"
+#include "reports/html_page.hpp"
+#include "reports/html_report.hpp"
 
 namespace sweetspot::reports {
 namespace {
@@ -310,6 +314,166 @@ std::string comparison_report(const std::vector<ComparedDesign>& designs, io::Fo
           "`): " + sweet_spot_paragraph(c.design, c.spots) + "\n";
   }
   return md;
+}
+
+namespace {
+
+// The curve along the frame is drawn and tabulated in steps of this much.
+constexpr double kCurveStep_m = 0.01;
+
+std::string title_of(const std::vector<ComparedDesign>& designs) {
+  std::string title = "Compared";
+  for (std::size_t k = 0; k < designs.size(); ++k)
+    title += (k == 0 ? ": " : k + 1 == designs.size() ? " and " : ", ") + designs[k].design.name;
+  return title;
+}
+
+// The side-by-side table: each value in people's units, the SI value under it.
+std::string side_by_side_html(const std::vector<ComparedDesign>& designs) {
+  std::string html =
+      "<div class=\"table-wrap\"><table id=\"compared\" class=\"side-by-side\"><thead><tr>"
+      "<th>quantity (unit)</th>";
+  for (const ComparedDesign& c : designs)
+    html += "<th class=\"num\">" + io::html_escape(c.design.name) + "</th>";
+  html += "</tr></thead><tbody>\n";
+  for (const Row& row : rows()) {
+    bool any = false;
+    for (const ComparedDesign& c : designs) any = any || row.value(c).has_value();
+    if (!any) continue;
+    const io::PeopleUnit unit = io::people_unit(row.unit);
+    const bool tension = std::string_view(row.key) == "string_tension_N";
+    const std::string shown_unit = tension ? "lb" : std::string(unit.unit);
+    html +=
+        fmt::format("<tr id=\"cmp-{}\"><td>{}{}<div class=\"means\"><code>{}</code></div></td>",
+                    row.key, io::html_escape(row.label),
+                    shown_unit.empty() ? "" : " (" + io::html_escape(shown_unit) + ")", row.key);
+    for (const ComparedDesign& c : designs) {
+      const auto v = row.value(c);
+      if (!v) {
+        html += "<td class=\"num\">—</td>";
+        continue;
+      }
+      const double people = tension ? *v / kNewtonsPerPound : *v * unit.factor;
+      html += fmt::format("<td class=\"num\">{}<span class=\"si\">{}{}</span></td>",
+                          io::significant(people, 4), io::significant(*v, 6),
+                          *row.unit ? " " + io::html_escape(row.unit) : std::string());
+    }
+    html += "</tr>\n";
+  }
+  return html + "</tbody></table></div>\n";
+}
+
+// The peak wrist force for a hit anywhere along each frame, overlaid, and
+// the numbers behind it (one row per centimetre from the tip).
+std::string wrist_along_frame_html(const std::vector<ComparedDesign>& designs) {
+  io::Plot plot{"The wrist force for a hit along the frame",
+                "impact point from the tip (cm)",
+                "peak wrist force (N)",
+                std::nullopt,
+                std::nullopt,
+                {},
+                {},
+                {}};
+  // Rows by position from the tip in tenths of a millimetre, so that the
+  // designs' points on the same centimetre share a row.
+  std::map<long, std::vector<std::optional<double>>> table;
+  double longest_cm = 0.0;
+  for (std::size_t k = 0; k < designs.size(); ++k) {
+    const std::vector<io::FramePoint> curve =
+        io::frame_curves(designs[k].design.design, kCurveStep_m);
+    // The key numbers the lines (a name would not fit a phone's layout);
+    // the caption names them.
+    io::PlotSeries series{std::to_string(k + 1), {}, {}, "lines lw 2.5"};
+    series.color = io::plot_color(k);
+    for (const io::FramePoint& p : curve) {
+      series.x.push_back(p.from_tip_m * 100.0);
+      series.y.push_back(p.peak_wrist_force_N);
+      auto& cells = table[std::lround(p.from_tip_m * 1e4)];
+      cells.resize(designs.size());
+      cells[k] = p.peak_wrist_force_N;
+    }
+    longest_cm = std::max(longest_cm, designs[k].design.design.implement.length_m() * 100.0);
+    plot.series.push_back(std::move(series));
+  }
+  plot.x_range = std::pair{0.0, longest_cm};
+  // Above the hand-held COP, where the curves are least.
+  plot.key_position = "top center";
+  std::string lines;
+  for (std::size_t k = 0; k < designs.size(); ++k)
+    lines += fmt::format("{}<span class=\"swatch\" style=\"background: {}\"></span> {}: {}",
+                         k == 0 ? "" : "; ", io::plot_color(k), k + 1,
+                         io::html_escape(designs[k].design.name));
+  std::string html = io::html_figure(
+      plot, "plot-wrist",
+      "The peak force on the wrist (rigid model, Cross 2004 Eqs. 11 and 17) for a hit at each "
+      "point along the frame, one line per design (" +
+          lines + "): least at each design's hand-held COP.");
+  html +=
+      "<details><summary>The numbers behind this plot</summary><div class=\"table-wrap\">"
+      "<table id=\"curve\"><thead><tr><th class=\"num\">impact from the tip (cm)</th>";
+  for (std::size_t k = 0; k < designs.size(); ++k)
+    html += fmt::format("<th class=\"num\">{}: {} (N)</th>", k + 1,
+                        io::html_escape(designs[k].design.name));
+  html += "</tr></thead><tbody>\n";
+  for (const auto& [at, cells] : table) {
+    html += fmt::format("<tr><td class=\"num\">{:.1f}</td>", static_cast<double>(at) / 100.0);
+    for (const auto& cell : cells)
+      html += cell ? fmt::format("<td class=\"num\">{:.0f}</td>", *cell)
+                   : std::string("<td class=\"num\">—</td>");
+    html += "</tr>\n";
+  }
+  return html + "</tbody></table></div></details>\n";
+}
+
+}  // namespace
+
+std::string comparison_html(const std::vector<ComparedDesign>& designs) {
+  std::string html = io::html_page_open(
+      title_of(designs),
+      "The designs side by side, each at its own impact and at its sweet spots.");
+  html += "<section id=\"answer\"><h2>The answer</h2>\n<div class=\"answer\">\n";
+  for (std::size_t k = 1; k < designs.size(); ++k) {
+    std::string paragraph;
+    for (const std::string& s : differences(designs[0], designs[k]))
+      paragraph += (paragraph.empty() ? "" : " ") + io::html_escape(s);
+    html += "<p>" + paragraph + "</p>\n";
+  }
+  html +=
+      "</div>\n<details><summary>Each design alone, as <code>sweetspot evaluate</code> says it"
+      "</summary>\n<ul>\n";
+  for (const ComparedDesign& c : designs) {
+    html += "<li><strong>" + io::html_escape(c.design.name) +
+            "</strong>: " + io::html_escape(sweet_spot_paragraph(c.design, c.spots)) + "</li>\n";
+  }
+  html += "</ul></details></section>\n";
+
+  html +=
+      "<section id=\"numbers\"><h2>Side by side</h2>\n"
+      "<p>Each value in a player's units, the SI value under it (as <code>--format json"
+      "</code> gives it).</p>\n" +
+      side_by_side_html(designs) + "</section>\n";
+
+  html +=
+      "<section id=\"racquets\"><h2>The racquets, to one scale</h2>\n<p>Each from above, tip "
+      "on the left: the balance point (triangle), the hand-held COP (red dot), the node (blue "
+      "diamond, when the frame's stiffness is known), the lead (orange) and the ball at the "
+      "impact.</p>\n";
+  std::vector<io::DrawnRacquet> drawn;
+  for (const ComparedDesign& c : designs)
+    drawn.push_back({&c.design, &c.spots.asked.evaluation, io::html_escape(c.design.name)});
+  html += io::racquets_to_scale_html(drawn, "drawing") + "</section>\n";
+
+  html += "<section id=\"frame\"><h2>Along the frame</h2>\n" + wrist_along_frame_html(designs) +
+          "</section>\n";
+
+  std::string sources;
+  for (const ComparedDesign& c : designs)
+    sources +=
+        (sources.empty() ? "" : ", ") + ("<code>" + io::html_escape(c.design.source) + "</code>");
+  return html + io::html_page_close(
+                    "Computed by sweetspot from " + sources +
+                    ", after R. Cross, \"Center of percussion of hand-held implements\", Am. J. "
+                    "Phys. 72 (2004). Positions are measured from the tip of the racquet.");
 }
 
 }  // namespace sweetspot::reports

@@ -36,4 +36,11 @@ std::vector<std::string> differences(const ComparedDesign& before, const Compare
 // or CSV (one row per design, SI).
 std::string comparison_report(const std::vector<ComparedDesign>& designs, io::Format format);
 
+// The comparison as one self-contained web page (reports/html_page.hpp): the
+// differences in words first, each design's sweet spots, the table side by
+// side (people's units, the SI value under each), the racquets drawn from
+// above to one scale with the positions behind the drawing, and the peak
+// wrist force along each frame overlaid, with its table.
+std::string comparison_html(const std::vector<ComparedDesign>& designs);
+
 }  // namespace sweetspot::reports

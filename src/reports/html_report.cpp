@@ -4,12 +4,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <stdexcept>
 
 #include "io/format.hpp"
 #include "io/json_reader.hpp"
 #include "io/outputs.hpp"
 #include "io/plot.hpp"
+#include "reports/html_page.hpp"
 #include "reports/string_bed_map_report.hpp"
 #include "reports/summary.hpp"
 #include "studies/string_bed_map.hpp"
@@ -34,10 +36,6 @@ constexpr double kBeamDepth_cm = 2.4;
 constexpr double kFrameStep_m = 0.01;
 // The hand-held modes' relative tolerance (evaluate's default).
 constexpr double kRelTol = 1e-6;
-
-std::string cm(double metres, int decimals = 1) {
-  return fmt::format("{:.{}f}", metres * 100.0, decimals);
-}
 
 // A number for an SVG attribute (centimetres, two decimals are plenty).
 std::string n(double v) { return fmt::format("{:.2f}", v); }
@@ -174,7 +172,7 @@ std::string hand_and_tape(const DesignFile& file, double half_height, bool profi
         "<ellipse class=\"hand\" cx=\"{}\" cy=\"0\" rx=\"{}\" ry=\"{}\"><title>the hand, {} cm "
         "from the butt</title></ellipse>\n",
         n(cx), n(d.hand.grip_length_m * 50.0 + 1.0), n(profile ? 4.0 : 4.8),
-        cm(d.hand.center_from_butt_m));
+        html_cm(d.hand.center_from_butt_m));
   }
   for (const PointMass& p : d.implement.point_masses()) {
     const double x = L - p.from_butt_m * 100.0;
@@ -182,7 +180,7 @@ std::string hand_and_tape(const DesignFile& file, double half_height, bool profi
         "<rect class=\"tape\" x=\"{}\" y=\"{}\" width=\"1.6\" height=\"{}\"><title>lead, {:.0f} g, "
         "{} cm from the tip</title></rect>\n",
         n(std::clamp(x - 0.8, 0.0, L - 1.6)), n(-half_height), n(2 * half_height),
-        p.mass_kg * 1000.0, cm(d.implement.length_m() - p.from_butt_m));
+        p.mass_kg * 1000.0, html_cm(d.implement.length_m() - p.from_butt_m));
   }
   return svg;
 }
@@ -192,20 +190,6 @@ void tape_marks(const DesignFile& file, std::vector<Mark>& ms) {
   for (const PointMass& p : file.design.implement.point_masses())
     ms.push_back(
         {(L - p.from_butt_m) * 100.0, fmt::format("lead {:.0f} g", p.mass_kg * 1000.0), ""});
-}
-
-// The plot's SVG twice, laid out for a wide screen and for a phone (the page
-// shows one of them), or a sentence saying why it is missing.
-std::string figure(const Plot& plot, const std::string& id, const std::string& caption) {
-  std::string why;
-  const auto wide = render_svg(plot, id + "-w-", &why, 960, 560);
-  const auto narrow = wide ? render_svg(plot, id + "-n-", &why, 520, 460) : std::nullopt;
-  const std::string body =
-      wide && narrow
-          ? "<div class=\"wide\">" + *wide + "</div><div class=\"narrow\">" + *narrow + "</div>"
-          : "<p class=\"missing\">Plot not drawn: " + html_escape(why) + "</p>";
-  return fmt::format("<figure id=\"{}\">{}<figcaption>{}</figcaption></figure>\n", id, body,
-                     caption);
 }
 
 // The table under the maps takes every kMapTableStep-th grid point, from the
@@ -239,12 +223,12 @@ std::string maps_html(const DesignFile& file) {
   std::string lines;
   if (map.cop_hand_from_butt_m)
     lines += fmt::format("the solid line across the head is the hand-held COP, {} cm from the tip",
-                         cm(L - *map.cop_hand_from_butt_m));
+                         html_cm(L - *map.cop_hand_from_butt_m));
   if (map.node_free_from_butt_m)
     lines += fmt::format(
         "{}the dashed line the node of the free frame's fundamental, {} cm from "
         "the tip",
-        lines.empty() ? "" : "; ", cm(L - *map.node_free_from_butt_m));
+        lines.empty() ? "" : "; ", html_cm(L - *map.node_free_from_butt_m));
   if (lines.empty()) lines = "neither the COP nor the node falls on the string bed";
   html += fmt::format(
       "<p>The head seen from the front, tip up, for a hit anywhere on the strings ({} by {} "
@@ -312,90 +296,7 @@ std::string maps_html(const DesignFile& file) {
   return html + "</tbody></table></div></details>\n</section>\n";
 }
 
-constexpr const char* kStyle = R"(
-:root { --ink: #1b1f24; --muted: #5b6470; --line: #d5dae0; --accent: #0b5fa5; }
-* { box-sizing: border-box; }
-body { margin: 0; font-family: system-ui, -apple-system, "Segoe UI", Roboto, "DejaVu Sans", sans-serif;
-       color: var(--ink); background: #fff; line-height: 1.5; }
-main { max-width: 62rem; margin: 0 auto; padding: 1rem 1.2rem 3rem; }
-h1 { font-size: 1.7rem; line-height: 1.25; margin: 0.6rem 0 0.2rem; }
-h2 { font-size: 1.25rem; margin: 2.2rem 0 0.6rem; border-bottom: 2px solid var(--line); padding-bottom: 0.2rem; }
-.lede { color: var(--muted); margin-top: 0; }
-.answer { background: #f1f6fb; border-left: 5px solid var(--accent); padding: 0.4rem 1rem; font-size: 1.12rem; }
-figure { margin: 1rem 0; }
-figure svg { width: 100%; height: auto; display: block; }
-figure.drawing-figure { max-width: 46rem; }
-.narrow { display: none; }
-.means { color: var(--muted); font-size: 0.88rem; }
-figcaption { color: var(--muted); font-size: 0.92rem; }
-.drawing text { font-size: 1.6px; fill: var(--ink); }
-.drawing .tick { font-size: 1.5px; text-anchor: middle; fill: var(--muted); }
-.drawing .frame { fill: none; stroke: #2b3138; stroke-width: 1.2; }
-.drawing .bed { fill: #eef3e2; stroke: #9aa58a; stroke-width: 0.15; }
-.drawing .shaft { fill: #59616b; }
-.drawing .hand { fill: #d99a6c; fill-opacity: 0.55; stroke: #a86a3e; stroke-width: 0.2; }
-.drawing .tape { fill: #ef8a17; stroke: #9c5200; stroke-width: 0.15; }
-.drawing .cop { fill: #d62728; stroke: #fff; stroke-width: 0.25; }
-.drawing .node { fill: #1f5fbf; stroke: #fff; stroke-width: 0.2; }
-.drawing .balance { fill: #2b3138; }
-.drawing .ball { fill: #d4e157; fill-opacity: 0.6; stroke: #7c8a12; stroke-width: 0.2; stroke-dasharray: 0.6 0.4; }
-.drawing .leader { stroke: var(--muted); stroke-width: 0.12; }
-.drawing .ruler { stroke: var(--muted); stroke-width: 0.12; }
-.table-wrap { overflow-x: auto; -webkit-overflow-scrolling: touch; }
-table { border-collapse: collapse; margin: 0.6rem 0; min-width: 60%; }
-th, td { padding: 0.3rem 0.6rem; border-bottom: 1px solid var(--line); text-align: left; vertical-align: top; }
-th { background: #f6f8fa; }
-td.num, th.num { text-align: right; font-variant-numeric: tabular-nums; }
-td.num { white-space: nowrap; }
-#positions td:first-child { min-width: 10rem; }
-code { font-size: 0.9em; overflow-wrap: anywhere; }
-details summary { cursor: pointer; color: var(--accent); }
-.maps { display: grid; grid-template-columns: repeat(auto-fit, minmax(24rem, 1fr)); gap: 0 1.2rem; }
-.missing { color: #9c2a00; }
-footer { color: var(--muted); font-size: 0.88rem; margin-top: 2.5rem; }
-@media (max-width: 640px) {
-  main { padding: 0.6rem 0.7rem 2rem; }
-  h1 { font-size: 1.35rem; }
-  .answer { font-size: 1rem; padding: 0.3rem 0.7rem; }
-  th, td { padding: 0.25rem 0.35rem; font-size: 0.9rem; }
-  table { width: 100%; }
-  #positions td:first-child { min-width: 8.5rem; }
-  .drawing text { font-size: 2.4px; }
-  .drawing .tick { font-size: 2.2px; }
-  .wide { display: none; }
-  .narrow { display: block; }
-}
-)";
-
 }  // namespace
-
-std::string html_escape(std::string_view text) {
-  std::string out;
-  out.reserve(text.size());
-  for (const char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      case '\'':
-        out += "&#39;";
-        break;
-      default:
-        if ((static_cast<unsigned char>(c) < 0x20 && c != '\n' && c != '\t') || c == 0x7f) break;
-        out += c;
-    }
-  }
-  return out;
-}
 
 std::vector<FramePoint> frame_curves(const Design& design, double step_m) {
   if (!(step_m > 0)) throw std::invalid_argument("step_m: must be > 0 m, got " + exact(step_m));
@@ -415,6 +316,7 @@ double drawn_head_area_m2(const DesignFile& file, const Json& document) {
     const double r = file.design.strings->head_radius_m;
     return M_PI * r * r;
   }
+  if (file.design.head) return file.design.head->area_m2;
   if (document.is_object() && document.contains("implement") && document["implement"].is_object()) {
     const Json& implement = document["implement"];
     if (implement.contains("headsize_sq_in") && implement["headsize_sq_in"].is_number())
@@ -423,7 +325,8 @@ double drawn_head_area_m2(const DesignFile& file, const Json& document) {
   return kDefaultHeadArea_m2;
 }
 
-std::string racquet_top_svg(const DesignFile& file, const Evaluation& e, double head_area_m2) {
+std::string racquet_top_svg(const DesignFile& file, const Evaluation& e, double head_area_m2,
+                            const std::string& id) {
   const double L = file.design.implement.length_m() * 100.0;
   // The head's string bed: an ellipse of the head's area, a = kHeadAspect b,
   // no longer than half the implement.
@@ -443,10 +346,12 @@ std::string racquet_top_svg(const DesignFile& file, const Evaluation& e, double 
   const double top = -half - 13.0;
   const double bottom = half + 8.0;
   std::string svg = fmt::format(
-      "<svg class=\"drawing\" viewBox=\"-2 {} {} {}\" role=\"img\" aria-labelledby=\"top-title\" "
-      "xmlns=\"http://www.w3.org/2000/svg\"><title id=\"top-title\">The racquet from above, to "
+      "<svg class=\"drawing\" viewBox=\"-2 {0} {1} {2}\" role=\"img\" "
+      "aria-labelledby=\"{3}-title\" "
+      "xmlns=\"http://www.w3.org/2000/svg\"><title id=\"{3}-title\">{4} from above, to "
       "scale</title>\n",
-      n(top), n(L + 4), n(bottom - top));
+      n(top), n(L + 4), n(bottom - top), html_escape(id),
+      id == "top" ? std::string("The racquet") : html_escape(file.name));
   // Shaft and throat, then the head over them.
   svg += fmt::format(
       "<rect class=\"shaft\" x=\"{0}\" y=\"{1}\" width=\"{2}\" height=\"{3}\" rx=\"0.6\"/>\n"
@@ -498,6 +403,71 @@ std::string racquet_side_svg(const DesignFile& file, const Evaluation& e) {
   return svg + "</svg>\n";
 }
 
+std::string racquets_to_scale_html(const std::vector<DrawnRacquet>& racquets,
+                                   const std::string& id) {
+  double longest_cm = 0.0;
+  for (const DrawnRacquet& r : racquets)
+    longest_cm = std::max(longest_cm, r.file->design.implement.length_m() * 100.0);
+  std::string html;
+  for (std::size_t k = 0; k < racquets.size(); ++k) {
+    const DrawnRacquet& r = racquets[k];
+    const double L_cm = r.file->design.implement.length_m() * 100.0;
+    // The viewBox is the length plus 4 cm wide: the same fraction of the
+    // longest's keeps every drawing at one scale.
+    html += fmt::format(
+        "<figure class=\"drawing-figure\" id=\"{0}-{1}\"><div style=\"width: {2:.2f}%\">{3}</div>"
+        "<figcaption>{4}</figcaption></figure>\n",
+        html_escape(id), k + 1, 100.0 * (L_cm + 4.0) / (longest_cm + 4.0),
+        racquet_top_svg(*r.file, *r.evaluation, drawn_head_area_m2(*r.file, Json::object()),
+                        fmt::format("{}-{}", html_escape(id), k + 1)),
+        r.caption_html);
+  }
+  // The numbers behind the drawings: where each marker sits, from the tip.
+  html += fmt::format(
+      "<div class=\"table-wrap\"><table id=\"{}-positions\"><thead><tr><th>from the tip (cm)</th>",
+      html_escape(id));
+  for (const DrawnRacquet& r : racquets)
+    html += "<th class=\"num\">" + html_escape(r.file->name) + "</th>";
+  html += "</tr></thead><tbody>\n";
+  const auto row = [&](const char* key, const char* what,
+                       const std::function<std::string(const DrawnRacquet&)>& cell) {
+    std::string cells;
+    bool any = false;
+    for (const DrawnRacquet& r : racquets) {
+      const std::string c = cell(r);
+      any = any || !c.empty();
+      cells += "<td class=\"num\">" + (c.empty() ? std::string("—") : c) + "</td>";
+    }
+    if (any) html += fmt::format("<tr id=\"{}-{}\"><td>{}</td>{}</tr>\n", id, key, what, cells);
+  };
+  const auto from_tip = [](const DrawnRacquet& r, double from_butt_m) {
+    return html_cm(r.file->design.implement.length_m() - from_butt_m);
+  };
+  row("length", "length",
+      [](const DrawnRacquet& r) { return html_cm(r.file->design.implement.length_m()); });
+  row("balance", "balance point",
+      [&](const DrawnRacquet& r) { return from_tip(r, r.evaluation->balance_from_butt_m); });
+  row("cop", "hand-held COP", [&](const DrawnRacquet& r) {
+    return r.evaluation->cop_hand_from_butt_m ? from_tip(r, *r.evaluation->cop_hand_from_butt_m)
+                                              : std::string();
+  });
+  row("node", "node, held", [&](const DrawnRacquet& r) {
+    return r.evaluation->modal && r.evaluation->modal->node_hand_from_butt_m
+               ? from_tip(r, *r.evaluation->modal->node_hand_from_butt_m)
+               : std::string();
+  });
+  row("impact", "impact",
+      [&](const DrawnRacquet& r) { return from_tip(r, r.file->design.impact_from_butt_m); });
+  row("lead", "lead (g at cm)", [&](const DrawnRacquet& r) {
+    std::string cell;
+    for (const PointMass& p : r.file->design.implement.point_masses())
+      cell += fmt::format("{}{:.1f} g at {}", cell.empty() ? "" : "<br/>", p.mass_kg * 1000.0,
+                          from_tip(r, p.from_butt_m));
+    return cell;
+  });
+  return html + "</tbody></table></div>\n";
+}
+
 std::string design_html_report(const DesignFile& file, const Json& document) {
   const Design& d = file.design;
   const double L = d.implement.length_m();
@@ -510,14 +480,7 @@ std::string design_html_report(const DesignFile& file, const Json& document) {
                                       ? document["description"].get<std::string>()
                                       : std::string();
 
-  std::string html =
-      "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\"/>\n"
-      "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\"/>\n"
-      "<meta name=\"generator\" content=\"sweetspot\"/>\n";
-  html += "<title>" + html_escape(file.name) + " — sweetspot</title>\n<style>" + kStyle +
-          "</style>\n</head>\n<body>\n<main>\n";
-  html += "<h1 id=\"name\">" + html_escape(file.name) + "</h1>\n";
-  if (!description.empty()) html += "<p class=\"lede\">" + html_escape(description) + "</p>\n";
+  std::string html = html_page_open(file.name, description);
 
   html += "<section id=\"answer\"><h2>The answer</h2>\n<div class=\"answer\">\n" +
           answer_html(file, e) + "</div></section>\n";
@@ -542,7 +505,7 @@ std::string design_html_report(const DesignFile& file, const Json& document) {
     html += fmt::format(
         "<tr id=\"pos-{}\"><td>{}<div class=\"means\">{}</div></td><td class=\"num\">{}</td>"
         "<td class=\"num\">{}</td></tr>\n",
-        id, what, means, cm(L - from_butt_m), cm(from_butt_m));
+        id, what, means, html_cm(L - from_butt_m), html_cm(from_butt_m));
   };
   row("balance", "balance point", e.balance_from_butt_m, "the centre of mass");
   if (e.cop_hand_from_butt_m)
@@ -565,7 +528,7 @@ std::string design_html_report(const DesignFile& file, const Json& document) {
   html += fmt::format(
       "</tbody></table></div>\n<p>Length {} cm, mass {:.0f} g, swingweight {:.0f} kg·cm².</p>\n"
       "</section>\n",
-      cm(L), e.mass_kg * 1000.0, e.swingweight_kg_m2 * 1e4);
+      html_cm(L), e.mass_kg * 1000.0, e.swingweight_kg_m2 * 1e4);
 
   // The curves along the frame.
   html += "<section id=\"frame\"><h2>Along the frame</h2>\n";
@@ -601,11 +564,12 @@ std::string design_html_report(const DesignFile& file, const Json& document) {
                 lines};
   wrist_plot.key_position = "off";
   cor_plot.key_position = "off";
-  html += figure(wrist_plot, "plot-wrist",
-                 "The share of the force on the strings that reaches the wrist (Cross 2004, Eq. "
-                 "11), rigid model: zero at the hand-held COP.");
-  html += figure(cor_plot, "plot-cor",
-                 "The apparent COR (Eq. 16): highest near the hand, falling towards the tip.");
+  html +=
+      html_figure(wrist_plot, "plot-wrist",
+                  "The share of the force on the strings that reaches the wrist (Cross 2004, Eq. "
+                  "11), rigid model: zero at the hand-held COP.");
+  html += html_figure(cor_plot, "plot-cor",
+                      "The apparent COR (Eq. 16): highest near the hand, falling towards the tip.");
   html +=
       "<details><summary>The numbers behind these curves</summary><div class=\"table-wrap\">"
       "<table id=\"curve\"><thead><tr><th class=\"num\">impact from the tip (cm)</th>"
@@ -615,7 +579,7 @@ std::string design_html_report(const DesignFile& file, const Json& document) {
     html += fmt::format(
         "<tr><td class=\"num\">{}</td><td class=\"num\">{:.3f}</td><td class=\"num\">{:.0f}</td>"
         "<td class=\"num\">{:.3f}</td></tr>\n",
-        cm(p.from_tip_m), std::abs(p.wrist_force_ratio), p.peak_wrist_force_N, p.apparent_cor);
+        html_cm(p.from_tip_m), std::abs(p.wrist_force_ratio), p.peak_wrist_force_N, p.apparent_cor);
   }
   html += "</tbody></table></div></details>\n</section>\n";
 
@@ -667,12 +631,11 @@ std::string design_html_report(const DesignFile& file, const Json& document) {
   }
   html += "</section>\n";
 
-  html += fmt::format(
-      "<footer>Computed by sweetspot ({} model) from <code>{}</code>, after R. Cross, \"Center of "
-      "percussion of hand-held implements\", Am. J. Phys. 72 (2004). Positions are measured "
-      "from the tip of the racquet.</footer>\n</main>\n</body>\n</html>\n",
-      to_string(fidelity_of(e)), html_escape(file.source));
-  return html;
+  return html + html_page_close(fmt::format(
+                    "Computed by sweetspot ({} model) from <code>{}</code>, after R. Cross, "
+                    "\"Center of percussion of hand-held implements\", Am. J. Phys. 72 (2004). "
+                    "Positions are measured from the tip of the racquet.",
+                    to_string(fidelity_of(e)), html_escape(file.source)));
 }
 
 }  // namespace sweetspot::io

@@ -11,12 +11,9 @@
 
 #include "io/design_reader.hpp"
 #include "io/json_reader.hpp"
+#include "reports/html_page.hpp"
 
 namespace sweetspot::io {
-
-// `text` safe inside HTML text and attribute values: & < > " ' as
-// entities, control characters other than tab and newline dropped.
-std::string html_escape(std::string_view text);
 
 // One impact point along the frame, from the rigid model (Eqs. 11, 15-17).
 struct FramePoint {
@@ -32,7 +29,8 @@ struct FramePoint {
 std::vector<FramePoint> frame_curves(const Design& design, double step_m);
 
 // The head's size used for the drawing [m^2]: the strings' head size when the
-// design has strings, `implement.headsize_sq_in` when the file gives it, else
+// design has strings, the design's head shape (`implement.headsize_sq_in`)
+// when it has one, `implement.headsize_sq_in` of `document` otherwise, else
 // 100 sq in, a mid-size tennis head.
 double drawn_head_area_m2(const DesignFile& design, const Json& document);
 
@@ -40,9 +38,26 @@ double drawn_head_area_m2(const DesignFile& design, const Json& document);
 // (centimetres as user units): outline from the length and the head's size,
 // the hand, the balance point, the hand-held COP, the node (when known), the
 // impact point and the lead tape.
+// `id` names the drawing's title element (unique on a page).
 std::string racquet_top_svg(const DesignFile& design, const Evaluation& evaluation,
-                            double head_area_m2);
+                            double head_area_m2, const std::string& id = "top");
 std::string racquet_side_svg(const DesignFile& design, const Evaluation& evaluation);
+
+// A racquet to draw beside others: its file, its evaluation (both outlive
+// the call) and a caption (markup).
+struct DrawnRacquet {
+  const DesignFile* file = nullptr;
+  const Evaluation* evaluation = nullptr;
+  std::string caption_html;
+};
+
+// Racquets drawn from above to one scale, one above the other (each drawing
+// as wide on the page as its length), in figures with ids `id`-1, `id`-2...,
+// then the table of the numbers behind them (<table id="`id`-positions">):
+// the length, the balance point, the hand-held COP, the node, the impact and
+// the lead, in cm from the tip, one column per racquet.
+std::string racquets_to_scale_html(const std::vector<DrawnRacquet>& racquets,
+                                   const std::string& id);
 
 // The whole page for `design` (read from `document`, the file as written, for
 // its inputs in the units they were given; its impact as `evaluate` takes it,

@@ -4,6 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
+
+#include "reports/html_page.hpp"
+#include "reports/html_report.hpp"
 
 namespace sweetspot::io {
 namespace {
@@ -57,13 +61,88 @@ std::string violated(const ConstraintReport& c) {
                      significant(c.tolerance));
 }
 
+// The answer in sentences, names of outputs and paths in backticks: the
+// answer itself, then (when a target is out of reach) a note saying so.
+std::vector<std::string> answer_paragraphs(const Study& study, const OptimizationResult& r) {
+  const std::optional<Evaluation>& start = r.start_outputs;
+  const std::optional<Evaluation>& best = r.best_outputs;
+  const ObjectiveTerm& lead = study.objective.front();
+  std::string changes;
+  for (std::size_t i = 0; i < study.variables.size(); ++i) {
+    const StudyVariable& v = study.variables[i];
+    const double x = r.summary.x[i];
+    const std::string hit = bound_hit(v, x);
+    changes +=
+        fmt::format("{}`{}` = {}{}", changes.empty() ? "" : ", ", v.pointer, significant(x, 4),
+                    hit == "min"   ? " (its lower bound)"
+                    : hit == "max" ? " (its upper bound)"
+                                   : "");
+  }
+  std::string active;
+  for (const ConstraintReport& c : r.constraints) {
+    if (c.active) active += (active.empty() ? "" : ", ") + c.name;
+  }
+  const auto best_lead = output_value(*lead.output, best);
+  const auto start_lead = output_value(*lead.output, start);
+  const std::string spread =
+      study.over_impacts
+          ? fmt::format(
+                " ({} over impacts {}–{} m from the tip)",
+                study.over_impacts->reduce == ImpactSpread::Reduce::kMax ? "worst case" : "mean",
+                significant(study.over_impacts->from_tip_lo_m),
+                significant(study.over_impacts->from_tip_hi_m))
+          : std::string();
+  // The lead output at the best design and at the start: over a spread of
+  // impacts that is the objective itself.
+  const std::string best_text = study.over_impacts ? significant(r.summary.objective, 4)
+                                                   : (best_lead ? significant(*best_lead, 4) : "—");
+  const std::string start_text =
+      study.over_impacts ? (r.start_objective ? significant(*r.start_objective, 4) : "no value")
+                         : (start_lead ? significant(*start_lead, 4) : "no value");
+  std::vector<std::string> paragraphs(1);
+  std::string& answer = paragraphs.front();
+  switch (r.outcome) {
+    case Outcome::kOptimum:
+      answer = fmt::format(
+          "The {} `{}`{} is {} {} (the starting design gives {}), with {}.{}", goal_phrase(lead),
+          lead.output->name, spread, best_text, lead.output->unit, start_text, changes,
+          active.empty() ? " No constraint is active." : " Active constraints: " + active + ".");
+      break;
+    case Outcome::kInfeasible: {
+      std::string broken;
+      for (const ConstraintReport& c : r.constraints) {
+        if (!c.satisfied) broken += (broken.empty() ? "" : "; ") + violated(c);
+      }
+      answer = fmt::format(
+          "No design meets the constraints; the least violating one is {}, where {}. "
+          "Its `{}`{} is {} {} (the starting design gives {}).",
+          changes, broken, lead.output->name, spread, best_text, lead.output->unit, start_text);
+      break;
+    }
+    case Outcome::kNoValue:
+      answer = fmt::format(
+          "No valid design was found: no design the search reached gives `{}`{} a "
+          "value. At the last one it kept, {}, {}.",
+          lead.output->name, spread, changes, r.no_value);
+      break;
+  }
+  if (r.outcome == Outcome::kOptimum && lead.goal == Goal::kTarget && study.objective.size() == 1 &&
+      !study.over_impacts && best_lead &&
+      std::abs(*best_lead - lead.target) > kTargetReached * std::max(1.0, std::abs(lead.target))) {
+    paragraphs.push_back(fmt::format(
+        "The target {} cannot be reached within the variables' bounds: {} {} is as close as "
+        "these designs get.",
+        significant(lead.target), significant(*best_lead, 4), lead.output->unit));
+  }
+  return paragraphs;
+}
+
 }  // namespace
 
 std::string optimization_report(const Study& study, const OptimizationResult& r, Format format,
                                 bool with_timing) {
   const std::optional<Evaluation>& start = r.start_outputs;
   const std::optional<Evaluation>& best = r.best_outputs;
-  const ObjectiveTerm& lead = study.objective.front();
   const bool has_value = r.outcome != Outcome::kNoValue;
 
   if (format == Format::kJson) {
@@ -115,74 +194,11 @@ std::string optimization_report(const Study& study, const OptimizationResult& r,
     return csv;
   }
   // Markdown: the answer in a sentence, then the numbers.
-  std::string changes;
-  for (std::size_t i = 0; i < study.variables.size(); ++i) {
-    const StudyVariable& v = study.variables[i];
-    const double x = r.summary.x[i];
-    const std::string hit = bound_hit(v, x);
-    changes +=
-        fmt::format("{}`{}` = {}{}", changes.empty() ? "" : ", ", v.pointer, significant(x, 4),
-                    hit == "min"   ? " (its lower bound)"
-                    : hit == "max" ? " (its upper bound)"
-                                   : "");
-  }
-  std::string active;
-  for (const ConstraintReport& c : r.constraints) {
-    if (c.active) active += (active.empty() ? "" : ", ") + c.name;
-  }
-  const auto best_lead = output_value(*lead.output, best);
-  const auto start_lead = output_value(*lead.output, start);
-  const std::string spread =
-      study.over_impacts
-          ? fmt::format(
-                " ({} over impacts {}–{} m from the tip)",
-                study.over_impacts->reduce == ImpactSpread::Reduce::kMax ? "worst case" : "mean",
-                significant(study.over_impacts->from_tip_lo_m),
-                significant(study.over_impacts->from_tip_hi_m))
-          : std::string();
-  // The lead output at the best design and at the start: over a spread of
-  // impacts that is the objective itself.
-  const std::string best_text = study.over_impacts ? significant(r.summary.objective, 4)
-                                                   : (best_lead ? significant(*best_lead, 4) : "—");
-  const std::string start_text =
-      study.over_impacts ? (r.start_objective ? significant(*r.start_objective, 4) : "no value")
-                         : (start_lead ? significant(*start_lead, 4) : "no value");
   std::string md = fmt::format("# {}\n\n", md_cell(study.name));
   if (!study.question.empty()) md += "**Question.** " + study.question + "\n\n";
-  switch (r.outcome) {
-    case Outcome::kOptimum:
-      md += fmt::format(
-          "**Answer.** The {} `{}`{} is {} {} (the starting design gives {}), with {}.{}\n\n",
-          goal_phrase(lead), lead.output->name, spread, best_text, lead.output->unit, start_text,
-          changes,
-          active.empty() ? " No constraint is active." : " Active constraints: " + active + ".");
-      break;
-    case Outcome::kInfeasible: {
-      std::string broken;
-      for (const ConstraintReport& c : r.constraints) {
-        if (!c.satisfied) broken += (broken.empty() ? "" : "; ") + violated(c);
-      }
-      md += fmt::format(
-          "**Answer.** No design meets the constraints; the least violating one is {}, where {}. "
-          "Its `{}`{} is {} {} (the starting design gives {}).\n\n",
-          changes, broken, lead.output->name, spread, best_text, lead.output->unit, start_text);
-      break;
-    }
-    case Outcome::kNoValue:
-      md += fmt::format(
-          "**Answer.** No valid design was found: no design the search reached gives `{}`{} a "
-          "value. At the last one it kept, {}, {}.\n\n",
-          lead.output->name, spread, changes, r.no_value);
-      break;
-  }
-  if (r.outcome == Outcome::kOptimum && lead.goal == Goal::kTarget && study.objective.size() == 1 &&
-      !study.over_impacts && best_lead &&
-      std::abs(*best_lead - lead.target) > kTargetReached * std::max(1.0, std::abs(lead.target))) {
-    md += fmt::format(
-        "The target {} cannot be reached within the variables' bounds: {} {} is as close as "
-        "these designs get.\n\n",
-        significant(lead.target), significant(*best_lead, 4), lead.output->unit);
-  }
+  const std::vector<std::string> answer = answer_paragraphs(study, r);
+  md += "**Answer.** " + answer.front() + "\n\n";
+  for (std::size_t k = 1; k < answer.size(); ++k) md += answer[k] + "\n\n";
   md += "## Variables\n\n| path | min | max | start | best |\n|---|---:|---:|---:|---:|\n";
   for (std::size_t i = 0; i < study.variables.size(); ++i) {
     const StudyVariable& v = study.variables[i];
@@ -290,6 +306,172 @@ Plot convergence_plot(const Study& study, const OptimizationResult& r) {
     plot.log_y2 = true;
   }
   return plot;
+}
+
+namespace {
+
+// An output's words and unit as the design page shows them ("peak wrist
+// force", "N"), from its axis label.
+std::pair<std::string, std::string> words_and_unit(const AxisQuantity& axis) {
+  const std::size_t open = axis.label.rfind(" (");
+  if (open == std::string::npos) return {axis.label, ""};
+  return {axis.label.substr(0, open), axis.label.substr(open + 2, axis.label.size() - open - 3)};
+}
+
+std::string variables_html(const Study& study, const OptimizationResult& r) {
+  std::string html =
+      "<div class=\"table-wrap\"><table id=\"variables\" class=\"side-by-side\"><thead><tr>"
+      "<th>variable (unit)</th><th class=\"num\">min</th><th class=\"num\">max</th>"
+      "<th class=\"num\">start</th><th class=\"num\">best</th></tr></thead><tbody>\n";
+  // Each value in the reader's unit, the file's value under it.
+  for (std::size_t i = 0; i < study.variables.size(); ++i) {
+    const StudyVariable& v = study.variables[i];
+    const AxisQuantity axis = pointer_axis(v.pointer);
+    const auto [words, unit] = words_and_unit(axis);
+    const auto cell = [&](double x) {
+      return fmt::format("<td class=\"num\">{}<span class=\"si\">{}</span></td>",
+                         significant(x * axis.factor, 4), significant(x, 6));
+    };
+    const std::string hit = bound_hit(v, r.summary.x[i]);
+    html += fmt::format(
+        "<tr id=\"var-{}\"><td>{}{}<div class=\"means\"><code>{}</code></div>{}</td>{}{}{}{}"
+        "</tr>\n",
+        i + 1, html_escape(words), unit.empty() ? "" : " (" + html_escape(unit) + ")",
+        html_escape(v.pointer),
+        hit.empty()    ? ""
+        : hit == "min" ? "<div class=\"means\">best at its lower bound</div>"
+                       : "<div class=\"means\">best at its upper bound</div>",
+        cell(v.min), cell(v.max), cell(r.start_x[i]), cell(r.summary.x[i]));
+  }
+  return html + "</tbody></table></div>\n";
+}
+
+std::string constraints_html(const OptimizationResult& r) {
+  if (r.constraints.empty()) return "<p>The study has no constraints.</p>\n";
+  std::string html =
+      "<p>A constraint is met when its value lies within its tolerance of the limit.</p>\n"
+      "<div class=\"table-wrap\"><table id=\"constraints\"><thead><tr><th>constraint</th>"
+      "<th class=\"num\">value at the best design</th><th class=\"num\">tolerance</th>"
+      "<th class=\"num\">outside the limit by</th><th>met</th><th>active</th></tr></thead>"
+      "<tbody>\n";
+  for (const ConstraintReport& c : r.constraints) {
+    html += fmt::format(
+        "<tr><td><code>{}</code></td><td class=\"num\">{}</td><td class=\"num\">{}</td>"
+        "<td class=\"num\">{}</td><td>{}</td><td>{}</td></tr>\n",
+        html_escape(c.name), c.value ? html_escape(with_unit(*c.value, c.unit)) : "—",
+        significant(c.tolerance), c.value ? significant(c.violation) : "—",
+        c.satisfied ? "yes" : "<strong>no</strong>", c.active ? "yes" : "no");
+  }
+  return html + "</tbody></table></div>\n";
+}
+
+// The convergence plot and the numbers behind it: the evaluations at which
+// the best so far improved (the plotted curve is flat in between).
+std::string convergence_html(const Study& study, const OptimizationResult& r) {
+  Plot plot = convergence_plot(study, r);
+  // No key: on a phone's narrow layout it covers the curves or the axis
+  // label; the caption says which line is which.
+  plot.key_position = "off";
+  plot.title = "Convergence: " + plot_text_for_html(study.name);
+  std::string html = html_figure(
+      plot, "plot-convergence",
+      "Solid: the best objective found so far after each evaluation of the design (" +
+          html_escape(r.summary.algorithm) + ")" +
+          (r.constraints.empty() ? std::string()
+                                 : "; dashed, on the right axis: how far the best design is "
+                                   "outside its worst constraint, in multiples of its tolerance") +
+          ".");
+  const PlotSeries& curve = plot.series.front();
+  html += fmt::format(
+      "<details><summary>The numbers behind this plot</summary><p>The evaluations at which the "
+      "best so far improved, of {}.</p><div class=\"table-wrap\"><table id=\"convergence\">"
+      "<thead><tr><th class=\"num\">evaluation</th><th class=\"num\">{}</th></tr></thead>"
+      "<tbody>\n",
+      r.summary.evaluations, html_escape(plot.y_label));
+  std::string last;  // as shown: an improvement in the seventh digit is not listed
+  for (std::size_t i = 0; i < curve.x.size(); ++i) {
+    if (!curve.y[i] || significant(*curve.y[i], 6) == last) continue;
+    last = significant(*curve.y[i], 6);
+    html += fmt::format("<tr><td class=\"num\">{:.0f}</td><td class=\"num\">{}</td></tr>\n",
+                        curve.x[i], last);
+  }
+  return html + "</tbody></table></div></details>\n";
+}
+
+std::string outputs_html(const OptimizationResult& r) {
+  std::string html =
+      "<div class=\"table-wrap\"><table id=\"outputs\"><thead><tr><th>quantity</th>"
+      "<th class=\"num\">start</th><th class=\"num\">optimum</th><th>unit</th></tr></thead>"
+      "<tbody>\n";
+  for (const OutputSpec& o : output_specs()) {
+    const auto a = output_value(o, r.start_outputs), b = output_value(o, r.best_outputs);
+    if (!a && !b) continue;
+    const AxisQuantity axis = output_axis(o);
+    const auto [words, unit] = words_and_unit(axis);
+    const auto cell = [&](const std::optional<double>& v) {
+      return v ? fmt::format("<td class=\"num\">{}</td>", significant(*v * axis.factor, 4))
+               : std::string("<td class=\"num\">—</td>");
+    };
+    html += fmt::format(
+        "<tr id=\"out-{}\"><td>{}<div class=\"means\"><code>{}</code></div></td>{}{}<td>{}</td>"
+        "</tr>\n",
+        o.name, html_escape(words), o.name, cell(a), cell(b), html_escape(unit));
+  }
+  return html + "</tbody></table></div>\n";
+}
+
+}  // namespace
+
+std::string optimization_html(const Study& study, const OptimizationResult& r) {
+  std::string html = html_page_open(study.name, "");
+  html += "<section id=\"answer\"><h2>The answer</h2>\n";
+  if (!study.question.empty())
+    html += "<p class=\"question\"><strong>Question.</strong> " + html_escape(study.question) +
+            "</p>\n";
+  html += "<div class=\"answer\">\n";
+  for (const std::string& paragraph : answer_paragraphs(study, r))
+    html += "<p>" + html_with_code(paragraph) + "</p>\n";
+  html += "</div></section>\n";
+
+  html +=
+      "<section id=\"variables-section\"><h2>What the search could change</h2>\n"
+      "<p>Each value in a player's units, the value as the files write it under it.</p>\n" +
+      variables_html(study, r) + "<h3>Constraints</h3>\n" + constraints_html(r) + "</section>\n";
+
+  html +=
+      "<section id=\"search\"><h2>The search</h2>\n" + convergence_html(study, r) +
+      fmt::format("<p>{} evaluations; {}; NLopt's termination: {}.</p>\n", r.summary.evaluations,
+                  html_escape(r.summary.algorithm), html_escape(r.summary.termination)) +
+      "</section>\n";
+
+  const char* best_name = r.outcome == Outcome::kOptimum      ? "the best design"
+                          : r.outcome == Outcome::kInfeasible ? "the least violating design"
+                                                              : "the last design the search kept";
+  html += fmt::format("<section id=\"outputs-section\"><h2>Start and {}</h2>\n", best_name);
+  // Drawn under names that tell them apart (both carry the study's design's).
+  DesignFile start = r.start, best = r.best;
+  start.name = "start";
+  best.name = r.outcome == Outcome::kOptimum ? "best" : "found";
+  std::vector<DrawnRacquet> drawn;
+  const std::string best_title =
+      std::string(1, static_cast<char>(std::toupper(best_name[0]))) + (best_name + 1);
+  if (r.start_outputs) drawn.push_back({&start, &*r.start_outputs, "The starting design"});
+  if (r.best_outputs) drawn.push_back({&best, &*r.best_outputs, best_title});
+  html +=
+      "<p>Both from above, tip on the left, to one scale: the balance point (triangle), the "
+      "hand-held COP (red dot), the node (blue diamond, when the frame's stiffness is known), "
+      "the lead (orange) and the ball at the impact.</p>\n";
+  if (!drawn.empty()) html += racquets_to_scale_html(drawn, "drawing");
+  html += "<h3>Every output</h3>\n" + outputs_html(r);
+  html += fmt::format(
+      "<details><summary>{} as a design file (<code>sweetspot evaluate</code> accepts it)"
+      "</summary><pre id=\"best-design\">{}</pre></details>\n</section>\n",
+      best_title,
+      html_escape(design_to_json(r.best).dump(2, ' ', false, Json::error_handler_t::replace)));
+  return html + html_page_close("Computed by sweetspot from <code>" + html_escape(study.source) +
+                                "</code>, after R. Cross, \"Center of percussion of hand-held "
+                                "implements\", Am. J. Phys. 72 (2004). Positions are measured "
+                                "from the tip of the racquet.");
 }
 
 }  // namespace sweetspot::io

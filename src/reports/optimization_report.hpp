@@ -17,4 +17,11 @@ std::string optimization_report(const Study& study, const OptimizationResult& re
                                 bool with_timing);
 Plot convergence_plot(const Study& study, const OptimizationResult& result);
 
+// The report as one self-contained web page (reports/html_page.hpp): the
+// study's question and the answer in sentences, the variables (bounds, start,
+// best), the constraints, the convergence plot with the numbers behind it,
+// the starting and the best design drawn to one scale, every output at both,
+// and the best design as a file. Every string from the study is escaped.
+std::string optimization_html(const Study& study, const OptimizationResult& result);
+
 }  // namespace sweetspot::io

@@ -7,6 +7,10 @@
 #include <cstdio>
 #include <string>
 
+#include "reports/comparison.hpp"
+#include "reports/optimization_report.hpp"
+#include "studies/optimization.hpp"
+#include "studies/study.hpp"
 #include "sweetspot/evaluate.hpp"
 #include "sweetspot/rigid_impact.hpp"
 
@@ -109,6 +113,124 @@ TEST_CASE("The drawing is to scale: the racquet's length and each marker where t
   CHECK(drawn_head_area_m2(file, Json::object()) == Approx(100 * 0.00064516));
   CHECK(drawn_head_area_m2(file, Json{{"implement", {{"headsize_sq_in", 98}}}}) ==
         Approx(98 * 0.00064516));
+}
+
+// A page that needs nothing but itself: no script, nothing fetched (the
+// only URLs are SVG's namespaces), one inline stylesheet, a phone's viewport.
+void check_self_contained(const std::string& page) {
+  CHECK(page.rfind("<!DOCTYPE html>", 0) == 0);
+  std::size_t from = 0;
+  while ((from = page.find("http://", from)) != std::string::npos) {
+    CHECK(page.compare(from, 18, "http://www.w3.org/") == 0);
+    ++from;
+  }
+  CHECK(page.find("https://") == std::string::npos);
+  CHECK(page.find("<link") == std::string::npos);
+  CHECK(page.find("@import") == std::string::npos);
+  CHECK(page.find("<script") == std::string::npos);
+  CHECK(page.find(" src=") == std::string::npos);
+  CHECK(count(page, "<style>") == 1);
+  CHECK(page.find("name=\"viewport\"") != std::string::npos);
+  CHECK(page.rfind("</html>\n") == page.size() - 8);
+}
+
+const std::string kHostile = "<script>alert(1)</script> & \"Pro\" <b>'98'</b>";
+const std::string kHostileEscaped =
+    "&lt;script&gt;alert(1)&lt;/script&gt; &amp; &quot;Pro&quot; &lt;b&gt;&#39;98&#39;&lt;/b&gt;";
+
+TEST_CASE("Backticked names become code, everything else in a sentence is escaped") {
+  CHECK(html_with_code("The `a<b` is 3 & `c`.") ==
+        "The <code>a&lt;b</code> is 3 &amp; <code>c</code>.");
+  CHECK(html_with_code("an odd ` stays") == "an odd ` stays");
+  CHECK(html_with_code("") == "");
+  // gnuplot's SVG writes a key's text as it is: no '&' or '<' may reach it.
+  CHECK(plot_text_for_html(kHostile) == "scriptalert(1)/script and \"Pro\" b'98'/b");
+}
+
+TEST_CASE(
+    "A comparison's page is self-contained, escapes every name and shows the table's numbers") {
+  Json hostile = read_json_file(SWEETSPOT_SOURCE_DIR "/designs/racquets/tour-100-lead-at-tip.json");
+  hostile["name"] = kHostile;
+  std::vector<reports::ComparedDesign> designs;
+  designs.push_back(reports::compare_one(tour_100(), "", 1e-6));
+  designs.push_back(reports::compare_one(read_design(hostile, "<i>b</i>.json"), "", 1e-6));
+  const std::string page = reports::comparison_html(designs);
+  check_self_contained(page);
+  CHECK(page.find("<h1 id=\"name\">Compared: Modern 100 sq in tour racquet (typical strung specs) "
+                  "and " +
+                  kHostileEscaped + "</h1>") != std::string::npos);
+  CHECK(page.find("<i>b</i>") == std::string::npos);
+  CHECK(page.find("alert(1)</") == std::string::npos);
+  // Each difference in words, escaped, in the answer.
+  for (const std::string& sentence : reports::differences(designs[0], designs[1]))
+    CHECK(page.find(html_escape(sentence)) != std::string::npos);
+  // The mass side by side: grams to four figures, kilograms under them.
+  const double mass_kg = designs[1].spots.asked.evaluation.mass_kg;
+  CHECK(page.find(fmt::format("<td class=\"num\">{}<span class=\"si\">{} kg</span></td>",
+                              significant(mass_kg * 1000, 4), significant(mass_kg, 6))) !=
+        std::string::npos);
+  // Two drawings with their own title ids, and the positions behind them.
+  CHECK(count(page, "<svg class=\"drawing\"") == 2);
+  CHECK(page.find("id=\"drawing-1-title\"") != std::string::npos);
+  CHECK(page.find("id=\"drawing-2-title\"") != std::string::npos);
+  CHECK(page.find("<table id=\"drawing-positions\">") != std::string::npos);
+}
+
+TEST_CASE("Racquets of different lengths are drawn to one scale") {
+  const DesignFile long_one = tour_100();                                                // 27 in
+  DesignFile short_one = load_design(SWEETSPOT_SOURCE_DIR "/designs/table1/row1.json");  // 0.7 m
+  const double a_cm = long_one.design.implement.length_m() * 100;
+  const double b_cm = short_one.design.implement.length_m() * 100;
+  REQUIRE(a_cm != b_cm);
+  const Evaluation ea = evaluate(long_one.design), eb = evaluate(short_one.design);
+  const std::string html =
+      racquets_to_scale_html({{&long_one, &ea, "a"}, {&short_one, &eb, "b"}}, "d");
+  // Each drawing's viewBox is its length + 4 cm wide; its share of the page
+  // is that over the longest's, so one centimetre is as long in both.
+  const double longest = std::max(a_cm, b_cm);
+  CHECK(html.find(fmt::format("<div style=\"width: {:.2f}%\">",
+                              100 * (a_cm + 4) / (longest + 4))) != std::string::npos);
+  CHECK(html.find(fmt::format("<div style=\"width: {:.2f}%\">",
+                              100 * (b_cm + 4) / (longest + 4))) != std::string::npos);
+  CHECK(html.find(fmt::format("<tr id=\"d-length\"><td>length</td><td class=\"num\">{:.1f}</td>"
+                              "<td class=\"num\">{:.1f}</td></tr>",
+                              a_cm, b_cm)) != std::string::npos);
+}
+
+TEST_CASE(
+    "A study's page is self-contained, escapes its name and question, and shows the optimum") {
+  Study study =
+      load_study(SWEETSPOT_SOURCE_DIR "/designs/studies/1-lowest-wrist-force-table1-ranges.json");
+  study.name = kHostile;
+  study.question = kHostile + " `not code`";
+  const OptimizationResult r = run_optimization(study);
+  REQUIRE(r.outcome == Outcome::kOptimum);
+  REQUIRE(r.best_outputs);
+  const std::string page = optimization_html(study, r);
+  check_self_contained(page);
+  CHECK(page.find("<h1 id=\"name\">" + kHostileEscaped + "</h1>") != std::string::npos);
+  // The question is the user's text, shown as typed (no code spans made of it).
+  CHECK(page.find(kHostileEscaped + " `not code`</p>") != std::string::npos);
+  CHECK(page.find("alert(1)</") == std::string::npos);
+  // The answer is the Markdown report's, its output's name as code.
+  const std::string md = optimization_report(study, r, Format::kMarkdown, false);
+  const std::size_t answer = md.find("**Answer.** ") + 12;
+  CHECK(page.find(html_with_code(md.substr(answer, md.find("\n", answer) - answer))) !=
+        std::string::npos);
+  CHECK(page.find("<code>peak_wrist_force_N</code>") != std::string::npos);
+  // Every variable's best value as the file writes it.
+  for (std::size_t i = 0; i < study.variables.size(); ++i)
+    CHECK(page.find(fmt::format("<span class=\"si\">{}</span></td></tr>",
+                                significant(r.summary.x[i], 6))) != std::string::npos);
+  // The outputs at the start and at the optimum, in people's units.
+  const OutputSpec& wrist = *find_output("peak_wrist_force_N");
+  CHECK(page.find(fmt::format("<tr id=\"out-peak_wrist_force_N\"><td>peak wrist force<div "
+                              "class=\"means\"><code>peak_wrist_force_N</code></div></td><td "
+                              "class=\"num\">{}</td><td class=\"num\">{}</td>",
+                              significant(*wrist.value(*r.start_outputs), 4),
+                              significant(*wrist.value(*r.best_outputs), 4))) != std::string::npos);
+  // The best design as a file, escaped.
+  CHECK(page.find("<pre id=\"best-design\">") != std::string::npos);
 }
 
 }  // namespace
