@@ -213,8 +213,12 @@ std::string maps_html(const DesignFile& file) {
   StringBedMap map;
   std::string html = "<section id=\"maps\"><h2>Over the string bed</h2>\n<!-- sweetspot:maps -->\n";
   try {
+    // The maps are drawn at the fidelity the page's answer uses: the solved
+    // collision when the design is solved (tension and stiffness, no COR),
+    // so the power map agrees with the best rebound in the sentences above.
+    const Fidelity needed = resolve_fidelity("auto", d);
     options.fidelity =
-        resolve_fidelity("auto", d) == Fidelity::kRigid ? Fidelity::kRigid : Fidelity::kModal;
+        needed == Fidelity::kRigid || needed == Fidelity::kCollision ? needed : Fidelity::kModal;
     map = string_bed_map(d, options);
   } catch (const std::invalid_argument& e) {
     return html + "<p class=\"missing\">No maps for this design: " + html_escape(e.what()) +
@@ -247,9 +251,14 @@ std::string maps_html(const DesignFile& file) {
     std::string says;
     switch (q) {
       case MapQuantity::kPower:
-        says =
-            "Power: how fast the ball comes back (the apparent COR, Eq. 16 with the twist "
-            "about the long axis), highest near the throat and on the axis";
+        says = map.fidelity == Fidelity::kCollision
+                   ? "Power: how fast the ball comes back from the solved collision of ball, "
+                     "strings and flexible frame (with the twist about the long axis), highest "
+                     "on the axis between the node and the COP"
+                   : "Power: how fast the ball comes back (the apparent COR, Eq. 16 at the "
+                     "frame's given COR, with the twist about the long axis), highest near the "
+                     "throat and on the axis; the frame's vibration losses are in the COR, not "
+                     "in the map";
         break;
       case MapQuantity::kShock:
         says = "Shock: the peak force on the wrist, least along the hand-held COP";
