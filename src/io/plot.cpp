@@ -10,7 +10,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
+#include <cctype>
 #include <cerrno>
 #include <csignal>
 #include <cstring>
@@ -474,6 +476,19 @@ std::optional<std::string> render_script_svg(const std::string& script,
     if (start == std::string::npos || end == std::string::npos || end < start)
       throw PlotFailure("gnuplot wrote no complete SVG");
     svg = svg.substr(start, end + 6 - start);
+    // gnuplot writes '<' in text as an entity but '&' as is: a title or key
+    // with '&' would break the page's XML. Every '&' that does not start an
+    // entity becomes &amp;.
+    for (std::size_t at = svg.find('&'); at != std::string::npos; at = svg.find('&', at + 1)) {
+      const std::size_t semi = svg.find(';', at);
+      const bool entity =
+          semi != std::string::npos && semi - at <= 8 && semi > at + 1 &&
+          std::all_of(svg.begin() + static_cast<std::ptrdiff_t>(at + 1),
+                      svg.begin() + static_cast<std::ptrdiff_t>(semi), [](char c) {
+                        return std::isalnum(static_cast<unsigned char>(c)) || c == '#';
+                      });
+      if (!entity) svg.replace(at, 1, "&amp;");
+    }
     // The ids gnuplot gives its groups serve its mouse script only (not
     // written): dropped, since each plot repeats them. The rest get the prefix.
     for (const char* group : {"gnuplot_canvas", "gnuplot_plot_"}) {

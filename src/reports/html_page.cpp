@@ -113,12 +113,7 @@ std::string html_with_code(std::string_view text) {
 std::string plot_text_for_html(std::string_view text) {
   std::string out;
   for (const char c : text) {
-    if (c == '&') {
-      out += "and";
-    } else if (c != '<' && c != '>' &&
-               !((static_cast<unsigned char>(c) < 0x20 && c != '\t') || c == 0x7f)) {
-      out += c;
-    }
+    if (!((static_cast<unsigned char>(c) < 0x20 && c != '\t') || c == 0x7f)) out += c;
   }
   return out;
 }

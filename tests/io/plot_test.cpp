@@ -188,5 +188,22 @@ TEST_CASE("A plot as inline SVG: no XML prologue, its ids prefixed so two plots 
   CHECK(svg->find("<script") == std::string::npos);
 }
 
+TEST_CASE("An '&' in a title or a key is &amp; in the SVG, and entities stay as they are") {
+  Plot plot = two_points("Smith & Sons <pro>");
+  plot.series[0].title = "lead & tape";
+  std::string why;
+  const auto svg = render_svg(plot, "amp-", &why);
+  REQUIRE(svg);
+  // Every '&' starts one of XML's entities or a character reference.
+  for (std::size_t at = svg->find('&'); at != std::string::npos; at = svg->find('&', at + 1)) {
+    const std::string_view rest = std::string_view(*svg).substr(at, 8);
+    INFO(rest);
+    CHECK((rest.rfind("&amp;", 0) == 0 || rest.rfind("&lt;", 0) == 0 ||
+           rest.rfind("&gt;", 0) == 0 || rest.rfind("&quot;", 0) == 0 ||
+           rest.rfind("&apos;", 0) == 0 || rest.rfind("&#", 0) == 0));
+  }
+  CHECK(svg->find("Sons") != std::string::npos);
+}
+
 }  // namespace
 }  // namespace sweetspot::io
