@@ -387,8 +387,10 @@ AxisQuantity pointer_axis(std::string_view pointer) {
     phrase += (phrase.empty() ? "" : " ") + words(part);
   }
   // "lead mass 1" + "mass" says mass once; "impact" + "from tip" reads "impact from the tip".
-  if (!(key == "mass" && phrase.rfind("lead mass", 0) == 0))
-    phrase += (phrase.empty() ? "" : " ") + words(key);
+  const bool lead = phrase.rfind("lead mass", 0) == 0;
+  if (!(key == "mass" && lead)) phrase += (phrase.empty() ? "" : " ") + words(key);
+  // Lead tape is weighed in grams.
+  if (lead && key == "mass" && unit == "kg") return with_unit(phrase, "g", 1000.0);
   return with_unit(phrase, unit, factor);
 }
 

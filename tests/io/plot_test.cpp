@@ -130,6 +130,10 @@ TEST_CASE("Axes read as words with one unit, never a JSON pointer or a doubled u
   CHECK(pointer_axis("/implement/point_masses/2/from_tip_cm").label ==
         "lead mass 3 from the tip (cm)");
   CHECK(pointer_axis("/hand/mass_kg").label == "hand mass (kg)");
+  // Lead tape is weighed in grams, whatever unit the file uses.
+  const AxisQuantity lead = pointer_axis("/implement/point_masses/0/mass_kg");
+  CHECK(lead.label == "lead mass 1 (g)");
+  CHECK(lead.factor == 1000.0);
   CHECK(pointer_axis("/implement/head_to_handle_mass_ratio").label == "head to handle mass ratio");
   const AxisQuantity impact = pointer_axis("/impact/from_tip_m");
   CHECK(impact.label == "impact from the tip (cm)");  // metres shown as centimetres
