@@ -28,7 +28,7 @@ DesignCollision::DesignCollision(const Design& design, double rel_tol) : design_
   }
   if (!has_stiffness(design)) {
     throw std::invalid_argument(
-        "frame/EI_N_m2: the solved collision needs the frame's stiffness (EI_N_m2 or "
+        "frame/EI_N_m2: the solved collision needs the frame's stiffness (EI_N_m2, RA or "
         "fundamental_free_Hz)");
   }
   ResponseOptions options;

@@ -11,7 +11,7 @@ constexpr std::string_view kAxisAtInfinity =
     "rotating";
 
 constexpr std::string_view kNeedsModes =
-    "needs the modal model: give the frame's stiffness (frame EI_N_m2 or fundamental_free_Hz) "
+    "needs the modal model: give the frame's stiffness (frame EI_N_m2, RA or fundamental_free_Hz) "
     "and evaluate with --fidelity modal or auto";
 
 constexpr std::string_view kNoPolarInertia =

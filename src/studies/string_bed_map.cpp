@@ -56,7 +56,7 @@ StringBedMap string_bed_map(const Design& design, const StringBedMapOptions& opt
   } else if (options.fidelity != Fidelity::kRigid) {
     if (!has_stiffness(design)) {
       throw std::invalid_argument(
-          "frame/EI_N_m2: the vibration map needs the frame's stiffness (frame EI_N_m2 or "
+          "frame/EI_N_m2: the vibration map needs the frame's stiffness (frame EI_N_m2, RA or "
           "fundamental_free_Hz)");
     }
     map.node_free_from_butt_m = evaluate_modes(design).node_free_from_butt_m;
