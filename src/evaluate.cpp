@@ -12,9 +12,8 @@
 namespace sweetspot {
 namespace {
 
-// The rigid evaluation of a design whose COR and duration are settled.
-Evaluation evaluate_settled(const Design& design) {
-  validate(design);
+// The rigid evaluation of a validated design whose COR and duration are settled.
+Evaluation evaluate_settled_valid(const Design& design) {
   Evaluation e = evaluate_unchecked(design);
   // validate() bounds every input, so this is a backstop: never hand out inf or NaN.
   for (const double value : {e.mass_kg, e.I_cm_kg_m2, e.swingweight_kg_m2, e.effective_mass_kg,
@@ -27,6 +26,12 @@ Evaluation evaluate_settled(const Design& design) {
     }
   }
   return e;
+}
+
+// The rigid evaluation of a design whose COR and duration are settled.
+Evaluation evaluate_settled(const Design& design) {
+  validate(design);
+  return evaluate_settled_valid(design);
 }
 
 // The impact duration: given, or derived from the string tension. The
@@ -54,6 +59,12 @@ double settled_duration(const Design& design) {
 
 Evaluation evaluate(const Design& design) { return evaluate(design, Fidelity::kRigid); }
 
+Evaluation evaluate_validated(const Design& design, Fidelity fidelity, double rel_tol) {
+  if (fidelity == Fidelity::kRigid && !design.cor_rigid && !design.strings)
+    return evaluate_settled_valid(design);
+  return evaluate(design, fidelity, rel_tol);
+}
+
 Fidelity needed_fidelity(const Design& design) {
   if (design.strings && !design.cor_given && !design.cor_rigid && has_stiffness(design))
     return Fidelity::kCollision;
@@ -63,6 +74,11 @@ Fidelity needed_fidelity(const Design& design) {
 
 Evaluation evaluate(const Design& design, Fidelity fidelity, double rel_tol) {
   if (fidelity == Fidelity::kCollision) return evaluate_collision(design, rel_tol);
+  // The rigid model with a given COR and duration (a sweep's or a catalogue's
+  // every point): nothing to settle, so neither a copy of the design nor a
+  // second validation; the same checks, in the same order, and the same numbers.
+  if (fidelity == Fidelity::kRigid && !design.cor_rigid && !design.strings)
+    return evaluate_settled(design);
   if (design.cor_rigid && fidelity != Fidelity::kResponse) {
     throw std::invalid_argument(
         "frame/cor_rigid: a COR derived from the frame's vibration needs the response model "

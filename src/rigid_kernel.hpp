@@ -65,12 +65,15 @@ inline double hand_held_cop_from_butt(double M, double h, double I, double at_wr
 // Cross (2004) Eq. (11) multiplied through by M_e (see wrist_force_ratio() in
 // rigid_impact.hpp): M_e M h (x - x_cop) / (M_e M h^2 + I_cm (M_e + M)),
 // -M_e I_cm / (...) when h = 0, and 0 without a forearm.
+// The numerator is selected before the one division, which is the division
+// of either side (one division fewer in a vectorised loop, the same bits).
 inline double wrist_force_ratio(double M, double h, double I, double Me, double x) {
   const double denominator = Me * M * h * h + I * (Me + M);
   const double x_cop = h + I / (M * h);
-  const double at_wrist = -Me * I / denominator;
-  const double general = Me * M * h * (x - x_cop) / denominator;
-  return Me == 0.0 ? 0.0 : (h == 0.0 ? at_wrist : general);
+  const double at_wrist = -Me * I;
+  const double general = Me * M * h * (x - x_cop);
+  const double ratio = (h == 0.0 ? at_wrist : general) / denominator;
+  return Me == 0.0 ? 0.0 : ratio;
 }
 
 }  // namespace sweetspot::kernel

@@ -140,6 +140,11 @@ Evaluation evaluate(const Design& design);
 // "frame/cor_rigid".
 Evaluation evaluate(const Design& design, Fidelity fidelity, double rel_tol = 1e-6);
 
+// evaluate(design, fidelity, rel_tol) for a design validate() has accepted
+// (a sweep's point after its numbers were set and checked): the same numbers
+// and the same exceptions, without validating the design a second time.
+Evaluation evaluate_validated(const Design& design, Fidelity fidelity, double rel_tol = 1e-6);
+
 // The rigid model without validation and with the design's cor and
 // impact_duration_s as they stand (no tension, no cor_rigid), for callers that
 // validated once and evaluate many impacts or variants in a loop. No allocation.
