@@ -12,16 +12,32 @@
 #include "sweetspot/evaluate.hpp"
 
 namespace sweetspot::io {
+
+std::span<const std::string_view> rigid_outcome_outputs() {
+  static constexpr std::string_view kNames[] = {
+      "effective_mass_kg",   "apparent_cor",      "rebound_speed_m_s", "impulse_N_s",
+      "peak_impact_force_N", "wrist_force_ratio", "peak_wrist_force_N"};
+  return kNames;
+}
+
 namespace {
 
 // One thread's share of a sweep: points by index in grid order (the first
 // variable fastest), each evaluated into its CSV row and its plot values.
 class SweepWorker {
  public:
-  SweepWorker(const Study& study, const std::vector<double>& second, bool share_rows, bool compiled)
+  SweepWorker(const Study& study, const std::vector<double>& second, const SweepOptions& options)
       : study_(study), second_(second), document_(study.design_document) {
+    const bool share_rows = options.share_rows;
     for (const StudyVariable& variable : study.variables) pointers_.emplace_back(variable.pointer);
-    if (compiled && compiled_for_variables(study)) bound_.emplace(*study.compiled);
+    if (options.compiled && compiled_for_variables(study)) bound_.emplace(*study.compiled);
+    outcome_only_ =
+        options.outcome_only && study.fidelity == Fidelity::kRigid &&
+        std::all_of(study.sweep_outputs.begin(), study.sweep_outputs.end(),
+                    [](const OutputSpec* o) {
+                      const auto names = rigid_outcome_outputs();
+                      return std::find(names.begin(), names.end(), o->name) != names.end();
+                    });
     if (study.variables[0].values.size() <= kCachedTexts) {
       for (const double value : study.variables[0].values)
         append_exact(first_text_.emplace_back(), value);
@@ -97,7 +113,8 @@ class SweepWorker {
     try {
       const Design* design = bound_->at(std::span<const double>(values, pointers_.size()));
       if (!design) return nullptr;
-      evaluation_ = evaluate_validated(*design, study_.fidelity, study_.modal_tolerance);
+      if (!(outcome_only_ && evaluate_rigid_outcome(*design, evaluation_)))
+        evaluation_ = evaluate_validated(*design, study_.fidelity, study_.modal_tolerance);
       share_row(*design, row);
       return &evaluation_;
     } catch (const std::exception&) {
@@ -144,6 +161,7 @@ class SweepWorker {
   std::optional<Impact> impact_;
   std::optional<BoundDesign> bound_;  // empty: every point read from JSON
   Evaluation evaluation_;             // the current point's
+  bool outcome_only_ = false;         // the outputs are rigid_outcome()'s alone
   // The first variable's values as CSV text (when there are at most
   // kCachedTexts of them), and ",second" for the current row.
   static constexpr std::size_t kCachedTexts = 100000;
@@ -200,8 +218,7 @@ std::vector<Plot> run_sweep(const Study& study, std::ostream& csv,
   }
   const int threads = std::max(1, options.threads);
   std::vector<SweepWorker> workers;
-  for (int t = 0; t < threads; ++t)
-    workers.emplace_back(study, second, options.share_rows, options.compiled);
+  for (int t = 0; t < threads; ++t) workers.emplace_back(study, second, options);
   std::vector<std::string> texts(threads);
   std::vector<std::optional<double>> values(kSweepChunkPoints * outputs);
   for (std::size_t begin = 0; begin < total; begin += kSweepChunkPoints) {
