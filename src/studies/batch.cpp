@@ -215,6 +215,7 @@ struct CsvRecord {
 // quote inside an unquoted field, or text after a closing quote, is an error.
 CsvRecord split_csv(std::string_view record, std::size_t max_fields) {
   CsvRecord out;
+  out.fields.reserve(std::min<std::size_t>(max_fields, 64));  // one allocation for most rows
   std::string field;
   std::size_t i = 0;
   const auto keep = [&] {
