@@ -12,21 +12,38 @@
 namespace sweetspot {
 namespace {
 
+// validate() bounds every input, so this is a backstop: never hand out inf or
+// NaN. Whether these numbers of an evaluation are all finite.
+bool all_finite(double mass_kg, double I_cm_kg_m2, double swingweight_kg_m2,
+                double effective_mass_kg, double apparent_cor, double impulse_N_s,
+                double peak_impact_force_N, double system_I_cm_kg_m2, double wrist_force_ratio,
+                double peak_wrist_force_N) {
+  bool finite = true;
+  for (const double value :
+       {mass_kg, I_cm_kg_m2, swingweight_kg_m2, effective_mass_kg, apparent_cor, impulse_N_s,
+        peak_impact_force_N, system_I_cm_kg_m2, wrist_force_ratio, peak_wrist_force_N}) {
+    finite = finite && std::isfinite(value);
+  }
+  return finite;
+}
+
+// The rigid evaluation of a validated design whose COR and duration are settled.
+Evaluation evaluate_settled_valid(const Design& design) {
+  Evaluation e = evaluate_unchecked(design);
+  if (!all_finite(e.mass_kg, e.I_cm_kg_m2, e.swingweight_kg_m2, e.effective_mass_kg, e.apparent_cor,
+                  e.impulse_N_s, e.peak_impact_force_N, e.system_I_cm_kg_m2, e.wrist_force_ratio,
+                  e.peak_wrist_force_N)) {
+    throw std::invalid_argument(
+        "implement: the inputs are outside the range the model can represent "
+        "(a result is not finite)");
+  }
+  return e;
+}
+
 // The rigid evaluation of a design whose COR and duration are settled.
 Evaluation evaluate_settled(const Design& design) {
   validate(design);
-  Evaluation e = evaluate_unchecked(design);
-  // validate() bounds every input, so this is a backstop: never hand out inf or NaN.
-  for (const double value : {e.mass_kg, e.I_cm_kg_m2, e.swingweight_kg_m2, e.effective_mass_kg,
-                             e.apparent_cor, e.impulse_N_s, e.peak_impact_force_N,
-                             e.system_I_cm_kg_m2, e.wrist_force_ratio, e.peak_wrist_force_N}) {
-    if (!std::isfinite(value)) {
-      throw std::invalid_argument(
-          "implement: the inputs are outside the range the model can represent "
-          "(a result is not finite)");
-    }
-  }
-  return e;
+  return evaluate_settled_valid(design);
 }
 
 // The impact duration: given, or derived from the string tension. The
@@ -54,6 +71,12 @@ double settled_duration(const Design& design) {
 
 Evaluation evaluate(const Design& design) { return evaluate(design, Fidelity::kRigid); }
 
+Evaluation evaluate_validated(const Design& design, Fidelity fidelity, double rel_tol) {
+  if (fidelity == Fidelity::kRigid && !design.cor_rigid && !design.strings)
+    return evaluate_settled_valid(design);
+  return evaluate(design, fidelity, rel_tol);
+}
+
 Fidelity needed_fidelity(const Design& design) {
   if (design.strings && !design.cor_given && !design.cor_rigid && has_stiffness(design))
     return Fidelity::kCollision;
@@ -63,6 +86,11 @@ Fidelity needed_fidelity(const Design& design) {
 
 Evaluation evaluate(const Design& design, Fidelity fidelity, double rel_tol) {
   if (fidelity == Fidelity::kCollision) return evaluate_collision(design, rel_tol);
+  // The rigid model with a given COR and duration (a sweep's or a catalogue's
+  // every point): nothing to settle, so neither a copy of the design nor a
+  // second validation; the same checks, in the same order, and the same numbers.
+  if (fidelity == Fidelity::kRigid && !design.cor_rigid && !design.strings)
+    return evaluate_settled(design);
   if (design.cor_rigid && fidelity != Fidelity::kResponse) {
     throw std::invalid_argument(
         "frame/cor_rigid: a COR derived from the frame's vibration needs the response model "
@@ -186,6 +214,17 @@ double twist_per_kg(const std::optional<double>& polar_inertia_kg_m2, double off
   return impact_twist_per_kg(off_axis_m, polar_inertia_kg_m2.value_or(0.0));
 }
 
+// What rigid_outcome() gives: Eqs. (11), (15)-(17) and the rebound speed.
+void outcome_part(const Design& d, const RigidOutcome& o, Evaluation& e) {
+  e.effective_mass_kg = o.effective_mass_kg;
+  e.apparent_cor = o.apparent_cor;
+  e.rebound_speed_m_s = o.apparent_cor * d.ball.speed_m_s;
+  e.impulse_N_s = o.impulse_N_s;
+  e.peak_impact_force_N = o.peak_impact_force_N;
+  e.wrist_force_ratio = o.wrist_force_ratio;
+  e.peak_wrist_force_N = o.peak_wrist_force_N;
+}
+
 // The parts that do: Eqs. (5), (11), (12), (15)-(17) at x: rigid_outcome()
 // and the rotation axes.
 void impact_part(const Design& d, const MassProperties& body, const MassProperties& system,
@@ -196,15 +235,9 @@ void impact_part(const Design& d, const MassProperties& body, const MassProperti
   e.impact_from_butt_m = x;
   e.impact_from_com_m = x - body.com_from_butt_m;
   e.rotation_axis_free_from_butt_m = free_conjugate_from_butt(body, x);
-  e.effective_mass_kg = o.effective_mass_kg;
-  e.apparent_cor = o.apparent_cor;
-  e.rebound_speed_m_s = o.apparent_cor * d.ball.speed_m_s;
-  e.impulse_N_s = o.impulse_N_s;
-  e.peak_impact_force_N = o.peak_impact_force_N;
+  outcome_part(d, o, e);
   e.rotation_axis_hand_from_butt_m =
       hand_held_rotation_axis_from_butt(system, d.forearm_equivalent_mass_kg, x);
-  e.wrist_force_ratio = o.wrist_force_ratio;
-  e.peak_wrist_force_N = o.peak_wrist_force_N;
   e.impact_off_axis_m = y;
   if (y != 0.0) {
     e.twist_rate_rad_s = o.impulse_N_s * y / *e.polar_inertia_kg_m2;
@@ -223,6 +256,21 @@ Evaluation evaluate_unchecked(const Design& d) {
   Evaluation e = design_part(d, body, system);
   impact_part(d, body, system, d.impact_from_butt_m, d.impact_off_axis_m, e);
   return e;
+}
+
+bool evaluate_rigid_outcome(const Design& d, Evaluation& e) {
+  if (d.cor_rigid || d.strings || d.impact_off_axis_m != 0.0) return false;
+  const MassProperties& body = d.implement.mass_properties();
+  const MassProperties system = hand_held_system(d);
+  // The case impact_part() builds: on the axis, the twist is 0 whatever the polar inertia.
+  const RigidOutcome o = rigid_outcome(case_of(d, d.impact_duration_s, 0.0), system);
+  if (!all_finite(body.mass_kg, body.I_cm_kg_m2, swingweight_kg_m2(body), o.effective_mass_kg,
+                  o.apparent_cor, o.impulse_N_s, o.peak_impact_force_N, system.I_cm_kg_m2,
+                  o.wrist_force_ratio, o.peak_wrist_force_N)) {
+    return false;
+  }
+  outcome_part(d, o, e);
+  return true;
 }
 
 RigidCase rigid_case(const Design& design) {

@@ -144,20 +144,22 @@ namespace {
 // One loop over arrays, every special case selected rather than branched on
 // (kernel::), so the compiler vectorises it; on x86-64 GCC also builds an AVX2
 // copy, picked at load time on a processor that has it. No FMA: the results
-// are those of the scalar functions, bit for bit.
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
-__attribute__((target_clones("avx2", "default")))
-#endif
-void outcomes_loop(std::size_t n, const double* __restrict M, const double* __restrict c,
-                   const double* __restrict I, const double* __restrict hand_x, const double* __restrict hand_m,
-                   const double* __restrict Me, const double* __restrict ball_m, const double* __restrict ball_v,
-                   const double* __restrict cor, const double* __restrict T, const double* __restrict x,
-                   const double* __restrict twist, double* __restrict m_eff, double* __restrict e_A, double* __restrict J, double* __restrict F0,
-                   double* __restrict cop, double* __restrict ratio, double* __restrict F_w) {
+// are those of the scalar functions, bit for bit. Without a twist (kTwist
+// false) its division is left out: M_eff / (1 + M_eff * 0) is M_eff exactly
+// for the finite M_eff of a valid case.
+template <bool kTwist>
+[[gnu::always_inline]] inline void outcomes_body(
+    std::size_t n, const double* __restrict M, const double* __restrict c,
+    const double* __restrict I, const double* __restrict hand_x, const double* __restrict hand_m,
+    const double* __restrict Me, const double* __restrict ball_m, const double* __restrict ball_v,
+    const double* __restrict cor, const double* __restrict T, const double* __restrict x,
+    const double* __restrict twist, double* __restrict m_eff, double* __restrict e_A,
+    double* __restrict J, double* __restrict F0, double* __restrict cop, double* __restrict ratio,
+    double* __restrict F_w) {
   for (std::size_t i = 0; i < n; ++i) {
     const kernel::System s = kernel::with_point_mass(M[i], c[i], I[i], hand_x[i], hand_m[i]);
-    const double effective =
-        kernel::twisted_effective_mass(kernel::effective_mass(M[i], c[i], I[i], x[i]), twist[i]);
+    const double axis = kernel::effective_mass(M[i], c[i], I[i], x[i]);
+    const double effective = kTwist ? kernel::twisted_effective_mass(axis, twist[i]) : axis;
     const double apparent = kernel::apparent_cor(cor[i], effective, ball_m[i]);
     const double impulse = kernel::ball_impulse(ball_m[i], ball_v[i], apparent);
     const double peak = kernel::half_sine_peak_force(impulse, T[i]);
@@ -172,6 +174,43 @@ void outcomes_loop(std::size_t n, const double* __restrict M, const double* __re
     F_w[i] = std::abs(r) * peak;
   }
 }
+
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+#define SWEETSPOT_AVX2_CLONE __attribute__((target_clones("avx2", "default")))
+#else
+#define SWEETSPOT_AVX2_CLONE
+#endif
+
+SWEETSPOT_AVX2_CLONE
+void outcomes_loop(std::size_t n, const double* __restrict M, const double* __restrict c,
+                   const double* __restrict I, const double* __restrict hand_x,
+                   const double* __restrict hand_m, const double* __restrict Me,
+                   const double* __restrict ball_m, const double* __restrict ball_v,
+                   const double* __restrict cor, const double* __restrict T,
+                   const double* __restrict x, const double* __restrict twist,
+                   double* __restrict m_eff, double* __restrict e_A, double* __restrict J,
+                   double* __restrict F0, double* __restrict cop, double* __restrict ratio,
+                   double* __restrict F_w) {
+  outcomes_body<true>(n, M, c, I, hand_x, hand_m, Me, ball_m, ball_v, cor, T, x, twist, m_eff, e_A,
+                      J, F0, cop, ratio, F_w);
+}
+
+// The same for cases all on the long axis (no twist given).
+SWEETSPOT_AVX2_CLONE
+void outcomes_loop_on_axis(std::size_t n, const double* __restrict M, const double* __restrict c,
+                           const double* __restrict I, const double* __restrict hand_x,
+                           const double* __restrict hand_m, const double* __restrict Me,
+                           const double* __restrict ball_m, const double* __restrict ball_v,
+                           const double* __restrict cor, const double* __restrict T,
+                           const double* __restrict x, double* __restrict m_eff,
+                           double* __restrict e_A, double* __restrict J, double* __restrict F0,
+                           double* __restrict cop, double* __restrict ratio,
+                           double* __restrict F_w) {
+  outcomes_body<false>(n, M, c, I, hand_x, hand_m, Me, ball_m, ball_v, cor, T, x, nullptr, m_eff,
+                       e_A, J, F0, cop, ratio, F_w);
+}
+
+#undef SWEETSPOT_AVX2_CLONE
 
 }  // namespace
 
@@ -202,7 +241,7 @@ void rigid_outcomes(const RigidCases& in, const RigidOutcomes& out) {
   check(out.cop_hand_from_butt_m.size(), "cop_hand_from_butt_m");
   check(out.wrist_force_ratio.size(), "wrist_force_ratio");
   check(out.peak_wrist_force_N.size(), "peak_wrist_force_N");
-  if (!in.impact_twist_per_kg.empty() || n == 0) {
+  if (!in.impact_twist_per_kg.empty()) {
     outcomes_loop(n, in.body_mass_kg.data(), in.body_com_from_butt_m.data(),
                   in.body_I_cm_kg_m2.data(), in.hand_from_butt_m.data(), in.hand_mass_kg.data(),
                   in.forearm_equivalent_mass_kg.data(), in.ball_mass_kg.data(),
@@ -213,21 +252,13 @@ void rigid_outcomes(const RigidCases& in, const RigidOutcomes& out) {
                   out.wrist_force_ratio.data(), out.peak_wrist_force_N.data());
     return;
   }
-  // No twist given: every case on the axis, a block of zeros at a time.
-  constexpr std::size_t kBlock = 256;
-  static const double kZeros[kBlock] = {};
-  for (std::size_t b = 0; b < n; b += kBlock) {
-    const std::size_t m = std::min(kBlock, n - b);
-    outcomes_loop(m, in.body_mass_kg.data() + b, in.body_com_from_butt_m.data() + b,
-                  in.body_I_cm_kg_m2.data() + b, in.hand_from_butt_m.data() + b,
-                  in.hand_mass_kg.data() + b, in.forearm_equivalent_mass_kg.data() + b,
-                  in.ball_mass_kg.data() + b, in.ball_speed_m_s.data() + b, in.cor.data() + b,
-                  in.impact_duration_s.data() + b, in.impact_from_butt_m.data() + b, kZeros,
-                  out.effective_mass_kg.data() + b, out.apparent_cor.data() + b,
-                  out.impulse_N_s.data() + b, out.peak_impact_force_N.data() + b,
-                  out.cop_hand_from_butt_m.data() + b, out.wrist_force_ratio.data() + b,
-                  out.peak_wrist_force_N.data() + b);
-  }
+  outcomes_loop_on_axis(
+      n, in.body_mass_kg.data(), in.body_com_from_butt_m.data(), in.body_I_cm_kg_m2.data(),
+      in.hand_from_butt_m.data(), in.hand_mass_kg.data(), in.forearm_equivalent_mass_kg.data(),
+      in.ball_mass_kg.data(), in.ball_speed_m_s.data(), in.cor.data(), in.impact_duration_s.data(),
+      in.impact_from_butt_m.data(), out.effective_mass_kg.data(), out.apparent_cor.data(),
+      out.impulse_N_s.data(), out.peak_impact_force_N.data(), out.cop_hand_from_butt_m.data(),
+      out.wrist_force_ratio.data(), out.peak_wrist_force_N.data());
 }
 
 void rigid_outcomes(std::span<const RigidCase> cases, std::span<RigidOutcome> out) {

@@ -2,8 +2,12 @@
 // 70 cm racquet struck 5 cm from the tip by a 57 g ball at 50 m/s.
 #include "sweetspot/evaluate.hpp"
 
+#include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <optional>
 #include <vector>
 
 #include "sweetspot/string_bed.hpp"
@@ -214,6 +218,151 @@ TEST_CASE("Rigid cases laid out as arrays give exactly what evaluating each desi
                                 in[9], short_span},
                      RigidOutcomes{out[0], out[1], out[2], out[3], out[4], out[5], out[6]}),
       Catch::Contains("impact_from_butt_m"));
+}
+
+TEST_CASE("Thousands of rigid cases as arrays, twisted or not, match rigid_outcome() bit for bit") {
+  // The oracle is the scalar rigid_outcome() of each case. Enough cases that
+  // the vectorised body of the loop runs, not only its scalar remainder, with
+  // the special cases it selects rather than branches on (no hand, no
+  // forearm, an impact through the centre of mass) spread among them, and the
+  // loop without a twist span against the one given zeros.
+  std::vector<RigidCase> cases;
+  for (int i = 0; i < 2053; ++i) {
+    const TableRow& row = kTableI[i % 8];
+    Design d = table_design(row);
+    d.hand.mass_kg = 0.3 + 0.05 * (i % 5);
+    d.impact_from_butt_m = 0.30 + 0.003 * (i % 113);
+    if (i % 97 == 3) d.hand.mass_kg = 0.0;
+    if (i % 89 == 5) d.forearm_equivalent_mass_kg = 0.0;
+    if (i % 83 == 7) d.impact_from_butt_m = d.implement.mass_properties().com_from_butt_m;
+    if (i % 3 == 1) {
+      d.twistweight_kg_m2 = 14e-4 + 1e-5 * (i % 11);
+      d.impact_off_axis_m = 0.002 * (i % 21) - 0.02;
+    }
+    cases.push_back(rigid_case(d));
+  }
+  const std::size_t n = cases.size();
+  std::vector<std::vector<double>> in(12, std::vector<double>(n));
+  for (std::size_t i = 0; i < n; ++i) {
+    const RigidCase& c = cases[i];
+    const double fields[12] = {
+        c.body.mass_kg, c.body.com_from_butt_m,       c.body.I_cm_kg_m2,    c.hand.from_butt_m,
+        c.hand.mass_kg, c.forearm_equivalent_mass_kg, c.ball_mass_kg,       c.ball_speed_m_s,
+        c.cor,          c.impact_duration_s,          c.impact_from_butt_m, c.impact_twist_per_kg};
+    for (std::size_t k = 0; k < 12; ++k) in[k][i] = fields[k];
+  }
+  const auto same_bits = [](double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; };
+  const auto outcome_fields = [](const RigidOutcome& o) {
+    return std::array<double, 7>{o.effective_mass_kg,   o.apparent_cor,         o.impulse_N_s,
+                                 o.peak_impact_force_N, o.cop_hand_from_butt_m, o.wrist_force_ratio,
+                                 o.peak_wrist_force_N};
+  };
+  std::vector<std::vector<double>> twisted(7, std::vector<double>(n));
+  rigid_outcomes(RigidCases{in[0], in[1], in[2], in[3], in[4], in[5], in[6], in[7], in[8], in[9],
+                            in[10], in[11]},
+                 RigidOutcomes{twisted[0], twisted[1], twisted[2], twisted[3], twisted[4],
+                               twisted[5], twisted[6]});
+  std::size_t differ = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto expected = outcome_fields(rigid_outcome(cases[i]));
+    for (std::size_t k = 0; k < 7; ++k) differ += same_bits(twisted[k][i], expected[k]) ? 0 : 1;
+  }
+  CHECK(differ == 0);
+  // On the axis: no twist span, and the same cases with explicit zeros.
+  const std::vector<double> zeros(n, 0.0);
+  std::vector<std::vector<double>> on_axis(7, std::vector<double>(n));
+  std::vector<std::vector<double>> zero_twist(7, std::vector<double>(n));
+  const RigidCases without{in[0], in[1], in[2], in[3], in[4], in[5],
+                           in[6], in[7], in[8], in[9], in[10]};
+  RigidCases with_zeros = without;
+  with_zeros.impact_twist_per_kg = zeros;
+  rigid_outcomes(without, RigidOutcomes{on_axis[0], on_axis[1], on_axis[2], on_axis[3], on_axis[4],
+                                        on_axis[5], on_axis[6]});
+  rigid_outcomes(with_zeros,
+                 RigidOutcomes{zero_twist[0], zero_twist[1], zero_twist[2], zero_twist[3],
+                               zero_twist[4], zero_twist[5], zero_twist[6]});
+  differ = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    RigidCase straight = cases[i];
+    straight.impact_twist_per_kg = 0.0;
+    const auto expected = outcome_fields(rigid_outcome(straight));
+    for (std::size_t k = 0; k < 7; ++k) {
+      differ += same_bits(on_axis[k][i], expected[k]) ? 0 : 1;
+      differ += same_bits(zero_twist[k][i], expected[k]) ? 0 : 1;
+    }
+  }
+  CHECK(differ == 0);
+}
+
+TEST_CASE("evaluate_validated() gives what evaluate() gives, every field, at every fidelity") {
+  // The oracle is evaluate(): for a design validate() accepts, skipping the
+  // second validation changes nothing, rigid or not, given COR or derived.
+  const auto bits = [](double x) {
+    std::uint64_t u;
+    std::memcpy(&u, &x, sizeof u);
+    return u;
+  };
+  const auto opt = [&](const std::optional<double>& x) {
+    return x ? bits(*x) : std::uint64_t{0xDEADBEEF};
+  };
+  // Every number of the evaluation as its bits, absent ones marked.
+  const auto fields = [&](const Evaluation& e) {
+    return std::vector<std::uint64_t>{bits(e.length_m),
+                                      bits(e.mass_kg),
+                                      bits(e.balance_from_butt_m),
+                                      bits(e.I_cm_kg_m2),
+                                      bits(e.swingweight_kg_m2),
+                                      bits(e.impact_from_butt_m),
+                                      bits(e.impact_from_com_m),
+                                      opt(e.cop_free_from_butt_m),
+                                      opt(e.rotation_axis_free_from_butt_m),
+                                      bits(e.effective_mass_kg),
+                                      bits(e.apparent_cor),
+                                      bits(e.rebound_speed_m_s),
+                                      bits(e.impulse_N_s),
+                                      bits(e.peak_impact_force_N),
+                                      bits(e.system_mass_kg),
+                                      bits(e.system_com_from_butt_m),
+                                      bits(e.system_I_cm_kg_m2),
+                                      opt(e.cop_hand_from_butt_m),
+                                      opt(e.rotation_axis_hand_from_butt_m),
+                                      bits(e.wrist_force_ratio),
+                                      bits(e.peak_wrist_force_N),
+                                      bits(e.impact_off_axis_m),
+                                      opt(e.polar_inertia_kg_m2),
+                                      bits(e.twist_rate_rad_s),
+                                      bits(e.peak_twist_torque_N_m),
+                                      bits(e.cor),
+                                      bits(e.impact_duration_s),
+                                      opt(e.vibration_energy_J),
+                                      opt(e.vibration_share),
+                                      e.modal ? bits(e.modal->fundamental_free_Hz) : 0,
+                                      e.modal ? opt(e.modal->node_hand_from_butt_m) : 0,
+                                      std::uint64_t{e.cor_derived},
+                                      std::uint64_t{e.impact_duration_derived},
+                                      std::uint64_t{e.polar_inertia_estimated}};
+  };
+  const auto same = [&](const Evaluation& a, const Evaluation& b) {
+    return fields(a) == fields(b);
+  };
+  for (const TableRow& row : kTableI) {
+    Design d = table_design(row);
+    CHECK(same(evaluate_validated(d, Fidelity::kRigid), evaluate(d, Fidelity::kRigid)));
+    d.twistweight_kg_m2 = 15e-4;
+    d.impact_off_axis_m = 0.03;
+    CHECK(same(evaluate_validated(d, Fidelity::kRigid), evaluate(d, Fidelity::kRigid)));
+  }
+  Design strung = table_design(kTableI[0]);
+  strung.strings = StringBed{};
+  CHECK(same(evaluate_validated(strung, Fidelity::kRigid), evaluate(strung, Fidelity::kRigid)));
+  CHECK(evaluate_validated(strung, Fidelity::kRigid).impact_duration_derived);
+  Design stiff = table_design(kTableI[1]);
+  stiff.stiffness.EI_N_m2 = 152.0;
+  CHECK(same(evaluate_validated(stiff, Fidelity::kModal), evaluate(stiff, Fidelity::kModal)));
+  stiff.cor_rigid = 0.85;
+  CHECK(same(evaluate_validated(stiff, Fidelity::kResponse), evaluate(stiff, Fidelity::kResponse)));
+  CHECK_THROWS_WITH(evaluate_validated(stiff, Fidelity::kRigid),
+                    Catch::StartsWith("frame/cor_rigid"));
 }
 
 TEST_CASE("Rigid cases refuse a derived COR, a bad design and a short output span") {

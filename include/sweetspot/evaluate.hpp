@@ -140,6 +140,21 @@ Evaluation evaluate(const Design& design);
 // "frame/cor_rigid".
 Evaluation evaluate(const Design& design, Fidelity fidelity, double rel_tol = 1e-6);
 
+// evaluate(design, fidelity, rel_tol) for a design validate() has accepted
+// (a sweep's point after its numbers were set and checked): the same numbers
+// and the same exceptions, without validating the design a second time.
+Evaluation evaluate_validated(const Design& design, Fidelity fidelity, double rel_tol = 1e-6);
+
+// Only what rigid_outcome() answers of evaluate(design, Fidelity::kRigid), for
+// a design validate() has accepted: effective_mass_kg, apparent_cor,
+// rebound_speed_m_s, impulse_N_s, peak_impact_force_N, wrist_force_ratio and
+// peak_wrist_force_N are written into `e`, bit for bit evaluate()'s, and its
+// other fields are left as they are (a sweep that outputs only these). Returns
+// false, `e` untouched, where only evaluate() answers as it would: a COR or a
+// duration to derive (cor_rigid, a string tension), an impact off the long
+// axis, or a result that is not finite (evaluate() refuses it, saying why).
+bool evaluate_rigid_outcome(const Design& design, Evaluation& e);
+
 // The rigid model without validation and with the design's cor and
 // impact_duration_s as they stand (no tension, no cor_rigid), for callers that
 // validated once and evaluate many impacts or variants in a loop. No allocation.

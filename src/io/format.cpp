@@ -1,10 +1,11 @@
 #include "io/format.hpp"
 
-#include <fmt/compile.h>
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <string>
 #include <utility>
 
@@ -25,18 +26,149 @@ std::string significant(double value, int digits) {
   return fmt::format("{:.{}g}", value, digits);
 }
 
-std::string exact(double value) { return value == 0.0 ? "0" : fmt::format("{}", value); }
+std::string exact(double value) {
+  std::string text;
+  append_exact(text, value);
+  return text;
+}
+
+namespace {
+
+// "00" .. "99": two digits at a time.
+constexpr char kDigitPairs[] =
+    "0001020304050607080910111213141516171819"
+    "2021222324252627282930313233343536373839"
+    "4041424344454647484950515253545556575859"
+    "6061626364656667686970717273747576777879"
+    "8081828384858687888990919293949596979899";
+
+// Two digits of `pair` (< 100) at `at`.
+void write_pair(char* at, std::uint32_t pair) {
+  at[0] = kDigitPairs[pair * 2];
+  at[1] = kDigitPairs[pair * 2 + 1];
+}
+
+// The decimal digits of `value` (> 0) ending at `end`: eight at a time, in
+// two independent halves, so that the divisions do not wait on each other.
+void digits_before(char* end, std::uint64_t value) {
+  while (value >= 100000000) {
+    const auto low = static_cast<std::uint32_t>(value % 100000000);
+    value /= 100000000;
+    end -= 8;
+    const std::uint32_t high4 = low / 10000, low4 = low % 10000;
+    write_pair(end, high4 / 100);
+    write_pair(end + 2, high4 % 100);
+    write_pair(end + 4, low4 / 100);
+    write_pair(end + 6, low4 % 100);
+  }
+  auto rest = static_cast<std::uint32_t>(value);
+  while (rest >= 100) {
+    end -= 2;
+    write_pair(end, rest % 100);
+    rest /= 100;
+  }
+  if (rest >= 10) {
+    write_pair(end - 2, rest);
+  } else {
+    *--end = static_cast<char>('0' + rest);
+  }
+}
+
+// How many decimal digits `value` (> 0) has: log10(2) ~ 1233 / 4096 from its
+// bit width guesses the count or one more, which one power of ten settles.
+int digit_count(std::uint64_t value) {
+  static constexpr std::uint64_t kPowers[20] = {1ull,
+                                                10ull,
+                                                100ull,
+                                                1000ull,
+                                                10000ull,
+                                                100000ull,
+                                                1000000ull,
+                                                10000000ull,
+                                                100000000ull,
+                                                1000000000ull,
+                                                10000000000ull,
+                                                100000000000ull,
+                                                1000000000000ull,
+                                                10000000000000ull,
+                                                100000000000000ull,
+                                                1000000000000000ull,
+                                                10000000000000000ull,
+                                                100000000000000000ull,
+                                                1000000000000000000ull,
+                                                10000000000000000000ull};
+  const int guess = static_cast<int>((std::bit_width(value) * 1233) >> 12);
+  return guess + 1 - (value < kPowers[guess] ? 1 : 0);
+}
+
+}  // namespace
+
+char* write_exact(char* out, double value) {
+  if (value == 0.0) {
+    *out = '0';
+    return out + 1;
+  }
+  if (!std::isfinite(value)) return fmt::format_to(out, "{}", value);
+  // fmt's "{}" for a double, written here from the same shortest round-trip
+  // digits (fmt's Dragonbox) without its general formatting machinery, which
+  // costs twice the digits themselves: tests/io/format_test.cpp compares the
+  // two on hundreds of thousands of doubles. The layout is fmt's: fixed
+  // notation for a decimal exponent in [-4, 16), without a trailing ".0";
+  // else d.ddde+XX. The digits are written where they end up.
+  char* p = out;
+  if (std::signbit(value)) {
+    *p++ = '-';
+    value = -value;
+  }
+  const auto decimal = fmt::detail::dragonbox::to_decimal(value);
+  const int count = digit_count(decimal.significand);
+  const int exponent = decimal.exponent;  // value = significand * 10^exponent
+  const int output_exponent = exponent + count - 1;
+  if (output_exponent < -4 || output_exponent >= 16) {
+    digits_before(p + 1 + count, decimal.significand);  // d ddd, then d.ddd
+    p[0] = p[1];
+    if (count > 1) {
+      p[1] = '.';
+      p += count + 1;
+    } else {
+      p += 1;
+    }
+    *p++ = 'e';
+    int e = output_exponent;
+    *p++ = e < 0 ? '-' : '+';
+    if (e < 0) e = -e;
+    if (e >= 100) {
+      *p++ = static_cast<char>('0' + e / 100);
+      e %= 100;
+    }
+    *p++ = kDigitPairs[e * 2];
+    *p++ = kDigitPairs[e * 2 + 1];
+    return p;
+  }
+  if (exponent >= 0) {
+    p += count;
+    digits_before(p, decimal.significand);
+    for (int k = 0; k < exponent; ++k) *p++ = '0';
+    return p;
+  }
+  const int whole = count + exponent;  // digits before the point
+  if (whole > 0) {
+    digits_before(p + 1 + count, decimal.significand);  // the digits, then the point in place
+    for (int k = 0; k < whole; ++k) p[k] = p[k + 1];
+    p[whole] = '.';
+    return p + 1 + count;
+  }
+  *p++ = '0';
+  *p++ = '.';
+  for (int k = 0; k < -whole; ++k) *p++ = '0';
+  p += count;
+  digits_before(p, decimal.significand);
+  return p;
+}
 
 void append_exact(std::string& out, double value) {
-  if (value == 0.0) {
-    out += '0';
-    return;
-  }
-  // The longest shortest round-trip text of a double is 24 characters
-  // ("-2.2250738585072014e-308"); the format is compiled, not parsed per call.
-  char buffer[32];
-  const char* end = fmt::format_to(buffer, FMT_COMPILE("{}"), value);
-  out.append(buffer, static_cast<std::size_t>(end - buffer));
+  char buffer[kMaxExactChars];
+  out.append(buffer, static_cast<std::size_t>(write_exact(buffer, value) - buffer));
 }
 
 std::string md_cell(std::string_view text) {

@@ -23,6 +23,10 @@ std::string significant(double value, int digits = 6);
 std::string exact(double value);
 // exact(value) appended to `out` (no temporary string: the CSV writers' loop).
 void append_exact(std::string& out, double value);
+// exact(value) written at `out`, which has room for kMaxExactChars; returns
+// the end of the text (no terminating NUL). For rows built in a buffer.
+inline constexpr std::size_t kMaxExactChars = 32;
+char* write_exact(char* out, double value);
 // Text for a Markdown table cell (pipes escaped).
 std::string md_cell(std::string_view text);
 // A CSV field, quoted when it holds a comma, quote or newline.

@@ -215,6 +215,7 @@ struct CsvRecord {
 // quote inside an unquoted field, or text after a closing quote, is an error.
 CsvRecord split_csv(std::string_view record, std::size_t max_fields) {
   CsvRecord out;
+  out.fields.reserve(std::min<std::size_t>(max_fields, 64));  // one allocation for most rows
   std::string field;
   std::size_t i = 0;
   const auto keep = [&] {
@@ -511,7 +512,7 @@ class Evaluator {
       const Fidelity fidelity = resolve_fidelity(
           options_.fidelity.empty() ? std::string_view(shape.fidelity) : options_.fidelity,
           *design);
-      row.evaluation = evaluate(*design, fidelity, options_.modal_tolerance);
+      row.evaluation = evaluate_validated(*design, fidelity, options_.modal_tolerance);
     } catch (const std::exception&) {
       row.evaluation.reset();
       return false;
@@ -704,11 +705,22 @@ void write_row(const Row& row, const Header& header, Format format, std::string&
     out += ',';
     if (i < row.passed.size()) out += csv_field(one_line(row.passed[i]));
   }
+  // The outputs written into a buffer a few at a time and appended together.
+  constexpr std::size_t kAtOnce = 16;
+  char buffer[kAtOnce * (kMaxExactChars + 1)];
+  char* end = buffer;
+  std::size_t pending = 0;
   for (const OutputSpec& o : output_specs()) {
     const auto value = row.evaluation ? o.value(*row.evaluation) : std::nullopt;
-    out += ',';
-    if (value) append_exact(out, *value);
+    *end++ = ',';
+    if (value) end = write_exact(end, *value);
+    if (++pending == kAtOnce) {
+      out.append(buffer, static_cast<std::size_t>(end - buffer));
+      end = buffer;
+      pending = 0;
+    }
   }
+  out.append(buffer, static_cast<std::size_t>(end - buffer));
   out += ',';
   if (!row.error.empty()) out += csv_field(row.error);
   out += '\n';

@@ -12,16 +12,32 @@
 #include "sweetspot/evaluate.hpp"
 
 namespace sweetspot::io {
+
+std::span<const std::string_view> rigid_outcome_outputs() {
+  static constexpr std::string_view kNames[] = {
+      "effective_mass_kg",   "apparent_cor",      "rebound_speed_m_s", "impulse_N_s",
+      "peak_impact_force_N", "wrist_force_ratio", "peak_wrist_force_N"};
+  return kNames;
+}
+
 namespace {
 
 // One thread's share of a sweep: points by index in grid order (the first
 // variable fastest), each evaluated into its CSV row and its plot values.
 class SweepWorker {
  public:
-  SweepWorker(const Study& study, const std::vector<double>& second, bool share_rows, bool compiled)
+  SweepWorker(const Study& study, const std::vector<double>& second, const SweepOptions& options)
       : study_(study), second_(second), document_(study.design_document) {
+    const bool share_rows = options.share_rows;
     for (const StudyVariable& variable : study.variables) pointers_.emplace_back(variable.pointer);
-    if (compiled && compiled_for_variables(study)) bound_.emplace(*study.compiled);
+    if (options.compiled && compiled_for_variables(study)) bound_.emplace(*study.compiled);
+    outcome_only_ =
+        options.outcome_only && study.fidelity == Fidelity::kRigid &&
+        std::all_of(study.sweep_outputs.begin(), study.sweep_outputs.end(),
+                    [](const OutputSpec* o) {
+                      const auto names = rigid_outcome_outputs();
+                      return std::find(names.begin(), names.end(), o->name) != names.end();
+                    });
     if (study.variables[0].values.size() <= kCachedTexts) {
       for (const double value : study.variables[0].values)
         append_exact(first_text_.emplace_back(), value);
@@ -43,7 +59,8 @@ class SweepWorker {
     const std::size_t n0 = study_.variables[0].values.size();
     const std::size_t row = p / n0;
     const double v = study_.variables[0].values[p % n0];
-    std::optional<Evaluation> e;
+    // The point's evaluation, in this worker's one Evaluation (no copy per point).
+    const Evaluation* e = nullptr;
     std::string error;
     if (impact_ && shared_ && shared_row_ == row) e = shared_at(v);
     if (!e) e = evaluate_bound(v, second_[row], row);
@@ -68,10 +85,13 @@ class SweepWorker {
       }
       text += second_text_;
     }
+    char buffer[kMaxExactChars + 1];
     for (std::size_t k = 0; k < study_.sweep_outputs.size(); ++k) {
       values[k] = e ? study_.sweep_outputs[k]->value(*e) : std::nullopt;
-      text += ',';
-      if (values[k]) append_exact(text, *values[k]);
+      char* end = buffer;
+      *end++ = ',';
+      if (values[k]) end = write_exact(end, *values[k]);
+      text.append(buffer, static_cast<std::size_t>(end - buffer));
     }
     text += ',';
     if (!error.empty()) text += csv_field(error);
@@ -84,31 +104,32 @@ class SweepWorker {
     double to_si;
   };
 
-  // The point set on the study's compiled design and evaluated; std::nullopt
+  // The point set on the study's compiled design and evaluated; nullptr
   // when the binding cannot vouch for it or it fails (evaluate_here() then
   // reads it from JSON and says why).
-  std::optional<Evaluation> evaluate_bound(double v, double y, std::size_t row) {
-    if (!bound_) return std::nullopt;
+  const Evaluation* evaluate_bound(double v, double y, std::size_t row) {
+    if (!bound_) return nullptr;
     const double values[2] = {v, y};
     try {
       const Design* design = bound_->at(std::span<const double>(values, pointers_.size()));
-      if (!design) return std::nullopt;
-      Evaluation e = evaluate_in(study_, *design);
+      if (!design) return nullptr;
+      if (!(outcome_only_ && evaluate_rigid_outcome(*design, evaluation_)))
+        evaluation_ = evaluate_validated(*design, study_.fidelity, study_.modal_tolerance);
       share_row(*design, row);
-      return e;
+      return &evaluation_;
     } catch (const std::exception&) {
-      return std::nullopt;
+      return nullptr;
     }
   }
 
   // The point read and evaluated on its own.
-  Evaluation evaluate_here(double v, double y, std::size_t row) {
+  const Evaluation* evaluate_here(double v, double y, std::size_t row) {
     document_[pointers_[0]] = v;
     if (pointers_.size() == 2) document_[pointers_[1]] = y;
     const DesignFile design = read_design_lean(document_, study_.design_source);
-    Evaluation e = evaluate_in(study_, design);
+    evaluation_ = evaluate_in(study_, design);
     share_row(design.design, row);
-    return e;
+    return &evaluation_;
   }
 
   // The row's design kept for the next points when only the impact changes along it.
@@ -120,17 +141,17 @@ class SweepWorker {
     }
   }
 
-  // The same point from the row's design, or std::nullopt when only reading
-  // it on its own can say what is wrong (off the implement, not finite).
-  std::optional<Evaluation> shared_at(double v) const {
+  // The same point from the row's design, or nullptr when only reading it
+  // on its own can say what is wrong (off the implement, not finite).
+  const Evaluation* shared_at(double v) {
     const double si = v * impact_->to_si;
     const double from_butt = impact_->from_tip ? length_m_ - si : si;
-    if (!(si >= 0.0 && si <= length_m_)) return std::nullopt;
-    Evaluation e = shared_->at(from_butt);
+    if (!(si >= 0.0 && si <= length_m_)) return nullptr;
+    evaluation_ = shared_->at(from_butt);
     for (const OutputSpec* o : study_.sweep_outputs) {
-      if (const auto value = o->value(e); value && !std::isfinite(*value)) return std::nullopt;
+      if (const auto value = o->value(evaluation_); value && !std::isfinite(*value)) return nullptr;
     }
-    return e;
+    return &evaluation_;
   }
 
   const Study& study_;
@@ -139,6 +160,8 @@ class SweepWorker {
   std::vector<Json::json_pointer> pointers_;
   std::optional<Impact> impact_;
   std::optional<BoundDesign> bound_;  // empty: every point read from JSON
+  Evaluation evaluation_;             // the current point's
+  bool outcome_only_ = false;         // the outputs are rigid_outcome()'s alone
   // The first variable's values as CSV text (when there are at most
   // kCachedTexts of them), and ",second" for the current row.
   static constexpr std::size_t kCachedTexts = 100000;
@@ -195,8 +218,7 @@ std::vector<Plot> run_sweep(const Study& study, std::ostream& csv,
   }
   const int threads = std::max(1, options.threads);
   std::vector<SweepWorker> workers;
-  for (int t = 0; t < threads; ++t)
-    workers.emplace_back(study, second, options.share_rows, options.compiled);
+  for (int t = 0; t < threads; ++t) workers.emplace_back(study, second, options);
   std::vector<std::string> texts(threads);
   std::vector<std::optional<double>> values(kSweepChunkPoints * outputs);
   for (std::size_t begin = 0; begin < total; begin += kSweepChunkPoints) {

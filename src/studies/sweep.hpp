@@ -6,6 +6,8 @@
 #include <cstddef>
 #include <functional>
 #include <ostream>
+#include <span>
+#include <string_view>
 #include <vector>
 
 #include "io/plot.hpp"
@@ -23,7 +25,14 @@ struct SweepOptions {
   // every point is written into the JSON document and read again: the
   // reference the tests compare the compiled path with, on good and bad points.
   bool compiled = true;
+  // A rigid sweep whose outputs are all among rigid_outcome_outputs() computes
+  // only those at each compiled point (evaluate_rigid_outcome()). Off, every
+  // point is evaluated whole: the reference the tests compare it with.
+  bool outcome_only = true;
 };
+
+// The outputs (outputs.hpp) that evaluate_rigid_outcome() answers.
+std::span<const std::string_view> rigid_outcome_outputs();
 
 // A sweep over the grid of the study's variables (one or two), streaming one
 // CSV row per point to `csv` in grid order (the first variable fastest);

@@ -2,6 +2,8 @@
 // short, and the text of a cell never breaks its table.
 #include "io/format.hpp"
 
+#include <fmt/format.h>
+
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdint>
@@ -113,6 +115,49 @@ TEST_CASE("Appending a number writes exactly the text exact() gives, shortest an
 }  // namespace sweetspot::io
 
 namespace sweetspot::io {
+
+TEST_CASE("exact() writes what fmt's \"{}\" writes for every double, shortest and round-trip") {
+  // The oracle is fmt::format("{}", x), the text every CSV and JSON number had
+  // before exact() laid out the shortest digits itself: random bit patterns,
+  // everyday magnitudes, and both sides of every place the layout changes
+  // (the decimal exponents -5/-4 and 15/16, integers, three-digit exponents).
+  const unsigned seed = 20261130;
+  INFO("seed " << seed);
+  std::mt19937_64 random(seed);
+  std::vector<double> values;
+  for (int i = 0; i < 200000; ++i) {
+    double value = 0.0;
+    const std::uint64_t bits = random();
+    std::memcpy(&value, &bits, sizeof value);
+    values.push_back(value);
+  }
+  std::uniform_real_distribution<double> mantissa(-10.0, 10.0);
+  std::uniform_int_distribution<int> decade(-12, 20);
+  for (int i = 0; i < 200000; ++i)
+    values.push_back(mantissa(random) * std::pow(10.0, decade(random)));
+  for (int e = -324; e <= 308; ++e) {
+    const double power = std::pow(10.0, e);
+    for (const double v : {power, std::nextafter(power, 0.0), std::nextafter(power, 1e308),
+                           3.0 * power, 1.5 * power, -power, 123456789.0 * power}) {
+      values.push_back(v);
+    }
+  }
+  for (std::int64_t k = -2000; k <= 2000; ++k) values.push_back(static_cast<double>(k));
+  values.push_back(std::numeric_limits<double>::denorm_min());
+  values.push_back(std::numeric_limits<double>::min());
+  values.push_back(std::numeric_limits<double>::max());
+  values.push_back(9007199254740993.0);
+  values.push_back(1e16 - 2.0);
+  std::size_t differ = 0;
+  for (const double value : values) {
+    if (value == 0.0 || std::isnan(value)) continue;  // "0" for both zeros, tested above
+    const std::string expected = fmt::format("{}", value);
+    if (exact(value) != expected) {
+      if (++differ <= 10) FAIL_CHECK(exact(value) << " != " << expected);
+    }
+  }
+  CHECK(differ == 0);
+}
 
 TEST_CASE("People's units: cm, g, kg cm^2 and ms, with the key's suffix changed to match") {
   CHECK(people_unit("m").unit == "cm");

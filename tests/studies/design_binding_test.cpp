@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "io/design_reader.hpp"
+#include "io/outputs.hpp"
 #include "studies/batch.hpp"
 #include "studies/optimization.hpp"
 #include "studies/study.hpp"
@@ -180,6 +181,50 @@ TEST_CASE(
       CHECK(sweep_csv(study, SweepOptions{2, true, true}) == reference);
     }
   }
+}
+
+TEST_CASE(
+    "A rigid sweep of rigid_outcome()'s outputs alone writes what evaluating every point writes") {
+  // The oracle is the sweep that reads every point from JSON and evaluates it
+  // whole (evaluate()): each output evaluate_rigid_outcome() answers, alone
+  // and all together, at good and bad points, on the axis and off it (where
+  // the whole evaluation answers), bit for bit in the CSV.
+  const auto names = rigid_outcome_outputs();
+  std::vector<Json> output_lists;
+  for (const std::string_view name : names) {
+    REQUIRE(find_output(name));
+    output_lists.push_back(Json::array({std::string(name)}));
+  }
+  output_lists.push_back(Json::array());
+  for (const std::string_view name : names) output_lists.back().push_back(std::string(name));
+  const char* designs[] = {
+      R"({"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8},
+          "frame": {"cor": 0.8}, "strings": {"impact_duration_ms": 4},
+          "hand": {"mass_kg": 0.5, "center_from_butt_m": 0.07}, "forearm": {"equivalent_mass_kg": 0.5}})",
+      R"({"implement": {"length_in": 27, "mass_g": 305, "balance_pts_hl": 4, "swingweight_kg_cm2": 320,
+          "twistweight_kg_cm2": 14}, "frame": {"cor": 0.8}, "impact": {"from_tip_cm": 12, "off_axis_cm": 3},
+          "hand": {"mass_g": 450, "center_from_butt_cm": 8}, "forearm": {"equivalent_mass_kg": 0.5}})"};
+  std::size_t points = 0;
+  for (const char* design : designs) {
+    for (const Json& outputs : output_lists) {
+      Json text = Json::object();
+      text["design"] = Json::parse(design);
+      text["outputs"] = outputs;
+      text["fidelity"] = "rigid";
+      text["variables"] =
+          Json::parse(R"([{"path": "/hand/mass_kg", "values": [0.3, 0.0, -0.2, 0.45]},
+          {"path": "/forearm/equivalent_mass_kg", "values": [0.5, 0.0, -1.0, 2.0]}])");
+      INFO(text.dump());
+      const Study study = read_study(text, "sweep.json", studies());
+      REQUIRE(compiled_for_variables(study));
+      const std::string reference = sweep_csv(study, SweepOptions{1, false, false, false});
+      CHECK(reference.find("must be") != std::string::npos);  // bad points too
+      CHECK(sweep_csv(study, SweepOptions{1, true, true, true}) == reference);
+      CHECK(sweep_csv(study, SweepOptions{1, true, true, false}) == reference);
+      points += 16;
+    }
+  }
+  CHECK(points == 2 * 8 * 16);
 }
 
 TEST_CASE("Every point of a hand x forearm sweep is the point read from JSON, off the range too") {
