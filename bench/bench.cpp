@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -18,15 +19,19 @@
 #include <vector>
 
 #include "io/atomic_file.hpp"
+#include "io/design_reader.hpp"
 #include "io/format.hpp"
 #include "io/input_error.hpp"
+#include "io/json_reader.hpp"
 #include "io/plot.hpp"
+#include "reports/html_report.hpp"
 #include "reports/optimization_report.hpp"
 #include "studies/design_binding.hpp"
 #include "studies/optimization.hpp"
 #include "studies/string_bed_map.hpp"
 #include "studies/study.hpp"
 #include "studies/sweep.hpp"
+#include "sweetspot/beam_modes.hpp"
 #include "sweetspot/evaluate.hpp"
 #include "sweetspot/string_bed.hpp"
 
@@ -76,8 +81,34 @@ std::vector<std::string> algorithms_for(const Study& study, const Problem& probl
 struct StudyFigures {
   double study1_ms, study1_json_ms, study3a_ms, study3a_json_ms;
 };
+// The free beam's fundamental by finite elements, in-process.
+struct FreeFeFigures {
+  double us = 0.0;
+  double f1_Hz = 0.0;
+};
+
+// Cross (2004)'s beam (0.72 m, 0.328 kg, uniform, EI for a free f1 of 193 Hz)
+// on kFreeFeElements Hermite elements: one free_modes() call for the lowest
+// mode, as the peer free_fe_eigh.py does it with scipy.linalg.eigh.
+FreeFeFigures bench_free_fe(const BenchOptions& options) {
+  std::vector<Section> beam{{0.72, 0.328, 1.0}};
+  beam[0].EI_N_m2 = uniform_EI_for_fundamental(beam, {}, 193.0);
+  ModeOptions o;
+  o.method = ModeOptions::Method::kFiniteElement;
+  o.elements = kFreeFeElements;
+  o.modes = 1;
+  constexpr int kCalls = 50;
+  FreeFeFigures figures;
+  const double seconds = median_seconds(options.repeats, [&] {
+    for (int i = 0; i < kCalls; ++i)
+      figures.f1_Hz = free_modes(beam, {}, o).modes.at(0).frequency_Hz;
+  });
+  figures.us = seconds / kCalls * 1e6;
+  return figures;
+}
 std::string targets_section(const ThroughputReport& cli, const PeerFigures& peers,
-                            const StudyFigures& studies, double arrays_ns, double cases_ns) {
+                            const StudyFigures& studies, double arrays_ns, double cases_ns,
+                            const FreeFeFigures& free_fe) {
   const bool have_peers = peers.skipped.empty();
   const auto ratio = [&](double ours, double theirs) {
     return have_peers && ours > 0.0 ? fmt::format("{:.1f}x", theirs / ours) : std::string("-");
@@ -133,6 +164,19 @@ std::string targets_section(const ThroughputReport& cli, const PeerFigures& peer
       1e3 / arrays_ns, 1e3 / cases_ns,
       have_peers ? fmt::format("{:.1f}", 1e3 / peers.rigid_ns) : "-",
       ratio(arrays_ns, peers.rigid_ns), met(1e3 / arrays_ns >= 150.0));
+  md += fmt::format(
+      "| free finite-element modes, {} elements, the fundamental in-process (us) | {:.1f} | | {} | "
+      "{} | no slower than SciPy's `eigh` | {} |\n",
+      kFreeFeElements, free_fe.us,
+      have_peers ? fmt::format("{:.1f} (`eigh`, lowest flexible mode only)", peers.free_fe_us)
+                 : "-",
+      ratio(free_fe.us, peers.free_fe_us), met(!have_peers || free_fe.us <= peers.free_fe_us));
+  if (have_peers) {
+    md += fmt::format(
+        "\nThe free finite-element row is at equal accuracy: the same mesh, f1 = {:.9f} Hz here "
+        "and {:.9f} Hz from SciPy (the exact 193 Hz to {:.1e}).\n",
+        free_fe.f1_Hz, peers.free_fe_f1_Hz, std::abs(free_fe.f1_Hz / 193.0 - 1.0));
+  }
   md +=
       "\nStudy 3a spends its time in the modal solvers (the hand-held modes at every evaluation), "
       "not in "
@@ -171,15 +215,21 @@ std::string bench_maps(const BenchOptions& options, std::ostream& log) {
   tension.strings = StringBed{};
   Design flexible = racquet;
   flexible.stiffness.fundamental_free_Hz = 150.0;
+  Design strung = flexible;  // a tension, a stiffness and no COR: the solved collision
+  strung.strings = StringBed{};
+  strung.cor_given = false;
   std::string md =
       "\n## String-bed maps\n\n`sweetspot map`'s grid evaluation (`string_bed_map()`), 50 x 50 "
       "points over a 100 in^2 head (about 1960 on the string bed), median of the library call. "
-      "Target (issue 14): well under 100 ms at the rigid level, under 1 s at the modal level.\n\n"
+      "Target (issue 14): well under 100 ms at the rigid level, under 1 s at the modal level; the "
+      "solved collision at every point (a strung design with a stiffness and no COR) has no "
+      "target.\n\n"
       "| map | median (ms) | per point on the bed (us) |\n|---|---:|---:|\n";
   for (const auto& [name, design, fidelity] :
        {std::tuple{"rigid, given duration", &racquet, Fidelity::kRigid},
         std::tuple{"rigid, duration from the string tension", &tension, Fidelity::kRigid},
-        std::tuple{"modal (vibration energy; modes solved once)", &flexible, Fidelity::kModal}}) {
+        std::tuple{"modal (vibration energy; modes solved once)", &flexible, Fidelity::kModal},
+        std::tuple{"collision (one solved collision per point)", &strung, Fidelity::kCollision}}) {
     const StringBedMapOptions grid{50, 50, fidelity};
     std::size_t on_bed = 0;
     const double seconds = median_seconds(options.repeats, [&, design = design] {
@@ -190,6 +240,26 @@ std::string bench_maps(const BenchOptions& options, std::ostream& log) {
     md += fmt::format("| {} | {:.2f} | {:.2f} |\n", name, seconds * 1e3,
                       seconds * 1e6 / static_cast<double>(on_bed));
     log << fmt::format("map 50 x 50, {}: {:.2f} ms\n", name, seconds * 1e3);
+  }
+  // The page a coach opens: every table, the drawings and the curves, and
+  // the three maps drawn by gnuplot as inline SVG (one gnuplot run per plot).
+  const fs::path page_design = fs::path(options.designs_dir) / "racquets" / "tour-100.json";
+  if (fs::exists(page_design)) {
+    const DesignFile file = load_design(page_design.string());
+    const Json document = read_json_file(page_design.string());
+    std::string page;
+    const double seconds =
+        median_seconds(options.repeats, [&] { page = design_html_report(file, document); });
+    std::size_t figures = 0;
+    for (std::size_t at = page.find("<svg"); at != std::string::npos;
+         at = page.find("<svg", at + 1))
+      ++figures;
+    md += fmt::format(
+        "\nThe HTML page of `designs/racquets/tour-100.json` (`sweetspot report DESIGN --html`, "
+        "in-process: every number, and {} inline SVG figures, the plots and maps drawn by "
+        "gnuplot): {:.0f} ms, {:.0f} kB.\n",
+        figures, seconds * 1e3, static_cast<double>(page.size()) / 1024.0);
+    log << fmt::format("HTML page of tour-100: {:.0f} ms\n", seconds * 1e3);
   }
   return md;
 }
@@ -412,7 +482,7 @@ void bench_speed(const BenchOptions& options, std::ostream& log) {
       "with the "
       "modal model in the loop in at most 50 ms.\n";
   md += targets_section(cli, peers, {study1.ms, study1.json_ms, study3a.ms, study3a.json_ms},
-                        arrays_ns, cases_ns);
+                        arrays_ns, cases_ns, bench_free_fe(options));
 
   // What each fidelity costs, and what leaving it out costs in accuracy: the
   // Table I racquet with a 150 Hz frame whose COR is derived from cor_rigid 0.85.

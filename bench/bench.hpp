@@ -76,7 +76,13 @@ struct PeerFigures {
   int study1_evaluations = 0;
   double study1_objective = 0.0;
   double rigid_ns = 0.0;  // per design
+  // The free beam's fundamental by finite elements (kFreeFeElements), one
+  // assembly and scipy.linalg.eigh, and the f1 it gives.
+  double free_fe_us = 0.0;
+  double free_fe_f1_Hz = 0.0;
 };
+// The mesh of the free finite-element comparison with SciPy's eigh.
+inline constexpr int kFreeFeElements = 30;
 PeerFigures bench_peers(const BenchOptions& options, std::ostream& log);
 
 // One solved collision of the typical racquet (collision.hpp): time and error

@@ -273,9 +273,18 @@ PeerFigures bench_peers(const BenchOptions& options, std::ostream& log) {
     run_child(options.python, {script("rigid_kernel.py"), std::to_string(options.repeats)},
               dir / "kernel.json");
     peers.rigid_ns = peer_output(dir / "kernel.json")["ns_per_design"].get<double>();
+    run_child(options.python,
+              {script("free_fe_eigh.py"), std::to_string(kFreeFeElements),
+               std::to_string(options.repeats)},
+              dir / "free_fe.json");
+    const nlohmann::json free_fe = peer_output(dir / "free_fe.json");
+    peers.free_fe_us = free_fe["seconds"].get<double>() * 1e6;
+    peers.free_fe_f1_Hz = free_fe["f1_Hz"].get<double>();
     log << fmt::format(
-        "peers: sweep {:.3f} s, batch {:.3f} s, study 1 {:.2f} ms, rigid {:.1f} ns per design\n",
-        peers.every_point_sweep_s, peers.batch_s, peers.study1_ms, peers.rigid_ns);
+        "peers: sweep {:.3f} s, batch {:.3f} s, study 1 {:.2f} ms, rigid {:.1f} ns per design, "
+        "free FE {:.1f} us\n",
+        peers.every_point_sweep_s, peers.batch_s, peers.study1_ms, peers.rigid_ns,
+        peers.free_fe_us);
   } catch (...) {
     fs::remove_all(dir);
     throw;
