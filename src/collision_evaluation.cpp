@@ -20,6 +20,12 @@ DesignCollision::DesignCollision(const Design& design, double rel_tol) : design_
         "frame/cor_rigid: the solved collision derives the COR itself; give neither cor nor "
         "cor_rigid (or evaluate with --fidelity response)");
   }
+  if (design.cor_given) {
+    throw std::invalid_argument(
+        "frame/cor: the solved collision derives the COR itself; give no frame cor (or "
+        "evaluate with --fidelity modal), got " +
+        detail::format_number(design.cor));
+  }
   validate(design);
   if (!design.strings) {
     throw std::invalid_argument(

@@ -381,9 +381,11 @@ TEST_CASE("auto solves the collision for a strung racquet without a COR, and say
   CHECK((e.cor * e.effective_mass_kg - kBall_kg) / (e.effective_mass_kg + kBall_kg) ==
         Approx(e.apparent_cor).epsilon(1e-12));
   CHECK(std::abs(ledger_residual(c)) <= kRoundOff * c.ball_in_J);
-  // A given COR, or cor_rigid, keeps the cheaper models.
+  // A given COR, or cor_rigid, keeps the cheaper models; the collision,
+  // which derives the COR, refuses either rather than ignore it.
   d.cor_given = true;
   CHECK(needed_fidelity(d) == Fidelity::kModal);
+  CHECK_THROWS_WITH(evaluate(d, Fidelity::kCollision), Catch::StartsWith("frame/cor: "));
   d.cor_given = false;
   d.cor_rigid = 0.85;
   CHECK(needed_fidelity(d) == Fidelity::kResponse);

@@ -214,10 +214,12 @@ inline constexpr double kHandModeEnergyShare = 0.5;
 
 // The beam's hand-held fundamental alone: the first of the lowest
 // options.modes modes of hand_held_modes() in which the hand carries less than
-// kHandModeEnergyShare of the kinetic energy, bit for bit as hand_held_modes()
-// reports it, in result.modes (empty, with complete = false, when none of them
-// is a beam mode). Faster: the coarse mesh tells which mode that is, so only
-// it is refined and shaped. Throws as hand_held_modes().
+// kHandModeEnergyShare of the kinetic energy, in result.modes (empty, with
+// complete = false, when none of them is a beam mode). Faster: the coarse mesh
+// tells which mode that is, so only it is refined and shaped. It is the mode
+// hand_held_modes() reports, bit for bit, whenever that refines every mode;
+// where another mode's refinement fails and hand_held_modes() falls back to the
+// dense solve, the two agree to round-off. Throws as hand_held_modes().
 ModalResult hand_held_beam_fundamental(const std::vector<Section>& sections,
                                        const std::vector<PointMass>& point_masses,
                                        const HandCoupling& hand, const ModeOptions& options);

@@ -167,8 +167,9 @@ inline constexpr int kCollisionModes = 6;
 class DesignCollision {
  public:
   // Validates the design (validate()) and throws std::invalid_argument naming
-  // the design's path: a derived COR (frame/cor_rigid), no string tension
-  // (strings/tension_N) or no stiffness (frame/EI_N_m2).
+  // the design's path: a given COR (frame/cor, Design::cor_given), a derived
+  // one (frame/cor_rigid), no string tension (strings/tension_N) or no
+  // stiffness (frame/EI_N_m2).
   explicit DesignCollision(const Design& design, double rel_tol = 1e-6);
 
   // The frame as the ball sees it at `from_butt_m` on the axis and

@@ -171,9 +171,24 @@ ModalResult solve_hand_held(const std::vector<Section>& sections,
     const auto beam = std::find_if(result.modes.begin(), result.modes.end(), [](const Mode& m) {
       return m.hand_energy_fraction < kHandModeEnergyShare;
     });
+    if (beam == result.modes.end()) {
+      // The coarse mesh called a mode the beam's that the fine one gives
+      // to the hand: ask the full solve, which shapes every mode.
+      ModalResult full = solve_hand_held(sections, point_masses, hand, options, false);
+      const auto found = std::find_if(full.modes.begin(), full.modes.end(), [](const Mode& m) {
+        return m.hand_energy_fraction < kHandModeEnergyShare;
+      });
+      std::vector<Mode> kept;
+      if (found != full.modes.end()) kept.push_back(std::move(*found));
+      full.complete = !kept.empty();
+      full.modes = std::move(kept);
+      full.shape_w.clear();
+      fill_shape_table(full, length, options.shape_samples);
+      return full;
+    }
     std::vector<Mode> kept;
-    if (beam != result.modes.end()) kept.push_back(std::move(*beam));
-    result.complete = !kept.empty();
+    kept.push_back(std::move(*beam));
+    result.complete = true;
     result.modes = std::move(kept);
   }
   result.message = "finite elements: " + std::to_string(result.elements_used) + " elements, " +

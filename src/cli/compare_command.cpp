@@ -8,6 +8,7 @@
 #include "cli/commands.hpp"
 #include "io/atomic_file.hpp"
 #include "io/design_reader.hpp"
+#include "io/input_error.hpp"
 #include "reports/comparison.hpp"
 
 namespace sweetspot::cli {
@@ -60,7 +61,7 @@ int CompareCommand::run() const {
   }
   if (!out.output.empty()) out.emit(reports::comparison_report(designs, out.parsed()));
   io::write_file_atomically(html, reports::comparison_html(designs));
-  std::cout << "wrote " << html << "\n";
+  std::cout << "wrote " << io::one_line(html) << "\n";
   return kExitOk;
 }
 

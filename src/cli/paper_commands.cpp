@@ -94,7 +94,7 @@ int ReportCommand::run() const {
   const io::DesignFile file = reports::with_default_impact(io::load_design(design));
   const io::Json document = io::read_json_file(design);
   io::write_file_atomically(html, io::design_html_report(file, document));
-  std::cout << "wrote " << html << "\n";
+  std::cout << "wrote " << io::one_line(html) << "\n";
   return kExitOk;
 }
 

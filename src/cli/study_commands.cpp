@@ -51,7 +51,7 @@ int OptimizeCommand::run() const {
   if (optimum && !html.empty()) {
     if (!out.output.empty()) out.emit(report);
     io::write_file_atomically(html, io::optimization_html(study, result));
-    std::cout << "wrote " << html << "\n";
+    std::cout << "wrote " << io::one_line(html) << "\n";
   } else if (optimum) {
     out.emit(report);
   } else {

@@ -319,7 +319,6 @@ std::string comparison_report(const std::vector<ComparedDesign>& designs, io::Fo
 namespace {
 
 // The curve along the frame is drawn and tabulated in steps of this much.
-constexpr double kCurveStep_m = 0.01;
 
 std::string title_of(const std::vector<ComparedDesign>& designs) {
   std::string title = "Compared";
@@ -379,8 +378,11 @@ std::string wrist_along_frame_html(const std::vector<ComparedDesign>& designs) {
   std::map<long, std::vector<std::optional<double>>> table;
   double longest_cm = 0.0;
   for (std::size_t k = 0; k < designs.size(); ++k) {
+    const Fidelity fidelity = fidelity_of(designs[k].spots.asked.evaluation) == Fidelity::kCollision
+                                  ? Fidelity::kCollision
+                                  : Fidelity::kRigid;
     const std::vector<io::FramePoint> curve =
-        io::frame_curves(designs[k].design.design, kCurveStep_m);
+        io::frame_curves(designs[k].design.design, io::kFrameCurveStep_m, fidelity);
     // The key numbers the lines (a name would not fit a phone's layout);
     // the caption names them.
     io::PlotSeries series{std::to_string(k + 1), {}, {}, "lines lw 2.5"};

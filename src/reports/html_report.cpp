@@ -15,6 +15,7 @@
 #include "reports/string_bed_map_report.hpp"
 #include "reports/summary.hpp"
 #include "studies/string_bed_map.hpp"
+#include "sweetspot/collision.hpp"
 #include "sweetspot/evaluate.hpp"
 
 namespace sweetspot::io {
@@ -33,7 +34,6 @@ constexpr double kThroat_cm = 14.0;
 constexpr double kBall_cm = 6.7;
 constexpr double kBeamDepth_cm = 2.4;
 // Steps of the curves along the frame.
-constexpr double kFrameStep_m = 0.01;
 // The hand-held modes' relative tolerance (evaluate's default).
 constexpr double kRelTol = 1e-6;
 
@@ -200,7 +200,7 @@ constexpr int kMapTableFirst = 2;
 // The string-bed maps (power, shock and, with the frame's stiffness, feel):
 // gnuplot's heat maps as inline SVG, a caption each, the numbers behind them.
 // Without a head size the drawing's mid-size head is assumed, and said.
-std::string maps_html(const DesignFile& file) {
+std::string maps_html(const DesignFile& file, Fidelity fidelity) {
   Design d = file.design;
   const double L = d.implement.length_m();
   const bool head_assumed = !d.head && !d.twistweight_kg_m2;
@@ -213,12 +213,12 @@ std::string maps_html(const DesignFile& file) {
   StringBedMap map;
   std::string html = "<section id=\"maps\"><h2>Over the string bed</h2>\n<!-- sweetspot:maps -->\n";
   try {
-    // The maps are drawn at the fidelity the page's answer uses: the solved
-    // collision when the design is solved (tension and stiffness, no COR),
-    // so the power map agrees with the best rebound in the sentences above.
-    const Fidelity needed = resolve_fidelity("auto", d);
-    options.fidelity =
-        needed == Fidelity::kRigid || needed == Fidelity::kCollision ? needed : Fidelity::kModal;
+    // The maps are drawn at the fidelity of the page's answer: the solved
+    // collision when the answer is solved, so the power map agrees with the
+    // best rebound in the sentences above.
+    options.fidelity = fidelity == Fidelity::kRigid || fidelity == Fidelity::kCollision
+                           ? fidelity
+                           : Fidelity::kModal;
     map = string_bed_map(d, options);
   } catch (const std::invalid_argument& e) {
     return html + "<p class=\"missing\">No maps for this design: " + html_escape(e.what()) +
@@ -242,6 +242,12 @@ std::string maps_html(const DesignFile& file) {
           ? ": the head's size is not given, so a 100 sq in head is assumed, as in the drawing; "
             "give <code>implement.headsize_sq_in</code> for yours"
           : "");
+  // The point of most power on the bed, which the power caption names.
+  StringBedMapPoint best_power;
+  best_power.apparent_cor = -1.0;
+  for (const StringBedMapPoint& p : map.points) {
+    if (p.on_bed && p.apparent_cor > best_power.apparent_cor) best_power = p;
+  }
   html += "<div class=\"maps\">\n";
   for (const MapQuantity q : map_quantities(map)) {
     const std::string name = map_quantity_name(q);
@@ -251,14 +257,18 @@ std::string maps_html(const DesignFile& file) {
     std::string says;
     switch (q) {
       case MapQuantity::kPower:
-        says = map.fidelity == Fidelity::kCollision
-                   ? "Power: how fast the ball comes back from the solved collision of ball, "
-                     "strings and flexible frame (with the twist about the long axis), highest "
-                     "on the axis between the node and the COP"
-                   : "Power: how fast the ball comes back (the apparent COR, Eq. 16 at the "
-                     "frame's given COR, with the twist about the long axis), highest near the "
-                     "throat and on the axis; the frame's vibration losses are in the COR, not "
-                     "in the map";
+        says = fmt::format(
+            "{}, highest {} cm from the tip ({:.2f}){}",
+            map.fidelity == Fidelity::kCollision
+                ? "Power: how fast the ball comes back from the solved collision of ball, "
+                  "strings and flexible frame (with the twist about the long axis)"
+                : "Power: how fast the ball comes back (the apparent COR, Eq. 16 at the frame's "
+                  "given COR, with the twist about the long axis)",
+            html_cm(L - best_power.from_butt_m), best_power.apparent_cor,
+            map.fidelity == Fidelity::kCollision
+                ? ""
+                : "; the frame's vibration losses are in its COR, not in the map, so the "
+                  "highest lies towards the throat");
         break;
       case MapQuantity::kShock:
         says = "Shock: the peak force on the wrist, least along the hand-held COP";
@@ -307,15 +317,27 @@ std::string maps_html(const DesignFile& file) {
 
 }  // namespace
 
-std::vector<FramePoint> frame_curves(const Design& design, double step_m) {
+std::vector<FramePoint> frame_curves(const Design& design, double step_m, Fidelity fidelity) {
   if (!(step_m > 0)) throw std::invalid_argument("step_m: must be > 0 m, got " + exact(step_m));
   const double L = design.implement.length_m();
+  std::optional<DesignCollision> collision;
+  if (fidelity == Fidelity::kCollision) collision.emplace(design);
   std::vector<FramePoint> points;
   const auto steps = static_cast<std::size_t>(std::ceil(L / step_m - 1e-9));
   for (std::size_t i = 0; i <= steps; ++i) {
     const double d = std::min(L, static_cast<double>(i) * step_m);
     const Evaluation e = evaluate_at(design, L - d);
-    points.push_back({d, e.wrist_force_ratio, e.apparent_cor, e.peak_wrist_force_N});
+    if (!collision) {
+      points.push_back({d, e.wrist_force_ratio, e.apparent_cor, e.peak_wrist_force_N});
+      continue;
+    }
+    try {
+      const CollisionResult r = collision->at(e.impact_from_butt_m, 0.0);
+      points.push_back(
+          {d, e.wrist_force_ratio, r.apparent_cor, std::abs(e.wrist_force_ratio) * r.peak_force_N});
+    } catch (const std::invalid_argument&) {
+      // No solved collision here (its contact time out of range): no point.
+    }
   }
   return points;
 }
@@ -481,7 +503,9 @@ std::string design_html_report(const DesignFile& file, const Json& document) {
   const Design& d = file.design;
   const double L = d.implement.length_m();
   const Evaluation e = evaluate_design_file(file, "", kRelTol);
-  const std::vector<FramePoint> curve = frame_curves(d, kFrameStep_m);
+  const std::vector<FramePoint> curve = frame_curves(
+      d, kFrameCurveStep_m,
+      fidelity_of(e) == Fidelity::kCollision ? Fidelity::kCollision : Fidelity::kRigid);
   const double head_area = drawn_head_area_m2(file, document);
   const bool head_given = file.design.strings || head_area != kDefaultHeadArea_m2;
   const std::string description = document.is_object() && document.contains("description") &&
@@ -577,8 +601,19 @@ std::string design_html_report(const DesignFile& file, const Json& document) {
       html_figure(wrist_plot, "plot-wrist",
                   "The share of the force on the strings that reaches the wrist (Cross 2004, Eq. "
                   "11), rigid model: zero at the hand-held COP.");
-  html += html_figure(cor_plot, "plot-cor",
-                      "The apparent COR (Eq. 16): highest near the hand, falling towards the tip.");
+  const auto most = std::max_element(
+      curve.begin(), curve.end(),
+      [](const FramePoint& a, const FramePoint& b) { return a.apparent_cor < b.apparent_cor; });
+  html += html_figure(
+      cor_plot, "plot-cor",
+      most == curve.end()
+          ? std::string("The apparent COR.")
+          : fmt::format("{}, highest {} cm from the tip ({:.2f}).",
+                        fidelity_of(e) == Fidelity::kCollision
+                            ? "The ball's rebound over its speed from the solved collision of "
+                              "ball, strings and flexible frame at each point"
+                            : "The apparent COR (Eq. 16) at the frame's COR",
+                        html_cm(most->from_tip_m), most->apparent_cor));
   html +=
       "<details><summary>The numbers behind these curves</summary><div class=\"table-wrap\">"
       "<table id=\"curve\"><thead><tr><th class=\"num\">impact from the tip (cm)</th>"
@@ -592,7 +627,7 @@ std::string design_html_report(const DesignFile& file, const Json& document) {
   }
   html += "</tbody></table></div></details>\n</section>\n";
 
-  html += maps_html(file);
+  html += maps_html(file, fidelity_of(e));
 
   // Every output, in people's units.
   html +=

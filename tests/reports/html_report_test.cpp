@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <string>
 
+#include "io/design_reader.hpp"
 #include "reports/comparison.hpp"
 #include "reports/optimization_report.hpp"
 #include "studies/optimization.hpp"
@@ -88,6 +89,28 @@ TEST_CASE("The curves along the frame are the rigid model's, and zero wrist forc
     CHECK(crosses == cop_between);
   }
   CHECK_THROWS_AS(frame_curves(d, 0.0), std::invalid_argument);
+}
+
+TEST_CASE("A strung design's curves are the solved collision's, as evaluate() gives them") {
+  // The numbers on the page and the curves under them must agree: a design
+  // solved at collision fidelity draws its curves from the same collision.
+  const DesignFile file =
+      load_design(SWEETSPOT_SOURCE_DIR "/designs/racquets/tour-100-strung.json");
+  const Design& d = file.design;
+  REQUIRE(needed_fidelity(d) == Fidelity::kCollision);
+  const std::vector<FramePoint> curve = frame_curves(d, 0.01, Fidelity::kCollision);
+  const double L = d.implement.length_m();
+  int checked = 0;
+  for (const FramePoint& p : curve) {
+    if (std::lround(p.from_tip_m * 100) % 10 != 5) continue;  // 5, 15, 25, ... cm
+    Design at = d;
+    at.impact_from_butt_m = L - p.from_tip_m;
+    const Evaluation e = evaluate(at, Fidelity::kCollision);
+    CHECK(p.apparent_cor == e.apparent_cor);
+    CHECK(p.peak_wrist_force_N == e.peak_wrist_force_N);
+    ++checked;
+  }
+  CHECK(checked >= 4);
 }
 
 TEST_CASE("The drawing is to scale: the racquet's length and each marker where the model puts it") {

@@ -125,7 +125,7 @@ TEST_CASE("A collision map is evaluate() at collision fidelity at each point, bi
   }
 }
 
-TEST_CASE("The solved collision's power peaks inside the head, not at its throat") {
+TEST_CASE("The solved collision's power peaks between the hand-held COP and the node") {
   // The rigid model at a fixed COR rises towards the throat (M_eff grows
   // towards the handle); the solved collision loses energy to the frame's
   // vibration away from the node, so its rebound peaks between them.
@@ -144,6 +144,13 @@ TEST_CASE("The solved collision's power peaks inside the head, not at its throat
   REQUIRE(best >= 0);
   CHECK(best > 0);
   CHECK(best < 29);
+  // Between the hand-held COP (no jolt, towards the handle) and the node (no
+  // vibration, towards the tip).
+  REQUIRE(map.cop_hand_from_butt_m);
+  REQUIRE(map.node_free_from_butt_m);
+  const double x = map.points[mid * 30 + best].from_butt_m;
+  CHECK(*map.cop_hand_from_butt_m < x);
+  CHECK(x < *map.node_free_from_butt_m);
 }
 
 TEST_CASE("A map needs the head or a twistweight, and a grid of at least 2 x 2") {
