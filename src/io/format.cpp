@@ -34,6 +34,16 @@ std::string exact(double value) {
 
 namespace {
 
+// Where the solved collision replaced an input by what it found: the COR
+// (Eq. 16 inverted) and the impact duration (the contact time). Empty when
+// it did not.
+std::string_view solved_provenance(std::string_view name, const Evaluation& e) {
+  if (!(e.details && e.details->collision)) return {};
+  if (name == "frame/cor") return "derived from the solved collision (Eq. 16 inverted)";
+  if (name == "strings/impact_duration_s") return "the solved collision's contact time";
+  return {};
+}
+
 // "00" .. "99": two digits at a time.
 constexpr char kDigitPairs[] =
     "0001020304050607080910111213141516171819"
@@ -258,8 +268,10 @@ std::string inputs_markdown(const DesignFile& file, const Evaluation& e) {
     if (it == file.provenance.end() || it->second == "given" || it->second.starts_with("given"))
       return std::string();
     const PeopleUnit unit = people_unit(si_unit);
+    const std::string_view solved = solved_provenance(name, e);
     return fmt::format("- {}: {}{}{} ({})\n", what, people_text(si * unit.factor),
-                       unit.unit.empty() ? "" : " ", unit.unit, md_cell(it->second));
+                       unit.unit.empty() ? "" : " ", unit.unit,
+                       md_cell(solved.empty() ? it->second : std::string(solved)));
   };
   std::string rest;
   rest += line("impact/from_butt_m", "impact from the tip", e.length_m - d.impact_from_butt_m, "m");
@@ -303,9 +315,9 @@ Json inputs_json(const DesignFile& file, const Evaluation& e) {
   inputs["frame/cor"] = input("frame/cor", e.cor, "");
   inputs["strings/impact_duration_s"] =
       input("strings/impact_duration_s", e.impact_duration_s, "s");
-  if (e.details && e.details->collision) {
-    inputs["frame/cor"]["provenance"] = "derived from the solved collision (Eq. 16 inverted)";
-    inputs["strings/impact_duration_s"]["provenance"] = "the solved collision's contact time";
+  for (const char* name : {"frame/cor", "strings/impact_duration_s"}) {
+    if (const std::string_view solved = solved_provenance(name, e); !solved.empty())
+      inputs[name]["provenance"] = solved;
   }
   if (d.cor_rigid) inputs["frame/cor_rigid"] = input("frame/cor_rigid", *d.cor_rigid, "");
   if (d.strings)

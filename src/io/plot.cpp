@@ -10,9 +10,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include <algorithm>
 #include <array>
-#include <cctype>
 #include <cerrno>
 #include <csignal>
 #include <cstring>
@@ -478,19 +476,22 @@ std::optional<std::string> render_script_svg(const std::string& script,
     if (start == std::string::npos || end == std::string::npos || end < start)
       throw PlotFailure("gnuplot wrote no complete SVG");
     svg = svg.substr(start, end + 6 - start);
-    // gnuplot writes '<' in text as an entity but '&' as is: a title or key
-    // with '&' would break the page's XML. Every '&' that does not start an
-    // entity becomes &amp;.
-    for (std::size_t at = svg.find('&'); at != std::string::npos; at = svg.find('&', at + 1)) {
-      const std::size_t semi = svg.find(';', at);
-      const bool entity =
-          semi != std::string::npos && semi - at <= 8 && semi > at + 1 &&
-          std::all_of(svg.begin() + static_cast<std::ptrdiff_t>(at + 1),
-                      svg.begin() + static_cast<std::ptrdiff_t>(semi), [](char c) {
-                        return std::isalnum(static_cast<unsigned char>(c)) || c == '#';
-                      });
-      if (!entity) svg.replace(at, 1, "&amp;");
+    // gnuplot writes '<' in text as "&lt;" but '&' and '>' as they are: a
+    // title or key with '&' (or "]]>") would break the page's XML. Every '&'
+    // but those of gnuplot's "&lt;" becomes "&amp;" (a name holding "&amp;"
+    // shows it as typed), and "]]>" becomes "]]&gt;".
+    std::string escaped;
+    escaped.reserve(svg.size());
+    for (std::size_t at = 0; at < svg.size(); ++at) {
+      if (svg[at] == '&' && svg.compare(at, 4, "&lt;") != 0) {
+        escaped += "&amp;";
+      } else if (svg[at] == '>' && at >= 2 && svg[at - 1] == ']' && svg[at - 2] == ']') {
+        escaped += "&gt;";
+      } else {
+        escaped += svg[at];
+      }
     }
+    svg = std::move(escaped);
     // The ids gnuplot gives its groups serve its mouse script only (not
     // written): dropped, since each plot repeats them. The rest get the prefix.
     for (const char* group : {"gnuplot_canvas", "gnuplot_plot_"}) {

@@ -166,10 +166,10 @@ std::vector<std::string> input_changes(const ComparedDesign& a, const ComparedDe
                                   sa->tension_N / kNewtonsPerPound));
   if (ea.modal && eb.modal &&
       std::fabs(ea.modal->fundamental_free_Hz - eb.modal->fundamental_free_Hz) >= 1.0)
-    changes.push_back(fmt::format(
-        "a {} frame ({:.0f} Hz instead of {:.0f} Hz)",
-        eb.modal->fundamental_free_Hz > ea.modal->fundamental_free_Hz ? "stiffer" : "more flexible",
-        eb.modal->fundamental_free_Hz, ea.modal->fundamental_free_Hz));
+    // The frequency falls with added mass as well as with a softer frame:
+    // say what changed, not why.
+    changes.push_back(fmt::format("a frame vibrating at {:.0f} Hz instead of {:.0f} Hz (free)",
+                                  eb.modal->fundamental_free_Hz, ea.modal->fundamental_free_Hz));
   return changes;
 }
 

@@ -175,6 +175,7 @@ std::string hand_and_tape(const DesignFile& file, double half_height, bool profi
         html_cm(d.hand.center_from_butt_m));
   }
   for (const PointMass& p : d.implement.point_masses()) {
+    if (!(p.mass_kg > 0.0)) continue;  // a place for lead with none there (a study's start)
     const double x = L - p.from_butt_m * 100.0;
     svg += fmt::format(
         "<rect class=\"tape\" x=\"{}\" y=\"{}\" width=\"1.6\" height=\"{}\"><title>lead, {:.0f} g, "
@@ -187,9 +188,11 @@ std::string hand_and_tape(const DesignFile& file, double half_height, bool profi
 
 void tape_marks(const DesignFile& file, std::vector<Mark>& ms) {
   const double L = file.design.implement.length_m();
-  for (const PointMass& p : file.design.implement.point_masses())
+  for (const PointMass& p : file.design.implement.point_masses()) {
+    if (!(p.mass_kg > 0.0)) continue;
     ms.push_back(
         {(L - p.from_butt_m) * 100.0, fmt::format("lead {:.0f} g", p.mass_kg * 1000.0), ""});
+  }
 }
 
 // The table under the maps takes every kMapTableStep-th grid point, from the

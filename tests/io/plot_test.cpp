@@ -207,6 +207,12 @@ TEST_CASE("An '&' in a title or a key is &amp; in the SVG, and entities stay as 
            rest.rfind("&apos;", 0) == 0 || rest.rfind("&#", 0) == 0));
   }
   CHECK(svg->find("Sons") != std::string::npos);
+  // A name that holds an entity shows it as typed; "]]>" cannot end a section.
+  const auto typed = render_svg(two_points("Tom &amp; Jerry ]]> again"), "typed-", &why);
+  REQUIRE(typed);
+  CHECK(typed->find("Tom &amp;amp; Jerry") != std::string::npos);
+  CHECK(typed->find("]]>") == std::string::npos);
+  CHECK(typed->find("]]&gt; again") != std::string::npos);
 }
 
 }  // namespace
