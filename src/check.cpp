@@ -23,11 +23,11 @@ std::string indexed(std::string_view list, std::size_t index, std::string_view f
 
 void validate_point_masses(const std::vector<PointMass>& point_masses, double length_m) {
   for (std::size_t i = 0; i < point_masses.size(); ++i) {
-    require_in_range(indexed("point_masses", i, "from_butt_m"), point_masses[i].from_butt_m, 0.0,
+    require_in_range(Element{"point_masses", i, "from_butt_m"}, point_masses[i].from_butt_m, 0.0,
                      length_m, "m");
-    require_in_range(indexed("point_masses", i, "mass_kg"), point_masses[i].mass_kg, 0.0,
+    require_in_range(Element{"point_masses", i, "mass_kg"}, point_masses[i].mass_kg, 0.0,
                      kMaxMass_kg, "kg");
-    require_in_range(indexed("point_masses", i, "off_axis_m"), point_masses[i].off_axis_m,
+    require_in_range(Element{"point_masses", i, "off_axis_m"}, point_masses[i].off_axis_m,
                      -length_m, length_m, "m");
   }
 }

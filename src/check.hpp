@@ -54,4 +54,25 @@ inline void require_in_range(std::string_view name, double value, double min, do
     fail_in_range(name, value, min, max, unit);
 }
 
+// A list element's field, named only when a check on it fails (building the
+// name on the happy path would cost more than the check).
+struct Element {
+  std::string_view list;
+  std::size_t index;
+  std::string_view field;
+};
+inline void require_finite(const Element& e, double value) {
+  if (!std::isfinite(value)) [[unlikely]]
+    fail_finite(indexed(e.list, e.index, e.field), value);
+}
+inline void require_positive(const Element& e, double value, std::string_view unit) {
+  if (!std::isfinite(value) || value <= 0.0) [[unlikely]]
+    fail_positive(indexed(e.list, e.index, e.field), value, unit);
+}
+inline void require_in_range(const Element& e, double value, double min, double max,
+                             std::string_view unit) {
+  if (!std::isfinite(value) || value < min || value > max) [[unlikely]]
+    fail_in_range(indexed(e.list, e.index, e.field), value, min, max, unit);
+}
+
 }  // namespace sweetspot::detail

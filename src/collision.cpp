@@ -180,8 +180,8 @@ CollisionResult integrate(const FrameAtImpact& frame,
   }
   for (std::size_t k = 0; k < frame.modes.size(); ++k) {
     const ModeAtImpact& m = frame.modes[k];
-    detail::require_finite(detail::indexed("frame.modes", k, "phi"), m.phi);
-    detail::require_positive(detail::indexed("frame.modes", k, "omega_rad_s"), m.omega_rad_s,
+    detail::require_finite(detail::Element{"frame.modes", k, "phi"}, m.phi);
+    detail::require_positive(detail::Element{"frame.modes", k, "omega_rad_s"}, m.omega_rad_s,
                              "rad/s");
     if (!(m.damping_ratio >= 0.0 && m.damping_ratio < 1.0))
       detail::fail_in_range(detail::indexed("frame.modes", k, "damping_ratio"), m.damping_ratio,

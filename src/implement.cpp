@@ -27,14 +27,14 @@ MassProperties section_mass_properties(const std::vector<Section>& sections) {
     const Section& s = sections[i];
     // Each section within the model's range on its own, so that a section
     // out of range is named, not the sums it would spoil.
-    detail::require_positive(detail::indexed("sections", i, "length_m"), s.length_m, "m");
-    detail::require_in_range(detail::indexed("sections", i, "length_m"), s.length_m, 0.0,
+    detail::require_positive(detail::Element{"sections", i, "length_m"}, s.length_m, "m");
+    detail::require_in_range(detail::Element{"sections", i, "length_m"}, s.length_m, 0.0,
                              kMaxLength_m, "m");
-    detail::require_in_range(detail::indexed("sections", i, "mass_kg"), s.mass_kg, 0.0, kMaxMass_kg,
+    detail::require_in_range(detail::Element{"sections", i, "mass_kg"}, s.mass_kg, 0.0, kMaxMass_kg,
                              "kg");
     if (s.EI_N_m2) {
-      detail::require_positive(detail::indexed("sections", i, "EI_N_m2"), *s.EI_N_m2, "N m^2");
-      detail::require_in_range(detail::indexed("sections", i, "EI_N_m2"), *s.EI_N_m2, 0.0,
+      detail::require_positive(detail::Element{"sections", i, "EI_N_m2"}, *s.EI_N_m2, "N m^2");
+      detail::require_in_range(detail::Element{"sections", i, "EI_N_m2"}, *s.EI_N_m2, 0.0,
                                kMaxEI_N_m2, "N m^2");
     }
     mass += s.mass_kg;
