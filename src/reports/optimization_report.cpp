@@ -6,6 +6,7 @@
 #include <cmath>
 #include <vector>
 
+#include "io/format.hpp"
 #include "reports/html_page.hpp"
 #include "reports/html_report.hpp"
 
@@ -407,9 +408,12 @@ std::string outputs_html(const OptimizationResult& r) {
     const auto a = output_value(o, r.start_outputs), b = output_value(o, r.best_outputs);
     if (!a && !b) continue;
     const AxisQuantity axis = output_axis(o);
-    const auto [words, unit] = words_and_unit(axis);
+    const std::string words = words_and_unit(axis).first;
+    // In a player's units (g, cm, kg·cm², ms), as the comparison page gives them.
+    const PeopleUnit people = people_unit(o.unit);
+    const std::string unit(people.unit);
     const auto cell = [&](const std::optional<double>& v) {
-      return v ? fmt::format("<td class=\"num\">{}</td>", significant(*v * axis.factor, 4))
+      return v ? fmt::format("<td class=\"num\">{}</td>", significant(*v * people.factor, 4))
                : std::string("<td class=\"num\">—</td>");
     };
     html += fmt::format(

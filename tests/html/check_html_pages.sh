@@ -129,7 +129,7 @@ best=$(jq -r '.outputs_best.rebound_speed_m_s' "$out/study.json")
 start=$(jq -r '.outputs_start.rebound_speed_m_s' "$out/study.json")
 sed -n '/<div class="answer">/,/<\/div>/p' "$dom" | grep -qF "is $(g "$best" 4) m/s (the starting design gives $(g "$start" 4))" ||
   fail "the answer does not give the optimum $(g "$best" 4) m/s and the start $(g "$start" 4)"
-for output in rebound_speed_m_s:1 peak_wrist_force_N:1 swingweight_kg_cm2:1 cop_hand_from_tip_m:100; do
+for output in rebound_speed_m_s:1 peak_wrist_force_N:1 swingweight_kg_cm2:1 cop_hand_from_tip_m:100 mass_kg:1000; do
   name=${output%:*} scale=${output#*:}
   row=$(row_of "$dom" "out-$name")
   for at in start best; do
