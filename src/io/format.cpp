@@ -225,17 +225,29 @@ double people_value(double value_si, std::string_view si_unit) {
 
 std::string_view unit_of_key(std::string_view key) {
   static constexpr std::pair<std::string_view, std::string_view> kSuffixes[] = {
-      {"_km_h", "km/h"},   {"_m_s", "m/s"},
-      {"_mph", "mph"},     {"_kg_cm2", "kg·cm²"},
-      {"_kg_m2", "kg·m²"}, {"_N_s_m2", "N·s/m²"},
-      {"_N_m2", "N/m²"},   {"_in2", "sq in"},
-      {"_cm2", "cm²"},     {"_pts_hl", "pts head-light"},
-      {"_Hz", "Hz"},       {"_Pa", "Pa"},
-      {"_ms", "ms"},       {"_mm", "mm"},
-      {"_cm", "cm"},       {"_in", "in"},
-      {"_lb", "lb"},       {"_kg", "kg"},
-      {"_g", "g"},         {"_N", "N"},
-      {"_s", "s"},         {"_m", "m"}};
+      {"_km_h", "km/h"},
+      {"_m_s", "m/s"},
+      {"_mph", "mph"},
+      {"_kg_cm2", "kg·cm²"},
+      {"_kg_m2", "kg·m²"},
+      {"_N_s_m2", "N·s/m²"},
+      {"_N_m2", "N/m²"},
+      {"_in2", "sq in"},
+      {"_sq_in", "sq in"},
+      {"_cm2", "cm²"},
+      {"_pts_hl", "pts head-light"},
+      {"_Hz", "Hz"},
+      {"_Pa", "Pa"},
+      {"_ms", "ms"},
+      {"_mm", "mm"},
+      {"_cm", "cm"},
+      {"_in", "in"},
+      {"_lb", "lb"},
+      {"_kg", "kg"},
+      {"_g", "g"},
+      {"_N", "N"},
+      {"_s", "s"},
+      {"_m", "m"}};
   for (const auto& [suffix, unit] : kSuffixes) {
     if (key.ends_with(suffix)) return unit;
   }

@@ -183,6 +183,8 @@ TEST_CASE("A design key's unit is read from its suffix, the longest first") {
   CHECK(unit_of_key("balance_pts_hl") == "pts head-light");
   CHECK(unit_of_key("swingweight_kg_cm2") == "kg\u00b7cm\u00b2");
   CHECK(unit_of_key("from_tip_cm") == "cm");
+  CHECK(unit_of_key("headsize_sq_in") == "sq in");  // an area, not the inch of "_in"
+  CHECK(unit_of_key("length_in") == "in");
   CHECK(unit_of_key("head_to_handle_mass_ratio").empty());
 }
 
