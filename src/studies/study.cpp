@@ -114,8 +114,22 @@ StudyVariable read_variable(ObjectReader& r, Json& design, int grid_points) {
   }
   if (v.pointer.rfind("/reference", 0) == 0)
     r.fail("path", "\"" + v.pointer + "\" is a published value, not an input");
-  if (!v.pointer.empty() && !design.contains(pointer)) respell_in_unit(design, pointer);
-  if (v.pointer.empty() || !design.contains(pointer)) {
+  // nlohmann's contains() throws for a token that cannot index an array
+  // ("/point_masses//x"): such a path is not in the design.
+  const auto holds = [&] {
+    try {
+      return design.contains(pointer);
+    } catch (const Json::exception&) {
+      return false;
+    }
+  };
+  if (!v.pointer.empty() && !holds()) {
+    try {
+      respell_in_unit(design, pointer);
+    } catch (const Json::exception&) {
+    }
+  }
+  if (v.pointer.empty() || !holds()) {
     r.fail("path", "\"" + v.pointer + "\" is not in the design");
   }
   if (!design.at(pointer).is_number()) {
