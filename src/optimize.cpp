@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <exception>
 #include <limits>
 #include <nlopt.hpp>
 #include <numeric>
@@ -10,6 +11,7 @@
 #include <random>
 #include <sstream>
 #include <stdexcept>
+#include <thread>
 
 #include "check.hpp"
 
@@ -26,6 +28,10 @@ struct SearchStopped {};
 // evaluations (2n + 1 each) has stalled: SLSQP, given constraints no point of
 // the box meets, can otherwise wander until the budget is spent.
 constexpr int kStallGradients = 20;
+
+// Independent points go to threads only when one evaluation costs more than
+// this: starting a thread costs tens of microseconds, the rigid model a few.
+constexpr double kParallelWorth_s = 100e-6;
 
 std::optional<nlopt::algorithm> algorithm_from_name(const std::string& name) {
   for (int i = 0; i < NLOPT_NUM_ALGORITHMS; ++i) {
@@ -65,23 +71,86 @@ class Evaluator {
   const std::vector<std::vector<double>>& jacobian(std::span<const double> x) {
     values(x);
     if (!cache_jacobian_.empty()) return cache_jacobian_;
-    std::vector<std::vector<double>> rows(1 + m_, std::vector<double>(n_));
-    std::vector<double> probe(x.begin(), x.end());
+    std::vector<std::vector<double>> probes;  // x + h e_i, x - h e_i, for each i
     for (std::size_t i = 0; i < n_; ++i) {
       const double h = options_.difference_step_rel * (problem_.upper[i] - problem_.lower[i]);
-      const double lo = std::max(problem_.lower[i], x[i] - h);
-      const double hi = std::min(problem_.upper[i], x[i] + h);
-      probe[i] = hi;
-      const std::vector<double> plus = evaluate(probe);
-      probe[i] = lo;
-      const std::vector<double> minus = evaluate(probe);
-      probe[i] = x[i];
-      for (std::size_t k = 0; k <= m_; ++k) rows[k][i] = (plus[k] - minus[k]) / (hi - lo);
+      probes.emplace_back(x.begin(), x.end());
+      probes.back()[i] = std::min(problem_.upper[i], x[i] + h);
+      probes.emplace_back(x.begin(), x.end());
+      probes.back()[i] = std::max(problem_.lower[i], x[i] - h);
+    }
+    const std::vector<std::vector<double>> v = values_of(probes);
+    if (v.size() < probes.size()) throw SearchStopped{};
+    std::vector<std::vector<double>> rows(1 + m_, std::vector<double>(n_));
+    for (std::size_t i = 0; i < n_; ++i) {
+      const std::vector<double>&plus = v[2 * i], &minus = v[2 * i + 1];
+      const double step = probes[2 * i][i] - probes[2 * i + 1][i];
+      for (std::size_t k = 0; k <= m_; ++k) rows[k][i] = (plus[k] - minus[k]) / step;
     }
     cache_jacobian_ = std::move(rows);
     return cache_jacobian_;
   }
 
+  // [objective, constraint 0, ...] at each point, in order, as values() would
+  // give them one by one (the one-point cache aside); fewer when the budget
+  // ends part way. On several threads when the problem forks and one
+  // evaluation costs more than kParallelWorth_s: the points are computed
+  // together, then booked in order, so the search is the same.
+  // With `cache_last`, the last point booked becomes values()'s cached one.
+  std::vector<std::vector<double>> values_of(const std::vector<std::vector<double>>& points,
+                                             bool cache_last = false) {
+    std::vector<std::vector<double>> out = values_of_points(points);
+    if (cache_last && !out.empty()) {
+      cache_x_ = points[out.size() - 1];
+      cache_values_ = out.back();
+      cache_jacobian_.clear();
+    }
+    return out;
+  }
+
+ private:
+  std::vector<std::vector<double>> values_of_points(
+      const std::vector<std::vector<double>>& points) {
+    std::vector<std::vector<double>> out;
+    const std::size_t lanes = lanes_for(points.size());
+    if (lanes <= 1) {
+      try {
+        for (const std::vector<double>& x : points) out.push_back(evaluate(x));
+      } catch (const SearchStopped&) {
+      }
+      return out;
+    }
+    if (spent() || stalled()) return out;
+    const auto left = static_cast<std::size_t>(options_.max_evaluations - evaluations_);
+    const std::size_t count = std::min(points.size(), left);
+    std::vector<std::vector<double>> raw(count);
+    while (forks_.size() + 1 < lanes) forks_.push_back(problem_.fork());
+    std::vector<std::exception_ptr> errors(lanes);
+    const auto lane = [&](std::size_t t) {
+      try {
+        const EvaluateFunction& f = t == 0 ? problem_.evaluate : forks_[t - 1];
+        for (std::size_t k = count * t / lanes; k < count * (t + 1) / lanes; ++k)
+          raw[k] = compute(f, points[k]);
+      } catch (...) {
+        errors[t] = std::current_exception();
+      }
+    };
+    const Clock::time_point began = Clock::now();
+    std::vector<std::thread> pool;
+    for (std::size_t t = 1; t < lanes; ++t) pool.emplace_back(lane, t);
+    lane(0);
+    for (std::thread& thread : pool) thread.join();
+    for (const std::exception_ptr& error : errors) {
+      if (error) std::rethrow_exception(error);
+    }
+    seconds_evaluating_ +=
+        std::chrono::duration<double>(Clock::now() - began).count() * static_cast<double>(lanes);
+    for (std::size_t k = 0; k < count && !spent() && !stalled(); ++k)
+      out.push_back(book(points[k], std::move(raw[k])));
+    return out;
+  }
+
+ public:
   double violation(const std::vector<double>& v) const {
     double worst = 0.0;
     for (std::size_t k = 0; k < m_; ++k) {
@@ -129,12 +198,22 @@ class Evaluator {
  private:
   std::vector<double> evaluate(std::span<const double> x) {
     if (spent() || stalled()) throw SearchStopped{};
+    const Clock::time_point began = Clock::now();
+    std::vector<double> v = compute(problem_.evaluate, x);
+    seconds_evaluating_ += std::chrono::duration<double>(Clock::now() - began).count();
+    return book(x, std::move(v));
+  }
+  std::vector<double> compute(const EvaluateFunction& f, std::span<const double> x) const {
     std::vector<double> v(1 + m_);
-    problem_.evaluate(x, v[0], std::span<double>(v).subspan(1));
+    f(x, v[0], std::span<double>(v).subspan(1));
     for (double& value : v) {
       if (!std::isfinite(value))
         value = std::numeric_limits<double>::max() / 4;  // never NaN to NLopt
     }
+    return v;
+  }
+  // Counts the evaluation at x and keeps the best point and the history.
+  std::vector<double> book(std::span<const double> x, std::vector<double> v) {
     ++evaluations_;
     if (best_x_.empty() || better(v, best_values_)) {
       if (best_x_.empty() || improves(v, best_values_)) last_progress_ = evaluations_;
@@ -153,6 +232,12 @@ class Evaluator {
     return fa ? b[0] - a[0] > options_.f_tolerance_rel * std::abs(b[0])
               : vb - va > options_.f_tolerance_rel * vb;
   }
+  // How many threads values_of() uses for `count` points.
+  std::size_t lanes_for(std::size_t count) const {
+    if (options_.threads <= 1 || !problem_.fork || count < 2 || evaluations_ == 0) return 1;
+    if (seconds_evaluating_ / evaluations_ < kParallelWorth_s) return 1;
+    return std::min(static_cast<std::size_t>(options_.threads), count);
+  }
   bool out_of_evaluations() const { return evaluations_ >= options_.max_evaluations; }
   bool out_of_time() const { return seconds() >= options_.max_seconds; }
 
@@ -162,6 +247,8 @@ class Evaluator {
   Clock::time_point start_;
   int evaluations_ = 0;
   int stall_limit_ = 0, last_progress_ = 0;
+  double seconds_evaluating_ = 0.0;      // in Problem::evaluate (threads: summed)
+  std::vector<EvaluateFunction> forks_;  // for threads 1, 2, ... of values_of()
   std::vector<double> cache_x_, cache_values_;
   std::vector<std::vector<double>> cache_jacobian_;
   std::vector<double> best_x_, best_values_, history_, violation_history_;
@@ -418,6 +505,62 @@ void validate_problem(const Problem& p) {
   }
 }
 
+// auto's first step on a smooth problem with bounds only. A design
+// objective often falls monotonically in each variable over the box (more
+// mass, less shock), and is then bounded by the variables' bounds: its
+// optimum is a vertex of the box (Papalambros and Wilde, "Principles of
+// Optimal Design", the first monotonicity principle), which a
+// quadratic-model search reaches only after tens of evaluations converging
+// along each bound. The walk steps each variable by its difference step
+// (inward from a bound) and goes to the vertex those steps point downhill
+// to; from a vertex, again. A vertex whose every inward step rises is a
+// first-order (KKT) point of the box, and the local search ends there; a
+// vertex no better than the point before it, or a variable the objective is
+// flat in, hands over to the local search from the best point. Each step
+// costs n + 1 evaluations.
+struct VertexWalk {
+  bool first_order = false;  // the last vertex is the local search's answer
+  std::string what;          // for Summary::algorithm
+};
+VertexWalk walk_downhill_vertices(const Problem& problem, const OptimizeOptions& options,
+                                  Evaluator& evaluator) {
+  const std::size_t n = problem.lower.size();
+  std::vector<double> x = problem.start;
+  double at_x = evaluator.values(x)[0];
+  int vertices = 0;
+  const auto walked = [&](const std::string& why) {
+    return std::to_string(vertices) + (vertices == 1 ? " vertex" : " vertices") +
+           " walked downhill (" + why + ")";
+  };
+  for (std::size_t step = 0; step <= n; ++step) {
+    std::vector<std::vector<double>> probes(n, x);
+    std::vector<bool> up(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const double h = options.difference_step_rel * (problem.upper[i] - problem.lower[i]);
+      up[i] = x[i] + h <= problem.upper[i];
+      probes[i][i] = up[i] ? x[i] + h : x[i] - h;
+    }
+    const std::vector<std::vector<double>> at_probes = evaluator.values_of(probes);
+    if (at_probes.size() < n) throw SearchStopped{};
+    std::vector<double> next(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const double change = at_probes[i][0] - at_x;
+      const bool at_bound = x[i] == problem.lower[i] || x[i] == problem.upper[i];
+      if (change == 0.0 && !at_bound) return {false, walked("the objective is flat in a variable")};
+      // Flat inward from a bound: the bound holds (a zero multiplier).
+      const bool rises_upward = change == 0.0 ? x[i] == problem.lower[i] : up[i] == (change > 0.0);
+      next[i] = rises_upward ? problem.lower[i] : problem.upper[i];
+    }
+    if (next == x) return {true, walked("no inward step from the last improves")};
+    const double at_next = evaluator.values(next)[0];
+    if (!(at_next < at_x)) return {false, walked("the next no better")};
+    x = std::move(next);
+    at_x = at_next;
+    ++vertices;
+  }
+  return {false, walked("still moving")};
+}
+
 }  // namespace
 
 std::string OptimizeOptions::validate() const {
@@ -443,6 +586,10 @@ std::string OptimizeOptions::validate() const {
     return "samples_per_variable: must be >= 1, got " + std::to_string(samples_per_variable);
   }
   if (local_starts < 1) return "local_starts: must be >= 1, got " + std::to_string(local_starts);
+  if (threads < 1 || threads > kMaxThreads) {
+    return "threads: must be in [1, " + std::to_string(kMaxThreads) + "], got " +
+           std::to_string(threads);
+  }
   return "";
 }
 
@@ -505,25 +652,36 @@ Summary minimize(const Problem& problem, const OptimizeOptions& options) {
       // than the local optimum lies in another basin; the search goes on
       // from it (at most local_starts searches in all).
       const nlopt::algorithm local = local_choice();
-      algorithm_used = std::string("auto: ") +
-                       nlopt_algorithm_to_string(static_cast<nlopt_algorithm>(local)) +
-                       " from the start";
-      termination =
-          run_nlopt(local, std::nullopt, problem, options, evaluator, problem.start).termination;
+      std::optional<VertexWalk> vertex;
+      if (problem.smooth && problem.constraints.empty() && n >= 2) {
+        vertex = walk_downhill_vertices(problem, options, evaluator);
+      }
+      if (vertex && vertex->first_order) {
+        algorithm_used = "auto: " + vertex->what;
+        termination = "VERTEX_FIRST_ORDER (sweetspot: no inward step of " +
+                      detail::format_number(options.difference_step_rel) + " of a range improves)";
+      } else {
+        // From the best point so far: the start, or a vertex better than it.
+        const bool from_start = evaluator.best_x() == problem.start;
+        algorithm_used = std::string("auto: ") + (vertex ? vertex->what + ", then " : "") +
+                         nlopt_algorithm_to_string(static_cast<nlopt_algorithm>(local)) +
+                         (from_start ? " from the start" : " from the best vertex");
+        termination =
+            run_nlopt(local, std::nullopt, problem, options, evaluator, evaluator.best_x())
+                .termination;
+      }
       const std::size_t most = std::max<std::size_t>(n + 1, options.samples_per_variable * n);
       const std::size_t count =
           std::clamp<std::size_t>(static_cast<std::size_t>(evaluator.evaluations()), n + 1, most);
-      std::size_t sampled = 0;
       const std::vector<double> local_best = evaluator.best_x();
+      std::vector<std::vector<double>> samples;
       for (const auto& unit : halton(count, n, options.seed)) {
-        if (evaluator.spent()) break;
-        std::vector<double> x(n);
+        std::vector<double>& x = samples.emplace_back(n);
         for (std::size_t i = 0; i < n; ++i) {
           x[i] = problem.lower[i] + unit[i] * (problem.upper[i] - problem.lower[i]);
         }
-        evaluator.values(x);
-        ++sampled;
       }
+      const std::size_t sampled = evaluator.values_of(samples, true).size();
       if (sampled < count) termination = evaluator.spent_reason();
       const bool sample_better = evaluator.best_x() != local_best;
       algorithm_used += ", " + std::to_string(sampled) + " Halton samples" +

@@ -1,9 +1,13 @@
 // Test problems with known optima, stated with their formula.
 #include "sweetspot/optimize.hpp"
 
+#include <atomic>
 #include <catch2/catch.hpp>
+#include <chrono>
 #include <cmath>
+#include <limits>
 #include <string>
+#include <thread>
 
 namespace sweetspot {
 namespace {
@@ -254,6 +258,118 @@ TEST_CASE("The same seed gives the same search, evaluation for evaluation") {
   CHECK(a.evaluations == b.evaluations);
 }
 
+// f = sum_i a_i x_i on [0, 1]^n: its minimum is the vertex x_i = 1 where
+// a_i < 0, else 0.
+Problem tilted_box(std::vector<double> a, std::vector<double> start) {
+  Problem p;
+  p.lower.assign(a.size(), 0.0);
+  p.upper.assign(a.size(), 1.0);
+  p.start = std::move(start);
+  p.evaluate = [a](std::span<const double> x, double& f, std::span<double>) {
+    f = 0.0;
+    for (std::size_t i = 0; i < a.size(); ++i) f += a[i] * x[i];
+  };
+  return p;
+}
+
+TEST_CASE(
+    "auto ends at the vertex a monotone objective points to, checked against its neighbours") {
+  // Linear: the start's differences point straight at the optimum, the
+  // vertex (1, 0, 1, 0, 1, 0); 1 + n + 1 + n evaluations reach and check it.
+  const std::vector<double> a = {-1.0, 2.0, -0.5, 3.0, -4.0, 0.25};
+  const Summary s = minimize(tilted_box(a, std::vector<double>(6, 0.5)), OptimizeOptions{});
+  CHECK(s.x == std::vector<double>{1, 0, 1, 0, 1, 0});
+  CHECK(s.objective == -5.5);
+  CHECK(s.termination.starts_with("VERTEX_FIRST_ORDER"));
+  // The global check costs as much as the local stage: 14 + 14 samples.
+  CHECK(s.evaluations == 28);
+  CHECK(s.algorithm.find("1 vertex walked downhill") != std::string::npos);
+}
+
+TEST_CASE("The vertex walk follows a sign that changes at the first vertex") {
+  // f = -x0 + 2 x1 (0.5 - x0) on [0, 1]^2, bilinear, so its minimum is a
+  // vertex: -2 at (1, 1) (brute force below). At the start (0.1, 0.5) it
+  // falls along x0 and rises along x1: the walk goes to (1, 0), where it
+  // falls inward along x1, then to (1, 1), where no inward step improves.
+  Problem p;
+  p.lower = {0.0, 0.0};
+  p.upper = {1.0, 1.0};
+  p.start = {0.1, 0.5};
+  p.evaluate = [](std::span<const double> x, double& f, std::span<double>) {
+    f = -x[0] + 2 * x[1] * (0.5 - x[0]);
+  };
+  const Summary s = minimize(p, OptimizeOptions{});
+  double brute = std::numeric_limits<double>::infinity();
+  for (int i = 0; i <= 400; ++i) {
+    for (int j = 0; j <= 400; ++j) {
+      double f = 0.0;
+      const std::vector<double> x = {i / 400.0, j / 400.0};
+      p.evaluate(x, f, {});
+      brute = std::min(brute, f);
+    }
+  }
+  CHECK(s.objective == brute);
+  CHECK(s.x == std::vector<double>{1, 1});
+  CHECK(s.algorithm.find("2 vertices walked downhill") != std::string::npos);
+  CHECK(s.termination.starts_with("VERTEX_FIRST_ORDER"));
+}
+
+TEST_CASE("An interior optimum ends the vertex walk and the local search finds it") {
+  // The bowl about (0.3, 0.6) on [0, 1]^2: from (0.9, 0.1) the walk goes to
+  // (0, 1), better than the start, then points to (1, 0), which is worse:
+  // BOBYQA goes on from (0, 1).
+  Problem p;
+  p.lower = {0.0, 0.0};
+  p.upper = {1.0, 1.0};
+  p.start = {0.9, 0.1};
+  p.evaluate = [](std::span<const double> x, double& f, std::span<double>) {
+    f = (x[0] - 0.3) * (x[0] - 0.3) + 2 * (x[1] - 0.6) * (x[1] - 0.6);
+  };
+  const Summary s = minimize(p, OptimizeOptions{});
+  CHECK(s.x[0] == Approx(0.3).margin(kOptimumTolerance));
+  CHECK(s.x[1] == Approx(0.6).margin(kOptimumTolerance));
+  CHECK(s.algorithm.find("1 vertex walked downhill (the next no better), then LN_BOBYQA") !=
+        std::string::npos);
+}
+
+TEST_CASE("Threads give the same search, evaluation for evaluation, when the problem forks") {
+  // An evaluation slower than a thread start (a sleep) makes auto use the
+  // forks for its differences and samples; the book is kept in point order.
+  const auto slow = [](std::span<const double> x, double& f, std::span<double> c) {
+    std::this_thread::sleep_for(std::chrono::microseconds(300));
+    f = (x[0] - 0.3) * (x[0] - 0.3) + (x[1] + 0.2) * (x[1] + 0.2) + x[0] * x[1];
+    if (!c.empty()) c[0] = x[0] + x[1] - 0.5;  // <= 0
+  };
+  for (const bool constrained : {false, true}) {
+    INFO("constrained " << constrained);
+    Problem p;
+    p.lower = {-1.0, -1.0};
+    p.upper = {1.0, 1.0};
+    p.start = {0.8, 0.8};
+    if (constrained) p.constraints = {{"sum", ConstraintKind::kAtMostZero, 1e-9}};
+    p.evaluate = slow;
+    std::atomic<int> forks = 0;
+    p.fork = [&]() -> EvaluateFunction {
+      ++forks;
+      return slow;
+    };
+    OptimizeOptions one;
+    one.max_evaluations = 300;
+    OptimizeOptions four = one;
+    four.threads = 4;
+    const Summary a = minimize(p, one);
+    CHECK(forks == 0);
+    const Summary b = minimize(p, four);
+    CHECK(forks == 3);
+    CHECK(a.x == b.x);
+    CHECK(a.objective == b.objective);
+    CHECK(a.evaluations == b.evaluations);
+    CHECK(a.history == b.history);
+    CHECK(a.algorithm == b.algorithm);
+    CHECK(a.termination == b.termination);
+  }
+}
+
 TEST_CASE("Bad problems and options are refused with the argument named") {
   Problem p = rosenbrock();
   OptimizeOptions options;
@@ -274,6 +390,10 @@ TEST_CASE("Bad problems and options are refused with the argument named") {
     c[0] = -1;
   };
   CHECK_THROWS_WITH(minimize(p, options), Catch::Contains("does not take nonlinear constraints"));
+  options = OptimizeOptions{};
+  options.threads = 0;
+  CHECK_THROWS_WITH(minimize(rosenbrock(), options),
+                    Catch::Contains("threads") && Catch::Contains("got 0"));
 }
 
 }  // namespace

@@ -24,24 +24,40 @@ struct ConstraintInfo {
   double tolerance = 1e-8;  // in the constraint's own unit, > 0
 };
 
+// Writes the objective and each constraint's value at x.
+using EvaluateFunction = std::function<void(std::span<const double> x, double& objective,
+                                            std::span<double> constraints)>;
+
 struct Problem {
   std::vector<double> lower;  // bounds, lower[i] < upper[i], finite
   std::vector<double> upper;
   std::vector<double> start;  // inside the bounds
   std::vector<ConstraintInfo> constraints;
-  // Writes the objective and each constraint's value at x. Must be finite;
-  // a point where the model has no answer should return a large penalty.
-  std::function<void(std::span<const double> x, double& objective, std::span<double> constraints)>
-      evaluate;
+  // Must be finite; a point where the model has no answer should return a
+  // large penalty. Called from one thread at a time.
+  EvaluateFunction evaluate;
+  // Optional: a new evaluate function that may run at the same time as
+  // `evaluate` and every other one made (each keeps its own working state).
+  // Given, independent points (the differences of a gradient, the steps of
+  // auto's vertex walk, its samples of the box) are evaluated on
+  // OptimizeOptions::threads threads; results are booked in the order of the
+  // points, so the search and its Summary are the same whatever the threads.
+  std::function<EvaluateFunction()> fork;
   // False when the objective has kinks (a max over impacts, an absolute
   // value): "auto" then uses a derivative-free local method.
   bool smooth = true;
 };
 
+inline constexpr int kMaxThreads = 256;
+
 struct OptimizeOptions {
   // An NLopt algorithm name (LD_SLSQP, LD_MMA, LN_COBYLA, LN_BOBYQA,
-  // GN_DIRECT_L, GN_ISRES, G_MLSL_LDS, ...) or "auto": a local search from the
-  // start (smooth: LN_BOBYQA with bounds only and n >= 2, else LD_SLSQP with
+  // GN_DIRECT_L, GN_ISRES, G_MLSL_LDS, ...) or "auto": with bounds only, a
+  // smooth objective and n >= 2, first a walk over the box's vertices
+  // downhill (forward differences point to a vertex, taken when better; one
+  // where no inward step improves is first-order and ends the local stage);
+  // else a local search from the best point so far
+  // (smooth: LN_BOBYQA with bounds only and n >= 2, else LD_SLSQP with
   // central-difference gradients; not smooth: LN_COBYLA), then as many
   // low-discrepancy samples of the box as it cost
   // (n + 1 to samples_per_variable n), then a second local search from the
@@ -62,6 +78,9 @@ struct OptimizeOptions {
   // local searches (1: from the start only; 2: also from a better sample).
   int samples_per_variable = 8;
   int local_starts = 2;
+  // Threads for independent points (needs Problem::fork), in [1, kMaxThreads]. Used
+  // only when one evaluation costs more than starting a thread does.
+  int threads = 1;
 
   // Empty when valid, else what is wrong ("max_evaluations: must be >= 1, got 0").
   std::string validate() const;

@@ -82,6 +82,7 @@ struct OptimizeCommand {
   std::string plot;
   OutputOptions out;
   std::string html;  // --html FILE: the study's report as one web page
+  int threads = 1;   // for independent evaluations (default: all cores)
 
   void add_to(CLI::App& app);
   int run() const;

@@ -18,6 +18,7 @@
 #include "studies/optimization.hpp"
 #include "studies/study.hpp"
 #include "studies/sweep.hpp"
+#include "sweetspot/optimize.hpp"
 
 namespace sweetspot::cli {
 
@@ -32,6 +33,13 @@ void OptimizeCommand::add_to(CLI::App& app) {
                       "browser opens it; no network needed), when the study has an optimum; "
                       "standard output then says only what was written, the text report going to "
                       "--output when given");
+  threads = io::all_cores();
+  command
+      ->add_option("--threads", threads,
+                   "Threads for independent evaluations (differences, samples of the box) when "
+                   "one costs over 0.1 ms, as the modal and collision models do (default: all "
+                   "cores); the search and its answer are the same whatever the threads")
+      ->check(CLI::Range(1, kMaxThreads));
   command->footer(
       "Examples:\n"
       "  sweetspot optimize designs/studies/1-lowest-wrist-force-table1-ranges.json\n"
@@ -40,7 +48,8 @@ void OptimizeCommand::add_to(CLI::App& app) {
 }
 
 int OptimizeCommand::run() const {
-  const io::Study study = io::load_study(study_path);
+  io::Study study = io::load_study(study_path);
+  study.options.threads = threads;
   const io::OptimizationResult result = io::run_optimization(study);
   // The report is complete whatever the outcome: an infeasible study's names
   // the least violating design and each violated constraint. It is not the

@@ -98,30 +98,37 @@ Problem make_problem(const Study& study) {
   for (const ObjectiveTerm& term : study.objective) {
     problem.smooth = problem.smooth && (square || !term.output->kinked);
   }
-  // Each point is set on the study's compiled design (one working copy for
-  // the run); a point it cannot vouch for is read from JSON (design_at).
-  const auto bound = compiled_for_variables(study) ? std::make_shared<BoundDesign>(*study.compiled)
-                                                   : std::shared_ptr<BoundDesign>();
-  problem.evaluate = [&study, constraints, square, bound](std::span<const double> x, double& f,
-                                                          std::span<double> c) {
-    const auto at = [&](const Design& design) {
-      const Evaluation e = evaluate_in(study, design);
-      f = study.over_impacts ? objective_of(study, design) : terms_value(study, e);
-      if (square) f *= f;
-      for (std::size_t k = 0; k < constraints.size(); ++k)
-        c[k] = constraint_value(constraints[k], e);
+  // Each point is set on the study's compiled design (one working copy per
+  // evaluate function, so a fork runs beside it); a point it cannot vouch
+  // for is read from JSON (design_at).
+  const auto make_evaluate = [&study, constraints, square]() -> EvaluateFunction {
+    const auto bound = compiled_for_variables(study)
+                           ? std::make_shared<BoundDesign>(*study.compiled)
+                           : std::shared_ptr<BoundDesign>();
+    return [&study, constraints, square, bound](std::span<const double> x, double& f,
+                                                std::span<double> c) {
+      const auto at = [&](const Design& design) {
+        const Evaluation e = evaluate_in(study, design);
+        f = study.over_impacts ? objective_of(study, design) : terms_value(study, e);
+        if (square) f *= f;
+        for (std::size_t k = 0; k < constraints.size(); ++k)
+          c[k] = constraint_value(constraints[k], e);
+      };
+      try {
+        if (const Design* design = bound ? bound->at(x) : nullptr) return at(*design);
+      } catch (const std::exception&) {  // the JSON path below decides
+      }
+      try {
+        at(design_at(study, x).design);
+      } catch (const std::exception&) {
+        // InputError or std::invalid_argument: no valid design here.
+        f = kPenalty;
+        std::fill(c.begin(), c.end(), kPenalty);
+      }
     };
-    try {
-      if (const Design* design = bound ? bound->at(x) : nullptr) return at(*design);
-    } catch (const std::exception&) {  // the JSON path below decides
-    }
-    try {
-      at(design_at(study, x).design);
-    } catch (const std::exception&) {  // InputError or std::invalid_argument: no valid design here
-      f = kPenalty;
-      std::fill(c.begin(), c.end(), kPenalty);
-    }
   };
+  problem.evaluate = make_evaluate();
+  problem.fork = make_evaluate;
   return problem;
 }
 
@@ -169,10 +176,20 @@ OptimizationResult run_optimization(const Study& study) {
     best.emplace(start);
   }
   OptimizationResult r{std::move(summary), problem.start, std::move(start), std::move(*best)};
+  // Without an impact spread the objective is a function of the outputs:
+  // each design is evaluated once (the modal model in the loop costs
+  // hundreds of microseconds an evaluation).
+  const auto undefined = [&](const DesignFile& design, const std::optional<Evaluation>& outputs) {
+    return study.over_impacts || !outputs ? objective_undefined(study, design)
+                                          : terms_undefined(study, *outputs);
+  };
   r.start_outputs = outputs_of(study, r.start, nullptr);
-  if (!objective_undefined(study, r.start)) r.start_objective = objective_of(study, r.start);
+  if (!undefined(r.start, r.start_outputs)) {
+    r.start_objective =
+        study.over_impacts ? objective_of(study, r.start) : terms_value(study, *r.start_outputs);
+  }
   r.best_outputs = outputs_of(study, r.best, why.empty() ? &why : nullptr);
-  if (why.empty()) why = objective_undefined(study, r.best).value_or("");
+  if (why.empty()) why = undefined(r.best, r.best_outputs).value_or("");
 
   for (const ProblemConstraint& pc : expand_constraints(study)) {
     ConstraintReport c;

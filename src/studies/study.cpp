@@ -559,7 +559,8 @@ double spread_from_butt(const ImpactSpread& spread, double length_m, int k) {
   return length_m - spread_from_tip(spread, k);
 }
 
-// Why an evaluation gives the objective terms no value, or std::nullopt.
+}  // namespace
+
 std::optional<std::string> terms_undefined(const Study& study, const Evaluation& e) {
   for (const ObjectiveTerm& term : study.objective) {
     if (!term.output->value(e)) {
@@ -569,8 +570,6 @@ std::optional<std::string> terms_undefined(const Study& study, const Evaluation&
   }
   return std::nullopt;
 }
-
-}  // namespace
 
 double tolerance_at(const StudyConstraint& c, double limit) {
   return c.tolerance ? *c.tolerance : kDefaultConstraintTolerance * std::max(1.0, std::abs(limit));

@@ -115,5 +115,8 @@ double terms_value(const Study& study, const Evaluation& evaluation);
 // std::nullopt when it has one. Where objective_of returns kPenalty, this
 // says why; a penalty is never a result.
 std::optional<std::string> objective_undefined(const Study& study, const DesignFile& design);
+// The same for a study without an impact spread, from the design's
+// evaluation at the study's fidelity (its objective is a function of it).
+std::optional<std::string> terms_undefined(const Study& study, const Evaluation& evaluation);
 
 }  // namespace sweetspot::io
