@@ -99,7 +99,7 @@ Evaluation evaluate_collision(const Design& design, double rel_tol) {
   e.rebound_speed_m_s = r.apparent_cor * design.ball.speed_m_s;
   e.impulse_N_s = r.impulse_N_s;
   e.peak_impact_force_N = r.peak_force_N;
-  e.peak_wrist_force_N = std::abs(e.wrist_force_ratio) * r.peak_force_N;  // Eq. (11)
+  e.peak_wrist_force_N = peak_wrist_force(e.wrist_force_ratio, r.peak_force_N);
   if (const double y = design.impact_off_axis_m; y != 0.0) {
     // The twist of the solved impulse and force (evaluate()'s formulas).
     e.twist_rate_rad_s = r.impulse_N_s * y / *e.polar_inertia_kg_m2;

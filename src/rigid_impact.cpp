@@ -135,7 +135,7 @@ RigidOutcome rigid_outcome(const RigidCase& c, const MassProperties& system) {
   o.cop_hand_from_butt_m = hand_held_cop_from_butt(system).value_or(0.0);  // h > 0 in a valid case
   o.wrist_force_ratio =
       wrist_force_ratio(system, c.forearm_equivalent_mass_kg, c.impact_from_butt_m);
-  o.peak_wrist_force_N = std::abs(o.wrist_force_ratio) * o.peak_impact_force_N;
+  o.peak_wrist_force_N = peak_wrist_force(o.wrist_force_ratio, o.peak_impact_force_N);
   return o;
 }
 
@@ -171,7 +171,7 @@ template <bool kTwist>
     F0[i] = peak;
     cop[i] = kernel::hand_held_cop_from_butt(s.mass_kg, s.com_from_butt_m, s.I_cm_kg_m2, 0.0);
     ratio[i] = r;
-    F_w[i] = std::abs(r) * peak;
+    F_w[i] = peak_wrist_force(r, peak);
   }
 }
 

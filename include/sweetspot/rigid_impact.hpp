@@ -10,6 +10,7 @@
 // position that the physics puts at infinity (an impact through the centre of
 // mass leaves the body translating without rotation) is std::nullopt.
 
+#include <cmath>
 #include <optional>
 #include <span>
 
@@ -66,6 +67,14 @@ std::optional<double> hand_held_cop_from_butt(const MassProperties& system);
 // COP), a negative one away from it (Sec. V.B). Dimensionless.
 double wrist_force_ratio(const MassProperties& system, double forearm_equivalent_mass_kg,
                          double impact_from_butt_m);
+
+// The peak force on the wrist [N] when the ball's force peaks at
+// `peak_impact_force_N`: |F_w / F| F0 (Eq. 11 at the peak; the ratio is
+// fixed through the impact). The rigid model's F0 is Eq. (15)'s; the solved
+// collision's is its own peak.
+inline double peak_wrist_force(double wrist_force_ratio, double peak_impact_force_N) {
+  return std::abs(wrist_force_ratio) * peak_impact_force_N;
+}
 
 // Cross (2004) Eq. (12): the rotation axis of the hand-held implement,
 //   A = (I_cm + M_e h (h + b)) / (M b + M_e (h + b)),

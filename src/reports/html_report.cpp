@@ -17,6 +17,7 @@
 #include "studies/string_bed_map.hpp"
 #include "sweetspot/collision.hpp"
 #include "sweetspot/evaluate.hpp"
+#include "sweetspot/rigid_impact.hpp"
 
 namespace sweetspot::io {
 namespace {
@@ -336,8 +337,8 @@ std::vector<FramePoint> frame_curves(const Design& design, double step_m, Fideli
     }
     try {
       const CollisionResult r = collision->at(e.impact_from_butt_m, 0.0);
-      points.push_back(
-          {d, e.wrist_force_ratio, r.apparent_cor, std::abs(e.wrist_force_ratio) * r.peak_force_N});
+      points.push_back({d, e.wrist_force_ratio, r.apparent_cor,
+                        peak_wrist_force(e.wrist_force_ratio, r.peak_force_N)});
     } catch (const std::invalid_argument&) {
       // No solved collision here (its contact time out of range): no point.
     }

@@ -102,7 +102,7 @@ StringBedMap string_bed_map(const Design& design, const StringBedMapOptions& opt
         // as evaluate() at Fidelity::kCollision.
         const CollisionResult r = collision->at(x, y);
         p.apparent_cor = r.apparent_cor;
-        p.peak_wrist_force_N = std::abs(o.wrist_force_ratio) * r.peak_force_N;
+        p.peak_wrist_force_N = peak_wrist_force(o.wrist_force_ratio, r.peak_force_N);
         p.peak_twist_torque_N_m = r.peak_force_N * std::abs(y);
         p.vibration_energy_J = r.vibration_J;
         continue;
