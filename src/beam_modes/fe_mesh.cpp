@@ -228,7 +228,12 @@ int drift_roots(const HandCoupling& hand) {
   return hand.stiffness_N_m2 == 0.0 && hand.damping_N_s_m2 > 0.0 ? 2 : 0;
 }
 
-MatrixXd flexible_basis(const Mesh& mesh, const Assembled& a, const HandCoupling* hand) {
+namespace {
+
+// QR of M R, R the rigid-body motions: Q's trailing columns span their
+// M-orthogonal complement.
+Eigen::HouseholderQR<MatrixXd> rigid_motions_qr(const Mesh& mesh, const Assembled& a,
+                                                const HandCoupling* hand) {
   const int n = static_cast<int>(a.M.rows());
   const bool detached = hand_detached(hand);
   MatrixXd R = MatrixXd::Zero(n, detached ? 4 : 2);
@@ -243,9 +248,27 @@ MatrixXd flexible_basis(const Mesh& mesh, const Assembled& a, const HandCoupling
     if (!detached) R(a.beam_dofs, phi) = hand->grip_start_m + 0.5 * hand->grip_length_m;
     R(a.beam_dofs + 1, phi) = 1.0;
   }
-  const Eigen::HouseholderQR<MatrixXd> qr(a.M * R);
+  return Eigen::HouseholderQR<MatrixXd>(a.M * R);
+}
+
+}  // namespace
+
+MatrixXd flexible_basis(const Mesh& mesh, const Assembled& a, const HandCoupling* hand) {
+  const int n = static_cast<int>(a.M.rows());
+  const Eigen::HouseholderQR<MatrixXd> qr = rigid_motions_qr(mesh, a, hand);
   const MatrixXd Q = qr.householderQ() * MatrixXd::Identity(n, n);
-  return Q.rightCols(n - R.cols());
+  return Q.rightCols(n - qr.matrixQR().cols());
+}
+
+FlexibleMatrices flexible_matrices(const Mesh& mesh, const Assembled& a, const HandCoupling* hand) {
+  const Eigen::HouseholderQR<MatrixXd> qr = rigid_motions_qr(mesh, a, hand);
+  const auto m = static_cast<int>(a.M.rows() - qr.matrixQR().cols());
+  const auto reduce = [&](MatrixXd X) -> MatrixXd {
+    X.applyOnTheLeft(qr.householderQ().adjoint());
+    X.applyOnTheRight(qr.householderQ());
+    return X.bottomRightCorner(m, m);
+  };
+  return {reduce(a.K), reduce(a.M)};
 }
 
 std::vector<int> counts_for(const Segmentation& seg, double per_phase_weight) {

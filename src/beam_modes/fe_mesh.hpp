@@ -218,6 +218,15 @@ int drift_roots(const HandCoupling& hand);
 // exactly and the reduced problem has no zero modes.
 MatrixXd flexible_basis(const Mesh& mesh, const Assembled& a, const HandCoupling* hand);
 
+// Q^T K Q and Q^T M Q for that basis, found by applying its Householder
+// reflections (one per rigid motion) to both sides of K and M: O(n^2) each,
+// where forming Q and multiplying is O(n^3). Equal to the products to
+// round-off, not bit for bit.
+struct FlexibleMatrices {
+  MatrixXd K, M;
+};
+FlexibleMatrices flexible_matrices(const Mesh& mesh, const Assembled& a, const HandCoupling* hand);
+
 // Up to this many segments every one has at least one element (a few
 // dozen dense DOFs at most); beyond, runs of short segments share elements.
 inline constexpr std::size_t kMaxFollowedSegments = 64;
