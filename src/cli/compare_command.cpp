@@ -46,6 +46,7 @@ void CompareCommand::add_to(CLI::App& app) {
 }
 
 int CompareCommand::run() const {
+  require_distinct_outputs(html, out.output);
   int stdin_uses = 0;
   for (const std::string& path : design_paths) stdin_uses += path == "-";
   if (stdin_uses > 1)

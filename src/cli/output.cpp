@@ -1,6 +1,9 @@
 #include "cli/output.hpp"
 
+#include <CLI/CLI.hpp>
+#include <filesystem>
 #include <iostream>
+#include <system_error>
 
 #include "io/atomic_file.hpp"
 #include "io/input_error.hpp"
@@ -31,6 +34,18 @@ void OutputOptions::emit_stream(const std::function<void(std::ostream&)>& write)
     write(std::cout);
   } else {
     io::write_stream_atomically(output, write);
+  }
+}
+
+void require_distinct_outputs(const std::string& html, const std::string& output) {
+  if (html.empty() || output.empty()) return;
+  std::error_code error;
+  const auto resolved = [&](const std::string& path) {
+    return std::filesystem::weakly_canonical(std::filesystem::absolute(path, error), error);
+  };
+  if (html == output || resolved(html) == resolved(output)) {
+    throw CLI::ValidationError("--html and --output: both name " + io::one_line(html) +
+                               "; give the page and the text report two files");
   }
 }
 

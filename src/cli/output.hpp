@@ -38,6 +38,10 @@ struct OutputOptions {
   void emit_stream(const std::function<void(std::ostream&)>& write) const;
 };
 
+// Throws CLI::ValidationError when --html and --output name the same file
+// (the page would replace the text report, or the report the page).
+void require_distinct_outputs(const std::string& html, const std::string& output);
+
 // "f.png" with suffix "-at-2cm" -> "f-at-2cm.png"; "f" -> "f-at-2cm.png".
 std::string plot_file(const std::string& png, const std::string& suffix);
 

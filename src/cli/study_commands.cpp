@@ -48,6 +48,7 @@ void OptimizeCommand::add_to(CLI::App& app) {
 }
 
 int OptimizeCommand::run() const {
+  require_distinct_outputs(html, out.output);
   io::Study study = io::load_study(study_path);
   study.options.threads = threads;
   const io::OptimizationResult result = io::run_optimization(study);
