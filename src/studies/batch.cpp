@@ -236,6 +236,7 @@ void split_csv(std::string_view record, std::size_t max_fields, CsvRecord& out) 
   out.unquoted.clear();
   // Never longer than the record: the views into it stay valid as it grows.
   out.unquoted.reserve(record.size());
+  const bool quotes = record.find('"') != std::string_view::npos;  // most records have none
   std::size_t i = 0;
   for (;;) {
     const std::size_t number = out.count + 1;
@@ -266,17 +267,15 @@ void split_csv(std::string_view record, std::size_t max_fields, CsvRecord& out) 
       }
       field = std::string_view(out.unquoted).substr(start);
     } else {
-      // Up to the comma, or a quote: a loop, short fields being the rule.
-      std::size_t end = i;
-      while (end < record.size() && record[end] != ',' && record[end] != '"') ++end;
-      if (end < record.size() && record[end] == '"') {
+      const std::size_t end = std::min(record.find(',', i), record.size());
+      field = record.substr(i, end - i);
+      if (quotes && field.find('"') != std::string_view::npos) {
         out.error = fmt::format(
             "field {}: a quote inside an unquoted field (quote the whole field, "
             "writing a quote inside it twice)",
             number);
         return;
       }
-      field = record.substr(i, end - i);
       i = end;
     }
     if (out.count++ < max_fields) out.fields.push_back(field);
