@@ -42,6 +42,15 @@ std::string shown(std::string_view text) { return brief(Json(valid_utf8(text)));
 // field, where a double quote would be written twice ("got ""VS5""").
 std::string shown_cell(std::string_view text) { return "'" + one_line(valid_utf8(text)) + "'"; }
 
+// Whether `text` is all ASCII, which is valid UTF-8: most catalogues' lines,
+// told in one pass (which the compiler vectorises) before the byte-by-byte
+// UTF-8 check.
+bool is_ascii(std::string_view text) {
+  unsigned char any = 0;
+  for (const char c : text) any |= static_cast<unsigned char>(c);
+  return any < 0x80;
+}
+
 // The lines of a catalogue, each read into a buffer that never grows past
 // kMaxBatchLineBytes: a longer line, a NUL byte, bytes that are not UTF-8
 // and a failed read are refused with the line they are on. A byte-order mark
@@ -106,7 +115,8 @@ class LineReader {
     if (text.size() > start && text.back() == '\r') text.pop_back();
     if (line_ == 1 && std::string_view(text).starts_with(kByteOrderMark))
       text.erase(0, kByteOrderMark.size());
-    const std::size_t bad = invalid_utf8_at(std::string_view(text).substr(start));
+    const std::string_view added = std::string_view(text).substr(start);
+    const std::size_t bad = is_ascii(added) ? std::string_view::npos : invalid_utf8_at(added);
     if (bad != std::string_view::npos) {
       refuse(line_,
              fmt::format("byte {} is not UTF-8 text (expected a UTF-8 CSV or JSON Lines file)",
@@ -184,6 +194,7 @@ class CsvScan {
 // alone (that row's error says the quote is not closed) and hands the lines
 // after it back, to be read as rows of their own.
 void complete_record(LineReader& reader, std::string& record) {
+  if (record.find('"') == std::string::npos) return;  // no quote, no quoted field left open
   CsvScan scan;
   scan.read(record);
   const std::size_t first_line_end = record.size();
@@ -204,36 +215,44 @@ void complete_record(LineReader& reader, std::string& record) {
   }
 }
 
+// One CSV record split into its fields. The fields are views into the
+// record, or into `unquoted` for a quoted field, so the record must outlive
+// them; one CsvRecord is reused from row to row, allocating nothing once
+// it has grown to the rows' size.
 struct CsvRecord {
-  std::vector<std::string> fields;  // the first `max_fields` fields
-  std::size_t count = 0;            // how many fields the record has
-  std::string error;                // why it is not RFC 4180 CSV, "" when it is
+  std::vector<std::string_view> fields;  // the first `max_fields` fields
+  std::size_t count = 0;                 // how many fields the record has
+  std::string error;                     // why it is not RFC 4180 CSV, "" when it is
+  std::string unquoted;                  // the quoted fields' text, quotes taken off
 };
 
-// Splits one CSV record (RFC 4180): fields separated by commas; a field in
-// double quotes may hold commas, line breaks and quotes written twice. A
-// quote inside an unquoted field, or text after a closing quote, is an error.
-CsvRecord split_csv(std::string_view record, std::size_t max_fields) {
-  CsvRecord out;
-  out.fields.reserve(std::min<std::size_t>(max_fields, 64));  // one allocation for most rows
-  std::string field;
+// Splits one CSV record (RFC 4180) into `out`: fields separated by commas; a
+// field in double quotes may hold commas, line breaks and quotes written
+// twice. A quote inside an unquoted field, or text after a closing quote, is
+// an error.
+void split_csv(std::string_view record, std::size_t max_fields, CsvRecord& out) {
+  out.fields.clear();
+  out.count = 0;
+  out.error.clear();
+  out.unquoted.clear();
+  // Never longer than the record: the views into it stay valid as it grows.
+  out.unquoted.reserve(record.size());
+  const bool quotes = record.find('"') != std::string_view::npos;  // most records have none
   std::size_t i = 0;
-  const auto keep = [&] {
-    if (out.count++ < max_fields) out.fields.push_back(std::move(field));
-    field.clear();
-  };
   for (;;) {
     const std::size_t number = out.count + 1;
+    std::string_view field;
     if (i < record.size() && record[i] == '"') {
+      const std::size_t start = out.unquoted.size();
       for (++i;; ++i) {
         if (i == record.size()) {
           out.error = fmt::format("field {}: a quoted field is not closed", number);
-          return out;
+          return;
         }
         if (record[i] != '"') {
-          field += record[i];
+          out.unquoted += record[i];
         } else if (i + 1 < record.size() && record[i + 1] == '"') {
-          field += '"';
+          out.unquoted += '"';
           ++i;
         } else {
           ++i;
@@ -245,23 +264,23 @@ CsvRecord split_csv(std::string_view record, std::size_t max_fields) {
             "field {}: text after the closing quote (quote the whole field, "
             "writing a quote inside it twice)",
             number);
-        return out;
+        return;
       }
+      field = std::string_view(out.unquoted).substr(start);
     } else {
       const std::size_t end = std::min(record.find(',', i), record.size());
-      const std::string_view text = record.substr(i, end - i);
-      if (text.find('"') != std::string_view::npos) {
+      field = record.substr(i, end - i);
+      if (quotes && field.find('"') != std::string_view::npos) {
         out.error = fmt::format(
             "field {}: a quote inside an unquoted field (quote the whole field, "
             "writing a quote inside it twice)",
             number);
-        return out;
+        return;
       }
-      field.assign(text);
       i = end;
     }
-    keep();
-    if (i == record.size()) return out;
+    if (out.count++ < max_fields) out.fields.push_back(field);
+    if (i == record.size()) return;
     ++i;  // the comma
   }
 }
@@ -325,7 +344,8 @@ struct Header {
 // mapped onto one or passed through), none given twice, in two units or
 // forms, or inside another; every column of the map in the header.
 Header read_header(std::string_view line, const std::string& where, const BatchOptions& options) {
-  CsvRecord record = split_csv(line, kMaxBatchColumns);
+  CsvRecord record;
+  split_csv(line, kMaxBatchColumns, record);
   if (!record.error.empty()) throw InputError(where, "", "the header is not CSV: " + record.error);
   if (record.count > kMaxBatchColumns) {
     throw InputError(
@@ -334,7 +354,7 @@ Header read_header(std::string_view line, const std::string& where, const BatchO
   }
   Header header;
   header.count = record.count;
-  for (const std::string& field : record.fields) header.names.emplace_back(trimmed(field));
+  for (const std::string_view field : record.fields) header.names.emplace_back(trimmed(field));
   const bool mapped = !options.map.empty();
   std::map<std::string, std::string> target_of;  // column name -> design field
   for (const auto& [column, field] : options.map) {
@@ -411,12 +431,12 @@ Header read_header(std::string_view line, const std::string& where, const BatchO
   return header;
 }
 
+// A row of the catalogue, and what becomes of it. The rows of a chunk are
+// reused from chunk to chunk (start()), keeping their strings' memory.
 struct Row {
   std::size_t line = 0;
   std::string text;
   std::string name;
-  std::optional<Evaluation> evaluation;
-  std::optional<DesignFile> file;  // the design as read, for complete JSON rows
   std::string error;
   // A design column (from 1) the header names wrongly, found by this row:
   // the design has no such field, or the base holds a value where it leads.
@@ -425,7 +445,32 @@ struct Row {
   std::vector<std::string> passed;  // the cells passed through
   std::optional<double> key;        // the sort output's value
   std::string out;                  // the row's text, when sorted
+
+  // The row read at `line_number` as `record` (taken, and left holding
+  // the former row's text), nothing else of a former row kept.
+  void start(std::size_t line_number, std::string& record) {
+    line = line_number;
+    text.swap(record);
+    name.clear();
+    error.clear();
+    bad_column = 0;
+    bad_column_detail.clear();
+    passed.clear();
+    key.reset();
+    out.clear();
+  }
 };
+
+// What a row evaluates to, in a slot each thread reuses: a row is written as
+// soon as it is evaluated, so its evaluation (some 700 bytes) is never kept
+// in the chunk.
+struct Outcome {
+  std::optional<Evaluation> evaluation;
+  std::optional<DesignFile> file;  // the design as read, for complete JSON rows
+};
+
+// The most of a row's text a reused Row keeps between chunks.
+constexpr std::size_t kKeptRowBytes = 4096;
 
 // A CSV row's design compiled once per thread for each set of filled cells
 // (the rows' shape): the base with those columns is read once, the columns
@@ -452,10 +497,14 @@ class Evaluator {
         options_(options),
         csv_(csv),
         header_(std::move(header)),
-        shapes_(static_cast<std::size_t>(std::max(1, options.threads))) {
+        shapes_(static_cast<std::size_t>(std::max(1, options.threads))),
+        records_(shapes_.size()) {
     for (const DesignColumn& column : header_.design) {
       pointers_.push_back(field_to_pointer(column.field));
       columns_.emplace_back(pointers_.back());  // read_header checked the path
+      kinds_.push_back(column.field == "name"        ? CellKind::kName
+                       : is_text_field(column.field) ? CellKind::kText
+                                                     : CellKind::kNumber);
     }
   }
 
@@ -464,41 +513,46 @@ class Evaluator {
   // Evaluates a row on thread `thread` (< options.threads). JSON output
   // takes the JSON path, which keeps the design as read (its inputs and
   // their provenance).
-  void evaluate_row(Row& row, std::size_t thread) const {
-    if (csv_ && !header_.passed.empty()) {
-      const CsvRecord record = split_csv(row.text, header_.count);
-      if (record.error.empty() && record.count == header_.count) {
-        for (const std::size_t k : header_.passed) row.passed.push_back(record.fields[k]);
-      }
-    }
-    if (options_.compiled && csv_ && options_.format != Format::kJson &&
-        header_.design.size() <= kMaxCompiledColumns && evaluate_compiled(row, thread)) {
+  void evaluate_row(Row& row, Outcome& outcome, std::size_t thread) const {
+    outcome.evaluation.reset();
+    outcome.file.reset();
+    if (!csv_) {
+      evaluate_general(row, outcome, nullptr);
       return;
     }
-    evaluate_general(row);
+    CsvRecord& record = records_[thread];
+    split_csv(row.text, header_.count, record);
+    const bool whole = record.error.empty() && record.count == header_.count;
+    if (whole) {
+      for (const std::size_t k : header_.passed) row.passed.emplace_back(record.fields[k]);
+    }
+    if (whole && options_.compiled && options_.format != Format::kJson &&
+        header_.design.size() <= kMaxCompiledColumns &&
+        evaluate_compiled(row, outcome, record, thread)) {
+      return;
+    }
+    evaluate_general(row, outcome, &record);
   }
 
  private:
   // The row set on its shape's compiled design; false (and the row as it
   // was) when the JSON path must read it.
-  bool evaluate_compiled(Row& row, std::size_t thread) const {
-    const CsvRecord record = split_csv(row.text, header_.count);
-    if (!record.error.empty() || record.count != header_.count) return false;
-    const std::vector<std::string>& cells = record.fields;
+  bool evaluate_compiled(Row& row, Outcome& outcome, const CsvRecord& record,
+                         std::size_t thread) const {
+    const std::vector<std::string_view>& cells = record.fields;
     std::uint64_t mask = 0;
-    const std::string* name_cell = nullptr;
-    std::array<double, kMaxCompiledColumns> values{};
+    const std::string_view* name_cell = nullptr;
+    std::array<double, kMaxCompiledColumns> values;
     std::size_t count = 0;
     for (std::size_t j = 0; j < header_.design.size(); ++j) {
-      const DesignColumn& column = header_.design[j];
-      const std::string& cell = cells[column.cell];
+      const std::string_view& cell = cells[header_.design[j].cell];
       if (cell.empty()) continue;
       mask |= std::uint64_t{1} << j;
-      if (column.field == "name") {
+      if (kinds_[j] == CellKind::kName) {
         name_cell = &cell;
         continue;
       }
-      if (is_text_field(column.field)) return false;
+      if (kinds_[j] == CellKind::kText) return false;
       const char* end = cell.data() + cell.size();
       const auto [stop, error] = std::from_chars(cell.data(), end, values[count]);
       if (error != std::errc() || stop != end) return false;
@@ -512,9 +566,9 @@ class Evaluator {
       const Fidelity fidelity = resolve_fidelity(
           options_.fidelity.empty() ? std::string_view(shape.fidelity) : options_.fidelity,
           *design);
-      row.evaluation = evaluate_validated(*design, fidelity, options_.modal_tolerance);
+      outcome.evaluation.emplace(evaluate_validated(*design, fidelity, options_.modal_tolerance));
     } catch (const std::exception&) {
-      row.evaluation.reset();
+      outcome.evaluation.reset();
       return false;
     }
     row.name = name_cell    ? *name_cell
@@ -525,7 +579,7 @@ class Evaluator {
 
   // Reads this row's document as the template of its shape and binds the
   // filled columns to it; false when it cannot (the row is then read as JSON).
-  bool compile_shape(Shape& shape, const std::vector<std::string>& cells,
+  bool compile_shape(Shape& shape, const std::vector<std::string_view>& cells,
                      std::span<const double> values, std::size_t line) const {
     if (shape.attempts >= kTemplateAttempts) return false;
     ++shape.attempts;
@@ -534,10 +588,10 @@ class Evaluator {
       std::vector<std::string> pointers;
       bool named = false;
       for (std::size_t j = 0; j < header_.design.size(); ++j) {
-        const std::string& cell = cells[header_.design[j].cell];
+        const std::string_view cell = cells[header_.design[j].cell];
         if (cell.empty()) continue;
-        if (header_.design[j].field == "name") {
-          document["name"] = cell;
+        if (kinds_[j] == CellKind::kName) {
+          document["name"] = std::string(cell);
           named = true;
           continue;
         }
@@ -572,12 +626,12 @@ class Evaluator {
   }
 
   // The JSON path: the row written over the base document and read again.
-  void evaluate_general(Row& row) const {
+  void evaluate_general(Row& row, Outcome& outcome, const CsvRecord* record) const {
     const std::string where = fmt::format("{}:{}", source_, row.line);
     try {
       Json document = options_.base ? *options_.base : Json::object();
-      if (csv_) {
-        const CsvRecord cells = split_csv(row.text, header_.count);
+      if (record) {
+        const CsvRecord& cells = *record;
         if (!cells.error.empty()) throw InputError(where, "", "not CSV: " + cells.error);
         if (cells.count != header_.count) {
           throw InputError(where, "",
@@ -590,10 +644,10 @@ class Evaluator {
         }
         for (std::size_t j = 0; j < header_.design.size(); ++j) {
           const DesignColumn& column = header_.design[j];
-          const std::string& text = cells.fields[column.cell];
+          const std::string_view text = cells.fields[column.cell];
           if (text.empty()) continue;  // the base's value stands
           if (is_text_field(column.field)) {
-            document[column.field] = text;
+            document[column.field] = std::string(text);
             continue;
           }
           const std::string_view cell = trimmed(text);
@@ -623,8 +677,9 @@ class Evaluator {
         // The design with its inputs' provenance, for a row as complete as `evaluate`'s.
         DesignFile design = read_design(document, where);
         row.name = design.name;
-        row.evaluation = evaluate_design_file(design, options_.fidelity, options_.modal_tolerance);
-        row.file = std::move(design);
+        outcome.evaluation =
+            evaluate_design_file(design, options_.fidelity, options_.modal_tolerance);
+        outcome.file = std::move(design);
         return;
       }
       const DesignFile design = read_design_lean(document, where);
@@ -633,13 +688,13 @@ class Evaluator {
         const Fidelity fidelity = resolve_fidelity(
             options_.fidelity.empty() ? std::string_view(design.fidelity) : options_.fidelity,
             design.design);
-        row.evaluation = evaluate(design.design, fidelity, options_.modal_tolerance);
+        outcome.evaluation = evaluate(design.design, fidelity, options_.modal_tolerance);
       } catch (const std::invalid_argument& e) {
         rethrow_in(read_design(document, where), e);  // with the key map, to name the user's key
       }
     } catch (const InputError& e) {
-      row.evaluation.reset();
-      row.file.reset();
+      outcome.evaluation.reset();
+      outcome.file.reset();
       row.error = e.what();
       for (std::size_t j = 0; csv_ && j < pointers_.size(); ++j) {
         // A value the model refuses at a mapped column's field names the column too.
@@ -664,8 +719,8 @@ class Evaluator {
         }
       }
     } catch (const std::exception& e) {
-      row.evaluation.reset();
-      row.file.reset();
+      outcome.evaluation.reset();
+      outcome.file.reset();
       row.error = InputError(where, "", e.what()).what();
     }
   }
@@ -676,15 +731,35 @@ class Evaluator {
   Header header_;
   std::vector<std::string> pointers_;
   std::vector<FieldOverride> columns_;
+  // What each design column's cells hold.
+  enum class CellKind { kName, kText, kNumber };
+  std::vector<CellKind> kinds_;
   mutable std::vector<std::map<std::uint64_t, Shape>> shapes_;  // per thread
+  mutable std::vector<CsvRecord> records_;                      // per thread: the row's fields
 };
 
-void write_row(const Row& row, const Header& header, Format format, std::string& out) {
+// csv_field(one_line(text)) appended to `out`, without the two copies for
+// text that needs neither (no control character, comma or quote).
+void append_cell(std::string& out, std::string_view text) {
+  const bool plain = std::all_of(text.begin(), text.end(), [](char c) {
+    const auto byte = static_cast<unsigned char>(c);
+    return byte >= 0x20 && byte != 0x7f && c != ',' && c != '"';
+  });
+  if (plain) {
+    out += text;
+  } else {
+    out += csv_field(one_line(text));
+  }
+}
+
+void write_row(const Row& row, const Outcome& outcome, const Header& header, Format format,
+               std::string& out) {
+  const std::optional<Evaluation>& evaluation = outcome.evaluation;
   if (format == Format::kJson) {
     Json j =
-        row.evaluation && row.file ? evaluation_json(*row.file, *row.evaluation) : Json::object();
+        evaluation && outcome.file ? evaluation_json(*outcome.file, *evaluation) : Json::object();
     j["line"] = row.line;
-    if (!row.evaluation) {
+    if (!evaluation) {
       j["error"] = row.error;
       if (!row.name.empty()) j["name"] = row.name;
     }
@@ -698,12 +773,13 @@ void write_row(const Row& row, const Header& header, Format format, std::string&
     out += "\n";
     return;
   }
-  out += std::to_string(row.line);
-  out += ",";
-  out += csv_field(one_line(row.name));  // a row is one line of the table
+  char number[24];
+  out.append(number, std::to_chars(number, number + sizeof number, row.line).ptr);
+  out += ',';
+  append_cell(out, row.name);  // a row is one line of the table
   for (std::size_t i = 0; i < header.passed.size(); ++i) {
     out += ',';
-    if (i < row.passed.size()) out += csv_field(one_line(row.passed[i]));
+    if (i < row.passed.size()) append_cell(out, row.passed[i]);
   }
   // The outputs written into a buffer a few at a time and appended together.
   constexpr std::size_t kAtOnce = 16;
@@ -711,7 +787,7 @@ void write_row(const Row& row, const Header& header, Format format, std::string&
   char* end = buffer;
   std::size_t pending = 0;
   for (const OutputSpec& o : output_specs()) {
-    const auto value = row.evaluation ? o.value(*row.evaluation) : std::nullopt;
+    const auto value = evaluation ? o.value(*evaluation) : std::nullopt;
     *end++ = ',';
     if (value) end = write_exact(end, *value);
     if (++pending == kAtOnce) {
@@ -861,35 +937,39 @@ BatchSummary run_batch(std::istream& in, const std::string& source, const BatchO
   }
   const Evaluator evaluator(source, options, csv, std::move(header));
   BatchSummary summary;
+  // The chunk's rows: the first `rows` of `chunk`, whose Rows are reused.
   std::vector<Row> chunk;
+  std::size_t rows = 0;
   std::size_t chunk_bytes = 0;
   chunk.reserve(kBatchChunkRows);
   std::vector<std::string> texts(std::max(1, options.threads));
-  std::vector<SortedRow> kept;  // with sort_by
+  std::vector<Outcome> outcomes(texts.size());  // per thread
+  std::vector<SortedRow> kept;                  // with sort_by
   const auto flush = [&] {
     // Rows are read, evaluated and formatted by the threads, each into its
     // own block of text (or, sorted, its own row); the blocks are written in order.
     for (std::string& text : texts) text.clear();
-    for_blocks(chunk.size(), options.threads, [&](std::size_t t, std::size_t from, std::size_t to) {
+    const std::span<Row> read(chunk.data(), rows);
+    for_blocks(read.size(), options.threads, [&](std::size_t t, std::size_t from, std::size_t to) {
       for (std::size_t i = from; i < to; ++i) {
-        Row& row = chunk[i];
-        evaluator.evaluate_row(row, t);
+        Row& row = read[i];
+        Outcome& outcome = outcomes[t];
+        evaluator.evaluate_row(row, outcome, t);
         if (sort_by) {
-          if (row.evaluation) row.key = sort_by->value(*row.evaluation);
-          write_row(row, evaluator.header(), options.format, row.out);
+          if (outcome.evaluation) row.key = sort_by->value(*outcome.evaluation);
+          write_row(row, outcome, evaluator.header(), options.format, row.out);
         } else {
-          write_row(row, evaluator.header(), options.format, texts[t]);
+          write_row(row, outcome, evaluator.header(), options.format, texts[t]);
         }
-        row.file.reset();  // written: its memory back before the next chunk
       }
     });
-    for (const Row& row : chunk) {
+    for (const Row& row : read) {
       if (!row.bad_column) continue;
       const DesignColumn& column = evaluator.header().design[row.bad_column - 1];
       throw InputError(header_at, "", fmt::format("{}: {}", column.label, row.bad_column_detail));
     }
     if (sort_by) {
-      for (Row& row : chunk) kept.push_back(SortedRow{row.key, row.line, std::move(row.out)});
+      for (Row& row : read) kept.push_back(SortedRow{row.key, row.line, std::move(row.out)});
       if (options.top > 0 && kept.size() > 2 * options.top + kBatchChunkRows) {
         order_rows(kept, options.descending);
         kept.resize(options.top);
@@ -897,11 +977,13 @@ BatchSummary run_batch(std::istream& in, const std::string& source, const BatchO
     } else {
       for (const std::string& text : texts) out << text;
     }
-    for (const Row& row : chunk) {
+    for (Row& row : read) {
       ++summary.rows;
       if (!row.error.empty()) ++summary.failed;
+      // A long line's memory is not kept for the rows to come.
+      if (row.text.capacity() > kKeptRowBytes) row = Row();
     }
-    chunk.clear();
+    rows = 0;
     chunk_bytes = 0;
   };
   // In JSON Lines the first line read is the first design.
@@ -913,13 +995,11 @@ BatchSummary run_batch(std::istream& in, const std::string& source, const BatchO
     if (trimmed(line).empty()) continue;
     if (csv) complete_record(reader, line);
     chunk_bytes += line.size();
-    Row row;
-    row.line = line_number;
-    row.text = line;
-    chunk.push_back(std::move(row));
-    if (chunk.size() == kBatchChunkRows || chunk_bytes >= kBatchChunkBytes) flush();
+    if (rows == chunk.size()) chunk.emplace_back();
+    chunk[rows++].start(line_number, line);
+    if (rows == kBatchChunkRows || chunk_bytes >= kBatchChunkBytes) flush();
   }
-  if (!chunk.empty()) flush();
+  if (rows > 0) flush();
   if (sort_by) {
     order_rows(kept, options.descending);
     if (options.top > 0 && kept.size() > options.top) kept.resize(options.top);
