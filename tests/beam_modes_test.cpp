@@ -628,6 +628,29 @@ TEST_CASE(
   }
 }
 
+TEST_CASE("Few free modes of a fine mesh, refined from a coarse one, are the dense solve's") {
+  // One mode on 30 elements is refined on the banded pencil; twelve on the
+  // same mesh are solved densely (the coarse mesh is too fine to gain). The
+  // fundamental and its nodes agree to well below the mesh's own error.
+  ModeOptions one = fe(1);
+  one.elements = 30;
+  ModeOptions twelve = one;
+  twelve.modes = 12;
+  for (const auto& [sections, masses] : {std::pair{paper_beam(), std::vector<PointMass>{}},
+                                         std::pair{racquet(), racquet_masses()}}) {
+    const ModalResult refined = free_modes(sections, masses, one);
+    const ModalResult dense = free_modes(sections, masses, twelve);
+    REQUIRE_THAT(refined.message, Catch::Contains("refined"));
+    REQUIRE_THAT(dense.message, !Catch::Contains("refined"));
+    REQUIRE(refined.elements_used == dense.elements_used);
+    CHECK(refined.modes[0].frequency_Hz == Approx(dense.modes[0].frequency_Hz).epsilon(1e-10));
+    const auto& a = refined.modes[0].nodes_from_butt_m;
+    const auto& b = dense.modes[0].nodes_from_butt_m;
+    REQUIRE(a.size() == b.size());
+    for (std::size_t k = 0; k < a.size(); ++k) CHECK(a[k] == Approx(b[k]).margin(1e-9));
+  }
+}
+
 TEST_CASE("A mesh no finer than the coarse one is solved densely and says so") {
   ModeOptions o = fe(3);
   o.elements = 4;
