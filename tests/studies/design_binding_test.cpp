@@ -346,5 +346,30 @@ TEST_CASE("An optimisation's compiled evaluations equal the JSON path's, at good
   }
 }
 
+TEST_CASE("The report's start and best outputs, kept from the search, are a fresh evaluation's") {
+  // run_optimization takes them from the search's own evaluations (the
+  // compiled design) instead of reading and evaluating the designs again:
+  // every output must be what the JSON path gives, bit for bit.
+  for (const char* name :
+       {"1-lowest-wrist-force-table1-ranges.json", "2-lowest-wrist-force-fixed-feel.json",
+        "3a-cop-on-node-table1-racquet.json", "4-robust-lowest-worst-wrist-force.json"}) {
+    INFO(name);
+    const Study study = load_study(studies() + name);
+    const OptimizationResult r = run_optimization(study);
+    REQUIRE(r.start_outputs);
+    REQUIRE(r.best_outputs);
+    const Evaluation start = evaluate_in(study, r.start), best = evaluate_in(study, r.best);
+    for (const OutputSpec& spec : output_specs()) {
+      INFO(spec.name);
+      const auto same = [&](const Evaluation& a, const Evaluation& b) {
+        const std::optional<double> va = spec.value(a), vb = spec.value(b);
+        return va.has_value() == vb.has_value() && (!va || same_bits(*va, *vb));
+      };
+      CHECK(same(*r.start_outputs, start));
+      CHECK(same(*r.best_outputs, best));
+    }
+  }
+}
+
 }  // namespace
 }  // namespace sweetspot::io
