@@ -224,7 +224,11 @@ double people_value(double value_si, std::string_view si_unit) {
 }
 
 std::string_view unit_of_key(std::string_view key) {
+  // The first suffix that ends the key wins: longer ones first. "_N_m2" is
+  // N/m² (the grip's stiffness per metre of grip) except in a bending
+  // stiffness EI, N·m².
   static constexpr std::pair<std::string_view, std::string_view> kSuffixes[] = {
+      {"EI_N_m2", "N·m²"},
       {"_km_h", "km/h"},
       {"_m_s", "m/s"},
       {"_mph", "mph"},
@@ -232,10 +236,12 @@ std::string_view unit_of_key(std::string_view key) {
       {"_kg_m2", "kg·m²"},
       {"_N_s_m2", "N·s/m²"},
       {"_N_m2", "N/m²"},
+      {"_N_s", "N·s"},
       {"_in2", "sq in"},
       {"_sq_in", "sq in"},
       {"_cm2", "cm²"},
       {"_pts_hl", "pts head-light"},
+      {"_pts", "points"},
       {"_Hz", "Hz"},
       {"_Pa", "Pa"},
       {"_ms", "ms"},
@@ -243,8 +249,10 @@ std::string_view unit_of_key(std::string_view key) {
       {"_cm", "cm"},
       {"_in", "in"},
       {"_lb", "lb"},
+      {"_oz", "oz"},
       {"_kg", "kg"},
       {"_g", "g"},
+      {"_J", "J"},
       {"_N", "N"},
       {"_s", "s"},
       {"_m", "m"}};

@@ -41,23 +41,6 @@ constexpr double kRelTol = 1e-6;
 // A number for an SVG attribute (centimetres, two decimals are plenty).
 std::string n(double v) { return fmt::format("{:.2f}", v); }
 
-// The unit of a design key from its suffix, as the file wrote it.
-std::string unit_of_key(std::string_view key) {
-  static constexpr std::pair<std::string_view, std::string_view> kUnits[] = {
-      {"_kg_cm2", "kg·cm²"}, {"_kg_m2", "kg·m²"}, {"_N_m2", "N·m²"}, {"_sq_in", "sq in"},
-      {"_cm2", "cm²"},       {"_m_s", "m/s"},     {"_N_s", "N·s"},   {"_mph", "mph"},
-      {"_km_h", "km/h"},     {"_cm", "cm"},       {"_mm", "mm"},     {"_in", "in"},
-      {"_kg", "kg"},         {"_oz", "oz"},       {"_lb", "lb"},     {"_Hz", "Hz"},
-      {"_ms", "ms"},         {"_g", "g"},         {"_m", "m"},       {"_N", "N"},
-      {"_s", "s"},           {"_pts", "points"},  {"_J", "J"},
-  };
-  for (const auto& [suffix, unit] : kUnits) {
-    if (key.size() > suffix.size() && key.substr(key.size() - suffix.size()) == suffix)
-      return std::string(unit);
-  }
-  return "";
-}
-
 // Every leaf of the file as written: JSON pointer, value, unit.
 void flatten(const Json& value, const std::string& pointer, std::string& rows) {
   if (value.is_object()) {
@@ -79,7 +62,7 @@ void flatten(const Json& value, const std::string& pointer, std::string& rows) {
                                 ? value.get<std::string>()
                                 : value.dump(-1, ' ', false, Json::error_handler_t::replace);
   rows += fmt::format("<tr><td><code>{}</code></td><td class=\"num\">{}</td><td>{}</td></tr>\n",
-                      html_escape(pointer), html_escape(shown), html_escape(unit_of_key(key)));
+                      html_escape(pointer), html_escape(shown), html_escape(io::unit_of_key(key)));
 }
 
 Evaluation evaluate_at(const Design& design, double from_butt_m) {

@@ -186,6 +186,13 @@ TEST_CASE("A design key's unit is read from its suffix, the longest first") {
   CHECK(unit_of_key("headsize_sq_in") == "sq in");  // an area, not the inch of "_in"
   CHECK(unit_of_key("length_in") == "in");
   CHECK(unit_of_key("head_to_handle_mass_ratio").empty());
+  // "_N_m2" is a bending stiffness (N m^2) only as EI; the grip's stiffness
+  // per metre of grip is N/m^2, its damping N s/m^2.
+  CHECK(unit_of_key("EI_N_m2") == "N\u00b7m\u00b2");
+  CHECK(unit_of_key("grip_stiffness_N_m2") == "N/m\u00b2");
+  CHECK(unit_of_key("grip_damping_N_s_m2") == "N\u00b7s/m\u00b2");
+  CHECK(unit_of_key("impulse_N_s") == "N\u00b7s");
+  CHECK(unit_of_key("vibration_energy_J") == "J");
 }
 
 }  // namespace sweetspot::io
