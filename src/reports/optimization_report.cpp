@@ -73,11 +73,13 @@ std::vector<std::string> answer_paragraphs(const Study& study, const Optimizatio
     const StudyVariable& v = study.variables[i];
     const double x = r.summary.x[i];
     const std::string hit = bound_hit(v, x);
-    changes +=
-        fmt::format("{}`{}` = {}{}", changes.empty() ? "" : ", ", v.pointer, significant(x, 4),
-                    hit == "min"   ? " (its lower bound)"
-                    : hit == "max" ? " (its upper bound)"
-                                   : "");
+    // In the unit the file writes the variable in, read from its key.
+    const std::string_view unit = unit_of_key(v.pointer.substr(v.pointer.rfind('/') + 1));
+    changes += fmt::format("{}`{}` = {}{}{}{}", changes.empty() ? "" : ", ", v.pointer,
+                           significant(x, 4), unit.empty() ? "" : " ", unit,
+                           hit == "min"   ? " (its lower bound)"
+                           : hit == "max" ? " (its upper bound)"
+                                          : "");
   }
   std::string active;
   for (const ConstraintReport& c : r.constraints) {
