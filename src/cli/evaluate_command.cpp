@@ -134,10 +134,11 @@ void EvaluateCommand::add_to(CLI::App& app) {
       ->check(finite_in(kMinRelTol, kMaxRelTol))
       ->capture_default_str();
   command
-      ->add_option("--units", units,
-                   "si: CSV and JSON in SI only (stable keys for programs); people: also a "
-                   "column (CSV) or an outputs_people key (JSON) in cm, g, kg·cm², ms for each "
-                   "output in m, kg, kg m^2, s. Markdown is always in people's units")
+      ->add_option(
+          "--units", units,
+          "si: CSV and JSON in SI only (stable keys for programs); people: also a "
+          "column (CSV) or an outputs_people key (JSON) in cm, g, kg·cm², ms for each "
+          "output in m, kg, kg m^2, s. Markdown is always in people's units. Not with --batch")
       ->check(CLI::IsMember({"si", "people"}))
       ->capture_default_str();
   out.add_to(command);
@@ -155,6 +156,12 @@ int EvaluateCommand::run() const {
   }
   if (!batch_path.empty()) {
     if (!design_path.empty()) throw CLI::ValidationError("give a design file or --batch, not both");
+    // Said, not ignored: a catalogue is written in SI only.
+    if (units == "people") {
+      throw CLI::ValidationError(
+          "--units people: not with --batch (a catalogue's rows are in SI units, one column "
+          "per output as `evaluate --format csv` names it)");
+    }
     return run_batch(*this);
   }
   if (design_path.empty())
