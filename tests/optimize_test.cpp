@@ -353,20 +353,27 @@ TEST_CASE("Threads give the same search, evaluation for evaluation, when the pro
       ++forks;
       return slow;
     };
-    OptimizeOptions one;
-    one.max_evaluations = 300;
-    OptimizeOptions four = one;
-    four.threads = 4;
-    const Summary a = minimize(p, one);
-    CHECK(forks == 0);
-    const Summary b = minimize(p, four);
-    CHECK(forks == 3);
-    CHECK(a.x == b.x);
-    CHECK(a.objective == b.objective);
-    CHECK(a.evaluations == b.evaluations);
-    CHECK(a.history == b.history);
-    CHECK(a.algorithm == b.algorithm);
-    CHECK(a.termination == b.termination);
+    // Budgets that end the search inside a batch of points, and one that does not.
+    for (const int budget : {2, 5, 9, 300}) {
+      INFO("budget " << budget);
+      OptimizeOptions one;
+      one.max_evaluations = budget;
+      OptimizeOptions four = one;
+      four.threads = 4;
+      forks = 0;
+      const Summary a = minimize(p, one);
+      CHECK(forks == 0);
+      const Summary b = minimize(p, four);
+      CHECK(forks <= 3);  // one per extra thread the largest batch of points used
+      if (budget == 300) CHECK(forks == 3);
+      CHECK(a.evaluations <= budget);
+      CHECK(a.x == b.x);
+      CHECK(a.objective == b.objective);
+      CHECK(a.evaluations == b.evaluations);
+      CHECK(a.history == b.history);
+      CHECK(a.algorithm == b.algorithm);
+      CHECK(a.termination == b.termination);
+    }
   }
 }
 
