@@ -224,7 +224,7 @@ std::string optimization_report(const Study& study, const OptimizationResult& r,
     }
   }
   md += fmt::format(
-      "\n## Search\n\nObjective (minimised form) {} after {} evaluations; {}; NLopt termination: "
+      "\n## Search\n\nObjective (minimised form) {} after {} evaluations; {}; termination: "
       "{}.{}\n",
       has_value ? significant(r.summary.objective) : std::string("—"), r.summary.evaluations,
       r.summary.algorithm, r.summary.termination,
@@ -444,11 +444,10 @@ std::string optimization_html(const Study& study, const OptimizationResult& r) {
       "<p>Each value in a player's units, the value as the files write it under it.</p>\n" +
       variables_html(study, r) + "<h3>Constraints</h3>\n" + constraints_html(r) + "</section>\n";
 
-  html +=
-      "<section id=\"search\"><h2>The search</h2>\n" + convergence_html(study, r) +
-      fmt::format("<p>{} evaluations; {}; NLopt's termination: {}.</p>\n", r.summary.evaluations,
-                  html_escape(r.summary.algorithm), html_escape(r.summary.termination)) +
-      "</section>\n";
+  html += "<section id=\"search\"><h2>The search</h2>\n" + convergence_html(study, r) +
+          fmt::format("<p>{} evaluations; {}; termination: {}.</p>\n", r.summary.evaluations,
+                      html_escape(r.summary.algorithm), html_escape(r.summary.termination)) +
+          "</section>\n";
 
   const char* best_name = r.outcome == Outcome::kOptimum      ? "the best design"
                           : r.outcome == Outcome::kInfeasible ? "the least violating design"
