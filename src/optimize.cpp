@@ -29,6 +29,11 @@ struct SearchStopped {};
 // the box meets, can otherwise wander until the budget is spent.
 constexpr int kStallGradients = 20;
 
+// The difference step of variable i: OptimizeOptions::difference_step_rel of its range.
+double difference_step(const Problem& problem, const OptimizeOptions& options, std::size_t i) {
+  return options.difference_step_rel * (problem.upper[i] - problem.lower[i]);
+}
+
 // Independent points go to threads only when one evaluation costs more than
 // this: starting a thread costs tens of microseconds, the rigid model a few.
 constexpr double kParallelWorth_s = 100e-6;
@@ -73,7 +78,7 @@ class Evaluator {
     if (!cache_jacobian_.empty()) return cache_jacobian_;
     std::vector<std::vector<double>> probes;  // x + h e_i, x - h e_i, for each i
     for (std::size_t i = 0; i < n_; ++i) {
-      const double h = options_.difference_step_rel * (problem_.upper[i] - problem_.lower[i]);
+      const double h = difference_step(problem_, options_, i);
       probes.emplace_back(x.begin(), x.end());
       probes.back()[i] = std::min(problem_.upper[i], x[i] + h);
       probes.emplace_back(x.begin(), x.end());
@@ -536,7 +541,7 @@ VertexWalk walk_downhill_vertices(const Problem& problem, const OptimizeOptions&
     std::vector<std::vector<double>> probes(n, x);
     std::vector<bool> up(n);
     for (std::size_t i = 0; i < n; ++i) {
-      const double h = options.difference_step_rel * (problem.upper[i] - problem.lower[i]);
+      const double h = difference_step(problem, options, i);
       up[i] = x[i] + h <= problem.upper[i];
       probes[i][i] = up[i] ? x[i] + h : x[i] - h;
     }
@@ -661,11 +666,12 @@ Summary minimize(const Problem& problem, const OptimizeOptions& options) {
         termination = "VERTEX_FIRST_ORDER (sweetspot: no inward step of " +
                       detail::format_number(options.difference_step_rel) + " of a range improves)";
       } else {
-        // From the best point so far: the start, or a vertex better than it.
+        // From the best point so far: the start, or a vertex or difference
+        // probe of the walk that beat it.
         const bool from_start = evaluator.best_x() == problem.start;
         algorithm_used = std::string("auto: ") + (vertex ? vertex->what + ", then " : "") +
                          nlopt_algorithm_to_string(static_cast<nlopt_algorithm>(local)) +
-                         (from_start ? " from the start" : " from the best vertex");
+                         (from_start ? " from the start" : " from the walk's best point");
         termination =
             run_nlopt(local, std::nullopt, problem, options, evaluator, evaluator.best_x())
                 .termination;
