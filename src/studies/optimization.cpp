@@ -79,30 +79,7 @@ bool minimizes_square(const Study& study) {
 
 }  // namespace
 
-void EvaluationMemo::keep(std::span<const double> x, double objective, const Evaluation& e) {
-  const std::lock_guard<std::mutex> lock(mutex_);
-  if (!at_start_) {  // minimize() evaluates the start first
-    start_.assign(x.begin(), x.end());
-    at_start_ = e;
-  }
-  if (!at_best_ || objective < best_objective_) {
-    best_.assign(x.begin(), x.end());
-    at_best_ = e;
-    best_objective_ = objective;
-  }
-}
-
-std::optional<Evaluation> EvaluationMemo::at(std::span<const double> x) const {
-  const std::lock_guard<std::mutex> lock(mutex_);
-  const auto same = [&](const std::vector<double>& y) {
-    return std::equal(x.begin(), x.end(), y.begin(), y.end());
-  };
-  if (at_start_ && same(start_)) return at_start_;
-  if (at_best_ && same(best_)) return at_best_;
-  return std::nullopt;
-}
-
-Problem make_problem(const Study& study, std::shared_ptr<EvaluationMemo> memo) {
+Problem make_problem(const Study& study) {
   Problem problem;
   for (const StudyVariable& v : study.variables) {
     problem.lower.push_back(v.min);
@@ -126,19 +103,18 @@ Problem make_problem(const Study& study, std::shared_ptr<EvaluationMemo> memo) {
   // Each point is set on the study's compiled design (one working copy per
   // evaluate function, so a fork runs beside it); a point it cannot vouch
   // for is read from JSON (design_at).
-  const auto make_evaluate = [&study, constraints, square, memo]() -> EvaluateFunction {
+  const auto make_evaluate = [&study, constraints, square]() -> EvaluateFunction {
     const auto bound = compiled_for_variables(study)
                            ? std::make_shared<BoundDesign>(*study.compiled)
                            : std::shared_ptr<BoundDesign>();
-    return [&study, constraints, square, bound, memo](std::span<const double> x, double& f,
-                                                      std::span<double> c) {
+    return [&study, constraints, square, bound](std::span<const double> x, double& f,
+                                                std::span<double> c) {
       const auto at = [&](const Design& design) {
         const Evaluation e = evaluate_in(study, design);
         f = study.over_impacts ? objective_of(study, design) : terms_value(study, e);
         if (square) f *= f;
         for (std::size_t k = 0; k < constraints.size(); ++k)
           c[k] = constraint_value(constraints[k], e);
-        if (memo) memo->keep(x, f, e);
       };
       try {
         if (const Design* design = bound ? bound->at(x) : nullptr) return at(*design);
@@ -275,8 +251,7 @@ OptimizationResult run_optimization(const Study& study) {
                            significant(v.min) + ")");
     }
   }
-  const auto memo = std::make_shared<EvaluationMemo>();
-  const Problem problem = make_problem(study, memo);
+  const Problem problem = make_problem(study);
   Summary summary = minimize(problem, study.options);
   if (minimizes_square(study)) {
     summary.objective = std::sqrt(summary.objective);
@@ -302,8 +277,9 @@ OptimizationResult run_optimization(const Study& study) {
     return study.over_impacts || !outputs ? objective_undefined(study, design)
                                           : terms_undefined(study, *outputs);
   };
-  r.start_outputs = memo->at(r.start_x);
-  if (!r.start_outputs) r.start_outputs = outputs_of(study, r.start, nullptr);
+  // The start as the study's file describes it (read, not the search's
+  // binding: the postcondition below holds the binding to the reader).
+  r.start_outputs = outputs_of(study, r.start, nullptr);
   if (!undefined(r.start, r.start_outputs)) {
     r.start_objective =
         study.over_impacts ? objective_of(study, r.start) : terms_value(study, *r.start_outputs);

@@ -3,8 +3,6 @@
 // A study run as an optimisation: the problem handed to sweetspot::minimize
 // and the outcome with each constraint judged at the best design.
 
-#include <memory>
-#include <mutex>
 #include <optional>
 #include <span>
 #include <string>
@@ -15,27 +13,8 @@
 
 namespace sweetspot::io {
 
-// The evaluations of the start and of the point with the lowest objective
-// seen, which a study's evaluate functions (and their forks) keep, so that
-// the report does not evaluate them again (the modal model in the loop costs
-// hundreds of microseconds an evaluation).
-class EvaluationMemo {
- public:
-  void keep(std::span<const double> x, double objective, const Evaluation& e);
-  // The evaluation kept at exactly x, if any.
-  std::optional<Evaluation> at(std::span<const double> x) const;
-
- private:
-  mutable std::mutex mutex_;
-  std::vector<double> start_, best_;
-  std::optional<Evaluation> at_start_, at_best_;
-  double best_objective_ = 0.0;
-};
-
-// The study as an optimisation problem for sweetspot::minimize; with `memo`,
-// its evaluate functions keep the start's and the best point's evaluations
-// there.
-Problem make_problem(const Study& study, std::shared_ptr<EvaluationMemo> memo = nullptr);
+// The study as an optimisation problem for sweetspot::minimize.
+Problem make_problem(const Study& study);
 
 struct ConstraintReport {
   std::string name;             // "swingweight_kg_cm2 <= 330"
