@@ -220,12 +220,20 @@ bool is_racquet(Part part) {
          part == Part::kStrings;
 }
 
+// What a field belongs to when it is not always there: a head's shape is no
+// input of a design without a head, nor a string bed's of one without strings.
+enum class Within { kDesign, kHead, kStrings };
+
 struct InputField {
   Part part;
   const char* name;                                           // "speed", read after the part's name
   const char* unit;                                           // as people read it: "m/s", "g", "cm"
   double factor;                                              // from SI to `unit`
   std::function<std::optional<double>(const Design&)> value;  // std::nullopt: not given
+  // Where one design has the head (or the strings) and the other not, only
+  // the first field of it is named.
+  Within within = Within::kDesign;
+  bool first = true;
 };
 
 template <typename T>
@@ -250,11 +258,13 @@ const std::vector<InputField>& input_fields() {
          return swingweight_kg_m2(d.implement.frame_mass_properties());
        }},
       {Part::kImplementShape, "head size", "cm²", 1e4,
-       [](D d) { return d.head ? std::optional(d.head->area_m2) : std::nullopt; }},
+       [](D d) { return d.head ? std::optional(d.head->area_m2) : std::nullopt; }, Within::kHead},
       {Part::kImplementShape, "head's aspect ratio", "", 1.0,
-       [](D d) { return d.head ? std::optional(d.head->aspect_ratio) : std::nullopt; }},
+       [](D d) { return d.head ? std::optional(d.head->aspect_ratio) : std::nullopt; },
+       Within::kHead, false},
       {Part::kImplementShape, "hoop width", "cm", 100.0,
-       [](D d) { return d.head ? std::optional(d.head->hoop_width_m) : std::nullopt; }},
+       [](D d) { return d.head ? std::optional(d.head->hoop_width_m) : std::nullopt; },
+       Within::kHead, false},
       {Part::kImplementShape, "twistweight", "kg·cm²", 1e4,
        [](D d) { return given(d.twistweight_kg_m2); }},
       {Part::kFrame, "COR", "", 1.0, [](D d) -> std::optional<double> { return d.cor; }},
@@ -270,13 +280,17 @@ const std::vector<InputField>& input_fields() {
       {Part::kFrame, "cross-section's thickness", "mm", 1000.0,
        [](D d) -> std::optional<double> { return d.stiffness.thickness_m; }},
       {Part::kStrings, "tension", "N", 1.0,
-       [](D d) { return d.strings ? std::optional(d.strings->tension_N) : std::nullopt; }},
+       [](D d) { return d.strings ? std::optional(d.strings->tension_N) : std::nullopt; },
+       Within::kStrings},
       {Part::kStrings, "spacing", "mm", 1000.0,
-       [](D d) { return d.strings ? std::optional(d.strings->string_spacing_m) : std::nullopt; }},
+       [](D d) { return d.strings ? std::optional(d.strings->string_spacing_m) : std::nullopt; },
+       Within::kStrings, false},
       {Part::kStrings, "strung radius", "cm", 100.0,
-       [](D d) { return d.strings ? std::optional(d.strings->head_radius_m) : std::nullopt; }},
+       [](D d) { return d.strings ? std::optional(d.strings->head_radius_m) : std::nullopt; },
+       Within::kStrings, false},
       {Part::kStrings, "contact radius", "cm", 100.0,
-       [](D d) { return d.strings ? std::optional(d.strings->contact_radius_m) : std::nullopt; }},
+       [](D d) { return d.strings ? std::optional(d.strings->contact_radius_m) : std::nullopt; },
+       Within::kStrings, false},
       {Part::kStrings, "impact duration", "ms", 1000.0,
        [](D d) -> std::optional<double> { return d.impact_duration_s; }},
       {Part::kStrings, "moving mass", "g", 1000.0,
@@ -329,18 +343,22 @@ std::string from_to(std::optional<double> a, std::optional<double> b, double fac
     return v ? io::significant(*v * factor, digits) : std::string("none");
   };
   while (digits < 17 && text(a) == text(b)) ++digits;
-  return fmt::format("{} → {}{}{}", text(a), text(b), unit.empty() ? "" : " ", unit);
+  const std::string with_unit = unit.empty() ? "" : " " + std::string(unit);
+  // "645.2 cm² → none": the unit goes with the number.
+  if (a && !b) return fmt::format("{}{} → none", text(a), with_unit);
+  return fmt::format("{} → {}{}", text(a), text(b), b ? with_unit : "");
 }
 
 // What differs in a list of parts (sections, point masses), entry by entry.
 template <typename T>
 void list_differences(
-    Part part, const char* what, const std::vector<T>& a, const std::vector<T>& b,
+    Part part, const char* what, const char* plural, const std::vector<T>& a,
+    const std::vector<T>& b,
     const std::vector<std::tuple<const char*, const char*, double,
                                  std::function<std::optional<double>(const T&)>>>& fields,
     std::vector<std::pair<Part, std::string>>& out) {
   if (a.size() != b.size())
-    out.emplace_back(part, fmt::format("number of {}s {} → {}", what, a.size(), b.size()));
+    out.emplace_back(part, fmt::format("number of {} {} → {}", plural, a.size(), b.size()));
   for (std::size_t k = 0; k < std::max(a.size(), b.size()); ++k) {
     for (const auto& [name, unit, factor, value] : fields) {
       const auto va = k < a.size() ? value(a[k]) : std::nullopt;
@@ -355,14 +373,21 @@ void list_differences(
 // Every input that differs between the two read designs, field by field, by part.
 std::vector<std::pair<Part, std::string>> field_differences(const Design& a, const Design& b) {
   std::vector<std::pair<Part, std::string>> out;
+  const auto one_has = [&](Within within) {
+    return within == Within::kHead      ? a.head.has_value() != b.head.has_value()
+           : within == Within::kStrings ? a.strings.has_value() != b.strings.has_value()
+                                        : false;
+  };
   for (const InputField& f : input_fields()) {
+    if (!f.first && one_has(f.within)) continue;
     const auto va = f.value(a), vb = f.value(b);
     if (!same_number(va, vb))
       out.emplace_back(f.part, fmt::format("{} {}", f.name, from_to(va, vb, f.factor, f.unit)));
   }
   using SectionField = std::function<std::optional<double>(const Section&)>;
   list_differences<Section>(
-      Part::kMassDistribution, "section", a.implement.sections(), b.implement.sections(),
+      Part::kMassDistribution, "section", "sections", a.implement.sections(),
+      b.implement.sections(),
       {{"length", "cm", 100.0,
         SectionField([](const Section& s) -> std::optional<double> { return s.length_m; })},
        {"mass", "g", 1000.0,
@@ -371,7 +396,8 @@ std::vector<std::pair<Part, std::string>> field_differences(const Design& a, con
       out);
   using PointField = std::function<std::optional<double>(const PointMass&)>;
   list_differences<PointMass>(
-      Part::kMassDistribution, "point mass", a.implement.point_masses(), b.implement.point_masses(),
+      Part::kMassDistribution, "point mass", "point masses", a.implement.point_masses(),
+      b.implement.point_masses(),
       {{"mass", "g", 1000.0,
         PointField([](const PointMass& p) -> std::optional<double> { return p.mass_kg; })},
        {"distance from the butt", "cm", 100.0,

@@ -80,6 +80,10 @@ TEST_CASE("compare names what differs in the implement, never calling it the sam
   // digits that tell the two apart.
   CHECK(inputs_sentence(with("/implement/mass_g", 305.0001)) ==
         "B against A: frame mass 305 → 305.0001 g.");
+  // A head on one and not the other: its size, not the shape of a head that is not there.
+  io::Json headless = with("/implement/mass_g", 305);
+  headless["implement"].erase("headsize_sq_in");
+  CHECK(inputs_sentence(headless) == "B against A: head size 645.2 cm² → none.");
   // The implement and the ball at once.
   io::Json b = with("/implement/headsize_sq_in", 110);
   b["ball"]["speed_m_s"] = 40;
