@@ -56,7 +56,11 @@ int OptimizeCommand::run() const {
   // the least violating design and each violated constraint. It is not the
   // answer asked for, so it never replaces an --output file: it goes to
   // standard output, and the file is left as it was.
-  const bool optimum = result.outcome == io::Outcome::kOptimum;
+  // A best design whose printed form does not give the search's numbers is
+  // a defect of sweetspot, never an answer: the report (with the printed
+  // design's values) goes to standard output and the run ends with exit 1.
+  const bool consistent = result.inconsistency.empty();
+  const bool optimum = result.outcome == io::Outcome::kOptimum && consistent;
   const std::string report = io::optimization_report(study, result, out.parsed(), true);
   if (optimum && !html.empty()) {
     if (!out.output.empty()) out.emit(report);
@@ -80,6 +84,11 @@ int OptimizeCommand::run() const {
   for (const std::string& file : {out.output, html})
     if (!file.empty()) kept_files += (kept_files.empty() ? "" : " and ") + io::one_line(file);
   const std::string kept = kept_files.empty() ? "" : " (" + kept_files + " left as it was)";
+  if (!consistent) {
+    std::cerr << "sweetspot: internal error: " << io::one_line(study.source) << ": "
+              << io::one_line(result.inconsistency) << kept << "\n";
+    return kExitRuntimeError;
+  }
   switch (result.outcome) {
     case io::Outcome::kOptimum:
       return kExitOk;

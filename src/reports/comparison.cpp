@@ -2,10 +2,13 @@
 
 #include <fmt/format.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <map>
 #include <optional>
+#include <tuple>
 
 #include "io/json_reader.hpp"
 #include "io/plot.hpp"
@@ -128,9 +131,17 @@ std::string where_hit(const ComparedDesign& c) {
                 : fmt::format("{} from the tip", cm_text(c.spots.asked.from_tip_m));
 }
 
-// The inputs that differ, in a player's words.
-std::vector<std::string> input_changes(const ComparedDesign& a, const ComparedDesign& b) {
+// The inputs that differ, in a player's words, and which differences of the
+// read designs those words describe.
+struct PlayerWords {
   std::vector<std::string> changes;
+  bool mass_distribution = false;  // lead, mass, balance or swingweight
+  bool tension = false;
+};
+
+PlayerWords input_changes(const ComparedDesign& a, const ComparedDesign& b) {
+  PlayerWords words;
+  std::vector<std::string>& changes = words.changes;
   const Evaluation& ea = a.spots.asked.evaluation;
   const Evaluation& eb = b.spots.asked.evaluation;
   const auto& pa = a.design.design.implement.point_masses();
@@ -158,19 +169,243 @@ std::vector<std::string> input_changes(const ComparedDesign& a, const ComparedDe
   if (std::fabs(ds) >= 0.5)
     changes.push_back(
         fmt::format("a swingweight {:.0f} kg·cm² {}", std::fabs(ds), ds > 0 ? "higher" : "lower"));
+  words.mass_distribution = !changes.empty();
   const auto& sa = a.design.design.strings;
   const auto& sb = b.design.design.strings;
-  if (sa && sb && std::fabs(sa->tension_N - sb->tension_N) >= 0.5 * kNewtonsPerPound)
+  if (sa && sb && std::fabs(sa->tension_N - sb->tension_N) >= 0.5 * kNewtonsPerPound) {
     changes.push_back(fmt::format("strings at {:.0f} lb instead of {:.0f} lb",
                                   sb->tension_N / kNewtonsPerPound,
                                   sa->tension_N / kNewtonsPerPound));
+    words.tension = true;
+  }
   if (ea.modal && eb.modal &&
       std::fabs(ea.modal->fundamental_free_Hz - eb.modal->fundamental_free_Hz) >= 1.0)
     // The frequency falls with added mass as well as with a softer frame:
     // say what changed, not why.
     changes.push_back(fmt::format("a frame vibrating at {:.0f} Hz instead of {:.0f} Hz (free)",
                                   eb.modal->fundamental_free_Hz, ea.modal->fundamental_free_Hz));
-  return changes;
+  return words;
+}
+
+// Every input of a read design, by the part of the design it belongs to:
+// what `compare` checks field by field before it compares any output.
+enum class Part {
+  kImplementShape,
+  kMassDistribution,
+  kFrame,
+  kStrings,
+  kHand,
+  kForearm,
+  kBall,
+  kImpact
+};
+
+constexpr const char* kPartNames[] = {"the implement", "the implement", "the frame", "the strings",
+                                      "the hand",      "the forearm",   "the ball",  "the impact"};
+// What goes before a field's name in a list of several parts' fields ("the
+// ball's speed"); the implement's own fields read on their own ("head size").
+constexpr const char* kPossessives[] = {"",
+                                        "",
+                                        "the frame's ",
+                                        "the strings' ",
+                                        "the hand's ",
+                                        "the forearm's ",
+                                        "the ball's ",
+                                        "the impact's "};
+
+// The players' side of a comparison: the hand, the forearm, the ball and
+// the impact. The rest is the implement (its frame and strings included).
+bool is_racquet(Part part) {
+  return part == Part::kImplementShape || part == Part::kMassDistribution || part == Part::kFrame ||
+         part == Part::kStrings;
+}
+
+// What a field belongs to when it is not always there: a head's shape is no
+// input of a design without a head, nor a string bed's of one without strings.
+enum class Within { kDesign, kHead, kStrings };
+
+struct InputField {
+  Part part;
+  const char* name;                                           // "speed", read after the part's name
+  const char* unit;                                           // as people read it: "m/s", "g", "cm"
+  double factor;                                              // from SI to `unit`
+  std::function<std::optional<double>(const Design&)> value;  // std::nullopt: not given
+  // Where one design has the head (or the strings) and the other not, only
+  // the first field of it is named.
+  Within within = Within::kDesign;
+  bool first = true;
+};
+
+template <typename T>
+std::optional<double> given(const std::optional<T>& value) {
+  if (!value) return std::nullopt;
+  return static_cast<double>(*value);
+}
+
+const std::vector<InputField>& input_fields() {
+  using D = const Design&;
+  static const std::vector<InputField> kFields{
+      {Part::kImplementShape, "length", "cm", 100.0,
+       [](D d) -> std::optional<double> { return d.implement.length_m(); }},
+      {Part::kMassDistribution, "frame mass", "g", 1000.0,
+       [](D d) -> std::optional<double> { return d.implement.frame_mass_properties().mass_kg; }},
+      {Part::kMassDistribution, "frame balance from the butt", "cm", 100.0,
+       [](D d) -> std::optional<double> {
+         return d.implement.frame_mass_properties().com_from_butt_m;
+       }},
+      {Part::kMassDistribution, "frame swingweight", "kg·cm²", 1e4,
+       [](D d) -> std::optional<double> {
+         return swingweight_kg_m2(d.implement.frame_mass_properties());
+       }},
+      {Part::kImplementShape, "head size", "cm²", 1e4,
+       [](D d) { return d.head ? std::optional(d.head->area_m2) : std::nullopt; }, Within::kHead},
+      {Part::kImplementShape, "head's aspect ratio", "", 1.0,
+       [](D d) { return d.head ? std::optional(d.head->aspect_ratio) : std::nullopt; },
+       Within::kHead, false},
+      {Part::kImplementShape, "hoop width", "cm", 100.0,
+       [](D d) { return d.head ? std::optional(d.head->hoop_width_m) : std::nullopt; },
+       Within::kHead, false},
+      {Part::kImplementShape, "twistweight", "kg·cm²", 1e4,
+       [](D d) { return given(d.twistweight_kg_m2); }},
+      {Part::kFrame, "COR", "", 1.0, [](D d) -> std::optional<double> { return d.cor; }},
+      {Part::kFrame, "COR on a rigid frame", "", 1.0, [](D d) { return given(d.cor_rigid); }},
+      {Part::kFrame, "EI", "N·m²", 1.0, [](D d) { return given(d.stiffness.EI_N_m2); }},
+      {Part::kFrame, "free fundamental", "Hz", 1.0,
+       [](D d) { return given(d.stiffness.fundamental_free_Hz); }},
+      {Part::kFrame, "RA", "", 1.0, [](D d) { return given(d.stiffness.RA); }},
+      {Part::kFrame, "shear modulus", "Pa", 1.0,
+       [](D d) { return given(d.stiffness.shear_modulus_Pa); }},
+      {Part::kFrame, "cross-section's width", "mm", 1000.0,
+       [](D d) -> std::optional<double> { return d.stiffness.width_m; }},
+      {Part::kFrame, "cross-section's thickness", "mm", 1000.0,
+       [](D d) -> std::optional<double> { return d.stiffness.thickness_m; }},
+      {Part::kStrings, "tension", "N", 1.0,
+       [](D d) { return d.strings ? std::optional(d.strings->tension_N) : std::nullopt; },
+       Within::kStrings},
+      {Part::kStrings, "spacing", "mm", 1000.0,
+       [](D d) { return d.strings ? std::optional(d.strings->string_spacing_m) : std::nullopt; },
+       Within::kStrings, false},
+      {Part::kStrings, "strung radius", "cm", 100.0,
+       [](D d) { return d.strings ? std::optional(d.strings->head_radius_m) : std::nullopt; },
+       Within::kStrings, false},
+      {Part::kStrings, "contact radius", "cm", 100.0,
+       [](D d) { return d.strings ? std::optional(d.strings->contact_radius_m) : std::nullopt; },
+       Within::kStrings, false},
+      {Part::kStrings, "impact duration", "ms", 1000.0,
+       [](D d) -> std::optional<double> { return d.impact_duration_s; }},
+      {Part::kStrings, "moving mass", "g", 1000.0,
+       [](D d) -> std::optional<double> { return d.string_bed_mass_kg; }},
+      {Part::kStrings, "damping ratio", "", 1.0,
+       [](D d) -> std::optional<double> { return d.string_bed_damping_ratio; }},
+      {Part::kHand, "mass", "g", 1000.0,
+       [](D d) -> std::optional<double> { return d.hand.mass_kg; }},
+      {Part::kHand, "centre from the butt", "cm", 100.0,
+       [](D d) -> std::optional<double> { return d.hand.center_from_butt_m; }},
+      {Part::kHand, "grip length", "cm", 100.0,
+       [](D d) -> std::optional<double> { return d.hand.grip_length_m; }},
+      {Part::kHand, "grip stiffness", "N/m²", 1.0,
+       [](D d) -> std::optional<double> { return d.hand.grip_stiffness_N_m2; }},
+      {Part::kHand, "grip damping", "N·s/m²", 1.0,
+       [](D d) -> std::optional<double> { return d.hand.grip_damping_N_s_m2; }},
+      {Part::kForearm, "equivalent mass", "g", 1000.0,
+       [](D d) -> std::optional<double> { return d.forearm_equivalent_mass_kg; }},
+      {Part::kBall, "mass", "g", 1000.0,
+       [](D d) -> std::optional<double> { return d.ball.mass_kg; }},
+      {Part::kBall, "speed", "m/s", 1.0,
+       [](D d) -> std::optional<double> { return d.ball.speed_m_s; }},
+      {Part::kBall, "contact stiffness", "", 1.0,
+       [](D d) -> std::optional<double> { return d.ball_contact.stiffness; }},
+      {Part::kBall, "contact exponent", "", 1.0,
+       [](D d) -> std::optional<double> { return d.ball_contact.exponent; }},
+      {Part::kBall, "contact damping", "", 1.0,
+       [](D d) -> std::optional<double> { return d.ball_contact.damping; }},
+      {Part::kBall, "contact damping exponent", "", 1.0,
+       [](D d) -> std::optional<double> { return d.ball_contact.damping_exponent; }},
+      {Part::kImpact, "distance from the tip", "cm", 100.0,
+       [](D d) -> std::optional<double> { return d.implement.length_m() - d.impact_from_butt_m; }},
+      {Part::kImpact, "distance off the axis", "cm", 100.0,
+       [](D d) -> std::optional<double> { return d.impact_off_axis_m; }},
+  };
+  return kFields;
+}
+
+bool same_number(std::optional<double> a, std::optional<double> b) {
+  if (!a || !b) return a.has_value() == b.has_value();
+  return std::bit_cast<std::uint64_t>(*a) == std::bit_cast<std::uint64_t>(*b) ||
+         (*a == 0.0 && *b == 0.0);  // -0 is 0
+}
+
+// "50 → 40 m/s": as many digits as it takes to tell the two apart.
+std::string from_to(std::optional<double> a, std::optional<double> b, double factor,
+                    std::string_view unit) {
+  int digits = 4;
+  const auto text = [&](std::optional<double> v) {
+    return v ? io::significant(*v * factor, digits) : std::string("none");
+  };
+  while (digits < 17 && text(a) == text(b)) ++digits;
+  const std::string with_unit = unit.empty() ? "" : " " + std::string(unit);
+  // "645.2 cm² → none": the unit goes with the number.
+  if (a && !b) return fmt::format("{}{} → none", text(a), with_unit);
+  return fmt::format("{} → {}{}", text(a), text(b), b ? with_unit : "");
+}
+
+// What differs in a list of parts (sections, point masses), entry by entry.
+template <typename T>
+void list_differences(
+    Part part, const char* what, const char* plural, const std::vector<T>& a,
+    const std::vector<T>& b,
+    const std::vector<std::tuple<const char*, const char*, double,
+                                 std::function<std::optional<double>(const T&)>>>& fields,
+    std::vector<std::pair<Part, std::string>>& out) {
+  if (a.size() != b.size())
+    out.emplace_back(part, fmt::format("number of {} {} → {}", plural, a.size(), b.size()));
+  for (std::size_t k = 0; k < std::max(a.size(), b.size()); ++k) {
+    for (const auto& [name, unit, factor, value] : fields) {
+      const auto va = k < a.size() ? value(a[k]) : std::nullopt;
+      const auto vb = k < b.size() ? value(b[k]) : std::nullopt;
+      if (!same_number(va, vb))
+        out.emplace_back(
+            part, fmt::format("{} {}'s {} {}", what, k + 1, name, from_to(va, vb, factor, unit)));
+    }
+  }
+}
+
+// Every input that differs between the two read designs, field by field, by part.
+std::vector<std::pair<Part, std::string>> field_differences(const Design& a, const Design& b) {
+  std::vector<std::pair<Part, std::string>> out;
+  const auto one_has = [&](Within within) {
+    return within == Within::kHead      ? a.head.has_value() != b.head.has_value()
+           : within == Within::kStrings ? a.strings.has_value() != b.strings.has_value()
+                                        : false;
+  };
+  for (const InputField& f : input_fields()) {
+    if (!f.first && one_has(f.within)) continue;
+    const auto va = f.value(a), vb = f.value(b);
+    if (!same_number(va, vb))
+      out.emplace_back(f.part, fmt::format("{} {}", f.name, from_to(va, vb, f.factor, f.unit)));
+  }
+  using SectionField = std::function<std::optional<double>(const Section&)>;
+  list_differences<Section>(
+      Part::kMassDistribution, "section", "sections", a.implement.sections(),
+      b.implement.sections(),
+      {{"length", "cm", 100.0,
+        SectionField([](const Section& s) -> std::optional<double> { return s.length_m; })},
+       {"mass", "g", 1000.0,
+        SectionField([](const Section& s) -> std::optional<double> { return s.mass_kg; })},
+       {"EI", "N·m²", 1.0, SectionField([](const Section& s) { return given(s.EI_N_m2); })}},
+      out);
+  using PointField = std::function<std::optional<double>(const PointMass&)>;
+  list_differences<PointMass>(
+      Part::kMassDistribution, "point mass", "point masses", a.implement.point_masses(),
+      b.implement.point_masses(),
+      {{"mass", "g", 1000.0,
+        PointField([](const PointMass& p) -> std::optional<double> { return p.mass_kg; })},
+       {"distance from the butt", "cm", 100.0,
+        PointField([](const PointMass& p) -> std::optional<double> { return p.from_butt_m; })},
+       {"distance off the axis", "cm", 100.0,
+        PointField([](const PointMass& p) -> std::optional<double> { return p.off_axis_m; })}},
+      out);
+  return out;
 }
 
 std::string joined(const std::vector<std::string>& parts) {
@@ -179,6 +414,52 @@ std::string joined(const std::vector<std::string>& parts) {
     text += (k == 0 ? "" : k + 1 == parts.size() ? " and " : ", ") + parts[k];
   }
   return text;
+}
+
+// What differs between the inputs of the two designs, before any output: the
+// implement in a player's words where they say it (lead, mass, balance,
+// swingweight, tension, the frame's frequency), every other field of the
+// read designs that differs by name, and "the same implement" only when no
+// field of the implement, its frame or its strings differs.
+std::string inputs_sentence(const ComparedDesign& a, const ComparedDesign& b) {
+  const PlayerWords words = input_changes(a, b);
+  std::vector<std::string> racquet = words.changes;
+  std::vector<Part> players_parts;
+  std::map<Part, std::vector<std::string>> by_part;
+  bool racquet_differs = false;
+  for (const auto& [part, text] : field_differences(a.design.design, b.design.design)) {
+    if (is_racquet(part)) {
+      racquet_differs = true;
+      const bool said = (part == Part::kMassDistribution && words.mass_distribution) ||
+                        (part == Part::kStrings && words.tension && text.starts_with("tension "));
+      if (!said) racquet.push_back(kPossessives[static_cast<int>(part)] + text);
+      continue;
+    }
+    if (!by_part.count(part)) players_parts.push_back(part);
+    by_part[part].push_back(text);
+  }
+  racquet_differs = racquet_differs || !words.changes.empty();
+  std::string others;
+  if (players_parts.size() == 1) {
+    const Part part = players_parts.front();
+    others = fmt::format("{} {} differs: {}", racquet_differs ? "and" : "only",
+                         kPartNames[static_cast<int>(part)], joined(by_part[part]));
+  } else if (!players_parts.empty()) {
+    std::vector<std::string> names, details;
+    for (const Part part : players_parts) {
+      names.emplace_back(kPartNames[static_cast<int>(part)]);
+      for (const std::string& text : by_part[part])
+        details.push_back(kPossessives[static_cast<int>(part)] + text);
+    }
+    others = fmt::format("{}{} differ: {}", racquet_differs ? "and " : "", joined(names),
+                         joined(details));
+  }
+  if (!racquet_differs) {
+    return "the same implement" +
+           (others.empty() ? std::string(", held and hit the same way") : "; " + others);
+  }
+  // A difference too small for the player's words is still named.
+  return joined(racquet) + (others.empty() ? "" : "; " + others);
 }
 
 }  // namespace
@@ -192,10 +473,8 @@ ComparedDesign compare_one(io::DesignFile design, std::string_view fidelity, dou
 
 std::vector<std::string> differences(const ComparedDesign& a, const ComparedDesign& b) {
   std::vector<std::string> sentences;
-  const std::vector<std::string> changes = input_changes(a, b);
   sentences.push_back(
-      fmt::format("{} against {}: {}.", b.design.name, a.design.name,
-                  changes.empty() ? std::string("the same implement") : joined(changes)));
+      fmt::format("{} against {}: {}.", b.design.name, a.design.name, inputs_sentence(a, b)));
   std::vector<std::string> effects;
   if (const auto m = moved(cop_of(a), cop_of(b)))
     effects.push_back("the hand-held centre of percussion " + *m);

@@ -23,9 +23,13 @@ struct ComparedDesign {
 // io::evaluate_design_file, naming the file and the JSON path.
 ComparedDesign compare_one(io::DesignFile design, std::string_view fidelity, double rel_tol);
 
-// What changes from `before` to `after` that a player would notice, one
-// sentence each: the inputs that differ (mass, balance, swingweight, lead,
-// tension, stiffness), then where the sweet spots move (0.5 cm or more) and
+// What changes from `before` to `after`, one sentence each: first every input
+// of the read designs that differs (the implement in a player's words where
+// they apply: lead, mass, balance, swingweight, tension, the frame's
+// frequency; any other field of the implement, its frame, its strings, the
+// hand, the forearm, the ball or the impact by name, "50 → 40 m/s"; "the same
+// implement" only when none of the implement's differs), then what a player
+// would notice: where the sweet spots move (0.5 cm or more) and
 // how the wrist force (2 % or more) and the rebound (0.01 or more) change at
 // the impact asked about and at the sweet spots. "No difference that matters"
 // when nothing passes those thresholds.

@@ -137,6 +137,11 @@ std::vector<std::string> answer_paragraphs(const Study& study, const Optimizatio
         "these designs get.",
         significant(lead.target), significant(*best_lead, 4), lead.output->unit));
   }
+  if (!r.inconsistency.empty()) {
+    std::string sentence = r.inconsistency;
+    sentence[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(sentence[0])));
+    paragraphs.push_back("**Internal error.** " + sentence + ".");
+  }
   return paragraphs;
 }
 
@@ -153,7 +158,8 @@ std::string optimization_report(const Study& study, const OptimizationResult& r,
     j["name"] = study.name;
     j["outcome"] = outcome_name(r.outcome);
     if (r.outcome == Outcome::kNoValue) j["no_value_reason"] = r.no_value;
-    j["best_design"] = design_to_json(r.best);
+    j["best_design"] = r.best_document;
+    if (!r.inconsistency.empty()) j["inconsistency"] = r.inconsistency;
     j["objective_value"] = has_value ? Json(r.summary.objective) : Json(nullptr);
     j["start_objective_value"] = r.start_objective ? Json(*r.start_objective) : Json(nullptr);
     j["feasible"] = r.outcome == Outcome::kOptimum;
@@ -241,7 +247,7 @@ std::string optimization_report(const Study& study, const OptimizationResult& r,
                     : r.outcome == Outcome::kInfeasible ? "\nThe least violating design"
                                                         : "\nThe last design the search kept") +
         " as a design file (`sweetspot evaluate` accepts it):\n\n```json\n" +
-        design_to_json(r.best).dump(2, ' ', false, Json::error_handler_t::replace) + "\n```\n";
+        r.best_document.dump(2, ' ', false, Json::error_handler_t::replace) + "\n```\n";
   return md;
 }
 
@@ -471,8 +477,7 @@ std::string optimization_html(const Study& study, const OptimizationResult& r) {
   html += fmt::format(
       "<details><summary>{} as a design file (<code>sweetspot evaluate</code> accepts it)"
       "</summary><pre id=\"best-design\">{}</pre></details>\n</section>\n",
-      best_title,
-      html_escape(design_to_json(r.best).dump(2, ' ', false, Json::error_handler_t::replace)));
+      best_title, html_escape(r.best_document.dump(2, ' ', false, Json::error_handler_t::replace)));
   return html + html_page_close("Computed by sweetspot from <code>" + html_escape(study.source) +
                                 "</code>, after R. Cross, \"Center of percussion of hand-held "
                                 "implements\", Am. J. Phys. 72 (2004). Positions are measured "

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <sstream>
+#include <stdexcept>
 
 #include "io/atomic_file.hpp"
 #include "io/input_error.hpp"
@@ -109,6 +110,11 @@ void write_reports(const std::string& designs_dir, const std::string& out_dir, s
     const std::string stem = "studies/" + path.stem().string();
     if (!study.objective.empty()) {
       const OptimizationResult result = run_optimization(study);
+      // A shipped study whose printed best design does not re-evaluate to
+      // the search's numbers is a defect of sweetspot, never a report.
+      if (!result.inconsistency.empty()) {
+        throw std::runtime_error("internal error: " + study.source + ": " + result.inconsistency);
+      }
       const std::string md = optimization_report(study, result, Format::kMarkdown, false);
       write.text(stem + ".md", md);
       write.plot(stem + ".png", convergence_plot(study, result));

@@ -3,7 +3,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <memory>
 
@@ -77,30 +79,7 @@ bool minimizes_square(const Study& study) {
 
 }  // namespace
 
-void EvaluationMemo::keep(std::span<const double> x, double objective, const Evaluation& e) {
-  const std::lock_guard<std::mutex> lock(mutex_);
-  if (!at_start_) {  // minimize() evaluates the start first
-    start_.assign(x.begin(), x.end());
-    at_start_ = e;
-  }
-  if (!at_best_ || objective < best_objective_) {
-    best_.assign(x.begin(), x.end());
-    at_best_ = e;
-    best_objective_ = objective;
-  }
-}
-
-std::optional<Evaluation> EvaluationMemo::at(std::span<const double> x) const {
-  const std::lock_guard<std::mutex> lock(mutex_);
-  const auto same = [&](const std::vector<double>& y) {
-    return std::equal(x.begin(), x.end(), y.begin(), y.end());
-  };
-  if (at_start_ && same(start_)) return at_start_;
-  if (at_best_ && same(best_)) return at_best_;
-  return std::nullopt;
-}
-
-Problem make_problem(const Study& study, std::shared_ptr<EvaluationMemo> memo) {
+Problem make_problem(const Study& study) {
   Problem problem;
   for (const StudyVariable& v : study.variables) {
     problem.lower.push_back(v.min);
@@ -124,19 +103,18 @@ Problem make_problem(const Study& study, std::shared_ptr<EvaluationMemo> memo) {
   // Each point is set on the study's compiled design (one working copy per
   // evaluate function, so a fork runs beside it); a point it cannot vouch
   // for is read from JSON (design_at).
-  const auto make_evaluate = [&study, constraints, square, memo]() -> EvaluateFunction {
+  const auto make_evaluate = [&study, constraints, square]() -> EvaluateFunction {
     const auto bound = compiled_for_variables(study)
                            ? std::make_shared<BoundDesign>(*study.compiled)
                            : std::shared_ptr<BoundDesign>();
-    return [&study, constraints, square, bound, memo](std::span<const double> x, double& f,
-                                                      std::span<double> c) {
+    return [&study, constraints, square, bound](std::span<const double> x, double& f,
+                                                std::span<double> c) {
       const auto at = [&](const Design& design) {
         const Evaluation e = evaluate_in(study, design);
         f = study.over_impacts ? objective_of(study, design) : terms_value(study, e);
         if (square) f *= f;
         for (std::size_t k = 0; k < constraints.size(); ++k)
           c[k] = constraint_value(constraints[k], e);
-        if (memo) memo->keep(x, f, e);
       };
       try {
         if (const Design* design = bound ? bound->at(x) : nullptr) return at(*design);
@@ -168,7 +146,99 @@ std::optional<Evaluation> outputs_of(const Study& study, const DesignFile& desig
   }
 }
 
+// The objective (in the minimised form) and the signed constraint values at
+// one point, as the search's evaluate functions give them.
+struct PointValues {
+  double objective = kPenalty;
+  std::vector<double> constraints;
+};
+
+PointValues searched_values(const Problem& problem, std::span<const double> x) {
+  PointValues v;
+  v.constraints.assign(problem.constraints.size(), kPenalty);
+  problem.evaluate(x, v.objective, v.constraints);
+  return v;
+}
+
+// The same numbers for the printed design read again: its evaluation as
+// `evaluate` gives it (std::nullopt: refused), with the search's arithmetic.
+PointValues reread_values(const Study& study, const DesignFile& reread,
+                          const std::optional<Evaluation>& e) {
+  const std::vector<ProblemConstraint> constraints = expand_constraints(study);
+  PointValues v;
+  v.constraints.assign(constraints.size(), kPenalty);
+  if (!e) return v;
+  try {
+    v.objective = study.over_impacts ? objective_of(study, reread) : terms_value(study, *e);
+  } catch (const std::exception&) {
+    v.objective = kPenalty;
+  }
+  if (minimizes_square(study)) v.objective *= v.objective;
+  for (std::size_t k = 0; k < constraints.size(); ++k)
+    v.constraints[k] = constraint_value(constraints[k], *e);
+  return v;
+}
+
+bool same_bits(double a, double b) {
+  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+}
+
+// The reported (not minimised) form of an objective value.
+double reported_objective(const Study& study, double minimised) {
+  return minimizes_square(study) ? std::sqrt(minimised) : minimised;
+}
+
+// "" when the search's numbers at its best point are, bit for bit, those of
+// the printed design read again and of the summary; else what differs.
+std::string compare_values(const Study& study, const Summary& summary, const PointValues& searched,
+                           const PointValues& reread) {
+  std::string differs;
+  const auto add = [&](const std::string& what) {
+    differs += (differs.empty() ? "" : "; ") + what;
+  };
+  const double searched_objective = reported_objective(study, searched.objective);
+  if (!same_bits(searched.objective, reread.objective) ||
+      !same_bits(summary.objective, searched_objective)) {
+    add(fmt::format("objective {} (the search) against {} (the printed design)",
+                    exact(summary.objective), exact(reported_objective(study, reread.objective))));
+  }
+  const std::vector<ProblemConstraint> constraints = expand_constraints(study);
+  for (std::size_t k = 0; k < constraints.size(); ++k) {
+    if (!same_bits(searched.constraints[k], reread.constraints[k])) {
+      add(fmt::format("`{}` off its limit by {} (the search) against {} (the printed design)",
+                      constraint_name(constraints[k]), exact(searched.constraints[k]),
+                      exact(reread.constraints[k])));
+    }
+  }
+  return differs;
+}
+
 }  // namespace
+
+Json printed_design(const Study& study, std::span<const double> x, const DesignFile& at_x) {
+  Json printed = document_at(study, x);
+  // Notes about the starting design, not this one.
+  for (const char* key : {"$schema", "description", "reference"}) printed.erase(key);
+  // The impact the study evaluated, written out: a command's default impact
+  // need not be the study's.
+  const auto impact = at_x.provenance.find("impact/from_butt_m");
+  if (impact == at_x.provenance.end() || impact->second.starts_with("default")) {
+    if (!printed.contains("impact") || !printed["impact"].is_object())
+      printed["impact"] = Json::object();
+    printed["impact"]["from_butt_m"] = at_x.design.impact_from_butt_m;
+  }
+  // The model the study evaluated with, when the file's own would be another.
+  const std::string own = printed.contains("fidelity") && printed["fidelity"].is_string()
+                              ? printed["fidelity"].get<std::string>()
+                              : std::string("auto");
+  bool same_model = false;
+  try {
+    same_model = resolve_fidelity(own, at_x.design) == study.fidelity;
+  } catch (const std::invalid_argument&) {
+  }
+  if (!same_model) printed["fidelity"] = std::string(to_string(study.fidelity));
+  return printed;
+}
 
 OptimizationResult run_optimization(const Study& study) {
   if (study.objective.empty())
@@ -181,8 +251,7 @@ OptimizationResult run_optimization(const Study& study) {
                            significant(v.min) + ")");
     }
   }
-  const auto memo = std::make_shared<EvaluationMemo>();
-  const Problem problem = make_problem(study, memo);
+  const Problem problem = make_problem(study);
   Summary summary = minimize(problem, study.options);
   if (minimizes_square(study)) {
     summary.objective = std::sqrt(summary.objective);
@@ -208,14 +277,46 @@ OptimizationResult run_optimization(const Study& study) {
     return study.over_impacts || !outputs ? objective_undefined(study, design)
                                           : terms_undefined(study, *outputs);
   };
-  r.start_outputs = memo->at(r.start_x);
-  if (!r.start_outputs) r.start_outputs = outputs_of(study, r.start, nullptr);
+  // The start as the study's file describes it (read, not the search's
+  // binding: the postcondition below holds the binding to the reader).
+  r.start_outputs = outputs_of(study, r.start, nullptr);
   if (!undefined(r.start, r.start_outputs)) {
     r.start_objective =
         study.over_impacts ? objective_of(study, r.start) : terms_value(study, *r.start_outputs);
   }
-  if (why.empty()) r.best_outputs = memo->at(r.summary.x);
-  if (!r.best_outputs) r.best_outputs = outputs_of(study, r.best, why.empty() ? &why : nullptr);
+
+  // The postcondition: the design the report prints, read back by the reader
+  // `evaluate` uses and evaluated as `evaluate` evaluates it, is the design
+  // the search evaluated. Everything reported about the best design comes
+  // from that re-read design.
+  r.best_document = printed_design(study, r.summary.x, r.best);
+  const std::string printed_source = study.source + " (its printed best design)";
+  std::optional<Evaluation> reread_outputs;
+  bool read_again = false;
+  try {
+    r.best =
+        read_design(parse_json(r.best_document.dump(2, ' ', false, Json::error_handler_t::replace),
+                               printed_source),
+                    printed_source);
+    read_again = true;
+    reread_outputs = evaluate_design_file(r.best, "", study.modal_tolerance);
+  } catch (const std::invalid_argument& e) {
+    // A refusal of the design read again is its answer (the objective has no
+    // value there); a printed design that cannot be read is the defect.
+    if (!read_again) why = std::string("the printed best design cannot be read: ") + e.what();
+  }
+  const PointValues searched = searched_values(problem, r.summary.x);
+  const PointValues reread = reread_values(study, r.best, reread_outputs);
+  r.inconsistency = compare_values(study, r.summary, searched, reread);
+  if (!r.inconsistency.empty()) {
+    r.summary.objective = reported_objective(study, reread.objective);
+    r.inconsistency =
+        "the search's own evaluation of its best design differs from the printed "
+        "design's, evaluated again as `sweetspot evaluate` does (a defect of "
+        "sweetspot; the report gives the printed design's values): " +
+        r.inconsistency;
+  }
+  r.best_outputs = reread_outputs;
   if (why.empty()) why = undefined(r.best, r.best_outputs).value_or("");
 
   for (const ProblemConstraint& pc : expand_constraints(study)) {

@@ -3,8 +3,6 @@
 // A study run as an optimisation: the problem handed to sweetspot::minimize
 // and the outcome with each constraint judged at the best design.
 
-#include <memory>
-#include <mutex>
 #include <optional>
 #include <span>
 #include <string>
@@ -15,27 +13,8 @@
 
 namespace sweetspot::io {
 
-// The evaluations of the start and of the point with the lowest objective
-// seen, which a study's evaluate functions (and their forks) keep, so that
-// the report does not evaluate them again (the modal model in the loop costs
-// hundreds of microseconds an evaluation).
-class EvaluationMemo {
- public:
-  void keep(std::span<const double> x, double objective, const Evaluation& e);
-  // The evaluation kept at exactly x, if any.
-  std::optional<Evaluation> at(std::span<const double> x) const;
-
- private:
-  mutable std::mutex mutex_;
-  std::vector<double> start_, best_;
-  std::optional<Evaluation> at_start_, at_best_;
-  double best_objective_ = 0.0;
-};
-
-// The study as an optimisation problem for sweetspot::minimize; with `memo`,
-// its evaluate functions keep the start's and the best point's evaluations
-// there.
-Problem make_problem(const Study& study, std::shared_ptr<EvaluationMemo> memo = nullptr);
+// The study as an optimisation problem for sweetspot::minimize.
+Problem make_problem(const Study& study);
 
 struct ConstraintReport {
   std::string name;             // "swingweight_kg_cm2 <= 330"
@@ -68,10 +47,32 @@ struct OptimizationResult {
   std::vector<ConstraintReport> constraints{};
   Outcome outcome = Outcome::kOptimum;
   std::string no_value{};  // kNoValue: why the best design gives the objective no value
+  // The best design exactly as the report prints it (printed_design); `best`,
+  // `best_outputs`, the objective and the constraints are this document read
+  // again and evaluated as `sweetspot evaluate` does.
+  Json best_document{};
+  // Empty, or why the search's own evaluation of its best design differs,
+  // bit for bit, from the printed design's: a defect of sweetspot (the report
+  // gives the printed design's values; `optimize` exits 1 with this line).
+  std::string inconsistency{};
 };
+
+// The study's design with the variables at x, as a design file `sweetspot
+// evaluate` reads as the design the study evaluated at x (`at_x`, read from
+// document_at): the study's document with the numbers set, the impact written
+// out when the file left it to the default, the study's fidelity when the
+// file's own would differ, and without the notes that describe the starting
+// design ("description", "reference", "$schema").
+Json printed_design(const Study& study, std::span<const double> x, const DesignFile& at_x);
 
 // Runs the study's optimisation. Throws InputError for a study that cannot be
 // optimised (no objective, a variable without a range).
+//
+// Postcondition: the best design is printed (printed_design), read back by the
+// reader `evaluate` uses and evaluated as `evaluate` evaluates it; its
+// objective and constraint values are compared bit for bit with the search's
+// own evaluation at the same point. The result reports the re-read design's
+// values; a difference is named in `inconsistency`.
 OptimizationResult run_optimization(const Study& study);
 
 }  // namespace sweetspot::io

@@ -538,12 +538,16 @@ bool compiled_for_variables(const Study& study) {
   return true;
 }
 
-DesignFile design_at(const Study& study, std::span<const double> x) {
+Json document_at(const Study& study, std::span<const double> x) {
   Json document = study.design_document;
   for (std::size_t i = 0; i < study.variables.size(); ++i) {
     document[Json::json_pointer(study.variables[i].pointer)] = x[i];
   }
-  return read_design(document, study.design_source);
+  return document;
+}
+
+DesignFile design_at(const Study& study, std::span<const double> x) {
+  return read_design(document_at(study, x), study.design_source);
 }
 
 namespace {

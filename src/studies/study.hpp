@@ -99,6 +99,10 @@ Evaluation evaluate_in(const Study& study, const Design& design);
 Study load_study(const std::string& path);
 Study read_study(const Json& document, const std::string& source, const std::string& folder);
 
+// The study's design document with the variables set to x (the numbers at
+// their pointers, nothing else changed): what design_at() reads.
+Json document_at(const Study& study, std::span<const double> x);
+
 // The design with the variables set to x. Throws InputError when x makes it invalid.
 DesignFile design_at(const Study& study, std::span<const double> x);
 

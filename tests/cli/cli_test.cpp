@@ -490,6 +490,53 @@ TEST_CASE(
   CHECK(nlohmann::json::parse(json.out)["outcome"] == "infeasible");
 }
 
+TEST_CASE(
+    "A best design that does not re-evaluate to the search's numbers is an internal error, exit "
+    "1") {
+  // Issue 20: with a clock pair listed before it, /implement/point_masses/2
+  // is the handle piece to the reader. Until every command indexes the list
+  // alike, the search may vary another piece: then the postcondition refuses
+  // to print it as the answer. Either way, the printed design is what
+  // `evaluate` reads, and its numbers are the report's.
+  const Sandbox box;
+  const fs::path study = box.file("clock-pair.json", R"({
+    "design": {
+      "implement": {"length_in": 27.0, "mass_g": 305, "balance_cm": 32.5,
+                    "swingweight_kg_cm2": 320, "headsize_sq_in": 100,
+                    "point_masses": [{"clock": 12, "mass_g": 3}, {"clock": [3, 9], "mass_g": 2},
+                                     {"clock": "handle", "mass_g": 5}]},
+      "frame": {"cor": 0.8}, "impact": {"from_tip_m": 0.16}},
+    "variables": [{"path": "/implement/point_masses/2/mass_g", "min": 0, "max": 30}],
+    "objective": {"output": "peak_wrist_force_N", "goal": "minimize"},
+    "constraints": [{"output": "swingweight_kg_cm2", "max": 340}]})");
+  const fs::path report = box.file("report.json", "an earlier report");
+  const Run run = box.run("optimize \"" + study.string() + "\" --format json --output \"" +
+                          report.string() + "\"");
+  REQUIRE((run.status == 0 || run.status == 1));
+  if (run.status == 1) {
+    // One line, the report (the printed design's values) on standard output, -o kept.
+    CHECK(std::count(run.err.begin(), run.err.end(), '\n') == 1);
+    CHECK(run.err.rfind("sweetspot: internal error: " + study.string() + ": the search's own", 0) ==
+          0);
+    CHECK(run.err.find(report.string() + " left as it was") != std::string::npos);
+    CHECK(slurp(report) == "an earlier report");
+    const nlohmann::json j = nlohmann::json::parse(run.out);
+    CHECK(j["inconsistency"].get<std::string>().find("objective") != std::string::npos);
+  } else {
+    CHECK(run.err.empty());
+    CHECK_FALSE(nlohmann::json::parse(slurp(report)).contains("inconsistency"));
+  }
+  // The printed design, evaluated by `evaluate`, gives the reported objective.
+  const nlohmann::json j = nlohmann::json::parse(run.status == 1 ? run.out : slurp(report));
+  box.file("best.json", j["best_design"].dump());
+  const Run evaluated =
+      box.run("evaluate \"" + box.path("best.json").string() + "\" --format json");
+  REQUIRE(evaluated.status == 0);
+  const nlohmann::json outputs = nlohmann::json::parse(evaluated.out)["outputs"];
+  CHECK(outputs["peak_wrist_force_N"].get<double>() == j["objective_value"].get<double>());
+  CHECK(outputs["swingweight_kg_cm2"].get<double>() == j["constraints"][0]["value"].get<double>());
+}
+
 TEST_CASE("Any time budget ends the optimizer cleanly with the best point seen") {
   const Sandbox box;
   for (const char* algorithm : {"auto", "LD_SLSQP", "GN_DIRECT_L"}) {

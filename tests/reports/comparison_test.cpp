@@ -1,0 +1,166 @@
+// compare names every input that differs, on the designs as read, before it
+// compares any output (issue 20, item 7), and says "the same implement" only
+// when no field of the implement, its frame or its strings differs.
+#include "reports/comparison.hpp"
+
+#include <catch2/catch.hpp>
+#include <string>
+#include <vector>
+
+#include "io/design_reader.hpp"
+
+namespace sweetspot::reports {
+namespace {
+
+// A strung racquet with a head and one point mass: every part of a design given.
+const char* const kBase = R"({
+  "name": "A",
+  "implement": {"length_in": 27.0, "mass_g": 305, "balance_cm": 32.5, "swingweight_kg_cm2": 320,
+                "headsize_sq_in": 100,
+                "point_masses": [{"from_butt_m": 0.6, "mass_g": 2}]},
+  "frame": {"fundamental_free_Hz": 155},
+  "strings": {"tension_N": 250},
+  "hand": {"mass_kg": 0.5},
+  "forearm": {"equivalent_mass_kg": 0.5},
+  "ball": {"mass_kg": 0.057, "speed_m_s": 50},
+  "impact": {"from_tip_m": 0.16}
+})";
+
+ComparedDesign compared(const io::Json& document) {
+  return compare_one(io::read_design(document, document["name"].get<std::string>() + ".json"),
+                     "rigid", 1e-6);
+}
+
+// The first sentence of `compare A B`: what differs in the inputs.
+std::string inputs_sentence(const io::Json& b) {
+  const io::Json a = io::Json::parse(kBase);
+  return differences(compared(a), compared(b)).front();
+}
+
+io::Json with(const std::string& pointer, const io::Json& value) {
+  io::Json b = io::Json::parse(kBase);
+  b["name"] = "B";
+  b[io::Json::json_pointer(pointer)] = value;
+  return b;
+}
+
+TEST_CASE("compare says the same implement, held and hit the same way, for the same design") {
+  io::Json b = io::Json::parse(kBase);
+  b["name"] = "B";
+  CHECK(inputs_sentence(b) == "B against A: the same implement, held and hit the same way.");
+}
+
+TEST_CASE("compare says only the ball differs when only the ball differs") {
+  CHECK(inputs_sentence(with("/ball/speed_m_s", 40)) ==
+        "B against A: the same implement; only the ball differs: speed 50 → 40 m/s.");
+  io::Json b = with("/ball/speed_m_s", 40);
+  b["ball"]["mass_kg"] = 0.058;
+  CHECK(inputs_sentence(b) ==
+        "B against A: the same implement; only the ball differs: mass 57 → 58 g and speed 50 → "
+        "40 m/s.");
+}
+
+TEST_CASE("compare says only the hand differs when only the hand differs") {
+  CHECK(inputs_sentence(with("/hand/mass_kg", 0.4)) ==
+        "B against A: the same implement; only the hand differs: mass 500 → 400 g.");
+  // The hand and the ball: each named with its part.
+  io::Json b = with("/hand/mass_kg", 0.4);
+  b["ball"]["speed_m_s"] = 40;
+  CHECK(inputs_sentence(b) ==
+        "B against A: the same implement; the hand and the ball differ: the hand's mass 500 → "
+        "400 g and the ball's speed 50 → 40 m/s.");
+}
+
+TEST_CASE("compare names what differs in the implement, never calling it the same") {
+  // In a player's words where they apply.
+  const std::string heavier = inputs_sentence(with("/implement/swingweight_kg_cm2", 330));
+  CHECK(heavier.find("a swingweight 10 kg·cm² higher") != std::string::npos);
+  CHECK(heavier.find("the same implement") == std::string::npos);
+  // Below what a player would notice, the field is still named, with the
+  // digits that tell the two apart.
+  CHECK(inputs_sentence(with("/implement/mass_g", 305.0001)) ==
+        "B against A: frame mass 305 → 305.0001 g.");
+  // A head on one and not the other: its size, not the shape of a head that is not there.
+  io::Json headless = with("/implement/mass_g", 305);
+  headless["implement"].erase("headsize_sq_in");
+  CHECK(inputs_sentence(headless) == "B against A: head size 645.2 cm² → none.");
+  // The implement and the ball at once.
+  io::Json b = with("/implement/headsize_sq_in", 110);
+  b["ball"]["speed_m_s"] = 40;
+  CHECK(inputs_sentence(b) ==
+        "B against A: head size 645.2 → 709.7 cm²; and the ball differs: speed 50 → 40 m/s.");
+}
+
+TEST_CASE("compare names every input of the read design that differs, by its part") {
+  struct Change {
+    const char* pointer;
+    io::Json value;
+    const char* named;  // in the first sentence
+  };
+  const std::vector<Change> changes{
+      {"/implement/length_in", 27.5, "length 68.58 → 69.85 cm"},
+      {"/implement/balance_cm", 32.6, "frame balance from the butt 32.5 → 32.6 cm"},
+      {"/implement/headsize_sq_in", 110, "head size 645.2 → 709.7 cm²"},
+      {"/implement/head_aspect_ratio", 1.5, "head's aspect ratio 1.35 → 1.5"},
+      {"/implement/hoop_width_m", 0.02, "hoop width 1.5 → 2 cm"},
+      {"/implement/twistweight_kg_cm2", 15, "twistweight none → 15 kg·cm²"},
+      {"/implement/point_masses/0/mass_g", 3, "1 g heavier"},
+      {"/implement/point_masses/0/off_axis_m", 0.01,
+       "point mass 1's distance off the axis 0 → 1 cm"},
+      {"/frame/fundamental_free_Hz", 170, "the frame's free fundamental 155 → 170 Hz"},
+      {"/frame/cor", 0.85, "the frame's COR 0.8 → 0.85"},
+      {"/strings/tension_N", 260, "strings at 58 lb instead of 56 lb"},
+      {"/strings/string_spacing_m", 0.017, "the strings' spacing 16.5 → 17 mm"},
+      {"/strings/contact_radius_m", 0.035, "the strings' contact radius 3 → 3.5 cm"},
+      {"/strings/head_size_in2", 110, "the strings' strung radius"},
+      {"/strings/bed_mass_kg", 0.005, "the strings' moving mass 4 → 5 g"},
+      {"/strings/bed_damping_ratio", 0.01, "the strings' damping ratio 0.008 → 0.01"},
+      {"/hand/center_from_butt_m", 0.08, "only the hand differs: centre from the butt 7 → 8 cm"},
+      {"/hand/grip_length_m", 0.12, "only the hand differs: grip length 10 → 12 cm"},
+      {"/hand/grip_stiffness_N_m2", 3e5, "only the hand differs: grip stiffness"},
+      {"/hand/grip_damping_N_s_m2", 2000, "only the hand differs: grip damping"},
+      {"/forearm/equivalent_mass_kg", 0.6, "only the forearm differs: equivalent mass 500 → 600 g"},
+      {"/ball/contact", io::Json{{"stiffness", 1e6}}, "only the ball differs: contact stiffness"},
+      {"/impact/from_tip_m", 0.18, "only the impact differs: distance from the tip 16 → 18 cm"},
+      {"/impact/off_axis_m", 0.02, "only the impact differs: distance off the axis 0 → 2 cm"},
+  };
+  for (const Change& change : changes) {
+    INFO(change.pointer);
+    const std::string sentence = inputs_sentence(with(change.pointer, change.value));
+    INFO(sentence);
+    CHECK(sentence.find(change.named) != std::string::npos);
+    CHECK(sentence.find("held and hit the same way") == std::string::npos);
+    const bool player = std::string(change.pointer).starts_with("/hand") ||
+                        std::string(change.pointer).starts_with("/forearm") ||
+                        std::string(change.pointer).starts_with("/ball") ||
+                        std::string(change.pointer).starts_with("/impact");
+    CHECK((sentence.find("the same implement") != std::string::npos) == player);
+  }
+}
+
+TEST_CASE("compare compares the designs as read, not the files' text") {
+  // The same racquet in other units, other forms and another key order is the
+  // same implement, held and hit the same way.
+  io::Json b = io::Json::parse(R"({
+    "name": "B",
+    "impact": {"from_tip_cm": 16},
+    "ball": {"speed_m_s": 50, "mass_g": 57},
+    "forearm": {"equivalent_mass_g": 500},
+    "hand": {"mass_g": 500},
+    "strings": {"tension_N": 250},
+    "frame": {"fundamental_free_Hz": 155},
+    "implement": {"length_m": 0.6858, "mass_kg": 0.305, "balance_from_butt_m": 0.325,
+                  "swingweight_kg_cm2": 320, "headsize_cm2": 645.16,
+                  "point_masses": [{"from_tip_m": 0.0858, "mass_kg": 0.002}]}
+  })");
+  CHECK(inputs_sentence(b) == "B against A: the same implement, held and hit the same way.");
+  // An impact 52.58 cm from the butt of a 68.58 cm racquet is not, to the
+  // last bit, the one 16 cm from the tip: the difference is named, not hidden.
+  b["impact"] = io::Json{{"from_butt_m", 0.5258}};
+  CHECK(inputs_sentence(b) ==
+        "B against A: the same implement; only the impact differs: distance from the tip 16 → "
+        "15.99999999999999 cm.");
+}
+
+}  // namespace
+}  // namespace sweetspot::reports
