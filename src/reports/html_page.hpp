@@ -14,7 +14,8 @@
 namespace sweetspot::io {
 
 // `text` safe inside HTML text and attribute values: & < > " ' as
-// entities, control characters other than tab and newline dropped.
+// entities, every character XML 1.0 does not allow (or HTML calls a control)
+// as U+FFFD (io::xml_chars).
 std::string html_escape(std::string_view text);
 
 // `text` escaped, each `code` span between backticks set as <code>code</code>
