@@ -31,10 +31,12 @@ std::size_t count(const std::string& text, const std::string& piece) {
 TEST_CASE("Every user string is escaped: markup in a racquet's name is shown, never run") {
   CHECK(html_escape("<script>alert('x')</script> & \"Pro\"") ==
         "&lt;script&gt;alert(&#39;x&#39;)&lt;/script&gt; &amp; &quot;Pro&quot;");
+  // Characters XML 1.0 does not allow (and HTML's controls) are U+FFFD, shown, not dropped.
   CHECK(html_escape(std::string("a\x01"
                                 "b\x7f"
                                 "c\td\n",
-                                8)) == "abc\td\n");
+                                8)) == "a\uFFFDb\uFFFDc\td\n");
+  CHECK(html_escape("\xef\xbf\xbe<\xef\xbf\xbf") == "\uFFFD&lt;\uFFFD");
   Json document = read_json_file(SWEETSPOT_SOURCE_DIR "/designs/racquets/tour-100.json");
   document["name"] = "<img src=x onerror=alert(1)> & Co";
   document["description"] = "</style><script>x()</script>";
