@@ -1,7 +1,10 @@
 // `sweetspot evaluate DESIGN.json` and `sweetspot evaluate --batch FILE`.
 
+#include <unistd.h>
+
 #include <cerrno>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -60,7 +63,10 @@ int run_batch(const EvaluateCommand& c) {
       size = std::filesystem::file_size(c.batch_path, error);
     if (error) size = 0;
   }
-  Progress progress("rows", !c.quiet);
+  // Rows streaming onto the terminal show that the work goes on; a bar among them would not.
+  const bool rows_on_terminal =
+      (c.out.output.empty() || c.out.output == "-") && isatty(fileno(stdout)) == 1;
+  Progress progress("rows", !c.quiet && !rows_on_terminal);
   options.progress = [&](std::size_t rows, std::uint64_t bytes) {
     progress.update(rows, 0,
                     size > 0 ? static_cast<double>(bytes) / static_cast<double>(size) : -1.0);
