@@ -134,6 +134,26 @@ TEST_CASE("Every output of an evaluation is in the JSON, null only with a note")
   }
 }
 
+TEST_CASE("An evaluation's CSV and Markdown apply their format's rule to a hostile name") {
+  DesignFile file{"a\nb.json",
+                  "=cmd|x\n# injected\x1b[2J",
+                  Design{Implement::paper_racquet(0.70, 0.25, 0.8)},
+                  "head_to_handle_mass_ratio",
+                  {},
+                  Json::object(),
+                  {},
+                  "auto"};
+  const Evaluation e = evaluate(file.design);
+  const std::string csv = evaluation_report(file, e, Format::kCsv);
+  // The name's cell: neutralised, quoted, the line break kept inside the quotes.
+  CHECK(csv.find("\n\"'=cmd|x\n# injected\\x1b[2J\",") != std::string::npos);
+  const std::string md = evaluation_report(file, e, Format::kMarkdown);
+  CHECK_THAT(md, Catch::StartsWith("# =cmd\u2223x\\n# injected\\x1b[2J\n"));
+  CHECK(md.find("source `a\\nb.json`") != std::string::npos);
+  CHECK(md.find("\n# injected") == std::string::npos);
+  CHECK(md.find('\x1b') == std::string::npos);
+}
+
 TEST_CASE("Appending a number writes exactly the text exact() gives, shortest and round-trip") {
   const unsigned seed = 20040622;
   INFO("seed " << seed);

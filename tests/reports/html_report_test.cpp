@@ -174,6 +174,25 @@ TEST_CASE("Backticked names become code, everything else in a sentence is escape
                            "b\nc\x7f") == "abc");
 }
 
+TEST_CASE("A comparison applies each format's rule to its names: CSV, Markdown and HTML") {
+  Json hostile = read_json_file(SWEETSPOT_SOURCE_DIR "/designs/racquets/tour-100-lead-at-tip.json");
+  hostile["name"] = "@cmd\n# injected \x1b[2J\xef\xbf\xbe";
+  std::vector<reports::ComparedDesign> designs;
+  designs.push_back(reports::compare_one(tour_100(), "", 1e-6));
+  designs.push_back(reports::compare_one(read_design(hostile, "=b.json"), "", 1e-6));
+  const std::string csv = reports::comparison_report(designs, Format::kCsv);
+  CHECK(csv.find("\n\"'@cmd\n# injected \\x1b[2J\xef\xbf\xbe\",\"'=b.json\",") !=
+        std::string::npos);
+  const std::string md = reports::comparison_report(designs, Format::kMarkdown);
+  CHECK(md.find("\n# injected") == std::string::npos);
+  CHECK(md.find('\x1b') == std::string::npos);
+  CHECK(md.find("@cmd\\n# injected \\x1b[2J") != std::string::npos);
+  const std::string page = reports::comparison_html(designs);
+  CHECK(page.find("\xef\xbf\xbe") == std::string::npos);
+  CHECK(page.find('\x1b') == std::string::npos);
+  CHECK(page.find("@cmd\n# injected \xef\xbf\xbd[2J\xef\xbf\xbd") != std::string::npos);
+}
+
 TEST_CASE(
     "A comparison's page is self-contained, escapes every name and shows the table's numbers") {
   Json hostile = read_json_file(SWEETSPOT_SOURCE_DIR "/designs/racquets/tour-100-lead-at-tip.json");
