@@ -854,7 +854,8 @@ class SortedRows {
 
   // A row's text, with its key (none: failed or null, written last).
   void add(std::optional<double> key, std::string_view text) {
-    const Kept row{key.value_or(0.0), key.has_value(), next_++, written_, text.size()};
+    const Kept row{key.value_or(0.0), next_++, written_, static_cast<std::uint32_t>(text.size()),
+                   key.has_value()};
     if (top_ > 0 && rows_.size() == top_ && !before(row, rows_.front()))
       return;  // not among the best
     append(text);
@@ -890,13 +891,15 @@ class SortedRows {
   }
 
  private:
-  struct Kept {
+  struct Kept {  // 32 bytes
     double key;
+    std::uint64_t order;   // the row's place in the input
+    std::uint64_t offset;  // where its text starts in the file
+    std::uint32_t length;  // a row is far below 4 GiB: a line is at most 1 MiB
     bool has_key;
-    std::size_t order;  // the row's place in the input
-    std::uint64_t offset;
-    std::size_t length;
   };
+  static_assert(sizeof(Kept) == 32);
+
   // Whether `a` is written before `b`: keyed rows first, by key in the asked
   // direction, then in input order.
   bool before(const Kept& a, const Kept& b) const {
@@ -931,7 +934,7 @@ class SortedRows {
   std::size_t top_;
   int fd_ = -1;
   std::vector<Kept> rows_;  // with top_, a heap whose front is the worst kept
-  std::size_t next_ = 0;
+  std::uint64_t next_ = 0;
   std::uint64_t written_ = 0;
   std::string buffer_;
 };
