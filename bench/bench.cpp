@@ -231,7 +231,10 @@ std::string bench_maps(const BenchOptions& options, std::ostream& log) {
         std::tuple{"rigid, duration from the string tension", &tension, Fidelity::kRigid},
         std::tuple{"modal (vibration energy; modes solved once)", &flexible, Fidelity::kModal},
         std::tuple{"collision (one solved collision per point)", &strung, Fidelity::kCollision}}) {
-    const StringBedMapOptions grid{50, 50, fidelity};
+    StringBedMapOptions grid;
+    grid.columns = 50;
+    grid.rows = 50;
+    grid.fidelity = fidelity;
     std::size_t on_bed = 0;
     const double seconds = median_seconds(options.repeats, [&, design = design] {
       const StringBedMap map = string_bed_map(*design, grid);

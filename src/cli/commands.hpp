@@ -26,6 +26,7 @@ struct EvaluateCommand {
   std::string fidelity = "auto";
   double tolerance = 1e-6;
   int threads = 1;
+  bool quiet = false;        // --batch: no progress on stderr
   std::string units = "si";  // "people": CSV and JSON also in cm, g, kg·cm², ms
   OutputOptions out;
 
@@ -120,6 +121,8 @@ struct MapCommand {
   std::string fidelity = "auto";
   int columns = 50;
   int rows = 50;
+  int threads = 1;  // default: all cores
+  bool quiet = false;
   std::string plot;
   OutputOptions out{"csv", ""};
 

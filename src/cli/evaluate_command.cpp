@@ -1,6 +1,10 @@
 // `sweetspot evaluate DESIGN.json` and `sweetspot evaluate --batch FILE`.
 
+#include <unistd.h>
+
 #include <cerrno>
+#include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -9,6 +13,7 @@
 
 #include "cli/checks.hpp"
 #include "cli/commands.hpp"
+#include "cli/progress.hpp"
 #include "io/design_reader.hpp"
 #include "io/input_error.hpp"
 #include "io/json_reader.hpp"
@@ -50,6 +55,22 @@ int run_batch(const EvaluateCommand& c) {
   options.threads = c.threads;
   options.fidelity = c.command->count("--fidelity") ? c.fidelity : std::string();
   options.modal_tolerance = c.tolerance;
+  // How far the catalogue is read: by bytes when its size is known.
+  std::uint64_t size = 0;
+  if (c.batch_path != "-") {
+    std::error_code error;
+    if (std::filesystem::is_regular_file(c.batch_path, error))
+      size = std::filesystem::file_size(c.batch_path, error);
+    if (error) size = 0;
+  }
+  // Rows streaming onto the terminal show that the work goes on; a bar among them would not.
+  const bool rows_on_terminal =
+      (c.out.output.empty() || c.out.output == "-") && isatty(fileno(stdout)) == 1;
+  Progress progress("rows", !c.quiet && !rows_on_terminal);
+  options.progress = [&](std::size_t rows, std::uint64_t bytes) {
+    progress.update(rows, 0,
+                    size > 0 ? static_cast<double>(bytes) / static_cast<double>(size) : -1.0);
+  };
   io::BatchSummary summary;
   if (c.batch_path == "-") {
     // Through a file buffer, which reports a read error as one (std::cin's
@@ -75,6 +96,7 @@ int run_batch(const EvaluateCommand& c) {
     c.out.emit_stream(
         [&](std::ostream& out) { summary = io::run_batch(in, c.batch_path, options, out); });
   }
+  progress.finish();
   if (summary.failed > 0) {
     std::cerr << "sweetspot: " << summary.failed << " of " << summary.rows
               << " rows failed (see their error column)\n";
@@ -118,6 +140,7 @@ void EvaluateCommand::add_to(CLI::App& app) {
           },
           "OUTPUT"));
   command->add_flag("--desc", batch_descending, "With --sort: descending order");
+  command->add_flag("--quiet,-q", quiet, "With --batch: no progress on standard error");
   command->add_option("--top", batch_top, "With --sort: only the first N rows")
       ->check(whole_in(1, 1000000000));
   command

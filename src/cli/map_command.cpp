@@ -6,7 +6,9 @@
 
 #include "cli/checks.hpp"
 #include "cli/commands.hpp"
+#include "cli/progress.hpp"
 #include "io/design_reader.hpp"
+#include "io/parallel.hpp"
 #include "io/plot.hpp"
 #include "reports/string_bed_map_report.hpp"
 #include "studies/string_bed_map.hpp"
@@ -36,6 +38,12 @@ void MapCommand::add_to(CLI::App& app) {
   command->add_option("--rows", rows, "Grid points across the head")
       ->check(whole_in(2, 1000))
       ->capture_default_str();
+  threads = io::all_cores();
+  command
+      ->add_option("--threads", threads,
+                   "Threads to share the grid's columns (default: all cores); the map is the same")
+      ->check(CLI::Range(1, 1024));
+  command->add_flag("--quiet,-q", quiet, "No progress on standard error");
   command->add_option("--plot", plot,
                       "Also render heat maps: FILE-power.png, FILE-shock.png (and FILE-feel.png)");
   out.add_to(command, {"csv"});
@@ -50,6 +58,9 @@ int MapCommand::run() const {
   io::StringBedMapOptions options;
   options.columns = columns;
   options.rows = rows;
+  options.threads = threads;
+  Progress progress("grid points", !quiet);
+  options.progress = [&](std::size_t done, std::size_t total) { progress.update(done, total); };
   io::StringBedMap map;
   try {
     const std::string name = command->count("--fidelity") ? fidelity : design.fidelity;
@@ -59,6 +70,7 @@ int MapCommand::run() const {
   } catch (const std::invalid_argument& e) {
     io::rethrow_in(design, e);
   }
+  progress.finish();
   const double length_m = design.design.implement.length_m();
   out.emit(io::string_bed_map_csv(map, length_m));
   if (plot.empty()) return kExitOk;

@@ -87,7 +87,7 @@ int ReportCommand::run() const {
     return kExitBadInput;
   }
   if (html.empty()) {
-    std::cerr << "sweetspot: report " << design
+    std::cerr << "sweetspot: report " << io::one_line(design)
               << ": a design's report is a web page: give --html FILE\n";
     return kExitBadInput;
   }

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "cli/progress.hpp"
 #include "io/atomic_file.hpp"
 #include "io/input_error.hpp"
 #include "io/parallel.hpp"
@@ -192,7 +193,7 @@ void SweepCommand::add_to(CLI::App& app) {
                    "null), in grid order")
       ->check(CLI::IsMember({"csv", "json"}))
       ->capture_default_str();
-  command->add_flag("--quiet,-q", quiet, "No progress on the terminal");
+  command->add_flag("--quiet,-q", quiet, "No progress on standard error");
   command
       ->add_option("--threads", threads,
                    "Threads to use (default: all cores); rows stay in grid order")
@@ -202,10 +203,10 @@ void SweepCommand::add_to(CLI::App& app) {
 int SweepCommand::run() const {
   const io::Study study = io::load_study(study_path);
   const io::SweepOptions options{threads};
-  const bool show_progress = !quiet && isatty(fileno(stderr));
+  Progress shown("designs", !quiet);
   const auto progress = [&](std::size_t done, std::size_t total) {
-    if (show_progress) std::cerr << fmt::format("\r{}/{} designs", done, total) << std::flush;
-    if (show_progress && done == total) std::cerr << "\n";
+    shown.update(done, total);
+    if (done == total) shown.finish();
   };
   std::vector<io::Plot> plots;
   OutputOptions{"csv", csv_path}.emit_stream([&](std::ostream& out) {

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -181,19 +182,179 @@ void append_exact(std::string& out, double value) {
   out.append(buffer, static_cast<std::size_t>(write_exact(buffer, value) - buffer));
 }
 
+namespace {
+
+constexpr std::string_view kReplacement = "\uFFFD";
+
+// The length of the UTF-8 sequence starting at `text[at]` and its code point;
+// 0 when the bytes there are not UTF-8 (overlong forms, surrogates, past
+// U+10FFFF, a sequence cut short).
+std::size_t utf8_sequence(std::string_view text, std::size_t at, char32_t& code) {
+  const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[at + k]); };
+  const unsigned char lead = byte(0);
+  std::size_t length = 0;
+  if (lead < 0x80) {
+    code = lead;
+    return 1;
+  }
+  if (lead >= 0xC2 && lead <= 0xDF) {
+    length = 2;
+    code = lead & 0x1F;
+  } else if (lead >= 0xE0 && lead <= 0xEF) {
+    length = 3;
+    code = lead & 0x0F;
+  } else if (lead >= 0xF0 && lead <= 0xF4) {
+    length = 4;
+    code = lead & 0x07;
+  } else {
+    return 0;
+  }
+  if (at + length > text.size()) return 0;
+  for (std::size_t k = 1; k < length; ++k) {
+    if ((byte(k) & 0xC0) != 0x80) return 0;
+    code = (code << 6) | (byte(k) & 0x3F);
+  }
+  const bool overlong = (length == 3 && code < 0x800) || (length == 4 && code < 0x10000);
+  if (overlong || code > 0x10FFFF || (code >= 0xD800 && code <= 0xDFFF)) return 0;
+  return length;
+}
+
+// "\n", "\r", "\t", "\x1b" for a C0 control or DEL, as messages write them.
+void append_escaped_control(std::string& out, unsigned char byte) {
+  constexpr char kHex[] = "0123456789abcdef";
+  if (byte == '\n') {
+    out += "\\n";
+  } else if (byte == '\r') {
+    out += "\\r";
+  } else if (byte == '\t') {
+    out += "\\t";
+  } else {
+    out += "\\x";
+    out += kHex[byte >> 4];
+    out += kHex[byte & 0xf];
+  }
+}
+
+bool is_c0_or_del(unsigned char byte) { return byte < 0x20 || byte == 0x7f; }
+
+// terminal_text(), and with `pipes` each '|' as U+2223.
+std::string visible(std::string_view text, bool pipes) {
+  std::string out;
+  out.reserve(text.size());
+  for (std::size_t at = 0; at < text.size();) {
+    const auto byte = static_cast<unsigned char>(text[at]);
+    if (byte < 0x80) {
+      if (is_c0_or_del(byte)) {
+        append_escaped_control(out, byte);
+      } else if (pipes && byte == '|') {
+        out += "\u2223";
+      } else {
+        out += text[at];
+      }
+      ++at;
+      continue;
+    }
+    char32_t code = 0;
+    const std::size_t length = utf8_sequence(text, at, code);
+    if (length == 0) {
+      out += kReplacement;
+      ++at;
+    } else if (code >= 0x80 && code <= 0x9f) {
+      out += fmt::format("\\u{:04x}", static_cast<unsigned>(code));
+      at += length;
+    } else {
+      out.append(text, at, length);
+      at += length;
+    }
+  }
+  return out;
+}
+
+// Whether a spreadsheet would read `text` as a formula: it starts with one
+// of = + - @, a tab or a CR, and is not a number as a whole.
+bool reads_as_formula(std::string_view text) {
+  if (text.empty()) return false;
+  const char first = text.front();
+  if (first != '=' && first != '+' && first != '-' && first != '@' && first != '\t' &&
+      first != '\r')
+    return false;
+  if (first != '+' && first != '-') return true;
+  std::string_view number = text;
+  if (first == '+') number.remove_prefix(1);  // from_chars takes a '-' only
+  if (number.empty() || number.front() == '+' || (first == '+' && number.front() == '-'))
+    return true;
+  double value = 0.0;
+  const auto [end, error] = std::from_chars(number.data(), number.data() + number.size(), value);
+  return error != std::errc() || end != number.data() + number.size() || !std::isfinite(value);
+}
+
+}  // namespace
+
+std::string terminal_text(std::string_view text) { return visible(text, false); }
+
 std::string md_cell(std::string_view text) {
-  std::string cell;
   // A pipe would end the cell, and its escape shows as "\|" wherever Markdown
   // is read as text: the divides sign looks the same and needs none.
-  for (const char c : text) cell += c == '|' ? std::string("\u2223") : std::string(1, c);
-  return cell;
+  return visible(text, true);
+}
+
+bool csv_plain(std::string_view text) {
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (is_c0_or_del(byte) || c == ',' || c == '"') return false;
+  }
+  return !reads_as_formula(text);
 }
 
 std::string csv_field(std::string_view text) {
-  if (text.find_first_of(",\"\n\r") == std::string_view::npos) return std::string(text);
-  std::string quoted = "\"";
-  for (const char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return quoted + "\"";
+  if (csv_plain(text)) return std::string(text);
+  const bool formula = reads_as_formula(text);
+  std::string field;
+  bool quote = formula;
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (c == ',' || c == '"' || c == '\n' || c == '\r' || c == '\t') quote = true;
+    if (is_c0_or_del(byte) && c != '\n' && c != '\r' && c != '\t') {
+      append_escaped_control(field, byte);
+    } else {
+      field += c;
+      if (c == '"') field += '"';
+    }
+  }
+  if (formula) field.insert(0, 1, '\'');
+  return quote ? "\"" + field + "\"" : field;
+}
+
+std::string xml_chars(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  for (std::size_t at = 0; at < text.size();) {
+    const auto byte = static_cast<unsigned char>(text[at]);
+    if (byte < 0x80) {
+      const bool allowed = !is_c0_or_del(byte) || byte == '\t' || byte == '\n' || byte == '\r';
+      if (allowed) {
+        out += text[at];
+      } else {
+        out += kReplacement;
+      }
+      ++at;
+      continue;
+    }
+    char32_t code = 0;
+    const std::size_t length = utf8_sequence(text, at, code);
+    if (length == 0) {
+      out += kReplacement;
+      ++at;
+      continue;
+    }
+    if ((code >= 0x80 && code <= 0x9f) || code == 0xFFFE || code == 0xFFFF) {
+      out += kReplacement;
+    } else {
+      out.append(text, at, length);
+    }
+    at += length;
+  }
+  return out;
 }
 
 PeopleUnit people_unit(std::string_view si_unit) {
@@ -443,13 +604,13 @@ std::string evaluation_report(const DesignFile& file, const Evaluation& e, Forma
     return header + "\n" + row + "\n";
   }
   std::string md = fmt::format("# {}\n\n", md_cell(file.name));
-  if (!answer.empty()) md += std::string(answer) + "\n\n";
+  if (!answer.empty()) md += terminal_text(answer) + "\n\n";
   md += fmt::format(
       "{} of Cross (2004); source `{}`.{}\n\n",
       e.vibration_energy_J ? "Rigid-body model, vibration modes and impact response"
       : e.modal            ? "Rigid-body model and vibration modes"
                            : "Rigid-body model",
-      file.source,
+      md_cell(file.source),
       e.modal && e.modal->mass_distribution_fitted
           ? " The mass distribution for the modes was fitted to the specs (quadratic density)."
           : "");

@@ -27,10 +27,36 @@ void append_exact(std::string& out, double value);
 // the end of the text (no terminating NUL). For rows built in a buffer.
 inline constexpr std::size_t kMaxExactChars = 32;
 char* write_exact(char* out, double value);
-// Text for a Markdown table cell (pipes escaped).
+// The escaping rule of each format (README "Outputs"), applied by the writers
+// to every text that comes from a user's file or command line:
+//
+// Terminal and Markdown text: no control character reaches the output. C0
+// controls, DEL and the C1 controls U+0080..U+009F are written as escapes
+// ("\n", "\r", "\t", "\x1b", "\u009b"), as messages on stderr write them, so
+// a newline in a name cannot start a Markdown heading and an escape sequence
+// cannot drive the terminal. Bytes that are not UTF-8 become U+FFFD.
+std::string terminal_text(std::string_view text);
+// terminal_text() with pipes, which would end a Markdown table cell, as the
+// look-alike U+2223 (its escape "\|" shows where Markdown is read as text).
 std::string md_cell(std::string_view text);
-// A CSV field, quoted when it holds a comma, quote or newline.
+// A CSV field (RFC 4180): quoted when it holds a comma, a quote, a line break
+// or a tab, quotes written twice; line breaks kept inside the quotes (a
+// multi-line cell comes back as the same multi-line cell). Control
+// characters other than tab and line breaks are escaped as terminal_text()
+// writes them (a NUL is "\x00"). A cell a spreadsheet would read as a
+// formula (starting with '=', '+', '-', '@', a tab or a CR: the OWASP rule)
+// is neutralised: written quoted, after a single quote, unless the whole cell
+// reads as a finite number ("-0.5", "+3", "-1e-05" stay numbers).
 std::string csv_field(std::string_view text);
+// Whether csv_field(text) is `text` itself, decided without a copy (the
+// catalogue writer's loop).
+bool csv_plain(std::string_view text);
+// `text` holding only characters XML 1.0 allows, and none HTML calls a
+// control: C0 controls other than tab, LF and CR, DEL, the C1 controls,
+// U+FFFE, U+FFFF, surrogates (lone or not: they are not UTF-8) and bytes that
+// are not UTF-8 each become U+FFFD. Nothing else changes (no entities: see
+// html_escape for text, render_svg for gnuplot's SVG).
+std::string xml_chars(std::string_view text);
 
 // An output's unit as people read it: cm for m, g for kg, kg·cm² for kg m²,
 // ms for s; the others as they are. value_SI * factor is the value in `unit`.

@@ -19,6 +19,7 @@
 #include <string_view>
 
 #include "io/atomic_file.hpp"
+#include "io/format.hpp"
 
 extern char** environ;
 
@@ -170,7 +171,7 @@ void copy_file(int from, OutputFile& to) {
 // inside double quotes (a title or file name from a user's file would run
 // them), never inside single quotes, where only a quote is special (written
 // twice). A control character would end the command line: it becomes a space.
-std::string quoted(const std::string& text) {
+std::string single_quoted(const std::string& text) {
   std::string out = "'";
   for (const char c : text) {
     if (c == '\'') out += '\'';
@@ -189,7 +190,7 @@ std::string label(const std::string& text) {
       escaped += '\\';
     escaped += c;
   }
-  return quoted(escaped);
+  return single_quoted(escaped);
 }
 
 bool on_plot(const Plot& plot, double y) {
@@ -270,7 +271,7 @@ std::string plot_commands(const Plot& plot) {
     if (i) s += ", \\\n     ";
     s += fmt::format("$series{} using 1:2{} with {} lc rgb {} {}", i,
                      series.right_axis ? " axes x1y2" : "", series.style,
-                     quoted(series.color.empty() ? plot_color(i) : series.color),
+                     single_quoted(series.color.empty() ? plot_color(i) : series.color),
                      series.title.empty() ? "notitle" : "title " + label(series.title));
   }
   return s + "\n";
@@ -394,7 +395,7 @@ AxisQuantity pointer_axis(std::string_view pointer) {
 
 std::string gnuplot_script(const Plot& plot, const std::string& png_path) {
   std::string s = "set terminal pngcairo size 960,640 enhanced font 'DejaVu Sans,11'\n";
-  if (!png_path.empty()) s += "set output " + quoted(png_path) + "\n";
+  if (!png_path.empty()) s += "set output " + single_quoted(png_path) + "\n";
   return s + plot_commands(plot);
 }
 
@@ -491,7 +492,10 @@ std::optional<std::string> render_script_svg(const std::string& script,
         escaped += svg[at];
       }
     }
-    svg = std::move(escaped);
+    // A name's characters that XML cannot hold (U+FFFE, U+FFFF, controls)
+    // reach gnuplot's text as they are: the SVG is made well-formed here, for
+    // every page that inlines it.
+    svg = xml_chars(escaped);
     // The ids gnuplot gives its groups serve its mouse script only (not
     // written): dropped, since each plot repeats them. The rest get the prefix.
     for (const char* group : {"gnuplot_canvas", "gnuplot_plot_"}) {

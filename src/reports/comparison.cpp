@@ -566,7 +566,7 @@ std::string comparison_report(const std::vector<ComparedDesign>& designs, io::Fo
     std::string paragraph;
     for (const std::string& s : differences(designs[0], designs[k]))
       paragraph += (paragraph.empty() ? "" : " ") + s;
-    md += paragraph + "\n\n";
+    md += io::terminal_text(paragraph) + "\n\n";
   }
   md += "| | unit";
   for (const ComparedDesign& c : designs) md += " | " + io::md_cell(c.design.name);
@@ -589,8 +589,8 @@ std::string comparison_report(const std::vector<ComparedDesign>& designs, io::Fo
   }
   md += "\nEach design alone, as `sweetspot evaluate` says it:\n\n";
   for (const ComparedDesign& c : designs) {
-    md += "- **" + io::md_cell(c.design.name) + "** (`" + c.design.source +
-          "`): " + sweet_spot_paragraph(c.design, c.spots) + "\n";
+    md += "- **" + io::md_cell(c.design.name) + "** (`" + io::md_cell(c.design.source) +
+          "`): " + io::terminal_text(sweet_spot_paragraph(c.design, c.spots)) + "\n";
   }
   return md;
 }

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "io/format.hpp"
+
 namespace sweetspot::io {
 namespace {
 
@@ -66,9 +68,10 @@ footer { color: var(--muted); font-size: 0.88rem; margin-top: 2.5rem; }
 }  // namespace
 
 std::string html_escape(std::string_view text) {
+  const std::string chars = xml_chars(text);
   std::string out;
-  out.reserve(text.size());
-  for (const char c : text) {
+  out.reserve(chars.size());
+  for (const char c : chars) {
     switch (c) {
       case '&':
         out += "&amp;";
@@ -86,7 +89,6 @@ std::string html_escape(std::string_view text) {
         out += "&#39;";
         break;
       default:
-        if ((static_cast<unsigned char>(c) < 0x20 && c != '\n' && c != '\t') || c == 0x7f) break;
         out += c;
     }
   }
@@ -115,7 +117,7 @@ std::string plot_text_for_html(std::string_view text) {
   for (const char c : text) {
     if (!((static_cast<unsigned char>(c) < 0x20 && c != '\t') || c == 0x7f)) out += c;
   }
-  return out;
+  return xml_chars(out);
 }
 
 std::string html_cm(double metres, int decimals) {

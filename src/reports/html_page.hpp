@@ -14,7 +14,8 @@
 namespace sweetspot::io {
 
 // `text` safe inside HTML text and attribute values: & < > " ' as
-// entities, control characters other than tab and newline dropped.
+// entities, every character XML 1.0 does not allow (or HTML calls a control)
+// as U+FFFD (io::xml_chars).
 std::string html_escape(std::string_view text);
 
 // `text` escaped, each `code` span between backticks set as <code>code</code>
@@ -23,8 +24,9 @@ std::string html_escape(std::string_view text);
 std::string html_with_code(std::string_view text);
 
 // `text` (a name from a user's file) fit to be a plot's title or key in
-// gnuplot's SVG: control characters, which XML cannot hold, dropped ('&' and
-// '<' are escaped by render_svg and gnuplot).
+// gnuplot's SVG: control characters, which XML cannot hold, dropped, other
+// characters XML does not allow as U+FFFD (xml_chars; '&' and '<' are
+// escaped by render_svg and gnuplot).
 std::string plot_text_for_html(std::string_view text);
 
 // A length in metres as centimetres with `decimals` decimals: "31.2".

@@ -204,10 +204,10 @@ std::string optimization_report(const Study& study, const OptimizationResult& r,
   }
   // Markdown: the answer in a sentence, then the numbers.
   std::string md = fmt::format("# {}\n\n", md_cell(study.name));
-  if (!study.question.empty()) md += "**Question.** " + study.question + "\n\n";
+  if (!study.question.empty()) md += "**Question.** " + terminal_text(study.question) + "\n\n";
   const std::vector<std::string> answer = answer_paragraphs(study, r);
-  md += "**Answer.** " + answer.front() + "\n\n";
-  for (std::size_t k = 1; k < answer.size(); ++k) md += answer[k] + "\n\n";
+  md += "**Answer.** " + terminal_text(answer.front()) + "\n\n";
+  for (std::size_t k = 1; k < answer.size(); ++k) md += terminal_text(answer[k]) + "\n\n";
   md += "## Variables\n\n| path | min | max | start | best |\n|---|---:|---:|---:|---:|\n";
   for (std::size_t i = 0; i < study.variables.size(); ++i) {
     const StudyVariable& v = study.variables[i];

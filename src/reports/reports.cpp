@@ -57,14 +57,15 @@ void write_reports(const std::string& designs_dir, const std::string& out_dir, s
                              // leaves none behind.
                              fs::create_directories(fs::path(out_dir + "/" + name).parent_path());
                              write_file_atomically(out_dir + "/" + name, content);
-                             log << "wrote " << out_dir << "/" << name << "\n";
+                             log << "wrote " << terminal_text(out_dir + "/" + name) << "\n";
                            },
                            [&](const std::string& name, const Plot& plot) {
                              std::string why;
                              if (render_png(plot, out_dir + "/" + name, &why)) {
-                               log << "wrote " << out_dir << "/" << name << "\n";
+                               log << "wrote " << terminal_text(out_dir + "/" + name) << "\n";
                              } else {
-                               log << "skipped " << out_dir << "/" << name << ": " << why << "\n";
+                               log << "skipped " << terminal_text(out_dir + "/" + name + ": " + why)
+                                   << "\n";
                              }
                            }};
 
@@ -144,8 +145,8 @@ void write_reports(const std::string& designs_dir, const std::string& out_dir, s
       "| files | what they show |\n|---|---|\n";
   for (const ReportEntry& e : entries) index += "| " + e.files + " | " + md_cell(e.says) + " |\n";
   write.text("README.md", index);
-  log << "\nSummary (index: " << out_dir << "/README.md):\n";
-  for (const ReportEntry& e : entries) log << "- " << e.says << "\n";
+  log << "\nSummary (index: " << terminal_text(out_dir + "/README.md") << "):\n";
+  for (const ReportEntry& e : entries) log << "- " << terminal_text(e.says) << "\n";
 }
 
 }  // namespace sweetspot::io

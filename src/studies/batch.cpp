@@ -1,6 +1,7 @@
 #include "studies/batch.hpp"
 
 #include <fmt/format.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <array>
@@ -8,11 +9,13 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <deque>
 #include <map>
 #include <memory>
 #include <span>
+#include <stdexcept>
 #include <vector>
 
 #include "io/design_reader.hpp"
@@ -61,6 +64,8 @@ class LineReader {
       : in_(in), source_(source), buffer_(1 << 16) {}
 
   std::size_t line_number() const { return line_; }
+  // The bytes read from the input so far.
+  std::uint64_t bytes_read() const { return bytes_read_; }
 
   // Hands `lines` back, to be read again in order by next().
   void unread(std::vector<std::string> lines) {
@@ -141,6 +146,7 @@ class LineReader {
     }
     begin_ = 0;
     end_ = static_cast<std::size_t>(in_.gcount());
+    bytes_read_ += end_;
     if (end_ == 0) end_of_input_ = true;
     return end_ > 0;
   }
@@ -151,6 +157,7 @@ class LineReader {
   std::size_t begin_ = 0;
   std::size_t end_ = 0;
   std::size_t line_ = 0;
+  std::uint64_t bytes_read_ = 0;
   std::deque<std::string> unread_;
   bool end_of_input_ = false;
 };
@@ -285,15 +292,32 @@ void split_csv(std::string_view record, std::size_t max_fields, CsvRecord& out) 
   }
 }
 
+// Whether a CSV record has no cell at all: only commas, blanks and empty
+// quoted fields (",,,," is the row a spreadsheet writes for an empty line).
+bool blank_record(std::string_view record) {
+  for (std::size_t at = 0; at < record.size(); ++at) {
+    const char c = record[at];
+    if (c == ',' || c == ' ' || c == '\t') continue;
+    if (c == '"' && at + 1 < record.size() && record[at + 1] == '"' &&
+        (at + 2 == record.size() || record[at + 2] == ',')) {
+      ++at;
+      continue;
+    }
+    return false;
+  }
+  return true;
+}
+
 // Columns that hold text, not numbers.
 bool is_text_field(std::string_view field) {
-  return field == "name" || field == "description" || field == "fidelity";
+  return field == "name" || field == "description" || field == "fidelity" ||
+         field == "reference.source";
 }
 
 // The parts of a design a column may name directly when a map is given.
 bool names_design_part(std::string_view field) {
   constexpr std::string_view kParts[] = {"implement", "frame", "strings", "hand",
-                                         "forearm",   "ball",  "impact"};
+                                         "forearm",   "ball",  "impact",  "reference"};
   const std::string_view part = field.substr(0, field.find('.'));
   return is_text_field(field) ||
          (part.size() < field.size() &&
@@ -383,6 +407,14 @@ Header read_header(std::string_view line, const std::string& where, const BatchO
     const std::string& name = header.names[k];
     const auto target = target_of.find(name);
     if (mapped && target == target_of.end() && !names_design_part(name)) {
+      for (const std::size_t other : header.passed) {
+        if (header.names[other] == name) {
+          throw InputError(where, "",
+                           fmt::format("column {} {}: repeats column {}, passed through too "
+                                       "(expected each column passed through named once)",
+                                       k + 1, shown(name), other + 1));
+        }
+      }
       header.passed.push_back(k);
       continue;
     }
@@ -647,7 +679,7 @@ class Evaluator {
           const std::string_view text = cells.fields[column.cell];
           if (text.empty()) continue;  // the base's value stands
           if (is_text_field(column.field)) {
-            document[column.field] = std::string(text);
+            document[Json::json_pointer(pointers_[j])] = std::string(text);
             continue;
           }
           const std::string_view cell = trimmed(text);
@@ -738,17 +770,13 @@ class Evaluator {
   mutable std::vector<CsvRecord> records_;                      // per thread: the row's fields
 };
 
-// csv_field(one_line(text)) appended to `out`, without the two copies for
-// text that needs neither (no control character, comma or quote).
+// csv_field(text) appended to `out`, without a copy for text that needs no
+// quotes, escape or neutralising.
 void append_cell(std::string& out, std::string_view text) {
-  const bool plain = std::all_of(text.begin(), text.end(), [](char c) {
-    const auto byte = static_cast<unsigned char>(c);
-    return byte >= 0x20 && byte != 0x7f && c != ',' && c != '"';
-  });
-  if (plain) {
+  if (csv_plain(text)) {
     out += text;
   } else {
-    out += csv_field(one_line(text));
+    out += csv_field(text);
   }
 }
 
@@ -776,7 +804,7 @@ void write_row(const Row& row, const Outcome& outcome, const Header& header, For
   char number[24];
   out.append(number, std::to_chars(number, number + sizeof number, row.line).ptr);
   out += ',';
-  append_cell(out, row.name);  // a row is one line of the table
+  append_cell(out, row.name);
   for (std::size_t i = 0; i < header.passed.size(); ++i) {
     out += ',';
     if (i < row.passed.size()) append_cell(out, row.passed[i]);
@@ -802,21 +830,114 @@ void write_row(const Row& row, const Outcome& outcome, const Header& header, For
   out += '\n';
 }
 
-// Rows kept for sorting: the best first (by key, in the asked direction),
-// rows without a key last, each group in input order.
-struct SortedRow {
-  std::optional<double> key;
-  std::size_t line = 0;
-  std::string text;
-};
+// A sorted catalogue's rows, in bounded memory: each row's text goes to a
+// temporary file as it is written, and only its sort key, its place in the
+// input and where its text lies are kept (32 bytes a row; with --top N, only
+// the best N, in a heap). The file is unlinked as soon as it is made, so that
+// nothing is left behind however the process ends.
+class SortedRows {
+ public:
+  SortedRows(bool descending, std::size_t top) : descending_(descending), top_(top) {
+    const char* dir = std::getenv("TMPDIR");
+    std::string name = std::string(dir && *dir ? dir : "/tmp") + "/sweetspot-sort-XXXXXX";
+    fd_ = ::mkstemp(name.data());
+    if (fd_ < 0) {
+      throw std::runtime_error(
+          fmt::format("cannot make a temporary file to sort the rows in {}: {}",
+                      name.substr(0, name.rfind('/')), std::strerror(errno)));
+    }
+    ::unlink(name.c_str());
+  }
+  ~SortedRows() { ::close(fd_); }
+  SortedRows(const SortedRows&) = delete;
+  SortedRows& operator=(const SortedRows&) = delete;
 
-void order_rows(std::vector<SortedRow>& rows, bool descending) {
-  std::stable_sort(rows.begin(), rows.end(), [descending](const SortedRow& a, const SortedRow& b) {
-    if (a.key.has_value() != b.key.has_value()) return a.key.has_value();
-    if (!a.key) return false;
-    return descending ? *a.key > *b.key : *a.key < *b.key;
-  });
-}
+  // A row's text, with its key (none: failed or null, written last).
+  void add(std::optional<double> key, std::string_view text) {
+    const Kept row{key.value_or(0.0), next_++, written_, static_cast<std::uint32_t>(text.size()),
+                   key.has_value()};
+    if (top_ > 0 && rows_.size() == top_ && !before(row, rows_.front()))
+      return;  // not among the best
+    append(text);
+    rows_.push_back(row);
+    if (top_ == 0) return;
+    std::push_heap(rows_.begin(), rows_.end(), Before{this});
+    if (rows_.size() > top_) {
+      std::pop_heap(rows_.begin(), rows_.end(), Before{this});
+      rows_.pop_back();
+    }
+  }
+
+  // Every row kept, best first (rows with equal keys in input order).
+  void write(std::ostream& out) {
+    flush();
+    std::sort(rows_.begin(), rows_.end(), Before{this});
+    std::string text;
+    for (const Kept& row : rows_) {
+      text.resize(row.length);
+      for (std::size_t done = 0; done < row.length;) {
+        const ssize_t n = ::pread(fd_, text.data() + done, row.length - done,
+                                  static_cast<off_t>(row.offset + done));
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) {
+          throw std::runtime_error(
+              fmt::format("cannot read back the sorted rows' temporary file: {}",
+                          n < 0 ? std::strerror(errno) : "it ended early"));
+        }
+        done += static_cast<std::size_t>(n);
+      }
+      out << text;
+    }
+  }
+
+ private:
+  struct Kept {  // 32 bytes
+    double key;
+    std::uint64_t order;   // the row's place in the input
+    std::uint64_t offset;  // where its text starts in the file
+    std::uint32_t length;  // a row is far below 4 GiB: a line is at most 1 MiB
+    bool has_key;
+  };
+  static_assert(sizeof(Kept) == 32);
+
+  // Whether `a` is written before `b`: keyed rows first, by key in the asked
+  // direction, then in input order.
+  bool before(const Kept& a, const Kept& b) const {
+    if (a.has_key != b.has_key) return a.has_key;
+    if (a.has_key && a.key != b.key) return descending_ ? a.key > b.key : a.key < b.key;
+    return a.order < b.order;
+  }
+  struct Before {
+    const SortedRows* rows;
+    bool operator()(const Kept& a, const Kept& b) const { return rows->before(a, b); }
+  };
+
+  void append(std::string_view text) {
+    buffer_ += text;
+    written_ += text.size();
+    if (buffer_.size() >= (std::size_t{1} << 20)) flush();
+  }
+  void flush() {
+    for (std::size_t done = 0; done < buffer_.size();) {
+      const ssize_t n = ::write(fd_, buffer_.data() + done, buffer_.size() - done);
+      if (n < 0 && errno == EINTR) continue;
+      if (n < 0) {
+        throw std::runtime_error(
+            fmt::format("cannot write the sorted rows' temporary file: {}", std::strerror(errno)));
+      }
+      done += static_cast<std::size_t>(n);
+    }
+    buffer_.clear();
+  }
+
+  bool descending_;
+  std::size_t top_;
+  int fd_ = -1;
+  std::vector<Kept> rows_;  // with top_, a heap whose front is the worst kept
+  std::uint64_t next_ = 0;
+  std::uint64_t written_ = 0;
+  std::string buffer_;
+};
 
 }  // namespace
 
@@ -931,7 +1052,7 @@ BatchSummary run_batch(std::istream& in, const std::string& source, const BatchO
       }
     }
     out << "line,name";
-    for (const std::size_t k : header.passed) out << "," << csv_field(one_line(header.names[k]));
+    for (const std::size_t k : header.passed) out << "," << csv_field(header.names[k]);
     for (const OutputSpec& o : output_specs()) out << "," << o.name;
     out << ",error\n";
   }
@@ -944,7 +1065,8 @@ BatchSummary run_batch(std::istream& in, const std::string& source, const BatchO
   chunk.reserve(kBatchChunkRows);
   std::vector<std::string> texts(std::max(1, options.threads));
   std::vector<Outcome> outcomes(texts.size());  // per thread
-  std::vector<SortedRow> kept;                  // with sort_by
+  std::optional<SortedRows> kept;               // with sort_by
+  if (sort_by) kept.emplace(options.descending, options.top);
   const auto flush = [&] {
     // Rows are read, evaluated and formatted by the threads, each into its
     // own block of text (or, sorted, its own row); the blocks are written in order.
@@ -969,11 +1091,7 @@ BatchSummary run_batch(std::istream& in, const std::string& source, const BatchO
       throw InputError(header_at, "", fmt::format("{}: {}", column.label, row.bad_column_detail));
     }
     if (sort_by) {
-      for (Row& row : read) kept.push_back(SortedRow{row.key, row.line, std::move(row.out)});
-      if (options.top > 0 && kept.size() > 2 * options.top + kBatchChunkRows) {
-        order_rows(kept, options.descending);
-        kept.resize(options.top);
-      }
+      for (const Row& row : read) kept->add(row.key, row.out);
     } else {
       for (const std::string& text : texts) out << text;
     }
@@ -985,6 +1103,7 @@ BatchSummary run_batch(std::istream& in, const std::string& source, const BatchO
     }
     rows = 0;
     chunk_bytes = 0;
+    if (options.progress) options.progress(summary.rows, reader.bytes_read());
   };
   // In JSON Lines the first line read is the first design.
   bool pending = have_line && !csv;
@@ -994,6 +1113,7 @@ BatchSummary run_batch(std::istream& in, const std::string& source, const BatchO
     const std::size_t line_number = reader.line_number();
     if (trimmed(line).empty()) continue;
     if (csv) complete_record(reader, line);
+    if (csv && blank_record(line)) continue;  // the empty last row a spreadsheet exports
     chunk_bytes += line.size();
     if (rows == chunk.size()) chunk.emplace_back();
     chunk[rows++].start(line_number, line);
@@ -1001,9 +1121,7 @@ BatchSummary run_batch(std::istream& in, const std::string& source, const BatchO
   }
   if (rows > 0) flush();
   if (sort_by) {
-    order_rows(kept, options.descending);
-    if (options.top > 0 && kept.size() > options.top) kept.resize(options.top);
-    for (const SortedRow& row : kept) out << row.text;
+    kept->write(out);
   }
   return summary;
 }

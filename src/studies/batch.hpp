@@ -10,6 +10,8 @@
 // text) is refused as a whole, once.
 
 #include <cstddef>
+#include <cstdint>
+#include <functional>
 #include <istream>
 #include <optional>
 #include <ostream>
@@ -60,11 +62,15 @@ struct BatchOptions {
   std::string map_source = "--map";  // how messages name the map
   // Rows ordered by this output (a name of outputs.hpp), ascending, or
   // descending with `descending`; rows without it (failed, or null) last, in
-  // input order. Empty: input order, streamed. Sorting keeps the rows' text
-  // in memory (with `top`, only the best `top` and a chunk).
+  // input order. Empty: input order, streamed. Sorting keeps each row's key and
+  // place in memory (32 bytes; with `top`, only the best `top`) and its text
+  // in an unlinked temporary file under $TMPDIR (or /tmp).
   std::string sort_output;
   bool descending = false;
   std::size_t top = 0;  // with sort_output: only the first `top` rows (0: all)
+  // Called on the calling thread after each chunk of rows with the rows read
+  // and the bytes of the input read so far (for a progress line); may be empty.
+  std::function<void(std::size_t, std::uint64_t)> progress;
 };
 
 // A column map written inline, "weight=implement.mass_g,length=implement.length_in".

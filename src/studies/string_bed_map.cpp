@@ -1,9 +1,11 @@
 #include "studies/string_bed_map.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
+#include "io/parallel.hpp"
 #include "sweetspot/collision.hpp"
 #include "sweetspot/frame_modes.hpp"
 #include "sweetspot/impact_response.hpp"
@@ -69,7 +71,9 @@ StringBedMap string_bed_map(const Design& design, const StringBedMapOptions& opt
   const double dy = 2.0 * bed.semi_width_m / options.rows;
   const MassProperties& body = design.implement.mass_properties();
   map.points.resize(static_cast<std::size_t>(options.columns) * options.rows);
-  for (int i = 0; i < options.columns; ++i) {
+  // One column of the grid, written into its own points: columns are
+  // independent, so threads may take any of them.
+  const auto column = [&](int i) {
     const double x = x0 + (i + 0.5) * dx;
     // With a given duration the vibration per unit impulse depends on x only.
     std::optional<double> column_kappa;
@@ -122,6 +126,21 @@ StringBedMap string_bed_map(const Design& design, const StringBedMapOptions& opt
         if (energy_J <= ball_loss_J * (1.0 + 1e-12)) p.vibration_energy_J = energy_J;
       }
     }
+  };
+  const std::size_t total = map.points.size();
+  const int threads = std::max(1, options.threads);
+  // Columns in waves, a few per thread, so that the progress is told between
+  // waves and the ellipse's short edge columns do not leave a thread idle long.
+  const int wave = threads * 4;
+  if (options.progress) options.progress(0, total);
+  for (int first = 0; first < options.columns; first += wave) {
+    const int count = std::min(wave, options.columns - first);
+    for_blocks(static_cast<std::size_t>(count), threads,
+               [&](std::size_t, std::size_t from, std::size_t to) {
+                 for (std::size_t k = from; k < to; ++k) column(first + static_cast<int>(k));
+               });
+    if (options.progress)
+      options.progress(static_cast<std::size_t>(first + count) * options.rows, total);
   }
   return map;
 }

@@ -4,6 +4,8 @@
 // with the frame's stiffness, the vibration the impact excites) evaluated on a
 // grid over the head's ellipse. Plain data, so that a report can draw it.
 
+#include <cstddef>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -22,6 +24,12 @@ struct StringBedMapOptions {
   // COR): its rebound, its peak force and the vibration it leaves; kRigid:
   // power and shock only.
   Fidelity fidelity = Fidelity::kRigid;
+  // Threads the grid's columns are shared among (>= 1); the map is the same
+  // whatever their number.
+  int threads = 1;
+  // Called on the calling thread now and then with the grid points done and
+  // their total (for a progress line); may be empty.
+  std::function<void(std::size_t, std::size_t)> progress;
 };
 
 // One grid point. Values are those of evaluate() at (x, y) with the design's

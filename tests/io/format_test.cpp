@@ -52,6 +52,65 @@ TEST_CASE(
   CHECK(csv_field("two\nlines") == "\"two\nlines\"");
 }
 
+TEST_CASE("A CSV cell a spreadsheet would read as a formula is quoted after a single quote") {
+  // The OWASP rule: = + - @ tab CR at the start of a cell.
+  CHECK(csv_field("=1+2") == "\"'=1+2\"");
+  CHECK(csv_field("=HYPERLINK(\"http://x\")") == "\"'=HYPERLINK(\"\"http://x\"\")\"");
+  CHECK(csv_field("+cmd") == "\"'+cmd\"");
+  CHECK(csv_field("-2+3") == "\"'-2+3\"");
+  CHECK(csv_field("@SUM(A1)") == "\"'@SUM(A1)\"");
+  CHECK(csv_field("\t=1") == "\"'\t=1\"");
+  CHECK(csv_field("\r=1") == "\"'\r=1\"");
+  CHECK(csv_field("+-3") == "\"'+-3\"");
+  CHECK(csv_field("-inf") == "\"'-inf\"");
+  CHECK(csv_field("-") == "\"'-\"");
+  // A formula character elsewhere is text, and a whole number stays a number.
+  CHECK(csv_field("a=b") == "a=b");
+  CHECK(csv_field("-0.5") == "-0.5");
+  CHECK(csv_field("+3") == "+3");
+  CHECK(csv_field("-1e-05") == "-1e-05");
+  CHECK(csv_plain("-0.5"));
+  CHECK_FALSE(csv_plain("-x"));
+  CHECK_FALSE(csv_plain("=x"));
+}
+
+TEST_CASE("A CSV cell keeps its line breaks inside quotes and shows other control characters") {
+  CHECK(csv_field("a\r\nb") == "\"a\r\nb\"");
+  CHECK(csv_field(std::string("nul\0here", 8)) == "nul\\x00here");
+  CHECK(csv_field("esc\x1b[2J") == "esc\\x1b[2J");
+  CHECK(csv_field("tab\tin") == "\"tab\tin\"");
+  // Read back by RFC 4180 rules, a multi-line cell is the same cell.
+  const std::string cell = csv_field("line one\nline \"two\"");
+  CHECK(cell == "\"line one\nline \"\"two\"\"\"");
+}
+
+TEST_CASE("Terminal and Markdown text carry no control character") {
+  CHECK(terminal_text("a\n# heading") == "a\\n# heading");
+  CHECK(terminal_text("\x1b]0;title\x07") == "\\x1b]0;title\\x07");
+  CHECK(terminal_text("\x7f") == "\\x7f");
+  CHECK(terminal_text("csi \xc2\x9b"
+                      "2J") == "csi \\u009b2J");  // U+009B, the C1 CSI
+  CHECK(terminal_text("caf\xc3\xa9 \xe2\x80\x94") == "caf\xc3\xa9 \xe2\x80\x94");
+  CHECK(terminal_text("bad \xff byte") == "bad \uFFFD byte");
+  CHECK(md_cell("x|y\nz") == "x\u2223y\\nz");
+  for (const std::string& text : {terminal_text(std::string("\0\x01\x1f\r\t", 5)),
+                                  md_cell(std::string("\0\x01\x1f\r\t", 5))}) {
+    for (const char c : text) CHECK((static_cast<unsigned char>(c) >= 0x20 && c != 0x7f));
+  }
+}
+
+TEST_CASE("XML text holds only characters XML 1.0 allows, others as U+FFFD") {
+  CHECK(xml_chars("tab\tLF\nCR\r") == "tab\tLF\nCR\r");
+  CHECK(xml_chars(std::string("nul\0", 4)) == "nul\uFFFD");
+  CHECK(xml_chars("\x01\x1b\x7f") == "\uFFFD\uFFFD\uFFFD");
+  CHECK(xml_chars("\xef\xbf\xbe\xef\xbf\xbf") == "\uFFFD\uFFFD");  // U+FFFE, U+FFFF
+  CHECK(xml_chars("\xed\xa0\x80") == "\uFFFD\uFFFD\uFFFD");        // a lone surrogate's bytes
+  CHECK(xml_chars("\xc2\x85") == "\uFFFD");                        // C1 NEL
+  CHECK(xml_chars("\xef\xbf\xbd \xf0\x9f\x8e\xbe \xe2\x88\xa3") ==
+        "\xef\xbf\xbd \xf0\x9f\x8e\xbe \xe2\x88\xa3");  // U+FFFD, U+1F3BE, U+2223 stay
+  CHECK(xml_chars("cut \xe2\x88") == "cut \uFFFD\uFFFD");
+}
+
 TEST_CASE("Every output of an evaluation is in the JSON, null only with a note") {
   DesignFile file{"row1.json",
                   "Table I top row",
@@ -73,6 +132,26 @@ TEST_CASE("Every output of an evaluation is in the JSON, null only with a note")
       CHECK(value.get<double>() == output.value(e).value());
     }
   }
+}
+
+TEST_CASE("An evaluation's CSV and Markdown apply their format's rule to a hostile name") {
+  DesignFile file{"a\nb.json",
+                  "=cmd|x\n# injected\x1b[2J",
+                  Design{Implement::paper_racquet(0.70, 0.25, 0.8)},
+                  "head_to_handle_mass_ratio",
+                  {},
+                  Json::object(),
+                  {},
+                  "auto"};
+  const Evaluation e = evaluate(file.design);
+  const std::string csv = evaluation_report(file, e, Format::kCsv);
+  // The name's cell: neutralised, quoted, the line break kept inside the quotes.
+  CHECK(csv.find("\n\"'=cmd|x\n# injected\\x1b[2J\",") != std::string::npos);
+  const std::string md = evaluation_report(file, e, Format::kMarkdown);
+  CHECK_THAT(md, Catch::StartsWith("# =cmd\u2223x\\n# injected\\x1b[2J\n"));
+  CHECK(md.find("source `a\\nb.json`") != std::string::npos);
+  CHECK(md.find("\n# injected") == std::string::npos);
+  CHECK(md.find('\x1b') == std::string::npos);
 }
 
 TEST_CASE("Appending a number writes exactly the text exact() gives, shortest and round-trip") {

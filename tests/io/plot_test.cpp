@@ -15,6 +15,7 @@
 #include <thread>
 
 #include "file_helpers.hpp"
+#include "io/format.hpp"
 
 namespace sweetspot::io {
 namespace {
@@ -213,6 +214,21 @@ TEST_CASE("An '&' in a title or a key is &amp; in the SVG, and entities stay as 
   CHECK(typed->find("Tom &amp;amp; Jerry") != std::string::npos);
   CHECK(typed->find("]]>") == std::string::npos);
   CHECK(typed->find("]]&gt; again") != std::string::npos);
+}
+
+TEST_CASE("An SVG plot holds only characters XML 1.0 allows, whatever its title and keys hold") {
+  // U+FFFE and U+FFFF (not XML characters), a C1 control and a byte that is not UTF-8.
+  Plot plot = two_points("title \xef\xbf\xbe\xef\xbf\xbf end");
+  plot.series[0].title = "key \xc2\x85 \xff end";
+  std::string why;
+  const auto svg = render_svg(plot, "xml-", &why);
+  REQUIRE(svg);
+  CHECK(svg->find("\xef\xbf\xbe") == std::string::npos);
+  CHECK(svg->find("\xef\xbf\xbf") == std::string::npos);
+  CHECK(svg->find("\xc2\x85") == std::string::npos);
+  CHECK(svg->find('\xff') == std::string::npos);
+  CHECK(*svg == xml_chars(*svg));
+  CHECK(svg->find("title \xef\xbf\xbd\xef\xbf\xbd end") != std::string::npos);
 }
 
 }  // namespace

@@ -31,10 +31,12 @@ std::size_t count(const std::string& text, const std::string& piece) {
 TEST_CASE("Every user string is escaped: markup in a racquet's name is shown, never run") {
   CHECK(html_escape("<script>alert('x')</script> & \"Pro\"") ==
         "&lt;script&gt;alert(&#39;x&#39;)&lt;/script&gt; &amp; &quot;Pro&quot;");
+  // Characters XML 1.0 does not allow (and HTML's controls) are U+FFFD, shown, not dropped.
   CHECK(html_escape(std::string("a\x01"
                                 "b\x7f"
                                 "c\td\n",
-                                8)) == "abc\td\n");
+                                8)) == "a\uFFFDb\uFFFDc\td\n");
+  CHECK(html_escape("\xef\xbf\xbe<\xef\xbf\xbf") == "\uFFFD&lt;\uFFFD");
   Json document = read_json_file(SWEETSPOT_SOURCE_DIR "/designs/racquets/tour-100.json");
   document["name"] = "<img src=x onerror=alert(1)> & Co";
   document["description"] = "</style><script>x()</script>";
@@ -170,6 +172,25 @@ TEST_CASE("Backticked names become code, everything else in a sentence is escape
   CHECK(plot_text_for_html(kHostile) == kHostile);
   CHECK(plot_text_for_html("a\x01"
                            "b\nc\x7f") == "abc");
+}
+
+TEST_CASE("A comparison applies each format's rule to its names: CSV, Markdown and HTML") {
+  Json hostile = read_json_file(SWEETSPOT_SOURCE_DIR "/designs/racquets/tour-100-lead-at-tip.json");
+  hostile["name"] = "@cmd\n# injected \x1b[2J\xef\xbf\xbe";
+  std::vector<reports::ComparedDesign> designs;
+  designs.push_back(reports::compare_one(tour_100(), "", 1e-6));
+  designs.push_back(reports::compare_one(read_design(hostile, "=b.json"), "", 1e-6));
+  const std::string csv = reports::comparison_report(designs, Format::kCsv);
+  CHECK(csv.find("\n\"'@cmd\n# injected \\x1b[2J\xef\xbf\xbe\",\"'=b.json\",") !=
+        std::string::npos);
+  const std::string md = reports::comparison_report(designs, Format::kMarkdown);
+  CHECK(md.find("\n# injected") == std::string::npos);
+  CHECK(md.find('\x1b') == std::string::npos);
+  CHECK(md.find("@cmd\\n# injected \\x1b[2J") != std::string::npos);
+  const std::string page = reports::comparison_html(designs);
+  CHECK(page.find("\xef\xbf\xbe") == std::string::npos);
+  CHECK(page.find('\x1b') == std::string::npos);
+  CHECK(page.find("@cmd\n# injected \xef\xbf\xbd[2J\xef\xbf\xbd") != std::string::npos);
 }
 
 TEST_CASE(

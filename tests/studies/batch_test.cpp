@@ -362,6 +362,59 @@ TEST_CASE("Unmapped columns pass through to CSV beside the outputs, as they were
   CHECK(out.out.find("\n4,Lite 105,C3,Bolt,158,") != std::string::npos);
 }
 
+TEST_CASE("A passed-through cell or a name a spreadsheet would read as a formula is neutralised") {
+  BatchOptions options;
+  options.input = CatalogueFormat::kCsv;
+  options.base = parse_json(kBase, "base.json");
+  options.format = Format::kCsv;
+  options.map = {{"racquet", "name"}, {"weight", "implement.mass_g"}};
+  const Outcome out = run_with(
+      "code,racquet,weight,note\n"
+      "=1+2,@SUM(A1),300,-0.5\n"
+      "+cmd,-Club,310,\"two\nlines, \"\"quoted\"\"\"\n",
+      options);
+  CHECK(out.summary.failed == 0);
+  CHECK_THAT(out.out, Catch::StartsWith("line,name,code,note,"));
+  // The formulas quoted after a single quote; a number stays a number.
+  CHECK(out.out.find("\n2,\"'@SUM(A1)\",\"'=1+2\",-0.5,") != std::string::npos);
+  // A multi-line cell comes back as the same quoted multi-line cell.
+  CHECK(out.out.find("\n3,\"'-Club\",\"'+cmd\",\"two\nlines, \"\"quoted\"\"\",") !=
+        std::string::npos);
+}
+
+TEST_CASE("The blank last row a spreadsheet exports is skipped, not an error row") {
+  for (const std::string blank : {",\n", ", ,\n", "\"\",\"\"\n", ",\r\n"}) {
+    const Outcome out =
+        run("name,implement.mass_g\nr1,0.3\n" + blank, CatalogueFormat::kCsv, Format::kCsv);
+    CHECK(out.summary.rows == 1);
+    CHECK(out.summary.failed == 0);
+  }
+  // A row with one cell is a row.
+  CHECK(run("name,implement.mass_g\nr1,0.3\n,0.31\n", CatalogueFormat::kCsv).summary.rows == 2);
+}
+
+TEST_CASE("A column passed through twice is refused once, naming both") {
+  BatchOptions options;
+  options.input = CatalogueFormat::kCsv;
+  options.base = parse_json(kBase, "base.json");
+  options.map = {{"weight", "implement.mass_kg"}};
+  CHECK_THROWS_WITH(run_with("code,weight,code\nA,0.3,B\n", options),
+                    "cat.csv:1: column 3 \"code\": repeats column 1, passed through too "
+                    "(expected each column passed through named once)");
+}
+
+TEST_CASE("A reference.source column fills the design's reference, as a design file would") {
+  const Outcome out =
+      run("name,reference.source,reference.swingweight_kg_cm2\nr1,Spec sheet (2024),320\n",
+          CatalogueFormat::kCsv, Format::kCsv);
+  CHECK(out.summary.failed == 0);
+  // Its numbers are numbers, as in a file.
+  const Outcome bad =
+      run("name,reference.swingweight_kg_cm2\nr1,heavy\n", CatalogueFormat::kCsv, Format::kCsv);
+  CHECK(bad.summary.failed == 1);
+  CHECK(bad.out.find("/reference/swingweight_kg_cm2") != std::string::npos);
+}
+
 TEST_CASE("An inline map and a JSON map are the same map") {
   const auto inline_map = parse_column_map(
       "racquet=name, headsize=strings.head_size_in2,length=implement.length_in,"
@@ -552,12 +605,18 @@ TEST_CASE("A row is written the same after any other rows, across chunks and thr
                  {"swingweight", "implement.swingweight_kg_cm2"}};
   options.format = Format::kCsv;
   const std::string all = run_with(table, options).out;
-  // Each output row is one line, starting with its input line's number.
+  // Each output row is one CSV record (a multi-line name stays one quoted
+  // cell), starting with its input line's number.
   std::map<int, std::string> written;
   std::istringstream lines(all);
   std::string text;
   std::getline(lines, text);  // the header
-  while (std::getline(lines, text)) written[std::stoi(text)] = text;
+  while (std::getline(lines, text)) {
+    std::string more;
+    while (std::count(text.begin(), text.end(), '"') % 2 == 1 && std::getline(lines, more))
+      text += "\n" + more;
+    written[std::stoi(text)] = text;
+  }
   REQUIRE(written.size() == rows.size());
   for (std::size_t i = 0; i < rows.size(); ++i) {
     // Rows of the first chunk now and then; of the second (in reused slots) often.
@@ -575,6 +634,9 @@ TEST_CASE("A row is written the same after any other rows, across chunks and thr
   std::getline(sorted_lines, text);
   std::size_t ok = 0, failed = 0, ok_after_failed = 0;
   while (std::getline(sorted_lines, text)) {
+    std::string more;
+    while (std::count(text.begin(), text.end(), '"') % 2 == 1 && std::getline(sorted_lines, more))
+      text += "\n" + more;
     if (!text.ends_with(',')) {
       ++failed;
     } else {

@@ -2,9 +2,12 @@
 // about the long axis gives a map symmetric in y, exactly.
 #include "studies/string_bed_map.hpp"
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <cstddef>
 #include <cstring>
+#include <vector>
 
 #include "sweetspot/evaluate.hpp"
 #include "sweetspot/string_bed.hpp"
@@ -23,9 +26,17 @@ Design racquet() {
 
 bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
+StringBedMapOptions grid(int columns, int rows, Fidelity fidelity = Fidelity::kRigid) {
+  StringBedMapOptions options;
+  options.columns = columns;
+  options.rows = rows;
+  options.fidelity = fidelity;
+  return options;
+}
+
 TEST_CASE("Every map point is the evaluation of an impact there") {
   Design d = racquet();
-  const StringBedMap map = string_bed_map(d, StringBedMapOptions{9, 7});
+  const StringBedMap map = string_bed_map(d, grid(9, 7));
   REQUIRE(map.points.size() == 63);
   int on_bed = 0;
   for (const StringBedMapPoint& p : map.points) {
@@ -47,7 +58,7 @@ TEST_CASE("Every map point is the evaluation of an impact there") {
 TEST_CASE("A map of a symmetric head is symmetric in y, bit for bit") {
   Design d = racquet();
   d.strings = StringBed{};  // the duration from the tension varies over the bed too
-  const StringBedMap map = string_bed_map(d, StringBedMapOptions{20, 15});
+  const StringBedMap map = string_bed_map(d, grid(20, 15));
   for (int j = 0; j < map.rows; ++j) {
     for (int i = 0; i < map.columns; ++i) {
       const StringBedMapPoint& a = map.points[j * map.columns + i];
@@ -61,7 +72,7 @@ TEST_CASE("A map of a symmetric head is symmetric in y, bit for bit") {
 }
 
 TEST_CASE("Power falls and shock is least along the hand-held COP's line") {
-  const StringBedMap map = string_bed_map(racquet(), StringBedMapOptions{30, 31});
+  const StringBedMap map = string_bed_map(racquet(), grid(30, 31));
   // The middle row is the long axis (31 rows: y = 0 exactly).
   const int mid = 15;
   CHECK(map.points[mid * 30].off_axis_m == 0.0);
@@ -77,7 +88,7 @@ TEST_CASE("Power falls and shock is least along the hand-held COP's line") {
 TEST_CASE("The feel map is the vibration energy of the response model at each point") {
   Design d = racquet();
   d.stiffness.fundamental_free_Hz = 150.0;
-  const StringBedMap map = string_bed_map(d, StringBedMapOptions{8, 5, Fidelity::kModal});
+  const StringBedMap map = string_bed_map(d, grid(8, 5, Fidelity::kModal));
   REQUIRE(map.node_free_from_butt_m);
   for (const StringBedMapPoint& p : map.points) {
     if (!p.on_bed) continue;
@@ -99,7 +110,7 @@ TEST_CASE("A collision map is evaluate() at collision fidelity at each point, bi
   d.strings = StringBed{};
   d.stiffness.fundamental_free_Hz = 150.0;
   d.cor_given = false;
-  const StringBedMap map = string_bed_map(d, StringBedMapOptions{6, 5, Fidelity::kCollision});
+  const StringBedMap map = string_bed_map(d, grid(6, 5, Fidelity::kCollision));
   REQUIRE(map.node_free_from_butt_m);
   int checked = 0;
   for (const StringBedMapPoint& p : map.points) {
@@ -125,6 +136,41 @@ TEST_CASE("A collision map is evaluate() at collision fidelity at each point, bi
   }
 }
 
+TEST_CASE("A map shared among threads is the map of one thread, bit for bit, and says how far") {
+  Design d = racquet();
+  d.strings = StringBed{};
+  d.stiffness.fundamental_free_Hz = 150.0;
+  d.cor_given = false;
+  const StringBedMap one = string_bed_map(d, grid(13, 9, Fidelity::kCollision));
+  for (const int threads : {2, 3, 16}) {
+    StringBedMapOptions options = grid(13, 9, Fidelity::kCollision);
+    options.threads = threads;
+    std::vector<std::size_t> done;
+    options.progress = [&](std::size_t points, std::size_t total) {
+      CHECK(total == 13u * 9u);
+      done.push_back(points);
+    };
+    const StringBedMap many = string_bed_map(d, options);
+    REQUIRE(many.points.size() == one.points.size());
+    for (std::size_t k = 0; k < one.points.size(); ++k) {
+      const StringBedMapPoint& a = one.points[k];
+      const StringBedMapPoint& b = many.points[k];
+      REQUIRE(a.on_bed == b.on_bed);
+      CHECK(same_bits(a.from_butt_m, b.from_butt_m));
+      CHECK(same_bits(a.off_axis_m, b.off_axis_m));
+      if (!a.on_bed) continue;
+      CHECK(same_bits(a.apparent_cor, b.apparent_cor));
+      CHECK(same_bits(a.peak_wrist_force_N, b.peak_wrist_force_N));
+      CHECK(same_bits(*a.vibration_energy_J, *b.vibration_energy_J));
+    }
+    // From nothing to every point, never backwards.
+    REQUIRE(done.size() >= 2);
+    CHECK(done.front() == 0);
+    CHECK(done.back() == 13u * 9u);
+    CHECK(std::is_sorted(done.begin(), done.end()));
+  }
+}
+
 TEST_CASE("The solved collision's power peaks between the hand-held COP and the node") {
   // The rigid model at a fixed COR rises towards the throat (M_eff grows
   // towards the handle); the solved collision loses energy to the frame's
@@ -133,7 +179,7 @@ TEST_CASE("The solved collision's power peaks between the hand-held COP and the 
   d.strings = StringBed{};
   d.stiffness.fundamental_free_Hz = 150.0;
   d.cor_given = false;
-  const StringBedMap map = string_bed_map(d, StringBedMapOptions{30, 31, Fidelity::kCollision});
+  const StringBedMap map = string_bed_map(d, grid(30, 31, Fidelity::kCollision));
   const int mid = 15;
   int best = -1;
   for (int i = 0; i < 30; ++i) {
@@ -157,8 +203,7 @@ TEST_CASE("A map needs the head or a twistweight, and a grid of at least 2 x 2")
   Design d{Implement::paper_racquet(0.6858, 0.32, 1.0)};
   CHECK_THROWS_WITH(string_bed_map(d),
                     Catch::StartsWith("implement: ") && Catch::Contains("headsize_sq_in"));
-  CHECK_THROWS_WITH(string_bed_map(racquet(), StringBedMapOptions{1, 50}),
-                    Catch::StartsWith("--columns"));
+  CHECK_THROWS_WITH(string_bed_map(racquet(), grid(1, 50)), Catch::StartsWith("--columns"));
 }
 
 }  // namespace
