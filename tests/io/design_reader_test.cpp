@@ -110,7 +110,9 @@ TEST_CASE("The three implement forms read from files give the same evaluation") 
   const std::string specs_text =
       R"({"implement": {"length_m": 0.7, "mass_kg": 0.25, "balance_from_butt_m": )" +
       std::to_string(paper.balance_from_butt_m) + R"(, "swingweight_kg_cm2": )" +
-      std::to_string(paper.swingweight_kg_m2 * 1e4) + "}}";
+      std::to_string(paper.swingweight_kg_m2 * 1e4) +
+      R"(}, "impact": {"from_tip_m": 0.05}})";  // a spec sheet's default is the centre of the
+                                                // strings
   const Evaluation specs = evaluate(read(specs_text.c_str()).design);
   // std::to_string keeps 6 decimals: 1e-6 m in balance, 1e-6 kg cm^2 in swingweight.
   CHECK(specs.peak_wrist_force_N == Approx(paper.peak_wrist_force_N).epsilon(1e-5));

@@ -144,8 +144,8 @@ TEST_CASE("Fields no binding can set are not compiled") {
     INFO(pointer);
     CHECK_FALSE(bind_field(description, pointer));
   }
-  CHECK(bind_field(description, "/hand/mass_g")->factor == 0.001);
-  CHECK(bind_field(description, "/impact/from_tip_in")->factor == 0.0254);
+  CHECK(bind_field(description, "/hand/mass_g")->scale.factor == 0.001);
+  CHECK(bind_field(description, "/impact/from_tip_in")->scale.factor == 0.0254);
   CHECK(bind_field(description, "/implement/mass_g")->implement);
   CHECK_FALSE(bind_field(description, "/hand/mass_g")->implement);
 }
