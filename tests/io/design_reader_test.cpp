@@ -1,8 +1,12 @@
 #include "io/design_reader.hpp"
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <string>
+#include <vector>
 
+#include "io/design_fields.hpp"
 #include "io/input_error.hpp"
 #include "sweetspot/evaluate.hpp"
 #include "sweetspot/string_bed.hpp"
@@ -304,4 +308,140 @@ TEST_CASE("A file name that is not UTF-8 stands in for a missing name as valid U
 }
 
 }  // namespace
+}  // namespace sweetspot::io
+
+namespace sweetspot::io {
+namespace {
+
+std::string error_of(const char* text) {
+  try {
+    read(text);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+bool has(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+}  // namespace
+
+TEST_CASE(
+    "A misspelt key is named with the keys it may have meant, before any missing key is "
+    "complained of") {
+  const auto implement_with = [](const std::string& key) {
+    static std::string text;
+    text = R"({"implement": {")" + key + R"(": 1, "length_in": 27}})";
+    return error_of(text.c_str());
+  };
+  const std::string weight = implement_with("weight_oz");
+  CHECK(has(weight, "/implement/weight_oz: unknown key; the mass is given as mass_kg or mass_g"));
+  CHECK_FALSE(has(weight, "missing"));
+  CHECK(has(implement_with("length_inch"),
+            "/implement/length_inch: unknown key; the length is given as length_m, length_cm, "
+            "length_mm or length_in"));
+  CHECK(has(implement_with("balance_in"),
+            "/implement/balance_in: unknown key; the balance is given as balance_from_butt_m, "
+            "balance_cm or balance_pts_hl"));
+  CHECK(has(implement_with("swingweight"),
+            "/implement/swingweight: unknown key; the swingweight is given as swingweight_kg_m2 "
+            "or swingweight_kg_cm2"));
+  CHECK(has(implement_with("mas_g"), "did you mean mass_g?"));
+  // No near key: the list alone, with every spelling the reader accepts.
+  const std::string colour = implement_with("colour");
+  CHECK(has(colour, "/implement/colour: unknown key (expected one of: length_m, length_cm,"));
+  CHECK(has(error_of(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25,
+      "head_to_handle_mass_ratio": 0.8}, "ball": {"speed_kph": 50}})"),
+            "/ball/speed_kph: unknown key; the speed is given as speed_m_s, speed_km_h or "
+            "speed_mph"));
+  CHECK(has(error_of(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25,
+      "head_to_handle_mass_ratio": 0.8}, "hand": {"colour": 1}})"),
+            "speed_km_h") == false);
+  CHECK(has(error_of(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25,
+      "head_to_handle_mass_ratio": 0.8, "point_masses": [{"weight_g": 5, "clock": 12}]}})"),
+            "/implement/point_masses/0/weight_g: unknown key; the mass is given as mass_kg or "
+            "mass_g"));
+}
+
+TEST_CASE("Every accepted spelling is in the expected keys of its object, and is accepted") {
+  // Each spelling of every field of the table that needs no other, written
+  // alone into its object, is read (or refused for its value), never unknown.
+  for (const DesignField& field : design_fields()) {
+    if (field.object.empty() || field.object.find('/') != std::string_view::npos) continue;
+    for (const std::string& key : spellings_of(field)) {
+      const std::vector<std::string>& keys = design_keys(field.object);
+      CHECK(std::find(keys.begin(), keys.end(), key) != keys.end());
+      // A field that needs another (a balance needs a spec sheet's swingweight,
+      // a string spacing a tension) is another form's key alone.
+      if (!field.depends_on.empty()) continue;
+      std::string text = R"({"implement": {"length_m": 0.7, "mass_kg": 0.25,
+          "head_to_handle_mass_ratio": 0.8}})";
+      Json document = Json::parse(text);
+      document[std::string(field.object)][key] = 1;
+      INFO(field.object << "/" << key);
+      try {
+        read_design(document, "test.json");
+      } catch (const InputError& e) {
+        CHECK_FALSE(has(e.what(), "unknown key"));
+      }
+    }
+  }
+}
+
+TEST_CASE(
+    "A racquet with a head is hit at the centre of its strings when no impact is given, the "
+    "paper's designs 5 cm from the tip, and the provenance says so") {
+  const DesignFile racquet = read(R"({"implement": {"length_in": 27, "mass_g": 318,
+      "balance_cm": 32.5, "swingweight_kg_cm2": 325, "headsize_sq_in": 100},
+      "frame": {"RA": 66}, "strings": {"tension_lb": 52}})");
+  CHECK(racquet.design.implement.length_m() - racquet.design.impact_from_butt_m ==
+        centre_of_strings_from_tip_m(racquet.design));
+  CHECK(racquet.provenance.at("impact/from_butt_m") ==
+        "default for a racquet: the centre of the strings, 18 cm from the tip");
+  // The paper's racquet with a head is a racquet with a head.
+  const DesignFile headed = read(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25,
+      "head_to_handle_mass_ratio": 0.8, "headsize_cm2": 600}})");
+  CHECK(headed.design.impact_from_butt_m == 0.7 - centre_of_strings_from_tip_m(headed.design));
+  const DesignFile paper = read(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25,
+      "head_to_handle_mass_ratio": 0.8}})");
+  CHECK(paper.design.impact_from_butt_m == 0.7 - 0.05);
+  CHECK(paper.provenance.at("impact/from_butt_m") == "default (5 cm from the tip)");
+}
+
+TEST_CASE("The implement's head size is the string bed's; a second, different one is refused") {
+  const auto collision = [](int sq_in) {
+    const std::string text = R"({"implement": {"length_in": 27, "mass_g": 318, "balance_cm": 32.5,
+        "swingweight_kg_cm2": 325, "headsize_sq_in": )" +
+                             std::to_string(sq_in) +
+                             R"(}, "frame": {"RA": 66}, "strings": {"tension_lb": 52},
+        "impact": {"from_tip_cm": 18}})";
+    const DesignFile d = read(text.c_str());
+    REQUIRE(d.design.strings);
+    CHECK(d.design.strings->head_radius_m ==
+          Approx(std::sqrt(sq_in * 0.0254 * 0.0254 / 3.141592653589793)).epsilon(1e-12));
+    return evaluate(d.design, Fidelity::kCollision);
+  };
+  const Evaluation small = collision(95), large = collision(110);
+  CHECK(small.apparent_cor != large.apparent_cor);
+  CHECK(small.impact_duration_s != large.impact_duration_s);
+  const std::string both = error_of(R"({"implement": {"length_in": 27, "mass_g": 318,
+      "balance_cm": 32.5, "swingweight_kg_cm2": 325, "headsize_sq_in": 95},
+      "strings": {"tension_lb": 52, "head_size_in2": 110}})");
+  CHECK(has(both, "/strings/head_size_in2: contradicts /implement/headsize_sq_in"));
+  // The same size in the two keys is one head.
+  CHECK_NOTHROW(read(R"({"implement": {"length_in": 27, "mass_g": 318, "balance_cm": 32.5,
+      "swingweight_kg_cm2": 325, "headsize_sq_in": 100},
+      "strings": {"tension_lb": 52, "head_size_in2": 100}})"));
+}
+
+TEST_CASE("A unit that is a power of ten keeps the digits the user gave: 282 g is 0.282 kg") {
+  const DesignFile d = read(R"({"implement": {"length_cm": 68.5, "mass_g": 282,
+      "balance_cm": 32.5, "swingweight_kg_cm2": 325}})");
+  CHECK(d.design.implement.mass_properties().mass_kg == 0.282);
+  CHECK(d.design.implement.length_m() == 0.685);
+  CHECK(d.design.implement.mass_properties().com_from_butt_m == 0.325);
+}
+
 }  // namespace sweetspot::io
