@@ -445,3 +445,70 @@ TEST_CASE("A unit that is a power of ten keeps the digits the user gave: 282 g i
 }
 
 }  // namespace sweetspot::io
+
+namespace sweetspot::io {
+namespace {
+
+std::string source_file(const std::string& path) {
+  return read_input_file(std::string(SWEETSPOT_SOURCE_DIR) + "/" + path, kMaxInputFileBytes);
+}
+
+// The schema's "properties" of the table's object ("implement/sections/N" ->
+// properties.implement.properties.sections.items.properties); nullptr when
+// the schema does not describe it.
+const Json* schema_properties(const Json& schema, const std::string& object) {
+  const Json* node = &schema;
+  std::size_t start = 0;
+  while (start < object.size()) {
+    const std::size_t slash = std::min(object.find('/', start), object.size());
+    const std::string token = object.substr(start, slash - start);
+    if (token == "N") {
+      if (!node->contains("items")) return nullptr;
+      node = &(*node)["items"];
+    } else {
+      if (!node->contains("properties") || !(*node)["properties"].contains(token)) return nullptr;
+      node = &(*node)["properties"][token];
+    }
+    start = slash + 1;
+  }
+  return node->contains("properties") ? &(*node)["properties"] : nullptr;
+}
+
+}  // namespace
+
+TEST_CASE("The schema accepts exactly the keys of the field table, every spelling included") {
+  const Json schema = parse_json(source_file("schema/design.schema.json"), "design.schema.json");
+  std::vector<std::string> objects;
+  for (const DesignField& field : design_fields()) {
+    if (std::find(objects.begin(), objects.end(), field.object) == objects.end())
+      objects.emplace_back(field.object);
+  }
+  CHECK(objects.size() == 12);
+  for (const std::string& object : objects) {
+    INFO("object '" << object << "'");
+    const Json* properties = schema_properties(schema, object);
+    REQUIRE(properties);
+    std::vector<std::string> in_schema;
+    for (const auto& [key, value] : properties->items()) in_schema.push_back(key);
+    std::vector<std::string> in_table = design_keys(object);
+    std::sort(in_schema.begin(), in_schema.end());
+    std::sort(in_table.begin(), in_table.end());
+    CHECK(in_schema == in_table);
+  }
+}
+
+TEST_CASE("The README's table of design keys names every field of the field table") {
+  const std::string readme = source_file("README.md");
+  const std::size_t section = readme.find("## Design files");
+  REQUIRE(section != std::string::npos);
+  const std::size_t table = readme.find("| key | meaning", section);
+  REQUIRE(table != std::string::npos);
+  const std::size_t end = readme.find("\n\n", table);
+  const std::string rows = readme.substr(table, end - table);
+  for (const DesignField& field : design_fields()) {
+    INFO(field.object << " " << field.stem);
+    CHECK(rows.find(std::string(field.stem)) != std::string::npos);
+  }
+}
+
+}  // namespace sweetspot::io
