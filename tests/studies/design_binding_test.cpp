@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "io/design_fields.hpp"
 #include "io/design_reader.hpp"
 #include "io/format.hpp"
 #include "io/outputs.hpp"
@@ -137,6 +138,13 @@ const std::vector<Case>& cases() {
        {{"/implement/length_m", {0.68, 0.75, 0.3}},
         {"/implement/headsize_cm2", {650.0, -1.0}},
         {"/implement/point_masses/0/mass_g", {10.0, -1.0}}}},
+      // Sections with a head: tape at 10.5 and from the tip follows a section's length.
+      {R"({"implement": {"sections": [{"length_m": 0.35, "mass_kg": 0.14}, {"length_m": 0.35, "mass_kg": 0.11}],
+                         "headsize_sq_in": 100, "point_masses": [{"clock": 10.5, "mass_g": 4},
+                         {"from_tip_cm": 10, "mass_g": 3}]}, "frame": {"EI_N_m2": 250}})",
+       {{"/implement/sections/1/length_m", {0.4, 0.3, 0.01}},
+        {"/implement/sections/0/mass_kg", {0.15, -1.0}},
+        {"/implement/point_masses/1/from_tip_cm", {20.0, 90.0}}}},
   };
   return list;
 }
@@ -508,6 +516,35 @@ TEST_CASE(
   CHECK(same_bits(e29.swingweight_kg_m2, file29.swingweight_kg_m2));
   CHECK(same_bits(e29.impact_from_butt_m, file29.impact_from_butt_m));  // the centre of the strings
   CHECK(same_bits(e29.peak_wrist_force_N, file29.peak_wrist_force_N));
+}
+
+}  // namespace sweetspot::io
+
+namespace sweetspot::io {
+
+TEST_CASE("The binding sets only fields of the design's field table, in the table's spellings") {
+  std::size_t bound = 0;
+  for (const Case& c : cases()) {
+    const DesignDescription description = describe_design(Json::parse(c.design), "design.json");
+    for (const DesignField& field : design_fields()) {
+      std::string object(field.object);
+      for (std::size_t at = object.find('N'); at != std::string::npos; at = object.find('N'))
+        object.replace(at, 1, "0");
+      for (const std::string& key : spellings_of(field)) {
+        const std::string pointer = "/" + object + (object.empty() ? "" : "/") + key;
+        if (bind_field(description, pointer)) ++bound;
+      }
+      // A unit the table does not give is never bound.
+      for (const char* odd : {"_oz", "_ft", "_kmh"}) {
+        const std::string pointer =
+            "/" + object + (object.empty() ? "" : "/") + std::string(field.stem) + odd;
+        INFO(pointer);
+        CHECK_FALSE(bind_field(description, pointer));
+        CHECK_FALSE(design_path_problem(pointer).empty());
+      }
+    }
+  }
+  CHECK(bound > 50);
 }
 
 }  // namespace sweetspot::io
