@@ -27,6 +27,9 @@ struct DesignField {
   std::string_view default_value;      // in words, "" when required or none
   std::string_view range;              // in words, naming the core's constant
   std::string_view depends_on;         // what must be given with it, "" when nothing
+  // The default in SI when the field has a number for it (the core's), which
+  // the schema gives as "default" of the SI key and the reader applies.
+  std::optional<double> default_si = std::nullopt;
 };
 
 // Every field of a design file.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -509,6 +510,62 @@ TEST_CASE("The README's table of design keys names every field of the field tabl
     INFO(field.object << " " << field.stem);
     CHECK(rows.find(std::string(field.stem)) != std::string::npos);
   }
+}
+
+}  // namespace sweetspot::io
+
+namespace sweetspot::io {
+
+TEST_CASE("Each field's default in the table is the reader's and the schema's") {
+  const DesignFile plain = read(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25,
+      "head_to_handle_mass_ratio": 0.8, "point_masses": [{"from_butt_m": 0.1, "mass_g": 1}]}})");
+  const DesignFile strung = read(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25,
+      "head_to_handle_mass_ratio": 0.8, "headsize_cm2": 600}, "strings": {"tension_N": 250}})");
+  const Design& a = plain.design;
+  const Design& b = strung.design;
+  REQUIRE(b.strings);
+  REQUIRE(b.head);
+  // What the reader gives each field when the file leaves it out (the oracle).
+  const std::map<std::string, double> read_default{
+      {"implement/head_aspect_ratio", b.head->aspect_ratio},
+      {"implement/hoop_width_m", b.head->hoop_width_m},
+      {"implement/point_masses/N/off_axis_m", a.implement.point_masses().at(0).off_axis_m},
+      {"frame/cor", a.cor},
+      {"strings/impact_duration_s", a.impact_duration_s},
+      {"strings/string_spacing_m", b.strings->string_spacing_m},
+      {"strings/contact_radius_m", b.strings->contact_radius_m},
+      {"strings/bed_mass_kg", a.string_bed_mass_kg},
+      {"strings/bed_damping_ratio", a.string_bed_damping_ratio},
+      {"hand/mass_kg", a.hand.mass_kg},
+      {"hand/center_from_butt_m", a.hand.center_from_butt_m},
+      {"hand/grip_length_m", a.hand.grip_length_m},
+      {"hand/grip_stiffness_N_m2", a.hand.grip_stiffness_N_m2},
+      {"hand/grip_damping_N_s_m2", a.hand.grip_damping_N_s_m2},
+      {"forearm/equivalent_mass_kg", a.forearm_equivalent_mass_kg},
+      {"ball/mass_kg", a.ball.mass_kg},
+      {"ball/speed_m_s", a.ball.speed_m_s},
+      {"ball/contact/stiffness", a.ball_contact.stiffness},
+      {"ball/contact/exponent", a.ball_contact.exponent},
+      {"ball/contact/damping", a.ball_contact.damping},
+      {"ball/contact/damping_exponent", a.ball_contact.damping_exponent},
+      {"impact/off_axis_m", a.impact_off_axis_m}};
+  const Json schema = parse_json(source_file("schema/design.schema.json"), "design.schema.json");
+  std::size_t numbers = 0;
+  for (const DesignField& field : design_fields()) {
+    const std::string name = std::string(field.object) + "/" + std::string(field.si_key);
+    const Json* properties = schema_properties(schema, std::string(field.object));
+    REQUIRE(properties);
+    const Json& property = (*properties)[std::string(field.si_key)];
+    INFO(name);
+    CHECK((property.contains("default") && property["default"].is_number()) ==
+          field.default_si.has_value());
+    if (!field.default_si) continue;
+    ++numbers;
+    CHECK(property["default"].get<double>() == *field.default_si);
+    REQUIRE(read_default.count(name) == 1);
+    CHECK(read_default.at(name) == *field.default_si);
+  }
+  CHECK(numbers == read_default.size());
 }
 
 }  // namespace sweetspot::io
