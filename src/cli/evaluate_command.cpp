@@ -189,8 +189,8 @@ int EvaluateCommand::run() const {
   }
   if (design_path.empty())
     throw CLI::ValidationError("design: a design file (or --batch FILE) is required");
-  // A racquet without an impact is evaluated at the centre of its strings.
-  const io::DesignFile design = reports::with_default_impact(io::load_design(design_path));
+  // A design without an impact has the default of its kind (the reader's).
+  const io::DesignFile design = io::load_design(design_path);
   // The command line's --fidelity wins over the file's "fidelity".
   const Evaluation result = io::evaluate_design_file(
       design, command->count("--fidelity") ? fidelity : std::string(), tolerance);

@@ -91,7 +91,7 @@ int ReportCommand::run() const {
               << ": a design's report is a web page: give --html FILE\n";
     return kExitBadInput;
   }
-  const io::DesignFile file = reports::with_default_impact(io::load_design(design));
+  const io::DesignFile file = io::load_design(design);
   const io::Json document = io::read_json_file(design);
   io::write_file_atomically(html, io::design_html_report(file, document));
   std::cout << "wrote " << io::one_line(html) << "\n";

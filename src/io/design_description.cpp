@@ -1,9 +1,11 @@
 #include "io/design_description.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
 
+#include "io/json_reader.hpp"
 #include "sweetspot/rigid_impact.hpp"
 
 namespace sweetspot::io {
@@ -16,13 +18,107 @@ double balance_from_points_head_light(double length_m, double points) {
 
 double head_radius_from_area(double area_m2) { return std::sqrt(area_m2 / std::numbers::pi); }
 
+bool same_head_area(double a_m2, double b_m2) {
+  return std::fabs(a_m2 - b_m2) <= kSameHeadAreaRelTol * std::max(std::fabs(a_m2), std::fabs(b_m2));
+}
+
+namespace {
+
+std::string metres(double value) { return brief(Json(value)); }
+
+double length_of(const ImplementDescription& d) {
+  if (d.form != ImplementDescription::Form::kSections) return d.length_m;
+  double total_m = 0.0;
+  for (const Section& section : d.sections) total_m += section.length_m;
+  return total_m;
+}
+
+}  // namespace
+
+std::vector<PointMass> place_point_masses(const std::vector<PointMassDescription>& entries,
+                                          double L, const std::optional<HeadShape>& head) {
+  std::vector<PointMass> points;
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    const PointMassDescription& entry = entries[i];
+    if (!(entry.mass_kg >= 0.0 && entry.mass_kg <= kMaxMass_kg)) {
+      throw PointMassError(
+          i, "mass",
+          "must be in [0, " + metres(kMaxMass_kg) + "] kg, got " + metres(entry.mass_kg) + " kg");
+    }
+    if (entry.handle) {
+      points.push_back(PointMass{std::min(kHandleWeightFromButt_m, L), entry.mass_kg, 0.0});
+      continue;
+    }
+    if (!entry.clock_hours.empty()) {
+      if (!head) {
+        throw PointMassError(
+            i, "clock",
+            "a clock position needs the head: give /implement/headsize_sq_in (or headsize_cm2)");
+      }
+      for (const double h : entry.clock_hours) {
+        try {
+          const FacePoint p = clock_position(*head, L, h);
+          points.push_back(PointMass{p.from_butt_m, entry.mass_kg, p.off_axis_m});
+        } catch (const std::invalid_argument& error) {
+          throw PointMassError(i, "implement", error.what());
+        }
+      }
+      continue;
+    }
+    const double given = entry.from_butt_m ? *entry.from_butt_m : entry.from_tip_m.value_or(0.0);
+    if (!(given >= 0.0 && given <= L)) {
+      throw PointMassError(i, "where",
+                           "must be in [0, " + metres(L) + "] m, got " + metres(given) + " m");
+    }
+    if (!(entry.off_axis_m >= -L && entry.off_axis_m <= L)) {
+      throw PointMassError(i, "off_axis",
+                           "must be in [-" + metres(L) + ", " + metres(L) + "] m, got " +
+                               metres(entry.off_axis_m) + " m");
+    }
+    const double x = entry.from_butt_m ? *entry.from_butt_m : L - given;
+    points.push_back(PointMass{x, entry.mass_kg, entry.off_axis_m});
+  }
+  return points;
+}
+
+HeadShape racquet_head(const Design& design) {
+  if (design.head) return *design.head;
+  HeadShape head;  // the default aspect ratio and hoop width of head_geometry.hpp
+  head.area_m2 = 100 * kSquareInch_m2;
+  if (design.strings) {
+    const double r = design.strings->head_radius_m;
+    head.area_m2 = std::numbers::pi * r * r;
+  }
+  return head;
+}
+
+double centre_of_strings_from_tip_m(const Design& design) {
+  const HeadShape head = racquet_head(design);
+  const double length = design.implement.length_m();
+  // The string bed's far end is one hoop width below the tip, its centre one
+  // semi-length a = sqrt(area aspect / pi) further (string_bed()); a head too
+  // long for the implement is put at its middle.
+  const double semi_length = std::sqrt(head.area_m2 * head.aspect_ratio / std::numbers::pi);
+  if (!(2.0 * (semi_length + head.hoop_width_m) <= length)) return 0.5 * length;
+  return length - string_bed(head, length).center_from_butt_m;
+}
+
+bool has_racquet_head(const Design& design, ImplementDescription::Form form) {
+  return design.head.has_value() || design.strings.has_value() ||
+         form == ImplementDescription::Form::kSpecs;
+}
+
+ImpactPlace default_impact(const Design& design, ImplementDescription::Form form) {
+  return has_racquet_head(design, form) ? ImpactPlace::kCentreOfStrings : ImpactPlace::kFromTip;
+}
+
 Implement build_implement(const ImplementDescription& d) {
+  const std::vector<PointMass> points = place_point_masses(d.point_masses, length_of(d), d.head);
   switch (d.form) {
     case ImplementDescription::Form::kSections:
-      return Implement::from_sections(d.sections, d.point_masses);
+      return Implement::from_sections(d.sections, points);
     case ImplementDescription::Form::kHeadToHandleRatio:
-      return Implement::paper_racquet(d.length_m, d.mass_kg, d.head_to_handle_mass_ratio,
-                                      d.point_masses);
+      return Implement::paper_racquet(d.length_m, d.mass_kg, d.head_to_handle_mass_ratio, points);
     case ImplementDescription::Form::kSpecs:
       break;
   }
@@ -34,26 +130,45 @@ Implement build_implement(const ImplementDescription& d) {
     balance = balance_from_points_head_light(d.length_m, balance);
   }
   return Implement::from_specs(IndustrySpecs{d.length_m, d.mass_kg, balance, d.swingweight_kg_m2},
-                               d.point_masses);
+                               points);
 }
 
 void derive(DesignDescription& d) {
   Design& design = d.design;
+  if (const auto& head = d.implement.head) {
+    // The reader's bounds on the head (a study may set any number).
+    if (!(head->area_m2 > 0.0)) throw std::domain_error("implement/headsize_cm2: must be > 0");
+    if (!(head->aspect_ratio >= 1.0 && head->aspect_ratio <= 10.0))
+      throw std::domain_error("implement/head_aspect_ratio: must be in [1, 10]");
+    if (!(head->hoop_width_m >= 0.0 && head->hoop_width_m <= 1.0))
+      throw std::domain_error("implement/hoop_width_m: must be in [0, 1] m");
+  }
+  design.head = d.implement.head;
   if (d.forearm_from_mass)
     design.forearm_equivalent_mass_kg = forearm_equivalent_mass(d.forearm_mass_kg);
   const double L = design.implement.length_m();
-  if (d.impact_from_tip) {
-    // The reader refuses a given point off the implement; the default 5 cm
-    // from the tip of a shorter implement fails validate() instead.
-    if (!(d.impact_m >= 0.0 && d.impact_m <= L))
-      throw std::domain_error("impact/from_tip_m: off the implement");
-    design.impact_from_butt_m = L - d.impact_m;
-  } else {
-    design.impact_from_butt_m = d.impact_m;
-  }
   if (d.head_area_m2) {
     if (!(*d.head_area_m2 > 0)) throw std::domain_error("strings/head_size_cm2: must be > 0");
+    if (design.head && !same_head_area(*d.head_area_m2, design.head->area_m2))
+      throw std::domain_error("strings/head_size_cm2: contradicts implement/headsize_cm2");
     design.strings->head_radius_m = head_radius_from_area(*d.head_area_m2);
+  } else if (design.strings && design.head) {
+    design.strings->head_radius_m = head_radius_from_area(design.head->area_m2);
+  }
+  switch (d.impact_place) {
+    case ImpactPlace::kFromTip:
+      // The reader refuses a given point off the implement; the default 5 cm
+      // from the tip of a shorter implement fails validate() instead.
+      if (d.impact_given && !(d.impact_m >= 0.0 && d.impact_m <= L))
+        throw std::domain_error("impact/from_tip_m: off the implement");
+      design.impact_from_butt_m = L - d.impact_m;
+      break;
+    case ImpactPlace::kFromButt:
+      design.impact_from_butt_m = d.impact_m;
+      break;
+    case ImpactPlace::kCentreOfStrings:
+      design.impact_from_butt_m = L - centre_of_strings_from_tip_m(design);
+      break;
   }
   validate(design);
 }

@@ -1,5 +1,7 @@
 #include "io/design_reader.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <iterator>
@@ -7,6 +9,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "io/design_fields.hpp"
 #include "io/input_error.hpp"
 #include "io/outputs.hpp"
 #include "sweetspot/head_geometry.hpp"
@@ -77,7 +80,28 @@ bool is_design_path(std::string_view name) {
   throw InputError(source, fallback_pointer, message);
 }
 
+// The keys of `object` that spell one of `stems` (every unit), for the
+// message of a key that belongs to another form of the object.
+std::vector<std::string> keys_of(std::string_view object,
+                                 std::initializer_list<std::string_view> stems) {
+  std::vector<std::string> keys;
+  for (const DesignField& field : design_fields()) {
+    if (field.object != object || std::find(stems.begin(), stems.end(), field.stem) == stems.end())
+      continue;
+    for (std::string& key : spellings_of(field)) keys.push_back(std::move(key));
+  }
+  return keys;
+}
+
+const std::vector<std::string>& point_mass_keys() {
+  return design_keys("implement/point_masses/N");
+}
+
+const std::vector<std::string>& impact_keys() { return design_keys("impact"); }
+
 Section read_section(ObjectReader& r) {
+  const std::vector<std::string>& kKeys = design_keys("implement/sections/N");
+  r.check_known(kKeys);
   Section section;
   const auto length = r.quantity("length", Dimension::kLength);
   const auto mass = r.quantity("mass", Dimension::kMass);
@@ -86,22 +110,18 @@ Section read_section(ObjectReader& r) {
   section.length_m = *length;
   section.mass_kg = *mass;
   section.EI_N_m2 = r.quantity("EI", Dimension::kStiffness);
-  r.finish({"length_m", "mass_kg", "EI_N_m2"});
+  r.finish(kKeys);
   return section;
 }
 
-// A point mass as the file places it: on the axis from the butt or the tip
-// (optionally off it), or at clock positions on the hoop, each piece of mass_*.
+// A point mass as the file places it (the description), with the keys that
+// name its parts in messages.
 struct PointMassSpec {
-  std::size_t index = 0;  // in the file's list
-  double mass_kg = 0.0;
-  std::optional<double> from_butt_m, from_tip_m;
-  double off_axis_m = 0.0;
-  std::vector<double> clock_hours;  // a piece at each; empty: on the axis (or off_axis_m)
-  bool handle = false;              // under the butt cap
-  std::string pointer;              // of this entry
-  std::string where_key;            // the key that placed it
-  std::string mass_key;             // the key that gave its mass
+  PointMassDescription described;
+  std::string pointer;    // of this entry
+  std::string where_key;  // the key that placed it
+  std::string mass_key;   // the key that gave its mass
+  std::string off_axis_key;
 };
 
 std::vector<PointMassSpec> read_point_masses(ObjectReader& implement, const std::string& source,
@@ -116,21 +136,23 @@ std::vector<PointMassSpec> read_point_masses(ObjectReader& implement, const std:
     const std::string index = std::to_string(i);
     ObjectReader r((*list)[i], pointer + "/" + index, "implement/point_masses/" + index, source,
                    keys);
+    r.check_known(point_mass_keys());
     PointMassSpec spec;
-    spec.index = i;
+    PointMassDescription& d = spec.described;
     spec.pointer = r.pointer();
     const auto mass = r.quantity("mass", Dimension::kMass);
     if (!mass) r.fail("", "missing mass_kg (or mass_g)");
-    spec.mass_kg = *mass;
+    d.mass_kg = *mass;
     spec.mass_key = r.one_of(spellings("mass", Dimension::kMass));
-    spec.from_butt_m = r.quantity("from_butt", Dimension::kLength);
-    spec.from_tip_m = r.quantity("from_tip", Dimension::kLength);
+    d.from_butt_m = r.quantity("from_butt", Dimension::kLength);
+    d.from_tip_m = r.quantity("from_tip", Dimension::kLength);
     const auto off_axis = r.quantity("off_axis", Dimension::kLength);
+    spec.off_axis_key = r.one_of(spellings("off_axis", Dimension::kLength));
     const bool clock = r.has("clock");
-    const int placed = (spec.from_butt_m ? 1 : 0) + (spec.from_tip_m ? 1 : 0) + (clock ? 1 : 0);
+    const int placed = (d.from_butt_m ? 1 : 0) + (d.from_tip_m ? 1 : 0) + (clock ? 1 : 0);
     if (placed == 0) {
       r.fail("",
-             "missing its place: from_butt_m or from_tip_m (or _cm, _in), or clock (12, "
+             "missing its place: from_butt_m or from_tip_m (or _cm, _mm, _in), or clock (12, "
              "[3, 9], \"throat\", \"handle\")");
     }
     if (placed > 1) {
@@ -138,10 +160,9 @@ std::vector<PointMassSpec> read_point_masses(ObjectReader& implement, const std:
              "give the place once: from_butt_*, from_tip_* or clock");
     }
     if (clock && off_axis) {
-      r.fail(r.one_of(spellings("off_axis", Dimension::kLength)),
-             "contradicts /clock, which places the mass on the hoop");
+      r.fail(spec.off_axis_key, "contradicts /clock, which places the mass on the hoop");
     }
-    spec.off_axis_m = off_axis.value_or(0.0);
+    d.off_axis_m = off_axis.value_or(0.0);
     if (clock) {
       spec.where_key = "clock";
       const Json& value = *r.child("clock");
@@ -152,15 +173,15 @@ std::vector<PointMassSpec> read_point_masses(ObjectReader& implement, const std:
             r.fail("clock", "an hour must be in [0, 12] (12 the tip, 3 and 9 the sides), got " +
                                 brief(item));
           }
-          spec.clock_hours.push_back(h);
+          d.clock_hours.push_back(h);
           return;
         }
         if (item.is_string() && item.get<std::string>() == "throat") {
-          spec.clock_hours.push_back(6.0);
+          d.clock_hours.push_back(6.0);
           return;
         }
         if (item.is_string() && item.get<std::string>() == "handle" && value.is_string()) {
-          spec.handle = true;
+          d.handle = true;
           return;
         }
         r.fail("clock",
@@ -181,65 +202,42 @@ std::vector<PointMassSpec> read_point_masses(ObjectReader& implement, const std:
         keys_given.push_back(k);
       spec.where_key = r.one_of(keys_given);
     }
-    r.finish({"from_butt_m", "from_tip_m", "mass_kg", "off_axis_m", "clock"});
+    r.finish(point_mass_keys());
     points.push_back(std::move(spec));
   }
   return points;
 }
 
-// The point masses on an implement of length L with this head: a clock list
-// becomes one point mass per hour. Each is checked here against the file's
-// entry (the core would name the expanded list's index).
+std::vector<PointMassDescription> descriptions_of(const std::vector<PointMassSpec>& specs) {
+  std::vector<PointMassDescription> out;
+  for (const PointMassSpec& spec : specs) out.push_back(spec.described);
+  return out;
+}
+
+// The point masses on an implement of length L with this head (a clock list
+// becomes one point mass per hour); an entry the geometry cannot place is
+// named at the file's entry (the core would name the expanded list's index).
 std::vector<PointMass> place_point_masses(const std::vector<PointMassSpec>& specs, double L,
                                           const std::optional<HeadShape>& head,
                                           const std::string& source) {
-  std::vector<PointMass> points;
-  for (const PointMassSpec& spec : specs) {
-    const auto fail = [&](const std::string& key, const std::string& detail) {
-      throw InputError(source, key.empty() ? spec.pointer : spec.pointer + "/" + key, detail);
-    };
-    if (!(spec.mass_kg >= 0.0 && spec.mass_kg <= kMaxMass_kg)) {
-      fail(spec.mass_key, "must be in [0, " + brief(Json(kMaxMass_kg)) + "] kg, got " +
-                              brief(Json(spec.mass_kg)) + " kg");
-    }
-    if (spec.handle) {
-      points.push_back(PointMass{std::min(kHandleWeightFromButt_m, L), spec.mass_kg, 0.0});
-      continue;
-    }
-    if (!spec.clock_hours.empty()) {
-      if (!head) {
-        fail("clock",
-             "a clock position needs the head: give /implement/headsize_sq_in (or headsize_cm2)");
-      }
-      for (const double h : spec.clock_hours) {
-        try {
-          const FacePoint p = clock_position(*head, L, h);
-          points.push_back(PointMass{p.from_butt_m, spec.mass_kg, p.off_axis_m});
-        } catch (const std::invalid_argument& error) {
-          throw InputError(source, "/implement", error.what());
-        }
-      }
-      continue;
-    }
-    const double x = spec.from_butt_m ? *spec.from_butt_m : L - *spec.from_tip_m;
-    const double given = spec.from_butt_m ? *spec.from_butt_m : *spec.from_tip_m;
-    if (!(given >= 0.0 && given <= L)) {
-      fail(spec.where_key,
-           "must be in [0, " + brief(Json(L)) + "] m, got " + brief(Json(given)) + " m");
-    }
-    if (!(spec.off_axis_m >= -L && spec.off_axis_m <= L)) {
-      fail("off_axis_m", "must be in [-" + brief(Json(L)) + ", " + brief(Json(L)) + "] m, got " +
-                             brief(Json(spec.off_axis_m)) + " m");
-    }
-    points.push_back(PointMass{x, spec.mass_kg, spec.off_axis_m});
+  try {
+    return place_point_masses(descriptions_of(specs), L, head);
+  } catch (const PointMassError& error) {
+    const PointMassSpec& spec = specs[error.entry];
+    if (error.key == "implement") throw InputError(source, "/implement", error.what());
+    const std::string key = error.key == "mass"       ? spec.mass_key
+                            : error.key == "where"    ? spec.where_key
+                            : error.key == "off_axis" ? spec.off_axis_key
+                                                      : error.key;
+    throw InputError(source, key.empty() ? spec.pointer : spec.pointer + "/" + key, error.what());
   }
-  return points;
 }
 
 // The head (implement.headsize_sq_in or headsize_cm2, head_aspect_ratio,
 // hoop_width_*) and the measured twistweight, when given.
 struct HeadRead {
   std::optional<HeadShape> head;
+  std::string key;  // headsize_sq_in or headsize_cm2, as given
   std::optional<double> twistweight_kg_m2;
 };
 
@@ -249,7 +247,7 @@ HeadRead read_head(ObjectReader& r) {
   if (!key.empty()) {
     const double given = *r.number(key);
     HeadShape head;
-    head.area_m2 = given * (key == "headsize_sq_in" ? kSquareInch_m2 : 1e-4);
+    head.area_m2 = key == "headsize_sq_in" ? given * kSquareInch_m2 : shift_decimal(given, -4);
     if (!(head.area_m2 > 0.0)) r.fail(key, "must be > 0, got " + brief(Json(given)));
     if (const auto aspect = r.number("head_aspect_ratio")) {
       if (!(*aspect >= 1.0 && *aspect <= 10.0)) {
@@ -267,6 +265,7 @@ HeadRead read_head(ObjectReader& r) {
     }
     r.record("headsize", key);
     out.head = head;
+    out.key = key;
   } else {
     for (const char* shape_key :
          {"head_aspect_ratio", "hoop_width_m", "hoop_width_cm", "hoop_width_mm", "hoop_width_in"}) {
@@ -281,11 +280,11 @@ HeadRead read_head(ObjectReader& r) {
   return out;
 }
 
-const std::vector<std::string> kHeadKeys{"headsize_sq_in", "headsize_cm2", "head_aspect_ratio",
-                                         "hoop_width_m", "twistweight_kg_m2"};
-
-std::vector<std::string> with_head_keys(std::vector<std::string> keys) {
-  keys.insert(keys.end(), kHeadKeys.begin(), kHeadKeys.end());
+std::vector<std::string> with_head_keys(std::initializer_list<std::string_view> stems) {
+  std::vector<std::string> keys = keys_of("implement", stems);
+  const std::vector<std::string> head =
+      keys_of("implement", {"headsize", "head_aspect_ratio", "hoop_width", "twistweight"});
+  keys.insert(keys.end(), head.begin(), head.end());
   return keys;
 }
 
@@ -302,6 +301,7 @@ ImplementRead read_implement(const Json& document, const std::string& source, Ke
   if (it == document.end())
     throw InputError(source, "/implement", "missing: every design needs an implement");
   ObjectReader r(*it, "/implement", "implement", source, keys);
+  r.check_known(design_keys("implement"));
   const std::vector<PointMassSpec> point_specs = read_point_masses(r, source, keys);
   const HeadRead head = read_head(r);
   std::vector<PointMass> points;
@@ -340,7 +340,8 @@ ImplementRead read_implement(const Json& document, const std::string& source, Ke
       if (described) {
         described->form = ImplementDescription::Form::kSections;
         described->sections = sections;
-        described->point_masses = points;
+        described->point_masses = descriptions_of(point_specs);
+        described->head = head.head;
       }
       return {Implement::from_sections(std::move(sections), std::move(points)), "sections", head};
     }
@@ -350,8 +351,7 @@ ImplementRead read_implement(const Json& document, const std::string& source, Ke
     if (!mass) r.fail("", "missing mass_kg (or mass_g), or give sections");
     if (r.has("head_to_handle_mass_ratio")) {
       const double ratio = *r.number("head_to_handle_mass_ratio");
-      r.finish(
-          with_head_keys({"length_m", "mass_kg", "head_to_handle_mass_ratio", "point_masses"}));
+      r.finish(with_head_keys({"length", "mass", "head_to_handle_mass_ratio", "point_masses"}));
       place(*length);
       if (described) {
         *described = ImplementDescription{.form = ImplementDescription::Form::kHeadToHandleRatio,
@@ -359,7 +359,8 @@ ImplementRead read_implement(const Json& document, const std::string& source, Ke
                                           .mass_kg = *mass,
                                           .head_to_handle_mass_ratio = ratio,
                                           .sections = {},
-                                          .point_masses = points};
+                                          .point_masses = descriptions_of(point_specs),
+                                          .head = head.head};
       }
       return {Implement::paper_racquet(*length, *mass, ratio, std::move(points)),
               "head_to_handle_mass_ratio", head};
@@ -372,7 +373,7 @@ ImplementRead read_implement(const Json& document, const std::string& source, Ke
              "balance_from_butt_m (or balance_cm, balance_pts_hl) with swingweight_kg_cm2");
     }
     double balance = *r.number(balance_key);
-    if (balance_key == "balance_cm") balance *= 0.01;
+    if (balance_key == "balance_cm") balance = shift_decimal(balance, -2);
     const double balance_as_given = balance;
     if (balance_key == "balance_pts_hl") {
       const double limit = points_head_light_limit(*length);
@@ -386,8 +387,7 @@ ImplementRead read_implement(const Json& document, const std::string& source, Ke
     const auto swingweight = r.quantity("swingweight", Dimension::kInertia);
     if (!swingweight)
       r.fail("", "missing swingweight_kg_cm2 (with the balance it fixes the inertia)");
-    r.finish(with_head_keys({"length_m", "mass_kg", "balance_from_butt_m", "balance_cm",
-                             "balance_pts_hl", "swingweight_kg_cm2", "point_masses"}));
+    r.finish(with_head_keys({"length", "mass", "balance", "swingweight", "point_masses"}));
     place(*length);
     if (described) {
       *described = ImplementDescription{.form = ImplementDescription::Form::kSpecs,
@@ -397,7 +397,8 @@ ImplementRead read_implement(const Json& document, const std::string& source, Ke
                                         .balance = balance_as_given,
                                         .swingweight_kg_m2 = *swingweight,
                                         .sections = {},
-                                        .point_masses = points};
+                                        .point_masses = descriptions_of(point_specs),
+                                        .head = head.head};
     }
     return {Implement::from_specs(IndustrySpecs{*length, *mass, balance, *swingweight},
                                   std::move(points)),
@@ -406,6 +407,19 @@ ImplementRead read_implement(const Json& document, const std::string& source, Ke
     if (!keys) throw;  // a lean read: the caller reads again with the key map
     rethrow_at(error, "implement/", *keys, source, "/implement");
   }
+}
+
+ImplementDescription::Form implement_form_of(const std::string& form) {
+  if (form == "sections") return ImplementDescription::Form::kSections;
+  if (form == "specs") return ImplementDescription::Form::kSpecs;
+  return ImplementDescription::Form::kHeadToHandleRatio;
+}
+
+// A length in cm to the nearest 0.5 cm, as the reports write positions ("18 cm", "18.5 cm").
+std::string half_cm_text(double metres) {
+  const double half_cm = std::round(metres * 200.0) / 2.0;
+  if (half_cm == std::floor(half_cm)) return fmt::format("{:.0f} cm", half_cm == 0 ? 0.0 : half_cm);
+  return fmt::format("{:.1f} cm", half_cm);
 }
 
 // Reads one optional section of the design ("hand": {...}) with defaults.
@@ -417,6 +431,7 @@ class Part {
     static const Json kEmpty = Json::object();
     const Json* part = document.child(name);
     reader_.emplace(part ? *part : kEmpty, std::string("/") + name, name, document.source(), keys);
+    reader_->check_known(design_keys(name));
   }
   ObjectReader& reader() { return *reader_; }
 
@@ -453,6 +468,7 @@ DesignFile read_design_impl(const Json& document, const std::string& source, boo
     if (provenance) (*provenance)[input] = how;
   };
   ObjectReader top(document, "", "", source, keys);
+  top.check_known(design_keys(""));
   // The file name stands in for a missing name; it need not be UTF-8, a name must.
   const std::string name = top.string("name").value_or(valid_utf8(source));
   top.string("description");
@@ -504,6 +520,7 @@ DesignFile read_design_impl(const Json& document, const std::string& source, boo
     }
     if (const Json* section = r.child("cross_section")) {
       ObjectReader c(*section, "/frame/cross_section", "frame/cross_section", source, keys);
+      c.check_known(design_keys("frame/cross_section"));
       design.stiffness.shear_modulus_Pa = c.number("shear_modulus_Pa");
       const auto width = c.quantity("width", Dimension::kLength);
       const auto thickness = c.quantity("thickness", Dimension::kLength);
@@ -512,9 +529,9 @@ DesignFile read_design_impl(const Json& document, const std::string& source, boo
       }
       design.stiffness.width_m = *width;
       design.stiffness.thickness_m = *thickness;
-      c.finish({"shear_modulus_Pa", "width_m", "thickness_m"});
+      c.finish(design_keys("frame/cross_section"));
     }
-    r.finish({"cor", "cor_rigid", "EI_N_m2", "fundamental_free_Hz", "RA", "cross_section"});
+    r.finish(design_keys("frame"));
   }
 
   std::optional<double> head_area_m2;
@@ -534,11 +551,20 @@ DesignFile read_design_impl(const Json& document, const std::string& source, boo
           r.quantity("string_spacing", Dimension::kLength).value_or(bed.string_spacing_m);
       const std::string head = r.one_of({"head_size_in2", "head_size_cm2"});
       if (!head.empty()) {
-        const double area_m2 = *r.number(head) * (head == "head_size_in2" ? kSquareInch_m2 : 1e-4);
+        const double given = *r.number(head);
+        const double area_m2 =
+            head == "head_size_in2" ? given * kSquareInch_m2 : shift_decimal(given, -4);
         if (!(area_m2 > 0)) r.fail(head, "must be > 0, got " + brief(Json(*r.number(head))));
+        if (design.head && !same_head_area(area_m2, design.head->area_m2)) {
+          r.fail(head, "contradicts /implement/" + implement.head.key +
+                           ": one head, one size: give it once, as implement." +
+                           implement.head.key + " (the string bed's size is the head's)");
+        }
         bed.head_radius_m = head_radius_from_area(area_m2);
         head_area_m2 = area_m2;
         r.record("head_radius_m", head);
+      } else if (design.head) {
+        bed.head_radius_m = head_radius_from_area(design.head->area_m2);  // the head's strings
       }
       bed.contact_radius_m =
           r.quantity("contact_radius", Dimension::kLength).value_or(bed.contact_radius_m);
@@ -550,9 +576,7 @@ DesignFile read_design_impl(const Json& document, const std::string& source, boo
         r.quantity("bed_mass", Dimension::kMass).value_or(defaults.string_bed_mass_kg);
     design.string_bed_damping_ratio =
         r.number("bed_damping_ratio").value_or(defaults.string_bed_damping_ratio);
-    r.finish({"impact_duration_s", "impact_duration_ms", "tension_N", "tension_lb", "tension_kg",
-              "string_spacing_m", "string_spacing_mm", "head_size_in2", "head_size_cm2",
-              "contact_radius_m", "bed_mass_kg", "bed_mass_g", "bed_damping_ratio"});
+    r.finish(design_keys("strings"));
   }
 
   Part hand(top, "hand", keys, provenance);
@@ -567,8 +591,7 @@ DesignFile read_design_impl(const Json& document, const std::string& source, boo
   design.hand.grip_damping_N_s_m2 =
       hand.get("grip_damping", Dimension::kDamping, "grip_damping_N_s_m2",
                defaults.hand.grip_damping_N_s_m2);
-  hand.reader().finish({"mass_kg", "center_from_butt_m", "grip_length_m", "grip_stiffness_N_m2",
-                        "grip_damping_N_s_m2"});
+  hand.reader().finish(design_keys("hand"));
 
   Part forearm(top, "forearm", keys, provenance);
   std::optional<double> forearm_mass_kg;
@@ -591,7 +614,7 @@ DesignFile read_design_impl(const Json& document, const std::string& source, boo
           forearm.get("equivalent_mass", Dimension::kMass, "equivalent_mass_kg",
                       defaults.forearm_equivalent_mass_kg);
     }
-    r.finish({"equivalent_mass_kg", "mass_kg"});
+    r.finish(design_keys("forearm"));
   }
 
   Part ball(top, "ball", keys, provenance);
@@ -602,20 +625,23 @@ DesignFile read_design_impl(const Json& document, const std::string& source, boo
     // The ball's contact law F = k x^n + b x^p x' (collision.hpp); the
     // calibrated tennis ball for every coefficient not given.
     ObjectReader c(*contact, "/ball/contact", "ball/contact", source, keys);
+    c.check_known(design_keys("ball/contact"));
     design.ball_contact.stiffness = c.number("stiffness").value_or(kTennisBallLaw.stiffness);
     design.ball_contact.exponent = c.number("exponent").value_or(kTennisBallLaw.exponent);
     design.ball_contact.damping = c.number("damping").value_or(kTennisBallLaw.damping);
     design.ball_contact.damping_exponent =
         c.number("damping_exponent").value_or(kTennisBallLaw.damping_exponent);
-    c.finish({"stiffness", "exponent", "damping", "damping_exponent"});
+    c.finish(design_keys("ball/contact"));
   }
-  ball.reader().finish({"mass_kg", "speed_m_s", "contact"});
+  ball.reader().finish(design_keys("ball"));
 
   Part impact(top, "impact", keys, provenance);
-  bool impact_from_tip = true;
-  double impact_m = 0.05;
+  ImpactPlace impact_place = ImpactPlace::kFromTip;
+  double impact_m = kPaperImpactFromTip_m;
+  bool impact_given = true;
   {
     ObjectReader& r = impact.reader();
+    r.check_known(impact_keys());
     const auto from_tip = r.quantity("from_tip", Dimension::kLength);
     const auto from_butt = r.quantity("from_butt", Dimension::kLength);
     if (from_tip && from_butt) r.fail("", "give the impact point once: from_tip_m or from_butt_m");
@@ -630,18 +656,30 @@ DesignFile read_design_impl(const Json& document, const std::string& source, boo
       note("impact/from_butt_m", "given (from the tip)");
     } else if (from_butt) {
       design.impact_from_butt_m = *from_butt;
-      impact_from_tip = false;
+      impact_place = ImpactPlace::kFromButt;
       impact_m = *from_butt;
       note("impact/from_butt_m", "given");
     } else {
-      design.impact_from_butt_m = L - 0.05;
-      note("impact/from_butt_m", "default (5 cm from the tip)");
+      impact_given = false;
+      impact_place = default_impact(design, implement_form_of(implement.form));
+      if (impact_place == ImpactPlace::kCentreOfStrings) {
+        const double centre = centre_of_strings_from_tip_m(design);
+        design.impact_from_butt_m = L - centre;
+        if (provenance) {
+          (*provenance)["impact/from_butt_m"] =
+              "default for a racquet: the centre of the strings, " + half_cm_text(centre) +
+              " from the tip";
+        }
+      } else {
+        design.impact_from_butt_m = L - kPaperImpactFromTip_m;
+        note("impact/from_butt_m", "default (5 cm from the tip)");
+      }
     }
     if (const auto off_axis = r.quantity("off_axis", Dimension::kLength)) {
       design.impact_off_axis_m = *off_axis;
       note("impact/off_axis_m", "given");
     }
-    r.finish({"from_tip_m", "from_butt_m", "off_axis_m"});
+    r.finish(impact_keys());
   }
 
   Json reference;
@@ -656,8 +694,7 @@ DesignFile read_design_impl(const Json& document, const std::string& source, boo
     r.finish(expected);
     reference = *given;
   }
-  top.finish({"$schema", "name", "description", "fidelity", "implement", "frame", "strings", "hand",
-              "forearm", "ball", "impact", "reference"});
+  top.finish(design_keys(""));
 
   try {
     validate(design);
@@ -668,7 +705,7 @@ DesignFile read_design_impl(const Json& document, const std::string& source, boo
   if (described) {
     described->emplace(DesignDescription{std::move(implement_described), design,
                                          forearm_mass_kg.has_value(), forearm_mass_kg.value_or(0.0),
-                                         impact_from_tip, impact_m, head_area_m2});
+                                         impact_place, impact_m, impact_given, head_area_m2});
   }
   return DesignFile{source,
                     name,

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -279,15 +280,17 @@ namespace {
 struct Unit {
   std::string_view suffix;
   double to_si;
+  int power_of_ten = 0;  // to_si is 10^power_of_ten exactly in decimal (0: not, or 1)
+  UnitScale scale() const { return UnitScale{to_si, power_of_ten}; }
 };
 
 const std::vector<Unit>& units(Dimension dimension) {
   static const std::vector<Unit> length{
-      {"_m", 1.0}, {"_cm", 0.01}, {"_mm", 0.001}, {"_in", kInch_m}};
-  static const std::vector<Unit> mass{{"_kg", 1.0}, {"_g", 0.001}};
-  static const std::vector<Unit> time{{"_s", 1.0}, {"_ms", 0.001}};
+      {"_m", 1.0}, {"_cm", 0.01, -2}, {"_mm", 0.001, -3}, {"_in", kInch_m}};
+  static const std::vector<Unit> mass{{"_kg", 1.0}, {"_g", 0.001, -3}};
+  static const std::vector<Unit> time{{"_s", 1.0}, {"_ms", 0.001, -3}};
   static const std::vector<Unit> speed{{"_m_s", 1.0}, {"_km_h", 1.0 / 3.6}, {"_mph", 0.44704}};
-  static const std::vector<Unit> inertia{{"_kg_m2", 1.0}, {"_kg_cm2", 1e-4}};
+  static const std::vector<Unit> inertia{{"_kg_m2", 1.0}, {"_kg_cm2", 1e-4, -4}};
   static const std::vector<Unit> force{{"_N", 1.0}, {"_lb", kPoundForce_N}, {"_kg", 9.80665}};
   static const std::vector<Unit> stiffness{{"_N_m2", 1.0}};
   static const std::vector<Unit> damping{{"_N_s_m2", 1.0}};
@@ -344,6 +347,35 @@ std::optional<double> unit_factor(std::string_view key, std::string_view base,
   const auto u = unit_index(key, base, dimension);
   if (!u) return std::nullopt;
   return units(dimension)[*u].to_si;
+}
+
+std::optional<UnitScale> unit_scale(std::string_view key, std::string_view base,
+                                    Dimension dimension) {
+  const auto u = unit_index(key, base, dimension);
+  if (!u) return std::nullopt;
+  return units(dimension)[*u].scale();
+}
+
+double shift_decimal(double value, int power_of_ten) {
+  if (power_of_ten == 0 || !std::isfinite(value) || value == 0.0) return value;
+  // The shortest decimal that reads back as `value` (the digits the user
+  // typed, when they typed at most 15), its exponent moved, read again.
+  char text[48];
+  const auto written = std::to_chars(text, text + 32, value, std::chars_format::scientific);
+  if (written.ec != std::errc()) return value * std::pow(10.0, power_of_ten);
+  char* e = std::find(text, written.ptr, 'e');
+  int exponent = 0;
+  std::from_chars(e[1] == '+' ? e + 2 : e + 1, written.ptr, exponent);
+  exponent += power_of_ten;
+  const auto end = std::to_chars(e + 1, text + sizeof text, exponent).ptr;
+  double shifted = 0.0;
+  const auto read = std::from_chars(text, end, shifted);
+  if (read.ec != std::errc()) return value * std::pow(10.0, power_of_ten);  // underflow: tiny
+  return shifted;
+}
+
+double UnitScale::to_si(double given) const {
+  return power_of_ten != 0 ? shift_decimal(given, power_of_ten) : given * factor;
 }
 
 std::vector<std::string> alternative_spellings(std::string_view key) {
@@ -452,7 +484,141 @@ std::string join(const std::vector<std::string>& items) {
   return text;
 }
 
+// Unit suffixes that end a key without being a unit of units() (areas, points).
+constexpr std::string_view kOtherSuffixes[] = {"_sq_in", "_in2", "_cm2", "_pts_hl"};
+
+// `key` without its unit suffix (the longest that leaves a stem), "" when it has none.
+std::string_view stem_of(std::string_view key) {
+  constexpr Dimension kAll[] = {Dimension::kLength,    Dimension::kMass,    Dimension::kTime,
+                                Dimension::kSpeed,     Dimension::kInertia, Dimension::kForce,
+                                Dimension::kStiffness, Dimension::kDamping, Dimension::kFrequency};
+  std::size_t longest = 0;
+  const auto consider = [&](std::string_view suffix) {
+    if (key.size() > suffix.size() && key.ends_with(suffix) && suffix.size() > longest)
+      longest = suffix.size();
+  };
+  for (const Dimension d : kAll) {
+    for (const Unit& unit : units(d)) consider(unit.suffix);
+  }
+  for (const std::string_view suffix : kOtherSuffixes) consider(suffix);
+  if (longest == 0) return "";
+  std::string_view stem = key.substr(0, key.size() - longest);
+  if (stem == "balance_from_butt") stem = "balance";  // balance_from_butt_m, balance_cm, _pts_hl
+  return stem;
+}
+
+std::string without_underscores(std::string_view text) {
+  std::string out;
+  for (const char c : text) {
+    if (c != '_') out += c;
+  }
+  return out;
+}
+
+// A key as people mistype it, in the reader's words: lower case, and the
+// words of a small synonym list replaced (weight is the mass, inch is in).
+std::string normalised(std::string_view key) {
+  static const std::vector<std::pair<std::string_view, std::string_view>> kSynonyms{
+      {"weight", "mass"}, {"wt", "mass"},       {"inch", "in"},   {"inches", "in"}, {"lbs", "lb"},
+      {"pounds", "lb"},   {"pound", "lb"},      {"grams", "g"},   {"gram", "g"},    {"kgs", "kg"},
+      {"hz", "Hz"},       {"n", "N"},           {"kmh", "km_h"},  {"kph", "km_h"},  {"sec", "s"},
+      {"msec", "ms"},     {"secs", "s"},        {"metres", "m"},  {"meters", "m"},  {"cms", "cm"},
+      {"pts", "pts_hl"},  {"points", "pts_hl"}, {"sqin", "sq_in"}};
+  std::string lower;
+  for (const char c : key) lower += (c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c;
+  std::string out;
+  std::size_t start = 0;
+  while (start <= lower.size()) {
+    const std::size_t end = std::min(lower.find('_', start), lower.size());
+    std::string word = lower.substr(start, end - start);
+    for (const auto& [typed, meant] : kSynonyms) {
+      if (word == typed) word = meant;
+    }
+    if (!out.empty()) out += '_';
+    out += word;
+    start = end + 1;
+  }
+  return out;
+}
+
+// Words that end a key as a unit the reader may not accept ("weight_oz").
+bool is_unit_word(std::string_view word) {
+  constexpr std::string_view kWords[] = {"oz",  "ounce", "ounces", "lb",    "g",  "kg", "m",  "cm",
+                                         "mm",  "in",    "ft",     "feet",  "s",  "ms", "Hz", "N",
+                                         "mph", "km_h",  "pct",    "sq_in", "yd", "mg"};
+  return std::find(std::begin(kWords), std::end(kWords), word) != std::end(kWords);
+}
+
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+std::string or_list(const std::vector<std::string>& items) {
+  std::string text;
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    text += i == 0 ? "" : i + 1 == items.size() ? " or " : ", ";
+    text += items[i];
+  }
+  return text;
+}
+
 }  // namespace
+
+std::string unknown_key_detail(std::string_view key, const std::vector<std::string>& expected) {
+  const std::string list = " (expected one of: " + join(expected) + ")";
+  constexpr std::size_t kLongestSuggested = 64;  // a longer key is no typing slip
+  if (key.empty() || key.size() > kLongestSuggested || expected.empty())
+    return "unknown key" + list;
+  const std::string typed = normalised(key);
+  // The stem the user meant: the key without a unit the reader knows, or
+  // without a last word that reads as a unit, or the key itself.
+  std::vector<std::string> stems;
+  if (const std::string_view stem = stem_of(typed); !stem.empty()) stems.emplace_back(stem);
+  const std::size_t last = typed.rfind('_');
+  if (last != std::string::npos && is_unit_word(typed.substr(last + 1)))
+    stems.push_back(typed.substr(0, last));
+  if (typed.size() > 6 && typed.ends_with("_km_h"))
+    stems.push_back(typed.substr(0, typed.size() - 5));
+  stems.push_back(typed);
+  for (const std::string& stem : stems) {
+    std::vector<std::string> same;
+    for (const std::string& known : expected) {
+      const std::string_view known_stem = stem_of(known);
+      const std::string_view base = known_stem.empty() ? std::string_view(known) : known_stem;
+      if (without_underscores(base) == without_underscores(stem)) same.push_back(known);
+    }
+    if (!same.empty()) {
+      std::string words(same.size() == 1 && stem_of(same.front()).empty() ? same.front() : stem);
+      std::replace(words.begin(), words.end(), '_', ' ');
+      return "unknown key; the " + words + " is given as " + or_list(same) + list;
+    }
+  }
+  // A slip of the keyboard: the known keys nearest in edit distance.
+  std::size_t best = std::max<std::size_t>(1, std::min<std::size_t>(3, typed.size() / 4)) + 1;
+  std::vector<std::string> nearest;
+  for (const std::string& known : expected) {
+    const std::size_t d = edit_distance(typed, known);
+    if (d < best) {
+      best = d;
+      nearest.clear();
+    }
+    if (d == best) nearest.push_back(known);
+  }
+  if (!nearest.empty() && nearest.size() <= 3)
+    return "unknown key; did you mean " + or_list(nearest) + "?" + list;
+  return "unknown key" + list;
+}
 
 ObjectReader::ObjectReader(const Json& value, std::string pointer, std::string canonical,
                            const std::string& source, KeyMap* keys)
@@ -530,7 +696,7 @@ std::optional<double> ObjectReader::quantity(std::string_view base, Dimension di
            "contradicts " + pointer_of(*found) + ": give the quantity once, in one unit");
     found = present[u];
     const double given = finite_number(*found, object_[*found]);
-    result = given * list[u].to_si;
+    result = list[u].scale().to_si(given);
     if (!std::isfinite(*result)) {
       fail(*found, "too large: " + brief(object_[*found]) + " overflows when converted to SI (" +
                        std::string(list.front().suffix.substr(1)) + ")");
@@ -568,7 +734,14 @@ const Json* ObjectReader::child(std::string_view key) {
 void ObjectReader::finish(const std::vector<std::string>& expected) const {
   for (const auto& [key, value] : object_.items()) {
     if (std::find(read_.begin(), read_.end(), key) == read_.end())
-      fail(key, "unknown key (expected one of: " + join(expected) + ")");
+      fail(key, unknown_key_detail(key, expected));
+  }
+}
+
+void ObjectReader::check_known(const std::vector<std::string>& known) const {
+  for (const auto& [key, value] : object_.items()) {
+    if (std::find(known.begin(), known.end(), key) == known.end())
+      fail(key, unknown_key_detail(key, known));
   }
 }
 

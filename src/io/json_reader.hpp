@@ -80,6 +80,24 @@ std::vector<std::string> spellings(std::string_view base, Dimension dimension);
 // applies it; std::nullopt when it does not.
 std::optional<double> unit_factor(std::string_view key, std::string_view base, Dimension dimension);
 
+// A unit's conversion to SI. A factor that is a power of ten in decimal (g,
+// cm, mm, ms, kg cm^2) moves the decimal point of the number as the user
+// wrote it (its shortest decimal form), so 282 g is the double nearest 0.282
+// kg and 28.2 cm the double nearest 0.282 m; any other factor multiplies.
+struct UnitScale {
+  double factor = 1.0;   // SI per unit
+  int power_of_ten = 0;  // factor == 10^power_of_ten exactly, or 0
+  double to_si(double given) const;
+};
+
+// The double nearest value x 10^power_of_ten, value read as its shortest
+// decimal form (the digits that read back as it).
+double shift_decimal(double value, int power_of_ten);
+
+// unit_factor() as a UnitScale, as ObjectReader::quantity() applies it.
+std::optional<UnitScale> unit_scale(std::string_view key, std::string_view base,
+                                    Dimension dimension);
+
 // The other keys that give the same quantity as `key` in another unit or form
 // ("mass_g" -> mass_kg; "balance_cm" -> balance_from_butt_m, balance_pts_hl;
 // "from_tip_m" -> from_butt_m, ...). Empty for a key of no known quantity.
@@ -117,6 +135,13 @@ struct KeyOrigin {
 };
 using KeyMap = std::map<std::string, KeyOrigin>;
 
+// What is said of `key`, unknown where `expected` are the keys accepted:
+// "unknown key; the mass is given as mass_kg or mass_g (expected one of: ...)"
+// when the key, its words put in the reader's (weight is the mass, inch is
+// in), names the stem of known keys in another unit; else the nearest keys in
+// edit distance ("did you mean ...?"); else the list alone.
+std::string unknown_key_detail(std::string_view key, const std::vector<std::string>& expected);
+
 class ObjectReader {
  public:
   // `canonical` is the SI-named path of this object relative to the document
@@ -143,8 +168,12 @@ class ObjectReader {
   // Records that canonical SI name `canonical_key` came from `key`.
   void record(std::string_view canonical_key, std::string_view key);
 
-  // Throws for any key not read (an unknown key), naming the expected keys.
+  // Throws for any key not read (an unknown key), naming the expected keys
+  // (unknown_key_detail()).
   void finish(const std::vector<std::string>& expected) const;
+  // Throws for any key not in `known` (every key the object may hold, in any
+  // form), before a missing key is complained of: a misspelt key is named.
+  void check_known(const std::vector<std::string>& known) const;
 
   [[noreturn]] void fail(std::string_view key, const std::string& detail) const;
 

@@ -465,7 +465,7 @@ std::string inputs_sentence(const ComparedDesign& a, const ComparedDesign& b) {
 }  // namespace
 
 ComparedDesign compare_one(io::DesignFile design, std::string_view fidelity, double rel_tol) {
-  io::DesignFile placed = with_default_impact(std::move(design));
+  io::DesignFile placed = std::move(design);
   const Evaluation asked = io::evaluate_design_file(placed, fidelity, rel_tol);
   SweetSpots spots = find_sweet_spots(placed, asked, rel_tol);
   return ComparedDesign{std::move(placed), std::move(spots)};

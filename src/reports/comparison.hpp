@@ -14,7 +14,7 @@
 namespace sweetspot::reports {
 
 struct ComparedDesign {
-  io::DesignFile design;  // with the default impact a racquet gets (with_default_impact)
+  io::DesignFile design;  // as read (a default impact is the reader's, io::default_impact())
   SweetSpots spots;       // spots.asked.evaluation is the design's own evaluation
 };
 

@@ -69,8 +69,8 @@ std::string racquets_to_scale_html(const std::vector<DrawnRacquet>& racquets,
                                    const std::string& id);
 
 // The whole page for `design` (read from `document`, the file as written, for
-// its inputs in the units they were given; its impact as `evaluate` takes it,
-// reports::with_default_impact). Plots that gnuplot cannot draw
+// its inputs in the units they were given; its impact as every command takes
+// it, io::default_impact()). Plots that gnuplot cannot draw
 // are replaced by a sentence saying why; the tables are always there.
 std::string design_html_report(const DesignFile& design, const Json& document);
 

@@ -12,8 +12,6 @@
 namespace sweetspot::reports {
 namespace {
 
-constexpr double kDefaultHeadArea_m2 = 100 * io::kSquareInch_m2;  // 100 sq in
-
 // The design with the ball at `from_tip_m`, evaluated at `fidelity`.
 Evaluation evaluate_at(const io::DesignFile& design, double from_tip_m, std::string_view fidelity,
                        double rel_tol) {
@@ -97,40 +95,15 @@ std::string ratio_text(double ratio) {
 }
 
 bool is_racquet(const io::DesignFile& design) {
-  return design.implement_form == "specs" || design.design.strings.has_value();
+  return io::has_racquet_head(design.design, design.implement_form == "specs"
+                                                 ? io::ImplementDescription::Form::kSpecs
+                                                 : io::ImplementDescription::Form::kSections);
 }
 
-HeadShape head_shape_of(const io::DesignFile& design) {
-  if (design.design.head) return *design.design.head;
-  HeadShape head;  // the default aspect ratio and hoop width of head_geometry.hpp
-  head.area_m2 = kDefaultHeadArea_m2;
-  if (design.design.strings) {
-    const double r = design.design.strings->head_radius_m;
-    head.area_m2 = std::numbers::pi * r * r;
-  }
-  return head;
-}
+HeadShape head_shape_of(const io::DesignFile& design) { return io::racquet_head(design.design); }
 
 double centre_of_strings_from_tip_m(const io::DesignFile& design) {
-  const HeadShape head = head_shape_of(design);
-  const double length = design.design.implement.length_m();
-  // The string bed's far end is one hoop width below the tip, its centre one
-  // semi-length a = sqrt(area aspect / pi) further (string_bed()); a head too
-  // long for the implement is put at its middle.
-  const double semi_length = std::sqrt(head.area_m2 * head.aspect_ratio / std::numbers::pi);
-  if (!(2.0 * (semi_length + head.hoop_width_m) <= length)) return 0.5 * length;
-  return length - string_bed(head, length).center_from_butt_m;
-}
-
-io::DesignFile with_default_impact(io::DesignFile design) {
-  const auto it = design.provenance.find("impact/from_butt_m");
-  if (it == design.provenance.end() || !it->second.starts_with("default")) return design;
-  if (!is_racquet(design)) return design;
-  const double from_tip = centre_of_strings_from_tip_m(design);
-  design.design.impact_from_butt_m = design.design.implement.length_m() - from_tip;
-  it->second = fmt::format("default for a racquet: the centre of the strings, {} from the tip",
-                           cm_text(from_tip));
-  return design;
+  return io::centre_of_strings_from_tip_m(design.design);
 }
 
 SweetSpots find_sweet_spots(const io::DesignFile& design, const Evaluation& asked, double rel_tol) {

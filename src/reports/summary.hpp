@@ -48,8 +48,9 @@ struct SweetSpots {
   std::string asked_provenance = "given";
 };
 
-// Whether a design is a racquet with strings: its implement is given by a
-// spec sheet (length, mass, balance, swingweight) or it has a string tension.
+// Whether a design is a racquet with a head (io::has_racquet_head()): it
+// gives a head, a string tension, or a spec sheet (length, mass, balance,
+// swingweight).
 bool is_racquet(const io::DesignFile& design);
 
 // The centre of the string bed [m from the tip] of a racquet: the centre of
@@ -66,12 +67,6 @@ double centre_of_strings_from_tip_m(const io::DesignFile& design);
 // ratio and hoop width) when given, else the default shape with the string
 // bed's area (pi strings.head_radius_m^2), else 100 sq in.
 HeadShape head_shape_of(const io::DesignFile& design);
-
-// The impact `evaluate` uses when the file gives none: for a racquet, the
-// centre of the strings (a coach's "centre hit"); for the paper's designs
-// (head-to-handle ratio, sections) the paper's 5 cm from the tip. Returns the
-// design with the impact moved and its provenance said, or the design as it is.
-io::DesignFile with_default_impact(io::DesignFile design);
 
 // How closely best_rebound is located [m]: the 0.5 cm the sentences round to.
 inline constexpr double kBestReboundTolerance_m = 0.005;

@@ -18,6 +18,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "io/design_fields.hpp"
 #include "io/design_reader.hpp"
 #include "io/input_error.hpp"
 #include "io/outputs.hpp"
@@ -430,6 +431,9 @@ Header read_header(std::string_view line, const std::string& where, const BatchO
       throw InputError(where, "", label + ": " + problem);
     }
     const std::string pointer = field_to_pointer(field);
+    // A field no design has is the header's fault, refused once whatever the cells hold.
+    if (const std::string unknown = design_path_problem(pointer); !unknown.empty())
+      throw InputError(where, "", label + ": " + unknown);
     const auto [same, inserted] = column_of.emplace(pointer, header.design.size());
     if (!inserted) {
       throw InputError(where, "",

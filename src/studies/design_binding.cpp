@@ -24,17 +24,16 @@ struct Field {
   bool available;  // whether the design as read has this number in this form
 };
 
-// The factor of `key` if it spells one of `fields`, with that field.
-std::optional<std::pair<double, Setter>> match(std::string_view key,
-                                               std::initializer_list<Field> fields) {
+// The conversion of `key` if it spells one of `fields`, with that field.
+std::optional<std::pair<UnitScale, Setter>> match(std::string_view key,
+                                                  std::initializer_list<Field> fields) {
   for (const Field& f : fields) {
     if (!f.available) continue;
     if (!f.dimension) {
-      if (key == f.base) return std::pair{1.0, f.set};
+      if (key == f.base) return std::pair{UnitScale{}, f.set};
       continue;
     }
-    if (const auto factor = unit_factor(key, f.base, *f.dimension))
-      return std::pair{*factor, f.set};
+    if (const auto scale = unit_scale(key, f.base, *f.dimension)) return std::pair{*scale, f.set};
   }
   return std::nullopt;
 }
@@ -71,7 +70,7 @@ std::optional<FieldBinding> bind_field(const DesignDescription& d, std::string_v
   if (t.size() < 2) return std::nullopt;
   const Design& design = d.design;
   const ImplementDescription& implement = d.implement;
-  std::optional<std::pair<double, Setter>> found;
+  std::optional<std::pair<UnitScale, Setter>> found;
   bool rebuilds = false;
   std::size_t index = 0;
   if (t[0] == "implement" && t.size() == 2) {
@@ -105,13 +104,27 @@ std::optional<FieldBinding> bind_field(const DesignDescription& d, std::string_v
           specs},
          {"swingweight", Dimension::kInertia,
           [](DesignDescription& x, std::size_t, double v) { x.implement.swingweight_kg_m2 = v; },
-          specs}});
-    // The reader scales a balance in cm by 0.01 as a unit factor does.
+          specs},
+         {"head_aspect_ratio", std::nullopt,
+          [](DesignDescription& x, std::size_t, double v) { x.implement.head->aspect_ratio = v; },
+          implement.head.has_value()},
+         {"hoop_width", Dimension::kLength,
+          [](DesignDescription& x, std::size_t, double v) { x.implement.head->hoop_width_m = v; },
+          implement.head.has_value()}});
+    // The reader scales a balance in cm and a head in cm^2 as a unit does.
     if (!found && specs && t[1] == "balance_cm") {
-      found = std::pair{0.01, Setter{[](DesignDescription& x, std::size_t, double v) {
-                          x.implement.balance_in_points = false;
-                          x.implement.balance = v;
-                        }}};
+      found =
+          std::pair{UnitScale{0.01, -2}, Setter{[](DesignDescription& x, std::size_t, double v) {
+                      x.implement.balance_in_points = false;
+                      x.implement.balance = v;
+                    }}};
+    }
+    if (!found && implement.head && (t[1] == "headsize_sq_in" || t[1] == "headsize_cm2")) {
+      found =
+          std::pair{t[1] == "headsize_sq_in" ? UnitScale{kSquareInch_m2, 0} : UnitScale{1e-4, -4},
+                    Setter{[](DesignDescription& x, std::size_t, double v) {
+                      x.implement.head->area_m2 = v;
+                    }}};
     }
   } else if (t[0] == "implement" && t.size() == 4 &&
              (t[1] == "sections" || t[1] == "point_masses")) {
@@ -137,12 +150,31 @@ std::optional<FieldBinding> bind_field(const DesignDescription& d, std::string_v
                             },
                             has && implement.sections[index].EI_N_m2.has_value()}});
     } else {
+      // Entry N of the file's list, whatever it holds (a clock pair is one
+      // entry; its mass is each piece's).
       const bool has = index < implement.point_masses.size();
+      const PointMassDescription* entry = has ? &implement.point_masses[index] : nullptr;
+      const bool on_axis = entry && !entry->handle && entry->clock_hours.empty();
       found = match(t[3], {{"from_butt", Dimension::kLength,
                             [](DesignDescription& x, std::size_t k, double v) {
                               x.implement.point_masses[k].from_butt_m = v;
                             },
-                            has},
+                            entry && entry->from_butt_m.has_value()},
+                           {"from_tip", Dimension::kLength,
+                            [](DesignDescription& x, std::size_t k, double v) {
+                              x.implement.point_masses[k].from_tip_m = v;
+                            },
+                            entry && entry->from_tip_m.has_value()},
+                           {"off_axis", Dimension::kLength,
+                            [](DesignDescription& x, std::size_t k, double v) {
+                              x.implement.point_masses[k].off_axis_m = v;
+                            },
+                            on_axis},
+                           {"clock", std::nullopt,
+                            [](DesignDescription& x, std::size_t k, double v) {
+                              x.implement.point_masses[k].clock_hours = {v};
+                            },
+                            entry && entry->clock_hours.size() == 1},
                            {"mass", Dimension::kMass,
                             [](DesignDescription& x, std::size_t k, double v) {
                               x.implement.point_masses[k].mass_kg = v;
@@ -205,7 +237,7 @@ std::optional<FieldBinding> bind_field(const DesignDescription& d, std::string_v
     // The reader's factors for a head size, as it writes them.
     if (!found && bed && d.head_area_m2 && (t[1] == "head_size_in2" || t[1] == "head_size_cm2")) {
       found = std::pair{
-          t[1] == "head_size_in2" ? kSquareInch_m2 : 1e-4,
+          t[1] == "head_size_in2" ? UnitScale{kSquareInch_m2, 0} : UnitScale{1e-4, -4},
           Setter{[](DesignDescription& x, std::size_t, double v) { x.head_area_m2 = v; }}};
     }
   } else if (t.size() == 2 && t[0] == "hand") {
@@ -247,12 +279,21 @@ std::optional<FieldBinding> bind_field(const DesignDescription& d, std::string_v
          {"speed", Dimension::kSpeed,
           [](DesignDescription& x, std::size_t, double v) { x.design.ball.speed_m_s = v; }, true}});
   } else if (t.size() == 2 && t[0] == "impact") {
+    // A file without an impact takes the one written at the pointer.
     found = match(t[1], {{"from_tip", Dimension::kLength,
-                          [](DesignDescription& x, std::size_t, double v) { x.impact_m = v; },
-                          d.impact_from_tip},
+                          [](DesignDescription& x, std::size_t, double v) {
+                            x.impact_place = ImpactPlace::kFromTip;
+                            x.impact_given = true;
+                            x.impact_m = v;
+                          },
+                          d.impact_place == ImpactPlace::kFromTip || !d.impact_given},
                          {"from_butt", Dimension::kLength,
-                          [](DesignDescription& x, std::size_t, double v) { x.impact_m = v; },
-                          !d.impact_from_tip}});
+                          [](DesignDescription& x, std::size_t, double v) {
+                            x.impact_place = ImpactPlace::kFromButt;
+                            x.impact_given = true;
+                            x.impact_m = v;
+                          },
+                          d.impact_place == ImpactPlace::kFromButt || !d.impact_given}});
   }
   if (!found) return std::nullopt;
   return FieldBinding{std::string(pointer), found->first, found->second, index, rebuilds};
@@ -282,7 +323,7 @@ const Design* BoundDesign::at(std::span<const double> values) {
   for (std::size_t i = 0; i < bindings.size(); ++i) {
     const FieldBinding& b = bindings[i];
     if (!std::isfinite(values[i])) return nullptr;  // the reader wants a finite number
-    const double si = values[i] * b.factor;
+    const double si = b.scale.to_si(values[i]);
     if (b.implement) {
       // Bit for bit: -0.0 and 0.0 need not build the same implement.
       rebuild =

@@ -17,13 +17,15 @@
 #include <vector>
 
 #include "io/design_description.hpp"
+#include "io/json_reader.hpp"
 
 namespace sweetspot::io {
 
 struct FieldBinding {
   std::string pointer;  // as the study or the header wrote it, e.g. "/hand/mass_g"
-  double factor = 1.0;  // the key's unit to SI (0.001 for mass_g)
-  // Writes the SI value into the description (`index`: the section or point mass).
+  UnitScale scale;      // the key's unit to SI (mass_g: 10^-3), as the reader converts
+  // Writes the SI value into the description (`index`: the section, or the
+  // entry of the file's list of point masses).
   void (*set)(DesignDescription&, std::size_t index, double si) = nullptr;
   std::size_t index = 0;
   bool implement = false;  // the implement is rebuilt when the value changes

@@ -297,7 +297,10 @@ Study read_study(const Json& document, const std::string& source, const std::str
     top.fail("design", "expected a path or an inline design object, got " + brief(*design));
   }
   // The design must be valid as written.
-  read_design(study.design_document, study.design_source);
+  const DesignFile as_written = read_design(study.design_document, study.design_source);
+  const auto impact = as_written.provenance.find("impact/from_butt_m");
+  const bool default_impact =
+      impact != as_written.provenance.end() && impact->second.starts_with("default");
 
   int grid_points = kDefaultGridPoints;
   if (const Json* grid = top.child("grid")) {
@@ -434,6 +437,13 @@ Study read_study(const Json& document, const std::string& source, const std::str
           "expected the name of an output of sweetspot evaluate, got " + brief(outputs[i]));
     }
     study.sweep_outputs.push_back(find_output(outputs[i].get<std::string>()));
+  }
+  // A sweep of a design that gives no impact says where the default hit.
+  const OutputSpec* impact_output = find_output("impact_from_tip_m");
+  if (default_impact && !study.sweep_outputs.empty() &&
+      std::find(study.sweep_outputs.begin(), study.sweep_outputs.end(), impact_output) ==
+          study.sweep_outputs.end()) {
+    study.sweep_outputs.push_back(impact_output);
   }
   const std::string fidelity = top.string("fidelity").value_or("auto");
   std::optional<Fidelity> asked;

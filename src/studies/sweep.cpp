@@ -47,9 +47,9 @@ class SweepWorker {
     const std::string_view pointer = study.variables[0].pointer;
     if (share_rows && study.fidelity == Fidelity::kRigid && pointer.starts_with("/impact/")) {
       const std::string_view key = pointer.substr(std::string_view("/impact/").size());
-      if (const auto f = unit_factor(key, "from_tip", Dimension::kLength))
+      if (const auto f = unit_scale(key, "from_tip", Dimension::kLength))
         impact_ = Impact{true, *f};
-      if (const auto f = unit_factor(key, "from_butt", Dimension::kLength))
+      if (const auto f = unit_scale(key, "from_butt", Dimension::kLength))
         impact_ = Impact{false, *f};
     }
   }
@@ -101,7 +101,7 @@ class SweepWorker {
  private:
   struct Impact {
     bool from_tip;
-    double to_si;
+    UnitScale to_si;
   };
 
   // The point set on the study's compiled design and evaluated; nullptr
@@ -144,7 +144,7 @@ class SweepWorker {
   // The same point from the row's design, or nullptr when only reading it
   // on its own can say what is wrong (off the implement, not finite).
   const Evaluation* shared_at(double v) {
-    const double si = v * impact_->to_si;
+    const double si = impact_->to_si.to_si(v);
     const double from_butt = impact_->from_tip ? length_m_ - si : si;
     if (!(si >= 0.0 && si <= length_m_)) return nullptr;
     evaluation_ = shared_->at(from_butt);

@@ -1,8 +1,13 @@
 #include "io/design_reader.hpp"
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <map>
+#include <string>
+#include <vector>
 
+#include "io/design_fields.hpp"
 #include "io/input_error.hpp"
 #include "sweetspot/evaluate.hpp"
 #include "sweetspot/string_bed.hpp"
@@ -110,7 +115,9 @@ TEST_CASE("The three implement forms read from files give the same evaluation") 
   const std::string specs_text =
       R"({"implement": {"length_m": 0.7, "mass_kg": 0.25, "balance_from_butt_m": )" +
       std::to_string(paper.balance_from_butt_m) + R"(, "swingweight_kg_cm2": )" +
-      std::to_string(paper.swingweight_kg_m2 * 1e4) + "}}";
+      std::to_string(paper.swingweight_kg_m2 * 1e4) +
+      R"(}, "impact": {"from_tip_m": 0.05}})";  // a spec sheet's default is the centre of the
+                                                // strings
   const Evaluation specs = evaluate(read(specs_text.c_str()).design);
   // std::to_string keeps 6 decimals: 1e-6 m in balance, 1e-6 kg cm^2 in swingweight.
   CHECK(specs.peak_wrist_force_N == Approx(paper.peak_wrist_force_N).epsilon(1e-5));
@@ -302,4 +309,263 @@ TEST_CASE("A file name that is not UTF-8 stands in for a missing name as valid U
 }
 
 }  // namespace
+}  // namespace sweetspot::io
+
+namespace sweetspot::io {
+namespace {
+
+std::string error_of(const char* text) {
+  try {
+    read(text);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+bool has(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+}  // namespace
+
+TEST_CASE(
+    "A misspelt key is named with the keys it may have meant, before any missing key is "
+    "complained of") {
+  const auto implement_with = [](const std::string& key) {
+    static std::string text;
+    text = R"({"implement": {")" + key + R"(": 1, "length_in": 27}})";
+    return error_of(text.c_str());
+  };
+  const std::string weight = implement_with("weight_oz");
+  CHECK(has(weight, "/implement/weight_oz: unknown key; the mass is given as mass_kg or mass_g"));
+  CHECK_FALSE(has(weight, "missing"));
+  CHECK(has(implement_with("length_inch"),
+            "/implement/length_inch: unknown key; the length is given as length_m, length_cm, "
+            "length_mm or length_in"));
+  CHECK(has(implement_with("balance_in"),
+            "/implement/balance_in: unknown key; the balance is given as balance_from_butt_m, "
+            "balance_cm or balance_pts_hl"));
+  CHECK(has(implement_with("swingweight"),
+            "/implement/swingweight: unknown key; the swingweight is given as swingweight_kg_m2 "
+            "or swingweight_kg_cm2"));
+  CHECK(has(implement_with("mas_g"), "did you mean mass_g?"));
+  // No near key: the list alone, with every spelling the reader accepts.
+  const std::string colour = implement_with("colour");
+  CHECK(has(colour, "/implement/colour: unknown key (expected one of: length_m, length_cm,"));
+  CHECK(has(error_of(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25,
+      "head_to_handle_mass_ratio": 0.8}, "ball": {"speed_kph": 50}})"),
+            "/ball/speed_kph: unknown key; the speed is given as speed_m_s, speed_km_h or "
+            "speed_mph"));
+  CHECK(has(error_of(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25,
+      "head_to_handle_mass_ratio": 0.8}, "hand": {"colour": 1}})"),
+            "speed_km_h") == false);
+  CHECK(has(error_of(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25,
+      "head_to_handle_mass_ratio": 0.8, "point_masses": [{"weight_g": 5, "clock": 12}]}})"),
+            "/implement/point_masses/0/weight_g: unknown key; the mass is given as mass_kg or "
+            "mass_g"));
+}
+
+TEST_CASE("Every accepted spelling is in the expected keys of its object, and is accepted") {
+  // Each spelling of every field of the table that needs no other, written
+  // alone into its object, is read (or refused for its value), never unknown.
+  for (const DesignField& field : design_fields()) {
+    if (field.object.empty() || field.object.find('/') != std::string_view::npos) continue;
+    for (const std::string& key : spellings_of(field)) {
+      const std::vector<std::string>& keys = design_keys(field.object);
+      CHECK(std::find(keys.begin(), keys.end(), key) != keys.end());
+      // A field that needs another (a balance needs a spec sheet's swingweight,
+      // a string spacing a tension) is another form's key alone.
+      if (!field.depends_on.empty()) continue;
+      std::string text = R"({"implement": {"length_m": 0.7, "mass_kg": 0.25,
+          "head_to_handle_mass_ratio": 0.8}})";
+      Json document = Json::parse(text);
+      document[std::string(field.object)][key] = 1;
+      INFO(field.object << "/" << key);
+      try {
+        read_design(document, "test.json");
+      } catch (const InputError& e) {
+        CHECK_FALSE(has(e.what(), "unknown key"));
+      }
+    }
+  }
+}
+
+TEST_CASE(
+    "A racquet with a head is hit at the centre of its strings when no impact is given, the "
+    "paper's designs 5 cm from the tip, and the provenance says so") {
+  const DesignFile racquet = read(R"({"implement": {"length_in": 27, "mass_g": 318,
+      "balance_cm": 32.5, "swingweight_kg_cm2": 325, "headsize_sq_in": 100},
+      "frame": {"RA": 66}, "strings": {"tension_lb": 52}})");
+  CHECK(racquet.design.implement.length_m() - racquet.design.impact_from_butt_m ==
+        centre_of_strings_from_tip_m(racquet.design));
+  CHECK(racquet.provenance.at("impact/from_butt_m") ==
+        "default for a racquet: the centre of the strings, 18 cm from the tip");
+  // The paper's racquet with a head is a racquet with a head.
+  const DesignFile headed = read(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25,
+      "head_to_handle_mass_ratio": 0.8, "headsize_cm2": 600}})");
+  CHECK(headed.design.impact_from_butt_m == 0.7 - centre_of_strings_from_tip_m(headed.design));
+  const DesignFile paper = read(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25,
+      "head_to_handle_mass_ratio": 0.8}})");
+  CHECK(paper.design.impact_from_butt_m == 0.7 - 0.05);
+  CHECK(paper.provenance.at("impact/from_butt_m") == "default (5 cm from the tip)");
+}
+
+TEST_CASE("The implement's head size is the string bed's; a second, different one is refused") {
+  const auto collision = [](int sq_in) {
+    const std::string text = R"({"implement": {"length_in": 27, "mass_g": 318, "balance_cm": 32.5,
+        "swingweight_kg_cm2": 325, "headsize_sq_in": )" +
+                             std::to_string(sq_in) +
+                             R"(}, "frame": {"RA": 66}, "strings": {"tension_lb": 52},
+        "impact": {"from_tip_cm": 18}})";
+    const DesignFile d = read(text.c_str());
+    REQUIRE(d.design.strings);
+    CHECK(d.design.strings->head_radius_m ==
+          Approx(std::sqrt(sq_in * 0.0254 * 0.0254 / 3.141592653589793)).epsilon(1e-12));
+    return evaluate(d.design, Fidelity::kCollision);
+  };
+  const Evaluation small = collision(95), large = collision(110);
+  CHECK(small.apparent_cor != large.apparent_cor);
+  CHECK(small.impact_duration_s != large.impact_duration_s);
+  const std::string both = error_of(R"({"implement": {"length_in": 27, "mass_g": 318,
+      "balance_cm": 32.5, "swingweight_kg_cm2": 325, "headsize_sq_in": 95},
+      "strings": {"tension_lb": 52, "head_size_in2": 110}})");
+  CHECK(has(both, "/strings/head_size_in2: contradicts /implement/headsize_sq_in"));
+  // The same size in the two keys is one head.
+  CHECK_NOTHROW(read(R"({"implement": {"length_in": 27, "mass_g": 318, "balance_cm": 32.5,
+      "swingweight_kg_cm2": 325, "headsize_sq_in": 100},
+      "strings": {"tension_lb": 52, "head_size_in2": 100}})"));
+}
+
+TEST_CASE("A unit that is a power of ten keeps the digits the user gave: 282 g is 0.282 kg") {
+  const DesignFile d = read(R"({"implement": {"length_cm": 68.5, "mass_g": 282,
+      "balance_cm": 32.5, "swingweight_kg_cm2": 325}})");
+  CHECK(d.design.implement.mass_properties().mass_kg == 0.282);
+  CHECK(d.design.implement.length_m() == 0.685);
+  CHECK(d.design.implement.mass_properties().com_from_butt_m == 0.325);
+}
+
+}  // namespace sweetspot::io
+
+namespace sweetspot::io {
+namespace {
+
+std::string source_file(const std::string& path) {
+  return read_input_file(std::string(SWEETSPOT_SOURCE_DIR) + "/" + path, kMaxInputFileBytes);
+}
+
+// The schema's "properties" of the table's object ("implement/sections/N" ->
+// properties.implement.properties.sections.items.properties); nullptr when
+// the schema does not describe it.
+const Json* schema_properties(const Json& schema, const std::string& object) {
+  const Json* node = &schema;
+  std::size_t start = 0;
+  while (start < object.size()) {
+    const std::size_t slash = std::min(object.find('/', start), object.size());
+    const std::string token = object.substr(start, slash - start);
+    if (token == "N") {
+      if (!node->contains("items")) return nullptr;
+      node = &(*node)["items"];
+    } else {
+      if (!node->contains("properties") || !(*node)["properties"].contains(token)) return nullptr;
+      node = &(*node)["properties"][token];
+    }
+    start = slash + 1;
+  }
+  return node->contains("properties") ? &(*node)["properties"] : nullptr;
+}
+
+}  // namespace
+
+TEST_CASE("The schema accepts exactly the keys of the field table, every spelling included") {
+  const Json schema = parse_json(source_file("schema/design.schema.json"), "design.schema.json");
+  std::vector<std::string> objects;
+  for (const DesignField& field : design_fields()) {
+    if (std::find(objects.begin(), objects.end(), field.object) == objects.end())
+      objects.emplace_back(field.object);
+  }
+  CHECK(objects.size() == 12);
+  for (const std::string& object : objects) {
+    INFO("object '" << object << "'");
+    const Json* properties = schema_properties(schema, object);
+    REQUIRE(properties);
+    std::vector<std::string> in_schema;
+    for (const auto& [key, value] : properties->items()) in_schema.push_back(key);
+    std::vector<std::string> in_table = design_keys(object);
+    std::sort(in_schema.begin(), in_schema.end());
+    std::sort(in_table.begin(), in_table.end());
+    CHECK(in_schema == in_table);
+  }
+}
+
+TEST_CASE("The README's table of design keys names every field of the field table") {
+  const std::string readme = source_file("README.md");
+  const std::size_t section = readme.find("## Design files");
+  REQUIRE(section != std::string::npos);
+  const std::size_t table = readme.find("| key | meaning", section);
+  REQUIRE(table != std::string::npos);
+  const std::size_t end = readme.find("\n\n", table);
+  const std::string rows = readme.substr(table, end - table);
+  for (const DesignField& field : design_fields()) {
+    INFO(field.object << " " << field.stem);
+    CHECK(rows.find(std::string(field.stem)) != std::string::npos);
+  }
+}
+
+}  // namespace sweetspot::io
+
+namespace sweetspot::io {
+
+TEST_CASE("Each field's default in the table is the reader's and the schema's") {
+  const DesignFile plain = read(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25,
+      "head_to_handle_mass_ratio": 0.8, "point_masses": [{"from_butt_m": 0.1, "mass_g": 1}]}})");
+  const DesignFile strung = read(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25,
+      "head_to_handle_mass_ratio": 0.8, "headsize_cm2": 600}, "strings": {"tension_N": 250}})");
+  const Design& a = plain.design;
+  const Design& b = strung.design;
+  REQUIRE(b.strings);
+  REQUIRE(b.head);
+  // What the reader gives each field when the file leaves it out (the oracle).
+  const std::map<std::string, double> read_default{
+      {"implement/head_aspect_ratio", b.head->aspect_ratio},
+      {"implement/hoop_width_m", b.head->hoop_width_m},
+      {"implement/point_masses/N/off_axis_m", a.implement.point_masses().at(0).off_axis_m},
+      {"frame/cor", a.cor},
+      {"strings/impact_duration_s", a.impact_duration_s},
+      {"strings/string_spacing_m", b.strings->string_spacing_m},
+      {"strings/contact_radius_m", b.strings->contact_radius_m},
+      {"strings/bed_mass_kg", a.string_bed_mass_kg},
+      {"strings/bed_damping_ratio", a.string_bed_damping_ratio},
+      {"hand/mass_kg", a.hand.mass_kg},
+      {"hand/center_from_butt_m", a.hand.center_from_butt_m},
+      {"hand/grip_length_m", a.hand.grip_length_m},
+      {"hand/grip_stiffness_N_m2", a.hand.grip_stiffness_N_m2},
+      {"hand/grip_damping_N_s_m2", a.hand.grip_damping_N_s_m2},
+      {"forearm/equivalent_mass_kg", a.forearm_equivalent_mass_kg},
+      {"ball/mass_kg", a.ball.mass_kg},
+      {"ball/speed_m_s", a.ball.speed_m_s},
+      {"ball/contact/stiffness", a.ball_contact.stiffness},
+      {"ball/contact/exponent", a.ball_contact.exponent},
+      {"ball/contact/damping", a.ball_contact.damping},
+      {"ball/contact/damping_exponent", a.ball_contact.damping_exponent},
+      {"impact/off_axis_m", a.impact_off_axis_m}};
+  const Json schema = parse_json(source_file("schema/design.schema.json"), "design.schema.json");
+  std::size_t numbers = 0;
+  for (const DesignField& field : design_fields()) {
+    const std::string name = std::string(field.object) + "/" + std::string(field.si_key);
+    const Json* properties = schema_properties(schema, std::string(field.object));
+    REQUIRE(properties);
+    const Json& property = (*properties)[std::string(field.si_key)];
+    INFO(name);
+    CHECK((property.contains("default") && property["default"].is_number()) ==
+          field.default_si.has_value());
+    if (!field.default_si) continue;
+    ++numbers;
+    CHECK(property["default"].get<double>() == *field.default_si);
+    REQUIRE(read_default.count(name) == 1);
+    CHECK(read_default.at(name) == *field.default_si);
+  }
+  CHECK(numbers == read_default.size());
+}
+
 }  // namespace sweetspot::io

@@ -8,8 +8,11 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <chrono>
+#include <cstdint>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -142,4 +145,53 @@ TEST_CASE("The documented limit of a design or study file is 16 MiB") {
 }
 
 }  // namespace
+}  // namespace sweetspot::io
+
+namespace sweetspot::io {
+
+TEST_CASE(
+    "Every unit spelling that is a power of ten gives the correctly rounded SI value of the "
+    "decimal the user wrote") {
+  // The oracle: the decimal text with its exponent moved, read by the
+  // correctly rounding std::strtod.
+  const std::uint32_t seed = 20261201;
+  INFO("seed " << seed);
+  std::mt19937 random(seed);
+  struct Spelling {
+    const char* base;
+    Dimension dimension;
+  };
+  const Spelling bases[] = {{"length", Dimension::kLength},
+                            {"mass", Dimension::kMass},
+                            {"impact_duration", Dimension::kTime},
+                            {"swingweight", Dimension::kInertia}};
+  std::size_t checked = 0;
+  for (const Spelling& s : bases) {
+    for (const std::string& key : spellings(s.base, s.dimension)) {
+      const UnitScale scale = *unit_scale(key, s.base, s.dimension);
+      if (scale.power_of_ten == 0) continue;  // 1 or not a power of ten: multiplied
+      for (int i = 0; i < 2000; ++i) {
+        // d.ddd...e<exp>, 1 to 15 significant digits.
+        const int digits = 1 + static_cast<int>(random() % 15);
+        std::string mantissa(1, static_cast<char>('1' + random() % 9));
+        if (digits > 1) mantissa += '.';
+        for (int k = 1; k < digits; ++k) mantissa += static_cast<char>('0' + random() % 10);
+        const int exponent = static_cast<int>(random() % 13) - 6;
+        const std::string text = mantissa + "e" + std::to_string(exponent);
+        const std::string shifted = mantissa + "e" + std::to_string(exponent + scale.power_of_ten);
+        const Json object = Json::parse("{\"" + key + "\": " + text + "}");
+        ObjectReader r(object, "/x", "x", "test.json", nullptr);
+        INFO(key << " = " << text);
+        const double si = *r.quantity(s.base, s.dimension);
+        CHECK(si == std::strtod(shifted.c_str(), nullptr));
+        ++checked;
+      }
+    }
+  }
+  CHECK(checked == 5 * 2000);  // _cm, _mm, _g, _ms, _kg_cm2
+  // The README's example, exactly.
+  CHECK(UnitScale{0.001, -3}.to_si(282) == 0.282);
+  CHECK(UnitScale{0.001, -3}.to_si(282) != 282 * 0.001);
+}
+
 }  // namespace sweetspot::io

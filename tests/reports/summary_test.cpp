@@ -66,16 +66,16 @@ TEST_CASE(
 TEST_CASE(
     "A racquet without an impact is hit at the centre of its strings; the paper's designs "
     "keep 5 cm from the tip") {
-  const io::DesignFile racquet = with_default_impact(design_from(kSpecSheet));
+  const io::DesignFile racquet = (design_from(kSpecSheet));
   CHECK(racquet.design.implement.length_m() - racquet.design.impact_from_butt_m ==
         Approx(centre_of_strings_from_tip_m(racquet)));
   CHECK(contains(racquet.provenance.at("impact/from_butt_m"), "centre of the strings"));
 
-  const io::DesignFile paper = with_default_impact(design_from(
+  const io::DesignFile paper = (design_from(
       R"({"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8}})"));
   CHECK(paper.design.impact_from_butt_m == Approx(0.65));
 
-  const io::DesignFile given = with_default_impact(design_from(
+  const io::DesignFile given = (design_from(
       R"({"implement": {"length_in": 27, "mass_g": 318, "balance_cm": 32.5,
           "swingweight_kg_cm2": 325}, "impact": {"from_tip_cm": 5}})"));
   CHECK(given.design.implement.length_m() - given.design.impact_from_butt_m == Approx(0.05));
@@ -84,7 +84,7 @@ TEST_CASE(
 TEST_CASE(
     "The sweet spots: no wrist force at the hand-held COP, and the node's distance from it "
     "is the COP-node gap") {
-  const io::DesignFile design = with_default_impact(design_from(kSpecSheet));
+  const io::DesignFile design = (design_from(kSpecSheet));
   const Evaluation asked = io::evaluate_design_file(design, "", 1e-6);
   const SweetSpots spots = find_sweet_spots(design, asked, 1e-6);
   REQUIRE(spots.cop_hand);

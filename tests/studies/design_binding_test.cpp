@@ -12,7 +12,9 @@
 #include <string>
 #include <vector>
 
+#include "io/design_fields.hpp"
 #include "io/design_reader.hpp"
+#include "io/format.hpp"
 #include "io/outputs.hpp"
 #include "studies/batch.hpp"
 #include "studies/optimization.hpp"
@@ -46,6 +48,21 @@ void check_same_design(const Design& a, const Design& b) {
   CHECK(same_bits(a.ball.mass_kg, b.ball.mass_kg));
   CHECK(same_bits(a.ball.speed_m_s, b.ball.speed_m_s));
   CHECK(same_bits(a.impact_from_butt_m, b.impact_from_butt_m));
+  CHECK(same_bits(a.implement.frame_mass_properties().I_cm_kg_m2,
+                  b.implement.frame_mass_properties().I_cm_kg_m2));
+  const std::vector<PointMass>& pa = a.implement.point_masses();
+  const std::vector<PointMass>& pb = b.implement.point_masses();
+  for (std::size_t k = 0; k < pa.size() && k < pb.size(); ++k) {
+    CHECK(same_bits(pa[k].from_butt_m, pb[k].from_butt_m));
+    CHECK(same_bits(pa[k].mass_kg, pb[k].mass_kg));
+    CHECK(same_bits(pa[k].off_axis_m, pb[k].off_axis_m));
+  }
+  CHECK(a.head.has_value() == b.head.has_value());
+  if (a.head && b.head) {
+    CHECK(same_bits(a.head->area_m2, b.head->area_m2));
+    CHECK(same_bits(a.head->aspect_ratio, b.head->aspect_ratio));
+    CHECK(same_bits(a.head->hoop_width_m, b.head->hoop_width_m));
+  }
   CHECK(a.strings.has_value() == b.strings.has_value());
   if (a.strings && b.strings) {
     CHECK(same_bits(a.strings->tension_N, b.strings->tension_N));
@@ -97,6 +114,37 @@ const std::vector<Case>& cases() {
         {"/strings/tension_lb", {60.0, -1.0, 1e9}},
         {"/strings/head_size_in2", {100.0, 0.0, 1e5}},
         {"/frame/EI_N_m2", {260.0, -1.0}}}},
+      // A racquet with a head and no impact (hit at the centre of its strings),
+      // tape placed relative to the geometry: each follows a length or head
+      // that changes, and list index N is the file's entry N.
+      {R"({"implement": {"length_in": 27, "mass_g": 300, "balance_cm": 32.5, "swingweight_kg_cm2": 320,
+                         "headsize_sq_in": 100, "point_masses": [{"clock": 12, "mass_g": 3},
+                         {"clock": [3, 9], "mass_g": 2}, {"clock": "handle", "mass_g": 10},
+                         {"from_tip_cm": 20, "off_axis_cm": 4, "mass_g": 2}]},
+          "frame": {"RA": 66}, "strings": {"tension_lb": 52}})",
+       {{"/implement/length_in", {29.0, 27.5, 10.0}},
+        {"/implement/point_masses/0/mass_g", {20.0, -1.0}},
+        {"/implement/point_masses/1/mass_g", {5.0, -1.0}},
+        {"/implement/point_masses/2/mass_g", {20.0, 2e9}},
+        {"/implement/point_masses/0/clock", {11.0, 13.0, -1.0}},
+        {"/implement/point_masses/3/from_tip_cm", {30.0, 100.0}},
+        {"/implement/point_masses/3/off_axis_cm", {-4.0, 200.0}},
+        {"/implement/headsize_sq_in", {95.0, 110.0, 0.0, 1e5}},
+        {"/implement/head_aspect_ratio", {1.2, 0.5}},
+        {"/impact/from_tip_cm", {10.0, 100.0}}}},
+      // The paper's racquet with a head: the throat follows its length.
+      {R"({"implement": {"length_m": 0.7, "mass_kg": 0.3, "head_to_handle_mass_ratio": 0.8,
+                         "headsize_cm2": 600, "point_masses": [{"clock": "throat", "mass_g": 5}]}})",
+       {{"/implement/length_m", {0.68, 0.75, 0.3}},
+        {"/implement/headsize_cm2", {650.0, -1.0}},
+        {"/implement/point_masses/0/mass_g", {10.0, -1.0}}}},
+      // Sections with a head: tape at 10.5 and from the tip follows a section's length.
+      {R"({"implement": {"sections": [{"length_m": 0.35, "mass_kg": 0.14}, {"length_m": 0.35, "mass_kg": 0.11}],
+                         "headsize_sq_in": 100, "point_masses": [{"clock": 10.5, "mass_g": 4},
+                         {"from_tip_cm": 10, "mass_g": 3}]}, "frame": {"EI_N_m2": 250}})",
+       {{"/implement/sections/1/length_m", {0.4, 0.3, 0.01}},
+        {"/implement/sections/0/mass_kg", {0.15, -1.0}},
+        {"/implement/point_masses/1/from_tip_cm", {20.0, 90.0}}}},
   };
   return list;
 }
@@ -144,8 +192,8 @@ TEST_CASE("Fields no binding can set are not compiled") {
     INFO(pointer);
     CHECK_FALSE(bind_field(description, pointer));
   }
-  CHECK(bind_field(description, "/hand/mass_g")->factor == 0.001);
-  CHECK(bind_field(description, "/impact/from_tip_in")->factor == 0.0254);
+  CHECK(bind_field(description, "/hand/mass_g")->scale.factor == 0.001);
+  CHECK(bind_field(description, "/impact/from_tip_in")->scale.factor == 0.0254);
   CHECK(bind_field(description, "/implement/mass_g")->implement);
   CHECK_FALSE(bind_field(description, "/hand/mass_g")->implement);
 }
@@ -372,4 +420,131 @@ TEST_CASE("The report's start and best outputs, kept from the search, are a fres
 }
 
 }  // namespace
+}  // namespace sweetspot::io
+
+namespace sweetspot::io {
+namespace {
+
+// The outputs of evaluate --batch's first row, in CSV or JSON Lines.
+std::string first_row_outputs(const std::string& csv, const char* base, Format format,
+                              bool compiled) {
+  BatchOptions options;
+  options.input = CatalogueFormat::kCsv;
+  options.base = Json::parse(base);
+  options.format = format;
+  options.compiled = compiled;
+  const std::string out = batch_output(csv, options);
+  if (format == Format::kJson) {
+    const Json row = Json::parse(out.substr(0, out.find('\n')));
+    return row.at("outputs").dump();
+  }
+  const std::size_t second = out.find('\n') + 1;
+  const std::string line = out.substr(second, out.find('\n', second) - second);
+  return line.substr(line.find(',', line.find(',') + 1));  // without line and name
+}
+
+}  // namespace
+
+TEST_CASE(
+    "Each index of the file's point-mass list means the same entry in every command, a clock "
+    "pair one entry") {
+  constexpr const char* kBase =
+      R"({"name": "tape", "implement": {"length_in": 27, "mass_g": 300, "balance_cm": 32.5,
+          "swingweight_kg_cm2": 320, "headsize_sq_in": 100,
+          "point_masses": [{"clock": 12, "mass_g": 3}, {"clock": [3, 9], "mass_g": 2},
+                           {"clock": "handle", "mass_g": 10}]},
+          "frame": {"cor": 0.8}})";
+  const Json base = Json::parse(kBase);
+  const DesignDescription description = describe_design(base, "tape.json");
+  const double frame_mass =
+      read_design(base, "tape.json").design.implement.mass_properties().mass_kg;
+  for (std::size_t n = 0; n < 3; ++n) {
+    INFO("entry " << n);
+    const std::string pointer = "/implement/point_masses/" + std::to_string(n) + "/mass_g";
+    // The file with entry n at 20 g: the oracle.
+    Json changed = base;
+    changed[Json::json_pointer(pointer)] = 20.0;
+    const DesignFile file = read_design(changed, "tape.json");
+    // The entry's mass is each piece's: the pair adds 2 x 18 g, the others 17 g and 10 g.
+    const double added[] = {0.017, 0.036, 0.010};
+    CHECK(file.design.implement.mass_properties().mass_kg - frame_mass ==
+          Approx(added[n]).epsilon(1e-12));
+    // A study variable or sweep axis (the binding).
+    const std::vector<std::string> pointers{pointer};
+    const auto compiled = CompiledDesign::compile(description, pointers);
+    REQUIRE(compiled);
+    BoundDesign bound(*compiled);
+    const double value = 20.0;
+    const Design* design = bound.at(std::span<const double>(&value, 1));
+    REQUIRE(design);
+    check_same_design(*design, file.design);
+    // Catalogue columns: the compiled CSV path, the JSON path, and JSON Lines.
+    const std::string csv =
+        "name,implement.point_masses." + std::to_string(n) + ".mass_g\nrow,20\n";
+    const std::string reference = first_row_outputs(csv, kBase, Format::kCsv, false);
+    CHECK(first_row_outputs(csv, kBase, Format::kCsv, true) == reference);
+    const Json lines = Json::parse(first_row_outputs(csv, kBase, Format::kJson, true));
+    const Evaluation e = evaluate(file.design, Fidelity::kRigid);
+    for (const char* name : {"swingweight_kg_cm2", "mass_kg", "balance_from_butt_m"}) {
+      const double value = *find_output(name)->value(e);
+      CHECK(same_bits(lines.at(name).get<double>(), value));
+      CHECK(reference.find("," + exact(value) + ",") != std::string::npos);
+    }
+  }
+}
+
+TEST_CASE(
+    "Tape at 12 o'clock follows a swept length: the swingweight at 29 in is the file's at 29 in, "
+    "bit for bit") {
+  constexpr const char* kDesign =
+      R"({"implement": {"length_in": 27, "mass_g": 300, "balance_cm": 32.5, "swingweight_kg_cm2": 320,
+          "headsize_sq_in": 100, "point_masses": [{"clock": 12, "mass_g": 10}]},
+          "frame": {"cor": 0.8}})";
+  const Json document = Json::parse(kDesign);
+  const std::vector<std::string> pointers{"/implement/length_in"};
+  const auto compiled = CompiledDesign::compile(describe_design(document, "d.json"), pointers);
+  REQUIRE(compiled);
+  BoundDesign bound(*compiled);
+  const double at27 = 27.0, at29 = 29.0;
+  const double sw27 =
+      evaluate(*bound.at(std::span<const double>(&at27, 1)), Fidelity::kRigid).swingweight_kg_m2;
+  const Evaluation e29 = evaluate(*bound.at(std::span<const double>(&at29, 1)), Fidelity::kRigid);
+  Json written = document;
+  written["implement"]["length_in"] = 29;
+  const Evaluation file29 = evaluate(read_design(written, "d.json").design, Fidelity::kRigid);
+  CHECK(e29.swingweight_kg_m2 != sw27);
+  CHECK(same_bits(e29.swingweight_kg_m2, file29.swingweight_kg_m2));
+  CHECK(same_bits(e29.impact_from_butt_m, file29.impact_from_butt_m));  // the centre of the strings
+  CHECK(same_bits(e29.peak_wrist_force_N, file29.peak_wrist_force_N));
+}
+
+}  // namespace sweetspot::io
+
+namespace sweetspot::io {
+
+TEST_CASE("The binding sets only fields of the design's field table, in the table's spellings") {
+  std::size_t bound = 0;
+  for (const Case& c : cases()) {
+    const DesignDescription description = describe_design(Json::parse(c.design), "design.json");
+    for (const DesignField& field : design_fields()) {
+      std::string object(field.object);
+      for (std::size_t at = object.find('N'); at != std::string::npos; at = object.find('N'))
+        object.replace(at, 1, "0");
+      for (const std::string& key : spellings_of(field)) {
+        const std::string pointer = "/" + object + (object.empty() ? "" : "/") + key;
+        if (bind_field(description, pointer)) ++bound;
+      }
+      // A unit the table does not give is never bound.
+      for (const char* odd : {"_oz", "_ft", "_kmh"}) {
+        const std::string pointer =
+            "/" + object + (object.empty() ? "" : "/") + std::string(field.stem) + odd;
+        INFO(pointer);
+        CHECK_FALSE(bind_field(description, pointer));
+        CHECK_FALSE(design_path_problem(pointer).empty());
+      }
+    }
+  }
+  CHECK(bound > 50);
+}
+
 }  // namespace sweetspot::io
