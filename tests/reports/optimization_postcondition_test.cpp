@@ -105,7 +105,7 @@ OptimizationResult check_reports_what_it_evaluated(const Study& study, const fs:
   // Written as a user would save it, and evaluated as `sweetspot evaluate` does.
   const fs::path file = folder / "best.json";
   std::ofstream(file, std::ios::binary) << text << "\n";
-  const DesignFile printed = reports::with_default_impact(load_design(file.string()));
+  const DesignFile printed = load_design(file.string());  // the reader applies the default impact
   std::optional<Evaluation> e;
   try {
     e = evaluate_design_file(printed, "", study.modal_tolerance);
