@@ -234,6 +234,9 @@ struct InputField {
   // the first field of it is named.
   Within within = Within::kDesign;
   bool first = true;
+  // Derived from the head's size when the file gives one: not named again
+  // when the head size itself differs.
+  bool follows_head = false;
 };
 
 template <typename T>
@@ -287,7 +290,7 @@ const std::vector<InputField>& input_fields() {
        Within::kStrings, false},
       {Part::kStrings, "strung radius", "cm", 100.0,
        [](D d) { return d.strings ? std::optional(d.strings->head_radius_m) : std::nullopt; },
-       Within::kStrings, false},
+       Within::kStrings, false, true},
       {Part::kStrings, "contact radius", "cm", 100.0,
        [](D d) { return d.strings ? std::optional(d.strings->contact_radius_m) : std::nullopt; },
        Within::kStrings, false},
@@ -378,8 +381,13 @@ std::vector<std::pair<Part, std::string>> field_differences(const Design& a, con
            : within == Within::kStrings ? a.strings.has_value() != b.strings.has_value()
                                         : false;
   };
+  const auto head_area = [](const Design& d) {
+    return d.head ? std::optional(d.head->area_m2) : std::nullopt;
+  };
+  const bool head_differs = !same_number(head_area(a), head_area(b));
   for (const InputField& f : input_fields()) {
     if (!f.first && one_has(f.within)) continue;
+    if (f.follows_head && head_differs) continue;
     const auto va = f.value(a), vb = f.value(b);
     if (!same_number(va, vb))
       out.emplace_back(f.part, fmt::format("{} {}", f.name, from_to(va, vb, f.factor, f.unit)));

@@ -112,7 +112,8 @@ TEST_CASE("compare names every input of the read design that differs, by its par
       {"/strings/tension_N", 260, "strings at 58 lb instead of 56 lb"},
       {"/strings/string_spacing_m", 0.017, "the strings' spacing 16.5 → 17 mm"},
       {"/strings/contact_radius_m", 0.035, "the strings' contact radius 3 → 3.5 cm"},
-      {"/strings/head_size_in2", 110, "the strings' strung radius"},
+      // (The strung radius follows the head size above: a different
+      // strings.head_size_in2 beside the implement's is refused by the reader.)
       {"/strings/bed_mass_kg", 0.005, "the strings' moving mass 4 → 5 g"},
       {"/strings/bed_damping_ratio", 0.01, "the strings' damping ratio 0.008 → 0.01"},
       {"/hand/center_from_butt_m", 0.08, "only the hand differs: centre from the butt 7 → 8 cm"},
