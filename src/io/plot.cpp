@@ -434,6 +434,37 @@ bool render_script_png(const std::string& script, const std::string& png_path, s
   return false;
 }
 
+std::optional<std::string> render_png_bytes(const Plot& plot, std::string* why) {
+  return render_script_png_bytes(gnuplot_script(plot, ""), why);
+}
+
+std::optional<std::string> render_script_png_bytes(const std::string& script, std::string* why) {
+  try {
+    const int fd = ::memfd_create("sweetspot-png", MFD_CLOEXEC);
+    if (fd < 0) throw PlotFailure(std::string("cannot hold the plot: ") + std::strerror(errno));
+    struct Closer {
+      int fd;
+      ~Closer() { ::close(fd); }
+    } closer{fd};
+    run_gnuplot(script, fd);
+    const std::string problem = png_problem(fd);
+    if (!problem.empty()) throw PlotFailure(problem);
+    std::string png;
+    std::array<char, 1 << 16> buffer{};
+    for (off_t at = 0;;) {
+      const ssize_t n = ::pread(fd, buffer.data(), buffer.size(), at);
+      if (n < 0 && errno == EINTR) continue;
+      if (n < 0) throw PlotFailure(std::string("cannot read the plot: ") + std::strerror(errno));
+      if (n == 0) return png;
+      png.append(buffer.data(), static_cast<std::size_t>(n));
+      at += n;
+    }
+  } catch (const std::exception& e) {
+    if (why) *why = e.what();
+  }
+  return std::nullopt;
+}
+
 namespace {
 
 // Every occurrence of `from` in `text` replaced by `to`.
