@@ -206,6 +206,10 @@ void say_written(const std::string& path) {
 }
 
 void require_plot_stem(const std::string& option, const std::string& path) {
+  if (path == "-") {
+    throw CLI::ValidationError(option +
+                               " -: names several files (FILE-<what>.png), not standard output");
+  }
   const std::string name = name_of(path);
   if (name.empty() || name == "." || name == "..") {
     throw CLI::ValidationError(option + " " + quoted(path) +

@@ -77,7 +77,8 @@ void say_written(const std::string& path);
 
 // Refuses (exit 2) a plot name whose file name is empty or a folder's
 // ("maps/", ".", ".."), for an option that adds a suffix to the name
-// (map's FILE-power.png): it would write files named "-power.png".
+// (map's FILE-power.png): it would write files named "-power.png"; and "-",
+// which cannot be several files.
 void require_plot_stem(const std::string& option, const std::string& path);
 
 }  // namespace sweetspot::cli
