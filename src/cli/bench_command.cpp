@@ -38,6 +38,8 @@ int BenchCommand::run() const {
   if (what == "map" && command->count("--out")) {
     throw CLI::ValidationError("--out: not with bench map (its table goes to standard output)");
   }
+  // The inputs first, then the outputs, before the benchmark runs.
+  if (what == "speed" || what == "all") io::require_bench_speed_inputs(options);
   if (what != "map") {
     // The folder is checked before the benchmark runs, not after.
     OutputPlan plan;

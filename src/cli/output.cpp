@@ -50,7 +50,18 @@ void OutputOptions::emit(const std::string& text, io::OutputSet& outputs) const 
 void OutputOptions::emit_stream(const std::function<void(std::ostream&)>& write,
                                 io::OutputSet& outputs) const {
   if (output.empty() || output == "-") {
-    write(std::cout);
+    // A write that fails (a full disk, `ulimit -f`) ends a long stream at once.
+    const std::ios::iostate old = std::cout.exceptions();
+    std::cout.exceptions(std::ios::badbit);
+    try {
+      write(std::cout);
+      std::cout.flush();
+    } catch (const std::ios::failure&) {
+      std::cout.exceptions(old);
+      if (!std::cout.bad()) throw;
+      throw io::WriteError("standard output", "the write failed");
+    }
+    std::cout.exceptions(old);
   } else {
     std::cout.flush();
     outputs.write_stream(output, write);

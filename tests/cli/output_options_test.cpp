@@ -355,7 +355,7 @@ TEST_CASE("No two output options of one command may name one file") {
   }
 }
 
-TEST_CASE("An output this user may not write is refused and kept; root writes it, as cp does") {
+TEST_CASE("An output this user may not write is refused and kept, and root writes it as cp does") {
   const bool root = ::geteuid() == 0;
   if (root && !setpriv_works()) {
     WARN("skipped: running as root without setpriv to become an ordinary user");
@@ -383,9 +383,20 @@ TEST_CASE("An output this user may not write is refused and kept; root writes it
       require_refused(c, mode.arguments + " " + option + " " + target, "may not write", as_user);
     }
   }
+  if (root) {  // root may write any file: the read-only file is replaced and keeps its mode
+    const Case c(kModes.front(), "root");
+    std::ofstream(c.path("ro.out")) << "keep";
+    fs::permissions(c.path("ro.out"), fs::perms::owner_read | fs::perms::group_read);
+    const Run run = c.run(kModes.front().arguments + " -o ro.out");
+    CHECK(run.status == 0);
+    CHECK(slurp(c.path("ro.out")).rfind("# ", 0) == 0);
+    CHECK((fs::status(c.path("ro.out")).permissions() & fs::perms::all) ==
+          (fs::perms::owner_read | fs::perms::group_read));
+  }
 }
 
-TEST_CASE("'-' is standard output for every file option, refused for a folder; '' is refused") {
+TEST_CASE(
+    "'-' is standard output for every file option but refused for a folder, and '' is refused") {
   for (const Mode& mode : kModes) {
     for (const std::string& option : mode.options) {
       const Case c(mode, "dash");
