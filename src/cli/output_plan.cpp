@@ -142,6 +142,9 @@ void OutputPlan::write(const std::string& option, const std::string& path, bool 
   if (identity.exists) {
     if (S_ISDIR(identity.mode)) throw io::WriteError(quoted(path), std::strerror(EISDIR));
     if (!writable(target, W_OK)) {
+      // A read-only file system is no one's permission: a write error (exit 1).
+      if (errno != EACCES && errno != EPERM)
+        throw io::WriteError(quoted(path), std::strerror(errno));
       throw CLI::ValidationError(option + " " + quoted(path) +
                                  ": this user may not write it (mode " + mode_text(identity.mode) +
                                  "); it is left as it was");
@@ -159,6 +162,7 @@ void OutputPlan::write(const std::string& option, const std::string& path, bool 
   }
   if (!S_ISDIR(info.st_mode)) throw io::WriteError(quoted(path), std::strerror(ENOTDIR));
   if (!writable(folder, W_OK | X_OK)) {
+    if (errno != EACCES && errno != EPERM) throw io::WriteError(quoted(path), std::strerror(errno));
     throw CLI::ValidationError(option + " " + quoted(path) + ": this user may not write in " +
                                quoted(folder) + " (mode " + mode_text(info.st_mode) + ")");
   }

@@ -18,7 +18,8 @@
 //    cp does), or a new file in a folder they may not write.
 // A character device (/dev/null, a terminal) may take any number of outputs
 // and may be an input too: nothing is lost there. An output that cannot be
-// written at all (into a missing folder, onto a folder, a name over NAME_MAX)
+// written at all (into a missing folder, onto a folder, a name over NAME_MAX,
+// on a read-only file system)
 // is io::WriteError (exit 1), also before any work. "-" is standard output.
 
 #include <sys/types.h>
