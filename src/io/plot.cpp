@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 #include <spawn.h>
 #include <sys/mman.h>
+#include <sys/resource.h>
 #include <sys/socket.h>
 #include <sys/stat.h>
 #include <sys/statvfs.h>
@@ -145,11 +146,19 @@ std::string png_problem(int fd) {
                         std::memcmp(head.data(), kSignature, sizeof kSignature) == 0 &&
                         std::memcmp(tail.data(), kEnd, sizeof kEnd) == 0;
   if (complete) return "";
+  // Why it was cut short: `ulimit -f` (gnuplot inherits SIGXFSZ ignored and
+  // stops at EFBIG), or a full file system (memory, for a memfd, which has
+  // no blocks to count).
+  struct rlimit limit {};
+  const bool too_large = ::getrlimit(RLIMIT_FSIZE, &limit) == 0 &&
+                         limit.rlim_cur != RLIM_INFINITY &&
+                         static_cast<rlim_t>(size) >= limit.rlim_cur;
   struct statvfs disk {};
-  const bool full = ::fstatvfs(fd, &disk) == 0 && disk.f_bavail == 0;
+  const bool full = ::fstatvfs(fd, &disk) == 0 && disk.f_blocks > 0 && disk.f_bavail == 0;
+  const int why = too_large ? EFBIG : full ? ENOSPC : 0;
   return (size == 0 ? std::string("gnuplot wrote nothing")
                     : "gnuplot wrote an incomplete PNG of " + std::to_string(size) + " bytes") +
-         (full ? ": " + std::string(std::strerror(ENOSPC)) : "");
+         (why ? ": " + std::string(std::strerror(why)) : "");
 }
 
 // Copies the whole of `from` into `to`.
