@@ -268,14 +268,18 @@ std::string bench_maps(const BenchOptions& options, std::ostream& log) {
   return md;
 }
 
-void bench_speed(const BenchOptions& options, std::ostream& log) {
-  // The inputs first: a wrong folder fails at once, not after the timings.
+void require_bench_speed_inputs(const BenchOptions& options) {
   const fs::path studies = fs::path(options.designs_dir) / "studies";
   if (!fs::is_directory(studies)) {
     throw InputError(studies.string(), "",
                      "not a folder of studies (bench speed times every study in "
                      "DESIGNS/studies; give the designs folder with --designs)");
   }
+}
+
+void bench_speed(const BenchOptions& options, std::ostream& log) {
+  // The inputs first: a wrong folder fails at once, not after the timings.
+  require_bench_speed_inputs(options);
   // Rigid evaluations through the library, one core, no allocation: distinct
   // designs (mass, balance, hand, impact all vary) as RigidCases, 4096 at a
   // time (360 kB of cases and 230 kB of outcomes: the working set of a chunk).

@@ -40,6 +40,9 @@ std::string machine_description();
 // each NLopt algorithm that fits it (evaluations, median wall time, objective
 // reached); the cost of each fidelity against its error. Logs a summary.
 void bench_speed(const BenchOptions& options, std::ostream& log);
+// Throws InputError when bench_speed()'s inputs are missing (DESIGNS/studies):
+// checked first, before the output folder and any timing.
+void require_bench_speed_inputs(const BenchOptions& options);
 
 // The string-bed map (`sweetspot map`): a 50 x 50 grid over a 100 in^2 head at
 // the rigid level (with a given duration and with one derived from the string

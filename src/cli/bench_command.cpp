@@ -21,7 +21,9 @@ void BenchCommand::add_to(CLI::App& app) {
       ->capture_default_str();
   command->add_option("--designs", options.designs_dir, "Folder holding studies/")
       ->capture_default_str();
-  command->add_option("--out", options.out_dir, "Folder to write")->capture_default_str();
+  add_output_folder_option(command, "--out", options.out_dir,
+                           "Folder to write (not with map, which prints its table)")
+      ->capture_default_str();
   command->add_option("--peers", options.peers_dir, "Folder of the NumPy/SciPy peer scripts")
       ->capture_default_str();
   command->add_option("--repeats", options.repeats, "Runs per figure (the median is reported)")
@@ -33,6 +35,18 @@ int BenchCommand::run() const {
   io::BenchOptions with_exe = options;
   std::error_code no_exe;  // the command-line figures run this very program
   with_exe.executable = std::filesystem::read_symlink("/proc/self/exe", no_exe).string();
+  if (what == "map" && command->count("--out")) {
+    throw CLI::ValidationError("--out: not with bench map (its table goes to standard output)");
+  }
+  // The inputs first, then the outputs, before the benchmark runs.
+  if (what == "speed" || what == "all") io::require_bench_speed_inputs(options);
+  if (what != "map") {
+    // The folder is checked before the benchmark runs, not after.
+    OutputPlan plan;
+    plan.read_folder(options.designs_dir);
+    plan.read_folder(options.peers_dir);
+    plan.write_folder("--out", options.out_dir);
+  }
   if (what == "map") {
     std::cout << io::bench_maps(with_exe, std::cout);
     return kExitOk;

@@ -34,10 +34,10 @@ void CompareCommand::add_to(CLI::App& app) {
       ->check(finite_in(kMinRelTol, kMaxRelTol))
       ->capture_default_str();
   out.add_to(command);
-  command->add_option("--html", html,
-                      "Also write the comparison as one self-contained web page (a phone or a "
-                      "desktop browser opens it; no network needed); standard output then says "
-                      "only what was written, the text report going to --output when given");
+  add_output_option(command, "--html", html,
+                    "Also write the comparison as one self-contained web page (a phone or a "
+                    "desktop browser opens it; no network needed); standard output then says "
+                    "only what was written, the text report going to --output when given");
   command->footer(
       "Examples:\n"
       "  sweetspot compare racquet.json racquet-with-lead.json\n"
@@ -46,23 +46,30 @@ void CompareCommand::add_to(CLI::App& app) {
 }
 
 int CompareCommand::run() const {
-  require_distinct_outputs(html, out.output);
   int stdin_uses = 0;
   for (const std::string& path : design_paths) stdin_uses += path == "-";
   if (stdin_uses > 1)
     throw CLI::ValidationError("designs: standard input (-) can be read only once");
+  if (!html.empty() && out.output.empty() && command->count("--format")) {
+    throw CLI::ValidationError(
+        "--format: with --html, only with --output FILE (standard output then says only what "
+        "was written)");
+  }
+  OutputPlan plan;
+  for (const std::string& path : design_paths) plan.read(path);
+  if (html.empty() || !out.output.empty()) out.plan(plan);
+  if (!html.empty()) plan.write("--html", html);
   std::vector<reports::ComparedDesign> designs;
   const std::string level = command->count("--fidelity") ? fidelity : std::string();
   for (const std::string& path : design_paths) {
     designs.push_back(reports::compare_one(io::load_design(path), level, tolerance));
   }
-  if (html.empty()) {
-    out.emit(reports::comparison_report(designs, out.parsed()));
-    return kExitOk;
-  }
-  if (!out.output.empty()) out.emit(reports::comparison_report(designs, out.parsed()));
-  io::write_file_atomically(html, reports::comparison_html(designs));
-  std::cout << "wrote " << io::one_line(html) << "\n";
+  io::OutputSet outputs;
+  if (html.empty() || !out.output.empty())
+    out.emit(reports::comparison_report(designs, out.parsed()), outputs);
+  if (!html.empty()) outputs.write(html, reports::comparison_html(designs));
+  outputs.commit();
+  if (!html.empty()) say_written(html);
   return kExitOk;
 }
 

@@ -72,14 +72,17 @@ int run_batch(const EvaluateCommand& c) {
                     size > 0 ? static_cast<double>(bytes) / static_cast<double>(size) : -1.0);
   };
   io::BatchSummary summary;
+  io::OutputSet outputs;
   if (c.batch_path == "-") {
     // Through a file buffer, which reports a read error as one (std::cin's
     // buffer, shared with C stdio, would report the end of the input).
     std::ifstream in("/dev/stdin", std::ios::binary);
     std::istream& input = in ? in : std::cin;
-    c.out.emit_stream([&](std::ostream& out) {
-      summary = io::run_batch(input, "(standard input)", options, out);
-    });
+    c.out.emit_stream(
+        [&](std::ostream& out) {
+          summary = io::run_batch(input, "(standard input)", options, out);
+        },
+        outputs);
   } else {
     std::error_code error;
     if (std::filesystem::is_directory(c.batch_path, error)) {
@@ -94,9 +97,11 @@ int run_batch(const EvaluateCommand& c) {
                                (errno ? std::string(": ") + std::strerror(errno) : ""));
     }
     c.out.emit_stream(
-        [&](std::ostream& out) { summary = io::run_batch(in, c.batch_path, options, out); });
+        [&](std::ostream& out) { summary = io::run_batch(in, c.batch_path, options, out); },
+        outputs);
   }
   progress.finish();
+  outputs.commit();
   if (summary.failed > 0) {
     std::cerr << "sweetspot: " << summary.failed << " of " << summary.rows
               << " rows failed (see their error column)\n";
@@ -168,7 +173,7 @@ void EvaluateCommand::add_to(CLI::App& app) {
 }
 
 int EvaluateCommand::run() const {
-  for (const char* option : {"--map", "--sort", "--desc", "--top"}) {
+  for (const char* option : {"--base", "--threads", "--map", "--sort", "--desc", "--top"}) {
     if (batch_path.empty() && command->count(option)) {
       throw CLI::ValidationError(std::string(option) + ": only with --batch FILE");
     }
@@ -180,15 +185,27 @@ int EvaluateCommand::run() const {
   if (!batch_path.empty()) {
     if (!design_path.empty()) throw CLI::ValidationError("give a design file or --batch, not both");
     // Said, not ignored: a catalogue is written in SI only.
+    if (command->count("--format") && out.parsed() == io::Format::kMarkdown) {
+      throw CLI::ValidationError(
+          "--format md: not with --batch (a catalogue is written as csv or json)");
+    }
     if (units == "people") {
       throw CLI::ValidationError(
           "--units people: not with --batch (a catalogue's rows are in SI units, one column "
           "per output as `evaluate --format csv` names it)");
     }
+    OutputPlan plan;
+    plan.read(batch_path);
+    plan.read(batch_base);
+    if (batch_map.find('=') == std::string::npos) plan.read(batch_map);
+    out.plan(plan);
     return run_batch(*this);
   }
   if (design_path.empty())
     throw CLI::ValidationError("design: a design file (or --batch FILE) is required");
+  OutputPlan plan;
+  plan.read(design_path);
+  out.plan(plan);
   // A design without an impact has the default of its kind (the reader's).
   const io::DesignFile design = io::load_design(design_path);
   // The command line's --fidelity wins over the file's "fidelity".
@@ -199,7 +216,9 @@ int EvaluateCommand::run() const {
     answer =
         reports::sweet_spot_paragraph(design, reports::find_sweet_spots(design, result, tolerance));
   }
-  out.emit(io::evaluation_report(design, result, out.parsed(), answer, units == "people"));
+  io::OutputSet outputs;
+  out.emit(io::evaluation_report(design, result, out.parsed(), answer, units == "people"), outputs);
+  outputs.commit();
   return kExitOk;
 }
 

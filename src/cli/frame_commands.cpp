@@ -27,6 +27,11 @@ std::vector<double> points(const std::string& option, const std::vector<std::str
   return all;
 }
 
+// The plot of the observation point `x_m` m from the butt: FILE-at-<cm>cm.png.
+std::string plot_png(const std::string& plot, double x_m) {
+  return plot_file(plot, fmt::format("-at-{:g}cm", x_m * 100));
+}
+
 }  // namespace
 
 void ModesCommand::add_to(CLI::App& app) {
@@ -44,17 +49,27 @@ void ModesCommand::add_to(CLI::App& app) {
   command->add_option("--method", method, "Free modes: exact (transfer matrices) or fe")
       ->check(CLI::IsMember({"exact", "fe"}))
       ->capture_default_str();
-  command->add_option("--plot", plot, "Also render the mode shapes to this PNG file");
+  add_output_option(command, "--plot", plot, "Also render the mode shapes to this PNG file");
   out.add_to(command);
 }
 
 int ModesCommand::run() const {
+  OutputPlan plan;
+  plan.read(design_path);
+  out.plan(plan);
+  if (!plot.empty()) plan.write("--plot", plot);
   const io::DesignFile design = io::load_design(design_path);
   const auto data = io::compute_modes(
       design, modes, tolerance,
       method == "fe" ? ModeOptions::Method::kFiniteElement : ModeOptions::Method::kExact);
-  out.emit(io::modes_report(data, out.parsed()));
-  return plot.empty() ? kExitOk : render_or_warn(io::modes_plot(data), plot);
+  io::OutputSet outputs;
+  out.emit(io::modes_report(data, out.parsed()), outputs);
+  if (!plot.empty()) {
+    if (const int failed = render_or_warn(io::modes_plot(data), plot, outputs); failed != kExitOk)
+      return failed;
+  }
+  outputs.commit();
+  return kExitOk;
 }
 
 void ResponseCommand::add_to(CLI::App& app) {
@@ -84,8 +99,9 @@ void ResponseCommand::add_to(CLI::App& app) {
   command->add_option("--until-ms", until_ms, "Time window after the impact starts")
       ->check(finite_in(0.01, 1000.0))
       ->capture_default_str();
-  command->add_option("--output,-o", csv_path, "Write the CSV to FILE instead of stdout");
-  command->add_option("--plot", plot, "Also plot: FILE-at-<cm>cm.png per observation point");
+  add_output_option(command, "--output,-o", csv_path,
+                    "Write the CSV to FILE instead of stdout (- for stdout)");
+  add_output_option(command, "--plot", plot, "Also plot: FILE-at-<cm>cm.png per observation point");
 }
 
 int ResponseCommand::run() const {
@@ -100,20 +116,31 @@ int ResponseCommand::run() const {
       }
     }
   }
+  OutputPlan plan;
+  plan.read(design_path);
+  OutputOptions{"csv", csv_path}.plan(plan);
+  if (!plot.empty()) {
+    require_plot_stem("--plot", plot);
+    for (const double x : at) plan.write("--plot", plot_png(plot, x));
+  }
   io::ResponseRequest request;
   request.points_from_butt_m = at;
   request.impacts_from_butt_m = impacts;
   request.hand_held = held;
   request.until_s = until_ms / 1e3;
   const auto data = io::compute_response(design, request);
-  OutputOptions{"csv", csv_path}.emit(io::response_csv(data));
-  if (plot.empty()) return kExitOk;
-  const auto plots = io::response_plots(data);
-  for (std::size_t k = 0; k < plots.size(); ++k) {
-    // The first plot that cannot be written ends the run: one message, exit 1.
-    const std::string png = plot_file(plot, fmt::format("-at-{:g}cm", at[k] * 100));
-    if (const int failed = render_or_warn(plots[k], png); failed != kExitOk) return failed;
+  io::OutputSet outputs;
+  OutputOptions{"csv", csv_path}.emit(io::response_csv(data), outputs);
+  if (!plot.empty()) {
+    const auto plots = io::response_plots(data);
+    for (std::size_t k = 0; k < plots.size(); ++k) {
+      // The first plot that cannot be made ends the run: one message, exit 1, nothing written.
+      if (const int failed = render_or_warn(plots[k], plot_png(plot, at[k]), outputs);
+          failed != kExitOk)
+        return failed;
+    }
   }
+  outputs.commit();
   return kExitOk;
 }
 

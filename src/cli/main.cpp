@@ -2,8 +2,9 @@
 // each calling the library; here only their registration and the one place
 // where errors become a line on stderr and an exit status: 0 success, 1 a
 // run-time failure (cannot write a file), 2 bad input or bad usage. An
-// interrupted run (SIGINT, SIGTERM, SIGHUP, SIGPIPE) removes its temporary
-// files and ends by the signal.
+// interrupted run (any catchable signal that ends a process:
+// io::remove_temporaries_on_signals()) removes its temporary files and ends
+// by the signal.
 
 #include <CLI/CLI.hpp>
 #include <iostream>
@@ -115,6 +116,20 @@ int main(int argc, char** argv) {
     }
     std::cerr << "sweetspot: " << sweetspot::io::one_line(e.what()) << " (see --help)\n";
     return kExitBadInput;
+  }
+
+  // An option given an empty value ("-o ''", "--map ''") is refused, never
+  // taken as not given.
+  for (const CLI::App* command : app.get_subcommands()) {
+    for (const CLI::Option* option : command->get_options()) {
+      if (option->get_type_size() == 0 || option->count() == 0) continue;
+      for (const std::string& value : option->results()) {
+        if (value.empty()) {
+          std::cerr << "sweetspot: " << option->get_name() << ": an empty value (see --help)\n";
+          return kExitBadInput;
+        }
+      }
+    }
   }
 
   int status = kExitOk;

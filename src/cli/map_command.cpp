@@ -44,8 +44,8 @@ void MapCommand::add_to(CLI::App& app) {
                    "Threads to share the grid's columns (default: all cores); the map is the same")
       ->check(CLI::Range(1, 1024));
   command->add_flag("--quiet,-q", quiet, "No progress on standard error");
-  command->add_option("--plot", plot,
-                      "Also render heat maps: FILE-power.png, FILE-shock.png (and FILE-feel.png)");
+  add_output_option(command, "--plot", plot,
+                    "Also render heat maps: FILE-power.png, FILE-shock.png (and FILE-feel.png)");
   out.add_to(command, {"csv"});
   command->footer(
       "Examples:\n"
@@ -54,6 +54,16 @@ void MapCommand::add_to(CLI::App& app) {
 }
 
 int MapCommand::run() const {
+  OutputPlan plan;
+  plan.read(design_path);
+  out.plan(plan);
+  if (!plot.empty()) {
+    require_plot_stem("--plot", plot);
+    // Every heat map the map may have (feel only with the frame's stiffness).
+    for (const io::MapQuantity quantity :
+         {io::MapQuantity::kPower, io::MapQuantity::kShock, io::MapQuantity::kFeel})
+      plan.write("--plot", plot_file(plot, "-" + io::map_quantity_name(quantity)));
+  }
   const io::DesignFile design = io::load_design(design_path);
   io::StringBedMapOptions options;
   options.columns = columns;
@@ -72,17 +82,18 @@ int MapCommand::run() const {
   }
   progress.finish();
   const double length_m = design.design.implement.length_m();
-  out.emit(io::string_bed_map_csv(map, length_m));
-  if (plot.empty()) return kExitOk;
-  for (const io::MapQuantity quantity : io::map_quantities(map)) {
-    const std::string png = plot_file(plot, "-" + io::map_quantity_name(quantity));
-    std::string why;
-    if (!io::render_script_png(io::string_bed_heat_map_script(map, quantity, length_m, design.name),
-                               png, &why)) {
-      std::cerr << "sweetspot: cannot write " << io::one_line(png) << ": " << why << "\n";
-      return kExitRuntimeError;
+  io::OutputSet outputs;
+  out.emit(io::string_bed_map_csv(map, length_m), outputs);
+  if (!plot.empty()) {
+    for (const io::MapQuantity quantity : io::map_quantities(map)) {
+      const std::string png = plot_file(plot, "-" + io::map_quantity_name(quantity));
+      if (const int failed = render_script_or_warn(
+              io::string_bed_heat_map_script(map, quantity, length_m, design.name), png, outputs);
+          failed != kExitOk)
+        return failed;
     }
   }
+  outputs.commit();
   return kExitOk;
 }
 

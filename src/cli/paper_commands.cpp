@@ -41,7 +41,12 @@ std::string shipped(const std::string& path, const std::string& option, bool giv
 
 int Table1Command::run() const {
   const std::string folder = shipped(dir, "--dir", command->count("--dir") > 0);
-  out.emit(io::table1_report(io::compute_table1(folder), out.parsed()));
+  OutputPlan plan;
+  plan.read_folder(folder);
+  out.plan(plan);
+  io::OutputSet outputs;
+  out.emit(io::table1_report(io::compute_table1(folder), out.parsed()), outputs);
+  outputs.commit();
   return kExitOk;
 }
 
@@ -49,17 +54,28 @@ void FigureCommand::add_to(CLI::App& app) {
   command = app.add_subcommand("figure", "Data (CSV) and plot (PNG) of Fig. 5 or Fig. 11");
   command->add_option("number", number, "5 or 11")->required()->check(CLI::IsMember({5, 11}));
   command->add_option("--design", design, "The beam")->capture_default_str();
-  command->add_option("--output,-o", csv_path, "Write the CSV to FILE instead of stdout");
-  command->add_option("--plot", png, "Also render the plot to this PNG file");
+  add_output_option(command, "--output,-o", csv_path,
+                    "Write the CSV to FILE instead of stdout (- for stdout)");
+  add_output_option(command, "--plot", png, "Also render the plot to this PNG file");
 }
 
 int FigureCommand::run() const {
-  const io::DesignFile beam =
-      io::load_design(shipped(design, "--design", command->count("--design") > 0));
+  const std::string beam_path = shipped(design, "--design", command->count("--design") > 0);
+  OutputPlan plan;
+  plan.read(beam_path);
+  OutputOptions{"csv", csv_path}.plan(plan);
+  if (!png.empty()) plan.write("--plot", png);
+  const io::DesignFile beam = io::load_design(beam_path);
   const io::Figure data = number == 5 ? io::figure5(beam) : io::figure11(beam);
-  OutputOptions{"csv", csv_path}.emit(data.csv);
+  io::OutputSet outputs;
+  OutputOptions{"csv", csv_path}.emit(data.csv, outputs);
+  if (!png.empty()) {
+    if (const int failed = render_or_warn(data.plot, png, outputs); failed != kExitOk)
+      return failed;
+  }
+  outputs.commit();
   std::cerr << data.summary << "\n";
-  return png.empty() ? kExitOk : render_or_warn(data.plot, png);
+  return kExitOk;
 }
 
 void ReportCommand::add_to(CLI::App& app) {
@@ -68,18 +84,30 @@ void ReportCommand::add_to(CLI::App& app) {
                                "shipped studies into a folder");
   command->add_option("--designs", designs, "Folder holding table1/ and paper-beam.json")
       ->capture_default_str();
-  command->add_option("--out", out_dir, "Folder to write")->capture_default_str();
+  add_output_folder_option(command, "--out", out_dir, "Folder to write")->capture_default_str();
   command->add_option("design", design,
                       "A design file: write its report as one HTML page (with --html) instead");
-  command->add_option("--html", html,
-                      "With a design: the self-contained HTML page to write (a phone or a "
-                      "desktop browser opens it; no network needed)");
+  add_output_option(command, "--html", html,
+                    "With a design: the self-contained HTML page to write (a phone or a "
+                    "desktop browser opens it; no network needed)");
 }
 
 int ReportCommand::run() const {
   if (design.empty() && html.empty()) {
-    io::write_reports(designs, out_dir, std::cout);
+    OutputPlan plan;
+    plan.read_folder(designs);
+    plan.write_folder("--out", out_dir);
+    // Each file is checked again once its name is known, before any is written.
+    io::write_reports(designs, out_dir, std::cout,
+                      [&plan](const std::string& file) { plan.write("--out", file, true); });
     return kExitOk;
+  }
+  for (const char* option : {"--designs", "--out"}) {
+    if (command->count(option)) {
+      throw CLI::ValidationError(std::string(option) +
+                                 ": only for the reports folder (sweetspot report), not with a "
+                                 "design's page (DESIGN.json --html FILE)");
+    }
   }
   if (design.empty()) {
     std::cerr << "sweetspot: report --html: needs a design file (sweetspot report DESIGN.json "
@@ -91,10 +119,13 @@ int ReportCommand::run() const {
               << ": a design's report is a web page: give --html FILE\n";
     return kExitBadInput;
   }
+  OutputPlan plan;
+  plan.read(design);
+  plan.write("--html", html);
   const io::DesignFile file = io::load_design(design);
   const io::Json document = io::read_json_file(design);
   io::write_file_atomically(html, io::design_html_report(file, document));
-  std::cout << "wrote " << io::one_line(html) << "\n";
+  say_written(html);
   return kExitOk;
 }
 

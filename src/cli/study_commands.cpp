@@ -27,13 +27,13 @@ void OptimizeCommand::add_to(CLI::App& app) {
   command = app.add_subcommand(
       "optimize", "Search a study's variables for the best design under its constraints (NLopt)");
   command->add_option("study", study_path, "Study file (JSON)")->required();
-  command->add_option("--plot", plot, "Also render the convergence plot to this PNG file");
+  add_output_option(command, "--plot", plot, "Also render the convergence plot to this PNG file");
   out.add_to(command);
-  command->add_option("--html", html,
-                      "Also write the report as one self-contained web page (a phone or a desktop "
-                      "browser opens it; no network needed), when the study has an optimum; "
-                      "standard output then says only what was written, the text report going to "
-                      "--output when given");
+  add_output_option(command, "--html", html,
+                    "Also write the report as one self-contained web page (a phone or a desktop "
+                    "browser opens it; no network needed), when the study has an optimum; "
+                    "standard output then says only what was written, the text report going to "
+                    "--output when given");
   threads = io::all_cores();
   command
       ->add_option("--threads", threads,
@@ -49,8 +49,13 @@ void OptimizeCommand::add_to(CLI::App& app) {
 }
 
 int OptimizeCommand::run() const {
-  require_distinct_outputs(html, out.output);
   io::Study study = io::load_study(study_path);
+  OutputPlan plan;
+  plan.read(study_path);
+  plan.read(study.design_source);
+  if (html.empty() || !out.output.empty()) out.plan(plan);
+  if (!html.empty()) plan.write("--html", html);
+  if (!plot.empty()) plan.write("--plot", plot);
   study.options.threads = threads;
   const io::OptimizationResult result = io::run_optimization(study);
   // The report is complete whatever the outcome: an infeasible study's names
@@ -63,12 +68,12 @@ int OptimizeCommand::run() const {
   const bool consistent = result.inconsistency.empty();
   const bool optimum = result.outcome == io::Outcome::kOptimum && consistent;
   const std::string report = io::optimization_report(study, result, out.parsed(), true);
+  io::OutputSet outputs;
   if (optimum && !html.empty()) {
-    if (!out.output.empty()) out.emit(report);
-    io::write_file_atomically(html, io::optimization_html(study, result));
-    std::cout << "wrote " << io::one_line(html) << "\n";
+    if (!out.output.empty()) out.emit(report, outputs);
+    outputs.write(html, io::optimization_html(study, result));
   } else if (optimum) {
-    out.emit(report);
+    out.emit(report, outputs);
   } else {
     std::cout << report;
   }
@@ -76,8 +81,10 @@ int OptimizeCommand::run() const {
     std::cerr << result.summary.brief_report() << "\n";
   }
   const int plotted =
-      plot.empty() ? kExitOk : render_or_warn(io::convergence_plot(study, result), plot);
+      plot.empty() ? kExitOk : render_or_warn(io::convergence_plot(study, result), plot, outputs);
   if (plotted != kExitOk) return plotted;  // a file that could not be written comes first
+  outputs.commit();
+  if (optimum && !html.empty()) say_written(html);
   const std::string where = out.output.empty() && html.empty()
                                 ? std::string("the report gives")
                                 : "the report on standard output gives";
@@ -173,6 +180,13 @@ class JsonLinesFromCsv : public std::streambuf {
   std::vector<std::string> header_;
 };
 
+// The plot of the sweep's k-th output: FILE, or FILE-<output>.png for several.
+std::string sweep_png(const io::Study& study, const std::string& plot, std::size_t k) {
+  return study.sweep_outputs.size() > 1
+             ? plot_file(plot, "-" + std::string(study.sweep_outputs[k]->name))
+             : plot;
+}
+
 }  // namespace
 
 void SweepCommand::add_to(CLI::App& app) {
@@ -182,10 +196,10 @@ void SweepCommand::add_to(CLI::App& app) {
   threads = io::all_cores();
   command->add_option("study", study_path, "Study file (JSON) with variables, grid and outputs")
       ->required();
-  command->add_option("--output,-o", csv_path,
-                      "Write the CSV to FILE (atomically) instead of stdout");
-  command->add_option("--plot", plot,
-                      "Also render plots: FILE.png, or FILE-<output>.png for several outputs");
+  add_output_option(command, "--output,-o", csv_path,
+                    "Write the CSV to FILE (atomically) instead of stdout (- for stdout)");
+  add_output_option(command, "--plot", plot,
+                    "Also render plots: FILE.png, or FILE-<output>.png for several outputs");
   command
       ->add_option("--format", format,
                    "csv (streamed in grid order), or json: JSON Lines, one object per grid point "
@@ -202,6 +216,15 @@ void SweepCommand::add_to(CLI::App& app) {
 
 int SweepCommand::run() const {
   const io::Study study = io::load_study(study_path);
+  OutputPlan plan;
+  plan.read(study_path);
+  plan.read(study.design_source);
+  OutputOptions{"csv", csv_path}.plan(plan);
+  if (!plot.empty()) {
+    if (study.sweep_outputs.size() > 1) require_plot_stem("--plot", plot);
+    for (std::size_t k = 0; k < study.sweep_outputs.size(); ++k)
+      plan.write("--plot", sweep_png(study, plot, k));
+  }
   const io::SweepOptions options{threads};
   Progress shown("designs", !quiet);
   const auto progress = [&](std::size_t done, std::size_t total) {
@@ -209,27 +232,31 @@ int SweepCommand::run() const {
     if (done == total) shown.finish();
   };
   std::vector<io::Plot> plots;
-  OutputOptions{"csv", csv_path}.emit_stream([&](std::ostream& out) {
-    if (format == "json") {
-      JsonLinesFromCsv json(out);
-      std::ostream csv(&json);
-      plots = io::run_sweep(study, csv, progress, options);
-      csv.flush();
-    } else {
-      plots = io::run_sweep(study, out, progress, options);
-    }
-  });
-  if (plot.empty()) return kExitOk;
-  if (plots.empty()) {
+  io::OutputSet outputs;
+  OutputOptions{"csv", csv_path}.emit_stream(
+      [&](std::ostream& out) {
+        if (format == "json") {
+          JsonLinesFromCsv json(out);
+          std::ostream csv(&json);
+          plots = io::run_sweep(study, csv, progress, options);
+          csv.flush();
+        } else {
+          plots = io::run_sweep(study, out, progress, options);
+        }
+      },
+      outputs);
+  if (!plot.empty() && plots.empty()) {
     std::cerr << "sweetspot: no plot: the grid has more than " << io::kMaxPlotPoints << " points\n";
-    return kExitOk;
   }
-  for (std::size_t k = 0; k < plots.size(); ++k) {
-    const std::string png =
-        plots.size() > 1 ? plot_file(plot, "-" + std::string(study.sweep_outputs[k]->name)) : plot;
-    // The first plot that cannot be written ends the run: one message, exit 1.
-    if (const int failed = render_or_warn(plots[k], png); failed != kExitOk) return failed;
+  if (!plot.empty()) {
+    for (std::size_t k = 0; k < plots.size(); ++k) {
+      // The first plot that cannot be made ends the run: one message, exit 1, nothing written.
+      if (const int failed = render_or_warn(plots[k], sweep_png(study, plot, k), outputs);
+          failed != kExitOk)
+        return failed;
+    }
   }
+  outputs.commit();
   return kExitOk;
 }
 

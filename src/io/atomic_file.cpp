@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <memory>
 #include <streambuf>
 #include <vector>
 
@@ -22,7 +23,7 @@ namespace {
 // handler can only reach global state, and only through lock-free atomics and
 // async-signal-safe calls: a fixed table of paths, each slot claimed (1) while
 // its path is copied in and live (2) while the file may exist.
-constexpr int kTemporarySlots = 64;
+constexpr int kTemporarySlots = 256;
 struct TemporarySlot {
   std::atomic<int> state{0};
   std::array<char, PATH_MAX> path{};
@@ -93,7 +94,7 @@ std::string name_of(const std::string& path) {
 // names: written through a duplicate, as a shell does, so that an output
 // redirected with >> is appended to and never truncated or replaced.
 std::optional<int> descriptor_named(const std::string& path) {
-  if (path == "/dev/stdout") return 1;
+  if (path == "-" || path == "/dev/stdout") return 1;
   if (path == "/dev/stderr") return 2;
   for (const std::string_view prefix : {"/dev/fd/", "/proc/self/fd/"}) {
     if (path.size() <= prefix.size() || path.compare(0, prefix.size(), prefix) != 0) continue;
@@ -290,18 +291,78 @@ void write_stream_atomically(const std::string& path,
   file.commit();
 }
 
+void OutputSet::write(const std::string& path, std::string_view content) {
+  files_.push_back(std::make_unique<OutputFile>(path));
+  files_.back()->write(content);
+}
+
+void OutputSet::write_stream(const std::string& path,
+                             const std::function<void(std::ostream&)>& write) {
+  files_.push_back(std::make_unique<OutputFile>(path));
+  OutputBuffer buffer(*files_.back());
+  std::ostream stream(&buffer);
+  stream.exceptions(std::ios::badbit);
+  write(stream);
+  buffer.flush_all();
+  if (stream.fail()) throw WriteError(path, "the output stream failed");
+}
+
+void OutputSet::commit() {
+  for (const auto& file : files_) file->commit();
+  files_.clear();
+}
+
+void write_files_atomically(const std::vector<std::pair<std::string, std::string>>& files) {
+  std::vector<std::string> made;  // folders made here, outermost first
+  try {
+    OutputSet outputs;
+    for (const auto& [path, content] : files) {
+      std::vector<std::string> missing;
+      for (std::string folder = directory_of(path); folder != "." && folder != "/";
+           folder = directory_of(folder)) {
+        struct stat info {};
+        if (::stat(folder.c_str(), &info) == 0) break;
+        missing.push_back(folder);
+      }
+      for (auto it = missing.rbegin(); it != missing.rend(); ++it) {
+        if (::mkdir(it->c_str(), 0777) != 0 && errno != EEXIST)
+          throw WriteError(path, errno_text(errno));
+        made.push_back(*it);
+      }
+      outputs.write(path, content);
+    }
+    outputs.commit();
+  } catch (...) {
+    for (auto it = made.rbegin(); it != made.rend(); ++it) ::rmdir(it->c_str());
+    throw;
+  }
+}
+
 void remove_temporaries_on_signals() {
-  for (const int signal_number : {SIGINT, SIGTERM, SIGHUP, SIGPIPE}) {
+  // Every signal whose default action ends the process and that can be
+  // caught. The faults come last and are taken only when nobody (a
+  // sanitizer, a debugger's preload) handles them already.
+  constexpr int kEnding[] = {SIGINT,  SIGTERM, SIGHUP,    SIGQUIT, SIGALRM, SIGUSR1, SIGUSR2,
+                             SIGXCPU, SIGPIPE, SIGVTALRM, SIGPROF, SIGPOLL, SIGPWR,  SIGSTKFLT};
+  constexpr int kFaults[] = {SIGABRT, SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGSYS, SIGTRAP};
+  const auto install = [](int signal_number, bool only_default) {
     struct sigaction current {};
-    if (::sigaction(signal_number, nullptr, &current) != 0) continue;
+    if (::sigaction(signal_number, nullptr, &current) != 0) return;
+    const bool plain = !(current.sa_flags & SA_SIGINFO);
     // A signal ignored by whoever started us (nohup) stays ignored.
-    if (!(current.sa_flags & SA_SIGINFO) && current.sa_handler == SIG_IGN) continue;
+    if (plain && current.sa_handler == SIG_IGN) return;
+    if (only_default && !(plain && current.sa_handler == SIG_DFL)) return;
     struct sigaction action {};
     action.sa_handler = remove_temporaries_and_reraise;
     sigemptyset(&action.sa_mask);
     action.sa_flags = SA_RESETHAND | SA_NODEFER;
     ::sigaction(signal_number, &action, nullptr);
-  }
+  };
+  for (const int signal_number : kEnding) install(signal_number, false);
+  for (const int signal_number : kFaults) install(signal_number, true);
+  // A file grown past `ulimit -f` is a write error (EFBIG), reported and
+  // cleaned like a full disk, not a death that leaves the temporary behind.
+  ::signal(SIGXFSZ, SIG_IGN);
 }
 
 std::string scratch_directory() {

@@ -4,17 +4,19 @@
 // symbolic links: the link stays a link) is written to a temporary file in
 // its directory and renamed over it when complete, so readers see the old
 // file or the whole new one and a failed or interrupted run leaves the old
-// one untouched. Anything else that exists (a device, a FIFO, /dev/stdout)
-// is written directly, and its write errors are reported. A new file gets
-// 0666 less the umask; a replaced file keeps its mode and, where allowed,
-// its owner.
+// one untouched. Anything else that exists (a device, a FIFO, /dev/stdout;
+// "-" names standard output) is written directly, and its write errors are reported. A new file
+// gets 0666 less the umask; a replaced file keeps its mode and, where allowed, its owner.
 
 #include <functional>
+#include <memory>
 #include <optional>
 #include <ostream>
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 namespace sweetspot::io {
 
@@ -96,10 +98,38 @@ void write_file_atomically(const std::string& path, std::string_view content);
 void write_stream_atomically(const std::string& path,
                              const std::function<void(std::ostream&)>& write);
 
-// Installs handlers for SIGINT, SIGTERM, SIGHUP and SIGPIPE (those not
-// ignored) that remove every temporary file in progress and then re-raise
-// the signal with its default action, so that the exit status is the
-// signal's. Call once from main().
+// A command's outputs, written all or none: each file is written to its
+// temporary file as it is added (a device, a FIFO or standard output is
+// written directly, at once) and commit() renames them all into place, so
+// that a failure before commit() (a plot gnuplot cannot draw, a full disk)
+// leaves every file as it was. Throws WriteError.
+class OutputSet {
+ public:
+  void write(const std::string& path, std::string_view content);
+  // `write` fills the output (as write_stream_atomically()).
+  void write_stream(const std::string& path, const std::function<void(std::ostream&)>& write);
+  // Replaces every target, in the order added.
+  void commit();
+
+ private:
+  std::vector<std::unique_ptr<OutputFile>> files_;
+};
+
+// Several files written all or none (a folder of reports) through an
+// OutputSet, their folders made as needed; if any cannot be written, none is
+// replaced and the folders made for them are removed again. Throws WriteError.
+void write_files_atomically(const std::vector<std::pair<std::string, std::string>>& files);
+
+// Installs handlers for every catchable signal whose default action ends the
+// process (SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGALRM, SIGUSR1, SIGUSR2,
+// SIGXCPU, SIGPIPE, SIGVTALRM, SIGPROF, SIGPOLL, SIGPWR, SIGSTKFLT; those
+// ignored by whoever started us stay ignored; and SIGABRT, SIGSEGV, SIGBUS,
+// SIGFPE, SIGILL, SIGSYS, SIGTRAP when no one else handles them) that remove
+// every temporary file in progress and then re-raise the signal with its
+// default action, so that the exit status is the signal's. SIGXFSZ is
+// ignored, so that a file grown past `ulimit -f` fails its write with EFBIG
+// (an error with one line, exit 1) instead of killing the process. SIGKILL
+// and SIGSTOP cannot be caught. Call once from main().
 void remove_temporaries_on_signals();
 
 // The directory for scratch files (TMPDIR, else /tmp).

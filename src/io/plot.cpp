@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 #include <spawn.h>
 #include <sys/mman.h>
+#include <sys/resource.h>
 #include <sys/socket.h>
 #include <sys/stat.h>
 #include <sys/statvfs.h>
@@ -146,11 +147,19 @@ std::string png_problem(int fd) {
                         std::memcmp(head.data(), kSignature, sizeof kSignature) == 0 &&
                         std::memcmp(tail.data(), kEnd, sizeof kEnd) == 0;
   if (complete) return "";
+  // Why it was cut short: `ulimit -f` (gnuplot inherits SIGXFSZ ignored and
+  // stops at EFBIG), or a full file system (memory, for a memfd, which has
+  // no blocks to count).
+  struct rlimit limit {};
+  const bool too_large = ::getrlimit(RLIMIT_FSIZE, &limit) == 0 &&
+                         limit.rlim_cur != RLIM_INFINITY &&
+                         static_cast<rlim_t>(size) >= limit.rlim_cur;
   struct statvfs disk {};
-  const bool full = ::fstatvfs(fd, &disk) == 0 && disk.f_bavail == 0;
+  const bool full = ::fstatvfs(fd, &disk) == 0 && disk.f_blocks > 0 && disk.f_bavail == 0;
+  const int why = too_large ? EFBIG : full ? ENOSPC : 0;
   return (size == 0 ? std::string("gnuplot wrote nothing")
                     : "gnuplot wrote an incomplete PNG of " + std::to_string(size) + " bytes") +
-         (full ? ": " + std::string(std::strerror(ENOSPC)) : "");
+         (why ? ": " + std::string(std::strerror(why)) : "");
 }
 
 // Copies the whole of `from` into `to`.
@@ -433,6 +442,37 @@ bool render_script_png(const std::string& script, const std::string& png_path, s
     if (why) *why = e.what();
   }
   return false;
+}
+
+std::optional<std::string> render_png_bytes(const Plot& plot, std::string* why) {
+  return render_script_png_bytes(gnuplot_script(plot, ""), why);
+}
+
+std::optional<std::string> render_script_png_bytes(const std::string& script, std::string* why) {
+  try {
+    const int fd = ::memfd_create("sweetspot-png", MFD_CLOEXEC);
+    if (fd < 0) throw PlotFailure(std::string("cannot hold the plot: ") + std::strerror(errno));
+    struct Closer {
+      int fd;
+      ~Closer() { ::close(fd); }
+    } closer{fd};
+    run_gnuplot(script, fd);
+    const std::string problem = png_problem(fd);
+    if (!problem.empty()) throw PlotFailure(problem);
+    std::string png;
+    std::array<char, 1 << 16> buffer{};
+    for (off_t at = 0;;) {
+      const ssize_t n = ::pread(fd, buffer.data(), buffer.size(), at);
+      if (n < 0 && errno == EINTR) continue;
+      if (n < 0) throw PlotFailure(std::string("cannot read the plot: ") + std::strerror(errno));
+      if (n == 0) return png;
+      png.append(buffer.data(), static_cast<std::size_t>(n));
+      at += n;
+    }
+  } catch (const std::exception& e) {
+    if (why) *why = e.what();
+  }
+  return std::nullopt;
 }
 
 namespace {

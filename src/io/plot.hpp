@@ -101,6 +101,13 @@ bool render_png(const Plot& plot, const std::string& png_path, std::string* why)
 // (a heat map, say): rendered, checked and written like render_png().
 bool render_script_png(const std::string& script, const std::string& png_path, std::string* why);
 
+// `plot` rendered as PNG bytes, held in memory (for files written all or
+// none, io/atomic_file.hpp). std::nullopt, with why, when gnuplot is missing
+// or fails.
+std::optional<std::string> render_png_bytes(const Plot& plot, std::string* why);
+// The same for a script that sets a png terminal and no output (a heat map).
+std::optional<std::string> render_script_png_bytes(const std::string& script, std::string* why);
+
 // `text` as a gnuplot string that prints literally (quotes and enhanced-text
 // markup escaped), for scripts built outside this file.
 std::string gnuplot_label(const std::string& text);

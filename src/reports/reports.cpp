@@ -4,8 +4,10 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 #include "io/atomic_file.hpp"
 #include "io/input_error.hpp"
@@ -46,26 +48,26 @@ std::vector<fs::path> study_files(const std::string& designs_dir) {
 
 }  // namespace
 
-void write_reports(const std::string& designs_dir, const std::string& out_dir, std::ostream& log) {
+void write_reports(const std::string& designs_dir, const std::string& out_dir, std::ostream& log,
+                   const std::function<void(const std::string&)>& before_writing) {
   // Nothing is created before the inputs are known to be there.
   if (!fs::is_directory(designs_dir)) {
     throw InputError(designs_dir, "",
                      "not a folder of designs (expected table1/, paper-beam.json, studies/)");
   }
+  // Every file is held until all are made, then written all or none: a study
+  // that fails halfway leaves the folder as it was.
+  std::vector<std::pair<std::string, std::string>> files;
+  std::vector<std::string> skipped;
   const ReportWriter write{[&](const std::string& name, const std::string& content) {
-                             // Folders appear with their first file, so a run that fails early
-                             // leaves none behind.
-                             fs::create_directories(fs::path(out_dir + "/" + name).parent_path());
-                             write_file_atomically(out_dir + "/" + name, content);
-                             log << "wrote " << terminal_text(out_dir + "/" + name) << "\n";
+                             files.emplace_back(out_dir + "/" + name, content);
                            },
                            [&](const std::string& name, const Plot& plot) {
                              std::string why;
-                             if (render_png(plot, out_dir + "/" + name, &why)) {
-                               log << "wrote " << terminal_text(out_dir + "/" + name) << "\n";
+                             if (std::optional<std::string> png = render_png_bytes(plot, &why)) {
+                               files.emplace_back(out_dir + "/" + name, std::move(*png));
                              } else {
-                               log << "skipped " << terminal_text(out_dir + "/" + name + ": " + why)
-                                   << "\n";
+                               skipped.push_back(out_dir + "/" + name + ": " + why);
                              }
                            }};
 
@@ -145,6 +147,12 @@ void write_reports(const std::string& designs_dir, const std::string& out_dir, s
       "| files | what they show |\n|---|---|\n";
   for (const ReportEntry& e : entries) index += "| " + e.files + " | " + md_cell(e.says) + " |\n";
   write.text("README.md", index);
+  if (before_writing) {
+    for (const auto& file : files) before_writing(file.first);
+  }
+  write_files_atomically(files);
+  for (const auto& file : files) log << "wrote " << terminal_text(file.first) << "\n";
+  for (const std::string& file : skipped) log << "skipped " << terminal_text(file) << "\n";
   log << "\nSummary (index: " << terminal_text(out_dir + "/README.md") << "):\n";
   for (const ReportEntry& e : entries) log << "- " << terminal_text(e.says) << "\n";
 }

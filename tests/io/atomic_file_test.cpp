@@ -161,6 +161,43 @@ TEST_CASE("A device is written in place, and a full one is a write error naming 
   CHECK(folder.names() == std::set<std::string>{"null", "full"});
 }
 
+TEST_CASE("An output set writes all of its files or none") {
+  const Folder folder;
+  const std::string a = folder.file("a.csv", "old a\n");
+  const std::string b = folder.file("b.png", "old b\n");
+  {
+    // The second file cannot be made: the first, complete, is not put in place either.
+    OutputSet outputs;
+    outputs.write(a, "new a\n");
+    CHECK_THROWS_AS(outputs.write(folder.path("missing/c.png"), "c"), WriteError);
+  }
+  CHECK(slurp(a) == "old a\n");
+  {
+    OutputSet outputs;
+    outputs.write(a, "new a\n");
+    outputs.write_stream(b, [](std::ostream& out) { out << "new b\n"; });
+    CHECK(slurp(a) == "old a\n");  // nothing replaced before commit()
+    outputs.commit();
+  }
+  CHECK(slurp(a) == "new a\n");
+  CHECK(slurp(b) == "new b\n");
+  CHECK(folder.names() == std::set<std::string>{"a.csv", "b.png"});  // no temporary left
+}
+
+TEST_CASE("Files written all or none make their folders, and remove them when one fails") {
+  const Folder folder;
+  const std::string kept = folder.file("README.md", "old\n");
+  CHECK_THROWS_AS(write_files_atomically({{kept, "new\n"},
+                                          {folder.path("studies/one.md"), "one"},
+                                          {folder.path("README.md/x"), "not a folder"}}),
+                  WriteError);
+  CHECK(slurp(kept) == "old\n");
+  CHECK(folder.names() == std::set<std::string>{"README.md"});
+  write_files_atomically({{kept, "new\n"}, {folder.path("studies/deep/one.md"), "one"}});
+  CHECK(slurp(kept) == "new\n");
+  CHECK(slurp(folder.path("studies/deep/one.md")) == "one");
+}
+
 TEST_CASE("A directory, a missing folder and a failing writer leave everything as it was") {
   const Folder folder;
   fs::create_directories(folder.path("dir"));
