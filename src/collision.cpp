@@ -487,19 +487,23 @@ CollisionResult collide(const FrameAtImpact& frame, const std::optional<StringBe
        {&CollisionResult::contact_time_s, &CollisionResult::in_contact_s,
         &CollisionResult::impulse_N_s, &CollisionResult::ball_velocity_after_m_s,
         &CollisionResult::frame_velocity_after_m_s, &CollisionResult::implement_momentum_N_s,
-        &CollisionResult::apparent_cor, &CollisionResult::string_bed_energy_J,
-        &CollisionResult::ball_out_J, &CollisionResult::implement_rigid_J,
-        &CollisionResult::vibration_J, &CollisionResult::modal_damping_loss_J,
+        &CollisionResult::apparent_cor, &CollisionResult::ball_out_J,
+        &CollisionResult::implement_rigid_J, &CollisionResult::vibration_J,
         &CollisionResult::ball_loss_J, &CollisionResult::strings_loss_J}) {
     r.*field = extrapolated(coarse.*field, r.*field);
   }
-  // A mode's energy is >= 0 in every run; one near 0 (an impact near its node)
-  // whose h^2 term is larger than itself would extrapolate below 0: it keeps
-  // the fine run's value (the mode energies are reported, not summed in the ledger).
-  for (std::size_t k = 0; k < r.mode_energy_J.size(); ++k) {
-    const double e = extrapolated(coarse.mode_energy_J[k], r.mode_energy_J[k]);
-    if (e >= 0.0) r.mode_energy_J[k] = e;
-  }
+  // The parts of vibration_J (each mode, the string bed, the modal damping) are
+  // >= 0 in every run; one near 0 (an impact near a mode's node) whose h^2 term
+  // is larger than itself would extrapolate below 0: it keeps the fine run's
+  // value (the ledger sums vibration_J, extrapolated above, not its parts).
+  const auto keep_sign = [](double coarse_value, double& fine_value) {
+    const double e = extrapolated(coarse_value, fine_value);
+    if (e >= 0.0) fine_value = e;
+  };
+  keep_sign(coarse.string_bed_energy_J, r.string_bed_energy_J);
+  keep_sign(coarse.modal_damping_loss_J, r.modal_damping_loss_J);
+  for (std::size_t k = 0; k < r.mode_energy_J.size(); ++k)
+    keep_sign(coarse.mode_energy_J[k], r.mode_energy_J[k]);
   r.steps += coarse.steps;
   return r;
 }

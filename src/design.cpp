@@ -23,7 +23,7 @@ void validate(const Design& d) {
   detail::require_positive("ball/mass_kg", d.ball.mass_kg, "kg");
   detail::require_in_range("ball/mass_kg", d.ball.mass_kg, 0.0, kMaxMass_kg, "kg");
   detail::require_positive("ball/speed_m_s", d.ball.speed_m_s, "m/s");
-  detail::require_in_range("ball/speed_m_s", d.ball.speed_m_s, 0.0, kMaxSpeed_m_s, "m/s");
+  detail::require_in_range("ball/speed_m_s", d.ball.speed_m_s, kMinSpeed_m_s, kMaxSpeed_m_s, "m/s");
   detail::require_in_range("impact/from_butt_m", d.impact_from_butt_m, 0.0, L, "m");
   detail::require_positive("hand/grip_length_m", d.hand.grip_length_m, "m");
   detail::require_in_range("hand/grip_stiffness_N_m2", d.hand.grip_stiffness_N_m2, 0.0,

@@ -46,6 +46,7 @@ std::string first_not_finite(const Evaluation& e) {
       {"the COR", e.cor},
       {"the contact time", e.impact_duration_s},
       {"the vibration energy", e.vibration_energy_J.value_or(0.0)},
+      {"the vibration share", e.vibration_share.value_or(0.0)},
       {"the polar inertia", e.polar_inertia_kg_m2.value_or(0.0)},
   };
   for (const auto& [name, value] : values) {

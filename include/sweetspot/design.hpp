@@ -18,6 +18,10 @@ namespace sweetspot {
 // impact lasts between a microsecond and ten seconds.
 inline constexpr double kMaxForearmMass_kg = 1e12;
 inline constexpr double kMaxSpeed_m_s = 1e4;
+// A ball slower than 1 mm/s does not strike: its energy, ~1e-8 J, is below the
+// round-off of everything it is compared with (issue 20: 1e-300 mph made the
+// vibration share 0/0), and the solved contact would outlast max_time_s.
+inline constexpr double kMinSpeed_m_s = 1e-3;
 // A grip a million times stiffer (and its dashpot a hundred thousand times
 // stronger) than the calibrated hand: past these the hand is rigid for every
 // mode the model resolves.
@@ -82,8 +86,9 @@ struct FrameStiffness {
 };
 
 struct Ball {
-  double mass_kg = 0.057;   // [kg], > 0 (a tennis ball)
-  double speed_m_s = 50.0;  // incident speed relative to the impact point [m/s], > 0
+  double mass_kg = 0.057;  // [kg], > 0 (a tennis ball)
+  double speed_m_s =
+      50.0;  // incident speed relative to the impact point [m/s], in [kMinSpeed_m_s, kMaxSpeed_m_s]
 };
 
 struct Design {
@@ -102,7 +107,8 @@ struct Design {
   std::optional<StringBed> strings{};
   // The solved collision (Fidelity::kCollision, collision.hpp): the ball's
   // contact law and the string bed's moving mass [kg] (> 0) and damping ratio
-  // (in [0, 1)). Defaults: the calibrated tennis ball, 4 g and 0.008.
+  // (in [0, 1)), in [kMinStringBedMass_kg, kMaxStringBedMass_kg]. Defaults: the calibrated
+  // tennis ball, 4 g and 0.008.
   BallContactLaw ball_contact = kTennisBallLaw;
   double string_bed_mass_kg = kStringBedMass_kg;
   double string_bed_damping_ratio = kStringBedDampingRatio;

@@ -180,6 +180,8 @@ Evaluation evaluate_validated(const Design& design, Fidelity fidelity, double re
 // false, `e` untouched, where only evaluate() answers as it would: a COR or a
 // duration to derive (cor_rigid, a string tension), an impact off the long
 // axis, or a result that is not finite (evaluate() refuses it, saying why).
+// For a validated design the rigid model's invariants (Fidelity) follow from
+// Eqs. (15)-(17) once every number is finite, so this check is theirs.
 bool evaluate_rigid_outcome(const Design& design, Evaluation& e);
 
 // The rigid model without validation and with the design's cor and
