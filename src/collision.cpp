@@ -107,14 +107,19 @@ double solve_force(const Law& law, double x0, double u0, double a, double c, dou
 }  // namespace
 
 std::string BallContactLaw::validate() const {
-  if (!(stiffness > 0.0 && stiffness <= 1e15))
-    return "stiffness: must be in (0, 1e15], got " + detail::format_number(stiffness);
-  if (!(exponent >= 1.0 && exponent <= 3.0))
-    return "exponent: must be in [1, 3], got " + detail::format_number(exponent);
-  if (!(damping >= 0.0 && damping <= 1e12))
-    return "damping: must be in [0, 1e12], got " + detail::format_number(damping);
-  if (!(damping_exponent >= 0.0 && damping_exponent <= 3.0))
-    return "damping_exponent: must be in [0, 3], got " + detail::format_number(damping_exponent);
+  using detail::format_number;
+  if (!(stiffness > 0.0 && stiffness <= kMaxBallStiffness))
+    return "stiffness: must be in (0, " + format_number(kMaxBallStiffness) + "], got " +
+           format_number(stiffness);
+  if (!(exponent >= kMinBallExponent && exponent <= kMaxBallExponent))
+    return "exponent: must be in [" + format_number(kMinBallExponent) + ", " +
+           format_number(kMaxBallExponent) + "], got " + format_number(exponent);
+  if (!(damping >= 0.0 && damping <= kMaxBallDamping))
+    return "damping: must be in [0, " + format_number(kMaxBallDamping) + "], got " +
+           format_number(damping);
+  if (!(damping_exponent >= 0.0 && damping_exponent <= kMaxBallDampingExponent))
+    return "damping_exponent: must be in [0, " + format_number(kMaxBallDampingExponent) +
+           "], got " + format_number(damping_exponent);
   return {};
 }
 
@@ -203,6 +208,25 @@ CollisionResult integrate(const FrameAtImpact& frame,
   if (strings) k_lin = series_stiffness(k_lin, strings->stiffness_N_m);
   const double mu = m / (1.0 + m * frame.inverse_effective_mass_per_kg);
   const double t_est = kPi * std::sqrt(mu / k_lin);
+  // The fastest motions within the contact: the ball's own spring on what it
+  // touches first (the string bed's moving mass, or the frame's rigid body and
+  // modes at the impact point), at the compression that stops their relative
+  // motion, and the string bed's mass on its spring. A stiff ball (or stiff
+  // strings) makes these far shorter than the contact; the step resolves them
+  // with steps_per_contact / kFastShare steps per half-period, which never
+  // binds for the calibrated ball at any tension in the strings' range.
+  double frame_mobility = frame.inverse_effective_mass_per_kg;  // [1/kg], instantaneous
+  for (const ModeAtImpact& md : frame.modes) frame_mobility += md.phi * md.phi;
+  const double partner_mobility = strings ? 1.0 / strings->mass_kg : frame_mobility;
+  const double mu_ball = m / (1.0 + m * partner_mobility);
+  const double x_ball =
+      std::pow((law.n + 1.0) * mu_ball * v1 * v1 / (2.0 * law.k), 1.0 / (law.n + 1.0));
+  double t_fast = kPi * std::sqrt(mu_ball / (law.k * std::pow(x_ball, law.n - 1.0)));
+  if (strings) {
+    const double mu_bed = strings->mass_kg / (1.0 + strings->mass_kg * frame_mobility);
+    t_fast = std::min(t_fast, kPi * std::sqrt(mu_bed / strings->stiffness_N_m));
+  }
+  constexpr double kFastShare = 8.0;
   // The base step. From a contact's onset, where the force grows like
   // sqrt(t) (x^p x' with p = 1/2), the mesh is t_i = kOnset T (i/N)^2
   // (the force a smooth function of i) until it reaches the base step, then
@@ -213,7 +237,9 @@ CollisionResult integrate(const FrameAtImpact& frame,
   // steps are kFreeSteps times longer, and a new touch is approached
   // geometrically. (kOnset = 2 and kRefine = 1e-3 keep the default's COR and
   // its observed order; README, "the solved collision".)
-  const double h_base = t_est / options.steps_per_contact;
+  // The time the step resolves (the contact's, unless a faster motion binds).
+  const double t_res = std::min(t_est, kFastShare * t_fast);
+  const double h_base = t_res / options.steps_per_contact;
   // Forces below this are round-off for the force solve: 1e-9 of the mean force.
   const double force_floor = 1e-9 * m * v1 / t_est;
   constexpr double kOnset = 2.0, kRefine = 1e-3, kGrade = 0.5, kFreeSteps = 4.0;
@@ -316,15 +342,15 @@ CollisionResult integrate(const FrameAtImpact& frame,
       if (!in_contact && x == 0.0) contact_start = t;
       const double since = t - contact_start;
       // (The square roots only where they can shorten the step.)
-      if (kOnset * since < 0.25 * t_est)
+      if (kOnset * since < 0.25 * t_res)
         hh =
-            h_base * (2.0 * std::sqrt(kOnset * since / t_est) + kOnset / options.steps_per_contact);
+            h_base * (2.0 * std::sqrt(kOnset * since / t_res) + kOnset / options.steps_per_contact);
       if (x_dot < 0.0 || (f_prev > 0.0 && f_prev < f_prev2)) {
         double tau = x_dot < 0.0 ? x / -x_dot : std::numeric_limits<double>::infinity();
         if (f_prev > 0.0 && f_prev < f_prev2) tau = std::min(tau, f_prev * h / (f_prev2 - f_prev));
         if (f_prev > 0.0)
           hh = std::min({hh, kGrade * tau,
-                         tau < 0.25 * t_est ? 2.0 * h_base * std::sqrt(tau / t_est) : h_base});
+                         tau < 0.25 * t_res ? 2.0 * h_base * std::sqrt(tau / t_res) : h_base});
         else
           hh = std::min(hh, tau);  // no force: land on the separation
       }
@@ -454,20 +480,30 @@ CollisionResult collide(const FrameAtImpact& frame, const std::optional<StringBe
   o.steps_per_contact *= 2;
   o.record_history = options.record_history;
   CollisionResult r = integrate(frame, strings, ball_mass_kg, law, speed_m_s, o);
+  r.step_error = std::abs(r.apparent_cor - coarse.apparent_cor);
   // Only a smooth dependence on h extrapolates: the same number of contacts.
   if (coarse.contacts != r.contacts || coarse.separated != r.separated) return r;
   for (double CollisionResult::*field :
        {&CollisionResult::contact_time_s, &CollisionResult::in_contact_s,
         &CollisionResult::impulse_N_s, &CollisionResult::ball_velocity_after_m_s,
         &CollisionResult::frame_velocity_after_m_s, &CollisionResult::implement_momentum_N_s,
-        &CollisionResult::apparent_cor, &CollisionResult::string_bed_energy_J,
-        &CollisionResult::ball_out_J, &CollisionResult::implement_rigid_J,
-        &CollisionResult::vibration_J, &CollisionResult::modal_damping_loss_J,
+        &CollisionResult::apparent_cor, &CollisionResult::ball_out_J,
+        &CollisionResult::implement_rigid_J, &CollisionResult::vibration_J,
         &CollisionResult::ball_loss_J, &CollisionResult::strings_loss_J}) {
     r.*field = extrapolated(coarse.*field, r.*field);
   }
+  // The parts of vibration_J (each mode, the string bed, the modal damping) are
+  // >= 0 in every run; one near 0 (an impact near a mode's node) whose h^2 term
+  // is larger than itself would extrapolate below 0: it keeps the fine run's
+  // value (the ledger sums vibration_J, extrapolated above, not its parts).
+  const auto keep_sign = [](double coarse_value, double& fine_value) {
+    const double e = extrapolated(coarse_value, fine_value);
+    if (e >= 0.0) fine_value = e;
+  };
+  keep_sign(coarse.string_bed_energy_J, r.string_bed_energy_J);
+  keep_sign(coarse.modal_damping_loss_J, r.modal_damping_loss_J);
   for (std::size_t k = 0; k < r.mode_energy_J.size(); ++k)
-    r.mode_energy_J[k] = extrapolated(coarse.mode_energy_J[k], r.mode_energy_J[k]);
+    keep_sign(coarse.mode_energy_J[k], r.mode_energy_J[k]);
   r.steps += coarse.steps;
   return r;
 }

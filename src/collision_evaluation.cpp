@@ -10,6 +10,7 @@
 #include "sweetspot/collision.hpp"
 #include "sweetspot/frame_modes.hpp"
 #include "sweetspot/impact_response.hpp"
+#include "sweetspot/invariants.hpp"
 #include "sweetspot/rigid_impact.hpp"
 
 namespace sweetspot {
@@ -63,14 +64,39 @@ FrameAtImpact DesignCollision::frame_at(double from_butt_m, double off_axis_m) c
 CollisionResult DesignCollision::at(double from_butt_m, double off_axis_m,
                                     const CollisionOptions& options) const {
   const Design& design = design_;
-  CollisionResult r = collide(frame_at(from_butt_m, off_axis_m), bed_, design.ball.mass_kg,
-                              design.ball_contact, design.ball.speed_m_s, options);
-  if (!(r.contact_time_s >= kMinDuration_s && r.contact_time_s <= kMaxDuration_s) ||
-      !std::isfinite(r.apparent_cor)) {
-    throw std::invalid_argument("ball/contact: the solved contact lasts " +
-                                detail::format_number(r.contact_time_s) + " s, outside [" +
-                                detail::format_number(kMinDuration_s) + ", " +
-                                detail::format_number(kMaxDuration_s) + "] s");
+  const FrameAtImpact frame = frame_at(from_butt_m, off_axis_m);
+  CollisionResult r = collide(frame, bed_, design.ball.mass_kg, design.ball_contact,
+                              design.ball.speed_m_s, options);
+  const double f1 = model_.modes.empty() ? 0.0 : model_.modes.front().mode.frequency_Hz;
+  const auto refuse = [&](const Suspect& blame, const std::string& why) {
+    throw ModelRefusal(blame.field, blame.value,
+                       "the solved collision cannot answer this design (" + why + "); " +
+                           detail::format_number(blame.value) +
+                           " is the input furthest from the racquet it was verified on");
+  };
+  if (!r.separated) {
+    refuse(collision_suspect(design, f1), "the ball has not left the strings for good after " +
+                                              detail::format_number(options.max_time_s) +
+                                              " s and " + std::to_string(r.contacts) +
+                                              (r.contacts == 1 ? " contact" : " contacts"));
+  }
+  if (!(r.step_error <= kMaxStepError)) {
+    refuse(collision_suspect(design, f1),
+           "the step does not resolve the contact: the apparent COR changes by " +
+               detail::format_significant(r.step_error) + " when the step halves, more than " +
+               detail::format_number(kMaxStepError));
+  }
+  if (!(r.contact_time_s >= kMinDuration_s && r.contact_time_s <= kMaxDuration_s)) {
+    refuse(collision_suspect(design, f1),
+           "the contact lasts " + detail::format_significant(r.contact_time_s) + " s, outside [" +
+               detail::format_number(kMinDuration_s) + ", " +
+               detail::format_number(kMaxDuration_s) + "] s");
+  }
+  const double M_eff = 1.0 / frame.inverse_effective_mass_per_kg;
+  if (const std::string why =
+          broken_invariant(r, design.ball.mass_kg, M_eff, design.string_bed_mass_kg);
+      !why.empty()) {
+    refuse(collision_suspect(design, f1), why);
   }
   return r;
 }
@@ -109,18 +135,13 @@ Evaluation evaluate_collision(const Design& design, double rel_tol) {
   e.vibration_share = r.vibration_J / r.ball_in_J;
   if (!e.details) e.details.emplace();
   e.details->fidelity_note.clear();
-  if (!r.separated) {
-    e.details->fidelity_note = "the ball had not left for good after " +
-                               detail::format_number(collision_options.max_time_s) + " s (" +
-                               std::to_string(r.contacts) +
-                               " contacts); the outputs are those at the last separation";
-  }
   e.details->vibration_modes.clear();
   for (std::size_t k = 0; k < r.mode_energy_J.size(); ++k) {
     e.details->vibration_modes.emplace_back(collision.model().modes[k].mode.frequency_Hz,
                                             r.mode_energy_J[k]);
   }
   e.details->collision = std::move(r);
+  check_invariants(e, design);
   return e;
 }
 

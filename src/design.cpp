@@ -1,5 +1,8 @@
 #include "sweetspot/design.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -20,7 +23,7 @@ void validate(const Design& d) {
   detail::require_positive("ball/mass_kg", d.ball.mass_kg, "kg");
   detail::require_in_range("ball/mass_kg", d.ball.mass_kg, 0.0, kMaxMass_kg, "kg");
   detail::require_positive("ball/speed_m_s", d.ball.speed_m_s, "m/s");
-  detail::require_in_range("ball/speed_m_s", d.ball.speed_m_s, 0.0, kMaxSpeed_m_s, "m/s");
+  detail::require_in_range("ball/speed_m_s", d.ball.speed_m_s, kMinSpeed_m_s, kMaxSpeed_m_s, "m/s");
   detail::require_in_range("impact/from_butt_m", d.impact_from_butt_m, 0.0, L, "m");
   detail::require_positive("hand/grip_length_m", d.hand.grip_length_m, "m");
   detail::require_in_range("hand/grip_stiffness_N_m2", d.hand.grip_stiffness_N_m2, 0.0,
@@ -32,11 +35,14 @@ void validate(const Design& d) {
     if (const std::string why = d.strings->validate(); !why.empty()) {
       throw std::invalid_argument("strings/" + why);
     }
+    detail::require_in_range("strings/tension_N", d.strings->tension_N, kMinTension_N,
+                             kMaxTension_N, "N");
   }
   if (const std::string why = d.ball_contact.validate(); !why.empty()) {
     throw std::invalid_argument("ball/contact/" + why);
   }
-  detail::require_in_range("strings/bed_mass_kg", d.string_bed_mass_kg, 1e-9, kMaxMass_kg, "kg");
+  detail::require_in_range("strings/bed_mass_kg", d.string_bed_mass_kg, kMinStringBedMass_kg,
+                           kMaxStringBedMass_kg, "kg");
   if (!(d.string_bed_damping_ratio >= 0.0 && d.string_bed_damping_ratio < 1.0)) {
     detail::fail_in_range("strings/bed_damping_ratio", d.string_bed_damping_ratio, 0.0, 1.0, "");
   }
@@ -66,16 +72,50 @@ void validate(const Design& d) {
                              "m");
   }
   detail::require_in_range("impact/off_axis_m", d.impact_off_axis_m, -L, L, "m");
-  if (d.twistweight_kg_m2) {
-    detail::require_positive("implement/twistweight_kg_m2", *d.twistweight_kg_m2, "kg m^2");
-    detail::require_in_range("implement/twistweight_kg_m2", *d.twistweight_kg_m2, 0.0,
-                             kMaxMass_kg * kMaxLength_m * kMaxLength_m, "kg m^2");
-  }
+  std::optional<HeadEllipse> outline;  // the head to the hoop's outer edge
   if (d.head) {
     try {
-      (void)string_bed(*d.head, L);
+      outline = string_bed(*d.head, L);
     } catch (const std::invalid_argument& error) {
       throw std::invalid_argument("implement/" + std::string(error.what()));
+    }
+    outline->semi_length_m += d.head->hoop_width_m;
+    outline->semi_width_m += d.head->hoop_width_m;
+  }
+  const double half_width_m = outline ? outline->semi_width_m : kMaxHeadHalfWidth_m;
+  if (d.twistweight_kg_m2) {
+    // All the frame's mass at the head's edge: the largest polar inertia it can have.
+    const double frame_mass_kg = d.implement.frame_mass_properties().mass_kg;
+    const double most_kg_m2 = frame_mass_kg * half_width_m * half_width_m;
+    const double twistweight = *d.twistweight_kg_m2;
+    if (!(twistweight >= kMinTwistweight_kg_m2 && twistweight <= most_kg_m2)) {
+      throw std::invalid_argument(
+          "implement/twistweight_kg_m2: must be in [" +
+          detail::format_number(kMinTwistweight_kg_m2) + ", " +
+          detail::format_significant(most_kg_m2) + "] kg m^2 (at most the frame's " +
+          detail::format_significant(frame_mass_kg) + " kg all " +
+          detail::format_significant(half_width_m) + " m off the axis), got " +
+          detail::format_number(twistweight) + " kg m^2");
+    }
+  }
+  if (const double y = d.impact_off_axis_m; y != 0.0) {
+    const bool on_head = outline ? on_string_bed(*outline, d.impact_from_butt_m, y)
+                                 : std::abs(y) <= kMaxHeadHalfWidth_m;
+    if (!on_head) {
+      throw std::invalid_argument(
+          "impact/off_axis_m: must land on the head (" +
+          std::string(outline ? "inside the hoop's outer edge, " +
+                                    detail::format_significant(
+                                        outline->semi_width_m *
+                                        std::sqrt(std::max(
+                                            0.0, 1.0 - std::pow((d.impact_from_butt_m -
+                                                                 outline->center_from_butt_m) /
+                                                                    outline->semi_length_m,
+                                                                2)))) +
+                                    " m either side of the axis at this impact"
+                              : "within " + detail::format_number(kMaxHeadHalfWidth_m) +
+                                    " m of the axis, the widest head the rules allow") +
+          "), got " + detail::format_number(y) + " m");
     }
   }
   if (d.impact_off_axis_m != 0.0 && !d.twistweight_kg_m2 && !d.head) {

@@ -7,6 +7,7 @@
 #include "check.hpp"
 #include "collision_evaluation.hpp"
 #include "sweetspot/impact_response.hpp"
+#include "sweetspot/invariants.hpp"
 #include "sweetspot/rigid_impact.hpp"
 
 namespace sweetspot {
@@ -37,6 +38,7 @@ Evaluation evaluate_settled_valid(const Design& design) {
         "implement: the inputs are outside the range the model can represent "
         "(a result is not finite)");
   }
+  check_invariants(e, design);
   return e;
 }
 
@@ -164,6 +166,7 @@ Evaluation evaluate(const Design& design, Fidelity fidelity, double rel_tol) {
     const double v1 = resolved.ball.speed_m_s;
     e.vibration_share = *vibration_energy / (0.5 * resolved.ball.mass_kg * v1 * v1);
   }
+  check_invariants(e, resolved);
   return e;
 }
 
@@ -302,6 +305,7 @@ Evaluation ImpactSweep::at(double impact_from_butt_m, double off_axis_m) const {
   Evaluation e = base_;
   impact_part(design_, design_.implement.mass_properties(), system_, impact_from_butt_m, off_axis_m,
               e);
+  check_invariants(e, design_);
   return e;
 }
 

@@ -12,11 +12,19 @@ namespace sweetspot {
 //   F = k x^n + b x^p x'  for x > 0 (and never < 0), 0 otherwise.
 // p = n is the Hunt-Crossley law (F = k x^n (1 + c x'), c = b / k); p < n makes
 // the COR fall more slowly with speed than Hunt-Crossley's nearly linear fall.
+// The law's ranges (validate()); the solved collision resolves the stiffest
+// ball on the lightest string bed (collision.hpp: its step follows the ball's
+// own half-period) and was verified over the whole stiffness range.
+inline constexpr double kMaxBallStiffness = 1e15;  // [N / m^n]
+inline constexpr double kMinBallExponent = 1.0, kMaxBallExponent = 3.0;
+inline constexpr double kMaxBallDamping = 1e12;  // [N s / m^(p+1)]
+inline constexpr double kMaxBallDampingExponent = 3.0;
+
 struct BallContactLaw {
-  double stiffness = 0.0;         // k [N / m^n], in (0, 1e15]
-  double exponent = 1.0;          // n, in [1, 3]
-  double damping = 0.0;           // b [N s / m^(p+1)], in [0, 1e12]
-  double damping_exponent = 0.0;  // p, in [0, 3]
+  double stiffness = 0.0;         // k [N / m^n], in (0, kMaxBallStiffness]
+  double exponent = 1.0;          // n, in [kMinBallExponent, kMaxBallExponent]
+  double damping = 0.0;           // b [N s / m^(p+1)], in [0, kMaxBallDamping]
+  double damping_exponent = 0.0;  // p, in [0, kMaxBallDampingExponent]
 
   // Empty if consistent, otherwise the first problem, naming the field and value.
   std::string validate() const;

@@ -37,6 +37,20 @@
 // separation. On it the error is c h^2 + O(h^3), and two runs at h and h/2
 // are Richardson-extrapolated (CollisionOptions::extrapolate).
 // The outputs are taken at the last separation.
+// Time step: the contact's estimated duration (the ball's secant stiffness at
+// its peak compression in series with the strings, on the reduced mass with
+// M_eff) over steps_per_contact, or shorter where a faster motion inside the
+// contact binds: the ball's own spring on what it touches first (the string
+// bed's mass, or the frame's rigid body and modes) at the compression that
+// stops their relative motion, and the bed's mass on its spring, each given
+// steps_per_contact / 8 steps per half-period. A stiff ball (1e12 and up for
+// n = 1.5) is then resolved like a soft one instead of booking a negative ball
+// loss to close the ledger.
+// Invariants (checked by DesignCollision::at(), invariants.hpp): every ledger
+// term >= 0 and the ledger closing to kInvariantRoundOff of E_in; the impulse
+// and the contact time > 0; e_A within the rigid-body bounds for M_eff (e = 0)
+// and M_eff + m_s (e = 1); the ball gone for good; |e_A(h) - e_A(h/2)| <=
+// kMaxStepError. A collision that breaks one is a ModelRefusal.
 // Contacts are followed until the ball has left for good: after a separation
 // the integration goes on until the gap exceeds twice the largest
 // displacement the implement's vibration energy allows at the impact point
@@ -129,6 +143,9 @@ struct CollisionResult {
   double strings_loss_J = 0.0;
   double step_s = 0.0;
   int steps = 0;
+  // |e_A(h/2) - e_A(h)| of the two extrapolated runs: an upper estimate of the
+  // coarse run's step error in the apparent COR (0 with extrapolate off).
+  double step_error = 0.0;
   std::vector<double> time_s, force_N;  // when record_history
 };
 
@@ -178,9 +195,11 @@ class DesignCollision {
   // implement.
   FrameAtImpact frame_at(double from_butt_m, double off_axis_m) const;
 
-  // The collision there. Throws as frame_at(), or (ball/contact) when the
-  // solved contact time is outside [kMinDuration_s, kMaxDuration_s] or the
-  // rebound is not finite.
+  // The collision there. Throws as frame_at(), or ModelRefusal (invariants.hpp,
+  // naming collision_suspect()) when the ball has not left for good within
+  // options.max_time_s, the step does not resolve the contact (step_error >
+  // kMaxStepError), the contact time is outside [kMinDuration_s,
+  // kMaxDuration_s], or the result breaks an invariant above.
   CollisionResult at(double from_butt_m, double off_axis_m,
                      const CollisionOptions& options = {}) const;
 

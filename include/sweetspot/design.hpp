@@ -18,6 +18,10 @@ namespace sweetspot {
 // impact lasts between a microsecond and ten seconds.
 inline constexpr double kMaxForearmMass_kg = 1e12;
 inline constexpr double kMaxSpeed_m_s = 1e4;
+// A ball slower than 1 mm/s does not strike: its energy, ~1e-8 J, is below the
+// round-off of everything it is compared with (issue 20: 1e-300 mph made the
+// vibration share 0/0), and the solved contact would outlast max_time_s.
+inline constexpr double kMinSpeed_m_s = 1e-3;
 // A grip a million times stiffer (and its dashpot a hundred thousand times
 // stronger) than the calibrated hand: past these the hand is rigid for every
 // mode the model resolves.
@@ -27,6 +31,30 @@ inline constexpr double kMaxGripDamping_N_s_m2 = 1e8;
 inline constexpr double kMaxShearModulus_Pa = 1e13;
 inline constexpr double kMinDuration_s = 1e-9;
 inline constexpr double kMaxDuration_s = 10.0;
+
+// The ranges over which the solved collision (collision.hpp) was verified
+// (issue 20: tests/collision_test.cpp "... every term >= 0 ..." sweeps each to
+// its ends; an input beyond them is refused by validate(), exit status 2).
+// The string tension: 20-1000 N (4.5-225 lb). Stringers use 90-330 N; below
+// 20 N the calibrated ball at 50 m/s pushes the bed deeper than the head's
+// radius (the membrane's small slopes fail), above 1000 N a string breaks
+// (a 1.3 mm polyester string's strength is ~700-900 N).
+inline constexpr double kMinTension_N = 20.0;
+inline constexpr double kMaxTension_N = 1000.0;
+// The string bed's moving mass: 1-20 g. A full set of strings weighs 15-20 g
+// (kStringSetMass_kg), the part that moves with the ball less; the COR of the
+// solved collision is Eq. (16) inverted with M_eff, which leaves the bed's
+// mass out, right only while it is small against M_eff.
+inline constexpr double kMinStringBedMass_kg = 0.001;
+inline constexpr double kMaxStringBedMass_kg = 0.020;
+// An impact off the long axis lands on the head: inside the hoop's outer edge
+// (the string bed's ellipse widened by the hoop, head_geometry.hpp) when the
+// head is given, else within the widest head the ITF allows, 11.5 in (29.2 cm)
+// across. A measured twistweight cannot exceed the frame's mass all at that
+// half-width, M c^2 (c the hoop's outer half-width, or this), nor be below
+// kMinTwistweight_kg_m2 (a 20 g rod of 1 cm radius: the strings alone give more).
+inline constexpr double kMaxHeadHalfWidth_m = 0.146;
+inline constexpr double kMinTwistweight_kg_m2 = 1e-6;
 
 // The hand, a point mass on the handle (Cross 2004: 0.07 m from the butt).
 // For the vibration modes it grips the handle over `grip_length_m` centred on
@@ -58,8 +86,9 @@ struct FrameStiffness {
 };
 
 struct Ball {
-  double mass_kg = 0.057;   // [kg], > 0 (a tennis ball)
-  double speed_m_s = 50.0;  // incident speed relative to the impact point [m/s], > 0
+  double mass_kg = 0.057;  // [kg], > 0 (a tennis ball)
+  double speed_m_s =
+      50.0;  // incident speed relative to the impact point [m/s], in [kMinSpeed_m_s, kMaxSpeed_m_s]
 };
 
 struct Design {
@@ -78,7 +107,8 @@ struct Design {
   std::optional<StringBed> strings{};
   // The solved collision (Fidelity::kCollision, collision.hpp): the ball's
   // contact law and the string bed's moving mass [kg] (> 0) and damping ratio
-  // (in [0, 1)). Defaults: the calibrated tennis ball, 4 g and 0.008.
+  // (in [0, 1)), in [kMinStringBedMass_kg, kMaxStringBedMass_kg]. Defaults: the calibrated
+  // tennis ball, 4 g and 0.008.
   BallContactLaw ball_contact = kTennisBallLaw;
   double string_bed_mass_kg = kStringBedMass_kg;
   double string_bed_damping_ratio = kStringBedDampingRatio;

@@ -94,6 +94,33 @@ struct Evaluation {
 // also the frame's response to the ball (vibration energy, a derived COR).
 // Above them, the collision solved as a dynamic problem (collision.hpp): the
 // COR, the contact time, the peak force and the vibration come out of it.
+//
+// What each guarantees (checked on every evaluation by check_invariants(),
+// invariants.hpp, to kInvariantRoundOff; an evaluation that breaks one is a
+// ModelRefusal, never an answer), with m the ball's mass, v1 its speed,
+// E_in = m v1^2 / 2, M_eff Eq. (17) (with the twist, rigid_impact.hpp):
+//  * every fidelity: every output finite; 0 <= e <= 1; Eq. (16)'s bounds
+//    -m / (M_eff + m) <= e_A <= e (e = 0 and the given or derived e; e_A < 0 is
+//    right near the rim, where M_eff < m / e); the impulse J, the contact time
+//    T and the peak force F0 > 0; the ball's energy out, E_in e_A^2, <= E_in;
+//    the rigid body's J^2 / (2 M_eff) <= what the ball lost.
+//  * kRigid: the above, which Eqs. (15)-(17) satisfy exactly for inputs in
+//    validate()'s ranges. Valid while the implement is rigid for the impact
+//    (its fundamental above ~1.5 / T, Sec. III) and the pulse a half-sine.
+//  * kModal: the rigid model's answer (the modes add outputs, not impact
+//    numbers). Valid for a slender beam (Euler-Bernoulli; Timoshenko with a
+//    cross-section) whose modes are linear.
+//  * kResponse: also 0 <= every mode's energy, and the vibration <= what the
+//    ball lost. The prescribed half-sine stops being valid where the frame
+//    would keep more than the collision loses (derive_cor refuses: a long or
+//    soft frame) and for a given COR on a frame that compliant (refused).
+//  * kCollision: also (collision.hpp) the derived e = Eq. (16) inverted within
+//    [0, 1]; e_A <= (M' - m)/(M' + m), M' = M_eff + m_s (an elastic collision
+//    with the frame and its string bed); every ledger term and mode energy >= 0,
+//    the ledger closing; the ball gone for good within max_time_s; the step
+//    error of e_A <= kMaxStepError. Valid over the ranges of design.hpp
+//    (tension, string bed mass, head) and ball_contact.hpp, for an impact on
+//    the head, while the bed's deflection stays small against the head.
 enum class Fidelity { kRigid, kModal, kResponse, kCollision };
 
 // Every name a fidelity is asked by: the four levels and "auto" (the
@@ -153,6 +180,8 @@ Evaluation evaluate_validated(const Design& design, Fidelity fidelity, double re
 // false, `e` untouched, where only evaluate() answers as it would: a COR or a
 // duration to derive (cor_rigid, a string tension), an impact off the long
 // axis, or a result that is not finite (evaluate() refuses it, saying why).
+// For a validated design the rigid model's invariants (Fidelity) follow from
+// Eqs. (15)-(17) once every number is finite, so this check is theirs.
 bool evaluate_rigid_outcome(const Design& design, Evaluation& e);
 
 // The rigid model without validation and with the design's cor and

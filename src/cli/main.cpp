@@ -1,7 +1,9 @@
 // The sweetspot command line: one small unit per subcommand (commands.hpp),
 // each calling the library; here only their registration and the one place
 // where errors become a line on stderr and an exit status: 0 success, 1 a
-// run-time failure (cannot write a file), 2 bad input or bad usage. An
+// run-time failure (cannot write a file), 2 bad input or bad usage (an input
+// outside its stated range), 3 a model that cannot answer the design
+// (sweetspot::ModelRefusal) or a study with no feasible design. An
 // interrupted run (any catchable signal that ends a process:
 // io::remove_temporaries_on_signals()) removes its temporary files and ends
 // by the signal.
@@ -15,6 +17,7 @@
 #include "cli/commands.hpp"
 #include "io/atomic_file.hpp"
 #include "io/input_error.hpp"
+#include "sweetspot/invariants.hpp"
 
 int main(int argc, char** argv) {
   using namespace sweetspot::cli;
@@ -161,7 +164,10 @@ int main(int argc, char** argv) {
     return kExitBadInput;
   } catch (const sweetspot::io::InputError& e) {
     std::cerr << "sweetspot: " << sweetspot::io::one_line(e.what()) << "\n";
-    return kExitBadInput;
+    return e.model_refused() ? kExitModelRefused : kExitBadInput;
+  } catch (const sweetspot::ModelRefusal& e) {
+    std::cerr << "sweetspot: " << sweetspot::io::one_line(e.what()) << "\n";
+    return kExitModelRefused;
   } catch (const std::invalid_argument& e) {
     std::cerr << "sweetspot: " << sweetspot::io::one_line(e.what()) << "\n";
     return kExitBadInput;

@@ -23,6 +23,9 @@ inline constexpr int kExitRuntimeError =
 inline constexpr int kExitBadInput = 2;  // bad input or usage, one line on stderr
 inline constexpr int kExitInfeasible =
     3;  // a study with no feasible design (its report is written)
+// The model cannot answer the design (sweetspot::ModelRefusal): its inputs are
+// in range, an evaluation broke an invariant of its fidelity. One line on stderr.
+inline constexpr int kExitModelRefused = 3;
 
 // --format and --output of a subcommand: standard output, or FILE written
 // as io/atomic_file.hpp says (a regular file replaced atomically, a device

@@ -1,6 +1,9 @@
 #include "io/input_error.hpp"
 
+#include <exception>
 #include <utility>
+
+#include "sweetspot/invariants.hpp"
 
 namespace sweetspot::io {
 namespace {
@@ -40,6 +43,19 @@ InputError::InputError(std::string source, std::string pointer, std::string deta
       source_(std::move(source)),
       pointer_(std::move(pointer)),
       detail_(std::move(detail)) {}
+
+bool InputError::model_refused() const {
+  if (!nested_ptr()) return false;
+  try {
+    std::rethrow_exception(nested_ptr());
+  } catch (const ModelRefusal&) {
+    return true;
+  } catch (const InputError& inner) {
+    return inner.model_refused();
+  } catch (...) {
+    return false;
+  }
+}
 
 ReadError::ReadError(const std::string& source, const std::string& detail)
     : std::runtime_error(compose(source, "", detail)) {}

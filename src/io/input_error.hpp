@@ -5,18 +5,26 @@
 // line whatever the file name or the input hold: control characters are
 // written as escapes (a newline in a file name prints as "\n").
 
+#include <exception>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 
 namespace sweetspot::io {
 
-// Bad input (exit status 2): a file that is not what it should be.
-class InputError : public std::runtime_error {
+// Bad input (exit status 2): a file that is not what it should be. Made while
+// handling a core error (the JSON layer rethrowing it at the file's key), it
+// keeps that error as its nested exception (std::nested_exception), so that a
+// ModelRefusal (exit status 3) is still one where its key is named.
+class InputError : public std::runtime_error, public std::nested_exception {
  public:
   // what() is "SOURCE: POINTER: DETAIL" (POINTER omitted when empty), with
   // control characters escaped.
   InputError(std::string source, std::string pointer, std::string detail);
+
+  // Whether the error it rethrows is the core's refusal to answer
+  // (sweetspot::ModelRefusal): the input is in range, the model cannot answer.
+  bool model_refused() const;
 
   const std::string& source() const { return source_; }
   const std::string& pointer() const { return pointer_; }

@@ -3,7 +3,10 @@
 
 #include <algorithm>
 #include <catch2/catch.hpp>
+#include <stdexcept>
 #include <string>
+
+#include "sweetspot/invariants.hpp"
 
 namespace sweetspot::io {
 namespace {
@@ -27,6 +30,32 @@ TEST_CASE("Text that is printable, UTF-8 included, is left as it is") {
 TEST_CASE("A read error is one line naming the file") {
   const ReadError error("line\nbreak.csv", "cannot read line 3: Input/output error");
   CHECK(std::string(error.what()) == "line\\nbreak.csv: cannot read line 3: Input/output error");
+}
+
+}  // namespace
+}  // namespace sweetspot::io
+
+namespace sweetspot::io {
+namespace {
+
+// The command line's exit status 3 (a model that cannot answer) against 2 (bad
+// input) survives the JSON layer's rethrow at the file's key.
+TEST_CASE("An input error made while handling a model's refusal says so, any other does not") {
+  const auto rethrown = [](auto&& core_error) {
+    try {
+      try {
+        throw core_error;
+      } catch (const std::invalid_argument&) {
+        throw InputError("d.json", "/ball/speed_m_s", "the model cannot answer");
+      }
+    } catch (const InputError& e) {
+      return e.model_refused();
+    }
+    return false;
+  };
+  CHECK(rethrown(ModelRefusal("ball/speed_m_s", 1e-9, "the model cannot answer")));
+  CHECK_FALSE(rethrown(std::invalid_argument("ball/speed_m_s: must be > 0 m/s, got 0")));
+  CHECK_FALSE(InputError("d.json", "/ball", "missing").model_refused());
 }
 
 }  // namespace
