@@ -66,7 +66,7 @@ namespace io = sweetspot::io;
 namespace property = sweetspot::property;
 namespace fs = std::filesystem;
 
-// The committed seed (the year and page of Cross's paper).
+// The committed seed (Cross's paper: 2004, volume 72).
 constexpr std::uint64_t kDefaultSeed = 2004072;
 
 // Designs drawn per fidelity asked (10 000 in all). The modal, response and
@@ -108,8 +108,6 @@ std::uint64_t seed_from_environment() {
   return kDefaultSeed;
 }
 
-// The n-th design's generator: one stream per design, so that any design is
-// drawn again from (seed, stream, n) alone.
 // SWEETSPOT_PROPERTY_SCALE=K draws K times as many designs (a longer search
 // than CI's; the first designs are the same).
 int scale_from_environment() {
@@ -121,6 +119,8 @@ int scale_from_environment() {
   return 1;
 }
 
+// The n-th design's generator: one stream per design, so that any design is
+// drawn again from (seed, stream, n) alone.
 property::Rng design_rng(std::uint64_t seed, std::uint64_t stream, std::uint64_t n) {
   property::Rng mix(seed ^ (stream * 0xD1B54A32D192ED03ull));
   for (std::uint64_t k = 0; k < 3; ++k) mix.next();
@@ -222,7 +222,11 @@ std::optional<double> effective_mass_from_file(const property::Truth& t, double 
     if (t.twistweight_kg_m2) {
       polar += *t.twistweight_kg_m2;
     } else if (t.head) {
-      polar += sweetspot::estimated_polar_inertia_kg_m2(*t.head, t.length_m, t.frame_mass_kg);
+      try {  // the head's estimate (head_geometry.hpp), as the model takes it
+        polar += sweetspot::estimated_polar_inertia_kg_m2(*t.head, t.length_m, t.frame_mass_kg);
+      } catch (const std::invalid_argument&) {
+        return std::nullopt;
+      }
     } else {
       return std::nullopt;
     }
@@ -280,8 +284,18 @@ std::vector<Finding> judge_answer(const Json& document, const Evaluation& e,
   j.at_least("COR outside [0, 1]", "cor", e.cor, 0.0, kCorRoundOff);
   j.at_most("COR outside [0, 1]", "cor", e.cor, 1.0, kCorRoundOff);
 
-  // The effective mass (Eq. 17) and the apparent COR (Eq. 16) against it.
+  // The impact where the file puts it (the code's default when it gives none).
   const double impact = truth->impact_from_butt_m.value_or(e.impact_from_butt_m);
+  const double position_tol = 1e-12 * truth->length_m;
+  if (!(std::abs(e.impact_from_butt_m - impact) <= position_tol) ||
+      !(std::abs(e.impact_off_axis_m - truth->impact_off_axis_m) <= position_tol)) {
+    j.fail("the impact is not where the file puts it",
+           "impact_from_butt_m = " + number(e.impact_from_butt_m) + " (the file: " +
+               number(impact) + "), impact_off_axis_m = " + number(e.impact_off_axis_m) +
+               " (the file: " + number(truth->impact_off_axis_m) + ")");
+  }
+
+  // The effective mass (Eq. 17) and the apparent COR (Eq. 16) against it.
   double tol_per_kg = 0.0;
   const std::optional<double> M_eff = effective_mass_from_file(*truth, impact, tol_per_kg);
   if (bound_checked) *bound_checked = M_eff.has_value();
@@ -323,7 +337,6 @@ std::vector<Finding> judge_answer(const Json& document, const Evaluation& e,
                  e.details->vibration_modes[k].second, 0.0, energy_tol);
     }
   }
-  j.at_least("impulse not > 0", "impulse_N_s", e.impulse_N_s, 0.0, 0.0);
   if (!(e.impulse_N_s > 0.0)) j.fail("impulse not > 0", "impulse_N_s = " + number(e.impulse_N_s));
   if (!(e.impact_duration_s > 0.0))
     j.fail("contact time not > 0", "impact_duration_s = " + number(e.impact_duration_s));
@@ -465,7 +478,7 @@ TEST_CASE(
   std::cout << "property: designs over the accepted ranges, seed " << seed
             << " (SWEETSPOT_PROPERTY_SEED overrides " << kDefaultSeed << ")\n";
   const auto started = std::chrono::steady_clock::now();
-  // SWEETSPOT_PROPERTY_VERBOSE=1 prints every refusal.
+  // SWEETSPOT_PROPERTY_VERBOSE=1 prints every refusal with its design.
   const bool verbose = std::getenv("SWEETSPOT_PROPERTY_VERBOSE") != nullptr;
   std::map<std::string, FidelityTally> tallies;
   std::map<std::string, LawTally> laws;
@@ -493,7 +506,10 @@ TEST_CASE(
           }
         }
         ++tally.refused_at[at];
-        if (verbose) std::cout << "refused (" << fidelity << " " << n << "): " << o.message << "\n";
+        if (verbose) {
+          std::cout << "refused (" << fidelity << " " << n << "): " << o.message << "\n  "
+                    << d.document.dump() << "\n";
+        }
       }
       bool bound_checked = false;
       const std::vector<Finding> findings = judge(d.document, o, &bound_checked);
