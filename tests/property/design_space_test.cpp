@@ -740,9 +740,10 @@ std::map<std::string, std::string> report_cells(const std::string& html) {
 
 // What one design file does through the commands.
 struct Trial {
-  bool answered = false;          // by evaluate
-  std::string level;              // the fidelity evaluate answered at (else the one asked)
-  std::vector<Finding> findings;  // one per class
+  bool answered = false;                // by evaluate
+  std::string level;                    // the fidelity evaluate answered at (else the one asked)
+  std::vector<Finding> findings;        // one per class
+  std::map<std::string, int> compared;  // numbers compared with evaluate's, per command
 };
 
 // The design file `design` (its "fidelity" key set) through every command,
@@ -799,6 +800,7 @@ Trial through_commands(const Sandbox& box, const Json& design, const std::string
       const auto it = reference.find(name);
       if (given == other.end() || it == reference.end()) continue;
       const std::optional<double>& number_given = given->second;
+      ++t.compared[command];
       const bool equal = number_given.has_value() == it->second.has_value() &&
                          (!number_given || *number_given == *it->second);
       if (!equal) {
@@ -835,6 +837,7 @@ Trial through_commands(const Sandbox& box, const Json& design, const std::string
         const auto cell = cells.find(std::string(spec.name));
         const auto it = reference.find(std::string(spec.name));
         if (cell == cells.end() || it == reference.end()) continue;
+        ++t.compared["report"];
         const std::string expected =
             it->second ? io::significant(*it->second * io::output_axis(spec).factor, 4) : "—";
         if (cell->second != expected) {
@@ -987,6 +990,7 @@ TEST_CASE(
   Sandbox box;
   std::map<std::string, CommandLaw> laws;
   std::map<std::string, FidelityTally> tallies;
+  std::map<std::string, int> compared;
   int reports = 0;
   const int scale = scale_from_environment();
   for (int n = 0; n < kCommandDesigns * scale; ++n) {
@@ -1013,6 +1017,7 @@ TEST_CASE(
     t.answered ? ++tally.answered : ++tally.refused;
     if (t.answered) ++tally.resolved[t.level];
     if (!t.findings.empty()) ++tally.violating;
+    for (const auto& [command, k] : t.compared) compared[command] += k;
     for (const Finding& f : t.findings) {
       CommandLaw& law = laws[f.law];
       ++law.designs;
@@ -1050,6 +1055,9 @@ TEST_CASE(
   }
   std::ostringstream classes;
   for (const auto& [name, law] : laws) classes << "\n  " << law.designs << " x " << name;
+  std::cout << "property: numbers compared with evaluate's:";
+  for (const auto& [command, k] : compared) std::cout << " " << command << " " << k << ";";
+  std::cout << " (report: to the 4 digits it prints)\n";
   std::cout << "property summary (commands): seed " << seed << ": " << designs
             << " designs through evaluate, compare, sweep, optimize and both catalogues ("
             << reports << " also through report): " << refused << " refused, " << answered
