@@ -466,6 +466,7 @@ struct FidelityTally {
   int drawn = 0, refused = 0, answered = 0, violating = 0;
   std::map<std::string, int> refused_at;  // the refusals' JSON pointers, list indices as *
   std::map<std::string, int> resolved;    // the level "auto" chose, for answers
+  double seconds = 0.0;                   // drawing, evaluating and judging them
 };
 
 }  // namespace
@@ -486,6 +487,7 @@ TEST_CASE(
   const int scale = scale_from_environment();
   for (std::size_t f = 0; f < kDesignsPerFidelity.size(); ++f) {
     const auto& [fidelity, count] = kDesignsPerFidelity[f];
+    const auto fidelity_started = std::chrono::steady_clock::now();
     for (int n = 0; n < count * scale; ++n) {
       property::Rng rng = design_rng(seed, f, n);
       const property::DrawnDesign d = property::draw_design(rng, fidelity);
@@ -531,6 +533,8 @@ TEST_CASE(
         }
       }
     }
+    tallies[fidelity].seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - fidelity_started).count();
   }
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
@@ -571,7 +575,7 @@ TEST_CASE(
       for (const auto& [level, n] : t.resolved) by_fidelity << " " << level << " " << n;
       by_fidelity << ")";
     }
-    by_fidelity << ", " << t.violating << " violating";
+    by_fidelity << ", " << t.violating << " violating (" << t.seconds << " s)";
   }
   // Where the refusals pointed, the most frequent first.
   for (const auto& [fidelity, count] : kDesignsPerFidelity) {
