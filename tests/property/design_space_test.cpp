@@ -29,12 +29,14 @@
 // violation stays).
 
 #include <sys/wait.h>
+#include <time.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <chrono>
 #include <cmath>
+#include <condition_variable>
 #include <cstdint>
 #include <cstdlib>
 #include <exception>
@@ -42,9 +44,11 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <mutex>
 #include <optional>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <typeinfo>
 #include <vector>
 
@@ -95,8 +99,15 @@ constexpr double kEnergyRoundOff = 1e-9;
 constexpr double kEffectiveMassRelTol = 1e-9;
 // The hand-held modes' relative frequency error (the command line's default).
 constexpr double kModalTolerance = 1e-6;
-// Trials of the shrinker per class of violation.
+// Trials of the shrinker per class of violation, and its time for one class [s].
 constexpr int kShrinkTrials = 200;
+constexpr double kShrinkSeconds = 5.0;
+// An evaluation that takes more CPU than this breaks a law of its own: a
+// design is answered or refused in bounded time (the rest take milliseconds).
+constexpr double kSlowEvaluation_s = 10.0;
+// ... and one still running after this much wall time ends the test, naming
+// the design (it would otherwise run into ctest's timeout and say nothing).
+constexpr double kHungEvaluation_s = 60.0;
 
 std::uint64_t seed_from_environment() {
   if (const char* text = std::getenv("SWEETSPOT_PROPERTY_SEED")) {
@@ -136,11 +147,75 @@ struct Outcome {
   std::optional<Evaluation> evaluation;
   std::string message;  // a refusal's
   std::string pointer;  // an InputError's JSON pointer
+  double cpu_seconds = 0.0;
 };
+
+// The calling thread's CPU time [s].
+double thread_cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+// Watches the evaluation under way: one that runs past kHungEvaluation_s is
+// reported with its design and the test ends (std::_Exit), failed.
+class Watchdog {
+ public:
+  Watchdog() : thread_([this] { watch(); }) {}
+  ~Watchdog() {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      stop_ = true;
+    }
+    wake_.notify_all();
+    thread_.join();
+  }
+  void begin(const Json* document, const std::string* fidelity) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    document_ = document;
+    fidelity_ = fidelity;
+    since_ = std::chrono::steady_clock::now();
+  }
+  void end() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    document_ = nullptr;
+  }
+
+ private:
+  void watch() {
+    std::unique_lock<std::mutex> lock(mutex_);
+    while (!stop_) {
+      wake_.wait_for(lock, std::chrono::seconds(1));
+      if (!document_) continue;
+      const double running =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - since_).count();
+      if (running > kHungEvaluation_s) {
+        std::cout << "VIOLATION an evaluation does not end: still running after " << running
+                  << " s (wall)\n  design (--fidelity " << *fidelity_ << "): " << document_->dump()
+                  << "\nproperty: the test ends here, failed" << std::endl;
+        std::_Exit(1);
+      }
+    }
+  }
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  bool stop_ = false;
+  const Json* document_ = nullptr;
+  const std::string* fidelity_ = nullptr;
+  std::chrono::steady_clock::time_point since_;
+  std::thread thread_;
+};
+
+Watchdog& watchdog() {
+  static Watchdog dog;
+  return dog;
+}
 
 // What `sweetspot evaluate FILE --fidelity F` computes, in-process.
 Outcome evaluate_file(const Json& document, const std::string& fidelity) {
   Outcome o;
+  watchdog().begin(&document, &fidelity);
+  const double cpu_started = thread_cpu_seconds();
   try {
     const io::DesignFile file =
         sweetspot::reports::with_default_impact(io::read_design(document, "drawn.json"));
@@ -157,6 +232,8 @@ Outcome evaluate_file(const Json& document, const std::string& fidelity) {
     o.kind = Outcome::Kind::kUnclean;
     o.message = "an exception that is not a std::exception";
   }
+  o.cpu_seconds = thread_cpu_seconds() - cpu_started;
+  watchdog().end();
   return o;
 }
 
@@ -380,6 +457,15 @@ std::vector<Finding> judge_answer(const Json& document, const Evaluation& e,
 }
 
 std::vector<Finding> judge(const Json& document, const Outcome& o, bool* bound_checked = nullptr) {
+  if (o.cpu_seconds > kSlowEvaluation_s) {
+    Outcome timed = o;
+    timed.cpu_seconds = 0.0;
+    std::vector<Finding> findings = judge(document, timed, bound_checked);
+    findings.push_back(
+        {"an evaluation takes longer than " + number(kSlowEvaluation_s) + " s of CPU",
+         number(o.cpu_seconds) + " s"});
+    return findings;
+  }
   switch (o.kind) {
     case Outcome::Kind::kAnswered:
       return judge_answer(document, *o.evaluation, bound_checked);
@@ -439,8 +525,13 @@ Json without(const Json& document, const std::string& pointer) {
 // A smaller design that still breaks `law`: keys deleted one at a time while it does.
 Json shrink(const Json& document, const std::string& fidelity, const std::string& law) {
   Json best = document;
+  if (law.starts_with("an evaluation takes longer")) return best;  // each trial would too
+  const auto started = std::chrono::steady_clock::now();
+  const auto spent = [&] {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  };
   int trials = 0;
-  for (bool progress = true; progress && trials < kShrinkTrials;) {
+  for (bool progress = true; progress && trials < kShrinkTrials && spent() < kShrinkSeconds;) {
     progress = false;
     for (const std::string& p : removable_pointers(best)) {
       if (++trials > kShrinkTrials) break;
