@@ -94,7 +94,7 @@ constexpr double kCommandTypicalShare = 0.6;
 constexpr double kCorRoundOff = 1e-9;
 constexpr double kEnergyRoundOff = 1e-9;
 // Eq. (17) recomputed here against the code's effective mass: relative to
-// the terms of 1 / M_eff, times the condition of I_cm (the cancellation in
+// the terms of M / M_eff, times the condition of I_cm (the cancellation in
 // I_cm = I_butt - M h^2).
 constexpr double kEffectiveMassRelTol = 1e-9;
 // The hand-held modes' relative frequency error (the command line's default).
@@ -270,11 +270,18 @@ class Judge {
 };
 
 // The effective mass at the impact, Cross (2004) Eq. (17) with the twist
-// term, from the test's own reading of the file; std::nullopt when the
-// implement's I_cm is too ill-conditioned here to say (<= 0). `tol_per_kg`
-// receives the tolerance on 1 / M_eff.
-std::optional<double> effective_mass_from_file(const property::Truth& t, double impact_from_butt_m,
-                                               double& tol_per_kg) {
+// term, from the test's own reading of the file, as M_eff = M / ratio with
+// ratio = 1 + M b^2 / I_cm + M y^2 / I_polar (no overflow for the tiniest
+// masses); std::nullopt when the implement's I_cm is too ill-conditioned
+// here to say (<= 0) or a term is not finite. `ratio_tol` is the tolerance
+// on the ratio: kEffectiveMassRelTol times its terms, the I_cm term times
+// the condition of I_cm.
+struct EffectiveMass {
+  double M_eff_kg = 0.0, M_kg = 0.0, ratio = 0.0, ratio_tol = 0.0;
+};
+
+std::optional<EffectiveMass> effective_mass_from_file(const property::Truth& t,
+                                                      double impact_from_butt_m) {
   double M = t.frame_mass_kg;
   double moment = t.frame_mass_kg * t.frame_com_m;
   double I_butt = t.frame_I_cm_kg_m2 + t.frame_mass_kg * t.frame_com_m * t.frame_com_m;
@@ -293,7 +300,7 @@ std::optional<double> effective_mass_from_file(const property::Truth& t, double 
   if (!(I_cm > 0.0) || !std::isfinite(I_cm)) return std::nullopt;
   const double b = impact_from_butt_m - h;
   const double y = t.impact_off_axis_m;
-  double twist = 0.0;
+  double twist = 0.0;  // M y^2 / I_polar
   if (y != 0.0) {
     double polar = polar_points;
     if (t.twistweight_kg_m2) {
@@ -307,12 +314,17 @@ std::optional<double> effective_mass_from_file(const property::Truth& t, double 
     } else {
       return std::nullopt;
     }
-    twist = y * y / polar;
+    twist = M * y * y / polar;
   }
-  const double inverse = 1.0 / M + b * b / I_cm + twist;
-  const double condition = scale / I_cm;
-  tol_per_kg = kEffectiveMassRelTol * (1.0 / M + condition * b * b / I_cm + twist);
-  return 1.0 / inverse;
+  const double bending = M * b * b / I_cm;
+  const double ratio = 1.0 + bending + twist;
+  if (!std::isfinite(ratio)) return std::nullopt;
+  EffectiveMass out;
+  out.M_kg = M;
+  out.ratio = ratio;
+  out.M_eff_kg = M / ratio;
+  out.ratio_tol = kEffectiveMassRelTol * (1.0 + (scale / I_cm) * bending + twist);
+  return out;
 }
 
 // Every law for one answer. `bound_checked`, when given, is set to whether
@@ -373,18 +385,17 @@ std::vector<Finding> judge_answer(const Json& document, const Evaluation& e,
   }
 
   // The effective mass (Eq. 17) and the apparent COR (Eq. 16) against it.
-  double tol_per_kg = 0.0;
-  const std::optional<double> M_eff = effective_mass_from_file(*truth, impact, tol_per_kg);
-  if (bound_checked) *bound_checked = M_eff.has_value();
-  if (M_eff && e.effective_mass_kg != *M_eff &&
-      !(std::abs(1.0 / e.effective_mass_kg - 1.0 / *M_eff) <= tol_per_kg)) {
+  const std::optional<EffectiveMass> eq17 = effective_mass_from_file(*truth, impact);
+  if (bound_checked) *bound_checked = eq17.has_value();
+  if (eq17 && e.effective_mass_kg != eq17->M_eff_kg &&
+      !(std::abs(eq17->M_kg / e.effective_mass_kg - eq17->ratio) <= eq17->ratio_tol)) {
     j.fail("effective mass is not Eq. (17) of the file's implement",
            "effective_mass_kg = " + number(e.effective_mass_kg) + ", Eq. (17) gives " +
-               number(*M_eff) + " kg at " + number(impact) + " m from the butt");
+               number(eq17->M_eff_kg) + " kg at " + number(impact) + " m from the butt");
   }
   j.at_most("apparent COR above the COR", "apparent_cor", e.apparent_cor, e.cor, kCorRoundOff);
-  if (M_eff) {
-    const double bound = -m / (*M_eff + m);  // Eq. (16) at e = 0
+  if (eq17) {
+    const double bound = -m / (eq17->M_eff_kg + m);  // Eq. (16) at e = 0
     j.at_least("apparent COR below the rigid-body bound -m/(M_eff+m)", "apparent_cor",
                e.apparent_cor, bound, kCorRoundOff);
   }
@@ -1020,8 +1031,10 @@ Trial through_commands(const Sandbox& box, const Json& design, const std::string
         if (!cells[k].empty()) ok = false;
         error = cells[k];
       } else if (header[k] != "line" && header[k] != "name" && io::find_output(header[k])) {
-        got[header[k]] =
-            cells[k].empty() ? std::nullopt : std::optional<double>(std::stod(cells[k]));
+        // strtod, not stod: a subnormal reads back as itself.
+        got[header[k]] = cells[k].empty()
+                             ? std::nullopt
+                             : std::optional<double>(std::strtod(cells[k].c_str(), nullptr));
       }
     }
     ok = ok && !got.empty();
