@@ -217,8 +217,8 @@ Outcome evaluate_file(const Json& document, const std::string& fidelity) {
   watchdog().begin(&document, &fidelity);
   const double cpu_started = thread_cpu_seconds();
   try {
-    const io::DesignFile file =
-        sweetspot::reports::with_default_impact(io::read_design(document, "drawn.json"));
+    // The reader applies the default impact of the design's kind.
+    const io::DesignFile file = io::read_design(document, "drawn.json");
     o.evaluation = io::evaluate_design_file(file, fidelity, kModalTolerance);
     o.kind = Outcome::Kind::kAnswered;
   } catch (const io::InputError& e) {
