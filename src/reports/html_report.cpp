@@ -68,6 +68,7 @@ void flatten(const Json& value, const std::string& pointer, std::string& rows) {
 Evaluation evaluate_at(const Design& design, double from_butt_m) {
   Design at = design;
   at.impact_from_butt_m = std::clamp(from_butt_m, 0.0, design.implement.length_m());
+  at.impact_off_axis_m = 0.0;  // the curves run along the long axis
   return evaluate(at, Fidelity::kRigid);
 }
 

@@ -17,6 +17,10 @@ Evaluation evaluate_at(const io::DesignFile& design, double from_tip_m, std::str
                        double rel_tol) {
   io::DesignFile moved = design;
   moved.design.impact_from_butt_m = design.design.implement.length_m() - from_tip_m;
+  // The sweet spots (the COP, the node, the centre of the strings, the best
+  // rebound) lie on the long axis: an off-axis miss is the asked impact's
+  // alone, and may not be on the head at another point along the frame.
+  moved.design.impact_off_axis_m = 0.0;
   return io::evaluate_design_file(moved, fidelity, rel_tol);
 }
 
