@@ -21,7 +21,9 @@ void validate(const Design& d) {
   detail::require_in_range("forearm/equivalent_mass_kg", d.forearm_equivalent_mass_kg, 0.0,
                            kMaxForearmMass_kg, "kg");
   detail::require_positive("ball/mass_kg", d.ball.mass_kg, "kg");
-  detail::require_in_range("ball/mass_kg", d.ball.mass_kg, 0.0, kMaxMass_kg, "kg");
+  detail::require_in_range("ball/mass_kg", d.ball.mass_kg, kMinBallMass_kg, kMaxMass_kg, "kg");
+  detail::require_in_range("implement/mass_kg", d.implement.mass_properties().mass_kg,
+                           kMinImplementMass_kg, kMaxMass_kg, "kg");
   detail::require_positive("ball/speed_m_s", d.ball.speed_m_s, "m/s");
   detail::require_in_range("ball/speed_m_s", d.ball.speed_m_s, kMinSpeed_m_s, kMaxSpeed_m_s, "m/s");
   detail::require_in_range("impact/from_butt_m", d.impact_from_butt_m, 0.0, L, "m");

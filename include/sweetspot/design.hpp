@@ -22,6 +22,13 @@ inline constexpr double kMaxSpeed_m_s = 1e4;
 // round-off of everything it is compared with (issue 20: 1e-300 mph made the
 // vibration share 0/0), and the solved contact would outlast max_time_s.
 inline constexpr double kMinSpeed_m_s = 1e-3;
+// The lightest ball (0.1 g, a twentieth of a table-tennis ball's 2.7 g) and
+// the lightest implement (1 g) the model was verified for: below them the
+// energies and the effective mass reach the round-off of the numbers they are
+// compared with (issue 20: a 1e-300 kg ball on a 1e-300 kg racquet broke the
+// rigid-body bound on the apparent COR by round-off alone).
+inline constexpr double kMinBallMass_kg = 1e-4;
+inline constexpr double kMinImplementMass_kg = 1e-3;
 // A grip a million times stiffer (and its dashpot a hundred thousand times
 // stronger) than the calibrated hand: past these the hand is rigid for every
 // mode the model resolves.
