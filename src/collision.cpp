@@ -294,7 +294,7 @@ CollisionResult integrate(const FrameAtImpact& frame,
   // kMaxSteps (counted in double: a contact resolved by a tiny step would
   // overflow a long). A run cut short leaves the ball in contact, which the
   // invariants refuse (invariants.hpp) rather than answer.
-  constexpr double kMaxSteps = 1e8;
+  constexpr double kMaxSteps = 1e7;
   const long max_steps =
       static_cast<long>(std::min(kMaxSteps, 64.0 * std::ceil(options.max_time_s / h_base)));
 

@@ -22,8 +22,13 @@ void validate(const Design& d) {
                            kMaxForearmMass_kg, "kg");
   detail::require_positive("ball/mass_kg", d.ball.mass_kg, "kg");
   detail::require_in_range("ball/mass_kg", d.ball.mass_kg, kMinBallMass_kg, kMaxMass_kg, "kg");
-  detail::require_in_range("implement/mass_kg", d.implement.mass_properties().mass_kg,
-                           kMinImplementMass_kg, kMaxMass_kg, "kg");
+  // The implement's own parts are bounded where they are built; in all it
+  // weighs at least kMinImplementMass_kg.
+  if (!(d.implement.mass_properties().mass_kg >= kMinImplementMass_kg)) {
+    throw std::invalid_argument(
+        "implement/mass_kg: must be >= " + detail::format_number(kMinImplementMass_kg) +
+        " kg, got " + detail::format_number(d.implement.mass_properties().mass_kg) + " kg");
+  }
   detail::require_positive("ball/speed_m_s", d.ball.speed_m_s, "m/s");
   detail::require_in_range("ball/speed_m_s", d.ball.speed_m_s, kMinSpeed_m_s, kMaxSpeed_m_s, "m/s");
   detail::require_in_range("impact/from_butt_m", d.impact_from_butt_m, 0.0, L, "m");

@@ -1,8 +1,6 @@
 #include "design_generator.hpp"
 
 #include <algorithm>
-#include <cmath>
-#include <cstdlib>
 #include <limits>
 #include <numbers>
 #include <utility>
@@ -382,15 +380,7 @@ std::optional<double> si(const Json& object, const std::string& base,
   if (!object.is_object()) return std::nullopt;
   for (const Unit& u : units) {
     const auto it = object.find(base + u.suffix);
-    if (it == object.end() || !it->is_number()) continue;
-    // A power of ten moves the decimal point of the number as written (282 g
-    // is 0.282 kg, as the reader converts it): the correctly rounded value.
-    const double shift = std::log10(u.to_si);
-    if (u.to_si != 1.0 && shift == std::round(shift)) {
-      const std::string text = it->dump() + "e" + std::to_string(static_cast<int>(shift));
-      return std::strtod(text.c_str(), nullptr);
-    }
-    return it->get<double>() * u.to_si;
+    if (it != object.end() && it->is_number()) return it->get<double>() * u.to_si;
   }
   return std::nullopt;
 }
@@ -476,8 +466,7 @@ std::optional<Truth> read_truth(const Json& document) {
   const auto cm2 = number(implement, "headsize_cm2");
   if (sq_in || cm2) {
     HeadShape head;
-    head.area_m2 = sq_in ? *sq_in * (0.0254 * 0.0254)
-                         : *si(implement, "headsize", {{"_cm2", 1e-4}});  // the digits as written
+    head.area_m2 = sq_in ? *sq_in * (0.0254 * 0.0254) : *cm2 * 1e-4;
     head.aspect_ratio = number(implement, "head_aspect_ratio").value_or(kDefaultHeadAspectRatio);
     head.hoop_width_m = si(implement, "hoop_width", kLength).value_or(kDefaultHoopWidth_m);
     t.head = head;

@@ -385,12 +385,12 @@ TEST_CASE("A passed-through cell or a name a spreadsheet would read as a formula
 TEST_CASE("The blank last row a spreadsheet exports is skipped, not an error row") {
   for (const std::string blank : {",\n", ", ,\n", "\"\",\"\"\n", ",\r\n"}) {
     const Outcome out =
-        run("name,implement.mass_g\nr1,0.3\n" + blank, CatalogueFormat::kCsv, Format::kCsv);
+        run("name,implement.mass_g\nr1,300\n" + blank, CatalogueFormat::kCsv, Format::kCsv);
     CHECK(out.summary.rows == 1);
     CHECK(out.summary.failed == 0);
   }
   // A row with one cell is a row.
-  CHECK(run("name,implement.mass_g\nr1,0.3\n,0.31\n", CatalogueFormat::kCsv).summary.rows == 2);
+  CHECK(run("name,implement.mass_g\nr1,300\n,310\n", CatalogueFormat::kCsv).summary.rows == 2);
 }
 
 TEST_CASE("A column passed through twice is refused once, naming both") {
