@@ -291,12 +291,15 @@ CollisionResult integrate(const FrameAtImpact& frame,
   bool in_contact = false;
   double t = 0.0, contact_start = 0.0, last_separation = 0.0;
   // At most 64 steps per base step until max_time_s, and never more than
-  // kMaxSteps (counted in double: a contact resolved by a tiny step would
-  // overflow a long). A run cut short leaves the ball in contact, which the
-  // invariants refuse (invariants.hpp) rather than answer.
-  constexpr double kMaxSteps = 1e7;
+  // kMaxSteps, counted in double (a contact resolved by a tiny step would
+  // overflow a long). A contact that alone needs more than kMaxSteps is not
+  // stepped at all: the ball is left in contact, which the invariants refuse
+  // (invariants.hpp) at once rather than after minutes of stepping.
+  constexpr double kMaxSteps = 1e8;
   const long max_steps =
-      static_cast<long>(std::min(kMaxSteps, 64.0 * std::ceil(options.max_time_s / h_base)));
+      t_est / h_base > kMaxSteps
+          ? 0L
+          : static_cast<long>(std::min(kMaxSteps, 64.0 * std::ceil(options.max_time_s / h_base)));
 
   // Everything the result reports, from the state now.
   auto snapshot = [&] {

@@ -20,17 +20,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string folder_of(const std::string& path) {
-  const auto slash = path.rfind('/');
-  if (slash == std::string::npos) return ".";
-  if (slash == 0) return "/";
-  return path.substr(0, slash);
-}
-
-std::string name_of(const std::string& path) {
-  const auto slash = path.rfind('/');
-  return slash == std::string::npos ? path : path.substr(slash + 1);
-}
+using io::directory_of;
+using io::name_of;
 
 // `path` with its symbolic links followed to the name they end at (which
 // may not exist: a dangling link is written through, as OutputFile does).
@@ -43,7 +34,7 @@ std::string final_target(const std::string& path) {
     const ssize_t length = ::readlink(target.c_str(), link.data(), link.size());
     if (length < 0) return target;
     const std::string to(link.data(), static_cast<std::size_t>(length));
-    target = !to.empty() && to[0] == '/' ? to : folder_of(target) + "/" + to;
+    target = !to.empty() && to[0] == '/' ? to : directory_of(target) + "/" + to;
   }
   return target;
 }
@@ -154,7 +145,7 @@ void OutputPlan::write(const std::string& option, const std::string& path, bool 
     throw io::WriteError(quoted(path), std::strerror(ENAMETOOLONG));
   }
   // A regular file is replaced by renaming a temporary file in its folder.
-  const std::string folder = folder_of(target);
+  const std::string folder = directory_of(target);
   struct stat info {};
   if (::stat(folder.c_str(), &info) != 0) {
     if (errno == ENOENT && folder_made_later) return;

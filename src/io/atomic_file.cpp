@@ -78,18 +78,6 @@ unsigned current_umask() {
   return old;
 }
 
-std::string directory_of(const std::string& path) {
-  const auto slash = path.rfind('/');
-  if (slash == std::string::npos) return ".";
-  if (slash == 0) return "/";
-  return path.substr(0, slash);
-}
-
-std::string name_of(const std::string& path) {
-  const auto slash = path.rfind('/');
-  return slash == std::string::npos ? path : path.substr(slash + 1);
-}
-
 // The descriptor that /dev/stdout, /dev/stderr, /dev/fd/N or /proc/self/fd/N
 // names: written through a duplicate, as a shell does, so that an output
 // redirected with >> is appended to and never truncated or replaced.
@@ -150,6 +138,18 @@ class OutputBuffer : public std::streambuf {
 };
 
 }  // namespace
+
+std::string directory_of(const std::string& path) {
+  const auto slash = path.rfind('/');
+  if (slash == std::string::npos) return ".";
+  if (slash == 0) return "/";
+  return path.substr(0, slash);
+}
+
+std::string name_of(const std::string& path) {
+  const auto slash = path.rfind('/');
+  return slash == std::string::npos ? path : path.substr(slash + 1);
+}
 
 WriteError::WriteError(const std::string& path, const std::string& reason)
     : std::runtime_error("cannot write " + path + ": " + reason), reason_(reason) {}

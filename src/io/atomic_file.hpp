@@ -88,6 +88,11 @@ class OutputFile {
   unsigned gid_ = 0;
 };
 
+// The folder of a path as written ("." for a bare name, "/" at the root) and
+// its last component.
+std::string directory_of(const std::string& path);
+std::string name_of(const std::string& path);
+
 // Writes `content` to `path` through OutputFile. Throws WriteError.
 void write_file_atomically(const std::string& path, std::string_view content);
 

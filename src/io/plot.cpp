@@ -444,31 +444,43 @@ bool render_script_png(const std::string& script, const std::string& png_path, s
   return false;
 }
 
+namespace {
+
+// What gnuplot writes for `script`, held in an anonymous memory file and
+// read back; with `png`, checked as a whole PNG first. Throws PlotFailure.
+std::string gnuplot_output_in_memory(const std::string& script, const char* name, bool png) {
+  const int fd = ::memfd_create(name, MFD_CLOEXEC);
+  if (fd < 0) throw PlotFailure(std::string("cannot hold the plot: ") + std::strerror(errno));
+  struct Closer {
+    int fd;
+    ~Closer() { ::close(fd); }
+  } closer{fd};
+  run_gnuplot(script, fd);
+  if (png) {
+    const std::string problem = png_problem(fd);
+    if (!problem.empty()) throw PlotFailure(problem);
+  }
+  std::string bytes;
+  std::array<char, 1 << 16> buffer{};
+  for (off_t at = 0;;) {
+    const ssize_t n = ::pread(fd, buffer.data(), buffer.size(), at);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) throw PlotFailure(std::string("cannot read the plot: ") + std::strerror(errno));
+    if (n == 0) return bytes;
+    bytes.append(buffer.data(), static_cast<std::size_t>(n));
+    at += n;
+  }
+}
+
+}  // namespace
+
 std::optional<std::string> render_png_bytes(const Plot& plot, std::string* why) {
   return render_script_png_bytes(gnuplot_script(plot, ""), why);
 }
 
 std::optional<std::string> render_script_png_bytes(const std::string& script, std::string* why) {
   try {
-    const int fd = ::memfd_create("sweetspot-png", MFD_CLOEXEC);
-    if (fd < 0) throw PlotFailure(std::string("cannot hold the plot: ") + std::strerror(errno));
-    struct Closer {
-      int fd;
-      ~Closer() { ::close(fd); }
-    } closer{fd};
-    run_gnuplot(script, fd);
-    const std::string problem = png_problem(fd);
-    if (!problem.empty()) throw PlotFailure(problem);
-    std::string png;
-    std::array<char, 1 << 16> buffer{};
-    for (off_t at = 0;;) {
-      const ssize_t n = ::pread(fd, buffer.data(), buffer.size(), at);
-      if (n < 0 && errno == EINTR) continue;
-      if (n < 0) throw PlotFailure(std::string("cannot read the plot: ") + std::strerror(errno));
-      if (n == 0) return png;
-      png.append(buffer.data(), static_cast<std::size_t>(n));
-      at += n;
-    }
+    return gnuplot_output_in_memory(script, "sweetspot-png", true);
   } catch (const std::exception& e) {
     if (why) *why = e.what();
   }
@@ -495,23 +507,7 @@ std::optional<std::string> render_svg(const Plot& plot, const std::string& id_pr
 std::optional<std::string> render_script_svg(const std::string& script,
                                              const std::string& id_prefix, std::string* why) {
   try {
-    const int fd = ::memfd_create("sweetspot-svg", MFD_CLOEXEC);
-    if (fd < 0) throw PlotFailure(std::string("cannot hold the plot: ") + std::strerror(errno));
-    struct Closer {
-      int fd;
-      ~Closer() { ::close(fd); }
-    } closer{fd};
-    run_gnuplot(script, fd);
-    std::string svg;
-    std::array<char, 1 << 16> buffer{};
-    for (off_t at = 0;;) {
-      const ssize_t n = ::pread(fd, buffer.data(), buffer.size(), at);
-      if (n < 0 && errno == EINTR) continue;
-      if (n < 0) throw PlotFailure(std::string("cannot read the plot: ") + std::strerror(errno));
-      if (n == 0) break;
-      svg.append(buffer.data(), static_cast<std::size_t>(n));
-      at += n;
-    }
+    std::string svg = gnuplot_output_in_memory(script, "sweetspot-svg", false);
     const std::size_t start = svg.find("<svg");
     const std::size_t end = svg.rfind("</svg>");
     if (start == std::string::npos || end == std::string::npos || end < start)
