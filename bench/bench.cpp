@@ -35,7 +35,7 @@
 #include "sweetspot/evaluate.hpp"
 #include "sweetspot/string_bed.hpp"
 
-namespace sweetspot::io {
+namespace sweetspot::bench {
 namespace {
 
 namespace fs = std::filesystem;
@@ -63,11 +63,13 @@ std::string cpu_model() {
 
 // Which algorithms make sense for a study: constraint-taking ones only when
 // it has constraints; derivative-based ones only when it is smooth.
-std::vector<std::string> algorithms_for(const Study& study, const Problem& problem) {
+std::vector<std::string> algorithms_for(const studies::Study& study,
+                                        const optimizer::Problem& problem) {
   std::vector<std::string> list{"auto"};
   const bool constrained = !study.constraints.empty();
-  const bool equality = std::any_of(study.constraints.begin(), study.constraints.end(),
-                                    [](const StudyConstraint& c) { return c.equals.has_value(); });
+  const bool equality =
+      std::any_of(study.constraints.begin(), study.constraints.end(),
+                  [](const studies::StudyConstraint& c) { return c.equals.has_value(); });
   if (problem.smooth) list.push_back("LD_SLSQP");
   if (problem.smooth && !equality) list.push_back("LD_MMA");
   list.push_back("LN_COBYLA");
@@ -231,15 +233,15 @@ std::string bench_maps(const BenchOptions& options, std::ostream& log) {
         std::tuple{"rigid, duration from the string tension", &tension, Fidelity::kRigid},
         std::tuple{"modal (vibration energy; modes solved once)", &flexible, Fidelity::kModal},
         std::tuple{"collision (one solved collision per point)", &strung, Fidelity::kCollision}}) {
-    StringBedMapOptions grid;
+    studies::StringBedMapOptions grid;
     grid.columns = 50;
     grid.rows = 50;
     grid.fidelity = fidelity;
     std::size_t on_bed = 0;
     const double seconds = median_seconds(options.repeats, [&, design = design] {
-      const StringBedMap map = string_bed_map(*design, grid);
+      const studies::StringBedMap map = string_bed_map(*design, grid);
       on_bed = 0;
-      for (const StringBedMapPoint& p : map.points) on_bed += p.on_bed ? 1 : 0;
+      for (const studies::StringBedMapPoint& p : map.points) on_bed += p.on_bed ? 1 : 0;
     });
     md += fmt::format("| {} | {:.2f} | {:.2f} |\n", name, seconds * 1e3,
                       seconds * 1e6 / static_cast<double>(on_bed));
@@ -249,11 +251,11 @@ std::string bench_maps(const BenchOptions& options, std::ostream& log) {
   // the three maps drawn by gnuplot as inline SVG (one gnuplot run per plot).
   const fs::path page_design = fs::path(options.designs_dir) / "racquets" / "tour-100.json";
   if (fs::exists(page_design)) {
-    const DesignFile file = load_design(page_design.string());
-    const Json document = read_json_file(page_design.string());
+    const io::DesignFile file = io::load_design(page_design.string());
+    const io::Json document = io::read_json_file(page_design.string());
     std::string page;
-    const double seconds =
-        median_seconds(options.repeats, [&] { page = design_html_report(file, document); });
+    const double seconds = median_seconds(
+        options.repeats, [&] { page = reports::design_html_report(file, document); });
     std::size_t figures = 0;
     for (std::size_t at = page.find("<svg"); at != std::string::npos;
          at = page.find("<svg", at + 1))
@@ -271,9 +273,9 @@ std::string bench_maps(const BenchOptions& options, std::ostream& log) {
 void require_bench_speed_inputs(const BenchOptions& options) {
   const fs::path studies = fs::path(options.designs_dir) / "studies";
   if (!fs::is_directory(studies)) {
-    throw InputError(studies.string(), "",
-                     "not a folder of studies (bench speed times every study in "
-                     "DESIGNS/studies; give the designs folder with --designs)");
+    throw io::InputError(studies.string(), "",
+                         "not a folder of studies (bench speed times every study in "
+                         "DESIGNS/studies; give the designs folder with --designs)");
   }
 }
 
@@ -350,8 +352,8 @@ void bench_speed(const BenchOptions& options, std::ostream& log) {
   // In-process, one core: a sweep's points set on the compiled design,
   // against the same read from JSON (the path they took before, kept as the
   // reference the tests compare with).
-  const Study every_point = read_study(
-      Json::parse(
+  const studies::Study every_point = studies::read_study(
+      io::Json::parse(
           R"({"design": {"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8},
           "strings": {"impact_duration_ms": 4}, "hand": {"mass_kg": 0.5, "center_from_butt_m": 0.07},
           "forearm": {"equivalent_mass_kg": 0.5}, "impact": {"from_tip_m": 0.05}},
@@ -362,8 +364,9 @@ void bench_speed(const BenchOptions& options, std::ostream& log) {
   const auto sweep_us = [&](bool compiled) {
     const double seconds = median_seconds(options.repeats, [&] {
       std::ostringstream csv;
-      run_sweep(
-          every_point, csv, [](std::size_t, std::size_t) {}, SweepOptions{1, true, compiled});
+      studies::run_sweep(
+          every_point, csv, [](std::size_t, std::size_t) {},
+          studies::SweepOptions{1, true, compiled});
       sink += static_cast<double>(csv.str().size());
     });
     return seconds / 1e5 * 1e6;
@@ -377,7 +380,7 @@ void bench_speed(const BenchOptions& options, std::ostream& log) {
   for (const auto& [name, ns] :
        {std::pair{"rigid_outcomes", cases_ns}, std::pair{"rigid_outcomes_arrays", arrays_ns},
         std::pair{"evaluate_unchecked", rigid_ns}, std::pair{"ImpactSweep::at", sweep_ns}}) {
-    csv += fmt::format("{},{},{}\n", name, exact(ns), exact(1e3 / ns));
+    csv += fmt::format("{},{},{}\n", name, io::exact(ns), io::exact(1e3 / ns));
   }
   if (!cli.csv.empty()) csv += "\n" + cli.csv;
   csv += "\nstudy,algorithm,evaluations,median_ms,objective,feasible,excess_over_best\n";
@@ -441,9 +444,9 @@ void bench_speed(const BenchOptions& options, std::ostream& log) {
   }
   std::sort(files.begin(), files.end());
   for (const fs::path& path : files) {
-    if (!read_json_file(path.string()).contains("objective")) continue;
-    Study study = load_study(path.string());
-    const Problem problem = make_problem(study);
+    if (!io::read_json_file(path.string()).contains("objective")) continue;
+    studies::Study study = studies::load_study(path.string());
+    const optimizer::Problem problem = studies::make_problem(study);
     struct Row {
       std::string algorithm;
       int evaluations;
@@ -453,22 +456,22 @@ void bench_speed(const BenchOptions& options, std::ostream& log) {
     std::vector<Row> rows;
     for (const std::string& algorithm : algorithms_for(study, problem)) {
       study.options.algorithm = algorithm;
-      std::optional<OptimizationResult> result;
-      const double seconds =
-          median_seconds(options.repeats, [&] { result.emplace(run_optimization(study)); });
+      std::optional<studies::OptimizationResult> result;
+      const double seconds = median_seconds(
+          options.repeats, [&] { result.emplace(studies::run_optimization(study)); });
       rows.push_back({algorithm, result->summary.evaluations, seconds * 1e3,
                       result->summary.objective, result->summary.feasible});
       const std::string stem = path.stem().string();
       if (algorithm == "auto" && (stem.starts_with("1-") || stem.starts_with("3a-"))) {
         // The same run with every evaluation read from JSON, as before the designs were compiled.
-        const std::shared_ptr<const CompiledDesign> compiled = study.compiled;
+        const std::shared_ptr<const studies::CompiledDesign> compiled = study.compiled;
         study.compiled.reset();
         const double json_ms =
-            median_seconds(options.repeats, [&] { run_optimization(study); }) * 1e3;
+            median_seconds(options.repeats, [&] { studies::run_optimization(study); }) * 1e3;
         study.compiled = compiled;
         study.options.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
         const double threads_ms =
-            median_seconds(options.repeats, [&] { run_optimization(study); }) * 1e3;
+            median_seconds(options.repeats, [&] { studies::run_optimization(study); }) * 1e3;
         study.options.threads = 1;
         (stem.starts_with("1-") ? study1 : study3a) =
             StudyTiming{seconds * 1e3, json_ms, threads_ms};
@@ -481,9 +484,10 @@ void bench_speed(const BenchOptions& options, std::ostream& log) {
     for (const Row& r : rows) {
       const double excess = (r.objective - best) / std::max(std::abs(best), 1e-300);
       csv += fmt::format("{},{},{},{},{},{},{}\n", path.stem().string(), r.algorithm, r.evaluations,
-                         exact(r.ms), exact(r.objective), r.feasible ? "yes" : "no", exact(excess));
+                         io::exact(r.ms), io::exact(r.objective), r.feasible ? "yes" : "no",
+                         io::exact(excess));
       md += fmt::format("| {} | {} | {} | {:.2f} | {} | {} |\n", path.stem().string(), r.algorithm,
-                        r.evaluations, r.ms, significant(r.objective),
+                        r.evaluations, r.ms, io::significant(r.objective),
                         r.feasible ? fmt::format("{:.1e}", excess) : std::string("infeasible"));
       if (r.algorithm == "auto") {
         log << fmt::format("{}: auto {} evaluations, {:.2f} ms\n", path.stem().string(),
@@ -533,8 +537,8 @@ void bench_speed(const BenchOptions& options, std::ostream& log) {
     const double error = e.peak_wrist_force_N / reference.peak_wrist_force_N - 1.0;
     md += fmt::format("| {} | {:.2f} | {:.3f} | {:.1f} | {:+.1f} % |\n", name, us, e.cor,
                       e.peak_wrist_force_N, 100 * error);
-    csv += fmt::format("{},{},{},{},{}\n", name, exact(us), exact(e.cor),
-                       exact(e.peak_wrist_force_N), exact(error));
+    csv += fmt::format("{},{},{},{},{}\n", name, io::exact(us), io::exact(e.cor),
+                       io::exact(e.peak_wrist_force_N), io::exact(error));
     log << fmt::format("fidelity {}: {:.2f} us per evaluation\n", name, us);
   }
   {
@@ -555,8 +559,8 @@ void bench_speed(const BenchOptions& options, std::ostream& log) {
     const double error = e.peak_wrist_force_N / reference.peak_wrist_force_N - 1.0;
     md += fmt::format("| collision | {:.2f} | {:.3f} | {:.1f} | {:+.1f} % |\n", us, e.cor,
                       e.peak_wrist_force_N, 100 * error);
-    csv += fmt::format("collision,{},{},{},{}\n", exact(us), exact(e.cor),
-                       exact(e.peak_wrist_force_N), exact(error));
+    csv += fmt::format("collision,{},{},{},{}\n", io::exact(us), io::exact(e.cor),
+                       io::exact(e.peak_wrist_force_N), io::exact(error));
     log << fmt::format("fidelity collision: {:.2f} us per evaluation\n", us);
   }
   md += fmt::format(
@@ -570,10 +574,11 @@ void bench_speed(const BenchOptions& options, std::ostream& log) {
       sink);
   md += bench_maps(options, log);
   fs::create_directories(options.out_dir);
-  write_file_atomically(options.out_dir + "/speed-vs-error.md", md);
-  write_file_atomically(options.out_dir + "/speed-vs-error.csv", csv);
+  io::write_file_atomically(options.out_dir + "/speed-vs-error.md", md);
+  io::write_file_atomically(options.out_dir + "/speed-vs-error.csv", csv);
   std::string why;
-  if (cli.plot && !render_png(*cli.plot, options.out_dir + "/speed-vs-error-threads.png", &why)) {
+  if (cli.plot &&
+      !io::render_png(*cli.plot, options.out_dir + "/speed-vs-error-threads.png", &why)) {
     log << "skipped the plot: " << why << "\n";
   }
   log << fmt::format("wrote {}/speed-vs-error.md, .csv and -threads.png\n", options.out_dir);
@@ -589,7 +594,7 @@ void bench_modes(const BenchOptions& options, std::ostream& log) {
       "| method | resolution | elements | time per solve (us) | f1 relative error | node error (m) "
       "| "
       "observed order | reference |\n|---|---|---:|---:|---:|---:|---:|---|\n";
-  std::map<std::string, PlotSeries> series;
+  std::map<std::string, io::PlotSeries> series;
   std::vector<std::string> order;
   while (std::getline(lines, line)) {
     std::vector<std::string> f;
@@ -601,19 +606,19 @@ void bench_modes(const BenchOptions& options, std::ostream& log) {
                          f[5], f[7], f[8], f[9]);
     if (!series.count(f[0])) {
       order.push_back(f[0]);
-      series[f[0]] = PlotSeries{f[0], {}, {}, "linespoints lw 2 pt 7"};
+      series[f[0]] = io::PlotSeries{f[0], {}, {}, "linespoints lw 2 pt 7"};
     }
     series[f[0]].x.push_back(std::stod(f[3]));
     series[f[0]].y.push_back(std::stod(f[5]));
   }
-  Plot plot{"Speed against error of the modal solvers (f1 of the study racquet)",
-            "wall time per solve (us, one core)",
-            "relative error of f1",
-            std::nullopt,
-            std::nullopt,
-            {},
-            {},
-            {}};
+  io::Plot plot{"Speed against error of the modal solvers (f1 of the study racquet)",
+                "wall time per solve (us, one core)",
+                "relative error of f1",
+                std::nullopt,
+                std::nullopt,
+                {},
+                {},
+                {}};
   plot.log_x = plot.log_y = true;
   plot.key_position = "outside right";
   for (const std::string& name : order) {
@@ -647,13 +652,13 @@ void bench_modes(const BenchOptions& options, std::ostream& log) {
       "matters (the paper's wood beam), not in an optimizer's loop.\n"
       "- `order` is log2 of the error ratio between consecutive meshes (mesh doubled).\n";
   fs::create_directories(options.out_dir);
-  write_file_atomically(options.out_dir + "/speed-vs-error-modes.csv", csv);
-  write_file_atomically(options.out_dir + "/speed-vs-error-modes.md", md);
+  io::write_file_atomically(options.out_dir + "/speed-vs-error-modes.csv", csv);
+  io::write_file_atomically(options.out_dir + "/speed-vs-error-modes.md", md);
   std::string why;
-  if (!render_png(plot, options.out_dir + "/speed-vs-error-modes.png", &why)) {
+  if (!io::render_png(plot, options.out_dir + "/speed-vs-error-modes.png", &why)) {
     log << "skipped the plot: " << why << "\n";
   }
   log << "wrote " << options.out_dir << "/speed-vs-error-modes.md, .csv and .png\n";
 }
 
-}  // namespace sweetspot::io
+}  // namespace sweetspot::bench

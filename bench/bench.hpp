@@ -12,7 +12,7 @@
 
 #include "io/plot.hpp"
 
-namespace sweetspot::io {
+namespace sweetspot::bench {
 
 struct BenchOptions {
   std::string designs_dir = "designs";
@@ -58,7 +58,7 @@ std::string bench_maps(const BenchOptions& options, std::ostream& log);
 struct ThroughputReport {
   std::string markdown;                // a section of speed-vs-error.md
   std::string csv;                     // its table
-  std::optional<Plot> plot;            // points per second against threads
+  std::optional<io::Plot> plot;        // points per second against threads
   double million_point_sweep_s = 0.0;  // on all cores
   double million_point_sweep_MB = 0.0;
   double every_point_sweep_s = 0.0;  // a million points, every one evaluated, on all cores
@@ -103,4 +103,4 @@ std::string speed_vs_error_modes_csv(double budget_ms);
 // Writes speed-vs-error-modes.md, .csv and .png into out_dir; logs a summary.
 void bench_modes(const BenchOptions& options, std::ostream& log);
 
-}  // namespace sweetspot::io
+}  // namespace sweetspot::bench

@@ -13,7 +13,7 @@
 #include "sweetspot/collision.hpp"
 #include "sweetspot/evaluate.hpp"
 
-namespace sweetspot::io {
+namespace sweetspot::bench {
 namespace {
 
 // This thread's CPU time [us]: on a machine shared with other work, the time
@@ -82,8 +82,9 @@ void bench_collision(const BenchOptions& options, std::ostream& log) {
       md += fmt::format("| {} | {} | {} | {:.1f} | {:.7f} | {:.1e} | {:.1e} | {:.1e} |\n", steps,
                         extrapolate ? "yes" : "no", r.steps, us, r.apparent_cor, error_tenth,
                         error_ref, r.contact_time_s - reference.contact_time_s);
-      csv += fmt::format("{},{},{},{},{},{},{}\n", steps, extrapolate ? 1 : 0, r.steps, exact(us),
-                         exact(r.apparent_cor), exact(error_tenth), exact(error_ref));
+      csv +=
+          fmt::format("{},{},{},{},{},{},{}\n", steps, extrapolate ? 1 : 0, r.steps, io::exact(us),
+                      io::exact(r.apparent_cor), io::exact(error_tenth), io::exact(error_ref));
       if (extrapolate && steps == CollisionOptions{}.steps_per_contact) {
         default_us = us;
         default_error = error_tenth;
@@ -102,10 +103,10 @@ void bench_collision(const BenchOptions& options, std::ostream& log) {
       default_us, default_error, modes_us, evaluate_us,
       default_us <= 50.0 && std::abs(default_error) <= 1e-6 ? "met" : "NOT met",
       default_us + modes_us <= 100.0 ? "met" : "NOT met");
-  write_file_atomically(options.out_dir + "/speed-vs-error-collision.md", md);
-  write_file_atomically(options.out_dir + "/speed-vs-error-collision.csv", csv);
+  io::write_file_atomically(options.out_dir + "/speed-vs-error-collision.md", md);
+  io::write_file_atomically(options.out_dir + "/speed-vs-error-collision.csv", csv);
   log << fmt::format("collision: {:.1f} us, error {:.1e}; wrote {}/speed-vs-error-collision.md\n",
                      default_us, default_error, options.out_dir);
 }
 
-}  // namespace sweetspot::io
+}  // namespace sweetspot::bench

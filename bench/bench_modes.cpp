@@ -74,7 +74,7 @@ std::pair<double, Fundamental> time_it(const std::function<Fundamental()>& solve
     us.push_back(t);
     spent += t;
   }
-  return {sweetspot::io::median(us), last};
+  return {sweetspot::bench::median(us), last};
 }
 
 struct Row {
@@ -100,7 +100,7 @@ void print(std::string& out, const std::vector<Row>& rows, const Fundamental& re
 
 }  // namespace
 
-namespace sweetspot::io {
+namespace sweetspot::bench {
 
 std::string speed_vs_error_modes_csv(double budget_ms) {
   std::string out;
@@ -190,4 +190,4 @@ std::string speed_vs_error_modes_csv(double budget_ms) {
   return out;
 }
 
-}  // namespace sweetspot::io
+}  // namespace sweetspot::bench

@@ -26,7 +26,7 @@
 
 extern char** environ;
 
-namespace sweetspot::io {
+namespace sweetspot::bench {
 namespace {
 
 namespace fs = std::filesystem;
@@ -133,8 +133,8 @@ std::vector<Workload> workloads(const fs::path& dir) {
 
 std::vector<int> thread_counts() {
   std::vector<int> counts;
-  for (int t = 1; t < all_cores(); t *= 2) counts.push_back(t);
-  counts.push_back(all_cores());
+  for (int t = 1; t < io::all_cores(); t *= 2) counts.push_back(t);
+  counts.push_back(io::all_cores());
   return counts;
 }
 
@@ -161,20 +161,20 @@ ThroughputReport bench_throughput(const BenchOptions& options, std::ostream& log
       "speed-up | "
       "peak memory (MB) |\n|---|---:|---:|---:|---:|---:|---:|---:|\n";
   report.markdown = fmt::format(fmt::runtime(report.markdown), options.repeats);
-  Plot plot{"Command-line throughput against threads",
-            "threads",
-            "points per second (millions)",
-            std::nullopt,
-            std::nullopt,
-            {},
-            {},
-            {}};
+  io::Plot plot{"Command-line throughput against threads",
+                "threads",
+                "points per second (millions)",
+                std::nullopt,
+                std::nullopt,
+                {},
+                {},
+                {}};
   plot.log_y = true;
   plot.integer_x_tics = true;  // threads are counted
   plot.key_position = "outside bottom";
   try {
     for (const Workload& w : workloads(dir)) {
-      PlotSeries series{w.name, {}, {}, "linespoints lw 2 pt 7"};
+      io::PlotSeries series{w.name, {}, {}, "linespoints lw 2 pt 7"};
       double one_thread_s = 0.0;
       for (const int threads : thread_counts()) {
         std::vector<std::string> args = w.args;
@@ -189,9 +189,10 @@ ThroughputReport bench_throughput(const BenchOptions& options, std::ostream& log
         const double s = median(seconds);
         if (threads == 1) one_thread_s = s;
         const double rate = w.points / s;
-        report.csv += fmt::format("{},{},{},{},{},{},{},{}\n", w.name, w.points, threads, exact(s),
-                                  exact(rate / 1e6), exact(s / w.points * 1e9),
-                                  exact(one_thread_s / s), exact(rss_MB));
+        report.csv +=
+            fmt::format("{},{},{},{},{},{},{},{}\n", w.name, w.points, threads, io::exact(s),
+                        io::exact(rate / 1e6), io::exact(s / w.points * 1e9),
+                        io::exact(one_thread_s / s), io::exact(rss_MB));
         report.markdown +=
             fmt::format("| {} | {} | {} | {:.3f} | {:.2f} million | {:.3f} | {:.2f} | {:.1f} |\n",
                         threads == 1 ? w.what : "", w.points, threads, s, rate / 1e6,
@@ -199,11 +200,12 @@ ThroughputReport bench_throughput(const BenchOptions& options, std::ostream& log
         series.x.push_back(threads);
         series.y.push_back(rate / 1e6);
         log << fmt::format("{} on {} threads: {:.3f} s, {:.1f} MB\n", w.name, threads, s, rss_MB);
-        if (w.name == "sweep-impact" && threads == all_cores()) {
+        if (w.name == "sweep-impact" && threads == io::all_cores()) {
           report.million_point_sweep_s = s;
           report.million_point_sweep_MB = rss_MB;
         }
-        if (w.name == "sweep-every-point" && threads == all_cores()) report.every_point_sweep_s = s;
+        if (w.name == "sweep-every-point" && threads == io::all_cores())
+          report.every_point_sweep_s = s;
         if (w.name == "sweep-every-point" && threads == 1) report.every_point_sweep_1_thread_s = s;
         if (w.name == "batch-csv" && threads == 1) report.batch_1_thread_s = s;
       }
@@ -293,4 +295,4 @@ PeerFigures bench_peers(const BenchOptions& options, std::ostream& log) {
   return peers;
 }
 
-}  // namespace sweetspot::io
+}  // namespace sweetspot::bench

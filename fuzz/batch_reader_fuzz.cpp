@@ -1,5 +1,5 @@
 // libFuzzer target: arbitrary bytes as a catalogue for `evaluate --batch`,
-// through sweetspot::io::run_batch on a stream, as CSV (a header naming design
+// through sweetspot::studies::run_batch on a stream, as CSV (a header naming design
 // fields, then rows) or as JSON Lines (one design object per line), each row
 // laid over a base design.
 //
@@ -70,18 +70,20 @@ bool holds_nan(const std::string& csv) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
   const std::string source = "fuzz-batch";
-  sweetspot::io::BatchOptions options;
+  sweetspot::studies::BatchOptions options;
   std::string_view body = text;
   if (body.starts_with("\xEF\xBB\xBF")) body.remove_prefix(3);
-  options.input = body.empty() || body.front() != '{' ? sweetspot::io::CatalogueFormat::kCsv
-                                                      : sweetspot::io::CatalogueFormat::kJsonLines;
+  options.input = body.empty() || body.front() != '{'
+                      ? sweetspot::studies::CatalogueFormat::kCsv
+                      : sweetspot::studies::CatalogueFormat::kJsonLines;
   options.base = sweetspot::io::parse_json(kBase, "base.json");
   options.format = size % 2 == 0 ? sweetspot::io::Format::kCsv : sweetspot::io::Format::kJson;
   options.threads = 1;
   std::istringstream in(text);
   std::ostringstream out;
   try {
-    const sweetspot::io::BatchSummary summary = sweetspot::io::run_batch(in, source, options, out);
+    const sweetspot::studies::BatchSummary summary =
+        sweetspot::studies::run_batch(in, source, options, out);
     if (summary.failed > summary.rows) std::abort();
   } catch (const sweetspot::io::InputError& refused) {
     if (std::string_view(refused.what()).substr(0, source.size()) != source) std::abort();

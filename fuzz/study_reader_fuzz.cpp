@@ -30,13 +30,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string source = "fuzz-study.json";
   try {
     const sweetspot::io::Json document = sweetspot::io::parse_json(text, source);
-    const sweetspot::io::Study study =
-        sweetspot::io::read_study(document, source, SWEETSPOT_FUZZ_STUDY_DIR);
+    const sweetspot::studies::Study study =
+        sweetspot::studies::read_study(document, source, SWEETSPOT_FUZZ_STUDY_DIR);
     // Every accepted study has a valid start: its objective is a number.
     std::vector<double> start;
-    for (const sweetspot::io::StudyVariable& v : study.variables) start.push_back(v.start);
-    const sweetspot::io::DesignFile design = sweetspot::io::design_at(study, start);
-    (void)sweetspot::io::objective_of(study, design);
+    for (const sweetspot::studies::StudyVariable& v : study.variables) start.push_back(v.start);
+    const sweetspot::io::DesignFile design = sweetspot::studies::design_at(study, start);
+    (void)sweetspot::studies::objective_of(study, design);
   } catch (const sweetspot::io::InputError& refused) {
     // Refused with a source: the study, or the design file it names.
     if (std::string_view(refused.what()).empty()) std::abort();

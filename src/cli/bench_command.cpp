@@ -32,14 +32,14 @@ void BenchCommand::add_to(CLI::App& app) {
 }
 
 int BenchCommand::run() const {
-  io::BenchOptions with_exe = options;
+  bench::BenchOptions with_exe = options;
   std::error_code no_exe;  // the command-line figures run this very program
   with_exe.executable = std::filesystem::read_symlink("/proc/self/exe", no_exe).string();
   if (what == "map" && command->count("--out")) {
     throw CLI::ValidationError("--out: not with bench map (its table goes to standard output)");
   }
   // The inputs first, then the outputs, before the benchmark runs.
-  if (what == "speed" || what == "all") io::require_bench_speed_inputs(options);
+  if (what == "speed" || what == "all") bench::require_bench_speed_inputs(options);
   if (what != "map") {
     // The folder is checked before the benchmark runs, not after.
     OutputPlan plan;
@@ -48,12 +48,12 @@ int BenchCommand::run() const {
     plan.write_folder("--out", options.out_dir);
   }
   if (what == "map") {
-    std::cout << io::bench_maps(with_exe, std::cout);
+    std::cout << bench::bench_maps(with_exe, std::cout);
     return kExitOk;
   }
-  if (what == "speed" || what == "all") io::bench_speed(with_exe, std::cout);
-  if (what == "modes" || what == "all") io::bench_modes(with_exe, std::cout);
-  if (what == "collision" || what == "all") io::bench_collision(with_exe, std::cout);
+  if (what == "speed" || what == "all") bench::bench_speed(with_exe, std::cout);
+  if (what == "modes" || what == "all") bench::bench_modes(with_exe, std::cout);
+  if (what == "collision" || what == "all") bench::bench_collision(with_exe, std::cout);
   return kExitOk;
 }
 

@@ -147,7 +147,7 @@ struct ResponseCommand {
 struct BenchCommand {
   CLI::App* command = nullptr;
   std::string what = "all";
-  io::BenchOptions options;
+  bench::BenchOptions options;
 
   void add_to(CLI::App& app);
   int run() const;

@@ -27,8 +27,8 @@ namespace {
 
 // evaluate --batch: exit 0 when every row evaluated, 1 when some failed.
 int run_batch(const EvaluateCommand& c) {
-  io::BatchOptions options;
-  options.input = io::catalogue_format(c.batch_path);
+  studies::BatchOptions options;
+  options.input = studies::catalogue_format(c.batch_path);
   if (!c.batch_base.empty()) {
     options.base = io::read_json_file(c.batch_base);
     // A base that is not a valid design on its own is the caller's error, not every row's.
@@ -42,10 +42,11 @@ int run_batch(const EvaluateCommand& c) {
   if (!c.batch_map.empty()) {
     // COLUMN=field,... inline; anything else is a JSON file holding the map.
     if (c.batch_map.find('=') != std::string::npos) {
-      options.map = io::parse_column_map(c.batch_map, "--map");
+      options.map = studies::parse_column_map(c.batch_map, "--map");
     } else {
       options.map_source = io::input_name(c.batch_map);
-      options.map = io::column_map_from_json(io::read_json_file(c.batch_map), options.map_source);
+      options.map =
+          studies::column_map_from_json(io::read_json_file(c.batch_map), options.map_source);
     }
   }
   options.sort_output = c.batch_sort;
@@ -71,7 +72,7 @@ int run_batch(const EvaluateCommand& c) {
     progress.update(rows, 0,
                     size > 0 ? static_cast<double>(bytes) / static_cast<double>(size) : -1.0);
   };
-  io::BatchSummary summary;
+  studies::BatchSummary summary;
   io::OutputSet outputs;
   if (c.batch_path == "-") {
     // Through a file buffer, which reports a read error as one (std::cin's
@@ -80,7 +81,7 @@ int run_batch(const EvaluateCommand& c) {
     std::istream& input = in ? in : std::cin;
     c.out.emit_stream(
         [&](std::ostream& out) {
-          summary = io::run_batch(input, "(standard input)", options, out);
+          summary = studies::run_batch(input, "(standard input)", options, out);
         },
         outputs);
   } else {
@@ -97,7 +98,7 @@ int run_batch(const EvaluateCommand& c) {
                                (errno ? std::string(": ") + std::strerror(errno) : ""));
     }
     c.out.emit_stream(
-        [&](std::ostream& out) { summary = io::run_batch(in, c.batch_path, options, out); },
+        [&](std::ostream& out) { summary = studies::run_batch(in, c.batch_path, options, out); },
         outputs);
   }
   progress.finish();

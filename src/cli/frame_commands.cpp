@@ -59,13 +59,14 @@ int ModesCommand::run() const {
   out.plan(plan);
   if (!plot.empty()) plan.write("--plot", plot);
   const io::DesignFile design = io::load_design(design_path);
-  const auto data = io::compute_modes(
+  const auto data = reports::compute_modes(
       design, modes, tolerance,
       method == "fe" ? ModeOptions::Method::kFiniteElement : ModeOptions::Method::kExact);
   io::OutputSet outputs;
-  out.emit(io::modes_report(data, out.parsed()), outputs);
+  out.emit(reports::modes_report(data, out.parsed()), outputs);
   if (!plot.empty()) {
-    if (const int failed = render_or_warn(io::modes_plot(data), plot, outputs); failed != kExitOk)
+    if (const int failed = render_or_warn(reports::modes_plot(data), plot, outputs);
+        failed != kExitOk)
       return failed;
   }
   outputs.commit();
@@ -123,16 +124,16 @@ int ResponseCommand::run() const {
     require_plot_stem("--plot", plot);
     for (const double x : at) plan.write("--plot", plot_png(plot, x));
   }
-  io::ResponseRequest request;
+  reports::ResponseRequest request;
   request.points_from_butt_m = at;
   request.impacts_from_butt_m = impacts;
   request.hand_held = held;
   request.until_s = until_ms / 1e3;
-  const auto data = io::compute_response(design, request);
+  const auto data = reports::compute_response(design, request);
   io::OutputSet outputs;
-  OutputOptions{"csv", csv_path}.emit(io::response_csv(data), outputs);
+  OutputOptions{"csv", csv_path}.emit(reports::response_csv(data), outputs);
   if (!plot.empty()) {
-    const auto plots = io::response_plots(data);
+    const auto plots = reports::response_plots(data);
     for (std::size_t k = 0; k < plots.size(); ++k) {
       // The first plot that cannot be made ends the run: one message, exit 1, nothing written.
       if (const int failed = render_or_warn(plots[k], plot_png(plot, at[k]), outputs);

@@ -60,35 +60,36 @@ int MapCommand::run() const {
   if (!plot.empty()) {
     require_plot_stem("--plot", plot);
     // Every heat map the map may have (feel only with the frame's stiffness).
-    for (const io::MapQuantity quantity :
-         {io::MapQuantity::kPower, io::MapQuantity::kShock, io::MapQuantity::kFeel})
-      plan.write("--plot", plot_file(plot, "-" + io::map_quantity_name(quantity)));
+    for (const reports::MapQuantity quantity :
+         {reports::MapQuantity::kPower, reports::MapQuantity::kShock, reports::MapQuantity::kFeel})
+      plan.write("--plot", plot_file(plot, "-" + reports::map_quantity_name(quantity)));
   }
   const io::DesignFile design = io::load_design(design_path);
-  io::StringBedMapOptions options;
+  studies::StringBedMapOptions options;
   options.columns = columns;
   options.rows = rows;
   options.threads = threads;
   Progress progress("grid points", !quiet);
   options.progress = [&](std::size_t done, std::size_t total) { progress.update(done, total); };
-  io::StringBedMap map;
+  studies::StringBedMap map;
   try {
     const std::string name = command->count("--fidelity") ? fidelity : design.fidelity;
     options.fidelity = resolve_fidelity(name == "response" ? "modal" : name, design.design);
     if (options.fidelity == Fidelity::kResponse) options.fidelity = Fidelity::kModal;
-    map = io::string_bed_map(design.design, options);
+    map = studies::string_bed_map(design.design, options);
   } catch (const std::invalid_argument& e) {
     io::rethrow_in(design, e);
   }
   progress.finish();
   const double length_m = design.design.implement.length_m();
   io::OutputSet outputs;
-  out.emit(io::string_bed_map_csv(map, length_m), outputs);
+  out.emit(reports::string_bed_map_csv(map, length_m), outputs);
   if (!plot.empty()) {
-    for (const io::MapQuantity quantity : io::map_quantities(map)) {
-      const std::string png = plot_file(plot, "-" + io::map_quantity_name(quantity));
+    for (const reports::MapQuantity quantity : reports::map_quantities(map)) {
+      const std::string png = plot_file(plot, "-" + reports::map_quantity_name(quantity));
       if (const int failed = render_script_or_warn(
-              io::string_bed_heat_map_script(map, quantity, length_m, design.name), png, outputs);
+              reports::string_bed_heat_map_script(map, quantity, length_m, design.name), png,
+              outputs);
           failed != kExitOk)
         return failed;
     }

@@ -15,11 +15,11 @@
 #include "io/atomic_file.hpp"
 #include "io/input_error.hpp"
 #include "io/parallel.hpp"
+#include "optimizer/optimize.hpp"
 #include "reports/optimization_report.hpp"
 #include "studies/optimization.hpp"
 #include "studies/study.hpp"
 #include "studies/sweep.hpp"
-#include "sweetspot/optimize.hpp"
 
 namespace sweetspot::cli {
 
@@ -40,7 +40,7 @@ void OptimizeCommand::add_to(CLI::App& app) {
                    "Threads for independent evaluations (differences, samples of the box) when "
                    "one costs over 0.1 ms, as the modal and collision models do (default: all "
                    "cores); the search and its answer are the same whatever the threads")
-      ->check(CLI::Range(1, kMaxThreads));
+      ->check(CLI::Range(1, optimizer::kMaxThreads));
   command->footer(
       "Examples:\n"
       "  sweetspot optimize designs/studies/1-lowest-wrist-force-table1-ranges.json\n"
@@ -49,7 +49,7 @@ void OptimizeCommand::add_to(CLI::App& app) {
 }
 
 int OptimizeCommand::run() const {
-  io::Study study = io::load_study(study_path);
+  studies::Study study = studies::load_study(study_path);
   OutputPlan plan;
   plan.read(study_path);
   plan.read(study.design_source);
@@ -57,7 +57,7 @@ int OptimizeCommand::run() const {
   if (!html.empty()) plan.write("--html", html);
   if (!plot.empty()) plan.write("--plot", plot);
   study.options.threads = threads;
-  const io::OptimizationResult result = io::run_optimization(study);
+  const studies::OptimizationResult result = studies::run_optimization(study);
   // The report is complete whatever the outcome: an infeasible study's names
   // the least violating design and each violated constraint. It is not the
   // answer asked for, so it never replaces an --output file: it goes to
@@ -66,12 +66,12 @@ int OptimizeCommand::run() const {
   // a defect of sweetspot, never an answer: the report (with the printed
   // design's values) goes to standard output and the run ends with exit 1.
   const bool consistent = result.inconsistency.empty();
-  const bool optimum = result.outcome == io::Outcome::kOptimum && consistent;
-  const std::string report = io::optimization_report(study, result, out.parsed(), true);
+  const bool optimum = result.outcome == studies::Outcome::kOptimum && consistent;
+  const std::string report = reports::optimization_report(study, result, out.parsed(), true);
   io::OutputSet outputs;
   if (optimum && !html.empty()) {
     if (!out.output.empty()) out.emit(report, outputs);
-    outputs.write(html, io::optimization_html(study, result));
+    outputs.write(html, reports::optimization_html(study, result));
   } else if (optimum) {
     out.emit(report, outputs);
   } else {
@@ -80,8 +80,9 @@ int OptimizeCommand::run() const {
   if (out.parsed() == io::Format::kMarkdown && !out.output.empty() && optimum) {
     std::cerr << result.summary.brief_report() << "\n";
   }
-  const int plotted =
-      plot.empty() ? kExitOk : render_or_warn(io::convergence_plot(study, result), plot, outputs);
+  const int plotted = plot.empty()
+                          ? kExitOk
+                          : render_or_warn(reports::convergence_plot(study, result), plot, outputs);
   if (plotted != kExitOk) return plotted;  // a file that could not be written comes first
   outputs.commit();
   if (optimum && !html.empty()) say_written(html);
@@ -98,14 +99,14 @@ int OptimizeCommand::run() const {
     return kExitRuntimeError;
   }
   switch (result.outcome) {
-    case io::Outcome::kOptimum:
+    case studies::Outcome::kOptimum:
       return kExitOk;
-    case io::Outcome::kInfeasible:
+    case studies::Outcome::kInfeasible:
       std::cerr << "sweetspot: " << io::one_line(study.source)
                 << ": no design meets the constraints; " << where << " the least violating one"
                 << kept << "\n";
       return kExitInfeasible;
-    case io::Outcome::kNoValue:
+    case studies::Outcome::kNoValue:
       std::cerr << "sweetspot: " << io::one_line(study.source)
                 << ": no valid design was found: " << result.no_value << kept << "\n";
       return kExitInfeasible;
@@ -181,7 +182,7 @@ class JsonLinesFromCsv : public std::streambuf {
 };
 
 // The plot of the sweep's k-th output: FILE, or FILE-<output>.png for several.
-std::string sweep_png(const io::Study& study, const std::string& plot, std::size_t k) {
+std::string sweep_png(const studies::Study& study, const std::string& plot, std::size_t k) {
   return study.sweep_outputs.size() > 1
              ? plot_file(plot, "-" + std::string(study.sweep_outputs[k]->name))
              : plot;
@@ -215,7 +216,7 @@ void SweepCommand::add_to(CLI::App& app) {
 }
 
 int SweepCommand::run() const {
-  const io::Study study = io::load_study(study_path);
+  const studies::Study study = studies::load_study(study_path);
   OutputPlan plan;
   plan.read(study_path);
   plan.read(study.design_source);
@@ -225,7 +226,7 @@ int SweepCommand::run() const {
     for (std::size_t k = 0; k < study.sweep_outputs.size(); ++k)
       plan.write("--plot", sweep_png(study, plot, k));
   }
-  const io::SweepOptions options{threads};
+  const studies::SweepOptions options{threads};
   Progress shown("designs", !quiet);
   const auto progress = [&](std::size_t done, std::size_t total) {
     shown.update(done, total);
@@ -238,15 +239,16 @@ int SweepCommand::run() const {
         if (format == "json") {
           JsonLinesFromCsv json(out);
           std::ostream csv(&json);
-          plots = io::run_sweep(study, csv, progress, options);
+          plots = studies::run_sweep(study, csv, progress, options);
           csv.flush();
         } else {
-          plots = io::run_sweep(study, out, progress, options);
+          plots = studies::run_sweep(study, out, progress, options);
         }
       },
       outputs);
   if (!plot.empty() && plots.empty()) {
-    std::cerr << "sweetspot: no plot: the grid has more than " << io::kMaxPlotPoints << " points\n";
+    std::cerr << "sweetspot: no plot: the grid has more than " << studies::kMaxPlotPoints
+              << " points\n";
   }
   if (!plot.empty()) {
     for (std::size_t k = 0; k < plots.size(); ++k) {

@@ -620,7 +620,7 @@ std::string side_by_side_html(const std::vector<ComparedDesign>& designs) {
       "<div class=\"table-wrap\"><table id=\"compared\" class=\"side-by-side\"><thead><tr>"
       "<th>quantity (unit)</th>";
   for (const ComparedDesign& c : designs)
-    html += "<th class=\"num\">" + io::html_escape(c.design.name) + "</th>";
+    html += "<th class=\"num\">" + reports::html_escape(c.design.name) + "</th>";
   html += "</tr></thead><tbody>\n";
   for (const Row& row : rows()) {
     bool any = false;
@@ -629,10 +629,10 @@ std::string side_by_side_html(const std::vector<ComparedDesign>& designs) {
     const io::PeopleUnit unit = io::people_unit(row.unit);
     const bool tension = std::string_view(row.key) == "string_tension_N";
     const std::string shown_unit = tension ? "lb" : std::string(unit.unit);
-    html +=
-        fmt::format("<tr id=\"cmp-{}\"><td>{}{}<div class=\"means\"><code>{}</code></div></td>",
-                    row.key, io::html_escape(row.label),
-                    shown_unit.empty() ? "" : " (" + io::html_escape(shown_unit) + ")", row.key);
+    html += fmt::format("<tr id=\"cmp-{}\"><td>{}{}<div class=\"means\"><code>{}</code></div></td>",
+                        row.key, reports::html_escape(row.label),
+                        shown_unit.empty() ? "" : " (" + reports::html_escape(shown_unit) + ")",
+                        row.key);
     for (const ComparedDesign& c : designs) {
       const auto v = row.value(c);
       if (!v) {
@@ -642,7 +642,7 @@ std::string side_by_side_html(const std::vector<ComparedDesign>& designs) {
       const double people = tension ? *v / kNewtonsPerPound : *v * unit.factor;
       html += fmt::format("<td class=\"num\">{}<span class=\"si\">{}{}</span></td>",
                           io::significant(people, 4), io::significant(*v, 6),
-                          *row.unit ? " " + io::html_escape(row.unit) : std::string());
+                          *row.unit ? " " + reports::html_escape(row.unit) : std::string());
     }
     html += "</tr>\n";
   }
@@ -668,13 +668,13 @@ std::string wrist_along_frame_html(const std::vector<ComparedDesign>& designs) {
     const Fidelity fidelity = fidelity_of(designs[k].spots.asked.evaluation) == Fidelity::kCollision
                                   ? Fidelity::kCollision
                                   : Fidelity::kRigid;
-    const std::vector<io::FramePoint> curve =
-        io::frame_curves(designs[k].design.design, io::kFrameCurveStep_m, fidelity);
+    const std::vector<reports::FramePoint> curve =
+        reports::frame_curves(designs[k].design.design, reports::kFrameCurveStep_m, fidelity);
     // The key numbers the lines (a name would not fit a phone's layout);
     // the caption names them.
     io::PlotSeries series{std::to_string(k + 1), {}, {}, "lines lw 2.5"};
     series.color = io::plot_color(k);
-    for (const io::FramePoint& p : curve) {
+    for (const reports::FramePoint& p : curve) {
       series.x.push_back(p.from_tip_m * 100.0);
       series.y.push_back(p.peak_wrist_force_N);
       auto& cells = table[std::lround(p.from_tip_m * 1e4)];
@@ -691,8 +691,8 @@ std::string wrist_along_frame_html(const std::vector<ComparedDesign>& designs) {
   for (std::size_t k = 0; k < designs.size(); ++k)
     lines += fmt::format("{}<span class=\"swatch\" style=\"background: {}\"></span> {}: {}",
                          k == 0 ? "" : "; ", io::plot_color(k), k + 1,
-                         io::html_escape(designs[k].design.name));
-  std::string html = io::html_figure(
+                         reports::html_escape(designs[k].design.name));
+  std::string html = reports::html_figure(
       plot, "plot-wrist",
       "The peak force on the wrist (rigid model, Cross 2004 Eqs. 11 and 17) for a hit at each "
       "point along the frame, one line per design (" +
@@ -702,7 +702,7 @@ std::string wrist_along_frame_html(const std::vector<ComparedDesign>& designs) {
       "<table id=\"curve\"><thead><tr><th class=\"num\">impact from the tip (cm)</th>";
   for (std::size_t k = 0; k < designs.size(); ++k)
     html += fmt::format("<th class=\"num\">{}: {} (N)</th>", k + 1,
-                        io::html_escape(designs[k].design.name));
+                        reports::html_escape(designs[k].design.name));
   html += "</tr></thead><tbody>\n";
   for (const auto& [at, cells] : table) {
     html += fmt::format("<tr><td class=\"num\">{:.1f}</td>", static_cast<double>(at) / 100.0);
@@ -717,22 +717,23 @@ std::string wrist_along_frame_html(const std::vector<ComparedDesign>& designs) {
 }  // namespace
 
 std::string comparison_html(const std::vector<ComparedDesign>& designs) {
-  std::string html = io::html_page_open(
+  std::string html = reports::html_page_open(
       title_of(designs),
       "The designs side by side, each at its own impact and at its sweet spots.");
   html += "<section id=\"answer\"><h2>The answer</h2>\n<div class=\"answer\">\n";
   for (std::size_t k = 1; k < designs.size(); ++k) {
     std::string paragraph;
     for (const std::string& s : differences(designs[0], designs[k]))
-      paragraph += (paragraph.empty() ? "" : " ") + io::html_escape(s);
+      paragraph += (paragraph.empty() ? "" : " ") + reports::html_escape(s);
     html += "<p>" + paragraph + "</p>\n";
   }
   html +=
       "</div>\n<details><summary>Each design alone, as <code>sweetspot evaluate</code> says it"
       "</summary>\n<ul>\n";
   for (const ComparedDesign& c : designs) {
-    html += "<li><strong>" + io::html_escape(c.design.name) +
-            "</strong>: " + io::html_escape(sweet_spot_paragraph(c.design, c.spots)) + "</li>\n";
+    html += "<li><strong>" + reports::html_escape(c.design.name) +
+            "</strong>: " + reports::html_escape(sweet_spot_paragraph(c.design, c.spots)) +
+            "</li>\n";
   }
   html += "</ul></details></section>\n";
 
@@ -747,19 +748,19 @@ std::string comparison_html(const std::vector<ComparedDesign>& designs) {
       "on the left: the balance point (triangle), the hand-held COP (red dot), the node (blue "
       "diamond, when the frame's stiffness is known), the lead (orange) and the ball at the "
       "impact.</p>\n";
-  std::vector<io::DrawnRacquet> drawn;
+  std::vector<reports::DrawnRacquet> drawn;
   for (const ComparedDesign& c : designs)
-    drawn.push_back({&c.design, &c.spots.asked.evaluation, io::html_escape(c.design.name)});
-  html += io::racquets_to_scale_html(drawn, "drawing") + "</section>\n";
+    drawn.push_back({&c.design, &c.spots.asked.evaluation, reports::html_escape(c.design.name)});
+  html += reports::racquets_to_scale_html(drawn, "drawing") + "</section>\n";
 
   html += "<section id=\"frame\"><h2>Along the frame</h2>\n" + wrist_along_frame_html(designs) +
           "</section>\n";
 
   std::string sources;
   for (const ComparedDesign& c : designs)
-    sources +=
-        (sources.empty() ? "" : ", ") + ("<code>" + io::html_escape(c.design.source) + "</code>");
-  return html + io::html_page_close(
+    sources += (sources.empty() ? "" : ", ") +
+               ("<code>" + reports::html_escape(c.design.source) + "</code>");
+  return html + reports::html_page_close(
                     "Computed by sweetspot from " + sources +
                     ", after R. Cross, \"Center of percussion of hand-held implements\", Am. J. "
                     "Phys. 72 (2004). Positions are measured from the tip of the racquet.");

@@ -4,7 +4,7 @@
 
 #include "io/format.hpp"
 
-namespace sweetspot::io {
+namespace sweetspot::reports {
 namespace {
 
 constexpr const char* kStyle = R"(
@@ -68,7 +68,7 @@ footer { color: var(--muted); font-size: 0.88rem; margin-top: 2.5rem; }
 }  // namespace
 
 std::string html_escape(std::string_view text) {
-  const std::string chars = xml_chars(text);
+  const std::string chars = io::xml_chars(text);
   std::string out;
   out.reserve(chars.size());
   for (const char c : chars) {
@@ -117,7 +117,7 @@ std::string plot_text_for_html(std::string_view text) {
   for (const char c : text) {
     if (!((static_cast<unsigned char>(c) < 0x20 && c != '\t') || c == 0x7f)) out += c;
   }
-  return xml_chars(out);
+  return io::xml_chars(out);
 }
 
 std::string html_cm(double metres, int decimals) {
@@ -140,7 +140,7 @@ std::string html_page_close(std::string_view footer_html) {
   return "<footer>" + std::string(footer_html) + "</footer>\n</main>\n</body>\n</html>\n";
 }
 
-std::string html_figure(const Plot& plot, const std::string& id, const std::string& caption) {
+std::string html_figure(const io::Plot& plot, const std::string& id, const std::string& caption) {
   std::string why;
   const auto wide = render_svg(plot, id + "-w-", &why, 960, 560);
   const auto narrow = wide ? render_svg(plot, id + "-n-", &why, 520, 460) : std::nullopt;
@@ -152,4 +152,4 @@ std::string html_figure(const Plot& plot, const std::string& id, const std::stri
                      caption);
 }
 
-}  // namespace sweetspot::io
+}  // namespace sweetspot::reports

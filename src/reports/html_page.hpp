@@ -11,7 +11,7 @@
 
 #include "io/plot.hpp"
 
-namespace sweetspot::io {
+namespace sweetspot::reports {
 
 // `text` safe inside HTML text and attribute values: & < > " ' as
 // entities, every character XML 1.0 does not allow (or HTML calls a control)
@@ -44,6 +44,7 @@ std::string html_page_close(std::string_view footer_html);
 // (the stylesheet shows one of them), in <figure id="`id`"> with
 // `caption_html` (markup) under it; without gnuplot, a sentence saying why
 // the plot is missing in its place.
-std::string html_figure(const Plot& plot, const std::string& id, const std::string& caption_html);
+std::string html_figure(const io::Plot& plot, const std::string& id,
+                        const std::string& caption_html);
 
-}  // namespace sweetspot::io
+}  // namespace sweetspot::reports

@@ -19,11 +19,11 @@
 #include "sweetspot/evaluate.hpp"
 #include "sweetspot/rigid_impact.hpp"
 
-namespace sweetspot::io {
+namespace sweetspot::reports {
 namespace {
 
 // A mid-size tennis head (100 sq in) when the file does not say.
-constexpr double kDefaultHeadArea_m2 = 100.0 * kSquareInch_m2;
+constexpr double kDefaultHeadArea_m2 = 100.0 * io::kSquareInch_m2;
 // The drawn head: an ellipse this much longer than wide (a 100 sq in head is
 // about 34 cm by 25 cm).
 constexpr double kHeadAspect = 1.35;
@@ -42,7 +42,7 @@ constexpr double kRelTol = 1e-6;
 std::string n(double v) { return fmt::format("{:.2f}", v); }
 
 // Every leaf of the file as written: JSON pointer, value, unit.
-void flatten(const Json& value, const std::string& pointer, std::string& rows) {
+void flatten(const io::Json& value, const std::string& pointer, std::string& rows) {
   if (value.is_object()) {
     for (auto it = value.begin(); it != value.end(); ++it) {
       if (pointer.empty() && (it.key() == "$schema" || it.key() == "name" ||
@@ -60,7 +60,7 @@ void flatten(const Json& value, const std::string& pointer, std::string& rows) {
   const std::string key = pointer.substr(pointer.rfind('/') + 1);
   const std::string shown = value.is_string()
                                 ? value.get<std::string>()
-                                : value.dump(-1, ' ', false, Json::error_handler_t::replace);
+                                : value.dump(-1, ' ', false, io::Json::error_handler_t::replace);
   rows += fmt::format("<tr><td><code>{}</code></td><td class=\"num\">{}</td><td>{}</td></tr>\n",
                       html_escape(pointer), html_escape(shown), html_escape(io::unit_of_key(key)));
 }
@@ -75,7 +75,7 @@ Evaluation evaluate_at(const Design& design, double from_butt_m) {
 // The answer in sentences (reports/summary.hpp, the same as `evaluate`'s
 // Markdown opens with), one paragraph each, then what the rigid model gives
 // at the COP, which the drawing marks.
-std::string answer_html(const DesignFile& file, const Evaluation& e) {
+std::string answer_html(const io::DesignFile& file, const Evaluation& e) {
   std::string html;
   for (const std::string& sentence :
        reports::sweet_spot_sentences(file, reports::find_sweet_spots(file, e, kRelTol)))
@@ -90,7 +90,7 @@ struct Mark {
   std::string symbol;  // SVG drawn at (x, y)
 };
 
-std::vector<Mark> marks(const DesignFile& file, const Evaluation& e, double y) {
+std::vector<Mark> marks(const io::DesignFile& file, const Evaluation& e, double y) {
   const double L = file.design.implement.length_m();
   std::vector<Mark> out;
   const double bx = (L - e.balance_from_butt_m) * 100.0;
@@ -147,7 +147,7 @@ std::string ruler(double length_cm, double y) {
                            n(length_cm / 2), n(y + 5.6));
 }
 
-std::string hand_and_tape(const DesignFile& file, double half_height, bool profile) {
+std::string hand_and_tape(const io::DesignFile& file, double half_height, bool profile) {
   const Design& d = file.design;
   const double L = d.implement.length_m() * 100.0;
   std::string svg;
@@ -171,7 +171,7 @@ std::string hand_and_tape(const DesignFile& file, double half_height, bool profi
   return svg;
 }
 
-void tape_marks(const DesignFile& file, std::vector<Mark>& ms) {
+void tape_marks(const io::DesignFile& file, std::vector<Mark>& ms) {
   const double L = file.design.implement.length_m();
   for (const PointMass& p : file.design.implement.point_masses()) {
     if (!(p.mass_kg > 0.0)) continue;
@@ -188,7 +188,7 @@ constexpr int kMapTableFirst = 2;
 // The string-bed maps (power, shock and, with the frame's stiffness, feel):
 // gnuplot's heat maps as inline SVG, a caption each, the numbers behind them.
 // Without a head size the drawing's mid-size head is assumed, and said.
-std::string maps_html(const DesignFile& file, Fidelity fidelity) {
+std::string maps_html(const io::DesignFile& file, Fidelity fidelity) {
   Design d = file.design;
   const double L = d.implement.length_m();
   const bool head_assumed = !d.head && !d.twistweight_kg_m2;
@@ -197,8 +197,8 @@ std::string maps_html(const DesignFile& file, Fidelity fidelity) {
     head.area_m2 = kDefaultHeadArea_m2;
     d.head = head;
   }
-  StringBedMapOptions options;
-  StringBedMap map;
+  studies::StringBedMapOptions options;
+  studies::StringBedMap map;
   std::string html = "<section id=\"maps\"><h2>Over the string bed</h2>\n<!-- sweetspot:maps -->\n";
   try {
     // The maps are drawn at the fidelity of the page's answer: the solved
@@ -207,7 +207,7 @@ std::string maps_html(const DesignFile& file, Fidelity fidelity) {
     options.fidelity = fidelity == Fidelity::kRigid || fidelity == Fidelity::kCollision
                            ? fidelity
                            : Fidelity::kModal;
-    map = string_bed_map(d, options);
+    map = studies::string_bed_map(d, options);
   } catch (const std::invalid_argument& e) {
     return html + "<p class=\"missing\">No maps for this design: " + html_escape(e.what()) +
            "</p>\n</section>\n";
@@ -231,17 +231,17 @@ std::string maps_html(const DesignFile& file, Fidelity fidelity) {
             "give <code>implement.headsize_sq_in</code> for yours"
           : "");
   // The point of most power on the bed, which the power caption names.
-  StringBedMapPoint best_power;
+  studies::StringBedMapPoint best_power;
   best_power.apparent_cor = -1.0;
-  for (const StringBedMapPoint& p : map.points) {
+  for (const studies::StringBedMapPoint& p : map.points) {
     if (p.on_bed && p.apparent_cor > best_power.apparent_cor) best_power = p;
   }
   html += "<div class=\"maps\">\n";
   for (const MapQuantity q : map_quantities(map)) {
     const std::string name = map_quantity_name(q);
     std::string why;
-    const auto svg =
-        render_script_svg(string_bed_heat_map_svg_script(map, q, L, ""), "map-" + name + "-", &why);
+    const auto svg = io::render_script_svg(string_bed_heat_map_svg_script(map, q, L, ""),
+                                           "map-" + name + "-", &why);
     std::string says;
     switch (q) {
       case MapQuantity::kPower:
@@ -288,7 +288,8 @@ std::string maps_html(const DesignFile& file, Fidelity fidelity) {
       kMapTableStep, kMapTableFirst + 1, feel ? "<th class=\"num\">vibration energy (J)</th>" : "");
   for (int j = kMapTableFirst; j < map.rows; j += kMapTableStep) {
     for (int i = kMapTableFirst; i < map.columns; i += kMapTableStep) {
-      const StringBedMapPoint& p = map.points[static_cast<std::size_t>(j) * map.columns + i];
+      const studies::StringBedMapPoint& p =
+          map.points[static_cast<std::size_t>(j) * map.columns + i];
       if (!p.on_bed) continue;
       html += fmt::format(
           "<tr><td class=\"num\">{:.1f}</td><td class=\"num\">{:.1f}</td><td class=\"num\">"
@@ -296,7 +297,7 @@ std::string maps_html(const DesignFile& file, Fidelity fidelity) {
           (L - p.from_butt_m) * 100.0, p.off_axis_m * 100.0, p.apparent_cor, p.peak_wrist_force_N);
       if (feel)
         html += "<td class=\"num\">" +
-                (p.vibration_energy_J ? significant(*p.vibration_energy_J, 3) : "—") + "</td>";
+                (p.vibration_energy_J ? io::significant(*p.vibration_energy_J, 3) : "—") + "</td>";
       html += "</tr>\n";
     }
   }
@@ -306,7 +307,7 @@ std::string maps_html(const DesignFile& file, Fidelity fidelity) {
 }  // namespace
 
 std::vector<FramePoint> frame_curves(const Design& design, double step_m, Fidelity fidelity) {
-  if (!(step_m > 0)) throw std::invalid_argument("step_m: must be > 0 m, got " + exact(step_m));
+  if (!(step_m > 0)) throw std::invalid_argument("step_m: must be > 0 m, got " + io::exact(step_m));
   const double L = design.implement.length_m();
   std::optional<DesignCollision> collision;
   if (fidelity == Fidelity::kCollision) collision.emplace(design);
@@ -330,21 +331,21 @@ std::vector<FramePoint> frame_curves(const Design& design, double step_m, Fideli
   return points;
 }
 
-double drawn_head_area_m2(const DesignFile& file, const Json& document) {
+double drawn_head_area_m2(const io::DesignFile& file, const io::Json& document) {
   if (file.design.strings) {
     const double r = file.design.strings->head_radius_m;
     return M_PI * r * r;
   }
   if (file.design.head) return file.design.head->area_m2;
   if (document.is_object() && document.contains("implement") && document["implement"].is_object()) {
-    const Json& implement = document["implement"];
+    const io::Json& implement = document["implement"];
     if (implement.contains("headsize_sq_in") && implement["headsize_sq_in"].is_number())
-      return implement["headsize_sq_in"].get<double>() * kSquareInch_m2;
+      return implement["headsize_sq_in"].get<double>() * io::kSquareInch_m2;
   }
   return kDefaultHeadArea_m2;
 }
 
-std::string racquet_top_svg(const DesignFile& file, const Evaluation& e, double head_area_m2,
+std::string racquet_top_svg(const io::DesignFile& file, const Evaluation& e, double head_area_m2,
                             const std::string& id) {
   const double L = file.design.implement.length_m() * 100.0;
   // The head's string bed: an ellipse of the head's area, a = kHeadAspect b,
@@ -393,7 +394,7 @@ std::string racquet_top_svg(const DesignFile& file, const Evaluation& e, double 
   return svg + "</svg>\n";
 }
 
-std::string racquet_side_svg(const DesignFile& file, const Evaluation& e) {
+std::string racquet_side_svg(const io::DesignFile& file, const Evaluation& e) {
   const double L = file.design.implement.length_m() * 100.0;
   const double half = kBeamDepth_cm / 2;
   std::vector<Mark> ms = marks(file, e, 0.0);
@@ -437,7 +438,7 @@ std::string racquets_to_scale_html(const std::vector<DrawnRacquet>& racquets,
         "<figure class=\"drawing-figure\" id=\"{0}-{1}\"><div style=\"width: {2:.2f}%\">{3}</div>"
         "<figcaption>{4}</figcaption></figure>\n",
         html_escape(id), k + 1, 100.0 * (L_cm + 4.0) / (longest_cm + 4.0),
-        racquet_top_svg(*r.file, *r.evaluation, drawn_head_area_m2(*r.file, Json::object()),
+        racquet_top_svg(*r.file, *r.evaluation, drawn_head_area_m2(*r.file, io::Json::object()),
                         fmt::format("{}-{}", html_escape(id), k + 1)),
         r.caption_html);
   }
@@ -487,7 +488,7 @@ std::string racquets_to_scale_html(const std::vector<DrawnRacquet>& racquets,
   return html + "</tbody></table></div>\n";
 }
 
-std::string design_html_report(const DesignFile& file, const Json& document) {
+std::string design_html_report(const io::DesignFile& file, const io::Json& document) {
   const Design& d = file.design;
   const double L = d.implement.length_m();
   const Evaluation e = evaluate_design_file(file, "", kRelTol);
@@ -512,7 +513,7 @@ std::string design_html_report(const DesignFile& file, const Json& document) {
           fmt::format(
               "<figcaption>From above. The head is drawn as an ellipse of {:.0f} sq in{}; "
               "the outline is a sketch, the positions are computed.</figcaption></figure>\n",
-              head_area / kSquareInch_m2,
+              head_area / io::kSquareInch_m2,
               head_given ? " (as given)" : " (not given: a mid-size head assumed)");
   html += "<figure class=\"drawing-figure\">" + racquet_side_svg(file, e) +
           "<figcaption>From the side, the ball arriving on the strings.</figcaption></figure>\n";
@@ -553,9 +554,9 @@ std::string design_html_report(const DesignFile& file, const Json& document) {
 
   // The curves along the frame.
   html += "<section id=\"frame\"><h2>Along the frame</h2>\n";
-  PlotSeries wrist{"wrist force / string force, |F_w / F|", {}, {}, "lines lw 2.5"};
-  PlotSeries cor{"apparent COR e_A", {}, {}, "lines lw 2.5"};
-  cor.color = plot_color(1);
+  io::PlotSeries wrist{"wrist force / string force, |F_w / F|", {}, {}, "lines lw 2.5"};
+  io::PlotSeries cor{"apparent COR e_A", {}, {}, "lines lw 2.5"};
+  cor.color = io::plot_color(1);
   for (const FramePoint& p : curve) {
     wrist.x.push_back(p.from_tip_m * 100.0);
     wrist.y.push_back(std::abs(p.wrist_force_ratio));
@@ -567,22 +568,22 @@ std::string design_html_report(const DesignFile& file, const Json& document) {
   if (e.modal && e.modal->node_hand_from_butt_m)
     lines.push_back({(L - *e.modal->node_hand_from_butt_m) * 100.0, "node"});
   lines.push_back({(L - d.impact_from_butt_m) * 100.0, "impact"});
-  Plot wrist_plot{"What the wrist feels, for a hit along the frame",
-                  "impact point from the tip (cm)",
-                  "wrist force over the force on the strings",
-                  std::pair{0.0, L * 100.0},
-                  std::nullopt,
-                  {wrist},
-                  {},
-                  lines};
-  Plot cor_plot{"How the ball comes back, for a hit along the frame",
-                "impact point from the tip (cm)",
-                "apparent COR (rebound over incoming speed)",
-                std::pair{0.0, L * 100.0},
-                std::nullopt,
-                {cor},
-                {},
-                lines};
+  io::Plot wrist_plot{"What the wrist feels, for a hit along the frame",
+                      "impact point from the tip (cm)",
+                      "wrist force over the force on the strings",
+                      std::pair{0.0, L * 100.0},
+                      std::nullopt,
+                      {wrist},
+                      {},
+                      lines};
+  io::Plot cor_plot{"How the ball comes back, for a hit along the frame",
+                    "impact point from the tip (cm)",
+                    "apparent COR (rebound over incoming speed)",
+                    std::pair{0.0, L * 100.0},
+                    std::nullopt,
+                    {cor},
+                    {},
+                    lines};
   wrist_plot.key_position = "off";
   cor_plot.key_position = "off";
   html +=
@@ -622,9 +623,9 @@ std::string design_html_report(const DesignFile& file, const Json& document) {
       "<section id=\"outputs\"><h2>Every number</h2>\n<div class=\"table-wrap\"><table "
       "id=\"all-outputs\"><thead><tr><th>quantity</th><th class=\"num\">value</th><th>unit</th>"
       "<th>output</th></tr></thead><tbody>\n";
-  for (const OutputSpec& o : output_specs()) {
+  for (const io::OutputSpec& o : io::output_specs()) {
     const auto value = o.value(e);
-    const AxisQuantity axis = output_axis(o);
+    const io::AxisQuantity axis = output_axis(o);
     const std::size_t open = axis.label.rfind(" (");
     const std::string words = open == std::string::npos ? axis.label : axis.label.substr(0, open);
     const std::string unit =
@@ -632,7 +633,7 @@ std::string design_html_report(const DesignFile& file, const Json& document) {
     html += fmt::format(
         "<tr id=\"out-{}\"><td>{}</td><td class=\"num\">{}</td><td>{}</td><td><code>{}</code>"
         "</td></tr>\n",
-        o.name, html_escape(words), value ? significant(*value * axis.factor, 4) : "—",
+        o.name, html_escape(words), value ? io::significant(*value * axis.factor, 4) : "—",
         html_escape(unit), o.name);
   }
   html += "</tbody></table></div></section>\n";
@@ -645,13 +646,13 @@ std::string design_html_report(const DesignFile& file, const Json& document) {
       "<div class=\"table-wrap\"><table id=\"inputs-given\"><thead><tr><th>input</th>"
       "<th class=\"num\">value</th><th>unit</th></tr></thead><tbody>\n" +
       given + "</tbody></table></div>\n";
-  const Json inputs = evaluation_json(file, e)["inputs"];
+  const io::Json inputs = evaluation_json(file, e)["inputs"];
   std::string defaults;
   for (auto it = inputs.begin(); it != inputs.end(); ++it) {
     if (!it.value().is_object() || it.value().value("provenance", "") != "default") continue;
     defaults +=
         fmt::format("<tr><td><code>{}</code></td><td class=\"num\">{}</td><td>{}</td></tr>\n",
-                    html_escape(it.key()), significant(it.value()["value"].get<double>(), 4),
+                    html_escape(it.key()), io::significant(it.value()["value"].get<double>(), 4),
                     html_escape(it.value().value("unit", "")));
   }
   if (!defaults.empty()) {
@@ -670,4 +671,4 @@ std::string design_html_report(const DesignFile& file, const Json& document) {
                     to_string(fidelity_of(e)), html_escape(file.source)));
 }
 
-}  // namespace sweetspot::io
+}  // namespace sweetspot::reports

@@ -13,7 +13,7 @@
 #include "io/json_reader.hpp"
 #include "reports/html_page.hpp"
 
-namespace sweetspot::io {
+namespace sweetspot::reports {
 
 // One impact point along the frame: the rigid model (Eqs. 11, 15-17) or the
 // solved collision.
@@ -41,21 +41,21 @@ std::vector<FramePoint> frame_curves(const Design& design, double step_m,
 // design has strings, the design's head shape (`implement.headsize_sq_in`)
 // when it has one, `implement.headsize_sq_in` of `document` otherwise, else
 // 100 sq in, a mid-size tennis head.
-double drawn_head_area_m2(const DesignFile& design, const Json& document);
+double drawn_head_area_m2(const io::DesignFile& design, const io::Json& document);
 
 // The racquet drawn to scale from above and from the side, as inline SVG
 // (centimetres as user units): outline from the length and the head's size,
 // the hand, the balance point, the hand-held COP, the node (when known), the
 // impact point and the lead tape.
 // `id` names the drawing's title element (unique on a page).
-std::string racquet_top_svg(const DesignFile& design, const Evaluation& evaluation,
+std::string racquet_top_svg(const io::DesignFile& design, const Evaluation& evaluation,
                             double head_area_m2, const std::string& id = "top");
-std::string racquet_side_svg(const DesignFile& design, const Evaluation& evaluation);
+std::string racquet_side_svg(const io::DesignFile& design, const Evaluation& evaluation);
 
 // A racquet to draw beside others: its file, its evaluation (both outlive
 // the call) and a caption (markup).
 struct DrawnRacquet {
-  const DesignFile* file = nullptr;
+  const io::DesignFile* file = nullptr;
   const Evaluation* evaluation = nullptr;
   std::string caption_html;
 };
@@ -72,6 +72,6 @@ std::string racquets_to_scale_html(const std::vector<DrawnRacquet>& racquets,
 // its inputs in the units they were given; its impact as every command takes
 // it, io::default_impact()). Plots that gnuplot cannot draw
 // are replaced by a sentence saying why; the tables are always there.
-std::string design_html_report(const DesignFile& design, const Json& document);
+std::string design_html_report(const io::DesignFile& design, const io::Json& document);
 
-}  // namespace sweetspot::io
+}  // namespace sweetspot::reports

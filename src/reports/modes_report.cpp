@@ -4,7 +4,7 @@
 
 #include "sweetspot/frame_modes.hpp"
 
-namespace sweetspot::io {
+namespace sweetspot::reports {
 namespace {
 
 std::string nodes_text(const Mode& mode, double length_m) {
@@ -15,11 +15,11 @@ std::string nodes_text(const Mode& mode, double length_m) {
   return text.empty() ? "—" : text;
 }
 
-Json mode_json(const Mode& mode, double length_m, bool held) {
-  Json nodes = Json::array();
+io::Json mode_json(const Mode& mode, double length_m, bool held) {
+  io::Json nodes = io::Json::array();
   for (const double x : mode.nodes_from_butt_m)
     nodes.push_back({{"from_butt_m", x}, {"from_tip_m", length_m - x}});
-  Json j{{"frequency_Hz", mode.frequency_Hz}, {"nodes", nodes}};
+  io::Json j{{"frequency_Hz", mode.frequency_Hz}, {"nodes", nodes}};
   if (held) {
     j["undamped_frequency_Hz"] = mode.undamped_frequency_Hz;
     j["damping_ratio"] = mode.damping_ratio;
@@ -30,7 +30,7 @@ Json mode_json(const Mode& mode, double length_m, bool held) {
 
 }  // namespace
 
-ModesData compute_modes(const DesignFile& file, int modes, double rel_tol,
+ModesData compute_modes(const io::DesignFile& file, int modes, double rel_tol,
                         ModeOptions::Method method) {
   try {
     const FlexibleFrame frame = flexible_frame(file.design);
@@ -60,9 +60,9 @@ ModesData compute_modes(const DesignFile& file, int modes, double rel_tol,
   }
 }
 
-std::string modes_report(const ModesData& data, Format format) {
+std::string modes_report(const ModesData& data, io::Format format) {
   const double L = data.design.design.implement.length_m();
-  if (format == Format::kCsv) {
+  if (format == io::Format::kCsv) {
     std::string csv = "x_from_butt_m";
     for (std::size_t k = 0; k < data.free.shape_w.size(); ++k)
       csv += fmt::format(",free_mode_{}", k + 1);
@@ -70,26 +70,27 @@ std::string modes_report(const ModesData& data, Format format) {
       csv += fmt::format(",hand_mode_{}", k + 1);
     csv += "\n";
     for (std::size_t i = 0; i < data.free.shape_x_m.size(); ++i) {
-      csv += exact(data.free.shape_x_m[i]);
-      for (const auto& w : data.free.shape_w) csv += "," + exact(w[i]);
-      for (const auto& w : data.held.shape_w) csv += "," + exact(i < w.size() ? w[i] : 0.0);
+      csv += io::exact(data.free.shape_x_m[i]);
+      for (const auto& w : data.free.shape_w) csv += "," + io::exact(w[i]);
+      for (const auto& w : data.held.shape_w) csv += "," + io::exact(i < w.size() ? w[i] : 0.0);
       csv += "\n";
     }
     return csv;
   }
-  if (format == Format::kJson) {
-    Json j{{"name", data.design.name},
-           {"mass_distribution", data.mass_distribution_fitted ? "fitted to the specs" : "given"}};
-    j["free"] = Json::array();
+  if (format == io::Format::kJson) {
+    io::Json j{
+        {"name", data.design.name},
+        {"mass_distribution", data.mass_distribution_fitted ? "fitted to the specs" : "given"}};
+    j["free"] = io::Json::array();
     for (const Mode& m : data.free.modes) j["free"].push_back(mode_json(m, L, false));
-    j["hand_held"] = Json::array();
+    j["hand_held"] = io::Json::array();
     for (const Mode& m : data.held.modes) j["hand_held"].push_back(mode_json(m, L, true));
     j["free_method"] =
         data.free.method == ModeOptions::Method::kExact ? "exact" : "finite elements";
     j["hand_held_elements"] = data.held.elements_used;
-    return j.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
+    return j.dump(2, ' ', false, io::Json::error_handler_t::replace) + "\n";
   }
-  std::string md = fmt::format("# Vibration modes: {}\n\n", md_cell(data.design.name));
+  std::string md = fmt::format("# Vibration modes: {}\n\n", io::md_cell(data.design.name));
   if (data.mass_distribution_fitted) {
     md +=
         "The mass distribution was fitted to the specs (a quadratic density reproducing mass, "
@@ -131,16 +132,16 @@ std::string modes_report(const ModesData& data, Format format) {
   return md;
 }
 
-Plot modes_plot(const ModesData& data) {
+io::Plot modes_plot(const ModesData& data) {
   const double L = data.design.design.implement.length_m();
-  Plot plot{fmt::format("Mode shapes: {}", data.design.name),
-            "position from the tip (m)",
-            "displacement w (normalised, max |w| = 1)",
-            std::pair{0.0, L},
-            std::pair{-1.1, 1.1},
-            {},
-            {},
-            {}};
+  io::Plot plot{fmt::format("Mode shapes: {}", data.design.name),
+                "position from the tip (m)",
+                "displacement w (normalised, max |w| = 1)",
+                std::pair{0.0, L},
+                std::pair{-1.1, 1.1},
+                {},
+                {},
+                {}};
   plot.key_position = "outside right";
   const std::size_t wanted = data.free.modes.size();
   const auto add = [&](const ModalResult& result, const char* label, const char* dash,
@@ -149,10 +150,10 @@ Plot modes_plot(const ModesData& data) {
     for (std::size_t k = 0; k < result.shape_w.size() && shown < wanted; ++k) {
       if (skip_hand_modes && result.modes[k].hand_energy_fraction >= 0.5) continue;
       ++shown;
-      PlotSeries s{fmt::format("{} {:.0f} Hz", label, result.modes[k].frequency_Hz),
-                   {},
-                   {},
-                   fmt::format("lines lw 2 {}", dash)};
+      io::PlotSeries s{fmt::format("{} {:.0f} Hz", label, result.modes[k].frequency_Hz),
+                       {},
+                       {},
+                       fmt::format("lines lw 2 {}", dash)};
       for (std::size_t i = 0; i < result.shape_x_m.size(); ++i) {
         s.x.push_back(L - result.shape_x_m[i]);
         s.y.push_back(result.shape_w[k][i]);
@@ -173,4 +174,4 @@ Plot modes_plot(const ModesData& data) {
   return plot;
 }
 
-}  // namespace sweetspot::io
+}  // namespace sweetspot::reports

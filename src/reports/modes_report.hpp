@@ -11,13 +11,13 @@
 #include "sweetspot/beam_modes.hpp"
 #include "sweetspot/evaluate.hpp"
 
-namespace sweetspot::io {
+namespace sweetspot::reports {
 
 // Points along the implement in the shape table and plot.
 inline constexpr int kShapeSamples = 145;
 
 struct ModesData {
-  DesignFile design;
+  io::DesignFile design;
   Evaluation rigid;
   ModalResult free;
   ModalResult held;  // empty without a hand
@@ -27,15 +27,15 @@ struct ModesData {
 // The first `modes` free modes (exact solver unless Timoshenko or `method`
 // says FE) and the hand-held ones (FE to `rel_tol`). Throws InputError at the
 // design's JSON path when the design cannot give modes.
-ModesData compute_modes(const DesignFile& design, int modes, double rel_tol,
+ModesData compute_modes(const io::DesignFile& design, int modes, double rel_tol,
                         ModeOptions::Method method);
 
 // md: frequencies, damping and nodes; json: the same; csv: the shape table
 // (x from the butt, then w of each free mode, then each hand-held mode).
-std::string modes_report(const ModesData& data, Format format);
+std::string modes_report(const ModesData& data, io::Format format);
 
 // Mode shapes along the implement, free and hand-held, with the COPs and the
 // fundamental's nodes marked.
-Plot modes_plot(const ModesData& data);
+io::Plot modes_plot(const ModesData& data);
 
-}  // namespace sweetspot::io
+}  // namespace sweetspot::reports

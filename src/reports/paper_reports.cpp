@@ -11,7 +11,7 @@
 #include "sweetspot/rigid_impact.hpp"
 #include "sweetspot/roots.hpp"
 
-namespace sweetspot::io {
+namespace sweetspot::reports {
 namespace {
 
 // The accelerometers of Section II: 2 and 16 cm from the handle end.
@@ -27,7 +27,7 @@ constexpr double kCrossingTolerance_m = 1e-9;
 constexpr double kFigure11Low_cm = -30.0;
 constexpr double kFigure11High_cm = 40.0;
 
-std::optional<double> reference(const DesignFile& file, const char* name) {
+std::optional<double> reference(const io::DesignFile& file, const char* name) {
   if (!file.reference.is_object() || !file.reference.contains(name)) return std::nullopt;
   return file.reference[name].get<double>();
 }
@@ -46,7 +46,7 @@ std::vector<double> impact_distances(double length_m) {
 }
 
 std::string optional_csv(const std::optional<double>& value) {
-  return value ? exact(*value) : std::string();
+  return value ? io::exact(*value) : std::string();
 }
 
 std::optional<double> diff(double ours, const std::optional<double>& paper) {
@@ -57,7 +57,7 @@ std::optional<double> diff(double ours, const std::optional<double>& paper) {
 // The paper's printed values, quoted only beside the paper's own beam (its
 // reference cites Cross 2004): another beam in their place must not be
 // compared with them.
-std::string paper_says(const DesignFile& beam, const std::string& printed) {
+std::string paper_says(const io::DesignFile& beam, const std::string& printed) {
   const bool paper_beam = beam.reference.is_object() && beam.reference.contains("source") &&
                           beam.reference["source"].get<std::string>().rfind("Cross (2004)", 0) == 0;
   return paper_beam ? " (paper: " + printed + ")" : "";
@@ -68,7 +68,7 @@ std::string paper_says(const DesignFile& beam, const std::string& printed) {
 std::vector<Table1Row> compute_table1(const std::string& dir) {
   std::vector<Table1Row> rows;
   for (int row = 1; row <= kTableIRows; ++row) {
-    DesignFile file = load_design(fmt::format("{}/row{}.json", dir, row));
+    io::DesignFile file = io::load_design(fmt::format("{}/row{}.json", dir, row));
     const Evaluation evaluation = evaluate(file.design);
     const auto F0 = reference(file, "peak_impact_force_N");
     const auto Fw = reference(file, "peak_wrist_force_N");
@@ -77,20 +77,20 @@ std::vector<Table1Row> compute_table1(const std::string& dir) {
   return rows;
 }
 
-std::string table1_report(const std::vector<Table1Row>& rows, Format format) {
-  if (format == Format::kJson) {
-    Json j = Json::array();
+std::string table1_report(const std::vector<Table1Row>& rows, io::Format format) {
+  if (format == io::Format::kJson) {
+    io::Json j = io::Json::array();
     for (const Table1Row& r : rows) {
       j.push_back({{"row", r.row},
                    {"name", r.design.name},
                    {"peak_impact_force_N", r.evaluation.peak_impact_force_N},
                    {"peak_wrist_force_N", r.evaluation.peak_wrist_force_N},
-                   {"paper_F0_N", r.paper_F0_N ? Json(*r.paper_F0_N) : Json(nullptr)},
-                   {"paper_Fw_N", r.paper_Fw_N ? Json(*r.paper_Fw_N) : Json(nullptr)}});
+                   {"paper_F0_N", r.paper_F0_N ? io::Json(*r.paper_F0_N) : io::Json(nullptr)},
+                   {"paper_Fw_N", r.paper_Fw_N ? io::Json(*r.paper_Fw_N) : io::Json(nullptr)}});
     }
-    return j.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
+    return j.dump(2, ' ', false, io::Json::error_handler_t::replace) + "\n";
   }
-  if (format == Format::kCsv) {
+  if (format == io::Format::kCsv) {
     std::string csv =
         "row,mass_kg,head_to_handle_mass_ratio,cor,impact_duration_s,hand_mass_kg,"
         "forearm_equivalent_mass_kg,effective_mass_kg,apparent_cor,peak_impact_force_N,"
@@ -98,14 +98,15 @@ std::string table1_report(const std::vector<Table1Row>& rows, Format format) {
     for (const Table1Row& r : rows) {
       const Design& d = r.design.design;
       const Evaluation& e = r.evaluation;
-      csv += fmt::format(
-          "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", r.row, exact(e.mass_kg),
-          optional_csv(head_to_handle_ratio(d.implement)), exact(d.cor), exact(d.impact_duration_s),
-          exact(d.hand.mass_kg), exact(d.forearm_equivalent_mass_kg), exact(e.effective_mass_kg),
-          exact(e.apparent_cor), exact(e.peak_impact_force_N), exact(e.peak_wrist_force_N),
-          optional_csv(r.paper_F0_N), optional_csv(r.paper_Fw_N),
-          optional_csv(diff(e.peak_impact_force_N, r.paper_F0_N)),
-          optional_csv(diff(e.peak_wrist_force_N, r.paper_Fw_N)));
+      csv += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", r.row,
+                         io::exact(e.mass_kg), optional_csv(head_to_handle_ratio(d.implement)),
+                         io::exact(d.cor), io::exact(d.impact_duration_s),
+                         io::exact(d.hand.mass_kg), io::exact(d.forearm_equivalent_mass_kg),
+                         io::exact(e.effective_mass_kg), io::exact(e.apparent_cor),
+                         io::exact(e.peak_impact_force_N), io::exact(e.peak_wrist_force_N),
+                         optional_csv(r.paper_F0_N), optional_csv(r.paper_Fw_N),
+                         optional_csv(diff(e.peak_impact_force_N, r.paper_F0_N)),
+                         optional_csv(diff(e.peak_wrist_force_N, r.paper_Fw_N)));
     }
     return csv;
   }
@@ -133,9 +134,9 @@ std::string table1_report(const std::vector<Table1Row>& rows, Format format) {
     md += fmt::format(
         "| {} | {} | {} | {} | {} | {} | {} | {:.4f} | {:.4f} | {:.1f} | {} | {} | "
         "{:.1f} | {} | {} |\n",
-        r.row, significant(e.mass_kg), show(ratio, "{:.2g}"), significant(d.cor),
-        significant(d.impact_duration_s * 1000.0), significant(d.hand.mass_kg),
-        significant(d.forearm_equivalent_mass_kg), e.effective_mass_kg, e.apparent_cor,
+        r.row, io::significant(e.mass_kg), show(ratio, "{:.2g}"), io::significant(d.cor),
+        io::significant(d.impact_duration_s * 1000.0), io::significant(d.hand.mass_kg),
+        io::significant(d.forearm_equivalent_mass_kg), e.effective_mass_kg, e.apparent_cor,
         e.peak_impact_force_N, show(r.paper_F0_N, "{:.0f}"), show(dF0, "{:+.2f}"),
         e.peak_wrist_force_N, show(r.paper_Fw_N, "{:.0f}"), show(dFw, "{:+.2f}"));
   }
@@ -147,29 +148,30 @@ std::string table1_report(const std::vector<Table1Row>& rows, Format format) {
   return md;
 }
 
-Figure figure5(const DesignFile& beam) {
+Figure figure5(const io::DesignFile& beam) {
   const MassProperties& body = beam.design.implement.mass_properties();
   const double L = beam.design.implement.length_m();
   Figure figure;
   figure.csv = "d_from_free_end_m,impact_from_butt_m,v2_over_v16\n";
-  PlotSeries curve{"Eq. (6), free beam", {}, {}};
+  io::PlotSeries curve{"Eq. (6), free beam", {}, {}};
   for (const double d : impact_distances(L)) {
     const double x = L - d;
     const auto ratio = velocity_ratio(body, x, kDisk2_m, kDisk16_m);
-    figure.csv += fmt::format("{},{},{}\n", exact(d), exact(x), optional_csv(ratio));
+    figure.csv += fmt::format("{},{},{}\n", io::exact(d), io::exact(x), optional_csv(ratio));
     curve.x.push_back(d * 100.0);
     curve.y.push_back(ratio);
   }
   const auto zero = free_conjugate_from_butt(body, kDisk2_m);
   const auto pole = free_conjugate_from_butt(body, kDisk16_m);
-  figure.plot = Plot{"Fig. 5: velocity ratio v2/v16 of the free beam (Cross 2004, Eq. 6)",
-                     "impact distance d from the free end (cm)",
-                     "v2 / v16 (dimensionless)",
-                     std::pair{0.0, L * 100.0},
-                     std::pair{-4.0, 4.0},
-                     {curve},
-                     {PlotMarker{(L - body.com_from_butt_m) * 100.0, 1.0, "centre: v2/v16 = 1"}},
-                     {}};
+  figure.plot =
+      io::Plot{"Fig. 5: velocity ratio v2/v16 of the free beam (Cross 2004, Eq. 6)",
+               "impact distance d from the free end (cm)",
+               "v2 / v16 (dimensionless)",
+               std::pair{0.0, L * 100.0},
+               std::pair{-4.0, 4.0},
+               {curve},
+               {io::PlotMarker{(L - body.com_from_butt_m) * 100.0, 1.0, "centre: v2/v16 = 1"}},
+               {}};
   if (zero) figure.plot.vertical_lines.push_back({(L - *zero) * 100.0, "COP for the 2 cm disk"});
   if (pole) figure.plot.vertical_lines.push_back({(L - *pole) * 100.0, "COP for the 16 cm disk"});
   const auto at_d = [&](std::optional<double> from_butt_m) {
@@ -184,11 +186,11 @@ Figure figure5(const DesignFile& beam) {
 }
 
 namespace {
-std::optional<double> free_axis(const DesignFile& beam, double d) {
+std::optional<double> free_axis(const io::DesignFile& beam, double d) {
   const Implement& implement = beam.design.implement;
   return free_conjugate_from_butt(implement.mass_properties(), implement.length_m() - d);
 }
-std::optional<double> hand_axis(const DesignFile& beam, double d) {
+std::optional<double> hand_axis(const io::DesignFile& beam, double d) {
   const Implement& implement = beam.design.implement;
   return hand_held_rotation_axis_from_butt(hand_held_system(beam.design),
                                            beam.design.forearm_equivalent_mass_kg,
@@ -196,7 +198,7 @@ std::optional<double> hand_axis(const DesignFile& beam, double d) {
 }
 }  // namespace
 
-std::optional<AxesCrossing> figure11_crossing(const DesignFile& beam) {
+std::optional<AxesCrossing> figure11_crossing(const io::DesignFile& beam) {
   const auto gap = [&](double d) {
     const auto free = free_axis(beam, d);
     const auto hand = hand_axis(beam, d);
@@ -207,20 +209,21 @@ std::optional<AxesCrossing> figure11_crossing(const DesignFile& beam) {
   return AxesCrossing{*d, *hand_axis(beam, *d)};
 }
 
-Figure figure11(const DesignFile& beam) {
+Figure figure11(const io::DesignFile& beam) {
   const double L = beam.design.implement.length_m();
   Figure figure;
   figure.csv = "d_from_free_end_m,s_free_m,s_hand_m\n";
-  PlotSeries free{"free beam (Eq. 5)", {}, {}};
-  PlotSeries hand{fmt::format("hand-held, M_h = {} kg, M_e = {} kg (Eq. 12)",
-                              significant(beam.design.hand.mass_kg),
-                              significant(beam.design.forearm_equivalent_mass_kg)),
-                  {},
-                  {}};
+  io::PlotSeries free{"free beam (Eq. 5)", {}, {}};
+  io::PlotSeries hand{fmt::format("hand-held, M_h = {} kg, M_e = {} kg (Eq. 12)",
+                                  io::significant(beam.design.hand.mass_kg),
+                                  io::significant(beam.design.forearm_equivalent_mass_kg)),
+                      {},
+                      {}};
   for (const double d : impact_distances(L)) {
     const auto s_free = free_axis(beam, d);
     const auto s_hand = hand_axis(beam, d);
-    figure.csv += fmt::format("{},{},{}\n", exact(d), optional_csv(s_free), optional_csv(s_hand));
+    figure.csv +=
+        fmt::format("{},{},{}\n", io::exact(d), optional_csv(s_free), optional_csv(s_hand));
     free.x.push_back(d * 100.0);
     hand.x.push_back(d * 100.0);
     free.y.push_back(s_free ? std::optional(*s_free * 100.0) : std::nullopt);
@@ -230,7 +233,7 @@ Figure figure11(const DesignFile& beam) {
   // branch beyond it (the axis past the far end of the beam, coming back into
   // view near the handle) would be a stray segment without its context. The
   // CSV keeps every value.
-  for (PlotSeries* series : {&free, &hand}) {
+  for (io::PlotSeries* series : {&free, &hand}) {
     bool shown = false, left = false;
     for (auto& y : series->y) {
       const bool in_view = y && *y >= kFigure11Low_cm && *y <= kFigure11High_cm;
@@ -242,17 +245,17 @@ Figure figure11(const DesignFile& beam) {
         left = true;
     }
   }
-  figure.plot = Plot{"Fig. 11: rotation axis s against impact point d (Cross 2004)",
-                     "impact distance d from the free end (cm)",
-                     "rotation axis s from the handle end (cm)",
-                     std::pair{0.0, L * 100.0},
-                     std::pair{kFigure11Low_cm, kFigure11High_cm},
-                     {free, hand},
-                     {},
-                     {}};
+  figure.plot = io::Plot{"Fig. 11: rotation axis s against impact point d (Cross 2004)",
+                         "impact distance d from the free end (cm)",
+                         "rotation axis s from the handle end (cm)",
+                         std::pair{0.0, L * 100.0},
+                         std::pair{kFigure11Low_cm, kFigure11High_cm},
+                         {free, hand},
+                         {},
+                         {}};
   const auto crossing = figure11_crossing(beam);
   if (crossing) {
-    figure.plot.markers.push_back(PlotMarker{
+    figure.plot.markers.push_back(io::PlotMarker{
         crossing->d_m * 100.0, crossing->s_m * 100.0,
         fmt::format("d = {:.1f} cm, s = {:.1f} cm", crossing->d_m * 100.0, crossing->s_m * 100.0),
         true});
@@ -271,12 +274,12 @@ std::vector<ReportEntry> write_paper_reports(const std::string& designs_dir,
                                              const ReportWriter& write) {
   // Read and compute everything before writing anything.
   const std::vector<Table1Row> rows = compute_table1(designs_dir + "/table1");
-  const DesignFile beam = load_design(designs_dir + "/paper-beam.json");
+  const io::DesignFile beam = io::load_design(designs_dir + "/paper-beam.json");
   const Figure fig5 = figure5(beam);
   const Figure fig11 = figure11(beam);
-  const std::string table_md = table1_report(rows, Format::kMarkdown);
+  const std::string table_md = table1_report(rows, io::Format::kMarkdown);
   write.text("table1.md", table_md);
-  write.text("table1.csv", table1_report(rows, Format::kCsv));
+  write.text("table1.csv", table1_report(rows, io::Format::kCsv));
   write.text("fig5.csv", fig5.csv);
   write.text("fig11.csv", fig11.csv);
   write.plot("fig5.png", fig5.plot);
@@ -301,4 +304,4 @@ std::vector<ReportEntry> write_paper_reports(const std::string& designs_dir,
   };
 }
 
-}  // namespace sweetspot::io
+}  // namespace sweetspot::reports

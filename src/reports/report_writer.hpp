@@ -8,7 +8,7 @@
 
 #include "io/plot.hpp"
 
-namespace sweetspot::io {
+namespace sweetspot::reports {
 
 // One line of the reports' index: the files and what they show.
 struct ReportEntry {
@@ -20,7 +20,7 @@ struct ReportEntry {
 // (a missing gnuplot skips the plot and says so).
 struct ReportWriter {
   std::function<void(const std::string& name, const std::string& content)> text;
-  std::function<void(const std::string& name, const Plot& plot)> plot;
+  std::function<void(const std::string& name, const io::Plot& plot)> plot;
 };
 
-}  // namespace sweetspot::io
+}  // namespace sweetspot::reports

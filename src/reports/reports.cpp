@@ -20,7 +20,7 @@
 #include "studies/study.hpp"
 #include "studies/sweep.hpp"
 
-namespace sweetspot::io {
+namespace sweetspot::reports {
 namespace {
 
 namespace fs = std::filesystem;
@@ -40,7 +40,8 @@ std::vector<fs::path> study_files(const std::string& designs_dir) {
   for (const auto& entry : fs::directory_iterator(folder)) {
     if (entry.path().extension() != ".json") continue;
     // Designs used by the studies live beside them; a study has variables.
-    if (read_json_file(entry.path().string()).contains("variables")) files.push_back(entry.path());
+    if (io::read_json_file(entry.path().string()).contains("variables"))
+      files.push_back(entry.path());
   }
   std::sort(files.begin(), files.end());
   return files;
@@ -52,8 +53,8 @@ void write_reports(const std::string& designs_dir, const std::string& out_dir, s
                    const std::function<void(const std::string&)>& before_writing) {
   // Nothing is created before the inputs are known to be there.
   if (!fs::is_directory(designs_dir)) {
-    throw InputError(designs_dir, "",
-                     "not a folder of designs (expected table1/, paper-beam.json, studies/)");
+    throw io::InputError(designs_dir, "",
+                         "not a folder of designs (expected table1/, paper-beam.json, studies/)");
   }
   // Every file is held until all are made, then written all or none: a study
   // that fails halfway leaves the folder as it was.
@@ -62,7 +63,7 @@ void write_reports(const std::string& designs_dir, const std::string& out_dir, s
   const ReportWriter write{[&](const std::string& name, const std::string& content) {
                              files.emplace_back(out_dir + "/" + name, content);
                            },
-                           [&](const std::string& name, const Plot& plot) {
+                           [&](const std::string& name, const io::Plot& plot) {
                              std::string why;
                              if (std::optional<std::string> png = render_png_bytes(plot, &why)) {
                                files.emplace_back(out_dir + "/" + name, std::move(*png));
@@ -73,10 +74,10 @@ void write_reports(const std::string& designs_dir, const std::string& out_dir, s
 
   std::vector<ReportEntry> entries = write_paper_reports(designs_dir, out_dir, write);
 
-  const DesignFile beam = load_design(designs_dir + "/paper-beam.json");
+  const io::DesignFile beam = io::load_design(designs_dir + "/paper-beam.json");
   const ModesData modes = compute_modes(beam, 3, 1e-6, ModeOptions::Method::kExact);
-  write.text("modes-paper-beam.md", modes_report(modes, Format::kMarkdown));
-  write.text("modes-paper-beam.csv", modes_report(modes, Format::kCsv));
+  write.text("modes-paper-beam.md", modes_report(modes, io::Format::kMarkdown));
+  write.text("modes-paper-beam.csv", modes_report(modes, io::Format::kCsv));
   write.plot("modes-paper-beam.png", modes_plot(modes));
   entries.push_back(
       {"[modes-paper-beam.md](modes-paper-beam.md), [.csv](modes-paper-beam.csv), "
@@ -90,9 +91,9 @@ void write_reports(const std::string& designs_dir, const std::string& out_dir, s
            hand_held_fundamental(modes.held)->frequency_Hz,
            hand_held_fundamental(modes.held)->damping_ratio)});
 
-  const DesignFile thick = load_design(designs_dir + "/paper-beam-timoshenko.json");
+  const io::DesignFile thick = io::load_design(designs_dir + "/paper-beam-timoshenko.json");
   const ModesData shear = compute_modes(thick, 3, 1e-6, ModeOptions::Method::kFiniteElement);
-  write.text("modes-paper-beam-timoshenko.md", modes_report(shear, Format::kMarkdown));
+  write.text("modes-paper-beam-timoshenko.md", modes_report(shear, io::Format::kMarkdown));
   entries.push_back(
       {"[modes-paper-beam-timoshenko.md](modes-paper-beam-timoshenko.md)",
        fmt::format("The beam with shear and rotary inertia (Timoshenko, G = 1 GPa): modes 2 and 3 "
@@ -109,23 +110,24 @@ void write_reports(const std::string& designs_dir, const std::string& out_dir, s
     entries.push_back(std::move(entry));
 
   for (const fs::path& path : study_files(designs_dir)) {
-    const Study study = load_study(path.string());
+    const studies::Study study = studies::load_study(path.string());
     const std::string stem = "studies/" + path.stem().string();
     if (!study.objective.empty()) {
-      const OptimizationResult result = run_optimization(study);
+      const studies::OptimizationResult result = run_optimization(study);
       // A shipped study whose printed best design does not re-evaluate to
       // the search's numbers is a defect of sweetspot, never a report.
       if (!result.inconsistency.empty()) {
         throw std::runtime_error("internal error: " + study.source + ": " + result.inconsistency);
       }
-      const std::string md = optimization_report(study, result, Format::kMarkdown, false);
+      const std::string md = optimization_report(study, result, io::Format::kMarkdown, false);
       write.text(stem + ".md", md);
       write.plot(stem + ".png", convergence_plot(study, result));
       entries.push_back({fmt::format("[{0}.md]({0}.md), [.png]({0}.png)", stem),
                          study.name + ": " + answer_of(md)});
     } else {
       std::ostringstream csv;
-      const std::vector<Plot> plots = run_sweep(study, csv, [](std::size_t, std::size_t) {});
+      const std::vector<io::Plot> plots =
+          studies::run_sweep(study, csv, [](std::size_t, std::size_t) {});
       write.text(stem + ".csv", csv.str());
       std::string links = fmt::format("[{0}.csv]({0}.csv)", stem);
       for (std::size_t k = 0; k < plots.size(); ++k) {
@@ -145,16 +147,17 @@ void write_reports(const std::string& designs_dir, const std::string& out_dir, s
       "PNG plots are rendered by gnuplot from the same data. Timings are not in these files (they "
       "would never reproduce); they are in the benchmark reports.\n\n"
       "| files | what they show |\n|---|---|\n";
-  for (const ReportEntry& e : entries) index += "| " + e.files + " | " + md_cell(e.says) + " |\n";
+  for (const ReportEntry& e : entries)
+    index += "| " + e.files + " | " + io::md_cell(e.says) + " |\n";
   write.text("README.md", index);
   if (before_writing) {
     for (const auto& file : files) before_writing(file.first);
   }
-  write_files_atomically(files);
-  for (const auto& file : files) log << "wrote " << terminal_text(file.first) << "\n";
-  for (const std::string& file : skipped) log << "skipped " << terminal_text(file) << "\n";
-  log << "\nSummary (index: " << terminal_text(out_dir + "/README.md") << "):\n";
-  for (const ReportEntry& e : entries) log << "- " << terminal_text(e.says) << "\n";
+  io::write_files_atomically(files);
+  for (const auto& file : files) log << "wrote " << io::terminal_text(file.first) << "\n";
+  for (const std::string& file : skipped) log << "skipped " << io::terminal_text(file) << "\n";
+  log << "\nSummary (index: " << io::terminal_text(out_dir + "/README.md") << "):\n";
+  for (const ReportEntry& e : entries) log << "- " << io::terminal_text(e.says) << "\n";
 }
 
-}  // namespace sweetspot::io
+}  // namespace sweetspot::reports

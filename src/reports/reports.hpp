@@ -6,7 +6,7 @@
 #include <ostream>
 #include <string>
 
-namespace sweetspot::io {
+namespace sweetspot::reports {
 
 // Writes the paper's Table I and figures, the paper beam's vibration modes,
 // and every shipped study in `designs_dir`/studies (optimisations: a report
@@ -19,4 +19,4 @@ namespace sweetspot::io {
 void write_reports(const std::string& designs_dir, const std::string& out_dir, std::ostream& log,
                    const std::function<void(const std::string&)>& before_writing = {});
 
-}  // namespace sweetspot::io
+}  // namespace sweetspot::reports

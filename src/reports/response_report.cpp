@@ -10,11 +10,11 @@
 #include "sweetspot/rigid_impact.hpp"
 #include "sweetspot/string_bed.hpp"
 
-namespace sweetspot::io {
+namespace sweetspot::reports {
 namespace {
 
 // One pound-force [N], for tensions as stringers quote them.
-constexpr double kNewtonsPerPoundForce = kPoundForce_N;
+constexpr double kNewtonsPerPoundForce = io::kPoundForce_N;
 
 // Modes summed in the response (the paper saw one; the rest show 1.5/T at work).
 constexpr int kResponseModes = 6;
@@ -27,7 +27,7 @@ std::vector<double> times(double until_s, int samples) {
 
 }  // namespace
 
-ResponseData compute_response(const DesignFile& file, const ResponseRequest& request) {
+ResponseData compute_response(const io::DesignFile& file, const ResponseRequest& request) {
   try {
     ResponseData data{file, request, times(request.until_s, request.samples), {}, {}, {}};
     ResponseOptions options;
@@ -61,18 +61,18 @@ std::string response_csv(const ResponseData& data) {
                          : data.request.impacts_from_butt_m[&r - &data.responses[0]];
     for (const PointVelocity& p : r.points) {
       for (std::size_t i = 0; i < r.time_s.size(); ++i) {
-        csv +=
-            fmt::format("{},{},{},{},{},{}\n", exact(x), exact(r.time_s[i]), exact(p.from_butt_m),
-                        exact(p.dc_m_s[i]), exact(p.ac_m_s[i]), exact(p.dc_m_s[i] + p.ac_m_s[i]));
+        csv += fmt::format("{},{},{},{},{},{}\n", io::exact(x), io::exact(r.time_s[i]),
+                           io::exact(p.from_butt_m), io::exact(p.dc_m_s[i]), io::exact(p.ac_m_s[i]),
+                           io::exact(p.dc_m_s[i] + p.ac_m_s[i]));
       }
     }
   }
   return csv;
 }
 
-std::vector<Plot> response_plots(const ResponseData& data) {
+std::vector<io::Plot> response_plots(const ResponseData& data) {
   const double L = data.design.design.implement.length_m();
-  std::vector<Plot> plots;
+  std::vector<io::Plot> plots;
   for (std::size_t k = 0; k < data.request.points_from_butt_m.size(); ++k) {
     const double point = data.request.points_from_butt_m[k];
     // Shift the traces apart by a little more than the largest swing, as the paper does.
@@ -86,13 +86,13 @@ std::vector<Plot> response_plots(const ResponseData& data) {
     // top, as the key lists them), shifted by a little more than the largest
     // swing, with a dotted line of its colour at its own zero.
     const double shift = data.responses.size() > 1 ? 1.2 * swing : 0.0;
-    Plot plot{
+    io::Plot plot{
         fmt::format("Velocity {:.0f} cm from the tip ({:.0f} cm from the handle end), {} "
                     "(cf. Cross 2004 Figs. {})",
                     (L - point) * 100, point * 100, data.request.hand_held ? "hand-held" : "free",
                     data.request.hand_held ? "6 and 7" : "3 and 4"),
         "time (ms)",
-        shift > 0 ? fmt::format("velocity (m/s), traces {} m/s apart", significant(shift, 2))
+        shift > 0 ? fmt::format("velocity (m/s), traces {} m/s apart", io::significant(shift, 2))
                   : std::string("velocity (m/s)"),
         std::nullopt,
         std::nullopt,
@@ -107,8 +107,8 @@ std::vector<Plot> response_plots(const ResponseData& data) {
                            ? data.design.design.impact_from_butt_m
                            : data.request.impacts_from_butt_m[j];
       const double offset = -shift * static_cast<double>(j);
-      PlotSeries s{fmt::format("d = {:.0f} cm", (L - x) * 100), {}, {}, "lines lw 1.5"};
-      s.color = plot_color(j);
+      io::PlotSeries s{fmt::format("d = {:.0f} cm", (L - x) * 100), {}, {}, "lines lw 1.5"};
+      s.color = io::plot_color(j);
       for (std::size_t i = 0; i < r.time_s.size(); ++i) {
         s.x.push_back(r.time_s[i] * 1e3);
         s.y.push_back(r.points[k].dc_m_s[i] + r.points[k].ac_m_s[i] + offset);
@@ -117,8 +117,8 @@ std::vector<Plot> response_plots(const ResponseData& data) {
     }
     for (std::size_t j = 0; j < data.responses.size() && shift > 0; ++j) {
       const double offset = -shift * static_cast<double>(j);
-      PlotSeries zero{"", {}, {}, "lines lw 1 dt 3"};
-      zero.color = plot_color(j);
+      io::PlotSeries zero{"", {}, {}, "lines lw 1 dt 3"};
+      zero.color = io::plot_color(j);
       zero.x = {data.time_s.front() * 1e3, data.time_s.back() * 1e3};
       zero.y = {offset, offset};
       plot.series.push_back(std::move(zero));
@@ -134,9 +134,9 @@ std::vector<ReportEntry> write_response_reports(const std::string& designs_dir,
 
   // The paper's figures of the beam's motion: impacts every 6 cm from d = 4 cm,
   // observed 2 and 16 cm from the handle end; T about 8 ms (Sec. IV).
-  const DesignFile beam = load_design(designs_dir + "/paper-beam.json");
+  const io::DesignFile beam = io::load_design(designs_dir + "/paper-beam.json");
   for (const bool held : {false, true}) {
-    DesignFile file = beam;
+    io::DesignFile file = beam;
     file.design.impact_duration_s = 0.008;
     file.design.ball.speed_m_s = held ? 3.2 : 1.2;  // Sec. II
     ResponseRequest request;
@@ -144,7 +144,7 @@ std::vector<ReportEntry> write_response_reports(const std::string& designs_dir,
     request.until_s = 0.03;
     for (double d = 0.04; d < 0.72; d += 0.06) request.impacts_from_butt_m.push_back(0.72 - d);
     const ResponseData data = compute_response(file, request);
-    const std::vector<Plot> plots = response_plots(data);
+    const std::vector<io::Plot> plots = response_plots(data);
     const std::string stem = held ? "response-hand-held" : "response-free";
     write.text(stem + ".csv", response_csv(data));
     write.plot(stem + "-at-2cm.png", plots[0]);
@@ -165,7 +165,7 @@ std::vector<ReportEntry> write_response_reports(const std::string& designs_dir,
   }
 
   // The derived COR: the Table I racquet with a flexible frame, hit 5 cm from the tip.
-  DesignFile racquet = load_design(designs_dir + "/table1/row1.json");
+  io::DesignFile racquet = io::load_design(designs_dir + "/table1/row1.json");
   racquet.design.stiffness.fundamental_free_Hz = 150.0;
   const ResponseModel model = response_model(racquet.design, ResponseOptions{});
   const Design& d = racquet.design;
@@ -182,8 +182,8 @@ std::vector<ReportEntry> write_response_reports(const std::string& designs_dir,
       "| free fundamental (Hz) | e (cor_rigid 0.85) | vibration share | e (cor_rigid 0.90) | "
       "vibration share |\n"
       "|---:|---:|---:|---:|---:|\n";
-  PlotSeries e85{"cor_rigid 0.85", {}, {}, "lines lw 2"};
-  PlotSeries e90{"cor_rigid 0.90", {}, {}, "lines lw 2"};
+  io::PlotSeries e85{"cor_rigid 0.85", {}, {}, "lines lw 2"};
+  io::PlotSeries e90{"cor_rigid 0.90", {}, {}, "lines lw 2"};
   for (double f = 80.0; f <= 300.0; f += 10.0) {
     const ResponseModel scaled = with_fundamental(model, f);
     const DerivedCor a =
@@ -191,8 +191,9 @@ std::vector<ReportEntry> write_response_reports(const std::string& designs_dir,
     const DerivedCor b =
         derive_cor(scaled, d.impact_from_butt_m, 0.90, d.ball, d.impact_duration_s);
     for (const DerivedCor* c : {&a, &b}) {
-      csv += fmt::format("{},{},{},{},{}\n", exact(f), exact(c->cor_rigid), exact(c->cor),
-                         exact(c->vibration_share), exact(c->pulse.peak_force_N));
+      csv +=
+          fmt::format("{},{},{},{},{}\n", io::exact(f), io::exact(c->cor_rigid), io::exact(c->cor),
+                      io::exact(c->vibration_share), io::exact(c->pulse.peak_force_N));
     }
     md += fmt::format("| {:.0f} | {:.3f} | {:.1f} % | {:.3f} | {:.1f} % |\n", f, a.cor,
                       100 * a.vibration_share, b.cor, 100 * b.vibration_share);
@@ -232,7 +233,7 @@ std::vector<ReportEntry> write_response_reports(const std::string& designs_dir,
   write.text("cor-from-stiffness.csv", csv);
   write.plot(
       "cor-from-stiffness.png",
-      Plot{
+      io::Plot{
           "Derived COR against the free fundamental (Table I racquet, 5 cm from the tip, T = 4 ms)",
           "free fundamental (Hz)",
           "COR e at the impact point",
@@ -259,16 +260,16 @@ std::vector<ReportEntry> write_response_reports(const std::string& designs_dir,
       "ball's contact 3 cm in radius); the ball is a 40 kN/m spring. The Table I racquet 5 cm from "
       "the tip "
       "(M_eff = " +
-      significant(M_eff, 3) +
+      io::significant(M_eff, 3) +
       " kg).\n\n| tension (N) | tension (lb) | T (ms) | string bed (kN/m) "
       "|\n|---:|---:|---:|---:|\n";
-  PlotSeries series{"T against tension", {}, {}, "lines lw 2"};
+  io::PlotSeries series{"T against tension", {}, {}, "lines lw 2"};
   for (double t = 50.0; t <= 400.0; t += 25.0) {
     StringBed b = bed;
     b.tension_N = t;
     const TensionDuration r = tension_impact_duration(b, d.ball.mass_kg, M_eff);
-    tcsv += fmt::format("{},{},{},{}\n", exact(t), exact(t / kNewtonsPerPoundForce),
-                        exact(r.duration_s), exact(r.string_bed_stiffness_N_m));
+    tcsv += fmt::format("{},{},{},{}\n", io::exact(t), io::exact(t / kNewtonsPerPoundForce),
+                        io::exact(r.duration_s), io::exact(r.string_bed_stiffness_N_m));
     tmd += fmt::format("| {:.0f} | {:.0f} | {:.2f} | {:.1f} |\n", t, t / kNewtonsPerPoundForce,
                        r.duration_s * 1e3, r.string_bed_stiffness_N_m / 1e3);
     series.x.push_back(t);
@@ -288,16 +289,16 @@ std::vector<ReportEntry> write_response_reports(const std::string& designs_dir,
   write.text("duration-from-tension.md", tmd);
   write.text("duration-from-tension.csv", tcsv);
   write.plot("duration-from-tension.png", [&] {
-    Plot plot{"Impact duration against string tension (Table I racquet, 5 cm from the tip)",
-              "string tension (N)",
-              "impact duration T (ms)",
-              std::nullopt,
-              std::nullopt,
-              {series},
-              {},
-              {}};
-    plot.x2 = SecondXAxis{"string tension (lb, as stringers quote it)", 1.0 / kNewtonsPerPoundForce,
-                          10.0};
+    io::Plot plot{"Impact duration against string tension (Table I racquet, 5 cm from the tip)",
+                  "string tension (N)",
+                  "impact duration T (ms)",
+                  std::nullopt,
+                  std::nullopt,
+                  {series},
+                  {},
+                  {}};
+    plot.x2 = io::SecondXAxis{"string tension (lb, as stringers quote it)",
+                              1.0 / kNewtonsPerPoundForce, 10.0};
     return plot;
   }());
   entries.push_back(
@@ -307,4 +308,4 @@ std::vector<ReportEntry> write_response_reports(const std::string& designs_dir,
   return entries;
 }
 
-}  // namespace sweetspot::io
+}  // namespace sweetspot::reports

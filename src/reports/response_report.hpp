@@ -13,7 +13,7 @@
 #include "reports/paper_reports.hpp"
 #include "sweetspot/impact_response.hpp"
 
-namespace sweetspot::io {
+namespace sweetspot::reports {
 
 struct ResponseRequest {
   std::vector<double> points_from_butt_m{0.02, 0.16};  // where the velocity is observed
@@ -24,7 +24,7 @@ struct ResponseRequest {
 };
 
 struct ResponseData {
-  DesignFile design;
+  io::DesignFile design;
   ResponseRequest request;
   std::vector<double> time_s;
   std::vector<double> peak_force_N;       // per impact (Eq. 15 with the design's COR and T)
@@ -33,14 +33,14 @@ struct ResponseData {
 };
 
 // Throws InputError at the design's JSON path when it cannot give modes.
-ResponseData compute_response(const DesignFile& design, const ResponseRequest& request);
+ResponseData compute_response(const io::DesignFile& design, const ResponseRequest& request);
 
 // Long CSV: impact_from_butt_m, t_s, point_from_butt_m, v_dc_m_s, v_ac_m_s, v_m_s.
 std::string response_csv(const ResponseData& data);
 
 // One plot per observation point: the velocity against time for each impact,
 // traces shifted apart as in the paper's figures.
-std::vector<Plot> response_plots(const ResponseData& data);
+std::vector<io::Plot> response_plots(const ResponseData& data);
 
 // Derived COR against the free fundamental for the Table I racquet, the
 // frequencies that give the paper's 0.8 and 0.6, and the impact duration
@@ -48,4 +48,4 @@ std::vector<Plot> response_plots(const ResponseData& data);
 std::vector<ReportEntry> write_response_reports(const std::string& designs_dir,
                                                 const ReportWriter& write);
 
-}  // namespace sweetspot::io
+}  // namespace sweetspot::reports

@@ -8,15 +8,15 @@
 #include "io/format.hpp"
 #include "io/plot.hpp"
 
-namespace sweetspot::io {
+namespace sweetspot::reports {
 
-std::string string_bed_map_csv(const StringBedMap& map, double length_m) {
+std::string string_bed_map_csv(const studies::StringBedMap& map, double length_m) {
   const bool feel = map.fidelity != Fidelity::kRigid;
   std::string out =
       "from_butt_m,from_tip_m,off_axis_m,effective_mass_kg,apparent_cor,peak_wrist_force_N,"
       "peak_twist_torque_N_m";
   out += feel ? ",vibration_energy_J\n" : "\n";
-  for (const StringBedMapPoint& p : map.points) {
+  for (const studies::StringBedMapPoint& p : map.points) {
     if (!p.on_bed) continue;
     bool first = true;
     for (const double value :
@@ -24,18 +24,18 @@ std::string string_bed_map_csv(const StringBedMap& map, double length_m) {
           p.apparent_cor, p.peak_wrist_force_N, p.peak_twist_torque_N_m}) {
       if (!first) out += ',';
       first = false;
-      append_exact(out, value);
+      io::append_exact(out, value);
     }
     if (feel) {
       out += ',';
-      if (p.vibration_energy_J) append_exact(out, *p.vibration_energy_J);
+      if (p.vibration_energy_J) io::append_exact(out, *p.vibration_energy_J);
     }
     out += '\n';
   }
   return out;
 }
 
-std::vector<MapQuantity> map_quantities(const StringBedMap& map) {
+std::vector<MapQuantity> map_quantities(const studies::StringBedMap& map) {
   std::vector<MapQuantity> all{MapQuantity::kPower, MapQuantity::kShock};
   if (map.fidelity != Fidelity::kRigid) all.push_back(MapQuantity::kFeel);
   return all;
@@ -55,7 +55,7 @@ std::string map_quantity_name(MapQuantity quantity) {
 
 namespace {
 
-double value_of(const StringBedMapPoint& p, MapQuantity quantity) {
+double value_of(const studies::StringBedMapPoint& p, MapQuantity quantity) {
   switch (quantity) {
     case MapQuantity::kPower:
       return p.apparent_cor;
@@ -72,8 +72,8 @@ double value_of(const StringBedMapPoint& p, MapQuantity quantity) {
 namespace {
 
 // Everything of a heat map but the terminal.
-std::string heat_map_commands(const StringBedMap& map, MapQuantity quantity, double length_m,
-                              const std::string& design_name) {
+std::string heat_map_commands(const studies::StringBedMap& map, MapQuantity quantity,
+                              double length_m, const std::string& design_name) {
   const HeadEllipse& bed = map.bed;
   const double cm = 100.0;
   // Seen from the front, tip up: x across (cm off the axis), y along (cm from the tip, down).
@@ -101,11 +101,11 @@ std::string heat_map_commands(const StringBedMap& map, MapQuantity quantity, dou
       break;
   }
   std::string s;
-  s +=
-      "set title " + gnuplot_label(design_name.empty() ? title : design_name + ": " + title) + "\n";
-  s += "set xlabel " + gnuplot_label("off the long axis (cm; 3 o'clock to the right)") + "\n";
-  s += "set ylabel " + gnuplot_label("from the tip (cm)") + "\n";
-  s += "set cblabel " + gnuplot_label(colour_label) + "\n";
+  s += "set title " + io::gnuplot_label(design_name.empty() ? title : design_name + ": " + title) +
+       "\n";
+  s += "set xlabel " + io::gnuplot_label("off the long axis (cm; 3 o'clock to the right)") + "\n";
+  s += "set ylabel " + io::gnuplot_label("from the tip (cm)") + "\n";
+  s += "set cblabel " + io::gnuplot_label(colour_label) + "\n";
   s += palette;
   s += "set size ratio -1\nset key below box opaque\n";
   s += "unset grid\nset tics out\n";
@@ -117,7 +117,8 @@ std::string heat_map_commands(const StringBedMap& map, MapQuantity quantity, dou
   s += "$grid << EOD\n";
   for (int i = map.columns - 1; i >= 0; --i) {
     for (int j = 0; j < map.rows; ++j) {
-      const StringBedMapPoint& p = map.points[static_cast<std::size_t>(j) * map.columns + i];
+      const studies::StringBedMapPoint& p =
+          map.points[static_cast<std::size_t>(j) * map.columns + i];
       const double from_tip = (length_m - p.from_butt_m) * cm;
       if (p.on_bed && std::isfinite(value_of(p, quantity))) {
         s += fmt::format("{} {} {}\n", p.off_axis_m * cm, from_tip, value_of(p, quantity));
@@ -147,27 +148,27 @@ std::string heat_map_commands(const StringBedMap& map, MapQuantity quantity, dou
     s += fmt::format("${} << EOD\n{} {}\n{} {}\nEOD\n", name, -half, from_tip, half, from_tip);
     lines += fmt::format(
         ", ${} using 1:2 with lines {} title {}", name, style,
-        gnuplot_label(fmt::format("{} ({:.1f} cm from the tip)",
-                                  name == "cop" ? "hand-held COP" : "node of the free fundamental",
-                                  from_tip)));
+        io::gnuplot_label(fmt::format(
+            "{} ({:.1f} cm from the tip)",
+            name == "cop" ? "hand-held COP" : "node of the free fundamental", from_tip)));
   };
   across(map.cop_hand_from_butt_m, "cop", "lw 3 dt 1 lc rgb 'black'");
   across(map.node_free_from_butt_m, "node", "lw 3 dt 2 lc rgb '#4d4d4d'");
   s += "plot $grid using 1:2:3 with image notitle, $outline using 1:2 with lines lw 2 lc rgb "
        "'gray20' title " +
-       gnuplot_label("string bed") + lines + "\n";
+       io::gnuplot_label("string bed") + lines + "\n";
   return s;
 }
 
 }  // namespace
 
-std::string string_bed_heat_map_script(const StringBedMap& map, MapQuantity quantity,
+std::string string_bed_heat_map_script(const studies::StringBedMap& map, MapQuantity quantity,
                                        double length_m, const std::string& design_name) {
   return "set terminal pngcairo size 720,900 enhanced font 'DejaVu Sans,11'\n" +
          heat_map_commands(map, quantity, length_m, design_name);
 }
 
-std::string string_bed_heat_map_svg_script(const StringBedMap& map, MapQuantity quantity,
+std::string string_bed_heat_map_svg_script(const studies::StringBedMap& map, MapQuantity quantity,
                                            double length_m, const std::string& design_name,
                                            int width, int height) {
   return fmt::format(
@@ -180,4 +181,4 @@ std::string string_bed_heat_map_svg_script(const StringBedMap& map, MapQuantity 
          heat_map_commands(map, quantity, length_m, design_name);
 }
 
-}  // namespace sweetspot::io
+}  // namespace sweetspot::reports

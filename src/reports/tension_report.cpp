@@ -11,7 +11,7 @@
 #include "sweetspot/collision.hpp"
 #include "sweetspot/evaluate.hpp"
 
-namespace sweetspot::io {
+namespace sweetspot::reports {
 namespace {
 
 constexpr double kKmhPerMs = 3.6;
@@ -63,7 +63,7 @@ std::optional<double> fundamental_for(const Design& d, double tension_N, double 
 
 std::vector<ReportEntry> write_tension_report(const std::string& designs_dir,
                                               const ReportWriter& write) {
-  const DesignFile racquet = load_design(designs_dir + "/racquets/tour-100.json");
+  const io::DesignFile racquet = io::load_design(designs_dir + "/racquets/tour-100.json");
   const Design& d = racquet.design;
   const std::vector<double> tensions{180, 190, 200, 210, 220, 230, 240,
                                      250, 260, 270, 280, 290, 300};
@@ -71,26 +71,26 @@ std::vector<ReportEntry> write_tension_report(const std::string& designs_dir,
   std::string csv =
       "tension_N,fundamental_free_Hz,rebound_speed_m_s,contact_time_s,frame_vibration_J,"
       "peak_wrist_force_N,peak_impact_force_N,peak_ball_compression_m\n";
-  std::vector<PlotSeries> rebound, contact, vibration, wrist;
+  std::vector<io::PlotSeries> rebound, contact, vibration, wrist;
   std::string table =
       "| tension (N) | f1 (Hz) | rebound (m/s) | rebound (km/h) | contact (ms) | frame vibration "
       "(J) | peak wrist force (N) | peak force (N) | ball squeeze (mm) |\n"
       "|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const double f1 : frequencies) {
     const std::string title = fmt::format("f1 = {:.0f} Hz", f1);
-    PlotSeries r{title, {}, {}}, c{title, {}, {}}, v{title, {}, {}}, w{title, {}, {}};
+    io::PlotSeries r{title, {}, {}}, c{title, {}, {}}, v{title, {}, {}}, w{title, {}, {}};
     for (const double t : tensions) {
       const Point p = solve(d, t, f1);
-      csv += fmt::format("{},{},{},{},{},{},{},{}\n", exact(t), exact(f1), exact(p.rebound_m_s),
-                         exact(p.contact_s), exact(p.vibration_J), exact(p.wrist_N),
-                         exact(p.peak_N), exact(p.compression_m));
+      csv += fmt::format("{},{},{},{},{},{},{},{}\n", io::exact(t), io::exact(f1),
+                         io::exact(p.rebound_m_s), io::exact(p.contact_s), io::exact(p.vibration_J),
+                         io::exact(p.wrist_N), io::exact(p.peak_N), io::exact(p.compression_m));
       if (static_cast<int>(t) % 40 == 20 || t == 300)
         table += fmt::format(
             "| {:.0f} | {:.0f} | {:.2f} | {:.1f} | {:.2f} | {:.2f} | {:.0f} | "
             "{:.0f} | {:.1f} |\n",
             t, f1, p.rebound_m_s, p.rebound_m_s * kKmhPerMs, p.contact_s * 1e3, p.vibration_J,
             p.wrist_N, p.peak_N, p.compression_m * 1e3);
-      for (PlotSeries* s : {&r, &c, &v, &w}) s->x.push_back(t);
+      for (io::PlotSeries* s : {&r, &c, &v, &w}) s->x.push_back(t);
       r.y.push_back(p.rebound_m_s);
       c.y.push_back(p.contact_s * 1e3);
       v.y.push_back(p.vibration_J);
@@ -145,7 +145,7 @@ std::vector<ReportEntry> write_tension_report(const std::string& designs_dir,
   }
 
   // Table I: the frequencies that give the paper's e = 0.8 and 0.6.
-  const DesignFile table1 = load_design(designs_dir + "/table1/row1.json");
+  const io::DesignFile table1 = io::load_design(designs_dir + "/table1/row1.json");
   md +=
       "\n## Table I: which frame gives e = 0.8 and e = 0.6\n\nThe Table I racquet (0.70 m, "
       "0.25 kg, M1/M2 = 0.8, uniform EI) hit 5 cm from the tip; the COR at the impact point from "
@@ -170,17 +170,18 @@ std::vector<ReportEntry> write_tension_report(const std::string& designs_dir,
   write.text("tension-and-stiffness.md", md);
   write.text("tension-and-stiffness.csv", csv);
   const auto plot = [&](const std::string& name, const std::string& what,
-                        const std::vector<PlotSeries>& series) {
-    write.plot("tension-and-stiffness-" + name + ".png",
-               Plot{what + " against string tension (typical racquet, 16 cm from the tip, 50 m/s)",
-                    "string tension (N)",
-                    what,
-                    std::pair{175.0, 305.0},
-                    std::nullopt,
-                    series,
-                    {},
-                    {},
-                    "outside right"});
+                        const std::vector<io::PlotSeries>& series) {
+    write.plot(
+        "tension-and-stiffness-" + name + ".png",
+        io::Plot{what + " against string tension (typical racquet, 16 cm from the tip, 50 m/s)",
+                 "string tension (N)",
+                 what,
+                 std::pair{175.0, 305.0},
+                 std::nullopt,
+                 series,
+                 {},
+                 {},
+                 "outside right"});
   };
   plot("rebound", "ball rebound speed (m/s)", rebound);
   plot("contact", "contact time (ms)", contact);
@@ -199,4 +200,4 @@ std::vector<ReportEntry> write_tension_report(const std::string& designs_dir,
                    high.contact_s * 1e3)}};
 }
 
-}  // namespace sweetspot::io
+}  // namespace sweetspot::reports

@@ -10,10 +10,10 @@
 
 #include "reports/report_writer.hpp"
 
-namespace sweetspot::io {
+namespace sweetspot::reports {
 
 // Reads `designs_dir`/racquets/tour-100.json and table1/row1.json.
 std::vector<ReportEntry> write_tension_report(const std::string& designs_dir,
                                               const ReportWriter& write);
 
-}  // namespace sweetspot::io
+}  // namespace sweetspot::reports

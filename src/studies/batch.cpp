@@ -27,7 +27,7 @@
 #include "sweetspot/evaluate.hpp"
 #include "sweetspot/frame_modes.hpp"
 
-namespace sweetspot::io {
+namespace sweetspot::studies {
 namespace {
 
 constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
@@ -40,11 +40,13 @@ std::string_view trimmed(std::string_view text) {
 }
 
 // A cell or column name quoted for a message, shortened like brief().
-std::string shown(std::string_view text) { return brief(Json(valid_utf8(text))); }
+std::string shown(std::string_view text) { return io::brief(io::Json(io::valid_utf8(text))); }
 
 // A cell's text in a row's error, in single quotes: the error column is a CSV
 // field, where a double quote would be written twice ("got ""VS5""").
-std::string shown_cell(std::string_view text) { return "'" + one_line(valid_utf8(text)) + "'"; }
+std::string shown_cell(std::string_view text) {
+  return "'" + io::one_line(io::valid_utf8(text)) + "'";
+}
 
 // Whether `text` is all ASCII, which is valid UTF-8: most catalogues' lines,
 // told in one pass (which the compiler vectorises) before the byte-by-byte
@@ -122,7 +124,7 @@ class LineReader {
     if (line_ == 1 && std::string_view(text).starts_with(kByteOrderMark))
       text.erase(0, kByteOrderMark.size());
     const std::string_view added = std::string_view(text).substr(start);
-    const std::size_t bad = is_ascii(added) ? std::string_view::npos : invalid_utf8_at(added);
+    const std::size_t bad = is_ascii(added) ? std::string_view::npos : io::invalid_utf8_at(added);
     if (bad != std::string_view::npos) {
       refuse(line_,
              fmt::format("byte {} is not UTF-8 text (expected a UTF-8 CSV or JSON Lines file)",
@@ -132,7 +134,7 @@ class LineReader {
   }
 
   [[noreturn]] void refuse(std::size_t line, const std::string& detail) const {
-    throw InputError(fmt::format("{}:{}", source_, line), "", detail);
+    throw io::InputError(fmt::format("{}:{}", source_, line), "", detail);
   }
 
  private:
@@ -142,8 +144,9 @@ class LineReader {
     in_.read(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
     const int error = errno;
     if (in_.bad()) {
-      throw ReadError(source_, fmt::format("cannot read line {}{}{}", line_ + 1, error ? ": " : "",
-                                           error ? std::strerror(error) : ""));
+      throw io::ReadError(source_,
+                          fmt::format("cannot read line {}{}{}", line_ + 1, error ? ": " : "",
+                                      error ? std::strerror(error) : ""));
     }
     begin_ = 0;
     end_ = static_cast<std::size_t>(in_.gcount());
@@ -371,9 +374,10 @@ struct Header {
 Header read_header(std::string_view line, const std::string& where, const BatchOptions& options) {
   CsvRecord record;
   split_csv(line, kMaxBatchColumns, record);
-  if (!record.error.empty()) throw InputError(where, "", "the header is not CSV: " + record.error);
+  if (!record.error.empty())
+    throw io::InputError(where, "", "the header is not CSV: " + record.error);
   if (record.count > kMaxBatchColumns) {
-    throw InputError(
+    throw io::InputError(
         where, "",
         fmt::format("{} columns, more than the limit of {}", record.count, kMaxBatchColumns));
   }
@@ -389,12 +393,12 @@ Header read_header(std::string_view line, const std::string& where, const BatchO
       for (std::size_t k = 0; k < header.names.size() && k < 12; ++k)
         columns += (k ? ", " : "") + shown(header.names[k]);
       if (header.names.size() > 12) columns += ", ...";
-      throw InputError(options.map_source, "",
-                       fmt::format("column {}: not in the header of {} (expected one of {})",
-                                   shown(column), where, columns));
+      throw io::InputError(options.map_source, "",
+                           fmt::format("column {}: not in the header of {} (expected one of {})",
+                                       shown(column), where, columns));
     }
     if (std::find(first + 1, header.names.end(), column) != header.names.end()) {
-      throw InputError(
+      throw io::InputError(
           options.map_source, "",
           fmt::format("column {}: the header of {} has it twice (columns {} and {}), "
                       "expected a column name given once",
@@ -410,10 +414,10 @@ Header read_header(std::string_view line, const std::string& where, const BatchO
     if (mapped && target == target_of.end() && !names_design_part(name)) {
       for (const std::size_t other : header.passed) {
         if (header.names[other] == name) {
-          throw InputError(where, "",
-                           fmt::format("column {} {}: repeats column {}, passed through too "
-                                       "(expected each column passed through named once)",
-                                       k + 1, shown(name), other + 1));
+          throw io::InputError(where, "",
+                               fmt::format("column {} {}: repeats column {}, passed through too "
+                                           "(expected each column passed through named once)",
+                                           k + 1, shown(name), other + 1));
         }
       }
       header.passed.push_back(k);
@@ -424,21 +428,21 @@ Header read_header(std::string_view line, const std::string& where, const BatchO
     if (target != target_of.end()) label += " (mapped to " + shown(field) + ")";
     if (const std::string problem = field_problem(field); !problem.empty()) {
       if (target != target_of.end()) {
-        throw InputError(
+        throw io::InputError(
             options.map_source, "",
             fmt::format("column {}: the field {}: {}", shown(name), shown(field), problem));
       }
-      throw InputError(where, "", label + ": " + problem);
+      throw io::InputError(where, "", label + ": " + problem);
     }
     const std::string pointer = field_to_pointer(field);
     // A field no design has is the header's fault, refused once whatever the cells hold.
-    if (const std::string unknown = design_path_problem(pointer); !unknown.empty())
-      throw InputError(where, "", label + ": " + unknown);
+    if (const std::string unknown = io::design_path_problem(pointer); !unknown.empty())
+      throw io::InputError(where, "", label + ": " + unknown);
     const auto [same, inserted] = column_of.emplace(pointer, header.design.size());
     if (!inserted) {
-      throw InputError(where, "",
-                       fmt::format("{}: repeats {} (each field may be given once)", label,
-                                   header.design[same->second].label));
+      throw io::InputError(where, "",
+                           fmt::format("{}: repeats {} (each field may be given once)", label,
+                                       header.design[same->second].label));
     }
     header.design.push_back(DesignColumn{k, field, std::move(label)});
   }
@@ -449,18 +453,18 @@ Header read_header(std::string_view line, const std::string& where, const BatchO
     for (std::size_t at = parent.size(); at > 0; at = parent.rfind('/', at - 1)) {
       const auto outer = column_of.find(parent.substr(0, at));
       if (outer != column_of.end()) {
-        throw InputError(where, "",
-                         fmt::format("{}: lies inside {} (give the field or what it holds)", label,
-                                     header.design[outer->second].label));
+        throw io::InputError(where, "",
+                             fmt::format("{}: lies inside {} (give the field or what it holds)",
+                                         label, header.design[outer->second].label));
       }
       if (at == 0) break;
     }
-    for (const std::string& other : alternative_spellings(pointer.substr(slash + 1))) {
+    for (const std::string& other : io::alternative_spellings(pointer.substr(slash + 1))) {
       const auto contradicted = column_of.find(parent + "/" + other);
       if (contradicted != column_of.end() && contradicted->second < j) {
-        throw InputError(where, "",
-                         fmt::format("{}: contradicts {}: give the quantity once, in one unit",
-                                     label, header.design[contradicted->second].label));
+        throw io::InputError(where, "",
+                             fmt::format("{}: contradicts {}: give the quantity once, in one unit",
+                                         label, header.design[contradicted->second].label));
       }
     }
   }
@@ -502,7 +506,7 @@ struct Row {
 // in the chunk.
 struct Outcome {
   std::optional<Evaluation> evaluation;
-  std::optional<DesignFile> file;  // the design as read, for complete JSON rows
+  std::optional<io::DesignFile> file;  // the design as read, for complete JSON rows
 };
 
 // The most of a row's text a reused Row keeps between chunks.
@@ -562,7 +566,7 @@ class Evaluator {
     if (whole) {
       for (const std::size_t k : header_.passed) row.passed.emplace_back(record.fields[k]);
     }
-    if (whole && options_.compiled && options_.format != Format::kJson &&
+    if (whole && options_.compiled && options_.format != io::Format::kJson &&
         header_.design.size() <= kMaxCompiledColumns &&
         evaluate_compiled(row, outcome, record, thread)) {
       return;
@@ -620,7 +624,7 @@ class Evaluator {
     if (shape.attempts >= kTemplateAttempts) return false;
     ++shape.attempts;
     try {
-      Json document = options_.base ? *options_.base : Json::object();
+      io::Json document = options_.base ? *options_.base : io::Json::object();
       std::vector<std::string> pointers;
       bool named = false;
       for (std::size_t j = 0; j < header_.design.size(); ++j) {
@@ -635,7 +639,7 @@ class Evaluator {
         pointers.push_back(pointers_[j]);
       }
       const std::string where = fmt::format("{}:{}", source_, line);
-      auto compiled = CompiledDesign::compile(describe_design(document, where), pointers);
+      auto compiled = CompiledDesign::compile(io::describe_design(document, where), pointers);
       if (!compiled) {
         shape.attempts =
             kTemplateAttempts;  // a column no binding sets: every row of the shape reads JSON
@@ -665,14 +669,14 @@ class Evaluator {
   void evaluate_general(Row& row, Outcome& outcome, const CsvRecord* record) const {
     const std::string where = fmt::format("{}:{}", source_, row.line);
     try {
-      Json document = options_.base ? *options_.base : Json::object();
+      io::Json document = options_.base ? *options_.base : io::Json::object();
       if (record) {
         const CsvRecord& cells = *record;
-        if (!cells.error.empty()) throw InputError(where, "", "not CSV: " + cells.error);
+        if (!cells.error.empty()) throw io::InputError(where, "", "not CSV: " + cells.error);
         if (cells.count != header_.count) {
-          throw InputError(where, "",
-                           fmt::format("expected {} fields as in the header, got {}", header_.count,
-                                       cells.count));
+          throw io::InputError(where, "",
+                               fmt::format("expected {} fields as in the header, got {}",
+                                           header_.count, cells.count));
         }
         for (const DesignColumn& column : header_.design) {
           // A row that fails still shows its own name.
@@ -683,42 +687,43 @@ class Evaluator {
           const std::string_view text = cells.fields[column.cell];
           if (text.empty()) continue;  // the base's value stands
           if (is_text_field(column.field)) {
-            document[Json::json_pointer(pointers_[j])] = std::string(text);
+            document[io::Json::json_pointer(pointers_[j])] = std::string(text);
             continue;
           }
           const std::string_view cell = trimmed(text);
           double value = 0.0;
           const auto [end, error] = std::from_chars(cell.data(), cell.data() + cell.size(), value);
           if (error != std::errc() || end != cell.data() + cell.size() || cell.empty()) {
-            throw InputError(where, pointers_[j],
-                             cell_problem(j, "expected a number, got " + shown_cell(text)));
+            throw io::InputError(where, pointers_[j],
+                                 cell_problem(j, "expected a number, got " + shown_cell(text)));
           }
           if (!std::isfinite(value)) {
-            throw InputError(where, pointers_[j],
-                             cell_problem(j, "expected a finite number, got " + shown_cell(text)));
+            throw io::InputError(
+                where, pointers_[j],
+                cell_problem(j, "expected a finite number, got " + shown_cell(text)));
           }
           try {
             columns_[j].apply(document, value);
-          } catch (const Json::exception&) {
+          } catch (const io::Json::exception&) {
             row.bad_column = j + 1;
             row.bad_column_detail =
                 "the base design holds a value on its path that is not an object";
-            throw InputError(where, pointers_[j], row.bad_column_detail);
+            throw io::InputError(where, pointers_[j], row.bad_column_detail);
           }
         }
       } else {
-        override_fields(document, parse_json(row.text, where));
+        io::override_fields(document, io::parse_json(row.text, where));
       }
-      if (options_.format == Format::kJson) {
+      if (options_.format == io::Format::kJson) {
         // The design with its inputs' provenance, for a row as complete as `evaluate`'s.
-        DesignFile design = read_design(document, where);
+        io::DesignFile design = io::read_design(document, where);
         row.name = design.name;
         outcome.evaluation =
-            evaluate_design_file(design, options_.fidelity, options_.modal_tolerance);
+            io::evaluate_design_file(design, options_.fidelity, options_.modal_tolerance);
         outcome.file = std::move(design);
         return;
       }
-      const DesignFile design = read_design_lean(document, where);
+      const io::DesignFile design = io::read_design_lean(document, where);
       row.name = design.name;
       try {
         const Fidelity fidelity = resolve_fidelity(
@@ -726,9 +731,10 @@ class Evaluator {
             design.design);
         outcome.evaluation = evaluate(design.design, fidelity, options_.modal_tolerance);
       } catch (const std::invalid_argument& e) {
-        rethrow_in(read_design(document, where), e);  // with the key map, to name the user's key
+        io::rethrow_in(io::read_design(document, where),
+                       e);  // with the key map, to name the user's key
       }
-    } catch (const InputError& e) {
+    } catch (const io::InputError& e) {
       outcome.evaluation.reset();
       outcome.file.reset();
       row.error = e.what();
@@ -737,7 +743,7 @@ class Evaluator {
         const DesignColumn& column = header_.design[j];
         if (pointers_[j] == e.pointer() && header_.names[column.cell] != column.field &&
             !e.detail().starts_with("column ")) {
-          row.error = InputError(e.source(), e.pointer(), cell_problem(j, e.detail())).what();
+          row.error = io::InputError(e.source(), e.pointer(), cell_problem(j, e.detail())).what();
         }
       }
       const bool shape_fault = e.detail().starts_with("unknown key") ||
@@ -757,7 +763,7 @@ class Evaluator {
     } catch (const std::exception& e) {
       outcome.evaluation.reset();
       outcome.file.reset();
-      row.error = InputError(where, "", e.what()).what();
+      row.error = io::InputError(where, "", e.what()).what();
     }
   }
 
@@ -766,7 +772,7 @@ class Evaluator {
   bool csv_;
   Header header_;
   std::vector<std::string> pointers_;
-  std::vector<FieldOverride> columns_;
+  std::vector<io::FieldOverride> columns_;
   // What each design column's cells hold.
   enum class CellKind { kName, kText, kNumber };
   std::vector<CellKind> kinds_;
@@ -777,31 +783,31 @@ class Evaluator {
 // csv_field(text) appended to `out`, without a copy for text that needs no
 // quotes, escape or neutralising.
 void append_cell(std::string& out, std::string_view text) {
-  if (csv_plain(text)) {
+  if (io::csv_plain(text)) {
     out += text;
   } else {
-    out += csv_field(text);
+    out += io::csv_field(text);
   }
 }
 
-void write_row(const Row& row, const Outcome& outcome, const Header& header, Format format,
+void write_row(const Row& row, const Outcome& outcome, const Header& header, io::Format format,
                std::string& out) {
   const std::optional<Evaluation>& evaluation = outcome.evaluation;
-  if (format == Format::kJson) {
-    Json j =
-        evaluation && outcome.file ? evaluation_json(*outcome.file, *evaluation) : Json::object();
+  if (format == io::Format::kJson) {
+    io::Json j = evaluation && outcome.file ? evaluation_json(*outcome.file, *evaluation)
+                                            : io::Json::object();
     j["line"] = row.line;
     if (!evaluation) {
       j["error"] = row.error;
       if (!row.name.empty()) j["name"] = row.name;
     }
     if (!header.passed.empty() && !row.passed.empty()) {
-      Json& columns = j["columns"];
-      columns = Json::object();
+      io::Json& columns = j["columns"];
+      columns = io::Json::object();
       for (std::size_t i = 0; i < header.passed.size(); ++i)
         columns[header.names[header.passed[i]]] = row.passed[i];
     }
-    out += j.dump(-1, ' ', false, Json::error_handler_t::replace);
+    out += j.dump(-1, ' ', false, io::Json::error_handler_t::replace);
     out += "\n";
     return;
   }
@@ -815,13 +821,13 @@ void write_row(const Row& row, const Outcome& outcome, const Header& header, For
   }
   // The outputs written into a buffer a few at a time and appended together.
   constexpr std::size_t kAtOnce = 16;
-  char buffer[kAtOnce * (kMaxExactChars + 1)];
+  char buffer[kAtOnce * (io::kMaxExactChars + 1)];
   char* end = buffer;
   std::size_t pending = 0;
-  for (const OutputSpec& o : output_specs()) {
+  for (const io::OutputSpec& o : io::output_specs()) {
     const auto value = evaluation ? o.value(*evaluation) : std::nullopt;
     *end++ = ',';
-    if (value) end = write_exact(end, *value);
+    if (value) end = io::write_exact(end, *value);
     if (++pending == kAtOnce) {
       out.append(buffer, static_cast<std::size_t>(end - buffer));
       end = buffer;
@@ -830,7 +836,7 @@ void write_row(const Row& row, const Outcome& outcome, const Header& header, For
   }
   out.append(buffer, static_cast<std::size_t>(end - buffer));
   out += ',';
-  if (!row.error.empty()) out += csv_field(row.error);
+  if (!row.error.empty()) out += io::csv_field(row.error);
   out += '\n';
 }
 
@@ -960,22 +966,22 @@ std::vector<std::pair<std::string, std::string>> parse_column_map(std::string_vi
     const std::string_view entry = trimmed(text.substr(start, comma - start));
     const std::size_t equals = entry.find('=');
     if (equals == std::string_view::npos) {
-      throw InputError(source, "",
-                       fmt::format("item {} {}: expected COLUMN=design.field, such as "
-                                   "weight=implement.mass_g",
-                                   item, shown(entry)));
+      throw io::InputError(source, "",
+                           fmt::format("item {} {}: expected COLUMN=design.field, such as "
+                                       "weight=implement.mass_g",
+                                       item, shown(entry)));
     }
     std::string column(trimmed(entry.substr(0, equals)));
     std::string field(trimmed(entry.substr(equals + 1)));
     if (column.empty() || field.empty()) {
-      throw InputError(source, "",
-                       fmt::format("item {} {}: expected a column name and a design field on "
-                                   "either side of '=', such as weight=implement.mass_g",
-                                   item, shown(entry)));
+      throw io::InputError(source, "",
+                           fmt::format("item {} {}: expected a column name and a design field on "
+                                       "either side of '=', such as weight=implement.mass_g",
+                                       item, shown(entry)));
     }
     for (const auto& [other, _] : map) {
       if (other == column) {
-        throw InputError(
+        throw io::InputError(
             source, "",
             fmt::format("column {}: mapped twice (expected each column once)", shown(column)));
       }
@@ -986,20 +992,21 @@ std::vector<std::pair<std::string, std::string>> parse_column_map(std::string_vi
   }
 }
 
-std::vector<std::pair<std::string, std::string>> column_map_from_json(const Json& json,
+std::vector<std::pair<std::string, std::string>> column_map_from_json(const io::Json& json,
                                                                       const std::string& source) {
   if (!json.is_object() || json.empty()) {
-    throw InputError(source, "",
-                     "expected a JSON object from the catalogue's column names to design fields, "
-                     "such as {\"weight\": \"implement.mass_g\"}, got " +
-                         brief(json));
+    throw io::InputError(
+        source, "",
+        "expected a JSON object from the catalogue's column names to design fields, "
+        "such as {\"weight\": \"implement.mass_g\"}, got " +
+            io::brief(json));
   }
   std::vector<std::pair<std::string, std::string>> map;
   for (const auto& [column, field] : json.items()) {
     if (!field.is_string()) {
-      throw InputError(
-          source, (Json::json_pointer() / column).to_string(),
-          "expected a design field as text, such as \"implement.mass_g\", got " + brief(field));
+      throw io::InputError(
+          source, (io::Json::json_pointer() / column).to_string(),
+          "expected a design field as text, such as \"implement.mass_g\", got " + io::brief(field));
     }
     map.emplace_back(column, field.get<std::string>());
   }
@@ -1025,39 +1032,40 @@ BatchSummary run_batch(std::istream& in, const std::string& source, const BatchO
   // A catalogue with no row at all is a mistake (the wrong file, an empty
   // pipe), not a catalogue of nothing.
   if (!have_line) {
-    throw InputError(source, "",
-                     csv ? "the file is empty, expected a CSV header"
-                         : "the file is empty, expected one design per line (JSON Lines)");
+    throw io::InputError(source, "",
+                         csv ? "the file is empty, expected a CSV header"
+                             : "the file is empty, expected one design per line (JSON Lines)");
   }
   if (!csv && !options.map.empty()) {
-    throw InputError(options.map_source, "",
-                     "a column map is for a CSV catalogue, and " + source +
-                         " is JSON Lines (expected its rows to name design fields themselves)");
+    throw io::InputError(options.map_source, "",
+                         "a column map is for a CSV catalogue, and " + source +
+                             " is JSON Lines (expected its rows to name design fields themselves)");
   }
-  const OutputSpec* sort_by = nullptr;
+  const io::OutputSpec* sort_by = nullptr;
   if (!options.sort_output.empty()) {
-    sort_by = find_output(options.sort_output);
+    sort_by = io::find_output(options.sort_output);
     if (!sort_by) throw std::invalid_argument("sort_output: no output " + options.sort_output);
   }
   if (csv) {
     complete_record(reader, line);
     header = read_header(line, header_at, options);
   }
-  if (options.format == Format::kCsv) {
+  if (options.format == io::Format::kCsv) {
     // A column passed through keeps its name, which must not be one of the output's own.
     std::vector<std::string_view> own{"line", "name", "error"};
-    for (const OutputSpec& o : output_specs()) own.push_back(o.name);
+    for (const io::OutputSpec& o : io::output_specs()) own.push_back(o.name);
     for (const std::size_t k : header.passed) {
       if (std::find(own.begin(), own.end(), header.names[k]) != own.end()) {
-        throw InputError(header_at, "",
-                         fmt::format("column {} {}: passed through, it would repeat the output's "
-                                     "own column {}: map it onto a design field, or rename it",
-                                     k + 1, shown(header.names[k]), shown(header.names[k])));
+        throw io::InputError(
+            header_at, "",
+            fmt::format("column {} {}: passed through, it would repeat the output's "
+                        "own column {}: map it onto a design field, or rename it",
+                        k + 1, shown(header.names[k]), shown(header.names[k])));
       }
     }
     out << "line,name";
-    for (const std::size_t k : header.passed) out << "," << csv_field(header.names[k]);
-    for (const OutputSpec& o : output_specs()) out << "," << o.name;
+    for (const std::size_t k : header.passed) out << "," << io::csv_field(header.names[k]);
+    for (const io::OutputSpec& o : io::output_specs()) out << "," << o.name;
     out << ",error\n";
   }
   const Evaluator evaluator(source, options, csv, std::move(header));
@@ -1076,23 +1084,25 @@ BatchSummary run_batch(std::istream& in, const std::string& source, const BatchO
     // own block of text (or, sorted, its own row); the blocks are written in order.
     for (std::string& text : texts) text.clear();
     const std::span<Row> read(chunk.data(), rows);
-    for_blocks(read.size(), options.threads, [&](std::size_t t, std::size_t from, std::size_t to) {
-      for (std::size_t i = from; i < to; ++i) {
-        Row& row = read[i];
-        Outcome& outcome = outcomes[t];
-        evaluator.evaluate_row(row, outcome, t);
-        if (sort_by) {
-          if (outcome.evaluation) row.key = sort_by->value(*outcome.evaluation);
-          write_row(row, outcome, evaluator.header(), options.format, row.out);
-        } else {
-          write_row(row, outcome, evaluator.header(), options.format, texts[t]);
-        }
-      }
-    });
+    io::for_blocks(read.size(), options.threads,
+                   [&](std::size_t t, std::size_t from, std::size_t to) {
+                     for (std::size_t i = from; i < to; ++i) {
+                       Row& row = read[i];
+                       Outcome& outcome = outcomes[t];
+                       evaluator.evaluate_row(row, outcome, t);
+                       if (sort_by) {
+                         if (outcome.evaluation) row.key = sort_by->value(*outcome.evaluation);
+                         write_row(row, outcome, evaluator.header(), options.format, row.out);
+                       } else {
+                         write_row(row, outcome, evaluator.header(), options.format, texts[t]);
+                       }
+                     }
+                   });
     for (const Row& row : read) {
       if (!row.bad_column) continue;
       const DesignColumn& column = evaluator.header().design[row.bad_column - 1];
-      throw InputError(header_at, "", fmt::format("{}: {}", column.label, row.bad_column_detail));
+      throw io::InputError(header_at, "",
+                           fmt::format("{}: {}", column.label, row.bad_column_detail));
     }
     if (sort_by) {
       for (const Row& row : read) kept->add(row.key, row.out);
@@ -1140,4 +1150,4 @@ CatalogueFormat catalogue_format(const std::string& path) {
   return CatalogueFormat::kAuto;
 }
 
-}  // namespace sweetspot::io
+}  // namespace sweetspot::studies

@@ -23,7 +23,7 @@
 #include "io/format.hpp"
 #include "io/json_reader.hpp"
 
-namespace sweetspot::io {
+namespace sweetspot::studies {
 
 // Rows evaluated together (and split among the threads) before they are
 // written, and the most text they may hold together.
@@ -43,11 +43,11 @@ enum class CatalogueFormat {
 
 struct BatchOptions {
   CatalogueFormat input = CatalogueFormat::kAuto;
-  std::optional<Json> base;       // defaults for every row ("--base DESIGN.json")
-  Format format = Format::kCsv;   // kCsv or kJson (JSON Lines out)
-  int threads = 1;                // >= 1
-  std::string fidelity;           // rigid, modal, response or auto; empty: each design's own
-  double modal_tolerance = 1e-6;  // the hand-held modes' relative frequency error
+  std::optional<io::Json> base;          // defaults for every row ("--base DESIGN.json")
+  io::Format format = io::Format::kCsv;  // kCsv or kJson (JSON Lines out)
+  int threads = 1;                       // >= 1
+  std::string fidelity;                  // rigid, modal, response or auto; empty: each design's own
+  double modal_tolerance = 1e-6;         // the hand-held modes' relative frequency error
   // CSV rows set on a design compiled once per shape of filled cells
   // (design_binding.hpp). Off, every row is written into a JSON document and
   // read again: the reference the tests compare the compiled path with.
@@ -81,7 +81,7 @@ std::vector<std::pair<std::string, std::string>> parse_column_map(std::string_vi
 
 // A column map from a JSON object {"weight": "implement.mass_g", ...}.
 // Throws InputError naming `source` and the key for anything else.
-std::vector<std::pair<std::string, std::string>> column_map_from_json(const Json& map,
+std::vector<std::pair<std::string, std::string>> column_map_from_json(const io::Json& map,
                                                                       const std::string& source);
 
 struct BatchSummary {
@@ -104,4 +104,4 @@ CatalogueFormat catalogue_format(const std::string& path);
 // "implement.point_masses.0.mass_g" -> "/implement/point_masses/0/mass_g".
 std::string field_to_pointer(const std::string& field);
 
-}  // namespace sweetspot::io
+}  // namespace sweetspot::studies

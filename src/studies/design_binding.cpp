@@ -9,31 +9,32 @@
 
 #include "io/json_reader.hpp"
 
-namespace sweetspot::io {
+namespace sweetspot::studies {
 namespace {
 
-using Setter = void (*)(DesignDescription&, std::size_t, double);
-using Form = ImplementDescription::Form;
+using Setter = void (*)(io::DesignDescription&, std::size_t, double);
+using Form = io::ImplementDescription::Form;
 
 // A number of one part of the design: a quantity spelled base + a unit suffix
 // of `dimension`, or (`dimension` empty) a plain number under exactly `base`.
 struct Field {
   std::string_view base;
-  std::optional<Dimension> dimension;
+  std::optional<io::Dimension> dimension;
   Setter set;
   bool available;  // whether the design as read has this number in this form
 };
 
 // The conversion of `key` if it spells one of `fields`, with that field.
-std::optional<std::pair<UnitScale, Setter>> match(std::string_view key,
-                                                  std::initializer_list<Field> fields) {
+std::optional<std::pair<io::UnitScale, Setter>> match(std::string_view key,
+                                                      std::initializer_list<Field> fields) {
   for (const Field& f : fields) {
     if (!f.available) continue;
     if (!f.dimension) {
-      if (key == f.base) return std::pair{UnitScale{}, f.set};
+      if (key == f.base) return std::pair{io::UnitScale{}, f.set};
       continue;
     }
-    if (const auto scale = unit_scale(key, f.base, *f.dimension)) return std::pair{*scale, f.set};
+    if (const auto scale = io::unit_scale(key, f.base, *f.dimension))
+      return std::pair{*scale, f.set};
   }
   return std::nullopt;
 }
@@ -65,12 +66,12 @@ std::vector<std::string_view> tokens_of(std::string_view pointer) {
 
 }  // namespace
 
-std::optional<FieldBinding> bind_field(const DesignDescription& d, std::string_view pointer) {
+std::optional<FieldBinding> bind_field(const io::DesignDescription& d, std::string_view pointer) {
   const std::vector<std::string_view> t = tokens_of(pointer);
   if (t.size() < 2) return std::nullopt;
   const Design& design = d.design;
-  const ImplementDescription& implement = d.implement;
-  std::optional<std::pair<UnitScale, Setter>> found;
+  const io::ImplementDescription& implement = d.implement;
+  std::optional<std::pair<io::UnitScale, Setter>> found;
   bool rebuilds = false;
   std::size_t index = 0;
   if (t[0] == "implement" && t.size() == 2) {
@@ -78,53 +79,58 @@ std::optional<FieldBinding> bind_field(const DesignDescription& d, std::string_v
     const bool specs = implement.form == Form::kSpecs;
     rebuilds = true;
     found = match(
-        t[1],
-        {{"length", Dimension::kLength,
-          [](DesignDescription& x, std::size_t, double v) { x.implement.length_m = v; },
-          ratio || specs},
-         {"mass", Dimension::kMass,
-          [](DesignDescription& x, std::size_t, double v) { x.implement.mass_kg = v; },
-          ratio || specs},
-         {"head_to_handle_mass_ratio", std::nullopt,
-          [](DesignDescription& x, std::size_t, double v) {
-            x.implement.head_to_handle_mass_ratio = v;
-          },
-          ratio},
-         {"balance_from_butt_m", std::nullopt,
-          [](DesignDescription& x, std::size_t, double v) {
-            x.implement.balance_in_points = false;
-            x.implement.balance = v;
-          },
-          specs},
-         {"balance_pts_hl", std::nullopt,
-          [](DesignDescription& x, std::size_t, double v) {
-            x.implement.balance_in_points = true;
-            x.implement.balance = v;
-          },
-          specs},
-         {"swingweight", Dimension::kInertia,
-          [](DesignDescription& x, std::size_t, double v) { x.implement.swingweight_kg_m2 = v; },
-          specs},
-         {"head_aspect_ratio", std::nullopt,
-          [](DesignDescription& x, std::size_t, double v) { x.implement.head->aspect_ratio = v; },
-          implement.head.has_value()},
-         {"hoop_width", Dimension::kLength,
-          [](DesignDescription& x, std::size_t, double v) { x.implement.head->hoop_width_m = v; },
-          implement.head.has_value()}});
+        t[1], {{"length", io::Dimension::kLength,
+                [](io::DesignDescription& x, std::size_t, double v) { x.implement.length_m = v; },
+                ratio || specs},
+               {"mass", io::Dimension::kMass,
+                [](io::DesignDescription& x, std::size_t, double v) { x.implement.mass_kg = v; },
+                ratio || specs},
+               {"head_to_handle_mass_ratio", std::nullopt,
+                [](io::DesignDescription& x, std::size_t, double v) {
+                  x.implement.head_to_handle_mass_ratio = v;
+                },
+                ratio},
+               {"balance_from_butt_m", std::nullopt,
+                [](io::DesignDescription& x, std::size_t, double v) {
+                  x.implement.balance_in_points = false;
+                  x.implement.balance = v;
+                },
+                specs},
+               {"balance_pts_hl", std::nullopt,
+                [](io::DesignDescription& x, std::size_t, double v) {
+                  x.implement.balance_in_points = true;
+                  x.implement.balance = v;
+                },
+                specs},
+               {"swingweight", io::Dimension::kInertia,
+                [](io::DesignDescription& x, std::size_t, double v) {
+                  x.implement.swingweight_kg_m2 = v;
+                },
+                specs},
+               {"head_aspect_ratio", std::nullopt,
+                [](io::DesignDescription& x, std::size_t, double v) {
+                  x.implement.head->aspect_ratio = v;
+                },
+                implement.head.has_value()},
+               {"hoop_width", io::Dimension::kLength,
+                [](io::DesignDescription& x, std::size_t, double v) {
+                  x.implement.head->hoop_width_m = v;
+                },
+                implement.head.has_value()}});
     // The reader scales a balance in cm and a head in cm^2 as a unit does.
     if (!found && specs && t[1] == "balance_cm") {
-      found =
-          std::pair{UnitScale{0.01, -2}, Setter{[](DesignDescription& x, std::size_t, double v) {
-                      x.implement.balance_in_points = false;
-                      x.implement.balance = v;
-                    }}};
+      found = std::pair{io::UnitScale{0.01, -2},
+                        Setter{[](io::DesignDescription& x, std::size_t, double v) {
+                          x.implement.balance_in_points = false;
+                          x.implement.balance = v;
+                        }}};
     }
     if (!found && implement.head && (t[1] == "headsize_sq_in" || t[1] == "headsize_cm2")) {
-      found =
-          std::pair{t[1] == "headsize_sq_in" ? UnitScale{kSquareInch_m2, 0} : UnitScale{1e-4, -4},
-                    Setter{[](DesignDescription& x, std::size_t, double v) {
-                      x.implement.head->area_m2 = v;
-                    }}};
+      found = std::pair{
+          t[1] == "headsize_sq_in" ? io::UnitScale{io::kSquareInch_m2, 0} : io::UnitScale{1e-4, -4},
+          Setter{[](io::DesignDescription& x, std::size_t, double v) {
+            x.implement.head->area_m2 = v;
+          }}};
     }
   } else if (t[0] == "implement" && t.size() == 4 &&
              (t[1] == "sections" || t[1] == "point_masses")) {
@@ -134,18 +140,18 @@ std::optional<FieldBinding> bind_field(const DesignDescription& d, std::string_v
     rebuilds = true;
     if (t[1] == "sections") {
       const bool has = implement.form == Form::kSections && index < implement.sections.size();
-      found = match(t[3], {{"length", Dimension::kLength,
-                            [](DesignDescription& x, std::size_t k, double v) {
+      found = match(t[3], {{"length", io::Dimension::kLength,
+                            [](io::DesignDescription& x, std::size_t k, double v) {
                               x.implement.sections[k].length_m = v;
                             },
                             has},
-                           {"mass", Dimension::kMass,
-                            [](DesignDescription& x, std::size_t k, double v) {
+                           {"mass", io::Dimension::kMass,
+                            [](io::DesignDescription& x, std::size_t k, double v) {
                               x.implement.sections[k].mass_kg = v;
                             },
                             has},
-                           {"EI", Dimension::kStiffness,
-                            [](DesignDescription& x, std::size_t k, double v) {
+                           {"EI", io::Dimension::kStiffness,
+                            [](io::DesignDescription& x, std::size_t k, double v) {
                               x.implement.sections[k].EI_N_m2 = v;
                             },
                             has && implement.sections[index].EI_N_m2.has_value()}});
@@ -153,30 +159,30 @@ std::optional<FieldBinding> bind_field(const DesignDescription& d, std::string_v
       // Entry N of the file's list, whatever it holds (a clock pair is one
       // entry; its mass is each piece's).
       const bool has = index < implement.point_masses.size();
-      const PointMassDescription* entry = has ? &implement.point_masses[index] : nullptr;
+      const io::PointMassDescription* entry = has ? &implement.point_masses[index] : nullptr;
       const bool on_axis = entry && !entry->handle && entry->clock_hours.empty();
-      found = match(t[3], {{"from_butt", Dimension::kLength,
-                            [](DesignDescription& x, std::size_t k, double v) {
+      found = match(t[3], {{"from_butt", io::Dimension::kLength,
+                            [](io::DesignDescription& x, std::size_t k, double v) {
                               x.implement.point_masses[k].from_butt_m = v;
                             },
                             entry && entry->from_butt_m.has_value()},
-                           {"from_tip", Dimension::kLength,
-                            [](DesignDescription& x, std::size_t k, double v) {
+                           {"from_tip", io::Dimension::kLength,
+                            [](io::DesignDescription& x, std::size_t k, double v) {
                               x.implement.point_masses[k].from_tip_m = v;
                             },
                             entry && entry->from_tip_m.has_value()},
-                           {"off_axis", Dimension::kLength,
-                            [](DesignDescription& x, std::size_t k, double v) {
+                           {"off_axis", io::Dimension::kLength,
+                            [](io::DesignDescription& x, std::size_t k, double v) {
                               x.implement.point_masses[k].off_axis_m = v;
                             },
                             on_axis},
                            {"clock", std::nullopt,
-                            [](DesignDescription& x, std::size_t k, double v) {
+                            [](io::DesignDescription& x, std::size_t k, double v) {
                               x.implement.point_masses[k].clock_hours = {v};
                             },
                             entry && entry->clock_hours.size() == 1},
-                           {"mass", Dimension::kMass,
-                            [](DesignDescription& x, std::size_t k, double v) {
+                           {"mass", io::Dimension::kMass,
+                            [](io::DesignDescription& x, std::size_t k, double v) {
                               x.implement.point_masses[k].mass_kg = v;
                             },
                             has}});
@@ -185,121 +191,128 @@ std::optional<FieldBinding> bind_field(const DesignDescription& d, std::string_v
     found = match(
         t[1],
         {{"cor", std::nullopt,
-          [](DesignDescription& x, std::size_t, double v) { x.design.cor = v; }, !design.cor_rigid},
+          [](io::DesignDescription& x, std::size_t, double v) { x.design.cor = v; },
+          !design.cor_rigid},
          {"cor_rigid", std::nullopt,
-          [](DesignDescription& x, std::size_t, double v) { x.design.cor_rigid = v; },
+          [](io::DesignDescription& x, std::size_t, double v) { x.design.cor_rigid = v; },
           design.cor_rigid.has_value()},
-         {"EI", Dimension::kStiffness,
-          [](DesignDescription& x, std::size_t, double v) { x.design.stiffness.EI_N_m2 = v; },
+         {"EI", io::Dimension::kStiffness,
+          [](io::DesignDescription& x, std::size_t, double v) { x.design.stiffness.EI_N_m2 = v; },
           design.stiffness.EI_N_m2.has_value()},
-         {"fundamental_free", Dimension::kFrequency,
-          [](DesignDescription& x, std::size_t, double v) {
+         {"fundamental_free", io::Dimension::kFrequency,
+          [](io::DesignDescription& x, std::size_t, double v) {
             x.design.stiffness.fundamental_free_Hz = v;
           },
           design.stiffness.fundamental_free_Hz.has_value()},
          {"RA", std::nullopt,
-          [](DesignDescription& x, std::size_t, double v) { x.design.stiffness.RA = v; },
+          [](io::DesignDescription& x, std::size_t, double v) { x.design.stiffness.RA = v; },
           design.stiffness.RA.has_value()}});
   } else if (t.size() == 3 && t[0] == "frame" && t[1] == "cross_section") {
     const bool has = design.stiffness.shear_modulus_Pa.has_value();
     found = match(
         t[2],
         {{"shear_modulus_Pa", std::nullopt,
-          [](DesignDescription& x, std::size_t, double v) {
+          [](io::DesignDescription& x, std::size_t, double v) {
             x.design.stiffness.shear_modulus_Pa = v;
           },
           has},
-         {"width", Dimension::kLength,
-          [](DesignDescription& x, std::size_t, double v) { x.design.stiffness.width_m = v; }, has},
-         {"thickness", Dimension::kLength,
-          [](DesignDescription& x, std::size_t, double v) { x.design.stiffness.thickness_m = v; },
+         {"width", io::Dimension::kLength,
+          [](io::DesignDescription& x, std::size_t, double v) { x.design.stiffness.width_m = v; },
+          has},
+         {"thickness", io::Dimension::kLength,
+          [](io::DesignDescription& x, std::size_t, double v) {
+            x.design.stiffness.thickness_m = v;
+          },
           has}});
   } else if (t.size() == 2 && t[0] == "strings") {
     const bool bed = design.strings.has_value();
     found = match(
         t[1],
-        {{"impact_duration", Dimension::kTime,
-          [](DesignDescription& x, std::size_t, double v) { x.design.impact_duration_s = v; },
+        {{"impact_duration", io::Dimension::kTime,
+          [](io::DesignDescription& x, std::size_t, double v) { x.design.impact_duration_s = v; },
           !bed},
-         {"tension", Dimension::kForce,
-          [](DesignDescription& x, std::size_t, double v) { x.design.strings->tension_N = v; },
+         {"tension", io::Dimension::kForce,
+          [](io::DesignDescription& x, std::size_t, double v) { x.design.strings->tension_N = v; },
           bed},
-         {"string_spacing", Dimension::kLength,
-          [](DesignDescription& x, std::size_t, double v) {
+         {"string_spacing", io::Dimension::kLength,
+          [](io::DesignDescription& x, std::size_t, double v) {
             x.design.strings->string_spacing_m = v;
           },
           bed},
-         {"contact_radius", Dimension::kLength,
-          [](DesignDescription& x, std::size_t, double v) {
+         {"contact_radius", io::Dimension::kLength,
+          [](io::DesignDescription& x, std::size_t, double v) {
             x.design.strings->contact_radius_m = v;
           },
           bed}});
     // The reader's factors for a head size, as it writes them.
     if (!found && bed && d.head_area_m2 && (t[1] == "head_size_in2" || t[1] == "head_size_cm2")) {
       found = std::pair{
-          t[1] == "head_size_in2" ? UnitScale{kSquareInch_m2, 0} : UnitScale{1e-4, -4},
-          Setter{[](DesignDescription& x, std::size_t, double v) { x.head_area_m2 = v; }}};
+          t[1] == "head_size_in2" ? io::UnitScale{io::kSquareInch_m2, 0} : io::UnitScale{1e-4, -4},
+          Setter{[](io::DesignDescription& x, std::size_t, double v) { x.head_area_m2 = v; }}};
     }
   } else if (t.size() == 2 && t[0] == "hand") {
     found = match(
         t[1],
-        {{"mass", Dimension::kMass,
-          [](DesignDescription& x, std::size_t, double v) { x.design.hand.mass_kg = v; }, true},
-         {"center_from_butt", Dimension::kLength,
-          [](DesignDescription& x, std::size_t, double v) { x.design.hand.center_from_butt_m = v; },
+        {{"mass", io::Dimension::kMass,
+          [](io::DesignDescription& x, std::size_t, double v) { x.design.hand.mass_kg = v; }, true},
+         {"center_from_butt", io::Dimension::kLength,
+          [](io::DesignDescription& x, std::size_t, double v) {
+            x.design.hand.center_from_butt_m = v;
+          },
           true},
-         {"grip_length", Dimension::kLength,
-          [](DesignDescription& x, std::size_t, double v) { x.design.hand.grip_length_m = v; },
+         {"grip_length", io::Dimension::kLength,
+          [](io::DesignDescription& x, std::size_t, double v) { x.design.hand.grip_length_m = v; },
           true},
-         {"grip_stiffness", Dimension::kStiffness,
-          [](DesignDescription& x, std::size_t, double v) {
+         {"grip_stiffness", io::Dimension::kStiffness,
+          [](io::DesignDescription& x, std::size_t, double v) {
             x.design.hand.grip_stiffness_N_m2 = v;
           },
           true},
-         {"grip_damping", Dimension::kDamping,
-          [](DesignDescription& x, std::size_t, double v) {
+         {"grip_damping", io::Dimension::kDamping,
+          [](io::DesignDescription& x, std::size_t, double v) {
             x.design.hand.grip_damping_N_s_m2 = v;
           },
           true}});
   } else if (t.size() == 2 && t[0] == "forearm") {
-    found =
-        match(t[1], {{"equivalent_mass", Dimension::kMass,
-                      [](DesignDescription& x, std::size_t, double v) {
-                        x.design.forearm_equivalent_mass_kg = v;
-                      },
-                      !d.forearm_from_mass},
-                     {"mass", Dimension::kMass,
-                      [](DesignDescription& x, std::size_t, double v) { x.forearm_mass_kg = v; },
-                      d.forearm_from_mass}});
+    found = match(t[1],
+                  {{"equivalent_mass", io::Dimension::kMass,
+                    [](io::DesignDescription& x, std::size_t, double v) {
+                      x.design.forearm_equivalent_mass_kg = v;
+                    },
+                    !d.forearm_from_mass},
+                   {"mass", io::Dimension::kMass,
+                    [](io::DesignDescription& x, std::size_t, double v) { x.forearm_mass_kg = v; },
+                    d.forearm_from_mass}});
   } else if (t.size() == 2 && t[0] == "ball") {
     found = match(
         t[1],
-        {{"mass", Dimension::kMass,
-          [](DesignDescription& x, std::size_t, double v) { x.design.ball.mass_kg = v; }, true},
-         {"speed", Dimension::kSpeed,
-          [](DesignDescription& x, std::size_t, double v) { x.design.ball.speed_m_s = v; }, true}});
+        {{"mass", io::Dimension::kMass,
+          [](io::DesignDescription& x, std::size_t, double v) { x.design.ball.mass_kg = v; }, true},
+         {"speed", io::Dimension::kSpeed,
+          [](io::DesignDescription& x, std::size_t, double v) { x.design.ball.speed_m_s = v; },
+          true}});
   } else if (t.size() == 2 && t[0] == "impact") {
     // A file without an impact takes the one written at the pointer.
-    found = match(t[1], {{"from_tip", Dimension::kLength,
-                          [](DesignDescription& x, std::size_t, double v) {
-                            x.impact_place = ImpactPlace::kFromTip;
+    found = match(t[1], {{"from_tip", io::Dimension::kLength,
+                          [](io::DesignDescription& x, std::size_t, double v) {
+                            x.impact_place = io::ImpactPlace::kFromTip;
                             x.impact_given = true;
                             x.impact_m = v;
                           },
-                          d.impact_place == ImpactPlace::kFromTip || !d.impact_given},
-                         {"from_butt", Dimension::kLength,
-                          [](DesignDescription& x, std::size_t, double v) {
-                            x.impact_place = ImpactPlace::kFromButt;
+                          d.impact_place == io::ImpactPlace::kFromTip || !d.impact_given},
+                         {"from_butt", io::Dimension::kLength,
+                          [](io::DesignDescription& x, std::size_t, double v) {
+                            x.impact_place = io::ImpactPlace::kFromButt;
                             x.impact_given = true;
                             x.impact_m = v;
                           },
-                          d.impact_place == ImpactPlace::kFromButt || !d.impact_given}});
+                          d.impact_place == io::ImpactPlace::kFromButt || !d.impact_given}});
   }
   if (!found) return std::nullopt;
   return FieldBinding{std::string(pointer), found->first, found->second, index, rebuilds};
 }
 
-std::optional<CompiledDesign> CompiledDesign::compile(DesignDescription description,
+std::optional<CompiledDesign> CompiledDesign::compile(io::DesignDescription description,
                                                       std::span<const std::string> pointers) {
   CompiledDesign compiled(std::move(description));
   for (const std::string& pointer : pointers) {
@@ -335,14 +348,14 @@ const Design* BoundDesign::at(std::span<const double> values) {
   try {
     if (rebuild) {
       implement_built_ = false;
-      live_.design.implement = build_implement(live_.implement);
+      live_.design.implement = io::build_implement(live_.implement);
       implement_built_ = true;
     }
-    derive(live_);
+    io::derive(live_);
   } catch (const std::exception&) {
     return nullptr;
   }
   return &live_.design;
 }
 
-}  // namespace sweetspot::io
+}  // namespace sweetspot::studies

@@ -19,14 +19,14 @@
 #include "io/design_description.hpp"
 #include "io/json_reader.hpp"
 
-namespace sweetspot::io {
+namespace sweetspot::studies {
 
 struct FieldBinding {
   std::string pointer;  // as the study or the header wrote it, e.g. "/hand/mass_g"
-  UnitScale scale;      // the key's unit to SI (mass_g: 10^-3), as the reader converts
+  io::UnitScale scale;  // the key's unit to SI (mass_g: 10^-3), as the reader converts
   // Writes the SI value into the description (`index`: the section, or the
   // entry of the file's list of point masses).
-  void (*set)(DesignDescription&, std::size_t index, double si) = nullptr;
+  void (*set)(io::DesignDescription&, std::size_t index, double si) = nullptr;
   std::size_t index = 0;
   bool implement = false;  // the implement is rebuilt when the value changes
 };
@@ -34,23 +34,24 @@ struct FieldBinding {
 // The binding of `pointer` in a design read as `description`, or std::nullopt
 // when the pointer names no number of that design that a binding can set (a
 // published value, a name, a key of another form of the implement).
-std::optional<FieldBinding> bind_field(const DesignDescription& description,
+std::optional<FieldBinding> bind_field(const io::DesignDescription& description,
                                        std::string_view pointer);
 
 // A design read once, with some of its numbers bound to JSON pointers.
 class CompiledDesign {
  public:
   // std::nullopt when any pointer cannot be bound.
-  static std::optional<CompiledDesign> compile(DesignDescription description,
+  static std::optional<CompiledDesign> compile(io::DesignDescription description,
                                                std::span<const std::string> pointers);
 
-  const DesignDescription& description() const { return description_; }
+  const io::DesignDescription& description() const { return description_; }
   const std::vector<FieldBinding>& bindings() const { return bindings_; }
   bool rebuilds_implement() const { return rebuilds_implement_; }
 
  private:
-  explicit CompiledDesign(DesignDescription description) : description_(std::move(description)) {}
-  DesignDescription description_;
+  explicit CompiledDesign(io::DesignDescription description)
+      : description_(std::move(description)) {}
+  io::DesignDescription description_;
   std::vector<FieldBinding> bindings_;
   bool rebuilds_implement_ = false;
 };
@@ -71,9 +72,9 @@ class BoundDesign {
 
  private:
   const CompiledDesign* compiled_;
-  DesignDescription live_;
+  io::DesignDescription live_;
   std::vector<double> last_si_;  // the implement bindings' values at the last build
   bool implement_built_ = false;
 };
 
-}  // namespace sweetspot::io
+}  // namespace sweetspot::studies

@@ -14,7 +14,7 @@
 #include "studies/design_binding.hpp"
 #include "sweetspot/evaluate.hpp"
 
-namespace sweetspot::io {
+namespace sweetspot::studies {
 namespace {
 
 // A constraint within this fraction of its limit counts as active.
@@ -45,7 +45,7 @@ std::string constraint_name(const ProblemConstraint& pc) {
   const char* op = pc.which == ProblemConstraint::kEquals ? "="
                    : pc.which == ProblemConstraint::kMin  ? ">="
                                                           : "<=";
-  return fmt::format("{} {} {}", pc.source->output->name, op, significant(limit_of(pc)));
+  return fmt::format("{} {} {}", pc.source->output->name, op, io::significant(limit_of(pc)));
 }
 
 // Signed constraint value: <= 0 (or = 0) when satisfied.
@@ -79,8 +79,8 @@ bool minimizes_square(const Study& study) {
 
 }  // namespace
 
-Problem make_problem(const Study& study) {
-  Problem problem;
+optimizer::Problem make_problem(const Study& study) {
+  optimizer::Problem problem;
   for (const StudyVariable& v : study.variables) {
     problem.lower.push_back(v.min);
     problem.upper.push_back(v.max);
@@ -88,11 +88,11 @@ Problem make_problem(const Study& study) {
   }
   const std::vector<ProblemConstraint> constraints = expand_constraints(study);
   for (const ProblemConstraint& pc : constraints) {
-    problem.constraints.push_back(ConstraintInfo{constraint_name(pc),
-                                                 pc.which == ProblemConstraint::kEquals
-                                                     ? ConstraintKind::kZero
-                                                     : ConstraintKind::kAtMostZero,
-                                                 tolerance_at(*pc.source, limit_of(pc))});
+    problem.constraints.push_back(optimizer::ConstraintInfo{
+        constraint_name(pc),
+        pc.which == ProblemConstraint::kEquals ? optimizer::ConstraintKind::kZero
+                                               : optimizer::ConstraintKind::kAtMostZero,
+        tolerance_at(*pc.source, limit_of(pc))});
   }
   const bool square = minimizes_square(study);
   problem.smooth =
@@ -103,7 +103,7 @@ Problem make_problem(const Study& study) {
   // Each point is set on the study's compiled design (one working copy per
   // evaluate function, so a fork runs beside it); a point it cannot vouch
   // for is read from JSON (design_at).
-  const auto make_evaluate = [&study, constraints, square]() -> EvaluateFunction {
+  const auto make_evaluate = [&study, constraints, square]() -> optimizer::EvaluateFunction {
     const auto bound = compiled_for_variables(study)
                            ? std::make_shared<BoundDesign>(*study.compiled)
                            : std::shared_ptr<BoundDesign>();
@@ -136,7 +136,7 @@ Problem make_problem(const Study& study) {
 
 namespace {
 
-std::optional<Evaluation> outputs_of(const Study& study, const DesignFile& design,
+std::optional<Evaluation> outputs_of(const Study& study, const io::DesignFile& design,
                                      std::string* why) {
   try {
     return evaluate_in(study, design);
@@ -153,7 +153,7 @@ struct PointValues {
   std::vector<double> constraints;
 };
 
-PointValues searched_values(const Problem& problem, std::span<const double> x) {
+PointValues searched_values(const optimizer::Problem& problem, std::span<const double> x) {
   PointValues v;
   v.constraints.assign(problem.constraints.size(), kPenalty);
   problem.evaluate(x, v.objective, v.constraints);
@@ -162,7 +162,7 @@ PointValues searched_values(const Problem& problem, std::span<const double> x) {
 
 // The same numbers for the printed design read again: its evaluation as
 // `evaluate` gives it (std::nullopt: refused), with the search's arithmetic.
-PointValues reread_values(const Study& study, const DesignFile& reread,
+PointValues reread_values(const Study& study, const io::DesignFile& reread,
                           const std::optional<Evaluation>& e) {
   const std::vector<ProblemConstraint> constraints = expand_constraints(study);
   PointValues v;
@@ -190,8 +190,8 @@ double reported_objective(const Study& study, double minimised) {
 
 // "" when the search's numbers at its best point are, bit for bit, those of
 // the printed design read again and of the summary; else what differs.
-std::string compare_values(const Study& study, const Summary& summary, const PointValues& searched,
-                           const PointValues& reread) {
+std::string compare_values(const Study& study, const optimizer::Summary& summary,
+                           const PointValues& searched, const PointValues& reread) {
   std::string differs;
   const auto add = [&](const std::string& what) {
     differs += (differs.empty() ? "" : "; ") + what;
@@ -200,14 +200,15 @@ std::string compare_values(const Study& study, const Summary& summary, const Poi
   if (!same_bits(searched.objective, reread.objective) ||
       !same_bits(summary.objective, searched_objective)) {
     add(fmt::format("objective {} (the search) against {} (the printed design)",
-                    exact(summary.objective), exact(reported_objective(study, reread.objective))));
+                    io::exact(summary.objective),
+                    io::exact(reported_objective(study, reread.objective))));
   }
   const std::vector<ProblemConstraint> constraints = expand_constraints(study);
   for (std::size_t k = 0; k < constraints.size(); ++k) {
     if (!same_bits(searched.constraints[k], reread.constraints[k])) {
       add(fmt::format("`{}` off its limit by {} (the search) against {} (the printed design)",
-                      constraint_name(constraints[k]), exact(searched.constraints[k]),
-                      exact(reread.constraints[k])));
+                      constraint_name(constraints[k]), io::exact(searched.constraints[k]),
+                      io::exact(reread.constraints[k])));
     }
   }
   return differs;
@@ -215,8 +216,8 @@ std::string compare_values(const Study& study, const Summary& summary, const Poi
 
 }  // namespace
 
-Json printed_design(const Study& study, std::span<const double> x, const DesignFile& at_x) {
-  Json printed = document_at(study, x);
+io::Json printed_design(const Study& study, std::span<const double> x, const io::DesignFile& at_x) {
+  io::Json printed = document_at(study, x);
   // Notes about the starting design, not this one.
   for (const char* key : {"$schema", "description", "reference"}) printed.erase(key);
   // The impact the study evaluated, written out: a command's default impact
@@ -224,7 +225,7 @@ Json printed_design(const Study& study, std::span<const double> x, const DesignF
   const auto impact = at_x.provenance.find("impact/from_butt_m");
   if (impact == at_x.provenance.end() || impact->second.starts_with("default")) {
     if (!printed.contains("impact") || !printed["impact"].is_object())
-      printed["impact"] = Json::object();
+      printed["impact"] = io::Json::object();
     printed["impact"]["from_butt_m"] = at_x.design.impact_from_butt_m;
   }
   // The model the study evaluated with, when the file's own would be another.
@@ -242,29 +243,29 @@ Json printed_design(const Study& study, std::span<const double> x, const DesignF
 
 OptimizationResult run_optimization(const Study& study) {
   if (study.objective.empty())
-    throw InputError(study.source, "/objective", "missing: optimize needs an objective");
+    throw io::InputError(study.source, "/objective", "missing: optimize needs an objective");
   for (std::size_t i = 0; i < study.variables.size(); ++i) {
     const StudyVariable& v = study.variables[i];
     if (!(v.min < v.max)) {
-      throw InputError(study.source, "/variables/" + std::to_string(i),
-                       "optimize needs a range: give \"min\" < \"max\" (the values span only " +
-                           significant(v.min) + ")");
+      throw io::InputError(study.source, "/variables/" + std::to_string(i),
+                           "optimize needs a range: give \"min\" < \"max\" (the values span only " +
+                               io::significant(v.min) + ")");
     }
   }
-  const Problem problem = make_problem(study);
-  Summary summary = minimize(problem, study.options);
+  const optimizer::Problem problem = make_problem(study);
+  optimizer::Summary summary = minimize(problem, study.options);
   if (minimizes_square(study)) {
     summary.objective = std::sqrt(summary.objective);
     for (double& value : summary.history) value = std::sqrt(value);
   }
-  DesignFile start = design_at(study, problem.start);  // valid: read_study checked it
+  io::DesignFile start = design_at(study, problem.start);  // valid: read_study checked it
   // A point whose design is invalid carries only the penalty: the start
   // (valid, and evaluated first) then stands for the search's answer.
   std::string why;
-  std::optional<DesignFile> best;
+  std::optional<io::DesignFile> best;
   try {
     best.emplace(design_at(study, summary.x));
-  } catch (const InputError& e) {
+  } catch (const io::InputError& e) {
     why = e.detail();
     summary.x = problem.start;
     best.emplace(start);
@@ -273,7 +274,8 @@ OptimizationResult run_optimization(const Study& study) {
   // Without an impact spread the objective is a function of the outputs:
   // each design is evaluated once (the modal model in the loop costs
   // hundreds of microseconds an evaluation).
-  const auto undefined = [&](const DesignFile& design, const std::optional<Evaluation>& outputs) {
+  const auto undefined = [&](const io::DesignFile& design,
+                             const std::optional<Evaluation>& outputs) {
     return study.over_impacts || !outputs ? objective_undefined(study, design)
                                           : terms_undefined(study, *outputs);
   };
@@ -294,12 +296,12 @@ OptimizationResult run_optimization(const Study& study) {
   std::optional<Evaluation> reread_outputs;
   bool read_again = false;
   try {
-    r.best =
-        read_design(parse_json(r.best_document.dump(2, ' ', false, Json::error_handler_t::replace),
-                               printed_source),
-                    printed_source);
+    r.best = io::read_design(
+        io::parse_json(r.best_document.dump(2, ' ', false, io::Json::error_handler_t::replace),
+                       printed_source),
+        printed_source);
     read_again = true;
-    reread_outputs = evaluate_design_file(r.best, "", study.modal_tolerance);
+    reread_outputs = io::evaluate_design_file(r.best, "", study.modal_tolerance);
   } catch (const std::invalid_argument& e) {
     // A refusal of the design read again is its answer (the objective has no
     // value there); a printed design that cannot be read is the defect.
@@ -346,4 +348,4 @@ OptimizationResult run_optimization(const Study& study) {
   return r;
 }
 
-}  // namespace sweetspot::io
+}  // namespace sweetspot::studies

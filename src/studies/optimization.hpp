@@ -8,13 +8,13 @@
 #include <string>
 #include <vector>
 
+#include "optimizer/optimize.hpp"
 #include "studies/study.hpp"
-#include "sweetspot/optimize.hpp"
 
-namespace sweetspot::io {
+namespace sweetspot::studies {
 
 // The study as an optimisation problem for sweetspot::minimize.
-Problem make_problem(const Study& study);
+optimizer::Problem make_problem(const Study& study);
 
 struct ConstraintReport {
   std::string name;             // "swingweight_kg_cm2 <= 330"
@@ -37,10 +37,10 @@ enum class Outcome {
 };
 
 struct OptimizationResult {
-  Summary summary;
+  optimizer::Summary summary;
   std::vector<double> start_x;
-  DesignFile start;
-  DesignFile best;
+  io::DesignFile start;
+  io::DesignFile best;
   std::optional<double> start_objective{};  // std::nullopt: the objective has no value at the start
   // Every output at the start and at the best design (std::nullopt: the model refuses the design).
   std::optional<Evaluation> start_outputs{}, best_outputs{};
@@ -50,7 +50,7 @@ struct OptimizationResult {
   // The best design exactly as the report prints it (printed_design); `best`,
   // `best_outputs`, the objective and the constraints are this document read
   // again and evaluated as `sweetspot evaluate` does.
-  Json best_document{};
+  io::Json best_document{};
   // Empty, or why the search's own evaluation of its best design differs,
   // bit for bit, from the printed design's: a defect of sweetspot (the report
   // gives the printed design's values; `optimize` exits 1 with this line).
@@ -63,7 +63,7 @@ struct OptimizationResult {
 // out when the file left it to the default, the study's fidelity when the
 // file's own would differ, and without the notes that describe the starting
 // design ("description", "reference", "$schema").
-Json printed_design(const Study& study, std::span<const double> x, const DesignFile& at_x);
+io::Json printed_design(const Study& study, std::span<const double> x, const io::DesignFile& at_x);
 
 // Runs the study's optimisation. Throws InputError for a study that cannot be
 // optimised (no objective, a variable without a range).
@@ -75,4 +75,4 @@ Json printed_design(const Study& study, std::span<const double> x, const DesignF
 // values; a difference is named in `inconsistency`.
 OptimizationResult run_optimization(const Study& study);
 
-}  // namespace sweetspot::io
+}  // namespace sweetspot::studies

@@ -12,7 +12,7 @@
 #include "sweetspot/rigid_impact.hpp"
 #include "sweetspot/string_bed.hpp"
 
-namespace sweetspot::io {
+namespace sweetspot::studies {
 namespace {
 
 void check_grid(const char* name, int n) {
@@ -135,14 +135,14 @@ StringBedMap string_bed_map(const Design& design, const StringBedMapOptions& opt
   if (options.progress) options.progress(0, total);
   for (int first = 0; first < options.columns; first += wave) {
     const int count = std::min(wave, options.columns - first);
-    for_blocks(static_cast<std::size_t>(count), threads,
-               [&](std::size_t, std::size_t from, std::size_t to) {
-                 for (std::size_t k = from; k < to; ++k) column(first + static_cast<int>(k));
-               });
+    io::for_blocks(static_cast<std::size_t>(count), threads,
+                   [&](std::size_t, std::size_t from, std::size_t to) {
+                     for (std::size_t k = from; k < to; ++k) column(first + static_cast<int>(k));
+                   });
     if (options.progress)
       options.progress(static_cast<std::size_t>(first + count) * options.rows, total);
   }
   return map;
 }
 
-}  // namespace sweetspot::io
+}  // namespace sweetspot::studies

@@ -13,7 +13,7 @@
 #include "sweetspot/evaluate.hpp"
 #include "sweetspot/head_geometry.hpp"
 
-namespace sweetspot::io {
+namespace sweetspot::studies {
 
 struct StringBedMapOptions {
   int columns = 50;  // grid points along the long axis (x), in [2, 1000]
@@ -69,4 +69,4 @@ struct StringBedMap {
 // rethrows it at the file's key), or "--rows"/"--columns" for the grid.
 StringBedMap string_bed_map(const Design& design, const StringBedMapOptions& options = {});
 
-}  // namespace sweetspot::io
+}  // namespace sweetspot::studies

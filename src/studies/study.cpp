@@ -12,7 +12,7 @@
 #include "studies/design_binding.hpp"
 #include "sweetspot/evaluate.hpp"
 
-namespace sweetspot::io {
+namespace sweetspot::studies {
 namespace {
 
 // Default grid resolution of a sweep variable, and the limits of a grid
@@ -21,27 +21,27 @@ constexpr int kDefaultGridPoints = 21;
 constexpr double kMaxGridPoints = 1e7;
 constexpr double kMaxGridTotal = 1e8;
 
-const OutputSpec* read_output_name(ObjectReader& r, std::string_view key) {
+const io::OutputSpec* read_output_name(io::ObjectReader& r, std::string_view key) {
   const auto name = r.string(key);
   if (!name) r.fail("", "missing \"" + std::string(key) + "\" (an output of sweetspot evaluate)");
-  const OutputSpec* output = find_output(*name);
+  const io::OutputSpec* output = io::find_output(*name);
   if (!output) {
     std::string known;
-    for (const OutputSpec& o : output_specs())
+    for (const io::OutputSpec& o : io::output_specs())
       known += (known.empty() ? "" : ", ") + std::string(o.name);
     r.fail(key, "unknown output \"" + *name + "\" (known: " + known + ")");
   }
   return output;
 }
 
-const Json& array_at(ObjectReader& r, std::string_view key, bool required) {
-  static const Json kEmpty = Json::array();
-  const Json* list = r.child(key);
+const io::Json& array_at(io::ObjectReader& r, std::string_view key, bool required) {
+  static const io::Json kEmpty = io::Json::array();
+  const io::Json* list = r.child(key);
   if (!list) {
     if (required) r.fail("", "missing \"" + std::string(key) + "\"");
     return kEmpty;
   }
-  if (!list->is_array()) r.fail(key, "expected an array, got " + brief(*list));
+  if (!list->is_array()) r.fail(key, "expected an array, got " + io::brief(*list));
   return *list;
 }
 
@@ -73,19 +73,19 @@ std::vector<double> linspace(double lo, double hi, int points) {
 // over from_tip_m): the design's value is rewritten in the variable's unit,
 // so the study varies it in the unit it names. Another form of the quantity
 // (from_butt for from_tip) is not converted. False when there is no such value.
-bool respell_in_unit(Json& design, const Json::json_pointer& pointer) {
+bool respell_in_unit(io::Json& design, const io::Json::json_pointer& pointer) {
   if (pointer.empty() || !design.contains(pointer.parent_pointer())) return false;
-  Json& parent = design.at(pointer.parent_pointer());
+  io::Json& parent = design.at(pointer.parent_pointer());
   if (!parent.is_object()) return false;
   const std::string key = pointer.back();
-  for (const Dimension dimension :
-       {Dimension::kLength, Dimension::kMass, Dimension::kTime, Dimension::kSpeed,
-        Dimension::kInertia, Dimension::kForce, Dimension::kStiffness, Dimension::kDamping,
-        Dimension::kFrequency}) {
-    for (const std::string& spelling : spellings("", dimension)) {
+  for (const io::Dimension dimension :
+       {io::Dimension::kLength, io::Dimension::kMass, io::Dimension::kTime, io::Dimension::kSpeed,
+        io::Dimension::kInertia, io::Dimension::kForce, io::Dimension::kStiffness,
+        io::Dimension::kDamping, io::Dimension::kFrequency}) {
+    for (const std::string& spelling : io::spellings("", dimension)) {
       if (key.size() <= spelling.size() || !key.ends_with(spelling)) continue;
       const std::string base = key.substr(0, key.size() - spelling.size());
-      const double to_si = *unit_factor(key, base, dimension);
+      const double to_si = *io::unit_factor(key, base, dimension);
       for (const std::string& other : spellings(base, dimension)) {
         const auto it = parent.find(other);
         if (other == key || it == parent.end() || !it->is_number()) continue;
@@ -100,16 +100,16 @@ bool respell_in_unit(Json& design, const Json::json_pointer& pointer) {
   return false;
 }
 
-StudyVariable read_variable(ObjectReader& r, Json& design, int grid_points) {
+StudyVariable read_variable(io::ObjectReader& r, io::Json& design, int grid_points) {
   StudyVariable v;
   const auto path = r.string("path");
   if (!path)
     r.fail("", "missing \"path\" (a JSON pointer into the design, e.g. /implement/mass_kg)");
   v.pointer = *path;
-  Json::json_pointer pointer;
+  io::Json::json_pointer pointer;
   try {
-    pointer = Json::json_pointer(v.pointer);
-  } catch (const Json::exception&) {
+    pointer = io::Json::json_pointer(v.pointer);
+  } catch (const io::Json::exception&) {
     r.fail("path", "\"" + v.pointer + "\" is not a JSON pointer (it starts with /)");
   }
   if (v.pointer.rfind("/reference", 0) == 0)
@@ -119,24 +119,25 @@ StudyVariable read_variable(ObjectReader& r, Json& design, int grid_points) {
   const auto holds = [&] {
     try {
       return design.contains(pointer);
-    } catch (const Json::exception&) {
+    } catch (const io::Json::exception&) {
       return false;
     }
   };
   if (!v.pointer.empty() && !holds()) {
     try {
       respell_in_unit(design, pointer);
-    } catch (const Json::exception&) {
+    } catch (const io::Json::exception&) {
     }
   }
   if (v.pointer.empty() || !holds()) {
     r.fail("path", "\"" + v.pointer + "\" is not in the design");
   }
   if (!design.at(pointer).is_number()) {
-    r.fail("path", "\"" + v.pointer + "\" is " + brief(design.at(pointer)) + ", expected a number");
+    r.fail("path",
+           "\"" + v.pointer + "\" is " + io::brief(design.at(pointer)) + ", expected a number");
   }
   const double current = design.at(pointer).get<double>();
-  const Json& values = array_at(r, "values", false);
+  const io::Json& values = array_at(r, "values", false);
   if (r.child("values") && values.empty()) {
     r.fail("values",
            "expected at least one value (leave \"values\" out for an even grid from min to max)");
@@ -146,8 +147,8 @@ StudyVariable read_variable(ObjectReader& r, Json& design, int grid_points) {
   };
   for (std::size_t k = 0; k < values.size(); ++k) {
     if (!values[k].is_number() || !std::isfinite(values[k].get<double>())) {
-      throw InputError(r.source(), value_pointer(k),
-                       "expected a finite number, got " + brief(values[k]));
+      throw io::InputError(r.source(), value_pointer(k),
+                           "expected a finite number, got " + io::brief(values[k]));
     }
     v.values.push_back(values[k].get<double>());
   }
@@ -156,17 +157,18 @@ StudyVariable read_variable(ObjectReader& r, Json& design, int grid_points) {
   if (v.values.empty() || min || max) {
     if (!min || !max) r.fail("", "missing \"min\" and \"max\" (the variable's bounds)");
     if (!(*min < *max)) {
-      r.fail("min",
-             "must be < max, got min " + brief(Json(*min)) + " and max " + brief(Json(*max)));
+      r.fail("min", "must be < max, got min " + io::brief(io::Json(*min)) + " and max " +
+                        io::brief(io::Json(*max)));
     }
     v.min = *min;
     v.max = *max;
     // Values outside the bounds would evaluate designs the study rules out.
     for (std::size_t k = 0; k < v.values.size(); ++k) {
       if (!(v.values[k] >= v.min && v.values[k] <= v.max)) {
-        throw InputError(r.source(), value_pointer(k),
-                         "must lie within [min, max] = [" + brief(Json(v.min)) + ", " +
-                             brief(Json(v.max)) + "], got " + brief(Json(v.values[k])));
+        throw io::InputError(r.source(), value_pointer(k),
+                             "must lie within [min, max] = [" + io::brief(io::Json(v.min)) + ", " +
+                                 io::brief(io::Json(v.max)) + "], got " +
+                                 io::brief(io::Json(v.values[k])));
       }
     }
   } else {
@@ -175,14 +177,14 @@ StudyVariable read_variable(ObjectReader& r, Json& design, int grid_points) {
   }
   const auto points = r.number("points");
   if (points && !(*points >= 1 && *points <= kMaxGridPoints && *points == std::floor(*points))) {
-    r.fail("points", "must be a whole number in [1, 1e7], got " + brief(Json(*points)));
+    r.fail("points", "must be a whole number in [1, 1e7], got " + io::brief(io::Json(*points)));
   }
   if (v.values.empty())
     v.values = linspace(v.min, v.max, points ? static_cast<int>(*points) : grid_points);
   const auto start = r.number("start");
   if (start && !(*start >= v.min && *start <= v.max)) {
-    r.fail("start", "must lie within [min, max] = [" + brief(Json(v.min)) + ", " +
-                        brief(Json(v.max)) + "], got " + brief(Json(*start)));
+    r.fail("start", "must lie within [min, max] = [" + io::brief(io::Json(v.min)) + ", " +
+                        io::brief(io::Json(v.max)) + "], got " + io::brief(io::Json(*start)));
   }
   v.start =
       start ? *start : (current >= v.min && current <= v.max ? current : 0.5 * (v.min + v.max));
@@ -190,7 +192,7 @@ StudyVariable read_variable(ObjectReader& r, Json& design, int grid_points) {
   return v;
 }
 
-ObjectiveTerm read_term(ObjectReader& r, bool allow_spread) {
+ObjectiveTerm read_term(io::ObjectReader& r, bool allow_spread) {
   ObjectiveTerm term;
   term.output = read_output_name(r, "output");
   const auto goal = r.string("goal").value_or("minimize");
@@ -207,16 +209,16 @@ ObjectiveTerm read_term(ObjectReader& r, bool allow_spread) {
   if (term.goal != Goal::kTarget && target) r.fail("target", "only goal \"target\" takes a target");
   term.target = target.value_or(0.0);
   term.weight = r.number("weight").value_or(1.0);
-  if (!(term.weight > 0)) r.fail("weight", "must be > 0, got " + brief(Json(term.weight)));
+  if (!(term.weight > 0)) r.fail("weight", "must be > 0, got " + io::brief(io::Json(term.weight)));
   std::vector<std::string> keys{"output", "goal", "target", "weight"};
   if (allow_spread) keys.insert(keys.end(), {"over_impacts", "terms"});
   r.finish(keys);
   return term;
 }
 
-ImpactSpread read_spread(ObjectReader& r) {
+ImpactSpread read_spread(io::ObjectReader& r) {
   ImpactSpread spread;
-  const Json* range = r.child("from_tip_m");
+  const io::Json* range = r.child("from_tip_m");
   if (!range || !range->is_array() || range->size() != 2 || !(*range)[0].is_number() ||
       !(*range)[1].is_number()) {
     r.fail("from_tip_m", "expected [nearest, farthest] impact distances from the tip in m");
@@ -224,18 +226,18 @@ ImpactSpread read_spread(ObjectReader& r) {
   spread.from_tip_lo_m = (*range)[0].get<double>();
   spread.from_tip_hi_m = (*range)[1].get<double>();
   if (!(spread.from_tip_lo_m >= 0)) {
-    throw InputError(
+    throw io::InputError(
         r.source(), r.pointer() + "/from_tip_m/0",
-        "the nearest impact must be >= 0 m from the tip, got " + brief((*range)[0]) + " m");
+        "the nearest impact must be >= 0 m from the tip, got " + io::brief((*range)[0]) + " m");
   }
   if (!(spread.from_tip_lo_m < spread.from_tip_hi_m)) {
-    throw InputError(r.source(), r.pointer() + "/from_tip_m/1",
-                     "the farthest impact must be farther from the tip than the nearest (" +
-                         brief((*range)[0]) + " m), got " + brief((*range)[1]) + " m");
+    throw io::InputError(r.source(), r.pointer() + "/from_tip_m/1",
+                         "the farthest impact must be farther from the tip than the nearest (" +
+                             io::brief((*range)[0]) + " m), got " + io::brief((*range)[1]) + " m");
   }
   const double points = r.number("points").value_or(8);
   if (!(points >= 2 && points <= 1000 && points == std::floor(points))) {
-    r.fail("points", "must be a whole number in [2, 1000], got " + brief(Json(points)));
+    r.fail("points", "must be a whole number in [2, 1000], got " + io::brief(io::Json(points)));
   }
   spread.points = static_cast<int>(points);
   const auto reduce = r.string("reduce").value_or("max");
@@ -271,54 +273,54 @@ double terms_value(const Study& study, const Evaluation& e) {
   return sum;
 }
 
-Study read_study(const Json& document, const std::string& source, const std::string& folder) {
+Study read_study(const io::Json& document, const std::string& source, const std::string& folder) {
   Study study;
   study.source = source;
-  ObjectReader top(document, "", "", source, nullptr);
+  io::ObjectReader top(document, "", "", source, nullptr);
   study.name = top.string("name").value_or(source);
   study.question = top.string("question").value_or("");
   top.string("description");
   top.string("$schema");
 
-  const Json* design = top.child("design");
+  const io::Json* design = top.child("design");
   if (!design) top.fail("design", "missing: a design file path or an inline design");
   if (design->is_string()) {
     const std::string path = (std::filesystem::path(folder) / design->get<std::string>()).string();
     try {
-      study.design_document = read_json_file(path);
-    } catch (const InputError& e) {
-      throw InputError(source, "/design", "cannot read the design: " + std::string(e.what()));
+      study.design_document = io::read_json_file(path);
+    } catch (const io::InputError& e) {
+      throw io::InputError(source, "/design", "cannot read the design: " + std::string(e.what()));
     }
     study.design_source = path;
   } else if (design->is_object()) {
     study.design_document = *design;
     study.design_source = source + " (inline design)";
   } else {
-    top.fail("design", "expected a path or an inline design object, got " + brief(*design));
+    top.fail("design", "expected a path or an inline design object, got " + io::brief(*design));
   }
   // The design must be valid as written.
-  const DesignFile as_written = read_design(study.design_document, study.design_source);
+  const io::DesignFile as_written = io::read_design(study.design_document, study.design_source);
   const auto impact = as_written.provenance.find("impact/from_butt_m");
   const bool default_impact =
       impact != as_written.provenance.end() && impact->second.starts_with("default");
 
   int grid_points = kDefaultGridPoints;
-  if (const Json* grid = top.child("grid")) {
-    ObjectReader g(*grid, "/grid", "grid", source, nullptr);
+  if (const io::Json* grid = top.child("grid")) {
+    io::ObjectReader g(*grid, "/grid", "grid", source, nullptr);
     const auto points = g.number("points");
     if (points && !(*points >= 1 && *points <= kMaxGridPoints && *points == std::floor(*points))) {
-      g.fail("points", "must be a whole number in [1, 1e7], got " + brief(Json(*points)));
+      g.fail("points", "must be a whole number in [1, 1e7], got " + io::brief(io::Json(*points)));
     }
     if (points) grid_points = static_cast<int>(*points);
     g.finish({"points"});
   }
 
-  const Json& variables = array_at(top, "variables", true);
+  const io::Json& variables = array_at(top, "variables", true);
   if (variables.empty()) top.fail("variables", "expected at least one variable");
   if (variables.size() > 64)
     top.fail("variables", "at most 64 variables, got " + std::to_string(variables.size()));
   for (std::size_t i = 0; i < variables.size(); ++i) {
-    ObjectReader r(variables[i], "/variables/" + std::to_string(i), "", source, nullptr);
+    io::ObjectReader r(variables[i], "/variables/" + std::to_string(i), "", source, nullptr);
     study.variables.push_back(read_variable(r, study.design_document, grid_points));
     for (std::size_t j = 0; j < i; ++j) {
       if (study.variables[j].pointer == study.variables[i].pointer) {
@@ -332,26 +334,26 @@ Study read_study(const Json& document, const std::string& source, const std::str
     total *= static_cast<double>(study.variables[i].values.size());
   }
   if (total > kMaxGridTotal) {
-    top.fail("variables", "a grid of " + brief(Json(total)) + " points is more than 1e8");
+    top.fail("variables", "a grid of " + io::brief(io::Json(total)) + " points is more than 1e8");
   }
 
-  if (const Json* objective = top.child("objective")) {
-    ObjectReader r(*objective, "/objective", "", source, nullptr);
+  if (const io::Json* objective = top.child("objective")) {
+    io::ObjectReader r(*objective, "/objective", "", source, nullptr);
     if (r.has("terms")) {
-      const Json& terms = array_at(r, "terms", true);
+      const io::Json& terms = array_at(r, "terms", true);
       if (terms.empty()) r.fail("terms", "expected at least one term");
       for (std::size_t i = 0; i < terms.size(); ++i) {
-        ObjectReader t(terms[i], "/objective/terms/" + std::to_string(i), "", source, nullptr);
+        io::ObjectReader t(terms[i], "/objective/terms/" + std::to_string(i), "", source, nullptr);
         study.objective.push_back(read_term(t, false));
       }
-      if (const Json* spread = r.child("over_impacts")) {
-        ObjectReader s(*spread, "/objective/over_impacts", "", source, nullptr);
+      if (const io::Json* spread = r.child("over_impacts")) {
+        io::ObjectReader s(*spread, "/objective/over_impacts", "", source, nullptr);
         study.over_impacts = read_spread(s);
       }
       r.finish({"terms", "over_impacts"});
     } else {
-      if (const Json* spread = r.child("over_impacts")) {
-        ObjectReader s(*spread, "/objective/over_impacts", "", source, nullptr);
+      if (const io::Json* spread = r.child("over_impacts")) {
+        io::ObjectReader s(*spread, "/objective/over_impacts", "", source, nullptr);
         study.over_impacts = read_spread(s);
       }
       study.objective.push_back(read_term(r, true));
@@ -359,7 +361,7 @@ Study read_study(const Json& document, const std::string& source, const std::str
     if (study.over_impacts) {
       for (std::size_t i = 0; i < study.variables.size(); ++i) {
         if (study.variables[i].pointer.starts_with("/impact")) {
-          throw InputError(
+          throw io::InputError(
               source, "/variables/" + std::to_string(i) + "/path",
               "the impact point cannot be a variable of a study over a spread of impacts");
         }
@@ -367,9 +369,9 @@ Study read_study(const Json& document, const std::string& source, const std::str
     }
   }
 
-  const Json& constraints = array_at(top, "constraints", false);
+  const io::Json& constraints = array_at(top, "constraints", false);
   for (std::size_t i = 0; i < constraints.size(); ++i) {
-    ObjectReader r(constraints[i], "/constraints/" + std::to_string(i), "", source, nullptr);
+    io::ObjectReader r(constraints[i], "/constraints/" + std::to_string(i), "", source, nullptr);
     StudyConstraint c;
     c.output = read_output_name(r, "output");
     c.min = r.number("min");
@@ -378,37 +380,38 @@ Study read_study(const Json& document, const std::string& source, const std::str
     if (!c.min && !c.max && !c.equals) r.fail("", "give \"min\", \"max\" or \"equals\"");
     if (c.equals && (c.min || c.max)) r.fail("equals", "give either \"equals\" or \"min\"/\"max\"");
     if (c.min && c.max && !(*c.min <= *c.max)) {
-      r.fail("min",
-             "must be <= max, got min " + brief(Json(*c.min)) + " and max " + brief(Json(*c.max)));
+      r.fail("min", "must be <= max, got min " + io::brief(io::Json(*c.min)) + " and max " +
+                        io::brief(io::Json(*c.max)));
     }
     c.tolerance = r.number("tolerance");
     if (c.tolerance && !(*c.tolerance > 0))
-      r.fail("tolerance", "must be > 0, got " + brief(Json(*c.tolerance)));
+      r.fail("tolerance", "must be > 0, got " + io::brief(io::Json(*c.tolerance)));
     r.finish({"output", "min", "max", "equals", "tolerance"});
     study.constraints.push_back(c);
   }
 
-  OptimizeOptions& o = study.options;
+  optimizer::OptimizeOptions& o = study.options;
   if (const auto algorithm = top.string("algorithm")) o.algorithm = *algorithm;
-  if (!is_known_algorithm(o.algorithm)) {
+  if (!optimizer::is_known_algorithm(o.algorithm)) {
     top.fail("algorithm", "unknown algorithm \"" + o.algorithm +
                               "\" (auto, or an NLopt name such as LD_SLSQP, LN_COBYLA, GN_ISRES)");
   }
   if (const auto local = top.string("local_algorithm")) o.local_algorithm = *local;
-  if (!is_known_algorithm(o.local_algorithm)) {
+  if (!optimizer::is_known_algorithm(o.local_algorithm)) {
     top.fail("local_algorithm", "unknown algorithm \"" + o.local_algorithm + "\"");
   }
   if (const auto seed = top.number("seed")) {
     if (!(*seed >= 0 && *seed <= 4294967295.0 && *seed == std::floor(*seed))) {
-      top.fail("seed", "must be a whole number in [0, 4294967295], got " + brief(Json(*seed)));
+      top.fail("seed",
+               "must be a whole number in [0, 4294967295], got " + io::brief(io::Json(*seed)));
     }
     o.seed = static_cast<unsigned long>(*seed);
   }
-  if (const Json* tolerances = top.child("tolerances")) {
-    ObjectReader t(*tolerances, "/tolerances", "", source, nullptr);
+  if (const io::Json* tolerances = top.child("tolerances")) {
+    io::ObjectReader t(*tolerances, "/tolerances", "", source, nullptr);
     const auto positive = [&](std::string_view key, double fallback) {
       const auto value = t.number(key);
-      if (value && !(*value > 0)) t.fail(key, "must be > 0, got " + brief(Json(*value)));
+      if (value && !(*value > 0)) t.fail(key, "must be > 0, got " + io::brief(io::Json(*value)));
       return value.value_or(fallback);
     };
     o.x_tolerance_rel = positive("x_rel", o.x_tolerance_rel);
@@ -418,28 +421,28 @@ Study read_study(const Json& document, const std::string& source, const std::str
       if (!(*max_evaluations >= 1 && *max_evaluations <= 1e9 &&
             *max_evaluations == std::floor(*max_evaluations))) {
         t.fail("max_evaluations",
-               "must be a whole number in [1, 1e9], got " + brief(Json(*max_evaluations)));
+               "must be a whole number in [1, 1e9], got " + io::brief(io::Json(*max_evaluations)));
       }
       o.max_evaluations = static_cast<int>(*max_evaluations);
     }
     t.finish({"x_rel", "f_rel", "max_evaluations", "max_seconds"});
     if (const std::string why = o.validate(); !why.empty()) {
-      throw InputError(source, "/tolerances", why);
+      throw io::InputError(source, "/tolerances", why);
     }
   }
 
-  const Json& outputs = array_at(top, "outputs", false);
+  const io::Json& outputs = array_at(top, "outputs", false);
   for (std::size_t i = 0; i < outputs.size(); ++i) {
     const std::string at = "/outputs/" + std::to_string(i);
-    if (!outputs[i].is_string() || !find_output(outputs[i].get<std::string>())) {
-      throw InputError(
+    if (!outputs[i].is_string() || !io::find_output(outputs[i].get<std::string>())) {
+      throw io::InputError(
           source, at,
-          "expected the name of an output of sweetspot evaluate, got " + brief(outputs[i]));
+          "expected the name of an output of sweetspot evaluate, got " + io::brief(outputs[i]));
     }
-    study.sweep_outputs.push_back(find_output(outputs[i].get<std::string>()));
+    study.sweep_outputs.push_back(io::find_output(outputs[i].get<std::string>()));
   }
   // A sweep of a design that gives no impact says where the default hit.
-  const OutputSpec* impact_output = find_output("impact_from_tip_m");
+  const io::OutputSpec* impact_output = io::find_output("impact_from_tip_m");
   if (default_impact && !study.sweep_outputs.empty() &&
       std::find(study.sweep_outputs.begin(), study.sweep_outputs.end(), impact_output) ==
           study.sweep_outputs.end()) {
@@ -455,22 +458,22 @@ Study read_study(const Json& document, const std::string& source, const std::str
   if (asked) {
     study.fidelity = *asked;
   } else {
-    std::vector<const OutputSpec*> used = study.sweep_outputs;
+    std::vector<const io::OutputSpec*> used = study.sweep_outputs;
     for (const ObjectiveTerm& t : study.objective) used.push_back(t.output);
     for (const StudyConstraint& c : study.constraints) used.push_back(c.output);
     study.fidelity =
-        needed_fidelity(read_design(study.design_document, study.design_source).design);
-    for (const OutputSpec* o : used) {
+        needed_fidelity(io::read_design(study.design_document, study.design_source).design);
+    for (const io::OutputSpec* o : used) {
       if (o->needs_response && study.fidelity != Fidelity::kCollision)
         study.fidelity = Fidelity::kResponse;
       if (o->needs_modes && study.fidelity == Fidelity::kRigid) study.fidelity = Fidelity::kModal;
     }
   }
   {
-    std::vector<const OutputSpec*> used = study.sweep_outputs;
+    std::vector<const io::OutputSpec*> used = study.sweep_outputs;
     for (const ObjectiveTerm& t : study.objective) used.push_back(t.output);
     for (const StudyConstraint& c : study.constraints) used.push_back(c.output);
-    for (const OutputSpec* o : used) {
+    for (const io::OutputSpec* o : used) {
       const bool too_low = (o->needs_response && study.fidelity != Fidelity::kResponse &&
                             study.fidelity != Fidelity::kCollision) ||
                            (o->needs_modes && study.fidelity == Fidelity::kRigid);
@@ -482,7 +485,8 @@ Study read_study(const Json& document, const std::string& source, const std::str
   }
   if (const auto tolerance = top.number("modal_tolerance")) {
     if (!(*tolerance >= kMinRelTol && *tolerance <= kMaxRelTol)) {
-      top.fail("modal_tolerance", "must be in [1e-08, 0.1], got " + brief(Json(*tolerance)));
+      top.fail("modal_tolerance",
+               "must be in [1e-08, 0.1], got " + io::brief(io::Json(*tolerance)));
     }
     study.modal_tolerance = *tolerance;
   }
@@ -493,35 +497,35 @@ Study read_study(const Json& document, const std::string& source, const std::str
   // The start must be a valid design.
   std::vector<double> start;
   for (const StudyVariable& v : study.variables) start.push_back(v.start);
-  DesignFile at_start = [&] {
+  io::DesignFile at_start = [&] {
     try {
       return design_at(study, start);
-    } catch (const InputError& e) {
-      throw InputError(source, "/variables",
-                       "the start point is not a valid design: " + std::string(e.what()));
+    } catch (const io::InputError& e) {
+      throw io::InputError(source, "/variables",
+                           "the start point is not a valid design: " + std::string(e.what()));
     }
   }();
   try {
     evaluate_in(study, at_start);
   } catch (const std::invalid_argument& e) {
-    rethrow_in(at_start, e);
+    io::rethrow_in(at_start, e);
   }
   // Every impact of a spread must hit the implement (an impact off it has no
   // value and would only ever be the optimizer's penalty).
   if (study.over_impacts) {
     const double length_m = at_start.design.implement.length_m();
     if (study.over_impacts->from_tip_hi_m > length_m) {
-      throw InputError(source, "/objective/over_impacts/from_tip_m/1",
-                       "the farthest impact, " + brief(Json(study.over_impacts->from_tip_hi_m)) +
-                           " m from the tip, is off the implement, which is " +
-                           brief(Json(length_m)) + " m long (at the start); expected at most " +
-                           brief(Json(length_m)) + " m");
+      throw io::InputError(
+          source, "/objective/over_impacts/from_tip_m/1",
+          "the farthest impact, " + io::brief(io::Json(study.over_impacts->from_tip_hi_m)) +
+              " m from the tip, is off the implement, which is " + io::brief(io::Json(length_m)) +
+              " m long (at the start); expected at most " + io::brief(io::Json(length_m)) + " m");
     }
   }
   std::vector<std::string> pointers;
   for (const StudyVariable& v : study.variables) pointers.push_back(v.pointer);
   if (auto compiled = CompiledDesign::compile(
-          describe_design(study.design_document, study.design_source), pointers)) {
+          io::describe_design(study.design_document, study.design_source), pointers)) {
     study.compiled = std::make_shared<const CompiledDesign>(std::move(*compiled));
   }
   return study;
@@ -529,10 +533,10 @@ Study read_study(const Json& document, const std::string& source, const std::str
 
 Study load_study(const std::string& path) {
   const std::string folder = std::filesystem::path(path).parent_path().string();
-  return read_study(read_json_file(path), input_name(path), folder.empty() ? "." : folder);
+  return read_study(io::read_json_file(path), io::input_name(path), folder.empty() ? "." : folder);
 }
 
-Evaluation evaluate_in(const Study& study, const DesignFile& design) {
+Evaluation evaluate_in(const Study& study, const io::DesignFile& design) {
   return evaluate_in(study, design.design);
 }
 
@@ -548,16 +552,16 @@ bool compiled_for_variables(const Study& study) {
   return true;
 }
 
-Json document_at(const Study& study, std::span<const double> x) {
-  Json document = study.design_document;
+io::Json document_at(const Study& study, std::span<const double> x) {
+  io::Json document = study.design_document;
   for (std::size_t i = 0; i < study.variables.size(); ++i) {
-    document[Json::json_pointer(study.variables[i].pointer)] = x[i];
+    document[io::Json::json_pointer(study.variables[i].pointer)] = x[i];
   }
   return document;
 }
 
-DesignFile design_at(const Study& study, std::span<const double> x) {
-  return read_design(document_at(study, x), study.design_source);
+io::DesignFile design_at(const Study& study, std::span<const double> x) {
+  return io::read_design(document_at(study, x), study.design_source);
 }
 
 namespace {
@@ -589,7 +593,7 @@ double tolerance_at(const StudyConstraint& c, double limit) {
   return c.tolerance ? *c.tolerance : kDefaultConstraintTolerance * std::max(1.0, std::abs(limit));
 }
 
-std::optional<std::string> objective_undefined(const Study& study, const DesignFile& design) {
+std::optional<std::string> objective_undefined(const Study& study, const io::DesignFile& design) {
   try {
     if (!study.over_impacts) return terms_undefined(study, evaluate_in(study, design));
     const ImpactSpread& spread = *study.over_impacts;
@@ -598,8 +602,9 @@ std::optional<std::string> objective_undefined(const Study& study, const DesignF
     for (int k = 0; k < spread.points; ++k) {
       const double x = spread_from_butt(spread, L, k);
       if (!(x >= 0.0 && x <= L)) {
-        return "the impact " + brief(Json(spread_from_tip(spread, k))) +
-               " m from the tip is off the implement, which is " + brief(Json(L)) + " m long";
+        return "the impact " + io::brief(io::Json(spread_from_tip(spread, k))) +
+               " m from the tip is off the implement, which is " + io::brief(io::Json(L)) +
+               " m long";
       }
       d.impact_from_butt_m = x;
       if (auto why = terms_undefined(study, evaluate(d, study.fidelity, study.modal_tolerance)))
@@ -611,7 +616,7 @@ std::optional<std::string> objective_undefined(const Study& study, const DesignF
   return std::nullopt;
 }
 
-double objective_of(const Study& study, const DesignFile& design) {
+double objective_of(const Study& study, const io::DesignFile& design) {
   return objective_of(study, design.design);
 }
 
@@ -649,4 +654,4 @@ double objective_of(const Study& study, const Design& design) {
 // sign (|F_w|) is minimising its square, which is smooth there: gradient
 // methods then apply. The reported objective is the output itself.
 
-}  // namespace sweetspot::io
+}  // namespace sweetspot::studies

@@ -13,10 +13,10 @@
 
 #include "io/design_reader.hpp"
 #include "io/outputs.hpp"
+#include "optimizer/optimize.hpp"
 #include "sweetspot/evaluate.hpp"
-#include "sweetspot/optimize.hpp"
 
-namespace sweetspot::io {
+namespace sweetspot::studies {
 
 class CompiledDesign;
 
@@ -35,7 +35,7 @@ struct StudyVariable {
 enum class Goal { kMinimize, kMaximize, kTarget };
 
 struct ObjectiveTerm {
-  const OutputSpec* output = nullptr;
+  const io::OutputSpec* output = nullptr;
   Goal goal = Goal::kMinimize;
   double target = 0.0;  // for kTarget: the term is weight * (value - target)^2
   double weight = 1.0;
@@ -54,7 +54,7 @@ struct ImpactSpread {
 inline constexpr double kDefaultConstraintTolerance = 1e-6;
 
 struct StudyConstraint {
-  const OutputSpec* output = nullptr;
+  const io::OutputSpec* output = nullptr;
   std::optional<double> min, max, equals;
   // How far outside a limit still counts as on it, in the output's unit;
   // std::nullopt: kDefaultConstraintTolerance max(1, |limit|) for each limit.
@@ -67,15 +67,15 @@ double tolerance_at(const StudyConstraint& c, double limit);
 struct Study {
   std::string source;  // the study file
   std::string name;
-  std::string question;  // optional: the question in a coach's words
-  Json design_document;  // the design as written, variables set by pointer
+  std::string question;      // optional: the question in a coach's words
+  io::Json design_document;  // the design as written, variables set by pointer
   std::string design_source;
   std::vector<StudyVariable> variables;
   std::vector<ObjectiveTerm> objective;
   std::optional<ImpactSpread> over_impacts;
   std::vector<StudyConstraint> constraints;
-  OptimizeOptions options;
-  std::vector<const OutputSpec*> sweep_outputs;  // outputs a sweep writes
+  optimizer::OptimizeOptions options;
+  std::vector<const io::OutputSpec*> sweep_outputs;  // outputs a sweep writes
   // The model every evaluation uses: "fidelity" rigid, modal or auto (the
   // default: modal exactly when an objective, constraint or swept output needs
   // the modes), and the hand-held modes' relative frequency error.
@@ -91,24 +91,24 @@ struct Study {
 bool compiled_for_variables(const Study& study);
 
 // Evaluates `design` with the study's fidelity. Throws like evaluate().
-Evaluation evaluate_in(const Study& study, const DesignFile& design);
+Evaluation evaluate_in(const Study& study, const io::DesignFile& design);
 Evaluation evaluate_in(const Study& study, const Design& design);
 
 // Reads a study file; `design` paths are relative to the study's folder.
 // Throws InputError naming the study file and the JSON path.
 Study load_study(const std::string& path);
-Study read_study(const Json& document, const std::string& source, const std::string& folder);
+Study read_study(const io::Json& document, const std::string& source, const std::string& folder);
 
 // The study's design document with the variables set to x (the numbers at
 // their pointers, nothing else changed): what design_at() reads.
-Json document_at(const Study& study, std::span<const double> x);
+io::Json document_at(const Study& study, std::span<const double> x);
 
 // The design with the variables set to x. Throws InputError when x makes it invalid.
-DesignFile design_at(const Study& study, std::span<const double> x);
+io::DesignFile design_at(const Study& study, std::span<const double> x);
 
 // The objective (to minimise) of a design: the weighted terms, reduced over
 // the impact spread when the study has one.
-double objective_of(const Study& study, const DesignFile& design);
+double objective_of(const Study& study, const io::DesignFile& design);
 double objective_of(const Study& study, const Design& design);
 
 // The study's objective terms for one evaluation (kPenalty for an output at infinity).
@@ -118,9 +118,9 @@ double terms_value(const Study& study, const Evaluation& evaluation);
 // it, an output at infinity, an impact of the spread off the implement), or
 // std::nullopt when it has one. Where objective_of returns kPenalty, this
 // says why; a penalty is never a result.
-std::optional<std::string> objective_undefined(const Study& study, const DesignFile& design);
+std::optional<std::string> objective_undefined(const Study& study, const io::DesignFile& design);
 // The same for a study without an impact spread, from the design's
 // evaluation at the study's fidelity (its objective is a function of it).
 std::optional<std::string> terms_undefined(const Study& study, const Evaluation& evaluation);
 
-}  // namespace sweetspot::io
+}  // namespace sweetspot::studies

@@ -11,7 +11,7 @@
 #include "studies/design_binding.hpp"
 #include "sweetspot/evaluate.hpp"
 
-namespace sweetspot::io {
+namespace sweetspot::studies {
 
 std::span<const std::string_view> rigid_outcome_outputs() {
   static constexpr std::string_view kNames[] = {
@@ -34,22 +34,22 @@ class SweepWorker {
     outcome_only_ =
         options.outcome_only && study.fidelity == Fidelity::kRigid &&
         std::all_of(study.sweep_outputs.begin(), study.sweep_outputs.end(),
-                    [](const OutputSpec* o) {
+                    [](const io::OutputSpec* o) {
                       const auto names = rigid_outcome_outputs();
                       return std::find(names.begin(), names.end(), o->name) != names.end();
                     });
     if (study.variables[0].values.size() <= kCachedTexts) {
       for (const double value : study.variables[0].values)
-        append_exact(first_text_.emplace_back(), value);
+        io::append_exact(first_text_.emplace_back(), value);
     }
     // The impact point as read_design() reads it: "/impact/from_tip_<unit>" or
     // "/impact/from_butt_<unit>", converted by the same factor.
     const std::string_view pointer = study.variables[0].pointer;
     if (share_rows && study.fidelity == Fidelity::kRigid && pointer.starts_with("/impact/")) {
       const std::string_view key = pointer.substr(std::string_view("/impact/").size());
-      if (const auto f = unit_scale(key, "from_tip", Dimension::kLength))
+      if (const auto f = io::unit_scale(key, "from_tip", io::Dimension::kLength))
         impact_ = Impact{true, *f};
-      if (const auto f = unit_scale(key, "from_butt", Dimension::kLength))
+      if (const auto f = io::unit_scale(key, "from_butt", io::Dimension::kLength))
         impact_ = Impact{false, *f};
     }
   }
@@ -75,33 +75,33 @@ class SweepWorker {
     if (p % n0 < first_text_.size()) {
       text += first_text_[p % n0];
     } else {
-      append_exact(text, v);
+      io::append_exact(text, v);
     }
     if (study_.variables.size() == 2) {
       if (second_text_row_ != row) {
         second_text_.assign(1, ',');
-        append_exact(second_text_, second_[row]);
+        io::append_exact(second_text_, second_[row]);
         second_text_row_ = row;
       }
       text += second_text_;
     }
-    char buffer[kMaxExactChars + 1];
+    char buffer[io::kMaxExactChars + 1];
     for (std::size_t k = 0; k < study_.sweep_outputs.size(); ++k) {
       values[k] = e ? study_.sweep_outputs[k]->value(*e) : std::nullopt;
       char* end = buffer;
       *end++ = ',';
-      if (values[k]) end = write_exact(end, *values[k]);
+      if (values[k]) end = io::write_exact(end, *values[k]);
       text.append(buffer, static_cast<std::size_t>(end - buffer));
     }
     text += ',';
-    if (!error.empty()) text += csv_field(error);
+    if (!error.empty()) text += io::csv_field(error);
     text += '\n';
   }
 
  private:
   struct Impact {
     bool from_tip;
-    UnitScale to_si;
+    io::UnitScale to_si;
   };
 
   // The point set on the study's compiled design and evaluated; nullptr
@@ -126,7 +126,7 @@ class SweepWorker {
   const Evaluation* evaluate_here(double v, double y, std::size_t row) {
     document_[pointers_[0]] = v;
     if (pointers_.size() == 2) document_[pointers_[1]] = y;
-    const DesignFile design = read_design_lean(document_, study_.design_source);
+    const io::DesignFile design = io::read_design_lean(document_, study_.design_source);
     evaluation_ = evaluate_in(study_, design);
     share_row(design.design, row);
     return &evaluation_;
@@ -148,7 +148,7 @@ class SweepWorker {
     const double from_butt = impact_->from_tip ? length_m_ - si : si;
     if (!(si >= 0.0 && si <= length_m_)) return nullptr;
     evaluation_ = shared_->at(from_butt);
-    for (const OutputSpec* o : study_.sweep_outputs) {
+    for (const io::OutputSpec* o : study_.sweep_outputs) {
       if (const auto value = o->value(evaluation_); value && !std::isfinite(*value)) return nullptr;
     }
     return &evaluation_;
@@ -156,8 +156,8 @@ class SweepWorker {
 
   const Study& study_;
   const std::vector<double>& second_;
-  Json document_;  // this thread's copy, the variables set in place
-  std::vector<Json::json_pointer> pointers_;
+  io::Json document_;  // this thread's copy, the variables set in place
+  std::vector<io::Json::json_pointer> pointers_;
   std::optional<Impact> impact_;
   std::optional<BoundDesign> bound_;  // empty: every point read from JSON
   Evaluation evaluation_;             // the current point's
@@ -175,16 +175,16 @@ class SweepWorker {
 
 }  // namespace
 
-std::vector<Plot> run_sweep(const Study& study, std::ostream& csv,
-                            const std::function<void(std::size_t, std::size_t)>& progress,
-                            const SweepOptions& options) {
+std::vector<io::Plot> run_sweep(const Study& study, std::ostream& csv,
+                                const std::function<void(std::size_t, std::size_t)>& progress,
+                                const SweepOptions& options) {
   if (study.variables.size() > 2) {
-    throw InputError(
+    throw io::InputError(
         study.source, "/variables",
         "a sweep takes one or two variables, got " + std::to_string(study.variables.size()));
   }
   if (study.sweep_outputs.empty())
-    throw InputError(study.source, "/outputs", "missing: the outputs to sweep");
+    throw io::InputError(study.source, "/outputs", "missing: the outputs to sweep");
   const StudyVariable& first = study.variables[0];
   const std::vector<double> second =
       study.variables.size() == 2 ? study.variables[1].values : std::vector<double>{NAN};
@@ -194,27 +194,27 @@ std::vector<Plot> run_sweep(const Study& study, std::ostream& csv,
 
   csv << first.pointer;
   if (study.variables.size() == 2) csv << "," << study.variables[1].pointer;
-  for (const OutputSpec* o : study.sweep_outputs) csv << "," << o->name;
+  for (const io::OutputSpec* o : study.sweep_outputs) csv << "," << o->name;
   csv << ",error\n";
 
   // Axes and keys in a reader's words and units (io/plot.hpp), never the pointers.
-  const AxisQuantity x_axis = pointer_axis(first.pointer);
-  const std::optional<AxisQuantity> key_axis =
-      study.variables.size() == 2 ? std::optional(pointer_axis(study.variables[1].pointer))
+  const io::AxisQuantity x_axis = io::pointer_axis(first.pointer);
+  const std::optional<io::AxisQuantity> key_axis =
+      study.variables.size() == 2 ? std::optional(io::pointer_axis(study.variables[1].pointer))
                                   : std::nullopt;
-  std::vector<Plot> plots;
+  std::vector<io::Plot> plots;
   std::vector<double> y_factors;
-  for (const OutputSpec* o : study.sweep_outputs) {
-    const AxisQuantity y_axis = output_axis(*o);
+  for (const io::OutputSpec* o : study.sweep_outputs) {
+    const io::AxisQuantity y_axis = output_axis(*o);
     y_factors.push_back(y_axis.factor);
-    plots.push_back(Plot{fmt::format("{}: {}", study.name, y_axis.label),
-                         x_axis.label,
-                         y_axis.label,
-                         std::pair{first.min * x_axis.factor, first.max * x_axis.factor},
-                         std::nullopt,
-                         {},
-                         {},
-                         {}});
+    plots.push_back(io::Plot{fmt::format("{}: {}", study.name, y_axis.label),
+                             x_axis.label,
+                             y_axis.label,
+                             std::pair{first.min * x_axis.factor, first.max * x_axis.factor},
+                             std::nullopt,
+                             {},
+                             {},
+                             {}});
   }
   const int threads = std::max(1, options.threads);
   std::vector<SweepWorker> workers;
@@ -224,7 +224,7 @@ std::vector<Plot> run_sweep(const Study& study, std::ostream& csv,
   for (std::size_t begin = 0; begin < total; begin += kSweepChunkPoints) {
     const std::size_t count = std::min(kSweepChunkPoints, total - begin);
     for (std::string& text : texts) text.clear();
-    for_blocks(count, threads, [&](std::size_t t, std::size_t from, std::size_t to) {
+    io::for_blocks(count, threads, [&](std::size_t t, std::size_t from, std::size_t to) {
       for (std::size_t i = from; i < to; ++i)
         workers[t].point(begin + i, texts[t], &values[i * outputs]);
     });
@@ -234,12 +234,12 @@ std::vector<Plot> run_sweep(const Study& study, std::ostream& csv,
         const std::size_t p = begin + i;
         if (p % first.values.size() == 0) {
           for (std::size_t k = 0; k < outputs; ++k) {
-            plots[k].series.push_back(PlotSeries{
-                key_axis
-                    ? fmt::format("{} {}{}", key_axis->name,
-                                  significant(second[p / first.values.size()] * key_axis->factor),
-                                  key_axis->unit.empty() ? "" : " " + key_axis->unit)
-                    : output_axis(*study.sweep_outputs[k]).label,
+            plots[k].series.push_back(io::PlotSeries{
+                key_axis ? fmt::format(
+                               "{} {}{}", key_axis->name,
+                               io::significant(second[p / first.values.size()] * key_axis->factor),
+                               key_axis->unit.empty() ? "" : " " + key_axis->unit)
+                         : io::output_axis(*study.sweep_outputs[k]).label,
                 {},
                 {}});
           }
@@ -258,4 +258,4 @@ std::vector<Plot> run_sweep(const Study& study, std::ostream& csv,
   return plots;
 }
 
-}  // namespace sweetspot::io
+}  // namespace sweetspot::studies

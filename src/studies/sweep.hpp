@@ -13,7 +13,7 @@
 #include "io/plot.hpp"
 #include "studies/study.hpp"
 
-namespace sweetspot::io {
+namespace sweetspot::studies {
 
 struct SweepOptions {
   int threads = 1;  // >= 1; the output is in grid order whatever the number
@@ -42,8 +42,8 @@ std::span<const std::string_view> rigid_outcome_outputs();
 // evaluated kSweepChunkPoints at a time, split among the threads).
 inline constexpr std::size_t kMaxPlotPoints = 100000;
 inline constexpr std::size_t kSweepChunkPoints = 8192;
-std::vector<Plot> run_sweep(const Study& study, std::ostream& csv,
-                            const std::function<void(std::size_t, std::size_t)>& progress,
-                            const SweepOptions& options = {});
+std::vector<io::Plot> run_sweep(const Study& study, std::ostream& csv,
+                                const std::function<void(std::size_t, std::size_t)>& progress,
+                                const SweepOptions& options = {});
 
-}  // namespace sweetspot::io
+}  // namespace sweetspot::studies

@@ -4,7 +4,7 @@
 
 #include <catch2/catch.hpp>
 
-using sweetspot::io::median;
+using sweetspot::bench::median;
 
 TEST_CASE("The median of timings is the middle one, or the mean of the middle two") {
   CHECK(median({3.0, 1.0, 2.0}) == 2.0);

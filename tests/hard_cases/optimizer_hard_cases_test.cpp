@@ -24,12 +24,12 @@ namespace {
 // The folder the inline studies' "design" paths are relative to.
 std::string designs() { return std::string(SWEETSPOT_SOURCE_DIR) + "/designs"; }
 
-Study inline_study(const char* text) {
-  return read_study(nlohmann::json::parse(text), "hard-case study", designs());
+studies::Study inline_study(const char* text) {
+  return studies::read_study(nlohmann::json::parse(text), "hard-case study", designs());
 }
 
 // Every number the optimizer reports is finite and the point lies in the box.
-void check_finite_and_inside(const Study& study, const OptimizationResult& r) {
+void check_finite_and_inside(const studies::Study& study, const studies::OptimizationResult& r) {
   CHECK(std::isfinite(r.summary.objective));
   REQUIRE(r.start_objective.has_value());
   CHECK(std::isfinite(*r.start_objective));
@@ -61,9 +61,10 @@ std::vector<double> grid(double lo, double hi, int points) {
 // design's mass bit for bit, at the start, in the history and at the end,
 // and the run ends on a tolerance, not on the evaluation budget.
 void check_flat(const char* study_text, double start) {
-  const Study study = inline_study(study_text);
-  const double mass = evaluate(design_at(study, std::vector<double>{start}).design).mass_kg;
-  const OptimizationResult r = run_optimization(study);
+  const studies::Study study = inline_study(study_text);
+  const double mass =
+      evaluate(studies::design_at(study, std::vector<double>{start}).design).mass_kg;
+  const studies::OptimizationResult r = run_optimization(study);
   check_finite_and_inside(study, r);
   CHECK(r.summary.objective == mass);
   CHECK(r.start_objective == std::optional(mass));
@@ -98,12 +99,12 @@ TEST_CASE(
   // max(1, |limit|)), so the scaled violation is max(0.35 - m, m - 0.30) / 1e-6,
   // least at m = 0.325 with 0.025 kg on each side: exact, and what a grid
   // over m containing 0.325 finds.
-  const Study study = inline_study(R"({
+  const studies::Study study = inline_study(R"({
     "design": "table1/row1.json",
     "variables": [{"path": "/implement/mass_kg", "min": 0.25, "max": 0.40, "start": 0.38}],
     "objective": {"output": "peak_wrist_force_N", "goal": "minimize"},
     "constraints": [{"output": "mass_kg", "min": 0.35}, {"output": "mass_kg", "max": 0.30}]})");
-  const OptimizationResult r = run_optimization(study);
+  const studies::OptimizationResult r = run_optimization(study);
   check_finite_and_inside(study, r);
   CHECK_FALSE(r.summary.feasible);
   REQUIRE(r.constraints.size() == 2);
@@ -112,7 +113,7 @@ TEST_CASE(
   // Brute force: the least worst violation on a grid over the box.
   double grid_worst = std::numeric_limits<double>::infinity();
   for (const double x : grid(0.25, 0.40, 121)) {  // step 1.25 g: 0.325 is a grid point
-    const double mass = evaluate(design_at(study, std::vector<double>{x}).design).mass_kg;
+    const double mass = evaluate(studies::design_at(study, std::vector<double>{x}).design).mass_kg;
     grid_worst = std::min(grid_worst, std::max(0.35 - mass, mass - 0.30));
   }
   CHECK(grid_worst == Approx(0.025).epsilon(1e-12));
@@ -125,11 +126,11 @@ TEST_CASE(
   // Both limits are broken there, by the same amount, and the report says so.
   CHECK_FALSE(r.constraints[0].satisfied);
   CHECK_FALSE(r.constraints[1].satisfied);
-  CHECK(r.outcome == Outcome::kInfeasible);
+  CHECK(r.outcome == studies::Outcome::kInfeasible);
   CHECK(r.constraints[0].tolerance == 1e-6);
   CHECK(r.constraints[0].violation == Approx(0.025).margin(1e-7 * 0.15));
   CHECK(r.constraints[1].violation == Approx(0.025).margin(1e-7 * 0.15));
-  CHECK(optimization_report(study, r, Format::kMarkdown, false)
+  CHECK(reports::optimization_report(study, r, io::Format::kMarkdown, false)
             .find("No design meets the constraints; the least violating one is") !=
         std::string::npos);
 }
@@ -142,7 +143,7 @@ TEST_CASE(
   // design must violate no more, in that measure, than the best point of a
   // 61 x 61 grid over the box (brute force with evaluate()), up to the
   // change of the violation over the optimizer's step tolerance.
-  const Study study = inline_study(R"({
+  const studies::Study study = inline_study(R"({
     "design": "table1/row1.json",
     "variables": [{"path": "/implement/mass_kg", "min": 0.25, "max": 0.40},
                   {"path": "/implement/head_to_handle_mass_ratio", "min": 0.8, "max": 1.2}],
@@ -153,14 +154,15 @@ TEST_CASE(
     return std::max(std::max(0.0, e.mass_kg - 0.26) / 1e-6,
                     std::max(0.0, 380.0 - swingweight_kg_cm2) / 3.8e-4);
   };
-  const OptimizationResult r = run_optimization(study);
+  const studies::OptimizationResult r = run_optimization(study);
   check_finite_and_inside(study, r);
   CHECK_FALSE(r.summary.feasible);
   double grid_least = std::numeric_limits<double>::infinity();
   for (const double m : grid(0.25, 0.40, 61)) {
     for (const double q : grid(0.8, 1.2, 61)) {
       grid_least = std::min(
-          grid_least, violation(evaluate(design_at(study, std::vector<double>{m, q}).design)));
+          grid_least,
+          violation(evaluate(studies::design_at(study, std::vector<double>{m, q}).design)));
     }
   }
   const double found = violation(evaluate(r.best.design));
@@ -180,11 +182,11 @@ struct GridOptimum {
   double x = 0.0;
   double value = std::numeric_limits<double>::infinity();
 };
-GridOptimum wrist_force_grid(const Study& study, double lo, double hi, int points) {
+GridOptimum wrist_force_grid(const studies::Study& study, double lo, double hi, int points) {
   GridOptimum best;
   for (const double x : grid(lo, hi, points)) {
     const double value =
-        evaluate(design_at(study, std::vector<double>{x}).design).peak_wrist_force_N;
+        evaluate(studies::design_at(study, std::vector<double>{x}).design).peak_wrist_force_N;
     if (value < best.value) best = {x, value};
   }
   return best;
@@ -203,15 +205,15 @@ TEST_CASE("A start on the bound where the optimum lies is accepted and kept") {
     text.replace(text.find("%START%"), 7, std::to_string(start));
     return inline_study(text.c_str());
   };
-  const Study probe = with_start(0.25);
+  const studies::Study probe = with_start(0.25);
   const GridOptimum best = wrist_force_grid(probe, 0.25, 0.40, 301);
   REQUIRE((best.x == 0.25 || best.x == 0.40));
   const double other = best.x == 0.25 ? 0.40 : 0.25;
   for (const double start : {best.x, other}) {
     INFO("start " << start << " kg, grid optimum " << best.value << " N at " << best.x << " kg");
-    const Study study = with_start(start);
+    const studies::Study study = with_start(start);
     REQUIRE(study.variables[0].start == start);
-    const OptimizationResult r = run_optimization(study);
+    const studies::OptimizationResult r = run_optimization(study);
     check_finite_and_inside(study, r);
     CHECK(r.start_x[0] == start);
     CHECK(r.summary.x[0] == Approx(best.x).margin(1e-7 * 0.15));
@@ -238,16 +240,16 @@ TEST_CASE("Starts on either bound of a variable with an interior optimum both fi
     return inline_study(text.c_str());
   };
   // A target between the forces at the two bounds, so the optimum is interior.
-  const Study probe = make(0.25, 0.0);
+  const studies::Study probe = make(0.25, 0.0);
   const double f_lo =
-      evaluate(design_at(probe, std::vector<double>{0.25}).design).peak_impact_force_N;
+      evaluate(studies::design_at(probe, std::vector<double>{0.25}).design).peak_impact_force_N;
   const double f_hi =
       evaluate(design_at(probe, std::vector<double>{0.40}).design).peak_impact_force_N;
   const double target = std::round(0.5 * (f_lo + f_hi));  // whole newtons: written exactly
   for (const double start : {0.25, 0.40}) {
     INFO("start " << start << " kg, target " << target << " N");
-    const Study study = make(start, target);
-    const OptimizationResult r = run_optimization(study);
+    const studies::Study study = make(start, target);
+    const studies::OptimizationResult r = run_optimization(study);
     check_finite_and_inside(study, r);
     double grid_best = std::numeric_limits<double>::infinity();
     for (const double x : grid(0.25, 0.40, 1501)) {

@@ -15,11 +15,11 @@
 #include "sweetspot/evaluate.hpp"
 #include "sweetspot/rigid_impact.hpp"
 
-namespace sweetspot::io {
+namespace sweetspot::reports {
 namespace {
 
-DesignFile tour_100() {
-  return load_design(SWEETSPOT_SOURCE_DIR "/designs/racquets/tour-100.json");
+io::DesignFile tour_100() {
+  return io::load_design(SWEETSPOT_SOURCE_DIR "/designs/racquets/tour-100.json");
 }
 
 std::size_t count(const std::string& text, const std::string& piece) {
@@ -29,19 +29,19 @@ std::size_t count(const std::string& text, const std::string& piece) {
 }
 
 TEST_CASE("Every user string is escaped: markup in a racquet's name is shown, never run") {
-  CHECK(html_escape("<script>alert('x')</script> & \"Pro\"") ==
+  CHECK(reports::html_escape("<script>alert('x')</script> & \"Pro\"") ==
         "&lt;script&gt;alert(&#39;x&#39;)&lt;/script&gt; &amp; &quot;Pro&quot;");
   // Characters XML 1.0 does not allow (and HTML's controls) are U+FFFD, shown, not dropped.
-  CHECK(html_escape(std::string("a\x01"
-                                "b\x7f"
-                                "c\td\n",
-                                8)) == "a\uFFFDb\uFFFDc\td\n");
-  CHECK(html_escape("\xef\xbf\xbe<\xef\xbf\xbf") == "\uFFFD&lt;\uFFFD");
-  Json document = read_json_file(SWEETSPOT_SOURCE_DIR "/designs/racquets/tour-100.json");
+  CHECK(reports::html_escape(std::string("a\x01"
+                                         "b\x7f"
+                                         "c\td\n",
+                                         8)) == "a\uFFFDb\uFFFDc\td\n");
+  CHECK(reports::html_escape("\xef\xbf\xbe<\xef\xbf\xbf") == "\uFFFD&lt;\uFFFD");
+  io::Json document = io::read_json_file(SWEETSPOT_SOURCE_DIR "/designs/racquets/tour-100.json");
   document["name"] = "<img src=x onerror=alert(1)> & Co";
   document["description"] = "</style><script>x()</script>";
-  const DesignFile file = read_design(document, "<b>file</b>.json");
-  const std::string page = design_html_report(file, document);
+  const io::DesignFile file = io::read_design(document, "<b>file</b>.json");
+  const std::string page = reports::design_html_report(file, document);
   CHECK(page.find("<img") == std::string::npos);
   CHECK(page.find("<script") == std::string::npos);
   CHECK(page.find("<b>file</b>") == std::string::npos);
@@ -50,9 +50,9 @@ TEST_CASE("Every user string is escaped: markup in a racquet's name is shown, ne
 }
 
 TEST_CASE("The page is self-contained: nothing fetched, no script, one stylesheet inline") {
-  const DesignFile file = tour_100();
-  const std::string page = design_html_report(
-      file, read_json_file(SWEETSPOT_SOURCE_DIR "/designs/racquets/tour-100.json"));
+  const io::DesignFile file = tour_100();
+  const std::string page = reports::design_html_report(
+      file, io::read_json_file(SWEETSPOT_SOURCE_DIR "/designs/racquets/tour-100.json"));
   CHECK(page.rfind("<!DOCTYPE html>", 0) == 0);
   CHECK(page.find("http://") == page.find("http://www.w3.org"));  // only SVG's namespaces
   CHECK(page.find("https://") == std::string::npos);
@@ -65,15 +65,15 @@ TEST_CASE("The page is self-contained: nothing fetched, no script, one styleshee
 }
 
 TEST_CASE("The curves along the frame are the rigid model's, and zero wrist force at the COP") {
-  const DesignFile file = tour_100();
+  const io::DesignFile file = tour_100();
   const Design& d = file.design;
-  const std::vector<FramePoint> curve = frame_curves(d, 0.01);
+  const std::vector<reports::FramePoint> curve = reports::frame_curves(d, 0.01);
   const double L = d.implement.length_m();
   REQUIRE(curve.size() == static_cast<std::size_t>(std::ceil(L / 0.01)) + 1);
   CHECK(curve.front().from_tip_m == 0.0);
   CHECK(curve.back().from_tip_m == L);
   // Each point is Eq. (11) and Eq. (16) at its impact, evaluated afresh.
-  for (const FramePoint& p : {curve[5], curve[30], curve[60]}) {
+  for (const reports::FramePoint& p : {curve[5], curve[30], curve[60]}) {
     Design at = d;
     at.impact_from_butt_m = L - p.from_tip_m;
     const Evaluation e = evaluate(at, Fidelity::kRigid);
@@ -90,20 +90,21 @@ TEST_CASE("The curves along the frame are the rigid model's, and zero wrist forc
         curve[i - 1].from_tip_m < cop_from_tip && cop_from_tip < curve[i].from_tip_m;
     CHECK(crosses == cop_between);
   }
-  CHECK_THROWS_AS(frame_curves(d, 0.0), std::invalid_argument);
+  CHECK_THROWS_AS(reports::frame_curves(d, 0.0), std::invalid_argument);
 }
 
 TEST_CASE("A strung design's curves are the solved collision's, as evaluate() gives them") {
   // The numbers on the page and the curves under them must agree: a design
   // solved at collision fidelity draws its curves from the same collision.
-  const DesignFile file =
-      load_design(SWEETSPOT_SOURCE_DIR "/designs/racquets/tour-100-strung.json");
+  const io::DesignFile file =
+      io::load_design(SWEETSPOT_SOURCE_DIR "/designs/racquets/tour-100-strung.json");
   const Design& d = file.design;
   REQUIRE(needed_fidelity(d) == Fidelity::kCollision);
-  const std::vector<FramePoint> curve = frame_curves(d, 0.01, Fidelity::kCollision);
+  const std::vector<reports::FramePoint> curve =
+      reports::frame_curves(d, 0.01, Fidelity::kCollision);
   const double L = d.implement.length_m();
   int checked = 0;
-  for (const FramePoint& p : curve) {
+  for (const reports::FramePoint& p : curve) {
     if (std::lround(p.from_tip_m * 100) % 10 != 5) continue;  // 5, 15, 25, ... cm
     Design at = d;
     at.impact_from_butt_m = L - p.from_tip_m;
@@ -116,10 +117,10 @@ TEST_CASE("A strung design's curves are the solved collision's, as evaluate() gi
 }
 
 TEST_CASE("The drawing is to scale: the racquet's length and each marker where the model puts it") {
-  const DesignFile file = tour_100();
+  const io::DesignFile file = tour_100();
   const Evaluation e = evaluate(file.design);
   const double L_cm = file.design.implement.length_m() * 100.0;
-  const std::string top = racquet_top_svg(file, e, 100 * 0.00064516);
+  const std::string top = reports::racquet_top_svg(file, e, 100 * 0.00064516);
   // The ruler runs the whole length, in centimetres from the tip.
   CHECK(top.find(fmt::format("x2=\"{:.2f}\"", L_cm)) != std::string::npos);
   REQUIRE(e.cop_hand_from_butt_m);
@@ -135,8 +136,8 @@ TEST_CASE("The drawing is to scale: the racquet's length and each marker where t
                       "<ellipse class=\"bed\" cx=\"%lf\" cy=\"0\" rx=\"%lf\" ry=\"%lf\"", &cx, &rx,
                       &ry) == 3);
   CHECK(M_PI * rx * ry == Approx(645.16).epsilon(1e-3));  // two decimals drawn
-  CHECK(drawn_head_area_m2(file, Json::object()) == Approx(100 * 0.00064516));
-  CHECK(drawn_head_area_m2(file, Json{{"implement", {{"headsize_sq_in", 98}}}}) ==
+  CHECK(reports::drawn_head_area_m2(file, io::Json::object()) == Approx(100 * 0.00064516));
+  CHECK(reports::drawn_head_area_m2(file, io::Json{{"implement", {{"headsize_sq_in", 98}}}}) ==
         Approx(98 * 0.00064516));
 }
 
@@ -164,26 +165,27 @@ const std::string kHostileEscaped =
     "&lt;script&gt;alert(1)&lt;/script&gt; &amp; &quot;Pro&quot; &lt;b&gt;&#39;98&#39;&lt;/b&gt;";
 
 TEST_CASE("Backticked names become code, everything else in a sentence is escaped") {
-  CHECK(html_with_code("The `a<b` is 3 & `c`.") ==
+  CHECK(reports::html_with_code("The `a<b` is 3 & `c`.") ==
         "The <code>a&lt;b</code> is 3 &amp; <code>c</code>.");
-  CHECK(html_with_code("an odd ` stays") == "an odd ` stays");
-  CHECK(html_with_code("") == "");
+  CHECK(reports::html_with_code("an odd ` stays") == "an odd ` stays");
+  CHECK(reports::html_with_code("") == "");
   // A plot's title keeps what it says; XML cannot hold control characters.
-  CHECK(plot_text_for_html(kHostile) == kHostile);
-  CHECK(plot_text_for_html("a\x01"
-                           "b\nc\x7f") == "abc");
+  CHECK(reports::plot_text_for_html(kHostile) == kHostile);
+  CHECK(reports::plot_text_for_html("a\x01"
+                                    "b\nc\x7f") == "abc");
 }
 
 TEST_CASE("A comparison applies each format's rule to its names: CSV, Markdown and HTML") {
-  Json hostile = read_json_file(SWEETSPOT_SOURCE_DIR "/designs/racquets/tour-100-lead-at-tip.json");
+  io::Json hostile =
+      io::read_json_file(SWEETSPOT_SOURCE_DIR "/designs/racquets/tour-100-lead-at-tip.json");
   hostile["name"] = "@cmd\n# injected \x1b[2J\xef\xbf\xbe";
   std::vector<reports::ComparedDesign> designs;
   designs.push_back(reports::compare_one(tour_100(), "", 1e-6));
-  designs.push_back(reports::compare_one(read_design(hostile, "=b.json"), "", 1e-6));
-  const std::string csv = reports::comparison_report(designs, Format::kCsv);
+  designs.push_back(reports::compare_one(io::read_design(hostile, "=b.json"), "", 1e-6));
+  const std::string csv = reports::comparison_report(designs, io::Format::kCsv);
   CHECK(csv.find("\n\"'@cmd\n# injected \\x1b[2J\xef\xbf\xbe\",\"'=b.json\",") !=
         std::string::npos);
-  const std::string md = reports::comparison_report(designs, Format::kMarkdown);
+  const std::string md = reports::comparison_report(designs, io::Format::kMarkdown);
   CHECK(md.find("\n# injected") == std::string::npos);
   CHECK(md.find('\x1b') == std::string::npos);
   CHECK(md.find("@cmd\\n# injected \\x1b[2J") != std::string::npos);
@@ -195,11 +197,12 @@ TEST_CASE("A comparison applies each format's rule to its names: CSV, Markdown a
 
 TEST_CASE(
     "A comparison's page is self-contained, escapes every name and shows the table's numbers") {
-  Json hostile = read_json_file(SWEETSPOT_SOURCE_DIR "/designs/racquets/tour-100-lead-at-tip.json");
+  io::Json hostile =
+      io::read_json_file(SWEETSPOT_SOURCE_DIR "/designs/racquets/tour-100-lead-at-tip.json");
   hostile["name"] = kHostile;
   std::vector<reports::ComparedDesign> designs;
   designs.push_back(reports::compare_one(tour_100(), "", 1e-6));
-  designs.push_back(reports::compare_one(read_design(hostile, "<i>b</i>.json"), "", 1e-6));
+  designs.push_back(reports::compare_one(io::read_design(hostile, "<i>b</i>.json"), "", 1e-6));
   const std::string page = reports::comparison_html(designs);
   check_self_contained(page);
   CHECK(page.find("<h1 id=\"name\">Compared: Modern 100 sq in tour racquet (typical strung specs) "
@@ -209,11 +212,11 @@ TEST_CASE(
   CHECK(page.find("alert(1)</") == std::string::npos);
   // Each difference in words, escaped, in the answer.
   for (const std::string& sentence : reports::differences(designs[0], designs[1]))
-    CHECK(page.find(html_escape(sentence)) != std::string::npos);
+    CHECK(page.find(reports::html_escape(sentence)) != std::string::npos);
   // The mass side by side: grams to four figures, kilograms under them.
   const double mass_kg = designs[1].spots.asked.evaluation.mass_kg;
   CHECK(page.find(fmt::format("<td class=\"num\">{}<span class=\"si\">{} kg</span></td>",
-                              significant(mass_kg * 1000, 4), significant(mass_kg, 6))) !=
+                              io::significant(mass_kg * 1000, 4), io::significant(mass_kg, 6))) !=
         std::string::npos);
   // Two drawings with their own title ids, and the positions behind them.
   CHECK(count(page, "<svg class=\"drawing\"") == 2);
@@ -223,14 +226,15 @@ TEST_CASE(
 }
 
 TEST_CASE("Racquets of different lengths are drawn to one scale") {
-  const DesignFile long_one = tour_100();                                                // 27 in
-  DesignFile short_one = load_design(SWEETSPOT_SOURCE_DIR "/designs/table1/row1.json");  // 0.7 m
+  const io::DesignFile long_one = tour_100();  // 27 in
+  io::DesignFile short_one =
+      io::load_design(SWEETSPOT_SOURCE_DIR "/designs/table1/row1.json");  // 0.7 m
   const double a_cm = long_one.design.implement.length_m() * 100;
   const double b_cm = short_one.design.implement.length_m() * 100;
   REQUIRE(a_cm != b_cm);
   const Evaluation ea = evaluate(long_one.design), eb = evaluate(short_one.design);
   const std::string html =
-      racquets_to_scale_html({{&long_one, &ea, "a"}, {&short_one, &eb, "b"}}, "d");
+      reports::racquets_to_scale_html({{&long_one, &ea, "a"}, {&short_one, &eb, "b"}}, "d");
   // Each drawing's viewBox is its length + 4 cm wide; its share of the page
   // is that over the longest's, so one centimetre is as long in both.
   const double longest = std::max(a_cm, b_cm);
@@ -245,39 +249,40 @@ TEST_CASE("Racquets of different lengths are drawn to one scale") {
 
 TEST_CASE(
     "A study's page is self-contained, escapes its name and question, and shows the optimum") {
-  Study study =
-      load_study(SWEETSPOT_SOURCE_DIR "/designs/studies/1-lowest-wrist-force-table1-ranges.json");
+  studies::Study study = studies::load_study(
+      SWEETSPOT_SOURCE_DIR "/designs/studies/1-lowest-wrist-force-table1-ranges.json");
   study.name = kHostile;
   study.question = kHostile + " `not code`";
-  const OptimizationResult r = run_optimization(study);
-  REQUIRE(r.outcome == Outcome::kOptimum);
+  const studies::OptimizationResult r = run_optimization(study);
+  REQUIRE(r.outcome == studies::Outcome::kOptimum);
   REQUIRE(r.best_outputs);
-  const std::string page = optimization_html(study, r);
+  const std::string page = reports::optimization_html(study, r);
   check_self_contained(page);
   CHECK(page.find("<h1 id=\"name\">" + kHostileEscaped + "</h1>") != std::string::npos);
   // The question is the user's text, shown as typed (no code spans made of it).
   CHECK(page.find(kHostileEscaped + " `not code`</p>") != std::string::npos);
   CHECK(page.find("alert(1)</") == std::string::npos);
   // The answer is the Markdown report's, its output's name as code.
-  const std::string md = optimization_report(study, r, Format::kMarkdown, false);
+  const std::string md = reports::optimization_report(study, r, io::Format::kMarkdown, false);
   const std::size_t answer = md.find("**Answer.** ") + 12;
-  CHECK(page.find(html_with_code(md.substr(answer, md.find("\n", answer) - answer))) !=
+  CHECK(page.find(reports::html_with_code(md.substr(answer, md.find("\n", answer) - answer))) !=
         std::string::npos);
   CHECK(page.find("<code>peak_wrist_force_N</code>") != std::string::npos);
   // Every variable's best value as the file writes it.
   for (std::size_t i = 0; i < study.variables.size(); ++i)
     CHECK(page.find(fmt::format("<span class=\"si\">{}</span></td></tr>",
-                                significant(r.summary.x[i], 6))) != std::string::npos);
+                                io::significant(r.summary.x[i], 6))) != std::string::npos);
   // The outputs at the start and at the optimum, in people's units.
-  const OutputSpec& wrist = *find_output("peak_wrist_force_N");
+  const io::OutputSpec& wrist = *io::find_output("peak_wrist_force_N");
   CHECK(page.find(fmt::format("<tr id=\"out-peak_wrist_force_N\"><td>peak wrist force<div "
                               "class=\"means\"><code>peak_wrist_force_N</code></div></td><td "
                               "class=\"num\">{}</td><td class=\"num\">{}</td>",
-                              significant(*wrist.value(*r.start_outputs), 4),
-                              significant(*wrist.value(*r.best_outputs), 4))) != std::string::npos);
+                              io::significant(*wrist.value(*r.start_outputs), 4),
+                              io::significant(*wrist.value(*r.best_outputs), 4))) !=
+        std::string::npos);
   // The best design as a file, escaped.
   CHECK(page.find("<pre id=\"best-design\">") != std::string::npos);
 }
 
 }  // namespace
-}  // namespace sweetspot::io
+}  // namespace sweetspot::reports

@@ -27,7 +27,7 @@
 #include "studies/optimization.hpp"
 #include "studies/study.hpp"
 
-namespace sweetspot::io {
+namespace sweetspot::reports {
 namespace {
 
 namespace fs = std::filesystem;
@@ -81,23 +81,24 @@ std::string printed_design_text(const std::string& md) {
 // The objective (as the report gives it, not minimised) of a design
 // evaluated as `evaluate` does, with the study's terms: std::nullopt when it
 // has no value.
-std::optional<double> objective_again(const Study& study, const DesignFile& design,
+std::optional<double> objective_again(const studies::Study& study, const io::DesignFile& design,
                                       const Evaluation& e) {
   if (study.over_impacts) {
-    if (objective_undefined(study, design)) return std::nullopt;
-    return objective_of(study, design);
+    if (studies::objective_undefined(study, design)) return std::nullopt;
+    return studies::objective_of(study, design);
   }
-  if (terms_undefined(study, e)) return std::nullopt;
-  return terms_value(study, e);
+  if (studies::terms_undefined(study, e)) return std::nullopt;
+  return studies::terms_value(study, e);
 }
 
 // Runs the study's optimisation and checks the printed best design against
 // the report, bit for bit. Returns the result.
-OptimizationResult check_reports_what_it_evaluated(const Study& study, const fs::path& folder) {
-  const OptimizationResult r = run_optimization(study);
-  const std::string md = optimization_report(study, r, Format::kMarkdown, false);
+studies::OptimizationResult check_reports_what_it_evaluated(const studies::Study& study,
+                                                            const fs::path& folder) {
+  const studies::OptimizationResult r = run_optimization(study);
+  const std::string md = reports::optimization_report(study, r, io::Format::kMarkdown, false);
   const nlohmann::json j =
-      nlohmann::json::parse(optimization_report(study, r, Format::kJson, false));
+      nlohmann::json::parse(reports::optimization_report(study, r, io::Format::kJson, false));
   // The same design in both formats.
   const std::string text = printed_design_text(md);
   CHECK(nlohmann::json::parse(text) == j["best_design"]);
@@ -105,19 +106,20 @@ OptimizationResult check_reports_what_it_evaluated(const Study& study, const fs:
   // Written as a user would save it, and evaluated as `sweetspot evaluate` does.
   const fs::path file = folder / "best.json";
   std::ofstream(file, std::ios::binary) << text << "\n";
-  const DesignFile printed = load_design(file.string());  // the reader applies the default impact
+  const io::DesignFile printed =
+      io::load_design(file.string());  // the reader applies the default impact
   std::optional<Evaluation> e;
   try {
-    e = evaluate_design_file(printed, "", study.modal_tolerance);
-  } catch (const InputError&) {
+    e = io::evaluate_design_file(printed, "", study.modal_tolerance);
+  } catch (const io::InputError&) {
   }
   REQUIRE(e.has_value() == r.best_outputs.has_value());
   if (!e) {
-    CHECK(r.outcome == Outcome::kNoValue);
+    CHECK(r.outcome == studies::Outcome::kNoValue);
     return r;
   }
   // Every output the report gives at the best design.
-  for (const OutputSpec& o : output_specs()) {
+  for (const io::OutputSpec& o : io::output_specs()) {
     const auto reported = o.value(*r.best_outputs);
     const auto again = o.value(*e);
     INFO(o.name);
@@ -128,7 +130,7 @@ OptimizationResult check_reports_what_it_evaluated(const Study& study, const fs:
   }
   // The objective.
   const auto objective = objective_again(study, printed, *e);
-  if (r.outcome != Outcome::kNoValue) {
+  if (r.outcome != studies::Outcome::kNoValue) {
     REQUIRE(objective.has_value());
     CHECK(same_bits(r.summary.objective, *objective));
     CHECK(same_bits(j["objective_value"].get<double>(), *objective));
@@ -138,13 +140,13 @@ OptimizationResult check_reports_what_it_evaluated(const Study& study, const fs:
   // Each constraint's value, and whether it is active, on the design read again.
   REQUIRE(r.constraints.size() == j["constraints"].size());
   std::size_t k = 0;
-  for (const StudyConstraint& c : study.constraints) {
+  for (const studies::StudyConstraint& c : study.constraints) {
     std::vector<std::pair<char, double>> limits;
     if (c.equals) limits.emplace_back('=', *c.equals);
     if (c.min) limits.emplace_back('>', *c.min);
     if (c.max) limits.emplace_back('<', *c.max);
     for (const auto& [op, limit] : limits) {
-      const ConstraintReport& reported = r.constraints[k];
+      const studies::ConstraintReport& reported = r.constraints[k];
       const nlohmann::json& in_json = j["constraints"][k++];
       INFO(reported.name);
       const auto value = c.output->value(*e);
@@ -175,8 +177,8 @@ TEST_CASE("Every shipped study's printed best design re-evaluates to the reporte
     const nlohmann::json document = nlohmann::json::parse(slurp(entry.path()));
     if (!document.contains("objective")) continue;  // a sweep, or a design
     INFO(entry.path().filename().string());
-    const Study study = load_study(entry.path().string());
-    const OptimizationResult r = check_reports_what_it_evaluated(study, dir.path());
+    const studies::Study study = studies::load_study(entry.path().string());
+    const studies::OptimizationResult r = check_reports_what_it_evaluated(study, dir.path());
     CHECK(r.inconsistency == "");
     ++studied;
   }
@@ -265,12 +267,12 @@ TEST_CASE("Every optimisation study of the hostile corpus reports what it evalua
       for (const auto& [name, text] : c.files)
         std::ofstream(folder / name, std::ios::binary) << text;
       INFO(c.id);
-      Study study;
+      studies::Study study;
       try {
-        study = load_study((folder / c.study).string());
-        if (study.objective.empty()) throw InputError(c.study, "/objective", "missing");
-        for (const StudyVariable& v : study.variables)
-          if (!(v.min < v.max)) throw InputError(c.study, "/variables", "no range");
+        study = studies::load_study((folder / c.study).string());
+        if (study.objective.empty()) throw io::InputError(c.study, "/objective", "missing");
+        for (const studies::StudyVariable& v : study.variables)
+          if (!(v.min < v.max)) throw io::InputError(c.study, "/variables", "no range");
       } catch (const std::exception&) {
         ++refused;  // refused before any search: nothing to report
         continue;
@@ -278,7 +280,7 @@ TEST_CASE("Every optimisation study of the hostile corpus reports what it evalua
       study.options.max_evaluations =
           std::min(study.options.max_evaluations, kCorpusMaxEvaluations);
       study.options.max_seconds = std::min(study.options.max_seconds, kCorpusMaxSeconds);
-      const OptimizationResult r = check_reports_what_it_evaluated(study, folder);
+      const studies::OptimizationResult r = check_reports_what_it_evaluated(study, folder);
       CHECK(r.inconsistency == "");
       ++run;
     }
@@ -317,8 +319,9 @@ TEST_CASE("A point mass listed after a clock pair is the one the printed design 
     "objective": {"output": "peak_wrist_force_N", "goal": "minimize"},
     "constraints": [{"output": "swingweight_kg_cm2", "max": 340}]
   })");
-  const Study study = read_study(document, "clock-pair.json", dir.path().string());
-  const OptimizationResult r = check_reports_what_it_evaluated(study, dir.path());
+  const studies::Study study =
+      studies::read_study(document, "clock-pair.json", dir.path().string());
+  const studies::OptimizationResult r = check_reports_what_it_evaluated(study, dir.path());
   // The handle piece the printed design varies.
   const nlohmann::json& pieces = r.best_document["implement"]["point_masses"];
   REQUIRE(pieces.size() == 3);
@@ -347,8 +350,9 @@ TEST_CASE("The printed best design keeps the study's file and writes out what it
     "variables": [{"path": "/hand/mass_kg", "min": 0.3, "max": 0.6}],
     "objective": {"output": "cop_node_gap_m", "goal": "target", "target": 0}
   })");
-  const Study study = read_study(document, "beam-study.json", dir.path().string());
-  const OptimizationResult r = check_reports_what_it_evaluated(study, dir.path());
+  const studies::Study study =
+      studies::read_study(document, "beam-study.json", dir.path().string());
+  const studies::OptimizationResult r = check_reports_what_it_evaluated(study, dir.path());
   CHECK(r.inconsistency == "");
   const nlohmann::json& printed = r.best_document;
   CHECK(printed["implement"]["head_to_handle_mass_ratio"] == 1.0);  // in the file's form
@@ -360,4 +364,4 @@ TEST_CASE("The printed best design keeps the study's file and writes out what it
 }
 
 }  // namespace
-}  // namespace sweetspot::io
+}  // namespace sweetspot::reports

@@ -21,50 +21,52 @@
 #include "io/outputs.hpp"
 #include "sweetspot/frame_specs.hpp"
 
-namespace sweetspot::io {
+namespace sweetspot::studies {
 namespace {
 
 constexpr const char* kBase =
     R"({"implement": {"length_m": 0.7, "mass_kg": 0.3, "head_to_handle_mass_ratio": 0.8}})";
 
 struct Outcome {
-  BatchSummary summary;
+  studies::BatchSummary summary;
   std::string out;
 };
 
-Outcome run_with(const std::string& text, BatchOptions options) {
+Outcome run_with(const std::string& text, studies::BatchOptions options) {
   std::istringstream in(text);
   std::ostringstream out;
   Outcome outcome;
-  outcome.summary = run_batch(in, "cat.csv", options, out);
+  outcome.summary = studies::run_batch(in, "cat.csv", options, out);
   outcome.out = out.str();
   return outcome;
 }
 
-Outcome run(const std::string& text, CatalogueFormat input = CatalogueFormat::kAuto,
-            Format format = Format::kJson) {
-  BatchOptions options;
+Outcome run(const std::string& text,
+            studies::CatalogueFormat input = studies::CatalogueFormat::kAuto,
+            io::Format format = io::Format::kJson) {
+  studies::BatchOptions options;
   options.input = input;
-  options.base = parse_json(kBase, "base.json");
+  options.base = io::parse_json(kBase, "base.json");
   options.format = format;
   return run_with(text, options);
 }
 
 // The message of the InputError run() throws, or "(no error)".
-std::string refusal(const std::string& text, CatalogueFormat input = CatalogueFormat::kAuto) {
+std::string refusal(const std::string& text,
+                    studies::CatalogueFormat input = studies::CatalogueFormat::kAuto) {
   try {
     run(text, input);
-  } catch (const InputError& e) {
+  } catch (const io::InputError& e) {
     return e.what();
   }
   return "(no error)";
 }
 
 // The JSON Lines written for each row.
-std::vector<Json> rows_of(const Outcome& outcome) {
-  std::vector<Json> rows;
+std::vector<io::Json> rows_of(const Outcome& outcome) {
+  std::vector<io::Json> rows;
   std::istringstream lines(outcome.out);
-  for (std::string line; std::getline(lines, line);) rows.push_back(Json::parse(line));
+  for (std::string line; std::getline(lines, line);) rows.push_back(io::Json::parse(line));
   return rows;
 }
 
@@ -137,7 +139,7 @@ TEST_CASE(
   const Outcome out =
       run("name,implement.mass_kg\n\"A, \"\"tour\"\"\",0.25\n\"two\r\nlines\",\"0.3\"\nC,0.35\n");
   REQUIRE(out.summary.failed == 0);
-  const std::vector<Json> rows = rows_of(out);
+  const std::vector<io::Json> rows = rows_of(out);
   REQUIRE(rows.size() == 3);
   CHECK(rows[0]["name"] == "A, \"tour\"");
   CHECK(rows[1]["name"] == "two\nlines");
@@ -150,7 +152,7 @@ TEST_CASE(
 TEST_CASE("A malformed or non-numeric cell is that row's error, quoting the value once") {
   const Outcome out =
       run("name,implement.mass_kg\nA,VS5\nB,\"VS5\"\nC,5\"\nD,\"0.3\"x\nE,nan\nF,0.3\n");
-  const std::vector<Json> rows = rows_of(out);
+  const std::vector<io::Json> rows = rows_of(out);
   REQUIRE(rows.size() == 6);
   CHECK(out.summary.failed == 5);
   for (int i : {0, 1}) {
@@ -168,15 +170,16 @@ TEST_CASE("A malformed or non-numeric cell is that row's error, quoting the valu
 
 TEST_CASE(
     "In CSV output an error quotes a cell's value in single quotes, which CSV leaves as they are") {
-  const Outcome out = run("name,implement.mass_kg\nA,VS5\n", CatalogueFormat::kAuto, Format::kCsv);
+  const Outcome out =
+      run("name,implement.mass_kg\nA,VS5\n", studies::CatalogueFormat::kAuto, io::Format::kCsv);
   CHECK_THAT(out.out,
              Catch::EndsWith(",\"cat.csv:2: /implement/mass_kg: expected a number, got 'VS5'\"\n"));
   CHECK(out.out.find("\"\"") == std::string::npos);
 }
 
 TEST_CASE("A quote left open to the end of the file spoils its own row, not the rows after it") {
-  const Outcome out =
-      run("name,implement.mass_kg\n\"a,0.3\nb,0.31\nc,0.32\n", CatalogueFormat::kCsv, Format::kCsv);
+  const Outcome out = run("name,implement.mass_kg\n\"a,0.3\nb,0.31\nc,0.32\n",
+                          studies::CatalogueFormat::kCsv, io::Format::kCsv);
   CHECK(out.summary.rows == 3);
   CHECK(out.summary.failed == 1);
   CHECK(out.out.find("cat.csv:2: not CSV: field 1: a quoted field is not closed") !=
@@ -187,7 +190,7 @@ TEST_CASE("A quote left open to the end of the file spoils its own row, not the 
 
 TEST_CASE("More columns than the limit are refused, naming the limit") {
   std::string header = "name";
-  for (std::size_t k = 1; k <= kMaxBatchColumns; ++k) header += ",hand.mass_kg";
+  for (std::size_t k = 1; k <= studies::kMaxBatchColumns; ++k) header += ",hand.mass_kg";
   CHECK_THAT(refusal(header + "\n"),
              Catch::StartsWith("cat.csv:1: 1001 columns, more than the limit of 1000"));
 }
@@ -226,11 +229,11 @@ class Failing : public std::streambuf {
 };
 
 std::string refusal_of(std::streambuf& buffer) {
-  BatchOptions options;
+  studies::BatchOptions options;
   std::istream in(&buffer);
   std::ostringstream out;
   try {
-    run_batch(in, "endless", options, out);
+    studies::run_batch(in, "endless", options, out);
   } catch (const std::exception& e) {
     return e.what();
   }
@@ -257,15 +260,15 @@ TEST_CASE("A read error is an error, never the end of the input") {
   Failing failing("name,implement.mass_kg\nA,0.3\n");
   std::istream in(&failing);
   std::ostringstream out;
-  BatchOptions options;
-  options.base = parse_json(kBase, "base.json");
-  CHECK_THROWS_AS(run_batch(in, "disk.csv", options, out), ReadError);
+  studies::BatchOptions options;
+  options.base = io::parse_json(kBase, "base.json");
+  CHECK_THROWS_AS(studies::run_batch(in, "disk.csv", options, out), io::ReadError);
 }
 
 TEST_CASE("A catalogue's format follows its name, else its first line") {
-  CHECK(catalogue_format("a.csv") == CatalogueFormat::kCsv);
-  CHECK(catalogue_format("a.jsonl") == CatalogueFormat::kJsonLines);
-  CHECK(catalogue_format("-") == CatalogueFormat::kAuto);
+  CHECK(studies::catalogue_format("a.csv") == studies::CatalogueFormat::kCsv);
+  CHECK(studies::catalogue_format("a.jsonl") == studies::CatalogueFormat::kJsonLines);
+  CHECK(studies::catalogue_format("-") == studies::CatalogueFormat::kAuto);
   const Outcome lines = run("\n{\"name\": \"x\", \"implement\": {\"mass_kg\": 0.4}}\n");
   CHECK(rows_of(lines)[0]["name"] == "x");
   CHECK(rows_of(lines)[0]["line"] == 2);
@@ -273,21 +276,21 @@ TEST_CASE("A catalogue's format follows its name, else its first line") {
   CHECK(rows_of(csv)[0]["name"] == "y");
   CHECK(rows_of(csv)[0]["line"] == 3);
   // Told it is CSV, a line of JSON is a header naming no field.
-  CHECK_THAT(refusal("{\"implement\": {}}\n", CatalogueFormat::kCsv),
+  CHECK_THAT(refusal("{\"implement\": {}}\n", studies::CatalogueFormat::kCsv),
              Catch::StartsWith("cat.csv:1: "));
 }
 
 TEST_CASE("A row overriding the base with another form of a quantity replaces it") {
   // The base gives the duration; a row giving the tension derives it instead.
-  BatchOptions options;
-  options.base = parse_json(
+  studies::BatchOptions options;
+  options.base = io::parse_json(
       R"({"implement": {"length_m": 0.7, "mass_kg": 0.3, "head_to_handle_mass_ratio": 0.8},
                                 "strings": {"impact_duration_ms": 4}})",
       "base.json");
-  options.format = Format::kJson;
+  options.format = io::Format::kJson;
   std::istringstream in("{\"strings\": {\"tension_lb\": 55}}\n");
   std::ostringstream out;
-  const BatchSummary summary = run_batch(in, "rows.jsonl", options, out);
+  const studies::BatchSummary summary = run_batch(in, "rows.jsonl", options, out);
   CHECK(summary.failed == 0);
   CHECK_THAT(out.str(), !Catch::Contains("error"));
 }
@@ -311,39 +314,39 @@ constexpr const char* kStrungBase =
     R"({"implement": {"length_in": 27, "mass_g": 318, "balance_cm": 32.5, "swingweight_kg_cm2": 325},
         "strings": {"tension_lb": 52}, "impact": {"from_tip_cm": 17}})";
 
-BatchOptions mapped(Format format = Format::kJson) {
-  BatchOptions options;
-  options.input = CatalogueFormat::kCsv;
-  options.base = parse_json(kStrungBase, "base.json");
+studies::BatchOptions mapped(io::Format format = io::Format::kJson) {
+  studies::BatchOptions options;
+  options.input = studies::CatalogueFormat::kCsv;
+  options.base = io::parse_json(kStrungBase, "base.json");
   options.format = format;
   options.map = kRetailerMap;
   return options;
 }
 
-std::string refusal_with(const std::string& text, const BatchOptions& options) {
+std::string refusal_with(const std::string& text, const studies::BatchOptions& options) {
   try {
     run_with(text, options);
-  } catch (const InputError& e) {
+  } catch (const io::InputError& e) {
     return e.what();
   }
   return "(no error)";
 }
 
 TEST_CASE("A mapped catalogue gives what the same designs written as design files give") {
-  const std::vector<Json> rows = rows_of(run_with(kRetailerTable, mapped()));
+  const std::vector<io::Json> rows = rows_of(run_with(kRetailerTable, mapped()));
   REQUIRE(rows.size() == 3);
   // Row 2 by hand, as a design file: the map's targets name the units of the table.
-  Json design = parse_json(kStrungBase, "b2.json");
+  io::Json design = io::parse_json(kStrungBase, "b2.json");
   design["name"] = "Tour 97";
   design["implement"] = {
       {"length_in", 27.0}, {"mass_g", 335.0}, {"balance_cm", 31.5}, {"swingweight_kg_cm2", 330.0}};
   design["frame"] = {{"RA", 62.0}};
   design["strings"]["head_size_in2"] = 97.0;
-  const DesignFile file = read_design(design, "cat.csv:3");
-  const Json single = evaluation_json(file, evaluate_design_file(file, "", 1e-6));
-  Json row = rows[1];
+  const io::DesignFile file = io::read_design(design, "cat.csv:3");
+  const io::Json single = evaluation_json(file, evaluate_design_file(file, "", 1e-6));
+  io::Json row = rows[1];
   CHECK(row["line"] == 3);
-  CHECK(row["columns"] == Json({{"pcode", "B2"}, {"mfg", "Acme"}, {"vibration", "142"}}));
+  CHECK(row["columns"] == io::Json({{"pcode", "B2"}, {"mfg", "Acme"}, {"vibration", "142"}}));
   // As complete as a single evaluate: fidelity, inputs, outputs, notes, and nothing else differs.
   row.erase("line");
   row.erase("columns");
@@ -351,11 +354,11 @@ TEST_CASE("A mapped catalogue gives what the same designs written as design file
   // A tension and a stiffness (RA) with no COR: auto solves the collision.
   CHECK(row["fidelity"] == "collision");
   CHECK(row["inputs"]["frame/RA"]["value"] == 62.0);
-  CHECK(row["inputs"]["strings/tension_N"]["given"] == Json({{"/strings/tension_lb", 52}}));
+  CHECK(row["inputs"]["strings/tension_N"]["given"] == io::Json({{"/strings/tension_lb", 52}}));
 }
 
 TEST_CASE("Unmapped columns pass through to CSV beside the outputs, as they were written") {
-  const Outcome out = run_with(kRetailerTable, mapped(Format::kCsv));
+  const Outcome out = run_with(kRetailerTable, mapped(io::Format::kCsv));
   CHECK(out.summary.failed == 0);
   CHECK_THAT(out.out, Catch::StartsWith("line,name,pcode,mfg,vibration,length_m,"));
   CHECK(out.out.find("\n2,Club 100,A1,Acme,150,0.6858,") != std::string::npos);
@@ -363,10 +366,10 @@ TEST_CASE("Unmapped columns pass through to CSV beside the outputs, as they were
 }
 
 TEST_CASE("A passed-through cell or a name a spreadsheet would read as a formula is neutralised") {
-  BatchOptions options;
-  options.input = CatalogueFormat::kCsv;
-  options.base = parse_json(kBase, "base.json");
-  options.format = Format::kCsv;
+  studies::BatchOptions options;
+  options.input = studies::CatalogueFormat::kCsv;
+  options.base = io::parse_json(kBase, "base.json");
+  options.format = io::Format::kCsv;
   options.map = {{"racquet", "name"}, {"weight", "implement.mass_g"}};
   const Outcome out = run_with(
       "code,racquet,weight,note\n"
@@ -384,19 +387,20 @@ TEST_CASE("A passed-through cell or a name a spreadsheet would read as a formula
 
 TEST_CASE("The blank last row a spreadsheet exports is skipped, not an error row") {
   for (const std::string blank : {",\n", ", ,\n", "\"\",\"\"\n", ",\r\n"}) {
-    const Outcome out =
-        run("name,implement.mass_g\nr1,300\n" + blank, CatalogueFormat::kCsv, Format::kCsv);
+    const Outcome out = run("name,implement.mass_g\nr1,300\n" + blank,
+                            studies::CatalogueFormat::kCsv, io::Format::kCsv);
     CHECK(out.summary.rows == 1);
     CHECK(out.summary.failed == 0);
   }
   // A row with one cell is a row.
-  CHECK(run("name,implement.mass_g\nr1,300\n,310\n", CatalogueFormat::kCsv).summary.rows == 2);
+  CHECK(run("name,implement.mass_g\nr1,300\n,310\n", studies::CatalogueFormat::kCsv).summary.rows ==
+        2);
 }
 
 TEST_CASE("A column passed through twice is refused once, naming both") {
-  BatchOptions options;
-  options.input = CatalogueFormat::kCsv;
-  options.base = parse_json(kBase, "base.json");
+  studies::BatchOptions options;
+  options.input = studies::CatalogueFormat::kCsv;
+  options.base = io::parse_json(kBase, "base.json");
   options.map = {{"weight", "implement.mass_kg"}};
   CHECK_THROWS_WITH(run_with("code,weight,code\nA,0.3,B\n", options),
                     "cat.csv:1: column 3 \"code\": repeats column 1, passed through too "
@@ -406,25 +410,25 @@ TEST_CASE("A column passed through twice is refused once, naming both") {
 TEST_CASE("A reference.source column fills the design's reference, as a design file would") {
   const Outcome out =
       run("name,reference.source,reference.swingweight_kg_cm2\nr1,Spec sheet (2024),320\n",
-          CatalogueFormat::kCsv, Format::kCsv);
+          studies::CatalogueFormat::kCsv, io::Format::kCsv);
   CHECK(out.summary.failed == 0);
   // Its numbers are numbers, as in a file.
-  const Outcome bad =
-      run("name,reference.swingweight_kg_cm2\nr1,heavy\n", CatalogueFormat::kCsv, Format::kCsv);
+  const Outcome bad = run("name,reference.swingweight_kg_cm2\nr1,heavy\n",
+                          studies::CatalogueFormat::kCsv, io::Format::kCsv);
   CHECK(bad.summary.failed == 1);
   CHECK(bad.out.find("/reference/swingweight_kg_cm2") != std::string::npos);
 }
 
 TEST_CASE("An inline map and a JSON map are the same map") {
-  const auto inline_map = parse_column_map(
+  const auto inline_map = studies::parse_column_map(
       "racquet=name, headsize=strings.head_size_in2,length=implement.length_in,"
       "weight=implement.mass_g,balance=implement.balance_cm,"
       "swingweight=implement.swingweight_kg_cm2,flex=frame.RA",
       "--map");
   CHECK(inline_map == kRetailerMap);
-  Json json = Json::object();
+  io::Json json = io::Json::object();
   for (const auto& [column, field] : kRetailerMap) json[column] = field;
-  auto from_json = column_map_from_json(json, "map.json");
+  auto from_json = studies::column_map_from_json(json, "map.json");
   std::sort(from_json.begin(), from_json.end());
   auto expected = kRetailerMap;
   std::sort(expected.begin(), expected.end());
@@ -432,22 +436,23 @@ TEST_CASE("An inline map and a JSON map are the same map") {
 }
 
 TEST_CASE("A bad map is refused once, naming the map, the column and what was expected") {
-  CHECK_THROWS_WITH(parse_column_map("weight=implement.mass_g,weight=implement.mass_kg", "--map"),
-                    "--map: column \"weight\": mapped twice (expected each column once)");
-  CHECK_THROWS_WITH(parse_column_map("weight", "--map"),
+  CHECK_THROWS_WITH(
+      studies::parse_column_map("weight=implement.mass_g,weight=implement.mass_kg", "--map"),
+      "--map: column \"weight\": mapped twice (expected each column once)");
+  CHECK_THROWS_WITH(studies::parse_column_map("weight", "--map"),
                     Catch::StartsWith("--map: item 1 \"weight\": expected COLUMN=design.field"));
-  CHECK_THROWS_WITH(parse_column_map("weight=implement.mass_g,", "--map"),
+  CHECK_THROWS_WITH(studies::parse_column_map("weight=implement.mass_g,", "--map"),
                     Catch::StartsWith("--map: item 2 \"\": expected COLUMN=design.field"));
-  CHECK_THROWS_WITH(parse_column_map("=implement.mass_g", "--map"),
+  CHECK_THROWS_WITH(studies::parse_column_map("=implement.mass_g", "--map"),
                     Catch::Contains("expected a column name and a design field"));
-  CHECK_THROWS_WITH(column_map_from_json(Json::array(), "map.json"),
+  CHECK_THROWS_WITH(studies::column_map_from_json(io::Json::array(), "map.json"),
                     Catch::StartsWith("map.json: expected a JSON object"));
-  CHECK_THROWS_WITH(column_map_from_json(Json::object(), "map.json"),
+  CHECK_THROWS_WITH(studies::column_map_from_json(io::Json::object(), "map.json"),
                     Catch::StartsWith("map.json: expected a JSON object"));
-  CHECK_THROWS_WITH(column_map_from_json(Json{{"weight", 300}}, "map.json"),
+  CHECK_THROWS_WITH(studies::column_map_from_json(io::Json{{"weight", 300}}, "map.json"),
                     "map.json: /weight: expected a design field as text, such as "
                     "\"implement.mass_g\", got 300");
-  BatchOptions options = mapped();
+  studies::BatchOptions options = mapped();
   options.map.emplace_back("wieght", "implement.mass_g");
   CHECK_THAT(refusal_with(kRetailerTable, options),
              Catch::StartsWith("--map: column \"wieght\": not in the header of cat.csv:1 "
@@ -473,11 +478,11 @@ TEST_CASE("A bad map is refused once, naming the map, the column and what was ex
                                "\"implement.weight_g\"): unknown key"));
   // A map is for CSV: a JSON Lines row names its fields itself.
   options = mapped();
-  options.input = CatalogueFormat::kJsonLines;
+  options.input = studies::CatalogueFormat::kJsonLines;
   CHECK_THAT(refusal_with("{\"name\": \"x\"}\n", options),
              Catch::StartsWith("--map: a column map is for a CSV catalogue"));
   // A column passed through may not take an output's own name in CSV.
-  options = mapped(Format::kCsv);
+  options = mapped(io::Format::kCsv);
   options.map = {{"racquet", "name"}};
   CHECK_THAT(refusal_with("racquet,error\nx,1\n", options),
              Catch::Contains("column 2 \"error\": passed through, it would repeat the output's"));
@@ -488,7 +493,7 @@ TEST_CASE("A cell of a mapped column that is not a number is its row's error, na
   table += "D4,Bolt,Unlisted,100,27.0,300,32.5,n/a,66,150\n";
   const Outcome out = run_with(table, mapped());
   CHECK(out.summary.failed == 1);
-  const std::vector<Json> rows = rows_of(out);
+  const std::vector<io::Json> rows = rows_of(out);
   CHECK(rows[3]["error"] ==
         "cat.csv:5: /implement/swingweight_kg_cm2: column 'swingweight': expected a number, got "
         "'n/a'");
@@ -498,7 +503,7 @@ TEST_CASE("A cell of a mapped column that is not a number is its row's error, na
 
 std::vector<double> sorted_values(const Outcome& out, const std::string& output) {
   std::vector<double> values;
-  for (const Json& row : rows_of(out)) {
+  for (const io::Json& row : rows_of(out)) {
     if (row.contains("outputs")) values.push_back(row["outputs"][output].get<double>());
   }
   return values;
@@ -510,9 +515,9 @@ TEST_CASE("Sorted rows come in the output's order, failed rows last; --top keeps
     table += "r" + std::to_string(i) + "," + std::to_string(250 + (i * 37) % 120) + "," +
              std::to_string(5 + (i * 13) % 25) + "\n";
   table += "bad,heavy,10\n";
-  BatchOptions options;
-  options.base = parse_json(kBase, "base.json");
-  options.format = Format::kJson;
+  studies::BatchOptions options;
+  options.base = io::parse_json(kBase, "base.json");
+  options.format = io::Format::kJson;
   const Outcome plain = run_with(table, options);
   std::vector<double> expected = sorted_values(plain, "peak_wrist_force_N");
   std::sort(expected.begin(), expected.end());
@@ -537,12 +542,12 @@ TEST_CASE("Sorted rows come in the output's order, failed rows last; --top keeps
 
 TEST_CASE("The top N over more rows than a chunk are the first N of sorting them all") {
   std::string table = "name,implement.mass_g\n";
-  const int rows = static_cast<int>(kBatchChunkRows) * 2 + 77;
+  const int rows = static_cast<int>(studies::kBatchChunkRows) * 2 + 77;
   for (int i = 0; i < rows; ++i)
     table += "r" + std::to_string(i) + "," + std::to_string(200 + (i * 7919) % 2000 * 0.1) + "\n";
-  BatchOptions options;
-  options.base = parse_json(kBase, "base.json");
-  options.format = Format::kCsv;
+  studies::BatchOptions options;
+  options.base = io::parse_json(kBase, "base.json");
+  options.format = io::Format::kCsv;
   options.sort_output = "swingweight_kg_cm2";
   options.threads = 2;
   const std::string all = run_with(table, options).out;
@@ -587,23 +592,23 @@ TEST_CASE("A row is written the same after any other rows, across chunks and thr
   std::string table = header;
   std::vector<std::pair<int, std::string>> rows;  // the line each row starts on, and its text
   int line = 2;
-  const int count = static_cast<int>(kBatchChunkRows) + 300;
+  const int count = static_cast<int>(studies::kBatchChunkRows) + 300;
   for (int i = 0; i < count; ++i) {
     const std::string text = row_text(i);
     rows.emplace_back(line, text);
     table += text;
     line += static_cast<int>(std::count(text.begin(), text.end(), '\n'));
   }
-  BatchOptions options;
-  options.input = CatalogueFormat::kCsv;
-  options.base = parse_json(
+  studies::BatchOptions options;
+  options.input = studies::CatalogueFormat::kCsv;
+  options.base = io::parse_json(
       R"({"name": "Base", "implement": {"length_in": 27, "mass_g": 318, "balance_cm": 32.5,
           "swingweight_kg_cm2": 325}})",
       "base.json");
   options.map = {{"racquet", "name"},
                  {"weight", "implement.mass_g"},
                  {"swingweight", "implement.swingweight_kg_cm2"}};
-  options.format = Format::kCsv;
+  options.format = io::Format::kCsv;
   const std::string all = run_with(table, options).out;
   // Each output row is one CSV record (a multi-line name stays one quoted
   // cell), starting with its input line's number.
@@ -620,7 +625,7 @@ TEST_CASE("A row is written the same after any other rows, across chunks and thr
   REQUIRE(written.size() == rows.size());
   for (std::size_t i = 0; i < rows.size(); ++i) {
     // Rows of the first chunk now and then; of the second (in reused slots) often.
-    if (i % (i < kBatchChunkRows ? 97 : 5) != 0) continue;
+    if (i % (i < studies::kBatchChunkRows ? 97 : 5) != 0) continue;
     const auto& [at, row] = rows[i];
     INFO("row " << i << " at line " << at);
     const std::string alone = run_with(header + std::string(at - 2, '\n') + row, options).out;
@@ -628,7 +633,7 @@ TEST_CASE("A row is written the same after any other rows, across chunks and thr
   }
   // Sorted, every row that failed (its error, the last column, not empty) comes
   // after every row that did not.
-  BatchOptions sorted = options;
+  studies::BatchOptions sorted = options;
   sorted.sort_output = "mass_kg";
   std::istringstream sorted_lines(run_with(table, sorted).out);
   std::getline(sorted_lines, text);
@@ -655,11 +660,11 @@ TEST_CASE("A row is written the same after any other rows, across chunks and thr
 }
 
 TEST_CASE("A tension column in lb or kg gives the tension in N it converts to") {
-  BatchOptions options;
-  options.base = parse_json(kBase, "base.json");
-  options.format = Format::kJson;
+  studies::BatchOptions options;
+  options.base = io::parse_json(kBase, "base.json");
+  options.format = io::Format::kJson;
   // 50 lb is 222.41108076 N and 22.6796185 kgf.
-  std::vector<Json> rows;
+  std::vector<io::Json> rows;
   for (const char* table : {"strings.tension_N\n222.41108076302\n", "strings.tension_lb\n50\n",
                             "strings.tension_kg\n22.6796185\n"}) {
     const Outcome out = run_with(table, options);
@@ -669,30 +674,30 @@ TEST_CASE("A tension column in lb or kg gives the tension in N it converts to") 
   const double duration = rows[0]["outputs"]["impact_duration_s"];
   CHECK(rows[1]["outputs"]["impact_duration_s"].get<double>() == Approx(duration).epsilon(1e-9));
   CHECK(rows[2]["outputs"]["impact_duration_s"].get<double>() == Approx(duration).epsilon(1e-9));
-  CHECK(rows[1]["inputs"]["strings/tension_N"]["given"] == Json({{"/strings/tension_lb", 50}}));
+  CHECK(rows[1]["inputs"]["strings/tension_N"]["given"] == io::Json({{"/strings/tension_lb", 50}}));
 }
 
 TEST_CASE(
     "The shipped catalogue, map and base of the README evaluate every row but the one with n/a") {
   const std::string dir = std::string(SWEETSPOT_SOURCE_DIR) + "/designs/catalogues/";
-  BatchOptions options;
-  options.input = CatalogueFormat::kCsv;
-  options.base = read_json_file(dir + "base-52lb.json");
-  options.map = column_map_from_json(read_json_file(dir + "retailer-map.json"), "map");
-  options.format = Format::kJson;
+  studies::BatchOptions options;
+  options.input = studies::CatalogueFormat::kCsv;
+  options.base = io::read_json_file(dir + "base-52lb.json");
+  options.map = studies::column_map_from_json(io::read_json_file(dir + "retailer-map.json"), "map");
+  options.format = io::Format::kJson;
   options.sort_output = "peak_wrist_force_N";
   std::ifstream in(dir + "spec-sheets.csv", std::ios::binary);
   std::ostringstream out;
-  const BatchSummary summary = run_batch(in, "spec-sheets.csv", options, out);
+  const studies::BatchSummary summary = run_batch(in, "spec-sheets.csv", options, out);
   CHECK(summary.rows == 6);
   CHECK(summary.failed == 1);
-  const std::vector<Json> rows = rows_of(Outcome{summary, out.str()});
+  const std::vector<io::Json> rows = rows_of(Outcome{summary, out.str()});
   REQUIRE(rows.size() == 6);
   for (std::size_t i = 0; i + 1 < rows.size(); ++i) {
     INFO(rows[i]["name"]);
     CHECK(rows[i]["fidelity"] == "modal");  // the RA column gives the frame's stiffness
     // Its frequency is the RA relation's for the row's RA and mass (no lead tape).
-    const Json& outputs = rows[i]["outputs"];
+    const io::Json& outputs = rows[i]["outputs"];
     CHECK(outputs["fundamental_free_Hz"].get<double>() ==
           Approx(fundamental_free_Hz_from_RA(rows[i]["inputs"]["frame/RA"]["value"].get<double>(),
                                              outputs["mass_kg"].get<double>()))
@@ -709,19 +714,20 @@ TEST_CASE(
 TEST_CASE("A mapped catalogue with an RA column gives the same rows compiled as read as JSON") {
   const std::string dir = std::string(SWEETSPOT_SOURCE_DIR) + "/designs/catalogues/";
   const auto run_shipped = [&](bool compiled) {
-    BatchOptions options;
-    options.input = CatalogueFormat::kCsv;
-    options.base = read_json_file(dir + "base-52lb.json");
-    options.map = column_map_from_json(read_json_file(dir + "retailer-map.json"), "map");
-    options.format = Format::kCsv;
+    studies::BatchOptions options;
+    options.input = studies::CatalogueFormat::kCsv;
+    options.base = io::read_json_file(dir + "base-52lb.json");
+    options.map =
+        studies::column_map_from_json(io::read_json_file(dir + "retailer-map.json"), "map");
+    options.format = io::Format::kCsv;
     options.compiled = compiled;
     std::ifstream in(dir + "spec-sheets.csv", std::ios::binary);
     std::ostringstream out;
-    run_batch(in, "spec-sheets.csv", options, out);
+    studies::run_batch(in, "spec-sheets.csv", options, out);
     return out.str();
   };
   CHECK(run_shipped(true) == run_shipped(false));
 }
 
 }  // namespace
-}  // namespace sweetspot::io
+}  // namespace sweetspot::studies

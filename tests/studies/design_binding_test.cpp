@@ -21,7 +21,7 @@
 #include "studies/study.hpp"
 #include "studies/sweep.hpp"
 
-namespace sweetspot::io {
+namespace sweetspot::studies {
 namespace {
 
 std::string studies() { return std::string(SWEETSPOT_SOURCE_DIR) + "/designs/studies/"; }
@@ -153,21 +153,21 @@ TEST_CASE(
     "A bound field gives, bit for bit, the design read from the file with the value written "
     "there") {
   for (const Case& c : cases()) {
-    const Json document = Json::parse(c.design);
-    const DesignDescription description = describe_design(document, "design.json");
+    const io::Json document = io::Json::parse(c.design);
+    const io::DesignDescription description = io::describe_design(document, "design.json");
     for (const auto& [pointer, values] : c.fields) {
       INFO(c.design << "\n" << pointer);
       const std::vector<std::string> pointers{pointer};
-      const auto compiled = CompiledDesign::compile(description, pointers);
+      const auto compiled = studies::CompiledDesign::compile(description, pointers);
       REQUIRE(compiled);
-      BoundDesign bound(*compiled);
+      studies::BoundDesign bound(*compiled);
       for (const double value : values) {
         INFO("value " << value);
-        Json changed = document;
-        changed[Json::json_pointer(pointer)] = value;
-        std::optional<DesignFile> read;
+        io::Json changed = document;
+        changed[io::Json::json_pointer(pointer)] = value;
+        std::optional<io::DesignFile> read;
         try {
-          read.emplace(read_design(changed, "design.json"));
+          read.emplace(io::read_design(changed, "design.json"));
         } catch (const std::exception&) {
         }
         const Design* design = bound.at(std::span<const double>(&value, 1));
@@ -182,25 +182,25 @@ TEST_CASE(
 }
 
 TEST_CASE("Fields no binding can set are not compiled") {
-  const Json document = Json::parse(cases()[0].design);
-  const DesignDescription description = describe_design(document, "design.json");
+  const io::Json document = io::Json::parse(cases()[0].design);
+  const io::DesignDescription description = io::describe_design(document, "design.json");
   for (const char* pointer :
        {"/name", "/reference/peak_wrist_force_N", "/implement/balance_cm",
         "/implement/sections/0/mass_kg", "/impact/from_butt_m", "/forearm/equivalent_mass_kg",
         "/strings/tension_N", "/frame/cor_rigid", "/hand", "/implement/mass_kg/x",
         "hand/mass_kg"}) {
     INFO(pointer);
-    CHECK_FALSE(bind_field(description, pointer));
+    CHECK_FALSE(studies::bind_field(description, pointer));
   }
-  CHECK(bind_field(description, "/hand/mass_g")->scale.factor == 0.001);
-  CHECK(bind_field(description, "/impact/from_tip_in")->scale.factor == 0.0254);
-  CHECK(bind_field(description, "/implement/mass_g")->implement);
-  CHECK_FALSE(bind_field(description, "/hand/mass_g")->implement);
+  CHECK(studies::bind_field(description, "/hand/mass_g")->scale.factor == 0.001);
+  CHECK(studies::bind_field(description, "/impact/from_tip_in")->scale.factor == 0.0254);
+  CHECK(studies::bind_field(description, "/implement/mass_g")->implement);
+  CHECK_FALSE(studies::bind_field(description, "/hand/mass_g")->implement);
 }
 
-std::string sweep_csv(const Study& study, SweepOptions options) {
+std::string sweep_csv(const studies::Study& study, studies::SweepOptions options) {
   std::ostringstream csv;
-  run_sweep(
+  studies::run_sweep(
       study, csv, [](std::size_t, std::size_t) {}, options);
   return csv.str();
 }
@@ -211,22 +211,23 @@ TEST_CASE(
     for (std::size_t i = 0; i + 1 < c.fields.size(); ++i) {
       const auto& [first, a] = c.fields[i];
       const auto& [second, b] = c.fields[i + 1];
-      Json text = Json::parse(R"({"outputs": ["peak_wrist_force_N", "mass_kg", "swingweight_kg_cm2",
+      io::Json text =
+          io::Json::parse(R"({"outputs": ["peak_wrist_force_N", "mass_kg", "swingweight_kg_cm2",
                                   "impact_from_tip_m", "impact_duration_s", "rotation_axis_free_from_butt_m"]})");
-      text["design"] = Json::parse(c.design);
-      text["variables"] = Json::array(
-          {Json{{"path", first}, {"values", a}}, Json{{"path", second}, {"values", b}}});
+      text["design"] = io::Json::parse(c.design);
+      text["variables"] = io::Json::array(
+          {io::Json{{"path", first}, {"values", a}}, io::Json{{"path", second}, {"values", b}}});
       INFO(text.dump());
-      Study study;
+      studies::Study study;
       try {
-        study = read_study(text, "sweep.json", studies());
+        study = studies::read_study(text, "sweep.json", studies());
       } catch (const std::exception& e) {
         continue;  // a start point the study refuses: nothing to sweep
       }
-      REQUIRE(compiled_for_variables(study));
-      const std::string reference = sweep_csv(study, SweepOptions{1, false, false});
-      CHECK(sweep_csv(study, SweepOptions{1, false, true}) == reference);
-      CHECK(sweep_csv(study, SweepOptions{2, true, true}) == reference);
+      REQUIRE(studies::compiled_for_variables(study));
+      const std::string reference = sweep_csv(study, studies::SweepOptions{1, false, false});
+      CHECK(sweep_csv(study, studies::SweepOptions{1, false, true}) == reference);
+      CHECK(sweep_csv(study, studies::SweepOptions{2, true, true}) == reference);
     }
   }
 }
@@ -237,13 +238,13 @@ TEST_CASE(
   // whole (evaluate()): each output evaluate_rigid_outcome() answers, alone
   // and all together, at good and bad points, on the axis and off it (where
   // the whole evaluation answers), bit for bit in the CSV.
-  const auto names = rigid_outcome_outputs();
-  std::vector<Json> output_lists;
+  const auto names = studies::rigid_outcome_outputs();
+  std::vector<io::Json> output_lists;
   for (const std::string_view name : names) {
-    REQUIRE(find_output(name));
-    output_lists.push_back(Json::array({std::string(name)}));
+    REQUIRE(io::find_output(name));
+    output_lists.push_back(io::Json::array({std::string(name)}));
   }
-  output_lists.push_back(Json::array());
+  output_lists.push_back(io::Json::array());
   for (const std::string_view name : names) output_lists.back().push_back(std::string(name));
   const char* designs[] = {
       R"({"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8},
@@ -254,21 +255,21 @@ TEST_CASE(
           "hand": {"mass_g": 450, "center_from_butt_cm": 8}, "forearm": {"equivalent_mass_kg": 0.5}})"};
   std::size_t points = 0;
   for (const char* design : designs) {
-    for (const Json& outputs : output_lists) {
-      Json text = Json::object();
-      text["design"] = Json::parse(design);
+    for (const io::Json& outputs : output_lists) {
+      io::Json text = io::Json::object();
+      text["design"] = io::Json::parse(design);
       text["outputs"] = outputs;
       text["fidelity"] = "rigid";
       text["variables"] =
-          Json::parse(R"([{"path": "/hand/mass_kg", "values": [0.3, 0.0, -0.2, 0.45]},
+          io::Json::parse(R"([{"path": "/hand/mass_kg", "values": [0.3, 0.0, -0.2, 0.45]},
           {"path": "/forearm/equivalent_mass_kg", "values": [0.5, 0.0, -1.0, 2.0]}])");
       INFO(text.dump());
-      const Study study = read_study(text, "sweep.json", studies());
-      REQUIRE(compiled_for_variables(study));
-      const std::string reference = sweep_csv(study, SweepOptions{1, false, false, false});
+      const studies::Study study = studies::read_study(text, "sweep.json", studies());
+      REQUIRE(studies::compiled_for_variables(study));
+      const std::string reference = sweep_csv(study, studies::SweepOptions{1, false, false, false});
       CHECK(reference.find("must be") != std::string::npos);  // bad points too
-      CHECK(sweep_csv(study, SweepOptions{1, true, true, true}) == reference);
-      CHECK(sweep_csv(study, SweepOptions{1, true, true, false}) == reference);
+      CHECK(sweep_csv(study, studies::SweepOptions{1, true, true, true}) == reference);
+      CHECK(sweep_csv(study, studies::SweepOptions{1, true, true, false}) == reference);
       points += 16;
     }
   }
@@ -276,21 +277,22 @@ TEST_CASE(
 }
 
 TEST_CASE("Every point of a hand x forearm sweep is the point read from JSON, off the range too") {
-  const Study study = read_study(Json::parse(R"({"design": "../table1/row1.json",
+  const studies::Study study =
+      studies::read_study(io::Json::parse(R"({"design": "../table1/row1.json",
       "outputs": ["peak_wrist_force_N", "wrist_force_ratio", "cop_hand_from_tip_m"],
       "variables": [{"path": "/hand/mass_kg", "min": -0.2, "max": 0.6, "points": 17},
                     {"path": "/forearm/equivalent_mass_kg", "min": -0.1, "max": 1.0, "points": 12}]})"),
-                                 "sweep.json", studies());
-  const std::string reference = sweep_csv(study, SweepOptions{1, true, false});
+                          "sweep.json", studies());
+  const std::string reference = sweep_csv(study, studies::SweepOptions{1, true, false});
   CHECK(reference.find("/hand/mass_kg: must be in") != std::string::npos);
   CHECK(reference.find("/forearm/equivalent_mass_kg: must be in") != std::string::npos);
-  CHECK(sweep_csv(study, SweepOptions{1, true, true}) == reference);
+  CHECK(sweep_csv(study, studies::SweepOptions{1, true, true}) == reference);
 }
 
-std::string batch_output(const std::string& csv, const BatchOptions& options) {
+std::string batch_output(const std::string& csv, const studies::BatchOptions& options) {
   std::istringstream in(csv);
   std::ostringstream out;
-  run_batch(in, "catalogue.csv", options, out);
+  studies::run_batch(in, "catalogue.csv", options, out);
   return out.str();
 }
 
@@ -315,11 +317,11 @@ TEST_CASE("A compiled batch writes the rows and error rows of the batch that rea
                                "swingweight_kg_cm2": 320}, "frame": {"cor": 0.8}})",
         R"({"name": "base", "implement": {"length_in": 27, "mass_g": 305, "balance_pts_hl": 4,
                                "swingweight_kg_cm2": 320}, "forearm": {"mass_kg": 1.2}})"}) {
-    for (const Format format : {Format::kCsv, Format::kJson}) {
-      INFO(base << (format == Format::kCsv ? " to CSV" : " to JSON"));
-      BatchOptions options;
-      options.input = CatalogueFormat::kCsv;
-      options.base = Json::parse(base);
+    for (const io::Format format : {io::Format::kCsv, io::Format::kJson}) {
+      INFO(base << (format == io::Format::kCsv ? " to CSV" : " to JSON"));
+      studies::BatchOptions options;
+      options.input = studies::CatalogueFormat::kCsv;
+      options.base = io::Json::parse(base);
       options.format = format;
       options.compiled = false;
       const std::string reference = batch_output(catalogue, options);
@@ -337,9 +339,9 @@ TEST_CASE("A column the base's implement form does not have is the header's erro
   // The columns describe specs; a base given by head/handle ratio has no such keys.
   const std::string catalogue = "name,implement.balance_cm\na,32\n";
   for (const bool compiled : {false, true}) {
-    BatchOptions options;
-    options.input = CatalogueFormat::kCsv;
-    options.base = Json::parse(
+    studies::BatchOptions options;
+    options.input = studies::CatalogueFormat::kCsv;
+    options.base = io::Json::parse(
         R"({"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8}})");
     options.compiled = compiled;
     CHECK_THROWS_WITH(
@@ -354,9 +356,9 @@ TEST_CASE("A column no binding sets leaves its rows to the JSON path with the sa
       "a,500,0.4,\n"
       "b,,0.45,\n"
       "c,,0.5,0.9\n";
-  BatchOptions options;
-  options.input = CatalogueFormat::kCsv;
-  options.base = Json::parse(
+  studies::BatchOptions options;
+  options.input = studies::CatalogueFormat::kCsv;
+  options.base = io::Json::parse(
       R"({"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8}})");
   options.compiled = false;
   const std::string reference = batch_output(catalogue, options);
@@ -369,12 +371,12 @@ TEST_CASE("An optimisation's compiled evaluations equal the JSON path's, at good
        {"1-lowest-wrist-force-table1-ranges.json", "2-lowest-wrist-force-fixed-feel.json",
         "3a-cop-on-node-table1-racquet.json", "4-robust-lowest-worst-wrist-force.json"}) {
     INFO(name);
-    Study study = load_study(studies() + name);
-    REQUIRE(compiled_for_variables(study));
-    const Problem compiled = make_problem(study);
+    studies::Study study = studies::load_study(studies() + name);
+    REQUIRE(studies::compiled_for_variables(study));
+    const optimizer::Problem compiled = make_problem(study);
     const std::shared_ptr<const CompiledDesign> kept = study.compiled;
     study.compiled.reset();
-    const Problem reference = make_problem(study);
+    const optimizer::Problem reference = make_problem(study);
     study.compiled = kept;
     const std::size_t n = compiled.start.size();
     for (const double t : {0.0, 0.3, 1.0, -0.5, 2.0}) {
@@ -402,12 +404,13 @@ TEST_CASE("The report's start and best outputs, kept from the search, are a fres
        {"1-lowest-wrist-force-table1-ranges.json", "2-lowest-wrist-force-fixed-feel.json",
         "3a-cop-on-node-table1-racquet.json", "4-robust-lowest-worst-wrist-force.json"}) {
     INFO(name);
-    const Study study = load_study(studies() + name);
-    const OptimizationResult r = run_optimization(study);
+    const studies::Study study = studies::load_study(studies() + name);
+    const studies::OptimizationResult r = run_optimization(study);
     REQUIRE(r.start_outputs);
     REQUIRE(r.best_outputs);
-    const Evaluation start = evaluate_in(study, r.start), best = evaluate_in(study, r.best);
-    for (const OutputSpec& spec : output_specs()) {
+    const Evaluation start = studies::evaluate_in(study, r.start),
+                     best = evaluate_in(study, r.best);
+    for (const io::OutputSpec& spec : io::output_specs()) {
       INFO(spec.name);
       const auto same = [&](const Evaluation& a, const Evaluation& b) {
         const std::optional<double> va = spec.value(a), vb = spec.value(b);
@@ -420,22 +423,22 @@ TEST_CASE("The report's start and best outputs, kept from the search, are a fres
 }
 
 }  // namespace
-}  // namespace sweetspot::io
+}  // namespace sweetspot::studies
 
-namespace sweetspot::io {
+namespace sweetspot::studies {
 namespace {
 
 // The outputs of evaluate --batch's first row, in CSV or JSON Lines.
-std::string first_row_outputs(const std::string& csv, const char* base, Format format,
+std::string first_row_outputs(const std::string& csv, const char* base, io::Format format,
                               bool compiled) {
-  BatchOptions options;
-  options.input = CatalogueFormat::kCsv;
-  options.base = Json::parse(base);
+  studies::BatchOptions options;
+  options.input = studies::CatalogueFormat::kCsv;
+  options.base = io::Json::parse(base);
   options.format = format;
   options.compiled = compiled;
   const std::string out = batch_output(csv, options);
-  if (format == Format::kJson) {
-    const Json row = Json::parse(out.substr(0, out.find('\n')));
+  if (format == io::Format::kJson) {
+    const io::Json row = io::Json::parse(out.substr(0, out.find('\n')));
     return row.at("outputs").dump();
   }
   const std::size_t second = out.find('\n') + 1;
@@ -454,26 +457,26 @@ TEST_CASE(
           "point_masses": [{"clock": 12, "mass_g": 3}, {"clock": [3, 9], "mass_g": 2},
                            {"clock": "handle", "mass_g": 10}]},
           "frame": {"cor": 0.8}})";
-  const Json base = Json::parse(kBase);
-  const DesignDescription description = describe_design(base, "tape.json");
+  const io::Json base = io::Json::parse(kBase);
+  const io::DesignDescription description = io::describe_design(base, "tape.json");
   const double frame_mass =
-      read_design(base, "tape.json").design.implement.mass_properties().mass_kg;
+      io::read_design(base, "tape.json").design.implement.mass_properties().mass_kg;
   for (std::size_t n = 0; n < 3; ++n) {
     INFO("entry " << n);
     const std::string pointer = "/implement/point_masses/" + std::to_string(n) + "/mass_g";
     // The file with entry n at 20 g: the oracle.
-    Json changed = base;
-    changed[Json::json_pointer(pointer)] = 20.0;
-    const DesignFile file = read_design(changed, "tape.json");
+    io::Json changed = base;
+    changed[io::Json::json_pointer(pointer)] = 20.0;
+    const io::DesignFile file = io::read_design(changed, "tape.json");
     // The entry's mass is each piece's: the pair adds 2 x 18 g, the others 17 g and 10 g.
     const double added[] = {0.017, 0.036, 0.010};
     CHECK(file.design.implement.mass_properties().mass_kg - frame_mass ==
           Approx(added[n]).epsilon(1e-12));
     // A study variable or sweep axis (the binding).
     const std::vector<std::string> pointers{pointer};
-    const auto compiled = CompiledDesign::compile(description, pointers);
+    const auto compiled = studies::CompiledDesign::compile(description, pointers);
     REQUIRE(compiled);
-    BoundDesign bound(*compiled);
+    studies::BoundDesign bound(*compiled);
     const double value = 20.0;
     const Design* design = bound.at(std::span<const double>(&value, 1));
     REQUIRE(design);
@@ -481,14 +484,14 @@ TEST_CASE(
     // Catalogue columns: the compiled CSV path, the JSON path, and JSON Lines.
     const std::string csv =
         "name,implement.point_masses." + std::to_string(n) + ".mass_g\nrow,20\n";
-    const std::string reference = first_row_outputs(csv, kBase, Format::kCsv, false);
-    CHECK(first_row_outputs(csv, kBase, Format::kCsv, true) == reference);
-    const Json lines = Json::parse(first_row_outputs(csv, kBase, Format::kJson, true));
+    const std::string reference = first_row_outputs(csv, kBase, io::Format::kCsv, false);
+    CHECK(first_row_outputs(csv, kBase, io::Format::kCsv, true) == reference);
+    const io::Json lines = io::Json::parse(first_row_outputs(csv, kBase, io::Format::kJson, true));
     const Evaluation e = evaluate(file.design, Fidelity::kRigid);
     for (const char* name : {"swingweight_kg_cm2", "mass_kg", "balance_from_butt_m"}) {
-      const double value = *find_output(name)->value(e);
+      const double value = *io::find_output(name)->value(e);
       CHECK(same_bits(lines.at(name).get<double>(), value));
-      CHECK(reference.find("," + exact(value) + ",") != std::string::npos);
+      CHECK(reference.find("," + io::exact(value) + ",") != std::string::npos);
     }
   }
 }
@@ -500,51 +503,53 @@ TEST_CASE(
       R"({"implement": {"length_in": 27, "mass_g": 300, "balance_cm": 32.5, "swingweight_kg_cm2": 320,
           "headsize_sq_in": 100, "point_masses": [{"clock": 12, "mass_g": 10}]},
           "frame": {"cor": 0.8}})";
-  const Json document = Json::parse(kDesign);
+  const io::Json document = io::Json::parse(kDesign);
   const std::vector<std::string> pointers{"/implement/length_in"};
-  const auto compiled = CompiledDesign::compile(describe_design(document, "d.json"), pointers);
+  const auto compiled =
+      studies::CompiledDesign::compile(io::describe_design(document, "d.json"), pointers);
   REQUIRE(compiled);
-  BoundDesign bound(*compiled);
+  studies::BoundDesign bound(*compiled);
   const double at27 = 27.0, at29 = 29.0;
   const double sw27 =
       evaluate(*bound.at(std::span<const double>(&at27, 1)), Fidelity::kRigid).swingweight_kg_m2;
   const Evaluation e29 = evaluate(*bound.at(std::span<const double>(&at29, 1)), Fidelity::kRigid);
-  Json written = document;
+  io::Json written = document;
   written["implement"]["length_in"] = 29;
-  const Evaluation file29 = evaluate(read_design(written, "d.json").design, Fidelity::kRigid);
+  const Evaluation file29 = evaluate(io::read_design(written, "d.json").design, Fidelity::kRigid);
   CHECK(e29.swingweight_kg_m2 != sw27);
   CHECK(same_bits(e29.swingweight_kg_m2, file29.swingweight_kg_m2));
   CHECK(same_bits(e29.impact_from_butt_m, file29.impact_from_butt_m));  // the centre of the strings
   CHECK(same_bits(e29.peak_wrist_force_N, file29.peak_wrist_force_N));
 }
 
-}  // namespace sweetspot::io
+}  // namespace sweetspot::studies
 
-namespace sweetspot::io {
+namespace sweetspot::studies {
 
 TEST_CASE("The binding sets only fields of the design's field table, in the table's spellings") {
   std::size_t bound = 0;
   for (const Case& c : cases()) {
-    const DesignDescription description = describe_design(Json::parse(c.design), "design.json");
-    for (const DesignField& field : design_fields()) {
+    const io::DesignDescription description =
+        io::describe_design(io::Json::parse(c.design), "design.json");
+    for (const io::DesignField& field : io::design_fields()) {
       std::string object(field.object);
       for (std::size_t at = object.find('N'); at != std::string::npos; at = object.find('N'))
         object.replace(at, 1, "0");
       for (const std::string& key : spellings_of(field)) {
         const std::string pointer = "/" + object + (object.empty() ? "" : "/") + key;
-        if (bind_field(description, pointer)) ++bound;
+        if (studies::bind_field(description, pointer)) ++bound;
       }
       // A unit the table does not give is never bound.
       for (const char* odd : {"_oz", "_ft", "_kmh"}) {
         const std::string pointer =
             "/" + object + (object.empty() ? "" : "/") + std::string(field.stem) + odd;
         INFO(pointer);
-        CHECK_FALSE(bind_field(description, pointer));
-        CHECK_FALSE(design_path_problem(pointer).empty());
+        CHECK_FALSE(studies::bind_field(description, pointer));
+        CHECK_FALSE(io::design_path_problem(pointer).empty());
       }
     }
   }
   CHECK(bound > 50);
 }
 
-}  // namespace sweetspot::io
+}  // namespace sweetspot::studies

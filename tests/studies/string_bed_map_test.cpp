@@ -12,7 +12,7 @@
 #include "sweetspot/evaluate.hpp"
 #include "sweetspot/string_bed.hpp"
 
-namespace sweetspot::io {
+namespace sweetspot::studies {
 namespace {
 
 constexpr double kRoundOff = 1e-12;
@@ -26,8 +26,8 @@ Design racquet() {
 
 bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
-StringBedMapOptions grid(int columns, int rows, Fidelity fidelity = Fidelity::kRigid) {
-  StringBedMapOptions options;
+studies::StringBedMapOptions grid(int columns, int rows, Fidelity fidelity = Fidelity::kRigid) {
+  studies::StringBedMapOptions options;
   options.columns = columns;
   options.rows = rows;
   options.fidelity = fidelity;
@@ -36,10 +36,10 @@ StringBedMapOptions grid(int columns, int rows, Fidelity fidelity = Fidelity::kR
 
 TEST_CASE("Every map point is the evaluation of an impact there") {
   Design d = racquet();
-  const StringBedMap map = string_bed_map(d, grid(9, 7));
+  const studies::StringBedMap map = string_bed_map(d, grid(9, 7));
   REQUIRE(map.points.size() == 63);
   int on_bed = 0;
-  for (const StringBedMapPoint& p : map.points) {
+  for (const studies::StringBedMapPoint& p : map.points) {
     if (!p.on_bed) continue;
     ++on_bed;
     Design at = d;
@@ -58,11 +58,11 @@ TEST_CASE("Every map point is the evaluation of an impact there") {
 TEST_CASE("A map of a symmetric head is symmetric in y, bit for bit") {
   Design d = racquet();
   d.strings = StringBed{};  // the duration from the tension varies over the bed too
-  const StringBedMap map = string_bed_map(d, grid(20, 15));
+  const studies::StringBedMap map = string_bed_map(d, grid(20, 15));
   for (int j = 0; j < map.rows; ++j) {
     for (int i = 0; i < map.columns; ++i) {
-      const StringBedMapPoint& a = map.points[j * map.columns + i];
-      const StringBedMapPoint& b = map.points[(map.rows - 1 - j) * map.columns + i];
+      const studies::StringBedMapPoint& a = map.points[j * map.columns + i];
+      const studies::StringBedMapPoint& b = map.points[(map.rows - 1 - j) * map.columns + i];
       CHECK(a.off_axis_m == -b.off_axis_m);
       CHECK(a.on_bed == b.on_bed);
       CHECK(same_bits(a.apparent_cor, b.apparent_cor));
@@ -72,13 +72,13 @@ TEST_CASE("A map of a symmetric head is symmetric in y, bit for bit") {
 }
 
 TEST_CASE("Power falls and shock is least along the hand-held COP's line") {
-  const StringBedMap map = string_bed_map(racquet(), grid(30, 31));
+  const studies::StringBedMap map = string_bed_map(racquet(), grid(30, 31));
   // The middle row is the long axis (31 rows: y = 0 exactly).
   const int mid = 15;
   CHECK(map.points[mid * 30].off_axis_m == 0.0);
   for (int i = 0; i < 30; ++i) {
-    const StringBedMapPoint& axis = map.points[mid * 30 + i];
-    const StringBedMapPoint& off = map.points[(mid + 3) * 30 + i];
+    const studies::StringBedMapPoint& axis = map.points[mid * 30 + i];
+    const studies::StringBedMapPoint& off = map.points[(mid + 3) * 30 + i];
     if (!off.on_bed) continue;
     CHECK(off.apparent_cor < axis.apparent_cor);
   }
@@ -88,9 +88,9 @@ TEST_CASE("Power falls and shock is least along the hand-held COP's line") {
 TEST_CASE("The feel map is the vibration energy of the response model at each point") {
   Design d = racquet();
   d.stiffness.fundamental_free_Hz = 150.0;
-  const StringBedMap map = string_bed_map(d, grid(8, 5, Fidelity::kModal));
+  const studies::StringBedMap map = string_bed_map(d, grid(8, 5, Fidelity::kModal));
   REQUIRE(map.node_free_from_butt_m);
-  for (const StringBedMapPoint& p : map.points) {
+  for (const studies::StringBedMapPoint& p : map.points) {
     if (!p.on_bed) continue;
     Design at = d;
     at.impact_from_butt_m = p.from_butt_m;
@@ -110,10 +110,10 @@ TEST_CASE("A collision map is evaluate() at collision fidelity at each point, bi
   d.strings = StringBed{};
   d.stiffness.fundamental_free_Hz = 150.0;
   d.cor_given = false;
-  const StringBedMap map = string_bed_map(d, grid(6, 5, Fidelity::kCollision));
+  const studies::StringBedMap map = string_bed_map(d, grid(6, 5, Fidelity::kCollision));
   REQUIRE(map.node_free_from_butt_m);
   int checked = 0;
-  for (const StringBedMapPoint& p : map.points) {
+  for (const studies::StringBedMapPoint& p : map.points) {
     if (!p.on_bed) continue;
     Design at = d;
     at.impact_from_butt_m = p.from_butt_m;
@@ -129,8 +129,8 @@ TEST_CASE("A collision map is evaluate() at collision fidelity at each point, bi
   // Symmetric head, symmetric map.
   for (int j = 0; j < map.rows; ++j) {
     for (int i = 0; i < map.columns; ++i) {
-      const StringBedMapPoint& a = map.points[j * map.columns + i];
-      const StringBedMapPoint& b = map.points[(map.rows - 1 - j) * map.columns + i];
+      const studies::StringBedMapPoint& a = map.points[j * map.columns + i];
+      const studies::StringBedMapPoint& b = map.points[(map.rows - 1 - j) * map.columns + i];
       if (a.on_bed) CHECK(same_bits(a.apparent_cor, b.apparent_cor));
     }
   }
@@ -141,20 +141,20 @@ TEST_CASE("A map shared among threads is the map of one thread, bit for bit, and
   d.strings = StringBed{};
   d.stiffness.fundamental_free_Hz = 150.0;
   d.cor_given = false;
-  const StringBedMap one = string_bed_map(d, grid(13, 9, Fidelity::kCollision));
+  const studies::StringBedMap one = string_bed_map(d, grid(13, 9, Fidelity::kCollision));
   for (const int threads : {2, 3, 16}) {
-    StringBedMapOptions options = grid(13, 9, Fidelity::kCollision);
+    studies::StringBedMapOptions options = grid(13, 9, Fidelity::kCollision);
     options.threads = threads;
     std::vector<std::size_t> done;
     options.progress = [&](std::size_t points, std::size_t total) {
       CHECK(total == 13u * 9u);
       done.push_back(points);
     };
-    const StringBedMap many = string_bed_map(d, options);
+    const studies::StringBedMap many = string_bed_map(d, options);
     REQUIRE(many.points.size() == one.points.size());
     for (std::size_t k = 0; k < one.points.size(); ++k) {
-      const StringBedMapPoint& a = one.points[k];
-      const StringBedMapPoint& b = many.points[k];
+      const studies::StringBedMapPoint& a = one.points[k];
+      const studies::StringBedMapPoint& b = many.points[k];
       REQUIRE(a.on_bed == b.on_bed);
       CHECK(same_bits(a.from_butt_m, b.from_butt_m));
       CHECK(same_bits(a.off_axis_m, b.off_axis_m));
@@ -179,11 +179,11 @@ TEST_CASE("The solved collision's power peaks between the hand-held COP and the 
   d.strings = StringBed{};
   d.stiffness.fundamental_free_Hz = 150.0;
   d.cor_given = false;
-  const StringBedMap map = string_bed_map(d, grid(30, 31, Fidelity::kCollision));
+  const studies::StringBedMap map = string_bed_map(d, grid(30, 31, Fidelity::kCollision));
   const int mid = 15;
   int best = -1;
   for (int i = 0; i < 30; ++i) {
-    const StringBedMapPoint& p = map.points[mid * 30 + i];
+    const studies::StringBedMapPoint& p = map.points[mid * 30 + i];
     if (p.on_bed && (best < 0 || p.apparent_cor > map.points[mid * 30 + best].apparent_cor))
       best = i;
   }
@@ -201,10 +201,11 @@ TEST_CASE("The solved collision's power peaks between the hand-held COP and the 
 
 TEST_CASE("A map needs the head or a twistweight, and a grid of at least 2 x 2") {
   Design d{Implement::paper_racquet(0.6858, 0.32, 1.0)};
-  CHECK_THROWS_WITH(string_bed_map(d),
+  CHECK_THROWS_WITH(studies::string_bed_map(d),
                     Catch::StartsWith("implement: ") && Catch::Contains("headsize_sq_in"));
-  CHECK_THROWS_WITH(string_bed_map(racquet(), grid(1, 50)), Catch::StartsWith("--columns"));
+  CHECK_THROWS_WITH(studies::string_bed_map(racquet(), grid(1, 50)),
+                    Catch::StartsWith("--columns"));
 }
 
 }  // namespace
-}  // namespace sweetspot::io
+}  // namespace sweetspot::studies

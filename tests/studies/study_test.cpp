@@ -20,13 +20,13 @@
 #include "studies/sweep.hpp"
 #include "sweetspot/roots.hpp"
 
-namespace sweetspot::io {
+namespace sweetspot::studies {
 namespace {
 
 std::string studies() { return std::string(SWEETSPOT_SOURCE_DIR) + "/designs/studies/"; }
 
-double objective_at(const Study& study, std::vector<double> x) {
-  return objective_of(study, design_at(study, x));
+double objective_at(const studies::Study& study, std::vector<double> x) {
+  return studies::objective_of(study, studies::design_at(study, x));
 }
 
 // The optimizer may beat a grid (it is continuous) but never lose to it by
@@ -36,17 +36,17 @@ constexpr double kBeatsGridTolerance = 1e-6;
 // Brute force: the best objective over a full grid of `points` per variable,
 // keeping only points that satisfy `feasible`.
 template <class Feasible>
-double grid_minimum(const Study& study, int points, Feasible&& feasible) {
+double grid_minimum(const studies::Study& study, int points, Feasible&& feasible) {
   const std::size_t n = study.variables.size();
   std::vector<int> index(n, 0);
   double best = std::numeric_limits<double>::infinity();
   while (true) {
     std::vector<double> x(n);
     for (std::size_t i = 0; i < n; ++i) {
-      const StudyVariable& v = study.variables[i];
+      const studies::StudyVariable& v = study.variables[i];
       x[i] = v.min + (v.max - v.min) * index[i] / (points - 1);
     }
-    const DesignFile d = design_at(study, x);
+    const io::DesignFile d = design_at(study, x);
     if (feasible(d)) best = std::min(best, objective_of(study, d));
     std::size_t i = 0;
     while (i < n && ++index[i] == points) index[i++] = 0;
@@ -56,9 +56,10 @@ double grid_minimum(const Study& study, int points, Feasible&& feasible) {
 }
 
 TEST_CASE("Study 1: the optimizer agrees with a 5^6 grid and the paper's bottom row of Table I") {
-  const Study study = load_study(studies() + "1-lowest-wrist-force-table1-ranges.json");
-  const OptimizationResult r = run_optimization(study);
-  const double grid = grid_minimum(study, 5, [](const DesignFile&) { return true; });
+  const studies::Study study =
+      studies::load_study(studies() + "1-lowest-wrist-force-table1-ranges.json");
+  const studies::OptimizationResult r = run_optimization(study);
+  const double grid = grid_minimum(study, 5, [](const io::DesignFile&) { return true; });
   CHECK(r.summary.objective <= grid * (1 + kBeatsGridTolerance));
   // The optimum is a corner of the box, which the grid contains.
   CHECK(r.summary.objective == Approx(grid).epsilon(kBeatsGridTolerance));
@@ -67,18 +68,19 @@ TEST_CASE("Study 1: the optimizer agrees with a 5^6 grid and the paper's bottom 
 }
 
 TEST_CASE("Study 1: every variable sits on the bound its derivative points to (KKT)") {
-  const Study study = load_study(studies() + "1-lowest-wrist-force-table1-ranges.json");
-  const OptimizationResult r = run_optimization(study);
-  const Problem problem = make_problem(study);
+  const studies::Study study =
+      studies::load_study(studies() + "1-lowest-wrist-force-table1-ranges.json");
+  const studies::OptimizationResult r = run_optimization(study);
+  const optimizer::Problem problem = make_problem(study);
   std::vector<double> grad(r.summary.x.size());
-  difference_gradient(
+  optimizer::difference_gradient(
       [&](std::span<const double> x) {
         return objective_at(study, {x.begin(), x.end()});
       },
       r.summary.x, problem.lower, problem.upper, 1e-6, grad);
   for (std::size_t i = 0; i < grad.size(); ++i) {
     INFO(study.variables[i].pointer << ": gradient " << grad[i]);
-    const StudyVariable& v = study.variables[i];
+    const studies::StudyVariable& v = study.variables[i];
     const double slack = 1e-6 * (v.max - v.min);
     if (r.summary.x[i] <= v.min + slack)
       CHECK(grad[i] >= 0.0);  // at the lower bound: f rises inward
@@ -90,11 +92,11 @@ TEST_CASE("Study 1: every variable sits on the bound its derivative points to (K
 }
 
 TEST_CASE("Study 1: an inactive constraint changes nothing") {
-  Study study = load_study(studies() + "1-lowest-wrist-force-table1-ranges.json");
-  const OptimizationResult free = run_optimization(study);
-  study.constraints.push_back(
-      StudyConstraint{find_output("swingweight_kg_cm2"), std::nullopt, 1000.0, std::nullopt, 1e-6});
-  const OptimizationResult constrained = run_optimization(study);
+  studies::Study study = studies::load_study(studies() + "1-lowest-wrist-force-table1-ranges.json");
+  const studies::OptimizationResult free = run_optimization(study);
+  study.constraints.push_back(studies::StudyConstraint{io::find_output("swingweight_kg_cm2"),
+                                                       std::nullopt, 1000.0, std::nullopt, 1e-6});
+  const studies::OptimizationResult constrained = run_optimization(study);
   CHECK(constrained.summary.objective ==
         Approx(free.summary.objective).epsilon(kBeatsGridTolerance));
   REQUIRE(constrained.constraints.size() == 1);
@@ -102,15 +104,16 @@ TEST_CASE("Study 1: an inactive constraint changes nothing") {
 }
 
 TEST_CASE("Study 2: fixed mass and swingweight, against a grid that solves the two equalities") {
-  const Study study = load_study(studies() + "2-lowest-wrist-force-fixed-feel.json");
-  const OptimizationResult r = run_optimization(study);
+  const studies::Study study =
+      studies::load_study(studies() + "2-lowest-wrist-force-fixed-feel.json");
+  const studies::OptimizationResult r = run_optimization(study);
   REQUIRE(r.summary.feasible);
   CHECK(r.constraints[0].value == Approx(0.305).epsilon(1e-6));
   CHECK(r.constraints[1].value == Approx(320.0).epsilon(1e-6));
   // Brute force over (ratio, tape position); the total mass fixes the frame
   // mass from the tape mass, and the swingweight then fixes the tape mass.
-  const StudyVariable& ratio = study.variables[1];
-  const StudyVariable& position = study.variables[2];
+  const studies::StudyVariable& ratio = study.variables[1];
+  const studies::StudyVariable& position = study.variables[2];
   constexpr int kPoints = 41;
   double best = std::numeric_limits<double>::infinity();
   for (int i = 0; i < kPoints; ++i) {
@@ -119,8 +122,8 @@ TEST_CASE("Study 2: fixed mass and swingweight, against a grid that solves the t
       const double p = position.min + (position.max - position.min) * j / (kPoints - 1);
       const auto x_for = [&](double tape) { return std::vector<double>{0.305 - tape, q, p, tape}; };
       const auto swingweight_gap = [&](double tape) {
-        return *find_output("swingweight_kg_cm2")
-                    ->value(evaluate_in(study, design_at(study, x_for(tape)))) -
+        return *io::find_output("swingweight_kg_cm2")
+                    ->value(studies::evaluate_in(study, studies::design_at(study, x_for(tape)))) -
                320.0;
       };
       const auto tape =
@@ -137,8 +140,8 @@ TEST_CASE("Study 2: fixed mass and swingweight, against a grid that solves the t
 }
 
 TEST_CASE("Study 2: the same optimum from several seeds") {
-  Study study = load_study(studies() + "2-lowest-wrist-force-fixed-feel.json");
-  const double reference = run_optimization(study).summary.objective;
+  studies::Study study = studies::load_study(studies() + "2-lowest-wrist-force-fixed-feel.json");
+  const double reference = studies::run_optimization(study).summary.objective;
   for (const unsigned long seed : {2ul, 17ul, 123ul}) {
     study.options.seed = seed;
     CHECK(run_optimization(study).summary.objective == Approx(reference).epsilon(1e-6));
@@ -150,21 +153,21 @@ TEST_CASE(
   for (const char* name :
        {"3a-cop-on-node-table1-racquet.json", "3b-cop-on-node-paper-beam.json"}) {
     INFO(name);
-    const Study study = load_study(studies() + name);
+    const studies::Study study = studies::load_study(studies() + name);
     CHECK(study.fidelity == Fidelity::kModal);
-    const OptimizationResult r = run_optimization(study);
-    const double grid = grid_minimum(study, 5, [](const DesignFile&) { return true; });
+    const studies::OptimizationResult r = run_optimization(study);
+    const double grid = grid_minimum(study, 5, [](const io::DesignFile&) { return true; });
     CHECK(r.summary.objective <= grid * (1 + kBeatsGridTolerance));
     CHECK(r.summary.objective == Approx(grid).epsilon(1e-4));
   }
 }
 
 TEST_CASE("Study 4: the robust optimum against a grid, and its swingweight limit is active") {
-  Study study = load_study(studies() + "4-robust-lowest-worst-wrist-force.json");
-  const OptimizationResult r = run_optimization(study);
+  studies::Study study = studies::load_study(studies() + "4-robust-lowest-worst-wrist-force.json");
+  const studies::OptimizationResult r = run_optimization(study);
   REQUIRE(r.summary.feasible);
-  const double grid = grid_minimum(study, 61, [&](const DesignFile& d) {
-    return *find_output("swingweight_kg_cm2")->value(evaluate(d.design)) <= 330.0;
+  const double grid = grid_minimum(study, 61, [&](const io::DesignFile& d) {
+    return *io::find_output("swingweight_kg_cm2")->value(evaluate(d.design)) <= 330.0;
   });
   CHECK(r.summary.objective <= grid * (1 + kBeatsGridTolerance));
   // On a 61 x 61 grid the constraint boundary is resolved to about 1/60 of a range.
@@ -173,30 +176,32 @@ TEST_CASE("Study 4: the robust optimum against a grid, and its swingweight limit
   CHECK(r.constraints[0].active);
   // Active means binding: without it the worst-case force falls further.
   study.constraints.clear();
-  CHECK(run_optimization(study).summary.objective < r.summary.objective * (1 - 1e-3));
+  CHECK(studies::run_optimization(study).summary.objective < r.summary.objective * (1 - 1e-3));
 }
 
 TEST_CASE("The worst case over impacts is the largest of the per-impact values") {
-  const Study study = load_study(studies() + "4-robust-lowest-worst-wrist-force.json");
-  const DesignFile d = design_at(study, std::vector<double>{0.3, 1.0});
+  const studies::Study study =
+      studies::load_study(studies() + "4-robust-lowest-worst-wrist-force.json");
+  const io::DesignFile d = studies::design_at(study, std::vector<double>{0.3, 1.0});
   double worst = 0.0;
   for (int k = 0; k < 13; ++k) {
     Design at = d.design;
     at.impact_from_butt_m = at.implement.length_m() - (0.10 + 0.12 * k / 12);
     worst = std::max(worst, evaluate(at).peak_wrist_force_N);
   }
-  CHECK(objective_of(study, d) == worst);
+  CHECK(studies::objective_of(study, d) == worst);
 }
 
 TEST_CASE("Study gradients agree with a wide-step Richardson central difference") {
-  const Study study = load_study(studies() + "2-lowest-wrist-force-fixed-feel.json");
-  const Problem problem = make_problem(study);
+  const studies::Study study =
+      studies::load_study(studies() + "2-lowest-wrist-force-fixed-feel.json");
+  const optimizer::Problem problem = make_problem(study);
   std::vector<double> x{0.29, 1.05, 0.6, 0.01};
   std::vector<double> grad(4);
   const auto f = [&](std::span<const double> y) {
     return objective_at(study, {y.begin(), y.end()});
   };
-  difference_gradient(f, x, problem.lower, problem.upper, 1e-6, grad);
+  optimizer::difference_gradient(f, x, problem.lower, problem.upper, 1e-6, grad);
   for (std::size_t i = 0; i < 4; ++i) {
     const double h = 1e-3 * (problem.upper[i] - problem.lower[i]);
     const auto central = [&](double step) {
@@ -214,8 +219,8 @@ TEST_CASE("Study gradients agree with a wide-step Richardson central difference"
 TEST_CASE("Bad studies are refused with the study's JSON path") {
   const auto error_of = [](const char* text) {
     try {
-      read_study(nlohmann::json::parse(text), "study.json", studies());
-    } catch (const InputError& e) {
+      studies::read_study(nlohmann::json::parse(text), "study.json", studies());
+    } catch (const io::InputError& e) {
       return e.pointer() + ": " + e.detail();
     }
     return std::string("(no error)");
@@ -243,61 +248,62 @@ TEST_CASE("Bad studies are refused with the study's JSON path") {
 }
 
 TEST_CASE("An infeasible study says so and returns the least violating design") {
-  Study study = load_study(studies() + "4-robust-lowest-worst-wrist-force.json");
+  studies::Study study = studies::load_study(studies() + "4-robust-lowest-worst-wrist-force.json");
   study.constraints[0].max = 100.0;  // no racquet in the box swings that lightly
-  const OptimizationResult r = run_optimization(study);
+  const studies::OptimizationResult r = run_optimization(study);
   CHECK_FALSE(r.summary.feasible);
-  CHECK(r.outcome == Outcome::kInfeasible);
+  CHECK(r.outcome == studies::Outcome::kInfeasible);
   REQUIRE(r.constraints.size() == 1);
-  const ConstraintReport& c = r.constraints[0];
+  const studies::ConstraintReport& c = r.constraints[0];
   CHECK_FALSE(c.satisfied);
   REQUIRE(c.value.has_value());
   CHECK(c.limit == 100.0);
-  CHECK(c.tolerance == kDefaultConstraintTolerance * 100.0);
+  CHECK(c.tolerance == studies::kDefaultConstraintTolerance * 100.0);
   CHECK(c.violation == *c.value - 100.0);
   // The least violating design swings as lightly as the box allows: the
   // lightest frame with its mass towards the handle, a corner of the box.
   CHECK(*c.value ==
-        Approx(*find_output("swingweight_kg_cm2")
-                    ->value(evaluate_in(study, design_at(study, std::vector<double>{0.25, 0.8}))))
+        Approx(*io::find_output("swingweight_kg_cm2")
+                    ->value(studies::evaluate_in(
+                        study, studies::design_at(study, std::vector<double>{0.25, 0.8}))))
             .epsilon(1e-9));
 }
 
 // A study whose one variable cannot change the swingweight (the ball's
 // speed), so the swingweight is the design's own and the judgement of a
 // constraint on it is exact arithmetic.
-Study study_with_swingweight_limit(const std::string& constraint) {
-  return read_study(nlohmann::json::parse(R"({"design": "../table1/row1.json",
+studies::Study study_with_swingweight_limit(const std::string& constraint) {
+  return studies::read_study(nlohmann::json::parse(R"({"design": "../table1/row1.json",
       "variables": [{"path": "/ball/speed_m_s", "min": 40, "max": 60}],
       "objective": {"output": "peak_wrist_force_N"},
       "constraints": [)" + constraint + "]}"),
-                    "study.json", studies());
+                             "study.json", studies());
 }
 
 TEST_CASE("A constraint missed by less than its default tolerance, 1e-6 of the limit, is met") {
   const double swingweight =
-      *find_output("swingweight_kg_cm2")
-           ->value(evaluate(load_design(studies() + "../table1/row1.json").design));
+      *io::find_output("swingweight_kg_cm2")
+           ->value(evaluate(io::load_design(studies() + "../table1/row1.json").design));
   const auto run = [&](double limit, const std::string& extra) {
-    return run_optimization(
+    return studies::run_optimization(
         study_with_swingweight_limit(R"({"output": "swingweight_kg_cm2", "min": )" +
                                      fmt::format("{:.17g}", limit) + extra + "}"));
   };
   // Short of the limit by 3e-8 of it (the "309.99999 >= 310" of the issue): met.
-  const OptimizationResult within = run(swingweight * (1 + 3e-8), "");
+  const studies::OptimizationResult within = run(swingweight * (1 + 3e-8), "");
   REQUIRE(within.constraints.size() == 1);
   CHECK(within.constraints[0].limit == swingweight * (1 + 3e-8));
   CHECK(within.constraints[0].tolerance == 1e-6 * within.constraints[0].limit);
   CHECK(within.constraints[0].violation > 0.0);
   CHECK(within.constraints[0].satisfied);
-  CHECK(within.outcome == Outcome::kOptimum);
+  CHECK(within.outcome == studies::Outcome::kOptimum);
   CHECK(within.summary.feasible);
   // Short by 2e-6 of it: twice the tolerance, violated.
-  const OptimizationResult beyond = run(swingweight * (1 + 2e-6), "");
+  const studies::OptimizationResult beyond = run(swingweight * (1 + 2e-6), "");
   CHECK_FALSE(beyond.constraints[0].satisfied);
-  CHECK(beyond.outcome == Outcome::kInfeasible);
+  CHECK(beyond.outcome == studies::Outcome::kInfeasible);
   // The study's own tolerance overrides the default.
-  const OptimizationResult loose = run(swingweight * (1 + 2e-6), R"(, "tolerance": 0.01)");
+  const studies::OptimizationResult loose = run(swingweight * (1 + 2e-6), R"(, "tolerance": 0.01)");
   CHECK(loose.constraints[0].tolerance == 0.01);
   CHECK(loose.constraints[0].satisfied);
 }
@@ -306,16 +312,17 @@ TEST_CASE(
     "An objective with no value anywhere is reported as no valid design, never as the penalty") {
   // A uniform beam hit at its centre of mass turns about no axis: the free
   // rotation axis is at infinity whatever the ball's speed.
-  const Study study = read_study(nlohmann::json::parse(R"({
+  const studies::Study study = studies::read_study(nlohmann::json::parse(R"({
       "design": {"implement": {"sections": [{"length_m": 0.7, "mass_kg": 0.25}]}, "impact": {"from_butt_m": 0.35},
                  "ball": {"speed_m_s": 50}},
       "variables": [{"path": "/ball/speed_m_s", "min": 40, "max": 60}],
       "objective": {"output": "rotation_axis_free_from_butt_m"}})"),
-                                 "study.json", studies());
-  REQUIRE_FALSE(find_output("rotation_axis_free_from_butt_m")
-                    ->value(evaluate_in(study, design_at(study, std::vector<double>{50}))));
-  const OptimizationResult r = run_optimization(study);
-  CHECK(r.outcome == Outcome::kNoValue);
+                                                   "study.json", studies());
+  REQUIRE_FALSE(
+      io::find_output("rotation_axis_free_from_butt_m")
+          ->value(studies::evaluate_in(study, studies::design_at(study, std::vector<double>{50}))));
+  const studies::OptimizationResult r = run_optimization(study);
+  CHECK(r.outcome == studies::Outcome::kNoValue);
   CHECK_THAT(r.no_value, Catch::Contains("rotation_axis_free_from_butt_m"));
   CHECK_FALSE(r.start_objective.has_value());
 }
@@ -333,23 +340,23 @@ TEST_CASE(
        {"1-lowest-wrist-force-table1-ranges.json", "2-lowest-wrist-force-fixed-feel.json",
         "3a-cop-on-node-table1-racquet.json", "3b-cop-on-node-paper-beam.json",
         "4-robust-lowest-worst-wrist-force.json"}) {
-    Study study = load_study(studies() + name);
-    const Problem problem = make_problem(study);
+    studies::Study study = studies::load_study(studies() + name);
+    const optimizer::Problem problem = make_problem(study);
     const bool equality =
         std::any_of(study.constraints.begin(), study.constraints.end(),
-                    [](const StudyConstraint& c) { return c.equals.has_value(); });
+                    [](const studies::StudyConstraint& c) { return c.equals.has_value(); });
     std::vector<std::string> singles{"LN_COBYLA"};
     if (problem.smooth) singles.push_back("LD_SLSQP");
     if (problem.smooth && !equality) singles.push_back("LD_MMA");
     if (study.constraints.empty()) singles.push_back("LN_BOBYQA");
     study.options.algorithm = "auto";
-    const OptimizationResult automatic = run_optimization(study);
+    const studies::OptimizationResult automatic = run_optimization(study);
     REQUIRE(automatic.summary.feasible);
-    std::vector<std::pair<std::string, OptimizationResult>> runs;
+    std::vector<std::pair<std::string, studies::OptimizationResult>> runs;
     double best = automatic.summary.objective;
     for (const std::string& algorithm : singles) {
       study.options.algorithm = algorithm;
-      runs.emplace_back(algorithm, run_optimization(study));
+      runs.emplace_back(algorithm, studies::run_optimization(study));
       if (runs.back().second.summary.feasible)
         best = std::min(best, runs.back().second.summary.objective);
     }
@@ -372,13 +379,14 @@ TEST_CASE(
 TEST_CASE("Sweep values outside the variable's bounds are refused with their JSON path") {
   const auto error_of = [](const char* values) {
     try {
-      read_study(nlohmann::json::parse(
-                     std::string(R"({"design": "../table1/row1.json", "outputs": ["mass_kg"],
+      studies::read_study(
+          nlohmann::json::parse(
+              std::string(R"({"design": "../table1/row1.json", "outputs": ["mass_kg"],
           "variables": [{"path": "/frame/cor", "min": 0.6, "max": 0.8},
                         {"path": "/hand/mass_kg", "min": 0.3, "max": 0.6, "values": )") +
-                     values + "}]}"),
-                 "study.json", studies());
-    } catch (const InputError& e) {
+              values + "}]}"),
+          "study.json", studies());
+    } catch (const io::InputError& e) {
       return e.pointer() + ": " + e.detail();
     }
     return std::string("(no error)");
@@ -396,12 +404,12 @@ TEST_CASE(
     "An impact spread off the implement is refused naming its end and the implement's length") {
   const auto error_of = [](const char* range) {
     try {
-      read_study(nlohmann::json::parse(std::string(R"({"design": "../table1/row1.json",
+      studies::read_study(nlohmann::json::parse(std::string(R"({"design": "../table1/row1.json",
           "variables": [{"path": "/implement/mass_kg", "min": 0.25, "max": 0.4}],
           "objective": {"output": "peak_wrist_force_N", "over_impacts": {"from_tip_m": )") +
-                                       range + "}}}"),
-                 "study.json", studies());
-    } catch (const InputError& e) {
+                                                range + "}}}"),
+                          "study.json", studies());
+    } catch (const io::InputError& e) {
       return e.pointer() + ": " + e.detail();
     }
     return std::string("(no error)");
@@ -416,12 +424,12 @@ TEST_CASE(
 TEST_CASE("Optimizer tolerances are refused under their own keys") {
   const auto error_of = [](const char* tolerances) {
     try {
-      read_study(nlohmann::json::parse(std::string(R"({"design": "../table1/row1.json",
+      studies::read_study(nlohmann::json::parse(std::string(R"({"design": "../table1/row1.json",
           "variables": [{"path": "/implement/mass_kg", "min": 0.25, "max": 0.4}],
           "objective": {"output": "peak_wrist_force_N"}, "tolerances": )") +
-                                       tolerances + "}"),
-                 "study.json", studies());
-    } catch (const InputError& e) {
+                                                tolerances + "}"),
+                          "study.json", studies());
+    } catch (const io::InputError& e) {
       return e.pointer() + ": " + e.detail();
     }
     return std::string("(no error)");
@@ -457,22 +465,24 @@ TEST_CASE(
           "variables": [{"path": "/hand/mass_kg", "min": 0, "max": 0.6, "points": 25},
                         {"path": "/impact/from_tip_m", "values": [0.05, 0.8]}]})"};
   for (const char* text : texts) {
-    const Study study = read_study(nlohmann::json::parse(text), "sweep.json", studies());
-    const auto sweep = [&](SweepOptions options) {
+    const studies::Study study =
+        studies::read_study(nlohmann::json::parse(text), "sweep.json", studies());
+    const auto sweep = [&](studies::SweepOptions options) {
       std::ostringstream csv;
-      const std::vector<Plot> plots = run_sweep(
+      const std::vector<io::Plot> plots = studies::run_sweep(
           study, csv, [](std::size_t, std::size_t) {}, options);
       std::vector<std::vector<std::optional<double>>> y;
-      for (const Plot& plot : plots) {
-        for (const PlotSeries& series : plot.series) y.push_back(series.y);
+      for (const io::Plot& plot : plots) {
+        for (const io::PlotSeries& series : plot.series) y.push_back(series.y);
       }
       return std::pair{csv.str(), y};
     };
-    const auto reference = sweep(SweepOptions{1, false, false});
+    const auto reference = sweep(studies::SweepOptions{1, false, false});
     const bool has_failed_rows = reference.first.find("must be") != std::string::npos;
     CHECK(has_failed_rows == (text != texts[1]));  // the first and last grids reach bad points
-    for (const SweepOptions options :
-         {SweepOptions{1, true}, SweepOptions{3, true}, SweepOptions{2, false}}) {
+    for (const studies::SweepOptions options :
+         {studies::SweepOptions{1, true}, studies::SweepOptions{3, true},
+          studies::SweepOptions{2, false}}) {
       INFO(text << " with " << options.threads << " threads, sharing " << options.share_rows);
       const auto result = sweep(options);
       CHECK(result.first == reference.first);
@@ -484,16 +494,16 @@ TEST_CASE(
 TEST_CASE("A variable in another unit than the design's varies the same quantity in that unit") {
   // The design gives the tension in N; the study varies it in lb (1 lb = 4.4482216152605 N).
   const auto study_over = [](const std::string& path) {
-    return read_study(nlohmann::json::parse(R"({"design": {"implement": {"length_m": 0.7,
+    return studies::read_study(nlohmann::json::parse(R"({"design": {"implement": {"length_m": 0.7,
         "mass_kg": 0.3, "head_to_handle_mass_ratio": 0.8}, "strings": {"tension_N": 230}},
         "variables": [{"path": ")" + path + R"(", "min": 1, "max": 500}],
         "objective": {"output": "peak_wrist_force_N"}})"),
-                      "study.json", studies());
+                               "study.json", studies());
   };
-  const Study in_lb = study_over("/strings/tension_lb");
-  const Study in_kg = study_over("/strings/tension_kg");
-  const Study in_N = study_over("/strings/tension_N");
-  const auto duration = [](const Study& study, double x) {
+  const studies::Study in_lb = study_over("/strings/tension_lb");
+  const studies::Study in_kg = study_over("/strings/tension_kg");
+  const studies::Study in_N = study_over("/strings/tension_N");
+  const auto duration = [](const studies::Study& study, double x) {
     return evaluate_in(study, design_at(study, std::vector<double>{x})).impact_duration_s;
   };
   CHECK(duration(in_lb, 50) == Approx(duration(in_N, 50 * 4.4482216152605)).epsilon(1e-12));
@@ -510,11 +520,12 @@ TEST_CASE("Study 7: lead tape for power with the solved collision in the loop, a
   // on a 41 x 41 grid of the same model; the optimiser, continuous, may beat it
   // by what the grid misses of the constraint boundary (1/40 of a range) but
   // must not lose to it.
-  const Study study = load_study(studies() + "7-lead-tape-for-power.json");
-  const OptimizationResult r = run_optimization(study);
+  const studies::Study study = studies::load_study(studies() + "7-lead-tape-for-power.json");
+  const studies::OptimizationResult r = run_optimization(study);
   REQUIRE(r.summary.feasible);
-  const double grid = grid_minimum(study, 41, [](const DesignFile& d) {
-    return *find_output("swingweight_kg_cm2")->value(evaluate(d.design, Fidelity::kRigid)) <= 335.0;
+  const double grid = grid_minimum(study, 41, [](const io::DesignFile& d) {
+    return *io::find_output("swingweight_kg_cm2")->value(evaluate(d.design, Fidelity::kRigid)) <=
+           335.0;
   });
   // Objectives in their minimised form: minus the rebound speed.
   CHECK(r.summary.objective <= grid + kBeatsGridTolerance * std::abs(grid));
@@ -524,19 +535,19 @@ TEST_CASE("Study 7: lead tape for power with the solved collision in the loop, a
 }
 
 }  // namespace
-}  // namespace sweetspot::io
+}  // namespace sweetspot::studies
 
-namespace sweetspot::io {
+namespace sweetspot::studies {
 
 TEST_CASE(
     "Sweep grids are the decimals they stand for: 0.1 to 0.5 in 5 points is 0.1, 0.2, "
     "0.3, 0.4, 0.5 exactly") {
-  const Study study = read_study(Json::parse(R"({
+  const studies::Study study = studies::read_study(io::Json::parse(R"({
     "design": {"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8}},
     "variables": [{"path": "/implement/mass_kg", "min": 0.1, "max": 0.5, "points": 5},
                   {"path": "/implement/length_m", "min": 0.6, "max": 0.7, "points": 11}],
     "outputs": ["mass_kg"]})"),
-                                 "grid.json", ".");
+                                                   "grid.json", ".");
   // lo + (hi - lo) i / (n - 1) in binary gives 0.30000000000000004 for the third.
   CHECK(0.1 + (0.5 - 0.1) * 2.0 / 4.0 != 0.3);
   CHECK(study.variables[0].values == std::vector<double>{0.1, 0.2, 0.3, 0.4, 0.5});
@@ -546,17 +557,17 @@ TEST_CASE(
 }
 
 TEST_CASE("A sweep path in another unit of a key the design gives sweeps that key") {
-  const Study study = read_study(Json::parse(R"({
+  const studies::Study study = studies::read_study(io::Json::parse(R"({
     "design": {"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8},
                "impact": {"from_tip_cm": 5}},
     "variables": [{"path": "/impact/from_tip_m", "min": 0.1, "max": 0.3, "points": 3}],
     "outputs": ["impact_from_tip_m"]})"),
-                                 "respell.json", ".");
+                                                   "respell.json", ".");
   // The design's 5 cm is outside [0.1, 0.3] m: the start is the middle.
   CHECK(study.variables[0].start == Approx(0.2));
   std::ostringstream csv;
-  run_sweep(
-      study, csv, [](std::size_t, std::size_t) {}, SweepOptions{1});
+  studies::run_sweep(
+      study, csv, [](std::size_t, std::size_t) {}, studies::SweepOptions{1});
   std::istringstream lines(csv.str());
   std::string line;
   std::getline(lines, line);
@@ -569,4 +580,4 @@ TEST_CASE("A sweep path in another unit of a key the design gives sweeps that ke
   }
 }
 
-}  // namespace sweetspot::io
+}  // namespace sweetspot::studies

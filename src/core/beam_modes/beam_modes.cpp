@@ -1,0 +1,256 @@
+// The public entry points of beam_modes.hpp. The solvers live beside this
+// file: segmentation (validation, segments), shapes (Krylov pieces, nodes),
+// transfer_matrix (exact), fe_mesh (elements, mesh, assembly), free_fe,
+// banded_pencil and hand_held (damped modes).
+#include "sweetspot/beam_modes.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "core/beam_modes/fe_mesh.hpp"
+#include "core/beam_modes/free_fe.hpp"
+#include "core/beam_modes/hand_held.hpp"
+#include "core/beam_modes/segmentation.hpp"
+#include "core/beam_modes/shapes.hpp"
+#include "core/beam_modes/transfer_matrix.hpp"
+#include "core/check.hpp"
+
+namespace sweetspot {
+
+using namespace beam_detail;
+using detail::format_number;
+
+TimoshenkoSection rectangular_timoshenko_section(double shear_modulus_Pa, double width_m,
+                                                 double thickness_m) {
+  detail::require_positive("shear_modulus_Pa", shear_modulus_Pa, "Pa");
+  detail::require_positive("width_m", width_m, "m");
+  detail::require_positive("thickness_m", thickness_m, "m");
+  return {kRectangularShearCoefficient * shear_modulus_Pa * width_m * thickness_m,
+          thickness_m / std::sqrt(12.0)};
+}
+
+std::string ModeOptions::validate() const {
+  auto bad = [](const std::string& name, const std::string& expected, double value) {
+    return name + ": must be " + expected + ", got " + format_number(value);
+  };
+  const int max_modes = method == Method::kExact ? kMaxExactModes : kMaxModes;
+  if (modes < 1 || modes > max_modes) {
+    return bad("modes", "in [1, " + std::to_string(max_modes) + "]", modes);
+  }
+  if (!(rel_tol >= kMinRelTol && rel_tol <= kMaxRelTol)) {
+    return bad("rel_tol",
+               "in [" + format_number(kMinRelTol) + ", " + format_number(kMaxRelTol) + "]",
+               rel_tol);
+  }
+  if (elements < 0 || elements > kMaxElements) {
+    return bad("elements", "in [0, " + std::to_string(kMaxElements) + "]", elements);
+  }
+  if (shape_samples < 0 || shape_samples == 1) {
+    return bad("shape_samples", "0 or >= 2", shape_samples);
+  }
+  if (theory == Theory::kTimoshenko) {
+    if (method != Method::kFiniteElement) {
+      return "theory: Timoshenko needs method kFiniteElement, got kExact";
+    }
+    for (std::size_t i = 0; i < timoshenko.size(); ++i) {
+      const TimoshenkoSection& t = timoshenko[i];
+      if (!(t.shear_stiffness_N > 0.0 && std::isfinite(t.shear_stiffness_N))) {
+        return bad(detail::indexed("timoshenko", i, "shear_stiffness_N"), "> 0 N",
+                   t.shear_stiffness_N);
+      }
+      if (!(t.radius_of_gyration_m >= 0.0 && std::isfinite(t.radius_of_gyration_m))) {
+        return bad(detail::indexed("timoshenko", i, "radius_of_gyration_m"), ">= 0 m",
+                   t.radius_of_gyration_m);
+      }
+    }
+  }
+  return {};
+}
+
+double mode_shape_at(const Mode& mode, double x_m) {
+  if (mode.shape.empty()) throw std::invalid_argument("mode: has no shape");
+  const double length = mode.shape.back().end_m;
+  const double eps = 1e-12 * length;
+  if (!(x_m >= -eps && x_m <= length + eps))
+    fail("x_m", "in [0, " + format_number(length) + "] m", x_m);
+  auto it = std::upper_bound(mode.shape.begin(), mode.shape.end(), x_m,
+                             [](double x, const ShapePiece& p) { return x < p.end_m; });
+  if (it == mode.shape.end()) --it;
+  return evaluate_piece(*it, std::clamp(x_m - it->start_m, 0.0, it->end_m - it->start_m));
+}
+
+ModalResult free_modes(const std::vector<Section>& sections,
+                       const std::vector<PointMass>& point_masses, const ModeOptions& options) {
+  const bool fe = options.method == ModeOptions::Method::kFiniteElement;
+  const double length = validated_length(sections, fe);
+  detail::validate_point_masses(point_masses, length);
+  validate_options(options, sections.size());
+  const Segmentation seg = segment(sections, point_masses, {}, timoshenko_of(options));
+  ModalResult result = fe ? fe_free_modes(seg, options) : exact_free_modes(seg, options);
+  fill_shape_table(result, length, options.shape_samples);
+  return result;
+}
+
+BeamMatrices assemble_beam_matrices(const std::vector<Section>& sections,
+                                    const std::vector<PointMass>& point_masses,
+                                    const ModeOptions& options,
+                                    const std::optional<HandCoupling>& hand) {
+  const double length = validated_length(sections, true);
+  detail::validate_point_masses(point_masses, length);
+  validate_options(options, sections.size());
+  if (hand) validate_hand(*hand, length);
+  const Segmentation seg = hand ? hand_segmentation(sections, point_masses, *hand, options)
+                                : segment(sections, point_masses, {}, timoshenko_of(options));
+  const Mesh mesh = build_mesh(seg, element_counts(seg, options), options);
+  const Assembled a = assemble(mesh, hand ? &*hand : nullptr);
+  BeamMatrices out;
+  out.node_positions_m = mesh.nodes_m;
+  out.size = static_cast<int>(a.K.rows());
+  auto row_major = [](const MatrixXd& m) {
+    std::vector<double> v(m.size());
+    Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
+        v.data(), m.rows(), m.cols()) = m;
+    return v;
+  };
+  out.stiffness = row_major(a.K);
+  out.mass = row_major(a.M);
+  out.damping = row_major(a.C);
+  return out;
+}
+
+namespace {
+
+// hand_held_modes(), or with `beam_fundamental_only` the first beam mode alone.
+ModalResult solve_hand_held(const std::vector<Section>& sections,
+                            const std::vector<PointMass>& point_masses, const HandCoupling& hand,
+                            const ModeOptions& options, bool beam_fundamental_only) {
+  const double length = validated_length(sections, true);
+  detail::validate_point_masses(point_masses, length);
+  validate_options(options, sections.size());
+  if (options.method != ModeOptions::Method::kFiniteElement) {
+    throw std::invalid_argument(
+        "options.method: the hand-held beam needs kFiniteElement, got kExact");
+  }
+  validate_hand(hand, length);
+
+  ModalResult result;
+  result.method = ModeOptions::Method::kFiniteElement;
+  result.theory = options.theory;
+  const Segmentation seg = hand_segmentation(sections, point_masses, hand, options);
+  const std::vector<int> counts = element_counts(seg, options);
+  const Mesh mesh = build_mesh(seg, counts, options);
+  result.elements_used = static_cast<int>(mesh.elements.size());  // after merge_tiny_elements
+  const Assembled a = assemble(mesh, &hand);
+
+  std::optional<DampedSpectrum> spectrum;
+  std::string how;
+  if (options.damped_solver == ModeOptions::DampedSolver::kRefined) {
+    const Mesh coarse = coarse_mesh(seg, options);
+    std::string why = "mesh no finer than the coarse one";
+    if (coarse.elements.size() < mesh.elements.size()) {
+      spectrum =
+          refined_damped_spectrum(mesh, a, hand, options, coarse, &why, beam_fundamental_only);
+    }
+    how = spectrum ? "quadratic eigenproblem refined from a " +
+                         std::to_string(coarse.elements.size()) + "-element state-space solve"
+                   : "dense state-space eigenproblem (refinement skipped: " + why + ")";
+  } else {
+    how = "dense state-space eigenproblem";
+  }
+  if (!spectrum) spectrum = dense_damped_spectrum(mesh, a, hand, options.modes);
+  for (const DampedPair& pair : spectrum->pairs) {
+    result.modes.push_back(damped_mode(mesh, a, pair.s, pair.q));
+  }
+  result.complete = static_cast<int>(result.modes.size()) == options.modes;
+  if (beam_fundamental_only) {
+    // The refinement may have shaped every mode (a coarse share near the
+    // line, or the dense solve): keep the first beam mode.
+    const auto beam = std::find_if(result.modes.begin(), result.modes.end(), [](const Mode& m) {
+      return m.hand_energy_fraction < kHandModeEnergyShare;
+    });
+    if (beam == result.modes.end()) {
+      // The coarse mesh called a mode the beam's that the fine one gives
+      // to the hand: ask the full solve, which shapes every mode.
+      ModalResult full = solve_hand_held(sections, point_masses, hand, options, false);
+      const auto found = std::find_if(full.modes.begin(), full.modes.end(), [](const Mode& m) {
+        return m.hand_energy_fraction < kHandModeEnergyShare;
+      });
+      std::vector<Mode> kept;
+      if (found != full.modes.end()) kept.push_back(std::move(*found));
+      full.complete = !kept.empty();
+      full.modes = std::move(kept);
+      full.shape_w.clear();
+      fill_shape_table(full, length, options.shape_samples);
+      return full;
+    }
+    std::vector<Mode> kept;
+    kept.push_back(std::move(*beam));
+    result.complete = true;
+    result.modes = std::move(kept);
+  }
+  result.message = "finite elements: " + std::to_string(result.elements_used) + " elements, " +
+                   how + "; " + std::to_string(spectrum->overdamped) +
+                   " overdamped (real) roots not reported";
+  fill_shape_table(result, length, options.shape_samples);
+  return result;
+}
+
+}  // namespace
+
+ModalResult hand_held_modes(const std::vector<Section>& sections,
+                            const std::vector<PointMass>& point_masses, const HandCoupling& hand,
+                            const ModeOptions& options) {
+  return solve_hand_held(sections, point_masses, hand, options, false);
+}
+
+ModalResult hand_held_beam_fundamental(const std::vector<Section>& sections,
+                                       const std::vector<PointMass>& point_masses,
+                                       const HandCoupling& hand, const ModeOptions& options) {
+  return solve_hand_held(sections, point_masses, hand, options, true);
+}
+
+HandCoupling calibrated_hand() {
+  HandCoupling hand;
+  hand.stiffness_N_m2 = kCalibratedGripStiffness_N_m2;
+  hand.damping_N_s_m2 = kCalibratedGripDamping_N_s_m2;
+  return hand;
+}
+
+std::vector<Section> scale_EI_to_fundamental(const std::vector<Section>& sections,
+                                             const std::vector<PointMass>& point_masses,
+                                             double f1_Hz, const ModeOptions& options) {
+  detail::require_positive("f1_Hz", f1_Hz, "Hz");
+  ModeOptions one = options;
+  one.modes = 1;
+  one.shape_samples = 0;
+  std::vector<Section> scaled = sections;
+  // Euler-Bernoulli: f ~ sqrt(EI) exactly, one step. Timoshenko: the shear
+  // stiffness does not scale, so repeat the step until f1 matches.
+  const int steps = options.theory == ModeOptions::Theory::kTimoshenko ? 30 : 1;
+  for (int i = 0; i < steps; ++i) {
+    const ModalResult r = free_modes(scaled, point_masses, one);
+    if (r.modes.empty()) throw std::invalid_argument("sections: no flexible mode found");
+    const double ratio = f1_Hz / r.modes[0].frequency_Hz;
+    for (Section& s : scaled) s.EI_N_m2 = *s.EI_N_m2 * ratio * ratio;
+    if (std::abs(ratio - 1.0) < 1e-13) break;
+  }
+  return scaled;
+}
+
+double uniform_EI_for_fundamental(const std::vector<Section>& sections,
+                                  const std::vector<PointMass>& point_masses, double f1_Hz) {
+  detail::require_positive("f1_Hz", f1_Hz, "Hz");
+  std::vector<Section> unit = sections;
+  for (Section& s : unit) s.EI_N_m2 = 1.0;
+  ModeOptions one;
+  one.modes = 1;
+  const ModalResult r = free_modes(unit, point_masses, one);
+  if (r.modes.empty()) throw std::invalid_argument("sections: no flexible mode found");
+  const double ratio = f1_Hz / r.modes[0].frequency_Hz;
+  return ratio * ratio;
+}
+
+}  // namespace sweetspot

@@ -1,0 +1,71 @@
+#include "core/check.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "sweetspot/implement.hpp"
+
+namespace sweetspot::detail {
+
+std::string format_number(double value) {
+  if (std::isnan(value)) return "nan";
+  if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
+  char buffer[32];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+  return std::string(buffer, result.ptr);
+}
+
+std::string indexed(std::string_view list, std::size_t index, std::string_view field) {
+  return std::string(list) + "/" + std::to_string(index) + "/" + std::string(field);
+}
+
+void validate_point_masses(const std::vector<PointMass>& point_masses, double length_m) {
+  for (std::size_t i = 0; i < point_masses.size(); ++i) {
+    require_in_range(Element{"point_masses", i, "from_butt_m"}, point_masses[i].from_butt_m, 0.0,
+                     length_m, "m");
+    require_in_range(Element{"point_masses", i, "mass_kg"}, point_masses[i].mass_kg, 0.0,
+                     kMaxMass_kg, "kg");
+    require_in_range(Element{"point_masses", i, "off_axis_m"}, point_masses[i].off_axis_m,
+                     -length_m, length_m, "m");
+  }
+}
+
+std::string format_significant(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.6g", value);
+  return buffer;
+}
+
+namespace {
+[[noreturn]] void fail(std::string_view name, const std::string& expected, double value,
+                       std::string_view unit) {
+  std::string message(name);
+  message += ": must be " + expected;
+  message += ", got " + format_number(value);
+  if (!unit.empty() && std::isfinite(value)) message += " " + std::string(unit);
+  throw std::invalid_argument(message);
+}
+}  // namespace
+
+void fail_finite(std::string_view name, double value) { fail(name, "a finite number", value, ""); }
+
+void fail_positive(std::string_view name, double value, std::string_view unit) {
+  fail(name, "> 0" + (unit.empty() ? "" : " " + std::string(unit)), value, unit);
+}
+
+void fail_at_least(std::string_view name, double value, double min, std::string_view unit) {
+  fail(name, ">= " + format_number(min) + (unit.empty() ? "" : " " + std::string(unit)), value,
+       unit);
+}
+
+void fail_in_range(std::string_view name, double value, double min, double max,
+                   std::string_view unit) {
+  fail(name,
+       "in [" + format_number(min) + ", " + format_number(max) + "]" +
+           (unit.empty() ? "" : " " + std::string(unit)),
+       value, unit);
+}
+
+}  // namespace sweetspot::detail

@@ -1,0 +1,148 @@
+#include "core/collision_evaluation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "core/check.hpp"
+#include "sweetspot/collision.hpp"
+#include "sweetspot/frame_modes.hpp"
+#include "sweetspot/impact_response.hpp"
+#include "sweetspot/invariants.hpp"
+#include "sweetspot/rigid_impact.hpp"
+
+namespace sweetspot {
+
+DesignCollision::DesignCollision(const Design& design, double rel_tol) : design_(design) {
+  if (design.cor_rigid) {
+    throw std::invalid_argument(
+        "frame/cor_rigid: the solved collision derives the COR itself; give neither cor nor "
+        "cor_rigid (or evaluate with --fidelity response)");
+  }
+  if (design.cor_given) {
+    throw std::invalid_argument(
+        "frame/cor: the solved collision derives the COR itself; give no frame cor (or "
+        "evaluate with --fidelity modal), got " +
+        detail::format_number(design.cor));
+  }
+  validate(design);
+  if (!design.strings) {
+    throw std::invalid_argument(
+        "strings/tension_N: the solved collision needs the string tension (the string bed's "
+        "stiffness), not a given impact duration");
+  }
+  if (!has_stiffness(design)) {
+    throw std::invalid_argument(
+        "frame/EI_N_m2: the solved collision needs the frame's stiffness (EI_N_m2, RA or "
+        "fundamental_free_Hz)");
+  }
+  ResponseOptions options;
+  options.modes = kCollisionModes;
+  options.rel_tol = rel_tol;
+  model_ = response_model(design, options);
+  bed_ = string_bed_dynamics(*design.strings, design.string_bed_mass_kg,
+                             design.string_bed_damping_ratio);
+  polar_inertia_kg_m2_ = polar_inertia_kg_m2(design);
+}
+
+FrameAtImpact DesignCollision::frame_at(double from_butt_m, double off_axis_m) const {
+  FrameAtImpact frame = frame_at_impact(model_, from_butt_m);
+  if (off_axis_m != 0.0) {
+    if (!polar_inertia_kg_m2_) {
+      throw std::invalid_argument(
+          "impact/off_axis_m: an impact off the long axis needs the polar inertia "
+          "(implement/twistweight_kg_cm2 or implement/headsize_sq_in), got " +
+          detail::format_number(off_axis_m) + " m");
+    }
+    frame.inverse_effective_mass_per_kg += impact_twist_per_kg(off_axis_m, *polar_inertia_kg_m2_);
+  }
+  return frame;
+}
+
+CollisionResult DesignCollision::at(double from_butt_m, double off_axis_m,
+                                    const CollisionOptions& options) const {
+  const Design& design = design_;
+  const FrameAtImpact frame = frame_at(from_butt_m, off_axis_m);
+  CollisionResult r = collide(frame, bed_, design.ball.mass_kg, design.ball_contact,
+                              design.ball.speed_m_s, options);
+  const double f1 = model_.modes.empty() ? 0.0 : model_.modes.front().mode.frequency_Hz;
+  const auto refuse = [&](const Suspect& blame, const std::string& why) {
+    throw ModelRefusal(blame.field, blame.value,
+                       "the solved collision cannot answer this design (" + why + "); " +
+                           detail::format_number(blame.value) +
+                           " is the input furthest from the racquet it was verified on");
+  };
+  if (!r.separated) {
+    refuse(collision_suspect(design, f1), "the ball has not left the strings for good after " +
+                                              detail::format_number(options.max_time_s) +
+                                              " s and " + std::to_string(r.contacts) +
+                                              (r.contacts == 1 ? " contact" : " contacts"));
+  }
+  if (!(r.step_error <= kMaxStepError)) {
+    refuse(collision_suspect(design, f1),
+           "the step does not resolve the contact: the apparent COR changes by " +
+               detail::format_significant(r.step_error) + " when the step halves, more than " +
+               detail::format_number(kMaxStepError));
+  }
+  if (!(r.contact_time_s >= kMinDuration_s && r.contact_time_s <= kMaxDuration_s)) {
+    refuse(collision_suspect(design, f1),
+           "the contact lasts " + detail::format_significant(r.contact_time_s) + " s, outside [" +
+               detail::format_number(kMinDuration_s) + ", " +
+               detail::format_number(kMaxDuration_s) + "] s");
+  }
+  const double M_eff = 1.0 / frame.inverse_effective_mass_per_kg;
+  if (const std::string why =
+          broken_invariant(r, design.ball.mass_kg, M_eff, design.string_bed_mass_kg);
+      !why.empty()) {
+    refuse(collision_suspect(design, f1), why);
+  }
+  return r;
+}
+
+Evaluation evaluate_collision(const Design& design, double rel_tol) {
+  const DesignCollision collision(design, rel_tol);
+  CollisionOptions collision_options;
+  collision_options.record_history = true;
+  CollisionResult r =
+      collision.at(design.impact_from_butt_m, design.impact_off_axis_m, collision_options);
+  const double M_eff = 1.0 / collision.frame_at(design.impact_from_butt_m, design.impact_off_axis_m)
+                                 .inverse_effective_mass_per_kg;
+  // The rigid model's quantities at the COR that Eq. (16) maps to the solved
+  // apparent COR; then the solved numbers replace the prescribed ones.
+  const double cor = cor_from_apparent(r.apparent_cor, design.ball.mass_kg, M_eff);
+  Design resolved = design;
+  resolved.strings.reset();
+  resolved.cor = std::clamp(cor, 0.0, 1.0);
+  resolved.impact_duration_s = r.contact_time_s;
+  Evaluation e = evaluate(resolved, Fidelity::kModal, rel_tol);
+  e.cor = cor;
+  e.cor_derived = true;
+  e.impact_duration_s = r.contact_time_s;
+  e.impact_duration_derived = true;
+  e.apparent_cor = r.apparent_cor;
+  e.rebound_speed_m_s = r.apparent_cor * design.ball.speed_m_s;
+  e.impulse_N_s = r.impulse_N_s;
+  e.peak_impact_force_N = r.peak_force_N;
+  e.peak_wrist_force_N = peak_wrist_force(e.wrist_force_ratio, r.peak_force_N);
+  if (const double y = design.impact_off_axis_m; y != 0.0) {
+    // The twist of the solved impulse and force (evaluate()'s formulas).
+    e.twist_rate_rad_s = r.impulse_N_s * y / *e.polar_inertia_kg_m2;
+    e.peak_twist_torque_N_m = r.peak_force_N * std::abs(y);
+  }
+  e.vibration_energy_J = r.vibration_J;
+  e.vibration_share = r.vibration_J / r.ball_in_J;
+  if (!e.details) e.details.emplace();
+  e.details->fidelity_note.clear();
+  e.details->vibration_modes.clear();
+  for (std::size_t k = 0; k < r.mode_energy_J.size(); ++k) {
+    e.details->vibration_modes.emplace_back(collision.model().modes[k].mode.frequency_Hz,
+                                            r.mode_energy_J[k]);
+  }
+  e.details->collision = std::move(r);
+  check_invariants(e, design);
+  return e;
+}
+
+}  // namespace sweetspot

@@ -1,0 +1,158 @@
+#include "sweetspot/design.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "core/check.hpp"
+#include "sweetspot/frame_specs.hpp"
+
+namespace sweetspot {
+
+void validate(const Design& d) {
+  const double L = d.implement.length_m();
+  detail::require_in_range("frame/cor", d.cor, 0.0, 1.0, "");
+  detail::require_in_range("strings/impact_duration_s", d.impact_duration_s, kMinDuration_s,
+                           kMaxDuration_s, "s");
+  detail::require_in_range("hand/mass_kg", d.hand.mass_kg, 0.0, kMaxMass_kg, "kg");
+  detail::require_in_range("hand/center_from_butt_m", d.hand.center_from_butt_m, 0.0, L, "m");
+  detail::require_in_range("forearm/equivalent_mass_kg", d.forearm_equivalent_mass_kg, 0.0,
+                           kMaxForearmMass_kg, "kg");
+  detail::require_positive("ball/mass_kg", d.ball.mass_kg, "kg");
+  detail::require_in_range("ball/mass_kg", d.ball.mass_kg, kMinBallMass_kg, kMaxMass_kg, "kg");
+  // The implement's own parts are bounded where they are built; in all it
+  // weighs at least kMinImplementMass_kg.
+  if (!(d.implement.mass_properties().mass_kg >= kMinImplementMass_kg)) {
+    throw std::invalid_argument(
+        "implement/mass_kg: must be >= " + detail::format_number(kMinImplementMass_kg) +
+        " kg, got " + detail::format_number(d.implement.mass_properties().mass_kg) + " kg");
+  }
+  detail::require_positive("ball/speed_m_s", d.ball.speed_m_s, "m/s");
+  detail::require_in_range("ball/speed_m_s", d.ball.speed_m_s, kMinSpeed_m_s, kMaxSpeed_m_s, "m/s");
+  detail::require_in_range("impact/from_butt_m", d.impact_from_butt_m, 0.0, L, "m");
+  detail::require_positive("hand/grip_length_m", d.hand.grip_length_m, "m");
+  detail::require_in_range("hand/grip_stiffness_N_m2", d.hand.grip_stiffness_N_m2, 0.0,
+                           kMaxGripStiffness_N_m2, "N/m^2");
+  detail::require_in_range("hand/grip_damping_N_s_m2", d.hand.grip_damping_N_s_m2, 0.0,
+                           kMaxGripDamping_N_s_m2, "N s/m^2");
+  if (d.cor_rigid) detail::require_in_range("frame/cor_rigid", *d.cor_rigid, 0.0, 1.0, "");
+  if (d.strings) {
+    if (const std::string why = d.strings->validate(); !why.empty()) {
+      throw std::invalid_argument("strings/" + why);
+    }
+    detail::require_in_range("strings/tension_N", d.strings->tension_N, kMinTension_N,
+                             kMaxTension_N, "N");
+  }
+  if (const std::string why = d.ball_contact.validate(); !why.empty()) {
+    throw std::invalid_argument("ball/contact/" + why);
+  }
+  detail::require_in_range("strings/bed_mass_kg", d.string_bed_mass_kg, kMinStringBedMass_kg,
+                           kMaxStringBedMass_kg, "kg");
+  if (!(d.string_bed_damping_ratio >= 0.0 && d.string_bed_damping_ratio < 1.0)) {
+    detail::fail_in_range("strings/bed_damping_ratio", d.string_bed_damping_ratio, 0.0, 1.0, "");
+  }
+  const FrameStiffness& k = d.stiffness;
+  if (k.EI_N_m2) {
+    detail::require_positive("frame/EI_N_m2", *k.EI_N_m2, "N m^2");
+    detail::require_in_range("frame/EI_N_m2", *k.EI_N_m2, 0.0, kMaxEI_N_m2, "N m^2");
+  }
+  if (k.fundamental_free_Hz)
+    detail::require_positive("frame/fundamental_free_Hz", *k.fundamental_free_Hz, "Hz");
+  if (k.RA) {
+    if (k.EI_N_m2 || k.fundamental_free_Hz) {
+      throw std::invalid_argument(
+          "frame/RA: contradicts the frame's EI_N_m2 or fundamental_free_Hz: give the stiffness "
+          "once");
+    }
+    fundamental_free_Hz_from_RA(*k.RA, d.implement.frame_mass_properties().mass_kg);  // its range
+  }
+  if (k.shear_modulus_Pa) {
+    detail::require_positive("frame/cross_section/shear_modulus_Pa", *k.shear_modulus_Pa, "Pa");
+    detail::require_in_range("frame/cross_section/shear_modulus_Pa", *k.shear_modulus_Pa, 0.0,
+                             kMaxShearModulus_Pa, "Pa");
+    detail::require_positive("frame/cross_section/width_m", k.width_m, "m");
+    detail::require_in_range("frame/cross_section/width_m", k.width_m, 0.0, kMaxLength_m, "m");
+    detail::require_positive("frame/cross_section/thickness_m", k.thickness_m, "m");
+    detail::require_in_range("frame/cross_section/thickness_m", k.thickness_m, 0.0, kMaxLength_m,
+                             "m");
+  }
+  detail::require_in_range("impact/off_axis_m", d.impact_off_axis_m, -L, L, "m");
+  std::optional<HeadEllipse> outline;  // the head to the hoop's outer edge
+  if (d.head) {
+    try {
+      outline = string_bed(*d.head, L);
+    } catch (const std::invalid_argument& error) {
+      throw std::invalid_argument("implement/" + std::string(error.what()));
+    }
+    outline->semi_length_m += d.head->hoop_width_m;
+    outline->semi_width_m += d.head->hoop_width_m;
+  }
+  const double half_width_m = outline ? outline->semi_width_m : kMaxHeadHalfWidth_m;
+  if (d.twistweight_kg_m2) {
+    // All the frame's mass at the head's edge: the largest polar inertia it can have.
+    const double frame_mass_kg = d.implement.frame_mass_properties().mass_kg;
+    const double most_kg_m2 = frame_mass_kg * half_width_m * half_width_m;
+    const double twistweight = *d.twistweight_kg_m2;
+    if (!(twistweight >= kMinTwistweight_kg_m2 && twistweight <= most_kg_m2)) {
+      throw std::invalid_argument(
+          "implement/twistweight_kg_m2: must be in [" +
+          detail::format_number(kMinTwistweight_kg_m2) + ", " +
+          detail::format_significant(most_kg_m2) + "] kg m^2 (at most the frame's " +
+          detail::format_significant(frame_mass_kg) + " kg all " +
+          detail::format_significant(half_width_m) + " m off the axis), got " +
+          detail::format_number(twistweight) + " kg m^2");
+    }
+  }
+  if (const double y = d.impact_off_axis_m; y != 0.0) {
+    const bool on_head = outline ? on_string_bed(*outline, d.impact_from_butt_m, y)
+                                 : std::abs(y) <= kMaxHeadHalfWidth_m;
+    if (!on_head) {
+      throw std::invalid_argument(
+          "impact/off_axis_m: must land on the head (" +
+          std::string(outline ? "inside the hoop's outer edge, " +
+                                    detail::format_significant(
+                                        outline->semi_width_m *
+                                        std::sqrt(std::max(
+                                            0.0, 1.0 - std::pow((d.impact_from_butt_m -
+                                                                 outline->center_from_butt_m) /
+                                                                    outline->semi_length_m,
+                                                                2)))) +
+                                    " m either side of the axis at this impact"
+                              : "within " + detail::format_number(kMaxHeadHalfWidth_m) +
+                                    " m of the axis, the widest head the rules allow") +
+          "), got " + detail::format_number(y) + " m");
+    }
+  }
+  if (d.impact_off_axis_m != 0.0 && !d.twistweight_kg_m2 && !d.head) {
+    throw std::invalid_argument(
+        "impact/off_axis_m: an impact off the long axis twists the implement, which needs its "
+        "polar inertia: give implement/twistweight_kg_cm2 or implement/headsize_sq_in, got " +
+        detail::format_number(d.impact_off_axis_m) + " m");
+  }
+  if (!(hand_held_system(d).com_from_butt_m > 0.0)) {
+    throw std::invalid_argument(
+        "hand/center_from_butt_m: implement and hand have all their mass at the butt; the wrist "
+        "force (Cross 2004 Eq. 11) needs a centre of mass beyond the wrist");
+  }
+}
+
+std::optional<double> polar_inertia_kg_m2(const Design& d) {
+  std::optional<double> frame = d.twistweight_kg_m2;
+  if (!frame && d.head) {
+    frame = estimated_polar_inertia_kg_m2(*d.head, d.implement.length_m(),
+                                          d.implement.frame_mass_properties().mass_kg);
+  }
+  if (!frame) return std::nullopt;
+  return polar_inertia_with_point_masses(*frame, d.implement.point_masses());
+}
+
+bool polar_inertia_estimated(const Design& d) { return !d.twistweight_kg_m2 && d.head; }
+
+MassProperties hand_held_system(const Design& d) {
+  return with_point_mass(d.implement.mass_properties(),
+                         PointMass{d.hand.center_from_butt_m, d.hand.mass_kg});
+}
+
+}  // namespace sweetspot

@@ -1,0 +1,164 @@
+#include "sweetspot/frame_modes.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <stdexcept>
+
+#include "core/check.hpp"
+#include "sweetspot/frame_specs.hpp"
+
+namespace sweetspot {
+namespace {
+
+std::optional<double> node_nearest_tip(const Mode& mode) {
+  if (mode.nodes_from_butt_m.empty()) return std::nullopt;
+  return mode.nodes_from_butt_m.back();
+}
+
+}  // namespace
+
+std::vector<Section> fitted_sections(double length_m, const MassProperties& frame, int count) {
+  detail::require_positive("length_m", length_m, "m");
+  if (count < 3) throw std::invalid_argument("count: must be >= 3, got " + std::to_string(count));
+  const double l = length_m / count;
+  // Section i's mass is L (a A_i + b B_i + c C_i): the integrals of 1, s, s^2.
+  Eigen::Matrix3d moments = Eigen::Matrix3d::Zero();
+  std::vector<Eigen::Vector3d> basis(count);
+  for (int i = 0; i < count; ++i) {
+    const double s0 = static_cast<double>(i) / count, s1 = static_cast<double>(i + 1) / count;
+    basis[i] = length_m *
+               Eigen::Vector3d(s1 - s0, (s1 * s1 - s0 * s0) / 2, (s1 * s1 * s1 - s0 * s0 * s0) / 3);
+    const double x = (i + 0.5) * l;
+    // Rows: mass, first moment, second moment about the butt of a uniform section.
+    moments.row(0) += basis[i].transpose();
+    moments.row(1) += x * basis[i].transpose();
+    moments.row(2) += (x * x + l * l / 12.0) * basis[i].transpose();
+  }
+  const double M = frame.mass_kg, B = frame.com_from_butt_m;
+  const Eigen::Vector3d target(M, M * B, frame.I_cm_kg_m2 + M * B * B);
+  const Eigen::Vector3d abc = moments.colPivHouseholderQr().solve(target);
+  std::vector<Section> sections(count);
+  for (int i = 0; i < count; ++i) {
+    const double mass = basis[i].dot(abc);
+    if (!(mass > 0.0)) {
+      throw std::invalid_argument(
+          "implement: no smooth (quadratic) positive mass distribution has this mass, balance and "
+          "swingweight; give sections instead");
+    }
+    sections[i] = Section{l, mass, {}};
+  }
+  return sections;
+}
+
+bool has_stiffness(const Design& design) {
+  if (design.stiffness.EI_N_m2 || design.stiffness.fundamental_free_Hz || design.stiffness.RA)
+    return true;
+  const auto& sections = design.implement.sections();
+  return !sections.empty() && std::all_of(sections.begin(), sections.end(),
+                                          [](const Section& s) { return s.EI_N_m2.has_value(); });
+}
+
+FlexibleFrame flexible_frame(const Design& design) {
+  const Implement& implement = design.implement;
+  const FrameStiffness& stiffness = design.stiffness;
+  FlexibleFrame frame;
+  frame.point_masses = implement.point_masses();
+  frame.mass_distribution_fitted = !implement.has_mass_distribution();
+  frame.sections = implement.has_mass_distribution()
+                       ? implement.sections()
+                       : fitted_sections(implement.length_m(), implement.frame_mass_properties());
+  if (stiffness.shear_modulus_Pa) {
+    const TimoshenkoSection t = rectangular_timoshenko_section(
+        *stiffness.shear_modulus_Pa, stiffness.width_m, stiffness.thickness_m);
+    frame.options.method = ModeOptions::Method::kFiniteElement;
+    frame.options.theory = ModeOptions::Theory::kTimoshenko;
+    frame.options.timoshenko.assign(frame.sections.size(), t);
+  }
+  if (stiffness.EI_N_m2) detail::require_positive("frame/EI_N_m2", *stiffness.EI_N_m2, "N m^2");
+  for (Section& s : frame.sections) {
+    if (!s.EI_N_m2) s.EI_N_m2 = stiffness.EI_N_m2;
+    if (!s.EI_N_m2 && (stiffness.fundamental_free_Hz || stiffness.RA))
+      s.EI_N_m2 = 1.0;  // scaled below
+    if (!s.EI_N_m2) {
+      throw std::invalid_argument(
+          "frame/EI_N_m2: the modes need the frame's stiffness: give frame EI_N_m2, "
+          "fundamental_free_Hz, or EI_N_m2 for every section");
+    }
+  }
+  if (stiffness.fundamental_free_Hz) {
+    detail::require_positive("frame/fundamental_free_Hz", *stiffness.fundamental_free_Hz, "Hz");
+    frame.sections = scale_EI_to_fundamental(frame.sections, frame.point_masses,
+                                             *stiffness.fundamental_free_Hz, frame.options);
+  } else if (stiffness.RA) {
+    // RA rates the frame as sold: its fundamental without the design's point
+    // masses sets the stiffness, which the point masses then load.
+    const double f1 =
+        fundamental_free_Hz_from_RA(*stiffness.RA, implement.frame_mass_properties().mass_kg);
+    frame.sections = scale_EI_to_fundamental(frame.sections, {}, f1, frame.options);
+  }
+  return frame;
+}
+
+HandCoupling hand_coupling(const Design& design) {
+  const Hand& hand = design.hand;
+  detail::require_positive("hand/grip_length_m", hand.grip_length_m, "m");
+  const double start = hand.center_from_butt_m - 0.5 * hand.grip_length_m;
+  const double end = hand.center_from_butt_m + 0.5 * hand.grip_length_m;
+  if (start < 0.0 || end > design.implement.length_m()) {
+    throw std::invalid_argument("hand/grip_length_m: the grip " + detail::format_number(start) +
+                                " to " + detail::format_number(end) +
+                                " m must lie on the implement");
+  }
+  detail::require_at_least("hand/grip_stiffness_N_m2", hand.grip_stiffness_N_m2, 0.0, "N/m^2");
+  detail::require_at_least("hand/grip_damping_N_s_m2", hand.grip_damping_N_s_m2, 0.0, "N s/m^2");
+  HandCoupling coupling;
+  coupling.mass_kg = hand.mass_kg;
+  coupling.grip_start_m = start;
+  coupling.grip_length_m = hand.grip_length_m;
+  coupling.stiffness_N_m2 = hand.grip_stiffness_N_m2;
+  coupling.damping_N_s_m2 = hand.grip_damping_N_s_m2;
+  return coupling;
+}
+
+const Mode* hand_held_fundamental(const ModalResult& result) {
+  for (const Mode& mode : result.modes) {
+    if (mode.hand_energy_fraction < kHandModeEnergyShare) return &mode;
+  }
+  return nullptr;
+}
+
+ModalOutputs evaluate_modes(const Design& design, double rel_tol) {
+  const FlexibleFrame frame = flexible_frame(design);
+  ModalOutputs out;
+  out.mass_distribution_fitted = frame.mass_distribution_fitted;
+
+  ModeOptions free_options = frame.options;
+  free_options.modes = 1;
+  const ModalResult free = free_modes(frame.sections, frame.point_masses, free_options);
+  if (free.modes.empty())
+    throw std::invalid_argument("frame: no flexible mode found (" + free.message + ")");
+  out.fundamental_free_Hz = free.modes[0].frequency_Hz;
+  out.node_free_from_butt_m = node_nearest_tip(free.modes[0]);
+
+  if (design.hand.mass_kg == 0.0) {
+    out.fundamental_hand_Hz = out.fundamental_free_Hz;
+    out.node_hand_from_butt_m = out.node_free_from_butt_m;
+    return out;
+  }
+  ModeOptions hand_options = frame.options;
+  hand_options.method = ModeOptions::Method::kFiniteElement;
+  hand_options.rel_tol = rel_tol;
+  hand_options.modes = 3;  // the hand's rocking modes come first
+  const ModalResult held = hand_held_beam_fundamental(frame.sections, frame.point_masses,
+                                                      hand_coupling(design), hand_options);
+  const Mode* fundamental = hand_held_fundamental(held);
+  if (!fundamental)
+    throw std::invalid_argument("hand: no beam mode found among the hand-held modes");
+  out.fundamental_hand_Hz = fundamental->frequency_Hz;
+  out.hand_damping_ratio = fundamental->damping_ratio;
+  out.node_hand_from_butt_m = node_nearest_tip(*fundamental);
+  out.hand_elements = held.elements_used;
+  return out;
+}
+
+}  // namespace sweetspot

@@ -1,0 +1,92 @@
+#include "sweetspot/head_geometry.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include "core/check.hpp"
+
+namespace sweetspot {
+namespace {
+
+void check_head(const HeadShape& head) {
+  detail::require_positive("headsize", head.area_m2, "m^2");
+  // A head larger than a 100 m implement's square could not fit on it.
+  detail::require_in_range("headsize", head.area_m2, 0.0, kMaxLength_m * kMaxLength_m, "m^2");
+  detail::require_in_range("headsize aspect_ratio", head.aspect_ratio, 1.0, 10.0, "");
+  detail::require_in_range("hoop_width_m", head.hoop_width_m, 0.0, kMaxLength_m, "m");
+}
+
+}  // namespace
+
+HeadEllipse string_bed(const HeadShape& head, double length_m) {
+  check_head(head);
+  detail::require_positive("length_m", length_m, "m");
+  const double c = std::sqrt(head.area_m2 / (std::numbers::pi * head.aspect_ratio));
+  const double a = head.aspect_ratio * c;
+  const double overall_m = 2.0 * a + 2.0 * head.hoop_width_m;
+  if (!(overall_m <= length_m)) {
+    throw std::invalid_argument("headsize: a head of " + detail::format_significant(head.area_m2) +
+                                " m^2 is " + detail::format_significant(overall_m) +
+                                " m long with its hoop, longer than the implement (" +
+                                detail::format_number(length_m) + " m)");
+  }
+  return HeadEllipse{length_m - head.hoop_width_m - a, a, c};
+}
+
+bool on_string_bed(const HeadEllipse& bed, double from_butt_m, double off_axis_m) {
+  const double u = (from_butt_m - bed.center_from_butt_m) / bed.semi_length_m;
+  const double v = off_axis_m / bed.semi_width_m;
+  return u * u + v * v <= 1.0;
+}
+
+FacePoint clock_position(const HeadShape& head, double length_m, double hours) {
+  detail::require_in_range("clock", hours, 0.0, 12.0, "");
+  const HeadEllipse bed = string_bed(head, length_m);
+  const double A = bed.semi_length_m + 0.5 * head.hoop_width_m;
+  const double C = bed.semi_width_m + 0.5 * head.hoop_width_m;
+  const double theta = hours * (std::numbers::pi / 6.0);
+  const double cos_t = std::cos(theta), sin_t = std::sin(theta);
+  // Exact at the quarters, where cos or sin of a multiple of pi/2 is not exactly 0.
+  const double hours_mod = std::fmod(hours, 12.0);
+  if (hours_mod == 3.0) return FacePoint{bed.center_from_butt_m, C};
+  if (hours_mod == 9.0) return FacePoint{bed.center_from_butt_m, -C};
+  if (hours_mod == 6.0) return FacePoint{bed.center_from_butt_m - A, 0.0};
+  if (hours_mod == 0.0) return FacePoint{bed.center_from_butt_m + A, 0.0};
+  const double r = 1.0 / std::sqrt(cos_t * cos_t / (A * A) + sin_t * sin_t / (C * C));
+  return FacePoint{bed.center_from_butt_m + r * cos_t, r * sin_t};
+}
+
+double estimated_polar_inertia_kg_m2(const HeadShape& head, double length_m, double frame_mass_kg) {
+  detail::require_positive("frame mass", frame_mass_kg, "kg");
+  const HeadEllipse bed = string_bed(head, length_m);
+  const double A = bed.semi_length_m + 0.5 * head.hoop_width_m;
+  const double C = bed.semi_width_m + 0.5 * head.hoop_width_m;
+  // Mean of y^2 along the hoop (x = A cos t, y = C sin t), weighted by arc
+  // length; the midpoint rule converges spectrally for a periodic integrand.
+  constexpr int kSteps = 256;
+  double weighted = 0.0, total = 0.0;
+  for (int i = 0; i < kSteps; ++i) {
+    const double t = 2.0 * std::numbers::pi * (i + 0.5) / kSteps;
+    const double ds = std::hypot(A * std::sin(t), C * std::cos(t));
+    const double y = C * std::sin(t);
+    weighted += y * y * ds;
+    total += ds;
+  }
+  const double mean_y2 = weighted / total;
+  const double strings = std::min(kStringSetMass_kg, 0.1 * frame_mass_kg);
+  const double c = bed.semi_width_m;
+  // A uniform elliptical lamina: I about its long axis = m c^2 / 4.
+  return kHoopMassShare * frame_mass_kg * mean_y2 + strings * c * c / 4.0;
+}
+
+double polar_inertia_with_point_masses(double frame_polar_inertia_kg_m2,
+                                       const std::vector<PointMass>& point_masses) {
+  double I = frame_polar_inertia_kg_m2;
+  for (const PointMass& p : point_masses) I += p.mass_kg * p.off_axis_m * p.off_axis_m;
+  return I;
+}
+
+}  // namespace sweetspot

@@ -1,0 +1,150 @@
+#include "sweetspot/implement.hpp"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "core/check.hpp"
+
+namespace sweetspot {
+namespace {
+
+MassProperties add_all(MassProperties body, const std::vector<PointMass>& point_masses) {
+  for (const PointMass& point : point_masses) body = with_point_mass(body, point);
+  return body;
+}
+
+}  // namespace
+
+MassProperties section_mass_properties(const std::vector<Section>& sections) {
+  if (sections.empty()) throw std::invalid_argument("sections: must list at least one section");
+  double mass = 0.0;
+  double first_moment = 0.0;
+  double x_start = 0.0;
+  for (std::size_t i = 0; i < sections.size(); ++i) {
+    const Section& s = sections[i];
+    // Each section within the model's range on its own, so that a section
+    // out of range is named, not the sums it would spoil.
+    detail::require_positive(detail::Element{"sections", i, "length_m"}, s.length_m, "m");
+    detail::require_in_range(detail::Element{"sections", i, "length_m"}, s.length_m, 0.0,
+                             kMaxLength_m, "m");
+    detail::require_in_range(detail::Element{"sections", i, "mass_kg"}, s.mass_kg, 0.0, kMaxMass_kg,
+                             "kg");
+    if (s.EI_N_m2) {
+      detail::require_positive(detail::Element{"sections", i, "EI_N_m2"}, *s.EI_N_m2, "N m^2");
+      detail::require_in_range(detail::Element{"sections", i, "EI_N_m2"}, *s.EI_N_m2, 0.0,
+                               kMaxEI_N_m2, "N m^2");
+    }
+    mass += s.mass_kg;
+    first_moment += s.mass_kg * (x_start + 0.5 * s.length_m);
+    x_start += s.length_m;
+  }
+  if (!(mass > 0.0)) {
+    throw std::invalid_argument("sections: total mass must be > 0 kg, got " +
+                                detail::format_number(mass) + " kg");
+  }
+  detail::require_in_range("sections total length", x_start, 0.0, kMaxLength_m, "m");
+  detail::require_in_range("sections total mass", mass, 0.0, kMaxMass_kg, "kg");
+  const double com = first_moment / mass;
+  double I_cm = 0.0;
+  x_start = 0.0;
+  for (const Section& s : sections) {
+    const double arm = x_start + 0.5 * s.length_m - com;
+    I_cm += s.mass_kg * (s.length_m * s.length_m / 12.0 + arm * arm);
+    x_start += s.length_m;
+  }
+  if (!(I_cm >= std::numeric_limits<double>::min())) {
+    // Every section is too small for its inertia to be a normal number: name
+    // the longest, the one that would have to grow.
+    std::size_t longest = 0;
+    for (std::size_t i = 1; i < sections.size(); ++i) {
+      if (sections[i].length_m > sections[longest].length_m) longest = i;
+    }
+    throw std::invalid_argument(
+        detail::indexed("sections", longest, "length_m") + ": too short to model, got " +
+        detail::format_number(sections[longest].length_m) +
+        " m (the implement's moment of inertia underflows: " + detail::format_number(I_cm) +
+        " kg m^2)");
+  }
+  return MassProperties{mass, com, I_cm};
+}
+
+Implement Implement::from_sections(std::vector<Section> sections,
+                                   std::vector<PointMass> point_masses) {
+  Implement implement;
+  implement.frame_ = section_mass_properties(sections);
+  for (const Section& s : sections) implement.length_m_ += s.length_m;
+  detail::validate_point_masses(point_masses, implement.length_m_);
+  implement.total_ = add_all(implement.frame_, point_masses);
+  implement.sections_ = std::move(sections);
+  implement.point_masses_ = std::move(point_masses);
+  return implement;
+}
+
+Implement Implement::paper_racquet(double length_m, double mass_kg,
+                                   double head_to_handle_mass_ratio,
+                                   std::vector<PointMass> point_masses) {
+  detail::require_positive("length_m", length_m, "m");
+  detail::require_positive("mass_kg", mass_kg, "kg");
+  detail::require_in_range("length_m", length_m, 0.0, kMaxLength_m, "m");
+  detail::require_in_range("mass_kg", mass_kg, 0.0, kMaxMass_kg, "kg");
+  detail::require_positive("head_to_handle_mass_ratio", head_to_handle_mass_ratio, "");
+  // The inertia M L^2 / 12 must be a normal number: name the input that makes
+  // it underflow rather than the halves built from it.
+  if (!(0.5 * length_m * length_m >= std::numeric_limits<double>::min())) {
+    throw std::invalid_argument("length_m: too short to model, got " +
+                                detail::format_number(length_m) +
+                                " m (its moment of inertia underflows)");
+  }
+  if (!(mass_kg * length_m * length_m / 48.0 >= std::numeric_limits<double>::min())) {
+    throw std::invalid_argument("mass_kg: too light to model at this length, got " +
+                                detail::format_number(mass_kg) +
+                                " kg (its moment of inertia underflows)");
+  }
+  // M1 / M2 = ratio and M1 + M2 = M  =>  M2 = M / (1 + ratio).
+  const double handle_kg = mass_kg / (1.0 + head_to_handle_mass_ratio);
+  const double head_kg = mass_kg * head_to_handle_mass_ratio / (1.0 + head_to_handle_mass_ratio);
+  return from_sections(
+      {Section{0.5 * length_m, handle_kg, {}}, Section{0.5 * length_m, head_kg, {}}},
+      std::move(point_masses));
+}
+
+Implement Implement::from_specs(const IndustrySpecs& specs, std::vector<PointMass> point_masses) {
+  const double L = specs.length_m;
+  const double M = specs.mass_kg;
+  const double B = specs.balance_from_butt_m;
+  detail::require_positive("length_m", L, "m");
+  detail::require_positive("mass_kg", M, "kg");
+  detail::require_in_range("length_m", L, 0.0, kMaxLength_m, "m");
+  detail::require_in_range("mass_kg", M, 0.0, kMaxMass_kg, "kg");
+  if (!std::isfinite(B) || B <= 0.0 || B >= L) {
+    throw std::invalid_argument("balance_from_butt_m: must lie inside the length (0, " +
+                                detail::format_number(L) + ") m, got " + detail::format_number(B) +
+                                " m");
+  }
+  detail::require_positive("swingweight_kg_m2", specs.swingweight_kg_m2, "kg m^2");
+  // A body on [0, L] with its centre of mass at B has 0 < I_cm <= M B (L - B)
+  // (the upper bound puts all the mass at the two ends).
+  const double arm = B - kSwingweightAxisFromButt_m;
+  const double sw_min = M * arm * arm;
+  const double sw_max = sw_min + M * B * (L - B);
+  // I_cm = SW - M (B - 0.1)^2 must also be a normal number, not an underflow.
+  if (!(specs.swingweight_kg_m2 - sw_min >= std::numeric_limits<double>::min()) ||
+      specs.swingweight_kg_m2 > sw_max) {
+    throw std::invalid_argument(
+        "swingweight_kg_m2: must be in (" + detail::format_significant(sw_min) + ", " +
+        detail::format_significant(sw_max) + "] kg m^2 for this mass, balance and length, got " +
+        detail::format_number(specs.swingweight_kg_m2) + " kg m^2");
+  }
+  Implement implement;
+  implement.length_m_ = L;
+  implement.frame_ = from_swingweight(M, B, specs.swingweight_kg_m2);
+  detail::validate_point_masses(point_masses, L);
+  implement.total_ = add_all(implement.frame_, point_masses);
+  implement.point_masses_ = std::move(point_masses);
+  return implement;
+}
+
+}  // namespace sweetspot
