@@ -36,6 +36,10 @@ struct FlexibleFrame {
   bool mass_distribution_fitted = false;  // from industry specs
   ModeOptions options;                    // theory and Timoshenko data
 };
+// The largest shear parameter 12 EI / (kappa G A L^2) of a frame given a
+// cross-section (a real racquet's is about 0.01-0.1): a frame past it is
+// refused at frame/cross_section.
+inline constexpr double kMaxShearParameter = 1e6;
 FlexibleFrame flexible_frame(const Design& design);
 
 // The hand of `design` as a grip coupling for hand_held_modes. Throws

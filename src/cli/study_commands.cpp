@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <streambuf>
@@ -169,8 +170,9 @@ class JsonLinesFromCsv : public std::streambuf {
         object["error"] =
             row[k].empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(row[k]);
       } else {
-        object[header_[k]] = row[k].empty() ? nlohmann::ordered_json(nullptr)
-                                            : nlohmann::ordered_json(std::stod(row[k]));
+        object[header_[k]] = row[k].empty()
+                                 ? nlohmann::ordered_json(nullptr)
+                                 : nlohmann::ordered_json(std::strtod(row[k].c_str(), nullptr));
       }
     }
     out_ << object.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace) << '\n';

@@ -2,6 +2,7 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "core/check.hpp"
@@ -72,6 +73,13 @@ FlexibleFrame flexible_frame(const Design& design) {
         *stiffness.shear_modulus_Pa, stiffness.width_m, stiffness.thickness_m);
     frame.options.method = ModeOptions::Method::kFiniteElement;
     frame.options.theory = ModeOptions::Theory::kTimoshenko;
+    // kappa G w t can underflow to 0 (or overflow) for inputs each inside
+    // its range: the cross-section is then no beam's, named as the input.
+    if (!(t.shear_stiffness_N > 0.0 && std::isfinite(t.shear_stiffness_N))) {
+      throw std::invalid_argument(
+          "frame/cross_section: the shear stiffness kappa G w t must be > 0 and finite, got " +
+          detail::format_number(t.shear_stiffness_N) + " N");
+    }
     frame.options.timoshenko.assign(frame.sections.size(), t);
   }
   if (stiffness.EI_N_m2) detail::require_positive("frame/EI_N_m2", *stiffness.EI_N_m2, "N m^2");
@@ -96,6 +104,22 @@ FlexibleFrame flexible_frame(const Design& design) {
         fundamental_free_Hz_from_RA(*stiffness.RA, implement.frame_mass_properties().mass_kg);
     frame.sections = scale_EI_to_fundamental(frame.sections, {}, f1, frame.options);
   }
+  if (stiffness.shear_modulus_Pa) {
+    // The beam's shear parameter 12 EI / (kappa G A L^2): past
+    // kMaxShearParameter bending is no part of the frame's compliance and the
+    // elements' matrices leave floating point (NaN modes).
+    const double kGA = frame.options.timoshenko.front().shear_stiffness_N;
+    const double L = implement.length_m();
+    for (const Section& s : frame.sections) {
+      const double shear_parameter = 12.0 * (*s.EI_N_m2 / kGA) / L / L;
+      if (!(shear_parameter <= kMaxShearParameter)) {
+        throw std::invalid_argument(
+            "frame/cross_section: the shear parameter 12 EI/(kappa G w t L^2) must be at most " +
+            detail::format_number(kMaxShearParameter) + " (a beam in bending), got " +
+            detail::format_number(shear_parameter));
+      }
+    }
+  }
   return frame;
 }
 
@@ -104,7 +128,11 @@ HandCoupling hand_coupling(const Design& design) {
   detail::require_positive("hand/grip_length_m", hand.grip_length_m, "m");
   const double start = hand.center_from_butt_m - 0.5 * hand.grip_length_m;
   const double end = hand.center_from_butt_m + 0.5 * hand.grip_length_m;
-  if (start < 0.0 || end > design.implement.length_m()) {
+  // The grip's length within what is left past its start, as the modes
+  // check it (validate_hand): a tiny grip at the tip can end at the tip
+  // while its start plus its length does not.
+  if (start < 0.0 || end > design.implement.length_m() ||
+      hand.grip_length_m > design.implement.length_m() - start) {
     throw std::invalid_argument("hand/grip_length_m: the grip " + detail::format_number(start) +
                                 " to " + detail::format_number(end) +
                                 " m must lie on the implement");

@@ -76,6 +76,13 @@ bool is_design_path(std::string_view name) {
     }
     // A value the file left to its default is still named by its pointer.
     if (is_design_path(name)) throw InputError(source, "/" + name, detail);
+    // A quantity the model derived from one part of the design ("hand.grip_start_m",
+    // "frame.modes/0/phi", "impact_from_butt_m", "ball_stiffness_N_m"): the
+    // part is the input named.
+    const std::string part = core_name.substr(0, core_name.find_first_of("./_"));
+    for (const char* top : {"implement", "frame", "strings", "hand", "forearm", "ball", "impact"}) {
+      if (part == top) throw InputError(source, "/" + part, core_name + ": " + detail);
+    }
   }
   throw InputError(source, fallback_pointer, message);
 }

@@ -7,6 +7,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <string>
 #include <utility>
 
@@ -381,7 +382,7 @@ std::string people_name(std::string_view name, std::string_view si_unit) {
 double people_value(double value_si, std::string_view si_unit) {
   const double value = value_si * people_unit(si_unit).factor;
   if (!std::isfinite(value) || value == 0.0) return value;
-  return std::stod(fmt::format("{:.6g}", value));
+  return std::strtod(fmt::format("{:.6g}", value).c_str(), nullptr);
 }
 
 std::string_view unit_of_key(std::string_view key) {

@@ -32,15 +32,9 @@ struct Row {
   std::function<std::optional<double>(const ComparedDesign&)> value;
 };
 
-std::optional<double> node_of(const ComparedDesign& c) {
-  if (!c.spots.node_hand) return std::nullopt;
-  return c.spots.node_hand->from_tip_m;
-}
+std::optional<double> node_of(const ComparedDesign& c) { return c.spots.node_from_tip_m; }
 
-std::optional<double> cop_of(const ComparedDesign& c) {
-  if (!c.spots.cop_hand) return std::nullopt;
-  return c.spots.cop_hand->from_tip_m;
-}
+std::optional<double> cop_of(const ComparedDesign& c) { return c.spots.cop_from_tip_m; }
 
 const std::vector<Row>& rows() {
   static const std::vector<Row> kRows{

@@ -6,6 +6,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "io/input_error.hpp"
 #include "io/json_reader.hpp"
 #include "sweetspot/frame_modes.hpp"
 
@@ -117,13 +118,32 @@ SweetSpots find_sweet_spots(const io::DesignFile& design, const Evaluation& aske
   if (const auto it = design.provenance.find("impact/from_butt_m");
       it != design.provenance.end() && it->second.starts_with("default"))
     spots.asked_provenance = it->second;
-  if (const auto cop = on_implement_from_tip(asked, asked.cop_hand_from_butt_m))
-    spots.cop_hand = SpotOutcome{*cop, evaluate_at(design, *cop, fidelity, rel_tol)};
+  // A hit at a sweet spot the model refuses leaves that spot out, said why.
+  const auto at = [&](double from_tip, const char* what) -> std::optional<SpotOutcome> {
+    try {
+      return SpotOutcome{from_tip, evaluate_at(design, from_tip, fidelity, rel_tol)};
+    } catch (const io::InputError& refusal) {
+      std::string why = refusal.what();
+      if (const auto colon = why.find(": "); colon != std::string::npos)
+        why = why.substr(colon + 2);
+      spots.unanswered.push_back(
+          fmt::format("The model cannot answer a hit at the {}, {} from "
+                      "the tip: {}.",
+                      what, cm_text(from_tip), why));
+      return std::nullopt;
+    }
+  };
+  spots.cop_from_tip_m = on_implement_from_tip(asked, asked.cop_hand_from_butt_m);
+  if (spots.cop_from_tip_m) spots.cop_hand = at(*spots.cop_from_tip_m, "centre of percussion");
   if (asked.modal) {
-    if (const auto node = on_implement_from_tip(asked, asked.modal->node_hand_from_butt_m))
-      spots.node_hand = SpotOutcome{*node, evaluate_at(design, *node, fidelity, rel_tol)};
+    const auto node = on_implement_from_tip(asked, asked.modal->node_hand_from_butt_m);
+    spots.node_from_tip_m = node;
+    if (node) spots.node_hand = at(*node, "node");
     spots.node_free_from_tip_m = on_implement_from_tip(asked, asked.modal->node_free_from_butt_m);
-    if (!spots.node_hand) spots.node_missing = "the hand-held fundamental has no node on the frame";
+    if (!spots.node_hand) {
+      spots.node_missing = node ? "the model cannot answer a hit at it"
+                                : "the hand-held fundamental has no node on the frame";
+    }
   } else {
     spots.node_missing =
         "give the frame's stiffness (frame.fundamental_free_Hz, the free frame's fundamental "
@@ -133,7 +153,7 @@ SweetSpots find_sweet_spots(const io::DesignFile& design, const Evaluation& aske
     spots.best_rebound = best_rebound_on_axis(design, rel_tol, kBestReboundTolerance_m);
   if (is_racquet(design)) {
     const double centre = centre_of_strings_from_tip_m(design);
-    spots.centre_of_strings = SpotOutcome{centre, evaluate_at(design, centre, fidelity, rel_tol)};
+    spots.centre_of_strings = at(centre, "centre of the strings");
   }
   return spots;
 }
@@ -143,35 +163,36 @@ std::vector<std::string> sweet_spot_sentences(const io::DesignFile& design,
   std::vector<std::string> sentences;
   const Evaluation& asked = spots.asked.evaluation;
   // 1. Where the sweet spots are, and how far apart.
-  if (spots.cop_hand && spots.node_hand) {
+  if (spots.cop_from_tip_m && spots.node_from_tip_m) {
     sentences.push_back(fmt::format(
         "Held in the hand, this {} has two sweet spots: the centre of percussion, {} from the "
         "tip, where the wrist feels the least jolt, and the node of its fundamental vibration "
         "({:.0f} Hz in the hand), {} from the tip, where the frame vibrates least.",
-        is_racquet(design) ? "racquet" : "implement", cm_text(spots.cop_hand->from_tip_m),
-        asked.modal->fundamental_hand_Hz, cm_text(spots.node_hand->from_tip_m)));
-    const double gap = std::fabs(spots.cop_hand->from_tip_m - spots.node_hand->from_tip_m);
+        is_racquet(design) ? "racquet" : "implement", cm_text(*spots.cop_from_tip_m),
+        asked.modal->fundamental_hand_Hz, cm_text(*spots.node_from_tip_m)));
+    const double gap = std::fabs(*spots.cop_from_tip_m - *spots.node_from_tip_m);
     sentences.push_back(cm_text(gap) == "0 cm"
                             ? std::string("The two coincide.")
                             : fmt::format("They are {} apart, the {} nearer the tip.", cm_text(gap),
-                                          spots.node_hand->from_tip_m < spots.cop_hand->from_tip_m
+                                          *spots.node_from_tip_m < *spots.cop_from_tip_m
                                               ? "node"
                                               : "centre of percussion"));
-  } else if (spots.cop_hand) {
+  } else if (spots.cop_from_tip_m) {
     sentences.push_back(fmt::format(
         "Held in the hand, this {}'s centre of percussion, where the wrist feels the least jolt, "
         "is {} from the tip.",
-        is_racquet(design) ? "racquet" : "implement", cm_text(spots.cop_hand->from_tip_m)));
+        is_racquet(design) ? "racquet" : "implement", cm_text(*spots.cop_from_tip_m)));
     sentences.push_back("The node of least vibration is not located: " + spots.node_missing + ".");
   } else {
     sentences.push_back(
         "Held in the hand, this implement has no centre of percussion on its length (implement "
         "and hand balance at the wrist), so every impact jolts the wrist.");
-    if (spots.node_hand) {
+    if (spots.node_from_tip_m) {
       sentences.push_back(fmt::format("The node of least vibration is {} from the tip.",
-                                      cm_text(spots.node_hand->from_tip_m)));
+                                      cm_text(*spots.node_from_tip_m)));
     }
   }
+  sentences.insert(sentences.end(), spots.unanswered.begin(), spots.unanswered.end());
   // 2. What the arm and the ball feel at each.
   const std::string speed = fmt::format("{:.3g} m/s", design.design.ball.speed_m_s);
   if (spots.cop_hand) {

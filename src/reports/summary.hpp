@@ -46,6 +46,12 @@ struct SweetSpots {
   SpotOutcome asked;
   // How that impact was chosen: "given", or what the default was.
   std::string asked_provenance = "given";
+  // A sweet spot the model cannot answer a hit at (a refusal there is that
+  // spot's, never the design's: the asked impact was answered): one sentence each.
+  std::vector<std::string> unanswered;
+  // Where the centre of percussion and the node are [m from the tip], a hit
+  // there answered or not (cop_hand, node_hand: its answer).
+  std::optional<double> cop_from_tip_m, node_from_tip_m;
 };
 
 // Whether a design is a racquet with a head (io::has_racquet_head()): it

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <limits>
 #include <string>
@@ -49,7 +50,7 @@ const io::Json& array_at(io::ObjectReader& r, std::string_view key, bool require
 // binary is 0.30000000000000004 for 0.1 + 0.4 * 2 / 4; the nearest double to
 // its 15-digit decimal is taken when it lies within a few rounding errors.
 double decimal_grid_point(double lo, double hi, double x) {
-  const double decimal = std::stod(fmt::format("{:.15g}", x));
+  const double decimal = std::strtod(fmt::format("{:.15g}", x).c_str(), nullptr);
   const double slack = 4 * std::numeric_limits<double>::epsilon() *
                        std::max({std::fabs(lo), std::fabs(hi), std::fabs(x)});
   if (std::fabs(decimal - x) <= slack && decimal >= lo && decimal <= hi) return decimal;

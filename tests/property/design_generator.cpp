@@ -1,6 +1,9 @@
 #include "design_generator.hpp"
 
 #include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <numbers>
 #include <utility>
@@ -13,16 +16,21 @@ namespace {
 constexpr double kTiny = 1e-300;
 constexpr double kHuge = 1e300;
 
-// Unit spellings and their factors to SI, as the README's key table gives them.
+// Unit spellings and their factors to SI, as the README's key table gives
+// them. A factor that is a power of ten (`decimal` its exponent) moves the
+// decimal point of the number as written: 282 g is the double nearest
+// 0.282 kg (README, "Units"), which is not always 282 * 0.001.
 struct Unit {
   const char* suffix;
   double to_si;
+  int decimal = 0;
 };
-const std::vector<Unit> kLength{{"_m", 1.0}, {"_cm", 0.01}, {"_mm", 0.001}, {"_in", 0.0254}};
-const std::vector<Unit> kMass{{"_kg", 1.0}, {"_g", 0.001}};
-const std::vector<Unit> kTime{{"_s", 1.0}, {"_ms", 0.001}};
+const std::vector<Unit> kLength{
+    {"_m", 1.0}, {"_cm", 0.01, -2}, {"_mm", 0.001, -3}, {"_in", 0.0254}};
+const std::vector<Unit> kMass{{"_kg", 1.0}, {"_g", 0.001, -3}};
+const std::vector<Unit> kTime{{"_s", 1.0}, {"_ms", 0.001, -3}};
 const std::vector<Unit> kSpeed{{"_m_s", 1.0}, {"_km_h", 1.0 / 3.6}, {"_mph", 0.44704}};
-const std::vector<Unit> kInertia{{"_kg_m2", 1.0}, {"_kg_cm2", 1e-4}};
+const std::vector<Unit> kInertia{{"_kg_m2", 1.0}, {"_kg_cm2", 1e-4, -4}};
 const std::vector<Unit> kForce{{"_N", 1.0}, {"_lb", 4.4482216152605}, {"_kg", 9.80665}};
 
 // The accepted ranges (SI). A range's corners are its closed bounds, or
@@ -82,6 +90,24 @@ const Range kPointMass{1e-6, 1e6, true, 0.0, 1e6, 0.002, 0.02};
 // Fractions of a range that depends on another input ([0, 1]).
 const Range kFraction{0.0, 1.0, false, 0.0, 1.0, 0.0, 1.0};
 
+// The double nearest `given` x 10^decimal, `given` read as the shortest
+// decimal that reads back as it (the digits a JSON file holds for it).
+double move_decimal_point(double given, int decimal) {
+  if (decimal == 0 || given == 0.0 || !std::isfinite(given)) return given;
+  char text[64];
+  const auto written = std::to_chars(text, text + 40, given, std::chars_format::scientific);
+  std::string digits(text, written.ptr);
+  const std::size_t e = digits.find('e');
+  const int exponent = std::stoi(digits.substr(e + 1)) + decimal;
+  digits = digits.substr(0, e) + "e" + std::to_string(exponent);
+  return std::strtod(digits.c_str(), nullptr);  // an underflow: the nearest, 0 or subnormal
+}
+
+// A number given in unit `u`, in SI.
+double to_si(double given, const Unit& u) {
+  return u.decimal != 0 ? move_decimal_point(given, u.decimal) : given * u.to_si;
+}
+
 class Drawer {
  public:
   Drawer(Rng& rng, const Style& style) : rng_(rng), style_(style) {}
@@ -123,7 +149,7 @@ double put(Rng& rng, Json& object, const std::string& base, const std::vector<Un
   const Unit& u = rng.pick(units);
   const double given = si / u.to_si;
   object[base + u.suffix] = given;
-  return given * u.to_si;
+  return to_si(given, u);
 }
 
 // The implement in one of its three forms.
@@ -380,7 +406,7 @@ std::optional<double> si(const Json& object, const std::string& base,
   if (!object.is_object()) return std::nullopt;
   for (const Unit& u : units) {
     const auto it = object.find(base + u.suffix);
-    if (it != object.end() && it->is_number()) return it->get<double>() * u.to_si;
+    if (it != object.end() && it->is_number()) return to_si(it->get<double>(), u);
   }
   return std::nullopt;
 }
@@ -449,7 +475,7 @@ std::optional<Truth> read_truth(const Json& document) {
       t.frame_I_scale_kg_m2 = frame.inertia_butt;
     } else {
       std::optional<double> B = number(implement, "balance_from_butt_m");
-      if (const auto cm = number(implement, "balance_cm")) B = *cm * 0.01;
+      if (const auto cm = number(implement, "balance_cm")) B = move_decimal_point(*cm, -2);
       if (const auto points = number(implement, "balance_pts_hl"))
         B = 0.5 * *L - *points * (0.0254 / 8.0);
       const auto sw = si(implement, "swingweight", kInertia);
@@ -466,7 +492,7 @@ std::optional<Truth> read_truth(const Json& document) {
   const auto cm2 = number(implement, "headsize_cm2");
   if (sq_in || cm2) {
     HeadShape head;
-    head.area_m2 = sq_in ? *sq_in * (0.0254 * 0.0254) : *cm2 * 1e-4;
+    head.area_m2 = sq_in ? *sq_in * (0.0254 * 0.0254) : move_decimal_point(*cm2, -4);
     head.aspect_ratio = number(implement, "head_aspect_ratio").value_or(kDefaultHeadAspectRatio);
     head.hoop_width_m = si(implement, "hoop_width", kLength).value_or(kDefaultHoopWidth_m);
     t.head = head;
