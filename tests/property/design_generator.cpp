@@ -13,7 +13,7 @@ namespace {
 constexpr double kTiny = 1e-300;
 constexpr double kHuge = 1e300;
 
-// Unit spellings and their factors to SI, as the README's key table gives them.
+// Unit spellings and their factors to SI, as the key table of docs/design-files.md gives them.
 struct Unit {
   const char* suffix;
   double to_si;
