@@ -34,6 +34,15 @@ expect compared.csv "name,source,mass_kg"
 # The page opens with the same answer.
 expect racquet.html "Held in the hand, this racquet has two sweet spots"
 expect racquet-out.json '"cop_hand_from_tip_cm"'
+# What the README quotes of the output is what the program prints: each
+# quoted passage ("> ..."), cut at its ellipses, appears in the output.
+flat=$(tr '\n' ' ' <out.txt | tr -s ' ')
+while IFS= read -r fragment; do
+  fragment=$(echo "$fragment" | sed 's/^ *//; s/ *$//')
+  [ ${#fragment} -gt 20 ] || continue
+  case $flat in *"$fragment"*) ;; *) echo "the README quotes what the output does not say: $fragment"; fail=1 ;; esac
+done < <(awk '/^> /{sub(/^> /, ""); printf "%s ", $0; quoted=1; next} quoted{print ""; quoted=0}' "$readme" |
+         sed 's/…/\n/g')
 # No escapes and no float noise in what the coach reads.
 if grep -qF '\|' out.txt; then echo "a Markdown escape in the output"; fail=1; fi
 exit $fail
