@@ -3,7 +3,7 @@
 // fields, then rows) or as JSON Lines (one design object per line), each row
 // laid over a base design.
 //
-// The contract under test (README "evaluate --batch"): a bad row becomes an
+// The contract under test (docs/catalogues.md): a bad row becomes an
 // error row and the rest go on; a file that cannot be read as a whole (its
 // header) is refused with sweetspot::io::InputError naming the source. Any
 // other exception escaping, a crash, a sanitizer report, a hang or unbounded

@@ -1,14 +1,14 @@
 // libFuzzer target: arbitrary bytes through the whole input path a user's file
 // takes, parse_json -> read_design -> evaluate.
 //
-// The contract under test (README "Design files", STYLE.md rule 5): bad input
+// The contract under test (docs/design-files.md, STYLE.md rule 5): bad input
 // is refused with sweetspot::io::InputError (the JSON layer) or
 // std::invalid_argument (the physics core); anything else escaping, a crash,
 // a sanitizer report or a hang is a bug. Only those two exceptions are caught
 // here, so any other one reaches std::terminate and libFuzzer reports it.
 //
 // With SWEETSPOT_FUZZ_REQUIRE_FINITE=1 in the environment an accepted design
-// must also evaluate to finite numbers (the README promises "never NaN"); a
+// must also evaluate to finite numbers (docs/command-line.md promises "never NaN"); a
 // non-finite output aborts with the offending field on stderr. Off by default
 // while the overflow defects of evaluate() are open.
 #include <cmath>

@@ -2,7 +2,7 @@
 // parse_json -> read_study (which reads the design it names, checks every
 // variable, objective and constraint, and evaluates the starting design).
 //
-// The contract under test (README "Studies", STYLE.md rule 5): bad input is
+// The contract under test (docs/studies.md, STYLE.md rule 5): bad input is
 // refused with sweetspot::io::InputError naming the study (or the design it
 // names) or std::invalid_argument from the physics core; anything else
 // escaping, a crash, a sanitizer report, a hang or unbounded memory is a bug.

@@ -33,7 +33,7 @@ struct BallContactLaw {
 // The elastic energy stored at compression x: U = k x^(n+1) / (n+1) for x > 0, else 0 [J].
 double contact_elastic_energy(const BallContactLaw& law, double compression_m);
 
-// The calibrated tennis ball (README, "The solved collision"): n = 1.5
+// The calibrated tennis ball (docs/model.md, "The solved collision"): n = 1.5
 // (Hertz-like), p = 0.5, with k and b solved so that a 57 g ball dropped
 // 254 cm onto a rigid surface (7.06 m/s) rebounds with e = 0.745 (the middle
 // of the ITF's 135-147 cm rebound, e = 0.729-0.761) after 4.5 ms of contact
@@ -43,7 +43,7 @@ inline constexpr BallContactLaw kTennisBallLaw{3.2017627372e5, 1.5, 1.1645824609
 inline constexpr double kTennisBallMass_kg = 0.057;
 inline constexpr double kTennisBallDiameter_m = 0.065;
 
-// Defaults of the string bed's moving mass and loss (README, "The solved
+// Defaults of the string bed's moving mass and loss (docs/model.md, "The solved
 // collision"): a few grams of string move with the ball (1-8 g plausible), and
 // a bed alone returns about 95 % of the energy, e_s^2 = exp(-2 pi z_s) ~ 0.95.
 inline constexpr double kStringBedMass_kg = 0.004;

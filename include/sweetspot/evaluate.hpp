@@ -59,7 +59,7 @@ struct Evaluation {
   // hand must supply to stop the handle turning in it. The paper's hand is a
   // point mass on the axis, so its model passes no torque about the long axis to
   // the forearm; this is the upper bound, reached by a grip that lets no roll
-  // through (see README, "The second dimension").
+  // through (see docs/model.md, "Twist").
   double peak_twist_torque_N_m = 0.0;
 
   // The flexible frame, when evaluated with Fidelity::kModal or kResponse.

@@ -16,7 +16,7 @@
 
 namespace sweetspot::cli {
 
-// Exit statuses (README "Exit status").
+// Exit statuses (README.md and docs/command-line.md, "Exit status").
 inline constexpr int kExitOk = 0;
 inline constexpr int kExitRuntimeError =
     1;  // not the input's fault: a write or read error (ENOSPC, EIO)

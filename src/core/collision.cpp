@@ -236,7 +236,7 @@ CollisionResult integrate(const FrameAtImpact& frame,
   // step lands on the separation; between contacts, with the ball receding,
   // steps are kFreeSteps times longer, and a new touch is approached
   // geometrically. (kOnset = 2 and kRefine = 1e-3 keep the default's COR and
-  // its observed order; README, "the solved collision".)
+  // its observed order; docs/model.md, "The solved collision".)
   // The time the step resolves (the contact's, unless a faster motion binds).
   const double t_res = std::min(t_est, kFastShare * t_fast);
   const double h_base = t_res / options.steps_per_contact;

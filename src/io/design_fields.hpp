@@ -6,7 +6,7 @@
 // list of keys for a quantity given in several forms), its SI key, its
 // default and valid range in words (the range refers to the core's constant),
 // and what it depends on. The reader's lists of expected keys, its
-// unknown-key messages and the test that the schema and the README agree
+// unknown-key messages and the test that the schema and docs/design-files.md agree
 // with the reader come from it.
 
 #include <optional>

@@ -3,7 +3,7 @@
 // Design files: JSON in SI units with the unit in the key name, industry units
 // accepted by suffix (mass_g, length_in, balance_cm, balance_pts_hl,
 // swingweight_kg_cm2, impact_duration_ms). The format is documented in
-// README.md and schema/design.schema.json.
+// docs/design-files.md and schema/design.schema.json.
 
 #include <map>
 #include <string>

@@ -27,8 +27,8 @@ void append_exact(std::string& out, double value);
 // the end of the text (no terminating NUL). For rows built in a buffer.
 inline constexpr std::size_t kMaxExactChars = 32;
 char* write_exact(char* out, double value);
-// The escaping rule of each format (README "Outputs"), applied by the writers
-// to every text that comes from a user's file or command line:
+// The escaping rule of each format (docs/command-line.md, "What passes through a writer"), applied
+// by the writers to every text that comes from a user's file or command line:
 //
 // Terminal and Markdown text: no control character reaches the output. C0
 // controls, DEL and the C1 controls U+0080..U+009F are written as escapes

@@ -31,7 +31,7 @@ inline constexpr int kMaxJsonDepth = 64;
 // nesting deeper than kMaxJsonDepth.
 Json parse_json(std::string_view text, const std::string& source);
 
-// Largest design or study file read (README "Limits"): 16 MiB.
+// Largest design or study file read (docs/command-line.md, "Limits on what is read"): 16 MiB.
 inline constexpr std::size_t kMaxInputFileBytes = std::size_t{16} << 20;
 
 // How messages name an input file: "-" is "standard input".

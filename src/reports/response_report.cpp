@@ -178,7 +178,7 @@ std::vector<ReportEntry> write_response_reports(const std::string& designs_dir,
       "on a "
       "rigid frame (`cor_rigid`) lowered by the energy the free frame keeps as vibration, solved "
       "together "
-      "with the impact force (README: the derived COR).\n\n"
+      "with the impact force (docs/model.md: the derived COR).\n\n"
       "| free fundamental (Hz) | e (cor_rigid 0.85) | vibration share | e (cor_rigid 0.90) | "
       "vibration share |\n"
       "|---:|---:|---:|---:|---:|\n";

@@ -30,7 +30,7 @@ namespace sweetspot::studies {
 inline constexpr std::size_t kBatchChunkRows = 4096;
 inline constexpr std::size_t kBatchChunkBytes = std::size_t{16} << 20;
 
-// Limits on a catalogue (README "Input limits"): a line (a CSV record, which
+// Limits on a catalogue (docs/catalogues.md, "Input limits"): a line (a CSV record, which
 // may span lines inside quotes) of at most 1 MiB, at most 1000 CSV columns.
 inline constexpr std::size_t kMaxBatchLineBytes = std::size_t{1} << 20;
 inline constexpr std::size_t kMaxBatchColumns = 1000;

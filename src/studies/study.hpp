@@ -3,7 +3,7 @@
 // Study files: what to change (design fields addressed by JSON pointer, with
 // bounds), what to minimise, under which constraints; run as an optimisation
 // (`sweetspot optimize`) or as a grid of what-ifs (`sweetspot sweep`).
-// The format is documented in README.md.
+// The format is documented in docs/studies.md.
 
 #include <memory>
 #include <optional>

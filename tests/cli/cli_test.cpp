@@ -1235,7 +1235,9 @@ TEST_CASE(
         Approx(j["free"][0]["frequency_Hz"].get<double>()).epsilon(1e-4));
 }
 
-TEST_CASE("The README's catalogue runs as written: mapped, sorted, with a file map or inline") {
+TEST_CASE(
+    "The catalogue of docs/catalogues.md runs as written: mapped, sorted, with a file map or "
+    "inline") {
   const Sandbox box;
   const std::string dir = std::string(SWEETSPOT_SOURCE_DIR) + "/designs/catalogues/";
   const std::string common = "evaluate --batch \"" + dir + "spec-sheets.csv\" --base \"" + dir +

@@ -483,14 +483,14 @@ TEST_CASE("The schema accepts exactly the keys of the field table, every spellin
   }
 }
 
-TEST_CASE("The README's table of design keys names every field of the field table") {
-  const std::string readme = source_file("README.md");
-  const std::size_t section = readme.find("## Design files");
+TEST_CASE("The design-file page's table of keys names every field of the field table") {
+  const std::string page = source_file("docs/design-files.md");
+  const std::size_t section = page.find("## Every key");
   REQUIRE(section != std::string::npos);
-  const std::size_t table = readme.find("| key | meaning", section);
+  const std::size_t table = page.find("| key | meaning", section);
   REQUIRE(table != std::string::npos);
-  const std::size_t end = readme.find("\n\n", table);
-  const std::string rows = readme.substr(table, end - table);
+  const std::size_t end = page.find("\n\n", table);
+  const std::string rows = page.substr(table, end - table);
   for (const DesignField& field : design_fields()) {
     INFO(field.object << " " << field.stem);
     CHECK(rows.find(std::string(field.stem)) != std::string::npos);

@@ -16,10 +16,10 @@ namespace {
 constexpr double kTiny = 1e-300;
 constexpr double kHuge = 1e300;
 
-// Unit spellings and their factors to SI, as the README's key table gives
-// them. A factor that is a power of ten (`decimal` its exponent) moves the
-// decimal point of the number as written: 282 g is the double nearest
-// 0.282 kg (README, "Units"), which is not always 282 * 0.001.
+// Unit spellings and their factors to SI, as the key table of docs/design-files.md
+// gives them. A factor that is a power of ten (`decimal` its exponent) moves the
+// decimal point of the number as written: 282 g is the double nearest 0.282 kg
+// (docs/design-files.md), which is not always 282 * 0.001.
 struct Unit {
   const char* suffix;
   double to_si;

@@ -4,7 +4,7 @@
 // property tests (design_space_test.cpp). The ranges are those the code
 // accepts today (include/sweetspot/design.hpp, implement.hpp, ball_contact.hpp,
 // string_bed.hpp, head_geometry.hpp, frame_specs.hpp and the validate()
-// functions; src/io/design_reader.cpp; the README's key tables). Each input is
+// functions; src/io/design_reader.cpp; docs/design-files.md's key table). Each input is
 // drawn from one of three places: its accepted range's ends (the corners:
 // the bound itself when it is closed, an extreme value next to it when it is
 // open or unbounded), the whole range (log-uniform where it spans decades),
@@ -101,7 +101,7 @@ struct Truth {
   double impact_off_axis_m = 0.0;
 };
 
-// The design file read by the test's own rules (the README's key table);
+// The design file read by the test's own rules (the key table of docs/design-files.md);
 // std::nullopt when it is not a design the test can read (the code must then refuse it).
 std::optional<Truth> read_truth(const Json& document);
 

@@ -362,7 +362,8 @@ std::vector<Finding> judge_answer(const Json& document, const Evaluation& e,
 
   const std::optional<property::Truth> truth = property::read_truth(document);
   if (!truth) {
-    j.fail("answered a design the test cannot read", "the README's key table does not give it");
+    j.fail("answered a design the test cannot read",
+           "the key table of docs/design-files.md does not give it");
     return std::move(j).findings();
   }
   const double m = truth->ball_mass_kg, v = truth->ball_speed_m_s;

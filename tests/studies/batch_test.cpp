@@ -678,7 +678,8 @@ TEST_CASE("A tension column in lb or kg gives the tension in N it converts to") 
 }
 
 TEST_CASE(
-    "The shipped catalogue, map and base of the README evaluate every row but the one with n/a") {
+    "The shipped catalogue, map and base of docs/catalogues.md evaluate every row but the one with "
+    "n/a") {
   const std::string dir = std::string(SWEETSPOT_SOURCE_DIR) + "/designs/catalogues/";
   studies::BatchOptions options;
   options.input = studies::CatalogueFormat::kCsv;
