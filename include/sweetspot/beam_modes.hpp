@@ -41,6 +41,12 @@ inline constexpr int kMaxModes = 50;
 inline constexpr int kMaxExactModes = 6;
 // Finite elements of an explicit mesh (ModeOptions::elements).
 inline constexpr int kMaxElements = 4000;
+// Finite elements a mesh chosen from rel_tol (ModeOptions::elements == 0) may
+// have. The free beam's refinement assembles dense (2N)^2 matrices: at 1000
+// elements ~100 MB and well under a second; a design whose sections' stiffness
+// contrast asks for more (9494 elements, GBs and minutes) is refused
+// (ModelRefusal naming "implement/sections"), not solved.
+inline constexpr int kMaxAutoElements = 1000;
 // The finite elements' relative tolerance on f1 (ModeOptions::rel_tol):
 // below ~1e-8 the round-off of the assembled stiffness (cond ~ (L/h)^4) dominates.
 inline constexpr double kMinRelTol = 1e-8;

@@ -7,6 +7,7 @@
 
 #include "core/check.hpp"
 #include "sweetspot/frame_specs.hpp"
+#include "sweetspot/invariants.hpp"
 
 namespace sweetspot {
 namespace {
@@ -95,14 +96,24 @@ FlexibleFrame flexible_frame(const Design& design) {
   }
   if (stiffness.fundamental_free_Hz) {
     detail::require_positive("frame/fundamental_free_Hz", *stiffness.fundamental_free_Hz, "Hz");
-    frame.sections = scale_EI_to_fundamental(frame.sections, frame.point_masses,
-                                             *stiffness.fundamental_free_Hz, frame.options);
+    try {
+      frame.sections = scale_EI_to_fundamental(frame.sections, frame.point_masses,
+                                               *stiffness.fundamental_free_Hz, frame.options);
+    } catch (const ModelRefusal& r) {
+      throw ModelRefusal("frame/fundamental_free_Hz", *stiffness.fundamental_free_Hz,
+                         "the frame's EI scaled to reach it: " + r.detail());
+    }
   } else if (stiffness.RA) {
     // RA rates the frame as sold: its fundamental without the design's point
     // masses sets the stiffness, which the point masses then load.
     const double f1 =
         fundamental_free_Hz_from_RA(*stiffness.RA, implement.frame_mass_properties().mass_kg);
-    frame.sections = scale_EI_to_fundamental(frame.sections, {}, f1, frame.options);
+    try {
+      frame.sections = scale_EI_to_fundamental(frame.sections, {}, f1, frame.options);
+    } catch (const ModelRefusal& r) {
+      throw ModelRefusal("frame/RA", *stiffness.RA,
+                         "the frame's EI scaled to reach it: " + r.detail());
+    }
   }
   if (stiffness.shear_modulus_Pa) {
     // The beam's shear parameter 12 EI / (kappa G A L^2): past

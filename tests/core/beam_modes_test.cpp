@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "sweetspot/frame_modes.hpp"
+#include "sweetspot/invariants.hpp"
 
 namespace sweetspot {
 namespace {
@@ -747,4 +748,20 @@ TEST_CASE("The shape table samples every mode butt to tip") {
 }
 
 }  // namespace
+TEST_CASE("A Timoshenko fundamental above the shear beam's bound is refused, not chased") {
+  // As EI grows a uniform free-free Timoshenko beam tends to the shear beam,
+  // mu w_tt = kappa G A w_xx, whose fundamental is (1 / 2L) sqrt(kappa G A / mu):
+  // no EI reaches ten times that. Scaling EI toward it once took minutes on a
+  // 9494-element mesh; it must end in a ModelRefusal.
+  const std::vector<Section> beam = paper_beam();
+  ModeOptions t = fe(1);
+  t.theory = ModeOptions::Theory::kTimoshenko;
+  t.timoshenko = {
+      rectangular_timoshenko_section(kWoodShearModulus_Pa, kPaperWidth_m, kPaperThickness_m)};
+  const double mu = beam[0].mass_kg / beam[0].length_m;
+  const double shear_f1 =
+      std::sqrt(t.timoshenko[0].shear_stiffness_N / mu) / (2.0 * beam[0].length_m);
+  CHECK_THROWS_AS(scale_EI_to_fundamental(beam, {}, 10.0 * shear_f1, t), ModelRefusal);
+}
+
 }  // namespace sweetspot

@@ -17,8 +17,14 @@
 #include "core/beam_modes/shapes.hpp"
 #include "core/beam_modes/transfer_matrix.hpp"
 #include "core/check.hpp"
+#include "sweetspot/invariants.hpp"
 
 namespace sweetspot {
+namespace {
+// scale_EI_to_fundamental's Timoshenko iteration: f1 within this of the
+// target after its last step, else refused.
+constexpr double kScaleEISettled = 1e-9;
+}  // namespace
 
 using namespace beam_detail;
 using detail::format_number;
@@ -236,6 +242,14 @@ std::vector<Section> scale_EI_to_fundamental(const std::vector<Section>& section
     const double ratio = f1_Hz / r.modes[0].frequency_Hz;
     for (Section& s : scaled) s.EI_N_m2 = *s.EI_N_m2 * ratio * ratio;
     if (std::abs(ratio - 1.0) < 1e-13) break;
+    // Timoshenko: f1 is bounded by the shear stiffness as EI grows; a target
+    // above that bound is never reached, however far EI is scaled.
+    if (steps > 1 && i + 1 == steps && !(std::abs(ratio - 1.0) < kScaleEISettled)) {
+      throw ModelRefusal("f1_Hz", f1_Hz,
+                         "the frame's shear stiffness does not let its fundamental reach it "
+                         "(scaling EI left it a factor " +
+                             detail::format_significant(ratio) + " short)");
+    }
   }
   return scaled;
 }

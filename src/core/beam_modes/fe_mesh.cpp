@@ -10,6 +10,7 @@
 #include "core/beam_modes/free_fe.hpp"
 #include "core/beam_modes/shapes.hpp"
 #include "core/check.hpp"
+#include "sweetspot/invariants.hpp"
 
 namespace sweetspot::beam_detail {
 namespace {
@@ -323,6 +324,15 @@ std::vector<int> element_counts(const Segmentation& seg, const ModeOptions& opti
   std::vector<int> counts = counts_for(seg, std::sqrt(omega1) / beta_h);
   int total = 0;
   for (int c : counts) total += c;
+  if (total > kMaxAutoElements) {
+    throw ModelRefusal("implement/sections", static_cast<double>(total),
+                       "resolving the modes to rel_tol " +
+                           detail::format_significant(options.rel_tol) + " needs " +
+                           std::to_string(total) + " finite elements, more than the " +
+                           std::to_string(kMaxAutoElements) +
+                           " the modal model solves (the sections' stiffness and mass differ "
+                           "too much)");
+  }
   if (total < options.modes + 2) counts = counts_for(seg, (options.modes + 2) / weight);
   return counts;
 }
