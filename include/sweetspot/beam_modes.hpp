@@ -43,7 +43,8 @@ inline constexpr int kMaxExactModes = 6;
 inline constexpr int kMaxElements = 4000;
 // Finite elements a mesh chosen from rel_tol (ModeOptions::elements == 0) may
 // have. The free beam's refinement assembles dense (2N)^2 matrices: at 1000
-// elements ~100 MB and well under a second; a design whose sections' stiffness
+// elements ~100 MB (an estimate from the matrix size; the solve's time there
+// has not been measured); a design whose sections' stiffness
 // contrast asks for more (9494 elements, GBs and minutes) is refused
 // (ModelRefusal naming "implement/sections"), not solved.
 inline constexpr int kMaxAutoElements = 1000;
