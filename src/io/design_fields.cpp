@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <functional>
 #include <map>
+#include <stdexcept>
+#include <utility>
 
 #include "sweetspot/ball_contact.hpp"
 #include "sweetspot/design.hpp"
@@ -43,7 +45,7 @@ const std::vector<DesignField>& design_fields() {
       {"implement",
        "balance",
        {},
-       {"balance_from_butt_m", "balance_cm", "balance_pts_hl"},
+       {{"balance_from_butt_m"}, {"balance_cm", {0.01, -2}}, {"balance_pts_hl"}},
        "balance_from_butt_m",
        "",
        "inside the length",
@@ -52,7 +54,7 @@ const std::vector<DesignField>& design_fields() {
       {"implement",
        "headsize",
        {},
-       {"headsize_sq_in", "headsize_cm2"},
+       {{"headsize_sq_in", {kSquareInch_m2, 0}}, {"headsize_cm2", {1e-4, -4}}},
        "headsize_cm2",
        "none",
        "> 0, fits the length",
@@ -167,7 +169,7 @@ const std::vector<DesignField>& design_fields() {
       {"strings",
        "head_size",
        {},
-       {"head_size_in2", "head_size_cm2"},
+       {{"head_size_in2", {kSquareInch_m2, 0}}, {"head_size_cm2", {1e-4, -4}}},
        "head_size_cm2",
        "implement.headsize, else 100 in^2",
        "> 0",
@@ -310,8 +312,44 @@ const std::vector<DesignField>& design_fields() {
 
 std::vector<std::string> spellings_of(const DesignField& field) {
   if (field.dimension) return spellings(field.stem, *field.dimension);
-  if (!field.keys.empty()) return {field.keys.begin(), field.keys.end()};
+  if (!field.keys.empty()) {
+    std::vector<std::string> keys;
+    for (const KeySpelling& k : field.keys) keys.emplace_back(k.key);
+    return keys;
+  }
   return {std::string(field.stem)};
+}
+
+std::optional<FieldSpelling> find_spelling(std::string_view object, std::string_view key) {
+  for (const DesignField& field : design_fields()) {
+    if (field.object != object) continue;
+    if (field.dimension) {
+      if (const auto scale = unit_scale(key, field.stem, *field.dimension))
+        return FieldSpelling{&field, *scale};
+    } else if (!field.keys.empty()) {
+      for (const KeySpelling& k : field.keys) {
+        if (k.key == key) return FieldSpelling{&field, k.scale};
+      }
+    } else if (field.stem == key) {
+      return FieldSpelling{&field, UnitScale{}};
+    }
+  }
+  return std::nullopt;
+}
+
+const std::string& si_key(std::string_view object, std::string_view stem) {
+  static const std::map<std::pair<std::string, std::string>, std::string, std::less<>> kKeys = [] {
+    std::map<std::pair<std::string, std::string>, std::string, std::less<>> keys;
+    for (const DesignField& field : design_fields())
+      keys[{std::string(field.object), std::string(field.stem)}] = field.si_key;
+    return keys;
+  }();
+  const auto it = kKeys.find(std::pair{std::string(object), std::string(stem)});
+  if (it == kKeys.end()) {
+    throw std::logic_error("the design's field table has no field " + std::string(stem) + " in " +
+                           (object.empty() ? std::string("the document") : std::string(object)));
+  }
+  return it->second;
 }
 
 const std::vector<std::string>& design_keys(std::string_view object) {

@@ -18,11 +18,18 @@
 
 namespace sweetspot::io {
 
+// A key that spells a field in a form of its own (balance_cm, headsize_sq_in),
+// with its conversion to SI as the reader applies it.
+struct KeySpelling {
+  std::string_view key;
+  UnitScale scale = {};
+};
+
 struct DesignField {
   std::string_view object;  // "" (the document), "implement", "implement/sections/N", ...
   std::string_view stem;    // "mass"; with no dimension and no keys, the key itself
   std::optional<Dimension> dimension;  // the stem takes one unit suffix of it
-  std::vector<std::string_view> keys;  // else: the keys that spell it (balance_cm, ...)
+  std::vector<KeySpelling> keys;       // else: the keys that spell it (balance_cm, ...)
   std::string_view si_key;             // the key the core's name and the writer use
   std::string_view default_value;      // in words, "" when required or none
   std::string_view range;              // in words, naming the core's constant
@@ -37,6 +44,24 @@ const std::vector<DesignField>& design_fields();
 
 // Every key that spells `field` (its stem with each unit suffix, or its keys).
 std::vector<std::string> spellings_of(const DesignField& field);
+
+// A key of the table with the field it spells and its conversion to SI.
+struct FieldSpelling {
+  const DesignField* field = nullptr;
+  UnitScale scale;
+};
+
+// The field of `object` ("implement/point_masses/N") that `key` spells, with
+// the conversion the reader applies to it (mass_g: 10^-3; balance_cm: 10^-2;
+// headsize_sq_in: 0.0254^2); std::nullopt when the table holds no such key.
+// The reader, the writer and the binding of sweeps, studies and catalogues
+// all convert through it.
+std::optional<FieldSpelling> find_spelling(std::string_view object, std::string_view key);
+
+// The SI key of the field `stem` of `object` (the key the writer writes).
+// Throws std::logic_error for a field the table does not hold: a writer or a
+// binding that names one is a programming error, caught by the first test.
+const std::string& si_key(std::string_view object, std::string_view stem);
 
 // Every key accepted in `object` ("implement/point_masses/N"), in the
 // table's order, each unit spelling included.

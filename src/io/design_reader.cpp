@@ -250,11 +250,11 @@ struct HeadRead {
 
 HeadRead read_head(ObjectReader& r) {
   HeadRead out;
-  const std::string key = r.one_of({"headsize_sq_in", "headsize_cm2"});
+  const std::string key = r.one_of(keys_of("implement", {"headsize"}));
   if (!key.empty()) {
     const double given = *r.number(key);
     HeadShape head;
-    head.area_m2 = key == "headsize_sq_in" ? given * kSquareInch_m2 : shift_decimal(given, -4);
+    head.area_m2 = find_spelling("implement", key)->scale.to_si(given);
     if (!(head.area_m2 > 0.0)) r.fail(key, "must be > 0, got " + brief(Json(given)));
     if (const auto aspect = r.number("head_aspect_ratio")) {
       if (!(*aspect >= 1.0 && *aspect <= 10.0)) {
@@ -372,15 +372,14 @@ ImplementRead read_implement(const Json& document, const std::string& source, Ke
       return {Implement::paper_racquet(*length, *mass, ratio, std::move(points)),
               "head_to_handle_mass_ratio", head};
     }
-    const std::string balance_key =
-        r.one_of({"balance_from_butt_m", "balance_cm", "balance_pts_hl"});
+    const std::string balance_key = r.one_of(keys_of("implement", {"balance"}));
     if (balance_key.empty()) {
       r.fail("",
              "missing the mass distribution: give head_to_handle_mass_ratio, sections, or "
              "balance_from_butt_m (or balance_cm, balance_pts_hl) with swingweight_kg_cm2");
     }
     double balance = *r.number(balance_key);
-    if (balance_key == "balance_cm") balance = shift_decimal(balance, -2);
+    balance = find_spelling("implement", balance_key)->scale.to_si(balance);
     const double balance_as_given = balance;
     if (balance_key == "balance_pts_hl") {
       const double limit = points_head_light_limit(*length);
@@ -556,11 +555,10 @@ DesignFile read_design_impl(const Json& document, const std::string& source, boo
       bed.tension_N = *tension;
       bed.string_spacing_m =
           r.quantity("string_spacing", Dimension::kLength).value_or(bed.string_spacing_m);
-      const std::string head = r.one_of({"head_size_in2", "head_size_cm2"});
+      const std::string head = r.one_of(keys_of("strings", {"head_size"}));
       if (!head.empty()) {
         const double given = *r.number(head);
-        const double area_m2 =
-            head == "head_size_in2" ? given * kSquareInch_m2 : shift_decimal(given, -4);
+        const double area_m2 = find_spelling("strings", head)->scale.to_si(given);
         if (!(area_m2 > 0)) r.fail(head, "must be > 0, got " + brief(Json(*r.number(head))));
         if (design.head && !same_head_area(area_m2, design.head->area_m2)) {
           r.fail(head, "contradicts /implement/" + implement.head.key +
@@ -757,85 +755,109 @@ DesignFile load_design(const std::string& path) {
   return read_design(read_json_file(path), input_name(path));
 }
 
+namespace {
+
+// Writes `value` under the field table's SI key of `stem` in `object`, so a
+// field the table renames is renamed here (a stem it does not hold throws).
+void put(Json& into, std::string_view object, std::string_view stem, Json value) {
+  into[si_key(object, stem)] = std::move(value);
+}
+
+}  // namespace
+
 Json design_to_json(const DesignFile& file) {
   const Design& d = file.design;
   const Implement& implement = d.implement;
   Json j;
-  j["name"] = file.name;
-  Json& impl = j["implement"];
+  put(j, "", "name", file.name);
+  Json& impl = j[si_key("", "implement")];
   if (implement.has_mass_distribution()) {
-    impl["sections"] = Json::array();
+    Json& sections = impl[si_key("implement", "sections")] = Json::array();
     for (const Section& s : implement.sections()) {
-      Json section{{"length_m", s.length_m}, {"mass_kg", s.mass_kg}};
-      if (s.EI_N_m2) section["EI_N_m2"] = *s.EI_N_m2;
-      impl["sections"].push_back(section);
+      Json section = Json::object();
+      put(section, "implement/sections/N", "length", s.length_m);
+      put(section, "implement/sections/N", "mass", s.mass_kg);
+      if (s.EI_N_m2) put(section, "implement/sections/N", "EI", *s.EI_N_m2);
+      sections.push_back(std::move(section));
     }
   } else {
     const MassProperties& frame = implement.frame_mass_properties();
-    impl["length_m"] = implement.length_m();
-    impl["mass_kg"] = frame.mass_kg;
-    impl["balance_from_butt_m"] = frame.com_from_butt_m;
-    impl["swingweight_kg_cm2"] = swingweight_kg_m2(frame) * 1e4;
+    put(impl, "implement", "length", implement.length_m());
+    put(impl, "implement", "mass", frame.mass_kg);
+    put(impl, "implement", "balance", frame.com_from_butt_m);
+    put(impl, "implement", "swingweight", swingweight_kg_m2(frame));
   }
   if (!implement.point_masses().empty()) {
-    impl["point_masses"] = Json::array();
+    Json& points = impl[si_key("implement", "point_masses")] = Json::array();
     for (const PointMass& p : implement.point_masses()) {
-      Json point{{"from_butt_m", p.from_butt_m}, {"mass_kg", p.mass_kg}};
-      if (p.off_axis_m != 0.0) point["off_axis_m"] = p.off_axis_m;
-      impl["point_masses"].push_back(point);
+      Json point = Json::object();
+      put(point, "implement/point_masses/N", "mass", p.mass_kg);
+      put(point, "implement/point_masses/N", "from_butt", p.from_butt_m);
+      if (p.off_axis_m != 0.0) put(point, "implement/point_masses/N", "off_axis", p.off_axis_m);
+      points.push_back(std::move(point));
     }
   }
   if (d.head) {
-    impl["headsize_cm2"] = d.head->area_m2 * 1e4;
-    impl["head_aspect_ratio"] = d.head->aspect_ratio;
-    impl["hoop_width_m"] = d.head->hoop_width_m;
+    put(impl, "implement", "headsize", d.head->area_m2 * 1e4);
+    put(impl, "implement", "head_aspect_ratio", d.head->aspect_ratio);
+    put(impl, "implement", "hoop_width", d.head->hoop_width_m);
   }
-  if (d.twistweight_kg_m2) impl["twistweight_kg_m2"] = *d.twistweight_kg_m2;
+  if (d.twistweight_kg_m2) put(impl, "implement", "twistweight", *d.twistweight_kg_m2);
   // A strung design without a COR has it derived by the solved collision.
-  j["frame"] = d.cor_rigid                 ? Json{{"cor_rigid", *d.cor_rigid}}
-               : d.cor_given || !d.strings ? Json{{"cor", d.cor}}
-                                           : Json::object();
-  if (d.stiffness.EI_N_m2) j["frame"]["EI_N_m2"] = *d.stiffness.EI_N_m2;
-  if (d.stiffness.fundamental_free_Hz)
-    j["frame"]["fundamental_free_Hz"] = *d.stiffness.fundamental_free_Hz;
-  if (d.stiffness.RA) j["frame"]["RA"] = *d.stiffness.RA;
-  if (d.stiffness.shear_modulus_Pa) {
-    j["frame"]["cross_section"] = {{"shear_modulus_Pa", *d.stiffness.shear_modulus_Pa},
-                                   {"width_m", d.stiffness.width_m},
-                                   {"thickness_m", d.stiffness.thickness_m}};
+  Json& frame = j[si_key("", "frame")] = Json::object();
+  if (d.cor_rigid) {
+    put(frame, "frame", "cor_rigid", *d.cor_rigid);
+  } else if (d.cor_given || !d.strings) {
+    put(frame, "frame", "cor", d.cor);
   }
+  if (d.stiffness.EI_N_m2) put(frame, "frame", "EI", *d.stiffness.EI_N_m2);
+  if (d.stiffness.fundamental_free_Hz)
+    put(frame, "frame", "fundamental_free", *d.stiffness.fundamental_free_Hz);
+  if (d.stiffness.RA) put(frame, "frame", "RA", *d.stiffness.RA);
+  if (d.stiffness.shear_modulus_Pa) {
+    Json& section = frame[si_key("frame", "cross_section")] = Json::object();
+    put(section, "frame/cross_section", "shear_modulus_Pa", *d.stiffness.shear_modulus_Pa);
+    put(section, "frame/cross_section", "width", d.stiffness.width_m);
+    put(section, "frame/cross_section", "thickness", d.stiffness.thickness_m);
+  }
+  Json& strings = j[si_key("", "strings")] = Json::object();
   if (d.strings) {
-    j["strings"] = {{"tension_N", d.strings->tension_N},
-                    {"string_spacing_m", d.strings->string_spacing_m},
-                    {"head_size_cm2",
-                     3.141592653589793 * d.strings->head_radius_m * d.strings->head_radius_m * 1e4},
-                    {"contact_radius_m", d.strings->contact_radius_m}};
+    put(strings, "strings", "tension", d.strings->tension_N);
+    put(strings, "strings", "string_spacing", d.strings->string_spacing_m);
+    put(strings, "strings", "head_size",
+        3.141592653589793 * d.strings->head_radius_m * d.strings->head_radius_m * 1e4);
+    put(strings, "strings", "contact_radius", d.strings->contact_radius_m);
   } else {
-    j["strings"] = {{"impact_duration_s", d.impact_duration_s}};
+    put(strings, "strings", "impact_duration", d.impact_duration_s);
   }
   // The solved collision's inputs, when not the defaults.
-  if (d.string_bed_mass_kg != kStringBedMass_kg) j["strings"]["bed_mass_kg"] = d.string_bed_mass_kg;
+  if (d.string_bed_mass_kg != kStringBedMass_kg)
+    put(strings, "strings", "bed_mass", d.string_bed_mass_kg);
   if (d.string_bed_damping_ratio != kStringBedDampingRatio)
-    j["strings"]["bed_damping_ratio"] = d.string_bed_damping_ratio;
+    put(strings, "strings", "bed_damping_ratio", d.string_bed_damping_ratio);
+  Json& hand = j[si_key("", "hand")] = Json::object();
+  put(hand, "hand", "mass", d.hand.mass_kg);
+  put(hand, "hand", "center_from_butt", d.hand.center_from_butt_m);
+  put(hand, "hand", "grip_length", d.hand.grip_length_m);
+  put(hand, "hand", "grip_stiffness", d.hand.grip_stiffness_N_m2);
+  put(hand, "hand", "grip_damping", d.hand.grip_damping_N_s_m2);
+  put(j[si_key("", "forearm")], "forearm", "equivalent_mass", d.forearm_equivalent_mass_kg);
+  Json& ball = j[si_key("", "ball")] = Json::object();
+  put(ball, "ball", "mass", d.ball.mass_kg);
+  put(ball, "ball", "speed", d.ball.speed_m_s);
   const BallContactLaw& c = d.ball_contact;
   const BallContactLaw& t = kTennisBallLaw;
-  const bool tennis = c.stiffness == t.stiffness && c.exponent == t.exponent &&
-                      c.damping == t.damping && c.damping_exponent == t.damping_exponent;
-  j["hand"] = {{"mass_kg", d.hand.mass_kg},
-               {"center_from_butt_m", d.hand.center_from_butt_m},
-               {"grip_length_m", d.hand.grip_length_m},
-               {"grip_stiffness_N_m2", d.hand.grip_stiffness_N_m2},
-               {"grip_damping_N_s_m2", d.hand.grip_damping_N_s_m2}};
-  j["forearm"] = {{"equivalent_mass_kg", d.forearm_equivalent_mass_kg}};
-  j["ball"] = {{"mass_kg", d.ball.mass_kg}, {"speed_m_s", d.ball.speed_m_s}};
-  if (!tennis) {
-    j["ball"]["contact"] = {{"stiffness", c.stiffness},
-                            {"exponent", c.exponent},
-                            {"damping", c.damping},
-                            {"damping_exponent", c.damping_exponent}};
+  if (c.stiffness != t.stiffness || c.exponent != t.exponent || c.damping != t.damping ||
+      c.damping_exponent != t.damping_exponent) {
+    Json& contact = ball[si_key("ball", "contact")] = Json::object();
+    put(contact, "ball/contact", "stiffness", c.stiffness);
+    put(contact, "ball/contact", "exponent", c.exponent);
+    put(contact, "ball/contact", "damping", c.damping);
+    put(contact, "ball/contact", "damping_exponent", c.damping_exponent);
   }
-  j["impact"] = {{"from_butt_m", d.impact_from_butt_m}};
-  if (d.impact_off_axis_m != 0.0) j["impact"]["off_axis_m"] = d.impact_off_axis_m;
+  Json& impact = j[si_key("", "impact")] = Json::object();
+  put(impact, "impact", "from_butt", d.impact_from_butt_m);
+  if (d.impact_off_axis_m != 0.0) put(impact, "impact", "off_axis", d.impact_off_axis_m);
   return j;
 }
 

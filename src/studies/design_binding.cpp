@@ -7,6 +7,7 @@
 #include <limits>
 #include <utility>
 
+#include "io/design_fields.hpp"
 #include "io/json_reader.hpp"
 
 namespace sweetspot::studies {
@@ -14,29 +15,170 @@ namespace {
 
 using Setter = void (*)(io::DesignDescription&, std::size_t, double);
 using Form = io::ImplementDescription::Form;
+using D = io::DesignDescription;
 
-// A number of one part of the design: a quantity spelled base + a unit suffix
-// of `dimension`, or (`dimension` empty) a plain number under exactly `base`.
-struct Field {
-  std::string_view base;
-  std::optional<io::Dimension> dimension;
+// What a binding may set: a field of the design's field table (`object`,
+// `stem`; `key` when one spelling sets it differently, "" for every
+// spelling), whether the design as read has that number in that form (entry
+// `index` of a list), how the SI value is written, and whether the implement
+// is rebuilt from it. The spellings and their conversions are the table's;
+// only the writing is here.
+struct FieldSetter {
+  std::string_view object;
+  std::string_view stem;
+  std::string_view key;
+  bool (*available)(const D&, std::size_t index);
   Setter set;
-  bool available;  // whether the design as read has this number in this form
+  bool implement = false;
 };
 
-// The conversion of `key` if it spells one of `fields`, with that field.
-std::optional<std::pair<io::UnitScale, Setter>> match(std::string_view key,
-                                                      std::initializer_list<Field> fields) {
-  for (const Field& f : fields) {
-    if (!f.available) continue;
-    if (!f.dimension) {
-      if (key == f.base) return std::pair{io::UnitScale{}, f.set};
-      continue;
-    }
-    if (const auto scale = io::unit_scale(key, f.base, *f.dimension))
-      return std::pair{*scale, f.set};
-  }
-  return std::nullopt;
+bool always(const D&, std::size_t) { return true; }
+bool ratio_or_specs(const D& d, std::size_t) {
+  return d.implement.form == Form::kHeadToHandleRatio || d.implement.form == Form::kSpecs;
+}
+bool specs(const D& d, std::size_t) { return d.implement.form == Form::kSpecs; }
+bool has_head(const D& d, std::size_t) { return d.implement.head.has_value(); }
+bool has_section(const D& d, std::size_t k) {
+  return d.implement.form == Form::kSections && k < d.implement.sections.size();
+}
+const io::PointMassDescription* entry(const D& d, std::size_t k) {
+  return k < d.implement.point_masses.size() ? &d.implement.point_masses[k] : nullptr;
+}
+bool has_strings(const D& d, std::size_t) { return d.design.strings.has_value(); }
+bool has_cross_section(const D& d, std::size_t) {
+  return d.design.stiffness.shear_modulus_Pa.has_value();
+}
+
+// Every number a sweep, a study or a catalogue column can set. A test checks
+// each row names a field of the table.
+const std::vector<FieldSetter>& field_setters() {
+  static const std::vector<FieldSetter> kSetters{
+      {"implement", "length", "", ratio_or_specs,
+       [](D& x, std::size_t, double v) { x.implement.length_m = v; }, true},
+      {"implement", "mass", "", ratio_or_specs,
+       [](D& x, std::size_t, double v) { x.implement.mass_kg = v; }, true},
+      {"implement", "head_to_handle_mass_ratio", "",
+       [](const D& d, std::size_t) { return d.implement.form == Form::kHeadToHandleRatio; },
+       [](D& x, std::size_t, double v) { x.implement.head_to_handle_mass_ratio = v; }, true},
+      {"implement", "balance", "balance_pts_hl", specs,
+       [](D& x, std::size_t, double v) {
+         x.implement.balance_in_points = true;
+         x.implement.balance = v;
+       },
+       true},
+      {"implement", "balance", "", specs,
+       [](D& x, std::size_t, double v) {
+         x.implement.balance_in_points = false;
+         x.implement.balance = v;
+       },
+       true},
+      {"implement", "swingweight", "", specs,
+       [](D& x, std::size_t, double v) { x.implement.swingweight_kg_m2 = v; }, true},
+      {"implement", "headsize", "", has_head,
+       [](D& x, std::size_t, double v) { x.implement.head->area_m2 = v; }, true},
+      {"implement", "head_aspect_ratio", "", has_head,
+       [](D& x, std::size_t, double v) { x.implement.head->aspect_ratio = v; }, true},
+      {"implement", "hoop_width", "", has_head,
+       [](D& x, std::size_t, double v) { x.implement.head->hoop_width_m = v; }, true},
+      {"implement/sections/N", "length", "", has_section,
+       [](D& x, std::size_t k, double v) { x.implement.sections[k].length_m = v; }, true},
+      {"implement/sections/N", "mass", "", has_section,
+       [](D& x, std::size_t k, double v) { x.implement.sections[k].mass_kg = v; }, true},
+      {"implement/sections/N", "EI", "",
+       [](const D& d, std::size_t k) {
+         return has_section(d, k) && d.implement.sections[k].EI_N_m2.has_value();
+       },
+       [](D& x, std::size_t k, double v) { x.implement.sections[k].EI_N_m2 = v; }, true},
+      // Entry N of the file's list, whatever it holds (a clock pair is one
+      // entry; its mass is each piece's).
+      {"implement/point_masses/N", "mass", "",
+       [](const D& d, std::size_t k) { return entry(d, k) != nullptr; },
+       [](D& x, std::size_t k, double v) { x.implement.point_masses[k].mass_kg = v; }, true},
+      {"implement/point_masses/N", "from_butt", "",
+       [](const D& d, std::size_t k) { return entry(d, k) && entry(d, k)->from_butt_m; },
+       [](D& x, std::size_t k, double v) { x.implement.point_masses[k].from_butt_m = v; }, true},
+      {"implement/point_masses/N", "from_tip", "",
+       [](const D& d, std::size_t k) { return entry(d, k) && entry(d, k)->from_tip_m; },
+       [](D& x, std::size_t k, double v) { x.implement.point_masses[k].from_tip_m = v; }, true},
+      {"implement/point_masses/N", "off_axis", "",
+       [](const D& d, std::size_t k) {
+         const io::PointMassDescription* e = entry(d, k);
+         return e && !e->handle && e->clock_hours.empty();
+       },
+       [](D& x, std::size_t k, double v) { x.implement.point_masses[k].off_axis_m = v; }, true},
+      {"implement/point_masses/N", "clock", "",
+       [](const D& d, std::size_t k) {
+         return entry(d, k) && entry(d, k)->clock_hours.size() == 1;
+       },
+       [](D& x, std::size_t k, double v) { x.implement.point_masses[k].clock_hours = {v}; }, true},
+      {"frame", "cor", "", [](const D& d, std::size_t) { return !d.design.cor_rigid; },
+       [](D& x, std::size_t, double v) { x.design.cor = v; }},
+      {"frame", "cor_rigid", "",
+       [](const D& d, std::size_t) { return d.design.cor_rigid.has_value(); },
+       [](D& x, std::size_t, double v) { x.design.cor_rigid = v; }},
+      {"frame", "EI", "",
+       [](const D& d, std::size_t) { return d.design.stiffness.EI_N_m2.has_value(); },
+       [](D& x, std::size_t, double v) { x.design.stiffness.EI_N_m2 = v; }},
+      {"frame", "fundamental_free", "",
+       [](const D& d, std::size_t) { return d.design.stiffness.fundamental_free_Hz.has_value(); },
+       [](D& x, std::size_t, double v) { x.design.stiffness.fundamental_free_Hz = v; }},
+      {"frame", "RA", "", [](const D& d, std::size_t) { return d.design.stiffness.RA.has_value(); },
+       [](D& x, std::size_t, double v) { x.design.stiffness.RA = v; }},
+      {"frame/cross_section", "shear_modulus_Pa", "", has_cross_section,
+       [](D& x, std::size_t, double v) { x.design.stiffness.shear_modulus_Pa = v; }},
+      {"frame/cross_section", "width", "", has_cross_section,
+       [](D& x, std::size_t, double v) { x.design.stiffness.width_m = v; }},
+      {"frame/cross_section", "thickness", "", has_cross_section,
+       [](D& x, std::size_t, double v) { x.design.stiffness.thickness_m = v; }},
+      {"strings", "impact_duration", "", [](const D& d, std::size_t) { return !d.design.strings; },
+       [](D& x, std::size_t, double v) { x.design.impact_duration_s = v; }},
+      {"strings", "tension", "", has_strings,
+       [](D& x, std::size_t, double v) { x.design.strings->tension_N = v; }},
+      {"strings", "string_spacing", "", has_strings,
+       [](D& x, std::size_t, double v) { x.design.strings->string_spacing_m = v; }},
+      {"strings", "contact_radius", "", has_strings,
+       [](D& x, std::size_t, double v) { x.design.strings->contact_radius_m = v; }},
+      {"strings", "head_size", "",
+       [](const D& d, std::size_t) { return d.design.strings && d.head_area_m2; },
+       [](D& x, std::size_t, double v) { x.head_area_m2 = v; }},
+      {"hand", "mass", "", always, [](D& x, std::size_t, double v) { x.design.hand.mass_kg = v; }},
+      {"hand", "center_from_butt", "", always,
+       [](D& x, std::size_t, double v) { x.design.hand.center_from_butt_m = v; }},
+      {"hand", "grip_length", "", always,
+       [](D& x, std::size_t, double v) { x.design.hand.grip_length_m = v; }},
+      {"hand", "grip_stiffness", "", always,
+       [](D& x, std::size_t, double v) { x.design.hand.grip_stiffness_N_m2 = v; }},
+      {"hand", "grip_damping", "", always,
+       [](D& x, std::size_t, double v) { x.design.hand.grip_damping_N_s_m2 = v; }},
+      {"forearm", "equivalent_mass", "",
+       [](const D& d, std::size_t) { return !d.forearm_from_mass; },
+       [](D& x, std::size_t, double v) { x.design.forearm_equivalent_mass_kg = v; }},
+      {"forearm", "mass", "", [](const D& d, std::size_t) { return d.forearm_from_mass; },
+       [](D& x, std::size_t, double v) { x.forearm_mass_kg = v; }},
+      {"ball", "mass", "", always, [](D& x, std::size_t, double v) { x.design.ball.mass_kg = v; }},
+      {"ball", "speed", "", always,
+       [](D& x, std::size_t, double v) { x.design.ball.speed_m_s = v; }},
+      // A file without an impact takes the one written at the pointer.
+      {"impact", "from_tip", "",
+       [](const D& d, std::size_t) {
+         return d.impact_place == io::ImpactPlace::kFromTip || !d.impact_given;
+       },
+       [](D& x, std::size_t, double v) {
+         x.impact_place = io::ImpactPlace::kFromTip;
+         x.impact_given = true;
+         x.impact_m = v;
+       }},
+      {"impact", "from_butt", "",
+       [](const D& d, std::size_t) {
+         return d.impact_place == io::ImpactPlace::kFromButt || !d.impact_given;
+       },
+       [](D& x, std::size_t, double v) {
+         x.impact_place = io::ImpactPlace::kFromButt;
+         x.impact_given = true;
+         x.impact_m = v;
+       }},
+  };
+  return kSetters;
 }
 
 // "0", "12" (no sign, no leading zero, as a JSON pointer's array index).
@@ -66,250 +208,43 @@ std::vector<std::string_view> tokens_of(std::string_view pointer) {
 
 }  // namespace
 
+std::vector<std::pair<std::string_view, std::string_view>> bindable_fields() {
+  std::vector<std::pair<std::string_view, std::string_view>> fields;
+  for (const FieldSetter& s : field_setters()) fields.emplace_back(s.object, s.stem);
+  return fields;
+}
+
 std::optional<FieldBinding> bind_field(const io::DesignDescription& d, std::string_view pointer) {
   const std::vector<std::string_view> t = tokens_of(pointer);
   if (t.size() < 2) return std::nullopt;
-  const Design& design = d.design;
-  const io::ImplementDescription& implement = d.implement;
-  std::optional<std::pair<io::UnitScale, Setter>> found;
-  bool rebuilds = false;
-  std::size_t index = 0;
-  if (t[0] == "implement" && t.size() == 2) {
-    const bool ratio = implement.form == Form::kHeadToHandleRatio;
-    const bool specs = implement.form == Form::kSpecs;
-    rebuilds = true;
-    found = match(
-        t[1], {{"length", io::Dimension::kLength,
-                [](io::DesignDescription& x, std::size_t, double v) { x.implement.length_m = v; },
-                ratio || specs},
-               {"mass", io::Dimension::kMass,
-                [](io::DesignDescription& x, std::size_t, double v) { x.implement.mass_kg = v; },
-                ratio || specs},
-               {"head_to_handle_mass_ratio", std::nullopt,
-                [](io::DesignDescription& x, std::size_t, double v) {
-                  x.implement.head_to_handle_mass_ratio = v;
-                },
-                ratio},
-               {"balance_from_butt_m", std::nullopt,
-                [](io::DesignDescription& x, std::size_t, double v) {
-                  x.implement.balance_in_points = false;
-                  x.implement.balance = v;
-                },
-                specs},
-               {"balance_pts_hl", std::nullopt,
-                [](io::DesignDescription& x, std::size_t, double v) {
-                  x.implement.balance_in_points = true;
-                  x.implement.balance = v;
-                },
-                specs},
-               {"swingweight", io::Dimension::kInertia,
-                [](io::DesignDescription& x, std::size_t, double v) {
-                  x.implement.swingweight_kg_m2 = v;
-                },
-                specs},
-               {"head_aspect_ratio", std::nullopt,
-                [](io::DesignDescription& x, std::size_t, double v) {
-                  x.implement.head->aspect_ratio = v;
-                },
-                implement.head.has_value()},
-               {"hoop_width", io::Dimension::kLength,
-                [](io::DesignDescription& x, std::size_t, double v) {
-                  x.implement.head->hoop_width_m = v;
-                },
-                implement.head.has_value()}});
-    // The reader scales a balance in cm and a head in cm^2 as a unit does.
-    if (!found && specs && t[1] == "balance_cm") {
-      found = std::pair{io::UnitScale{0.01, -2},
-                        Setter{[](io::DesignDescription& x, std::size_t, double v) {
-                          x.implement.balance_in_points = false;
-                          x.implement.balance = v;
-                        }}};
-    }
-    if (!found && implement.head && (t[1] == "headsize_sq_in" || t[1] == "headsize_cm2")) {
-      found = std::pair{
-          t[1] == "headsize_sq_in" ? io::UnitScale{io::kSquareInch_m2, 0} : io::UnitScale{1e-4, -4},
-          Setter{[](io::DesignDescription& x, std::size_t, double v) {
-            x.implement.head->area_m2 = v;
-          }}};
-    }
-  } else if (t[0] == "implement" && t.size() == 4 &&
-             (t[1] == "sections" || t[1] == "point_masses")) {
-    const auto i = index_of(t[2]);
-    if (!i) return std::nullopt;
-    index = *i;
-    rebuilds = true;
-    if (t[1] == "sections") {
-      const bool has = implement.form == Form::kSections && index < implement.sections.size();
-      found = match(t[3], {{"length", io::Dimension::kLength,
-                            [](io::DesignDescription& x, std::size_t k, double v) {
-                              x.implement.sections[k].length_m = v;
-                            },
-                            has},
-                           {"mass", io::Dimension::kMass,
-                            [](io::DesignDescription& x, std::size_t k, double v) {
-                              x.implement.sections[k].mass_kg = v;
-                            },
-                            has},
-                           {"EI", io::Dimension::kStiffness,
-                            [](io::DesignDescription& x, std::size_t k, double v) {
-                              x.implement.sections[k].EI_N_m2 = v;
-                            },
-                            has && implement.sections[index].EI_N_m2.has_value()}});
+  // The table's object of the pointer: "implement/point_masses/2/mass_g" is
+  // key mass_g of "implement/point_masses/N", entry 2. One index at most.
+  std::string object;
+  std::optional<std::size_t> index;
+  for (std::size_t i = 0; i + 1 < t.size(); ++i) {
+    if (i > 0) object += '/';
+    if (const auto k = index_of(t[i])) {
+      if (index) return std::nullopt;
+      index = k;
+      object += 'N';
     } else {
-      // Entry N of the file's list, whatever it holds (a clock pair is one
-      // entry; its mass is each piece's).
-      const bool has = index < implement.point_masses.size();
-      const io::PointMassDescription* entry = has ? &implement.point_masses[index] : nullptr;
-      const bool on_axis = entry && !entry->handle && entry->clock_hours.empty();
-      found = match(t[3], {{"from_butt", io::Dimension::kLength,
-                            [](io::DesignDescription& x, std::size_t k, double v) {
-                              x.implement.point_masses[k].from_butt_m = v;
-                            },
-                            entry && entry->from_butt_m.has_value()},
-                           {"from_tip", io::Dimension::kLength,
-                            [](io::DesignDescription& x, std::size_t k, double v) {
-                              x.implement.point_masses[k].from_tip_m = v;
-                            },
-                            entry && entry->from_tip_m.has_value()},
-                           {"off_axis", io::Dimension::kLength,
-                            [](io::DesignDescription& x, std::size_t k, double v) {
-                              x.implement.point_masses[k].off_axis_m = v;
-                            },
-                            on_axis},
-                           {"clock", std::nullopt,
-                            [](io::DesignDescription& x, std::size_t k, double v) {
-                              x.implement.point_masses[k].clock_hours = {v};
-                            },
-                            entry && entry->clock_hours.size() == 1},
-                           {"mass", io::Dimension::kMass,
-                            [](io::DesignDescription& x, std::size_t k, double v) {
-                              x.implement.point_masses[k].mass_kg = v;
-                            },
-                            has}});
+      object += t[i];
     }
-  } else if (t.size() == 2 && t[0] == "frame") {
-    found = match(
-        t[1],
-        {{"cor", std::nullopt,
-          [](io::DesignDescription& x, std::size_t, double v) { x.design.cor = v; },
-          !design.cor_rigid},
-         {"cor_rigid", std::nullopt,
-          [](io::DesignDescription& x, std::size_t, double v) { x.design.cor_rigid = v; },
-          design.cor_rigid.has_value()},
-         {"EI", io::Dimension::kStiffness,
-          [](io::DesignDescription& x, std::size_t, double v) { x.design.stiffness.EI_N_m2 = v; },
-          design.stiffness.EI_N_m2.has_value()},
-         {"fundamental_free", io::Dimension::kFrequency,
-          [](io::DesignDescription& x, std::size_t, double v) {
-            x.design.stiffness.fundamental_free_Hz = v;
-          },
-          design.stiffness.fundamental_free_Hz.has_value()},
-         {"RA", std::nullopt,
-          [](io::DesignDescription& x, std::size_t, double v) { x.design.stiffness.RA = v; },
-          design.stiffness.RA.has_value()}});
-  } else if (t.size() == 3 && t[0] == "frame" && t[1] == "cross_section") {
-    const bool has = design.stiffness.shear_modulus_Pa.has_value();
-    found = match(
-        t[2],
-        {{"shear_modulus_Pa", std::nullopt,
-          [](io::DesignDescription& x, std::size_t, double v) {
-            x.design.stiffness.shear_modulus_Pa = v;
-          },
-          has},
-         {"width", io::Dimension::kLength,
-          [](io::DesignDescription& x, std::size_t, double v) { x.design.stiffness.width_m = v; },
-          has},
-         {"thickness", io::Dimension::kLength,
-          [](io::DesignDescription& x, std::size_t, double v) {
-            x.design.stiffness.thickness_m = v;
-          },
-          has}});
-  } else if (t.size() == 2 && t[0] == "strings") {
-    const bool bed = design.strings.has_value();
-    found = match(
-        t[1],
-        {{"impact_duration", io::Dimension::kTime,
-          [](io::DesignDescription& x, std::size_t, double v) { x.design.impact_duration_s = v; },
-          !bed},
-         {"tension", io::Dimension::kForce,
-          [](io::DesignDescription& x, std::size_t, double v) { x.design.strings->tension_N = v; },
-          bed},
-         {"string_spacing", io::Dimension::kLength,
-          [](io::DesignDescription& x, std::size_t, double v) {
-            x.design.strings->string_spacing_m = v;
-          },
-          bed},
-         {"contact_radius", io::Dimension::kLength,
-          [](io::DesignDescription& x, std::size_t, double v) {
-            x.design.strings->contact_radius_m = v;
-          },
-          bed}});
-    // The reader's factors for a head size, as it writes them.
-    if (!found && bed && d.head_area_m2 && (t[1] == "head_size_in2" || t[1] == "head_size_cm2")) {
-      found = std::pair{
-          t[1] == "head_size_in2" ? io::UnitScale{io::kSquareInch_m2, 0} : io::UnitScale{1e-4, -4},
-          Setter{[](io::DesignDescription& x, std::size_t, double v) { x.head_area_m2 = v; }}};
-    }
-  } else if (t.size() == 2 && t[0] == "hand") {
-    found = match(
-        t[1],
-        {{"mass", io::Dimension::kMass,
-          [](io::DesignDescription& x, std::size_t, double v) { x.design.hand.mass_kg = v; }, true},
-         {"center_from_butt", io::Dimension::kLength,
-          [](io::DesignDescription& x, std::size_t, double v) {
-            x.design.hand.center_from_butt_m = v;
-          },
-          true},
-         {"grip_length", io::Dimension::kLength,
-          [](io::DesignDescription& x, std::size_t, double v) { x.design.hand.grip_length_m = v; },
-          true},
-         {"grip_stiffness", io::Dimension::kStiffness,
-          [](io::DesignDescription& x, std::size_t, double v) {
-            x.design.hand.grip_stiffness_N_m2 = v;
-          },
-          true},
-         {"grip_damping", io::Dimension::kDamping,
-          [](io::DesignDescription& x, std::size_t, double v) {
-            x.design.hand.grip_damping_N_s_m2 = v;
-          },
-          true}});
-  } else if (t.size() == 2 && t[0] == "forearm") {
-    found = match(t[1],
-                  {{"equivalent_mass", io::Dimension::kMass,
-                    [](io::DesignDescription& x, std::size_t, double v) {
-                      x.design.forearm_equivalent_mass_kg = v;
-                    },
-                    !d.forearm_from_mass},
-                   {"mass", io::Dimension::kMass,
-                    [](io::DesignDescription& x, std::size_t, double v) { x.forearm_mass_kg = v; },
-                    d.forearm_from_mass}});
-  } else if (t.size() == 2 && t[0] == "ball") {
-    found = match(
-        t[1],
-        {{"mass", io::Dimension::kMass,
-          [](io::DesignDescription& x, std::size_t, double v) { x.design.ball.mass_kg = v; }, true},
-         {"speed", io::Dimension::kSpeed,
-          [](io::DesignDescription& x, std::size_t, double v) { x.design.ball.speed_m_s = v; },
-          true}});
-  } else if (t.size() == 2 && t[0] == "impact") {
-    // A file without an impact takes the one written at the pointer.
-    found = match(t[1], {{"from_tip", io::Dimension::kLength,
-                          [](io::DesignDescription& x, std::size_t, double v) {
-                            x.impact_place = io::ImpactPlace::kFromTip;
-                            x.impact_given = true;
-                            x.impact_m = v;
-                          },
-                          d.impact_place == io::ImpactPlace::kFromTip || !d.impact_given},
-                         {"from_butt", io::Dimension::kLength,
-                          [](io::DesignDescription& x, std::size_t, double v) {
-                            x.impact_place = io::ImpactPlace::kFromButt;
-                            x.impact_given = true;
-                            x.impact_m = v;
-                          },
-                          d.impact_place == io::ImpactPlace::kFromButt || !d.impact_given}});
   }
-  if (!found) return std::nullopt;
-  return FieldBinding{std::string(pointer), found->first, found->second, index, rebuilds};
+  const bool list = object.ends_with("/N");
+  if (list != index.has_value() || (index && object.find('N') != object.size() - 1))
+    return std::nullopt;
+  const std::string_view key = t.back();
+  const auto spelling = io::find_spelling(object, key);
+  if (!spelling) return std::nullopt;
+  const std::size_t at = index.value_or(0);
+  for (const FieldSetter& s : field_setters()) {
+    if (s.object != spelling->field->object || s.stem != spelling->field->stem) continue;
+    if (!s.key.empty() && s.key != key) continue;
+    if (!s.available(d, at)) return std::nullopt;
+    return FieldBinding{std::string(pointer), spelling->scale, s.set, at, s.implement};
+  }
+  return std::nullopt;
 }
 
 std::optional<CompiledDesign> CompiledDesign::compile(io::DesignDescription description,

@@ -14,6 +14,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "io/design_description.hpp"
@@ -36,6 +37,10 @@ struct FieldBinding {
 // published value, a name, a key of another form of the implement).
 std::optional<FieldBinding> bind_field(const io::DesignDescription& description,
                                        std::string_view pointer);
+
+// The fields of the design's field table (object, stem) that a binding can
+// set, one row per setter (a field with two setters appears twice).
+std::vector<std::pair<std::string_view, std::string_view>> bindable_fields();
 
 // A design read once, with some of its numbers bound to JSON pointers.
 class CompiledDesign {

@@ -554,3 +554,52 @@ TEST_CASE("Each field's default in the table is the reader's and the schema's") 
 }
 
 }  // namespace sweetspot::io
+
+namespace sweetspot::io {
+
+// Checks that every key of `node` (a JSON object of the table's `object`) is
+// the SI key of one of the table's fields there, recursing into the objects
+// and lists the table describes.
+void check_si_keys(const Json& node, const std::string& object) {
+  for (const auto& [key, value] : node.items()) {
+    INFO(object << "/" << key);
+    bool si = false;
+    for (const DesignField& field : design_fields())
+      si = si || (field.object == object && field.si_key == key);
+    CHECK(si);
+    const std::string inner = object.empty() ? key : object + "/" + key;
+    if (value.is_object()) check_si_keys(value, inner);
+    if (value.is_array()) {
+      for (const Json& item : value) {
+        if (item.is_object()) check_si_keys(item, inner + "/N");
+      }
+    }
+  }
+}
+
+TEST_CASE("design_to_json writes only the field table's SI keys, and they read back exactly") {
+  for (const char* text : {
+           R"({"name": "specs + tape + head", "implement": {"length_in": 27, "mass_g": 305,
+               "balance_cm": 32, "swingweight_kg_cm2": 325, "headsize_sq_in": 100,
+               "twistweight_kg_cm2": 14,
+               "point_masses": [{"clock": [3, 9], "mass_g": 2}, {"from_tip_cm": 1, "mass_g": 4,
+               "off_axis_cm": 1}]}, "impact": {"from_tip_cm": 17, "off_axis_cm": 2}})",
+           R"({"implement": {"sections": [{"length_m": 0.3, "mass_kg": 0.12, "EI_N_m2": 300},
+               {"length_m": 0.4, "mass_kg": 0.16, "EI_N_m2": 400}]},
+               "frame": {"cor_rigid": 0.85, "cross_section": {"shear_modulus_Pa": 3e9,
+               "width_cm": 2, "thickness_cm": 1}}})",
+           R"({"implement": {"length_m": 0.7, "mass_kg": 0.25,
+               "head_to_handle_mass_ratio": 0.8}, "frame": {"RA": 65},
+               "strings": {"tension_lb": 55, "bed_mass_g": 6, "bed_damping_ratio": 0.01},
+               "ball": {"speed_km_h": 100, "contact": {"stiffness": 3e5}},
+               "forearm": {"mass_kg": 1.2}})"}) {
+    const DesignFile original = read(text);
+    const Json written = design_to_json(original);
+    check_si_keys(written, "");
+    // In SI the numbers read back as written: the same design, bit for bit.
+    const DesignFile again = read_design(written, "again.json");
+    CHECK(design_to_json(again) == written);
+  }
+}
+
+}  // namespace sweetspot::io

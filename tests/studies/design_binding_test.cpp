@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdint>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -550,6 +551,19 @@ TEST_CASE("The binding sets only fields of the design's field table, in the tabl
     }
   }
   CHECK(bound > 50);
+}
+
+}  // namespace sweetspot::studies
+
+namespace sweetspot::studies {
+
+TEST_CASE("Every number a binding sets is a field of the design's field table") {
+  for (const auto& [object, stem] : bindable_fields()) {
+    INFO(object << "/" << stem);
+    CHECK_NOTHROW(io::si_key(object, stem));
+  }
+  // And the fields it leaves to the file: a name, a list, a law.
+  CHECK_THROWS_AS(io::si_key("implement", "weight"), std::logic_error);
 }
 
 }  // namespace sweetspot::studies
