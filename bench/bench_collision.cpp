@@ -12,6 +12,7 @@
 #include "io/format.hpp"
 #include "sweetspot/collision.hpp"
 #include "sweetspot/evaluate.hpp"
+#include "sweetspot/mode_cache.hpp"
 
 namespace sweetspot::bench {
 namespace {
@@ -94,15 +95,27 @@ void bench_collision(const BenchOptions& options, std::ostream& log) {
   const double modes_us = median_us(options.repeats, 5, [&] { response_model(d, ro); });
   const double evaluate_us =
       median_us(options.repeats, 5, [&] { evaluate(d, Fidelity::kCollision); });
+  // A catalogue row or a study point that changes only the impact: the
+  // frame's modes kept by a ModeCache (as the studies keep them per thread).
+  ModeCache cache;
+  Design moved = d;
+  int row = 0;
+  const double row_us = median_us(options.repeats, 50, [&] {
+    moved.impact_from_butt_m = d.impact_from_butt_m - 0.001 * (row++ % 20);
+    evaluate(moved, Fidelity::kCollision, 1e-6, cache);
+  });
   md += fmt::format(
       "\nThe default (64 steps per contact, extrapolated): {:.1f} us after the modes are known, "
       "error {:.1e} in the COR against a tenth of the step. The free modes take {:.0f} us; "
       "`evaluate` at fidelity collision (the free modes, the collision, the rigid model and the "
-      "hand-held modes for the modal outputs) {:.0f} us.\n\nTargets (issue 12): 1e-6 in the COR "
-      "in at most 50 us after the modes are known ({}), at most 100 us in all ({}).\n",
-      default_us, default_error, modes_us, evaluate_us,
+      "hand-held modes for the modal outputs) {:.0f} us; the same for a catalogue row or a study "
+      "point that changes only the impact (the frame's modes kept, mode_cache.hpp) {:.0f} us."
+      "\n\nTargets (issues 12 and 22): 1e-6 in the COR in at most 50 us after the modes are "
+      "known ({}); at most 100 us in all, modes included ({}); a row that changes only the "
+      "impact at most 100 us ({}).\n",
+      default_us, default_error, modes_us, evaluate_us, row_us,
       default_us <= 50.0 && std::abs(default_error) <= 1e-6 ? "met" : "NOT met",
-      default_us + modes_us <= 100.0 ? "met" : "NOT met");
+      evaluate_us <= 100.0 ? "met" : "NOT met", row_us <= 100.0 ? "met" : "NOT met");
   io::write_file_atomically(options.out_dir + "/speed-vs-error-collision.md", md);
   io::write_file_atomically(options.out_dir + "/speed-vs-error-collision.csv", csv);
   log << fmt::format("collision: {:.1f} us, error {:.1e}; wrote {}/speed-vs-error-collision.md\n",

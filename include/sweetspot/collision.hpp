@@ -66,6 +66,8 @@
 
 namespace sweetspot {
 
+class ModeCache;  // mode_cache.hpp
+
 // ------------------------------------------------------------ the strings and frame
 
 // The string bed's moving part between ball and frame: its stiffness, the
@@ -188,6 +190,8 @@ class DesignCollision {
   // one (frame/cor_rigid), no string tension (strings/tension_N) or no
   // stiffness (frame/EI_N_m2).
   explicit DesignCollision(const Design& design, double rel_tol = 1e-6);
+  // The same, with the free modes from `cache` (mode_cache.hpp).
+  DesignCollision(const Design& design, double rel_tol, ModeCache& cache);
 
   // The frame as the ball sees it at `from_butt_m` on the axis and
   // `off_axis_m` across it. Throws std::invalid_argument (impact/off_axis_m)
@@ -206,6 +210,7 @@ class DesignCollision {
   const ResponseModel& model() const { return model_; }
 
  private:
+  void init(double rel_tol, ModeCache& cache);
   Design design_;
   ResponseModel model_;
   StringBedDynamics bed_;

@@ -16,6 +16,8 @@
 
 namespace sweetspot {
 
+class ModeCache;  // mode_cache.hpp
+
 struct Evaluation {
   // The implement (with its point masses), Section III.
   double length_m = 0.0;
@@ -167,10 +169,19 @@ Evaluation evaluate(const Design& design);
 // "frame/cor_rigid".
 Evaluation evaluate(const Design& design, Fidelity fidelity, double rel_tol = 1e-6);
 
+// The same, with the frame's modes taken from `cache` when the last design
+// it saw has the same frame, stiffness and hand (mode_cache.hpp): a
+// catalogue's rows or a study's points that change only the impact, the
+// ball or the strings then solve no modes. The numbers are the same, bit
+// for bit.
+Evaluation evaluate(const Design& design, Fidelity fidelity, double rel_tol, ModeCache& cache);
+
 // evaluate(design, fidelity, rel_tol) for a design validate() has accepted
 // (a sweep's point after its numbers were set and checked): the same numbers
 // and the same exceptions, without validating the design a second time.
 Evaluation evaluate_validated(const Design& design, Fidelity fidelity, double rel_tol = 1e-6);
+Evaluation evaluate_validated(const Design& design, Fidelity fidelity, double rel_tol,
+                              ModeCache& cache);
 
 // Only what rigid_outcome() answers of evaluate(design, Fidelity::kRigid), for
 // a design validate() has accepted: effective_mass_kg, apparent_cor,

@@ -11,11 +11,23 @@
 #include "sweetspot/frame_modes.hpp"
 #include "sweetspot/impact_response.hpp"
 #include "sweetspot/invariants.hpp"
+#include "sweetspot/mode_cache.hpp"
 #include "sweetspot/rigid_impact.hpp"
 
 namespace sweetspot {
 
 DesignCollision::DesignCollision(const Design& design, double rel_tol) : design_(design) {
+  ModeCache cache;
+  init(rel_tol, cache);
+}
+
+DesignCollision::DesignCollision(const Design& design, double rel_tol, ModeCache& cache)
+    : design_(design) {
+  init(rel_tol, cache);
+}
+
+void DesignCollision::init(double rel_tol, ModeCache& cache) {
+  const Design& design = design_;
   if (design.cor_rigid) {
     throw std::invalid_argument(
         "frame/cor_rigid: the solved collision derives the COR itself; give neither cor nor "
@@ -41,7 +53,7 @@ DesignCollision::DesignCollision(const Design& design, double rel_tol) : design_
   ResponseOptions options;
   options.modes = kCollisionModes;
   options.rel_tol = rel_tol;
-  model_ = response_model(design, options);
+  model_ = cache.response_model(design, options);
   bed_ = string_bed_dynamics(*design.strings, design.string_bed_mass_kg,
                              design.string_bed_damping_ratio);
   polar_inertia_kg_m2_ = polar_inertia_kg_m2(design);
@@ -101,8 +113,8 @@ CollisionResult DesignCollision::at(double from_butt_m, double off_axis_m,
   return r;
 }
 
-Evaluation evaluate_collision(const Design& design, double rel_tol) {
-  const DesignCollision collision(design, rel_tol);
+Evaluation evaluate_collision(const Design& design, double rel_tol, ModeCache& cache) {
+  const DesignCollision collision(design, rel_tol, cache);
   CollisionOptions collision_options;
   collision_options.record_history = true;
   CollisionResult r =
@@ -116,7 +128,7 @@ Evaluation evaluate_collision(const Design& design, double rel_tol) {
   resolved.strings.reset();
   resolved.cor = std::clamp(cor, 0.0, 1.0);
   resolved.impact_duration_s = r.contact_time_s;
-  Evaluation e = evaluate(resolved, Fidelity::kModal, rel_tol);
+  Evaluation e = evaluate(resolved, Fidelity::kModal, rel_tol, cache);
   e.cor = cor;
   e.cor_derived = true;
   e.impact_duration_s = r.contact_time_s;

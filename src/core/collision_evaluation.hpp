@@ -9,6 +9,6 @@ namespace sweetspot {
 
 // See evaluate() for Fidelity::kCollision. Throws std::invalid_argument naming
 // the design's JSON path when the design cannot be solved.
-Evaluation evaluate_collision(const Design& design, double rel_tol);
+Evaluation evaluate_collision(const Design& design, double rel_tol, ModeCache& cache);
 
 }  // namespace sweetspot

@@ -8,6 +8,7 @@
 #include "core/collision_evaluation.hpp"
 #include "sweetspot/impact_response.hpp"
 #include "sweetspot/invariants.hpp"
+#include "sweetspot/mode_cache.hpp"
 #include "sweetspot/rigid_impact.hpp"
 
 namespace sweetspot {
@@ -74,9 +75,15 @@ double settled_duration(const Design& design) {
 Evaluation evaluate(const Design& design) { return evaluate(design, Fidelity::kRigid); }
 
 Evaluation evaluate_validated(const Design& design, Fidelity fidelity, double rel_tol) {
+  ModeCache cache;
+  return evaluate_validated(design, fidelity, rel_tol, cache);
+}
+
+Evaluation evaluate_validated(const Design& design, Fidelity fidelity, double rel_tol,
+                              ModeCache& cache) {
   if (fidelity == Fidelity::kRigid && !design.cor_rigid && !design.strings)
     return evaluate_settled_valid(design);
-  return evaluate(design, fidelity, rel_tol);
+  return evaluate(design, fidelity, rel_tol, cache);
 }
 
 Fidelity needed_fidelity(const Design& design) {
@@ -87,7 +94,12 @@ Fidelity needed_fidelity(const Design& design) {
 }
 
 Evaluation evaluate(const Design& design, Fidelity fidelity, double rel_tol) {
-  if (fidelity == Fidelity::kCollision) return evaluate_collision(design, rel_tol);
+  ModeCache cache;
+  return evaluate(design, fidelity, rel_tol, cache);
+}
+
+Evaluation evaluate(const Design& design, Fidelity fidelity, double rel_tol, ModeCache& cache) {
+  if (fidelity == Fidelity::kCollision) return evaluate_collision(design, rel_tol, cache);
   // The rigid model with a given COR and duration (a sweep's or a catalogue's
   // every point): nothing to settle, so neither a copy of the design nor a
   // second validation; the same checks, in the same order, and the same numbers.
@@ -107,7 +119,7 @@ Evaluation evaluate(const Design& design, Fidelity fidelity, double rel_tol) {
   std::vector<std::pair<double, double>> mode_energies;  // frequency [Hz], energy [J]
   std::optional<double> vibration_energy;
   if (fidelity == Fidelity::kResponse) {
-    const ResponseModel model = response_model(resolved, ResponseOptions{});
+    const ResponseModel& model = cache.response_model(resolved, ResponseOptions{});
     std::vector<double> kappa;
     if (design.cor_rigid) {
       try {
@@ -142,7 +154,7 @@ Evaluation evaluate(const Design& design, Fidelity fidelity, double rel_tol) {
   }
   Evaluation e = evaluate_settled(resolved);
   e.impact_duration_derived = duration_derived;
-  if (fidelity != Fidelity::kRigid) e.modal = evaluate_modes(resolved, rel_tol);
+  if (fidelity != Fidelity::kRigid) e.modal = cache.modal_outputs(resolved, rel_tol);
   if (e.modal) {
     // Cross (2004) Sec. III: a half-sine of duration T excites modes up to about 1.5/T.
     const double limit_Hz = 1.5 / resolved.impact_duration_s;

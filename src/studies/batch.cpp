@@ -24,6 +24,7 @@
 #include "io/outputs.hpp"
 #include "io/parallel.hpp"
 #include "studies/design_binding.hpp"
+#include "studies/thread_mode_cache.hpp"
 #include "sweetspot/evaluate.hpp"
 #include "sweetspot/frame_modes.hpp"
 
@@ -606,7 +607,8 @@ class Evaluator {
       const Fidelity fidelity = resolve_fidelity(
           options_.fidelity.empty() ? std::string_view(shape.fidelity) : options_.fidelity,
           *design);
-      outcome.evaluation.emplace(evaluate_validated(*design, fidelity, options_.modal_tolerance));
+      outcome.evaluation.emplace(
+          evaluate_validated(*design, fidelity, options_.modal_tolerance, thread_mode_cache()));
     } catch (const std::exception&) {
       outcome.evaluation.reset();
       return false;
@@ -729,7 +731,8 @@ class Evaluator {
         const Fidelity fidelity = resolve_fidelity(
             options_.fidelity.empty() ? std::string_view(design.fidelity) : options_.fidelity,
             design.design);
-        outcome.evaluation = evaluate(design.design, fidelity, options_.modal_tolerance);
+        outcome.evaluation =
+            evaluate(design.design, fidelity, options_.modal_tolerance, thread_mode_cache());
       } catch (const std::invalid_argument& e) {
         io::rethrow_in(io::read_design(document, where),
                        e);  // with the key map, to name the user's key

@@ -11,6 +11,7 @@
 
 #include "io/input_error.hpp"
 #include "studies/design_binding.hpp"
+#include "studies/thread_mode_cache.hpp"
 #include "sweetspot/evaluate.hpp"
 
 namespace sweetspot::studies {
@@ -542,7 +543,7 @@ Evaluation evaluate_in(const Study& study, const io::DesignFile& design) {
 }
 
 Evaluation evaluate_in(const Study& study, const Design& design) {
-  return evaluate(design, study.fidelity, study.modal_tolerance);
+  return evaluate(design, study.fidelity, study.modal_tolerance, thread_mode_cache());
 }
 
 bool compiled_for_variables(const Study& study) {
@@ -608,7 +609,8 @@ std::optional<std::string> objective_undefined(const Study& study, const io::Des
                " m long";
       }
       d.impact_from_butt_m = x;
-      if (auto why = terms_undefined(study, evaluate(d, study.fidelity, study.modal_tolerance)))
+      if (auto why = terms_undefined(
+              study, evaluate(d, study.fidelity, study.modal_tolerance, thread_mode_cache())))
         return why;
     }
   } catch (const std::invalid_argument& e) {
@@ -640,7 +642,8 @@ double objective_of(const Study& study, const Design& design) {
       } else {
         d.impact_from_butt_m = x;
         try {
-          value = terms_value(study, evaluate(d, study.fidelity, study.modal_tolerance));
+          value = terms_value(
+              study, evaluate(d, study.fidelity, study.modal_tolerance, thread_mode_cache()));
         } catch (const std::invalid_argument&) {
         }
       }

@@ -9,6 +9,7 @@
 #include "io/input_error.hpp"
 #include "io/parallel.hpp"
 #include "studies/design_binding.hpp"
+#include "studies/thread_mode_cache.hpp"
 #include "sweetspot/evaluate.hpp"
 
 namespace sweetspot::studies {
@@ -114,7 +115,8 @@ class SweepWorker {
       const Design* design = bound_->at(std::span<const double>(values, pointers_.size()));
       if (!design) return nullptr;
       if (!(outcome_only_ && evaluate_rigid_outcome(*design, evaluation_)))
-        evaluation_ = evaluate_validated(*design, study_.fidelity, study_.modal_tolerance);
+        evaluation_ = evaluate_validated(*design, study_.fidelity, study_.modal_tolerance,
+                                         thread_mode_cache());
       share_row(*design, row);
       return &evaluation_;
     } catch (const std::exception&) {

@@ -1,0 +1,47 @@
+#pragma once
+
+// The frame's modes kept from one evaluation to the next. A catalogue's rows,
+// a sweep's points or a study's iterations that change only the impact, the
+// ball or the strings share the frame, and solving its modes is most of an
+// evaluation's time (the hand-held modes alone are about half of one at
+// collision fidelity). A ModeCache holds the last frame's modes and solves
+// them again only when an input they depend on differs, bit for bit, so an
+// evaluation through it gives the same numbers as one without it.
+//
+// Not thread-safe: one per thread. It holds one frame (the last one).
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "sweetspot/design.hpp"
+#include "sweetspot/frame_modes.hpp"
+#include "sweetspot/impact_response.hpp"
+
+namespace sweetspot {
+
+class ModeCache {
+ public:
+  // evaluate_modes(design, rel_tol): the free and hand-held fundamentals and
+  // their nodes. Depends on the implement, its stiffness, the hand and rel_tol.
+  const ModalOutputs& modal_outputs(const Design& design, double rel_tol);
+
+  // response_model(design, options). Depends on the same and the options.
+  const ResponseModel& response_model(const Design& design, const ResponseOptions& options);
+
+  // How many mode sets were solved and how many were reused, over the
+  // cache's life (for tests and benchmarks).
+  std::size_t solves() const { return solves_; }
+  std::size_t reuses() const { return reuses_; }
+
+ private:
+  std::vector<std::uint64_t> modal_key_;
+  std::optional<ModalOutputs> modal_;
+  std::vector<std::uint64_t> response_key_;
+  std::optional<ResponseModel> response_;
+  std::size_t solves_ = 0;
+  std::size_t reuses_ = 0;
+};
+
+}  // namespace sweetspot
