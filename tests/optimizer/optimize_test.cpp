@@ -125,7 +125,7 @@ TEST_CASE("The evaluation budget counts difference evaluations and is never exce
   options.max_evaluations = 25;
   const optimizer::Summary s = minimize(rosenbrock(), options);
   CHECK(s.evaluations <= 25);
-  CHECK(s.termination.find("MAXEVAL") != std::string::npos);
+  CHECK(s.termination == optimizer::Termination::kMaxEvaluations);
 }
 
 TEST_CASE("A time budget too short for one step ends cleanly with the start as the best point") {
@@ -153,7 +153,7 @@ TEST_CASE("A time budget too short for one step ends cleanly with the start as t
         CHECK(s.history.size() == static_cast<std::size_t>(s.evaluations));
         CHECK(s.violation_history.size() == static_cast<std::size_t>(s.evaluations));
         CHECK(std::isfinite(s.objective));
-        CHECK(s.termination.find("MAXTIME_REACHED") != std::string::npos);
+        CHECK(s.termination == optimizer::Termination::kMaxTime);
         if (seconds == 1e-9) {
           CHECK(s.evaluations == 1);
           CHECK(s.x == p.start);
@@ -172,7 +172,7 @@ TEST_CASE("An evaluation budget of one evaluates the start and nothing else") {
     const optimizer::Summary s = minimize(rosenbrock(), options);
     CHECK(s.evaluations == 1);
     CHECK(s.x == rosenbrock().start);
-    CHECK(s.termination.find("MAXEVAL_REACHED") != std::string::npos);
+    CHECK(s.termination == optimizer::Termination::kMaxEvaluations);
   }
 }
 
@@ -281,7 +281,7 @@ TEST_CASE(
       minimize(tilted_box(a, std::vector<double>(6, 0.5)), optimizer::OptimizeOptions{});
   CHECK(s.x == std::vector<double>{1, 0, 1, 0, 1, 0});
   CHECK(s.objective == -5.5);
-  CHECK(s.termination.starts_with("VERTEX_FIRST_ORDER"));
+  CHECK(s.termination == optimizer::Termination::kVertexFirstOrder);
   // The global check costs as much as the local stage: 14 + 14 samples.
   CHECK(s.evaluations == 28);
   CHECK(s.algorithm.find("1 vertex walked downhill") != std::string::npos);
@@ -312,7 +312,7 @@ TEST_CASE("The vertex walk follows a sign that changes at the first vertex") {
   CHECK(s.objective == brute);
   CHECK(s.x == std::vector<double>{1, 1});
   CHECK(s.algorithm.find("2 vertices walked downhill") != std::string::npos);
-  CHECK(s.termination.starts_with("VERTEX_FIRST_ORDER"));
+  CHECK(s.termination == optimizer::Termination::kVertexFirstOrder);
 }
 
 TEST_CASE("An interior optimum ends the vertex walk and the local search finds it") {
@@ -374,6 +374,7 @@ TEST_CASE("Threads give the same search, evaluation for evaluation, when the pro
       CHECK(a.history == b.history);
       CHECK(a.algorithm == b.algorithm);
       CHECK(a.termination == b.termination);
+      CHECK(a.termination_text() == b.termination_text());
     }
   }
 }
