@@ -6,9 +6,11 @@
 // at a point; minimize() searches (with NLopt, hidden in src/) and returns a
 // Summary. Nothing here prints.
 
+#include <array>
 #include <functional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace sweetspot::optimizer {
@@ -86,6 +88,43 @@ struct OptimizeOptions {
   std::string validate() const;
 };
 
+// Why the last stage of a run stopped. NLopt's own reasons keep NLopt's
+// names; sweetspot's budget, its stall detection and auto's vertex walk add
+// theirs.
+enum class Termination {
+  kSuccess,           // NLopt: SUCCESS (a method's own convergence test)
+  kStopValueReached,  // NLopt: STOPVAL_REACHED
+  kFtolReached,       // NLopt: FTOL_REACHED, the objective changed by under f_tolerance_rel
+  kXtolReached,       // NLopt: XTOL_REACHED, steps under x_tolerance_rel of each range
+  // The evaluation budget: sweetspot's (max_evaluations, differences
+  // included) or NLopt's count of its own calls, set to what is left of it.
+  kMaxEvaluations,
+  kMaxTime,           // the time budget (max_seconds), by sweetspot's clock or NLopt's
+  kStalled,           // a local search found no better point in many evaluations
+  kVertexFirstOrder,  // auto: a vertex of the box where no inward step improves
+  kRoundoffLimited,   // NLopt: ROUNDOFF_LIMITED (the point is still typically good)
+  kForcedStop,        // NLopt stopped by an exception the budget does not explain
+  kInvalidArguments,  // NLopt refused the problem (INVALID_ARGS)
+  kFailure,           // NLopt failed (FAILURE), or no run filled the Summary
+};
+
+// Every Termination, in declaration order.
+inline constexpr std::array kTerminations = {
+    Termination::kSuccess,     Termination::kStopValueReached, Termination::kFtolReached,
+    Termination::kXtolReached, Termination::kMaxEvaluations,   Termination::kMaxTime,
+    Termination::kStalled,     Termination::kVertexFirstOrder, Termination::kRoundoffLimited,
+    Termination::kForcedStop,  Termination::kInvalidArguments, Termination::kFailure,
+};
+
+// The reason's name as reports print it, e.g. "XTOL_REACHED",
+// "VERTEX_FIRST_ORDER"; Summary::termination_detail may follow it.
+std::string_view message(Termination termination);
+
+// True for the reasons that mean the run failed rather than stopped:
+// kForcedStop, kInvalidArguments, kFailure. A spent budget, a stall or
+// NLopt's round-off limit still leave the best point seen as an answer.
+bool is_failure(Termination termination);
+
 struct Summary {
   std::vector<double> x;  // best point found
   double objective = 0.0;
@@ -93,8 +132,12 @@ struct Summary {
   bool feasible = false;            // every constraint within its tolerance at x
   int evaluations = 0;
   double seconds = 0.0;
-  std::string algorithm;    // what ran, e.g. "samples(16) + LD_SLSQP x3"
-  std::string termination;  // NLopt's reason of the last stage, e.g. "XTOL_REACHED"
+  std::string algorithm;  // what ran, e.g. "auto: LD_SLSQP from the start, 16 Halton samples"
+  // Why the last stage stopped, and what message() cannot know of it: whose
+  // budget (" (sweetspot's budget)"), the stall's length, auto's difference
+  // step, NLopt's error text (": ..."); "" for most reasons.
+  Termination termination = Termination::kFailure;
+  std::string termination_detail;
   // Objective of the best point after each evaluation, feasible points ranking
   // before infeasible ones (which rank by their constraint violation).
   std::vector<double> history;
@@ -103,6 +146,13 @@ struct Summary {
   // every limit, <= 1 feasible).
   std::vector<double> violation_history;
 
+  // message(termination) + termination_detail, e.g. "MAXEVAL_REACHED
+  // (sweetspot's budget, including differences)": the words reports print.
+  std::string termination_text() const;
+  // Whether x is an answer: feasible, and the run stopped rather than failed
+  // (!is_failure(termination)). A run its budget stopped is usable: x is the
+  // best point it saw.
+  bool usable() const;
   std::string brief_report() const;
 };
 
@@ -114,7 +164,7 @@ bool is_known_algorithm(const std::string& name);
 // (sizes, bounds, start outside the bounds, unknown algorithm). Failing to
 // converge is not an exception: it is in Summary::termination. The start is
 // evaluated whatever the budget, so the Summary always holds a point; a spent
-// budget ends the run with MAXEVAL_REACHED or MAXTIME_REACHED.
+// budget ends the run with Termination::kMaxEvaluations or kMaxTime.
 Summary minimize(const Problem& problem, const OptimizeOptions& options);
 
 // Central-difference gradient of f at x with step h_i = step_rel (upper_i -

@@ -168,7 +168,7 @@ std::string optimization_report(const studies::Study& study, const studies::Opti
         r.start_objective ? io::Json(*r.start_objective) : io::Json(nullptr);
     j["feasible"] = r.outcome == studies::Outcome::kOptimum;
     j["evaluations"] = r.summary.evaluations;
-    j["termination"] = r.summary.termination;
+    j["termination"] = r.summary.termination_text();
     j["algorithm"] = r.summary.algorithm;
     j["seconds"] = r.summary.seconds;
     io::Json& variables = j["variables"];
@@ -239,7 +239,7 @@ std::string optimization_report(const studies::Study& study, const studies::Opti
       "\n## Search\n\nObjective (minimised form) {} after {} evaluations; {}; termination: "
       "{}.{}\n",
       has_value ? io::significant(r.summary.objective) : std::string("—"), r.summary.evaluations,
-      r.summary.algorithm, r.summary.termination,
+      r.summary.algorithm, r.summary.termination_text(),
       with_timing ? fmt::format(" Wall time {:.2f} ms.", r.summary.seconds * 1e3) : std::string());
   md +=
       "\n## Outputs, start and optimum\n\n| output | start | optimum | unit "
@@ -460,7 +460,7 @@ std::string optimization_html(const studies::Study& study, const studies::Optimi
 
   html += "<section id=\"search\"><h2>The search</h2>\n" + convergence_html(study, r) +
           fmt::format("<p>{} evaluations; {}; termination: {}.</p>\n", r.summary.evaluations,
-                      html_escape(r.summary.algorithm), html_escape(r.summary.termination)) +
+                      html_escape(r.summary.algorithm), html_escape(r.summary.termination_text())) +
           "</section>\n";
 
   const char* best_name = r.outcome == studies::Outcome::kOptimum ? "the best design"

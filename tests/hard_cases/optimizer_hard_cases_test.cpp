@@ -44,7 +44,7 @@ void check_finite_and_inside(const studies::Study& study, const studies::Optimiz
   for (const double h : r.summary.history) CHECK(std::isfinite(h));
   CHECK(r.summary.evaluations > 0);
   CHECK(r.summary.evaluations <= study.options.max_evaluations);
-  CHECK_FALSE(r.summary.termination.empty());
+  CHECK_FALSE(optimizer::is_failure(r.summary.termination));
 }
 
 // x_i = lo + (hi - lo) i / (points - 1), both ends included exactly.

@@ -6,7 +6,9 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <set>
 #include <string>
+#include <string_view>
 #include <thread>
 
 namespace sweetspot {
@@ -125,7 +127,7 @@ TEST_CASE("The evaluation budget counts difference evaluations and is never exce
   options.max_evaluations = 25;
   const optimizer::Summary s = minimize(rosenbrock(), options);
   CHECK(s.evaluations <= 25);
-  CHECK(s.termination.find("MAXEVAL") != std::string::npos);
+  CHECK(s.termination == optimizer::Termination::kMaxEvaluations);
 }
 
 TEST_CASE("A time budget too short for one step ends cleanly with the start as the best point") {
@@ -153,7 +155,7 @@ TEST_CASE("A time budget too short for one step ends cleanly with the start as t
         CHECK(s.history.size() == static_cast<std::size_t>(s.evaluations));
         CHECK(s.violation_history.size() == static_cast<std::size_t>(s.evaluations));
         CHECK(std::isfinite(s.objective));
-        CHECK(s.termination.find("MAXTIME_REACHED") != std::string::npos);
+        CHECK(s.termination == optimizer::Termination::kMaxTime);
         if (seconds == 1e-9) {
           CHECK(s.evaluations == 1);
           CHECK(s.x == p.start);
@@ -172,7 +174,77 @@ TEST_CASE("An evaluation budget of one evaluates the start and nothing else") {
     const optimizer::Summary s = minimize(rosenbrock(), options);
     CHECK(s.evaluations == 1);
     CHECK(s.x == rosenbrock().start);
-    CHECK(s.termination.find("MAXEVAL_REACHED") != std::string::npos);
+    CHECK(s.termination == optimizer::Termination::kMaxEvaluations);
+  }
+}
+
+TEST_CASE("Every termination reason has a message of its own") {
+  // kTerminations lists the enum in declaration order, so it holds them all.
+  for (std::size_t i = 0; i < optimizer::kTerminations.size(); ++i)
+    CHECK(static_cast<std::size_t>(optimizer::kTerminations[i]) == i);
+  std::set<std::string_view> seen;
+  for (const optimizer::Termination t : optimizer::kTerminations) {
+    INFO(static_cast<int>(t));
+    CHECK_FALSE(optimizer::message(t).empty());
+    CHECK(seen.insert(optimizer::message(t)).second);
+  }
+}
+
+TEST_CASE("Every budget short of what a search needs ends it with kMaxEvaluations, on its path") {
+  // The unlimited search needs N evaluations and stops on a tolerance; with a
+  // budget b < N the same search is cut short: kMaxEvaluations, at most b
+  // evaluations, its history the first evaluations of the unlimited one, and
+  // its best point, feasible, usable. auto may spend its last evaluation
+  // otherwise: NLopt's own count, which includes the cached start, can end
+  // the local search one evaluation early, and a Halton sample takes it.
+  for (const char* algorithm : {"auto", "LD_SLSQP", "LN_BOBYQA"}) {
+    INFO(algorithm);
+    optimizer::OptimizeOptions options;
+    options.algorithm = algorithm;
+    const optimizer::Summary full = minimize(rosenbrock(), options);
+    REQUIRE(full.termination != optimizer::Termination::kMaxEvaluations);
+    REQUIRE(full.usable());
+    REQUIRE(full.evaluations >= 2);
+    for (int budget = 1; budget < full.evaluations; ++budget) {
+      INFO("budget " << budget << " of " << full.evaluations);
+      options.max_evaluations = budget;
+      const optimizer::Summary s = minimize(rosenbrock(), options);
+      CHECK(s.termination == optimizer::Termination::kMaxEvaluations);
+      CHECK(s.termination_text().starts_with(optimizer::message(s.termination)));
+      CHECK(s.evaluations <= budget);
+      REQUIRE(s.history.size() == static_cast<std::size_t>(s.evaluations));
+      const int same = std::string_view(algorithm) == "auto" ? s.evaluations - 1 : s.evaluations;
+      CHECK(std::equal(s.history.begin(), s.history.begin() + same, full.history.begin()));
+      CHECK(s.usable());
+    }
+  }
+}
+
+TEST_CASE("A summary is usable when its point is feasible and the run did not fail") {
+  // x >= 3 asked of x in [0, 1] (the infeasible case below): never usable,
+  // whatever ended the run; x >= 0.5 instead: usable.
+  optimizer::Problem p;
+  p.lower = {0};
+  p.upper = {1};
+  p.start = {0.75};
+  double limit = 3.0;
+  p.constraints = {{"x >= limit", optimizer::ConstraintKind::kAtMostZero, 1e-9}};
+  p.evaluate = [&limit](std::span<const double> x, double& f, std::span<double> c) {
+    f = x[0];
+    c[0] = limit - x[0];
+  };
+  const optimizer::Summary infeasible = minimize(p, optimizer::OptimizeOptions{});
+  CHECK_FALSE(infeasible.feasible);
+  CHECK_FALSE(infeasible.usable());
+  limit = 0.5;
+  optimizer::Summary feasible = minimize(p, optimizer::OptimizeOptions{});
+  REQUIRE(feasible.feasible);
+  CHECK(feasible.usable());
+  CHECK(feasible.x[0] == Approx(0.5).margin(kOptimumTolerance));
+  for (const optimizer::Termination t : optimizer::kTerminations) {
+    INFO(optimizer::message(t));
+    feasible.termination = t;
+    CHECK(feasible.usable() == !optimizer::is_failure(t));
   }
 }
 
@@ -281,7 +353,7 @@ TEST_CASE(
       minimize(tilted_box(a, std::vector<double>(6, 0.5)), optimizer::OptimizeOptions{});
   CHECK(s.x == std::vector<double>{1, 0, 1, 0, 1, 0});
   CHECK(s.objective == -5.5);
-  CHECK(s.termination.starts_with("VERTEX_FIRST_ORDER"));
+  CHECK(s.termination == optimizer::Termination::kVertexFirstOrder);
   // The global check costs as much as the local stage: 14 + 14 samples.
   CHECK(s.evaluations == 28);
   CHECK(s.algorithm.find("1 vertex walked downhill") != std::string::npos);
@@ -312,7 +384,7 @@ TEST_CASE("The vertex walk follows a sign that changes at the first vertex") {
   CHECK(s.objective == brute);
   CHECK(s.x == std::vector<double>{1, 1});
   CHECK(s.algorithm.find("2 vertices walked downhill") != std::string::npos);
-  CHECK(s.termination.starts_with("VERTEX_FIRST_ORDER"));
+  CHECK(s.termination == optimizer::Termination::kVertexFirstOrder);
 }
 
 TEST_CASE("An interior optimum ends the vertex walk and the local search finds it") {
@@ -374,6 +446,7 @@ TEST_CASE("Threads give the same search, evaluation for evaluation, when the pro
       CHECK(a.history == b.history);
       CHECK(a.algorithm == b.algorithm);
       CHECK(a.termination == b.termination);
+      CHECK(a.termination_text() == b.termination_text());
     }
   }
 }
