@@ -6,8 +6,6 @@
 #include <algorithm>
 #include <cstdlib>
 #include <iostream>
-#include <nlohmann/json.hpp>
-#include <streambuf>
 #include <string>
 #include <vector>
 
@@ -117,72 +115,6 @@ int OptimizeCommand::run() const {
 
 namespace {
 
-// A stream buffer that turns the sweep's CSV (header, then one row a line;
-// a quoted field never spans lines) into JSON Lines as it streams.
-class JsonLinesFromCsv : public std::streambuf {
- public:
-  explicit JsonLinesFromCsv(std::ostream& out) : out_(out) {}
-
- protected:
-  int overflow(int c) override {
-    if (c == traits_type::eof()) return traits_type::not_eof(c);
-    if (c == '\n') {
-      line_done();
-    } else {
-      line_ += static_cast<char>(c);
-    }
-    return c;
-  }
-  std::streamsize xsputn(const char* s, std::streamsize n) override {
-    for (std::streamsize i = 0; i < n; ++i) overflow(static_cast<unsigned char>(s[i]));
-    return n;
-  }
-
- private:
-  static std::vector<std::string> fields(const std::string& line) {
-    std::vector<std::string> out(1);
-    bool quoted = false;
-    for (std::size_t i = 0; i < line.size(); ++i) {
-      const char c = line[i];
-      if (quoted && c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
-        out.back() += '"';
-        ++i;
-      } else if (c == '"') {
-        quoted = !quoted;
-      } else if (c == ',' && !quoted) {
-        out.emplace_back();
-      } else {
-        out.back() += c;
-      }
-    }
-    return out;
-  }
-  void line_done() {
-    std::vector<std::string> row = fields(line_);
-    line_.clear();
-    if (header_.empty()) {
-      header_ = std::move(row);
-      return;
-    }
-    nlohmann::ordered_json object = nlohmann::ordered_json::object();
-    for (std::size_t k = 0; k < header_.size() && k < row.size(); ++k) {
-      if (header_[k] == "error") {
-        object["error"] =
-            row[k].empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(row[k]);
-      } else {
-        object[header_[k]] = row[k].empty()
-                                 ? nlohmann::ordered_json(nullptr)
-                                 : nlohmann::ordered_json(std::strtod(row[k].c_str(), nullptr));
-      }
-    }
-    out_ << object.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace) << '\n';
-  }
-
-  std::ostream& out_;
-  std::string line_;
-  std::vector<std::string> header_;
-};
-
 // The plot of the sweep's k-th output: FILE, or FILE-<output>.png for several.
 std::string sweep_png(const studies::Study& study, const std::string& plot, std::size_t k) {
   return study.sweep_outputs.size() > 1
@@ -228,7 +160,8 @@ int SweepCommand::run() const {
     for (std::size_t k = 0; k < study.sweep_outputs.size(); ++k)
       plan.write("--plot", sweep_png(study, plot, k));
   }
-  const studies::SweepOptions options{threads};
+  studies::SweepOptions options{threads};
+  options.format = format == "json" ? io::Format::kJson : io::Format::kCsv;
   Progress shown("designs", !quiet);
   const auto progress = [&](std::size_t done, std::size_t total) {
     shown.update(done, total);
@@ -237,16 +170,7 @@ int SweepCommand::run() const {
   std::vector<io::Plot> plots;
   io::OutputSet outputs;
   OutputOptions{"csv", csv_path}.emit_stream(
-      [&](std::ostream& out) {
-        if (format == "json") {
-          JsonLinesFromCsv json(out);
-          std::ostream csv(&json);
-          plots = studies::run_sweep(study, csv, progress, options);
-          csv.flush();
-        } else {
-          plots = studies::run_sweep(study, out, progress, options);
-        }
-      },
+      [&](std::ostream& out) { plots = studies::run_sweep(study, out, progress, options); },
       outputs);
   if (!plot.empty() && plots.empty()) {
     std::cerr << "sweetspot: no plot: the grid has more than " << studies::kMaxPlotPoints

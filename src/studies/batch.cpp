@@ -11,18 +11,19 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
-#include <deque>
 #include <map>
 #include <memory>
 #include <span>
 #include <stdexcept>
 #include <vector>
 
+#include "io/csv.hpp"
 #include "io/design_fields.hpp"
 #include "io/design_reader.hpp"
 #include "io/input_error.hpp"
 #include "io/outputs.hpp"
 #include "io/parallel.hpp"
+#include "io/rows.hpp"
 #include "studies/design_binding.hpp"
 #include "studies/thread_mode_cache.hpp"
 #include "sweetspot/evaluate.hpp"
@@ -31,7 +32,6 @@
 namespace sweetspot::studies {
 namespace {
 
-constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
 constexpr std::string_view kBlank = " \t";
 
 std::string_view trimmed(std::string_view text) {
@@ -47,270 +47,6 @@ std::string shown(std::string_view text) { return io::brief(io::Json(io::valid_u
 // field, where a double quote would be written twice ("got ""VS5""").
 std::string shown_cell(std::string_view text) {
   return "'" + io::one_line(io::valid_utf8(text)) + "'";
-}
-
-// Whether `text` is all ASCII, which is valid UTF-8: most catalogues' lines,
-// told in one pass (which the compiler vectorises) before the byte-by-byte
-// UTF-8 check.
-bool is_ascii(std::string_view text) {
-  unsigned char any = 0;
-  for (const char c : text) any |= static_cast<unsigned char>(c);
-  return any < 0x80;
-}
-
-// The lines of a catalogue, each read into a buffer that never grows past
-// kMaxBatchLineBytes: a longer line, a NUL byte, bytes that are not UTF-8
-// and a failed read are refused with the line they are on. A byte-order mark
-// opening the input is skipped.
-class LineReader {
- public:
-  LineReader(std::istream& in, const std::string& source)
-      : in_(in), source_(source), buffer_(1 << 16) {}
-
-  std::size_t line_number() const { return line_; }
-  // The bytes read from the input so far.
-  std::uint64_t bytes_read() const { return bytes_read_; }
-
-  // Hands `lines` back, to be read again in order by next().
-  void unread(std::vector<std::string> lines) {
-    for (auto line = lines.rbegin(); line != lines.rend(); ++line)
-      unread_.push_front(std::move(*line));
-    line_ -= lines.size();
-  }
-
-  // The next line without its "\n" (or "\r\n"), appended to `text` after a
-  // "\n" when `continued` (a CSV record going on inside quotes); false at the
-  // end of the input.
-  bool next(std::string& text, bool continued = false) {
-    if (!continued) text.clear();
-    if (!unread_.empty()) {  // a line handed back, already checked
-      if (continued) text += '\n';
-      text += unread_.front();
-      unread_.pop_front();
-      ++line_;
-      return true;
-    }
-    const std::size_t start = text.size() + (continued ? 1 : 0);
-    if (continued) text += '\n';
-    bool any = false;
-    for (;;) {
-      if (begin_ == end_ && !fill()) break;
-      any = true;
-      const char* from = buffer_.data() + begin_;
-      const auto* newline = static_cast<const char*>(std::memchr(from, '\n', end_ - begin_));
-      const std::size_t take = newline ? static_cast<std::size_t>(newline - from) : end_ - begin_;
-      if (text.size() + take > kMaxBatchLineBytes) {
-        refuse(line_ + 1,
-               continued
-                   ? fmt::format("a CSV record longer than {} bytes, the limit (is a quoted "
-                                 "field left open?)",
-                                 kMaxBatchLineBytes)
-                   : fmt::format("a line longer than {} bytes, the limit", kMaxBatchLineBytes));
-      }
-      if (std::memchr(from, '\0', take))
-        refuse(line_ + 1, "a NUL byte: the file is binary, expected text");
-      text.append(from, take);
-      begin_ += take;
-      if (newline) {
-        ++begin_;
-        break;
-      }
-    }
-    if (!any) {
-      if (continued) text.pop_back();
-      return false;
-    }
-    ++line_;
-    if (text.size() > start && text.back() == '\r') text.pop_back();
-    if (line_ == 1 && std::string_view(text).starts_with(kByteOrderMark))
-      text.erase(0, kByteOrderMark.size());
-    const std::string_view added = std::string_view(text).substr(start);
-    const std::size_t bad = is_ascii(added) ? std::string_view::npos : io::invalid_utf8_at(added);
-    if (bad != std::string_view::npos) {
-      refuse(line_,
-             fmt::format("byte {} is not UTF-8 text (expected a UTF-8 CSV or JSON Lines file)",
-                         bad + 1));
-    }
-    return true;
-  }
-
-  [[noreturn]] void refuse(std::size_t line, const std::string& detail) const {
-    throw io::InputError(fmt::format("{}:{}", source_, line), "", detail);
-  }
-
- private:
-  bool fill() {
-    if (end_of_input_) return false;
-    errno = 0;
-    in_.read(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
-    const int error = errno;
-    if (in_.bad()) {
-      throw io::ReadError(source_,
-                          fmt::format("cannot read line {}{}{}", line_ + 1, error ? ": " : "",
-                                      error ? std::strerror(error) : ""));
-    }
-    begin_ = 0;
-    end_ = static_cast<std::size_t>(in_.gcount());
-    bytes_read_ += end_;
-    if (end_ == 0) end_of_input_ = true;
-    return end_ > 0;
-  }
-
-  std::istream& in_;
-  const std::string& source_;
-  std::vector<char> buffer_;
-  std::size_t begin_ = 0;
-  std::size_t end_ = 0;
-  std::size_t line_ = 0;
-  std::uint64_t bytes_read_ = 0;
-  std::deque<std::string> unread_;
-  bool end_of_input_ = false;
-};
-
-// Where a CSV record stands after some of its text: whether a line break
-// there is inside a quoted field (a quote opens one only at a field's start).
-class CsvScan {
- public:
-  bool inside_quotes() const { return state_ == State::kQuoted; }
-  void read(std::string_view text) {
-    for (const char c : text) {
-      switch (state_) {
-        case State::kFieldStart:
-          state_ = c == '"' ? State::kQuoted : c == ',' ? State::kFieldStart : State::kUnquoted;
-          break;
-        case State::kUnquoted:
-          if (c == ',') state_ = State::kFieldStart;
-          break;
-        case State::kQuoted:
-          if (c == '"') state_ = State::kQuote;
-          break;
-        case State::kQuote:
-          state_ = c == '"' ? State::kQuoted : c == ',' ? State::kFieldStart : State::kUnquoted;
-          break;
-      }
-    }
-  }
-
- private:
-  enum class State {
-    kFieldStart,
-    kUnquoted,
-    kQuoted,
-    kQuote
-  };  // kQuote: a quote inside a quoted field
-  State state_ = State::kFieldStart;
-};
-
-// Reads the lines that continue `record` while a quoted field is open. A
-// quote left open to the end of the input makes the record its first line
-// alone (that row's error says the quote is not closed) and hands the lines
-// after it back, to be read as rows of their own.
-void complete_record(LineReader& reader, std::string& record) {
-  if (record.find('"') == std::string::npos) return;  // no quote, no quoted field left open
-  CsvScan scan;
-  scan.read(record);
-  const std::size_t first_line_end = record.size();
-  while (scan.inside_quotes()) {
-    const std::size_t from = record.size();
-    if (!reader.next(record, true)) {
-      std::vector<std::string> rest;
-      for (std::size_t at = first_line_end; at < record.size();) {
-        const std::size_t end = std::min(record.find('\n', at + 1), record.size());
-        rest.emplace_back(record, at + 1, end - at - 1);
-        at = end;
-      }
-      record.resize(first_line_end);
-      reader.unread(std::move(rest));
-      return;
-    }
-    scan.read(std::string_view(record).substr(from));
-  }
-}
-
-// One CSV record split into its fields. The fields are views into the
-// record, or into `unquoted` for a quoted field, so the record must outlive
-// them; one CsvRecord is reused from row to row, allocating nothing once
-// it has grown to the rows' size.
-struct CsvRecord {
-  std::vector<std::string_view> fields;  // the first `max_fields` fields
-  std::size_t count = 0;                 // how many fields the record has
-  std::string error;                     // why it is not RFC 4180 CSV, "" when it is
-  std::string unquoted;                  // the quoted fields' text, quotes taken off
-};
-
-// Splits one CSV record (RFC 4180) into `out`: fields separated by commas; a
-// field in double quotes may hold commas, line breaks and quotes written
-// twice. A quote inside an unquoted field, or text after a closing quote, is
-// an error.
-void split_csv(std::string_view record, std::size_t max_fields, CsvRecord& out) {
-  out.fields.clear();
-  out.count = 0;
-  out.error.clear();
-  out.unquoted.clear();
-  // Never longer than the record: the views into it stay valid as it grows.
-  out.unquoted.reserve(record.size());
-  const bool quotes = record.find('"') != std::string_view::npos;  // most records have none
-  std::size_t i = 0;
-  for (;;) {
-    const std::size_t number = out.count + 1;
-    std::string_view field;
-    if (i < record.size() && record[i] == '"') {
-      const std::size_t start = out.unquoted.size();
-      for (++i;; ++i) {
-        if (i == record.size()) {
-          out.error = fmt::format("field {}: a quoted field is not closed", number);
-          return;
-        }
-        if (record[i] != '"') {
-          out.unquoted += record[i];
-        } else if (i + 1 < record.size() && record[i + 1] == '"') {
-          out.unquoted += '"';
-          ++i;
-        } else {
-          ++i;
-          break;
-        }
-      }
-      if (i < record.size() && record[i] != ',') {
-        out.error = fmt::format(
-            "field {}: text after the closing quote (quote the whole field, "
-            "writing a quote inside it twice)",
-            number);
-        return;
-      }
-      field = std::string_view(out.unquoted).substr(start);
-    } else {
-      const std::size_t end = std::min(record.find(',', i), record.size());
-      field = record.substr(i, end - i);
-      if (quotes && field.find('"') != std::string_view::npos) {
-        out.error = fmt::format(
-            "field {}: a quote inside an unquoted field (quote the whole field, "
-            "writing a quote inside it twice)",
-            number);
-        return;
-      }
-      i = end;
-    }
-    if (out.count++ < max_fields) out.fields.push_back(field);
-    if (i == record.size()) return;
-    ++i;  // the comma
-  }
-}
-
-// Whether a CSV record has no cell at all: only commas, blanks and empty
-// quoted fields (",,,," is the row a spreadsheet writes for an empty line).
-bool blank_record(std::string_view record) {
-  for (std::size_t at = 0; at < record.size(); ++at) {
-    const char c = record[at];
-    if (c == ',' || c == ' ' || c == '\t') continue;
-    if (c == '"' && at + 1 < record.size() && record[at + 1] == '"' &&
-        (at + 2 == record.size() || record[at + 2] == ',')) {
-      ++at;
-      continue;
-    }
-    return false;
-  }
-  return true;
 }
 
 // Columns that hold text, not numbers.
@@ -373,8 +109,8 @@ struct Header {
 // mapped onto one or passed through), none given twice, in two units or
 // forms, or inside another; every column of the map in the header.
 Header read_header(std::string_view line, const std::string& where, const BatchOptions& options) {
-  CsvRecord record;
-  split_csv(line, kMaxBatchColumns, record);
+  io::CsvRecord record;
+  io::split_csv(line, kMaxBatchColumns, record);
   if (!record.error.empty())
     throw io::InputError(where, "", "the header is not CSV: " + record.error);
   if (record.count > kMaxBatchColumns) {
@@ -561,8 +297,8 @@ class Evaluator {
       evaluate_general(row, outcome, nullptr);
       return;
     }
-    CsvRecord& record = records_[thread];
-    split_csv(row.text, header_.count, record);
+    io::CsvRecord& record = records_[thread];
+    io::split_csv(row.text, header_.count, record);
     const bool whole = record.error.empty() && record.count == header_.count;
     if (whole) {
       for (const std::size_t k : header_.passed) row.passed.emplace_back(record.fields[k]);
@@ -578,7 +314,7 @@ class Evaluator {
  private:
   // The row set on its shape's compiled design; false (and the row as it
   // was) when the JSON path must read it.
-  bool evaluate_compiled(Row& row, Outcome& outcome, const CsvRecord& record,
+  bool evaluate_compiled(Row& row, Outcome& outcome, const io::CsvRecord& record,
                          std::size_t thread) const {
     const std::vector<std::string_view>& cells = record.fields;
     std::uint64_t mask = 0;
@@ -668,12 +404,12 @@ class Evaluator {
   }
 
   // The JSON path: the row written over the base document and read again.
-  void evaluate_general(Row& row, Outcome& outcome, const CsvRecord* record) const {
+  void evaluate_general(Row& row, Outcome& outcome, const io::CsvRecord* record) const {
     const std::string where = fmt::format("{}:{}", source_, row.line);
     try {
       io::Json document = options_.base ? *options_.base : io::Json::object();
       if (record) {
-        const CsvRecord& cells = *record;
+        const io::CsvRecord& cells = *record;
         if (!cells.error.empty()) throw io::InputError(where, "", "not CSV: " + cells.error);
         if (cells.count != header_.count) {
           throw io::InputError(where, "",
@@ -780,21 +516,14 @@ class Evaluator {
   enum class CellKind { kName, kText, kNumber };
   std::vector<CellKind> kinds_;
   mutable std::vector<std::map<std::uint64_t, Shape>> shapes_;  // per thread
-  mutable std::vector<CsvRecord> records_;                      // per thread: the row's fields
+  mutable std::vector<io::CsvRecord> records_;                  // per thread: the row's fields
 };
 
-// csv_field(text) appended to `out`, without a copy for text that needs no
-// quotes, escape or neutralising.
-void append_cell(std::string& out, std::string_view text) {
-  if (io::csv_plain(text)) {
-    out += text;
-  } else {
-    out += io::csv_field(text);
-  }
-}
-
+// A row: in CSV through `csv` (io/rows.hpp), in JSON Lines as evaluate's
+// own object for the design (outputs nested as evaluate writes them), with
+// the line, the error and the columns passed through.
 void write_row(const Row& row, const Outcome& outcome, const Header& header, io::Format format,
-               std::string& out) {
+               const io::RowWriter& csv, std::string& out) {
   const std::optional<Evaluation>& evaluation = outcome.evaluation;
   if (format == io::Format::kJson) {
     io::Json j = evaluation && outcome.file ? evaluation_json(*outcome.file, *evaluation)
@@ -814,33 +543,19 @@ void write_row(const Row& row, const Outcome& outcome, const Header& header, io:
     out += "\n";
     return;
   }
-  char number[24];
-  out.append(number, std::to_chars(number, number + sizeof number, row.line).ptr);
-  out += ',';
-  append_cell(out, row.name);
+  std::size_t column = 0;
+  csv.number(column++, static_cast<double>(row.line), out);
+  csv.text(column++, row.name, out);
   for (std::size_t i = 0; i < header.passed.size(); ++i) {
-    out += ',';
-    if (i < row.passed.size()) append_cell(out, row.passed[i]);
+    csv.text(column++,
+             i < row.passed.size() ? std::optional<std::string_view>(row.passed[i]) : std::nullopt,
+             out);
   }
-  // The outputs written into a buffer a few at a time and appended together.
-  constexpr std::size_t kAtOnce = 16;
-  char buffer[kAtOnce * (io::kMaxExactChars + 1)];
-  char* end = buffer;
-  std::size_t pending = 0;
-  for (const io::OutputSpec& o : io::output_specs()) {
-    const auto value = evaluation ? o.value(*evaluation) : std::nullopt;
-    *end++ = ',';
-    if (value) end = io::write_exact(end, *value);
-    if (++pending == kAtOnce) {
-      out.append(buffer, static_cast<std::size_t>(end - buffer));
-      end = buffer;
-      pending = 0;
-    }
-  }
-  out.append(buffer, static_cast<std::size_t>(end - buffer));
-  out += ',';
-  if (!row.error.empty()) out += io::csv_field(row.error);
-  out += '\n';
+  for (const io::OutputSpec& o : io::output_specs())
+    csv.number(column++, evaluation ? o.value(*evaluation) : std::nullopt, out);
+  csv.text(column, row.error.empty() ? std::nullopt : std::optional<std::string_view>(row.error),
+           out);
+  csv.end_row(out);
 }
 
 // A sorted catalogue's rows, in bounded memory: each row's text goes to a
@@ -1018,7 +733,7 @@ std::vector<std::pair<std::string, std::string>> column_map_from_json(const io::
 
 BatchSummary run_batch(std::istream& in, const std::string& source, const BatchOptions& options,
                        std::ostream& out) {
-  LineReader reader(in, source);
+  io::LineReader reader(in, source, kMaxBatchLineBytes);
   std::string line;
   // The first line that is not blank: the CSV header, or the first design.
   bool have_line = false;
@@ -1050,9 +765,10 @@ BatchSummary run_batch(std::istream& in, const std::string& source, const BatchO
     if (!sort_by) throw std::invalid_argument("sort_output: no output " + options.sort_output);
   }
   if (csv) {
-    complete_record(reader, line);
+    io::complete_record(reader, line);
     header = read_header(line, header_at, options);
   }
+  const std::unique_ptr<io::RowWriter> csv_rows = io::row_writer(io::Format::kCsv);
   if (options.format == io::Format::kCsv) {
     // A column passed through keeps its name, which must not be one of the output's own.
     std::vector<std::string_view> own{"line", "name", "error"};
@@ -1066,10 +782,13 @@ BatchSummary run_batch(std::istream& in, const std::string& source, const BatchO
                         k + 1, shown(header.names[k]), shown(header.names[k])));
       }
     }
-    out << "line,name";
-    for (const std::size_t k : header.passed) out << "," << io::csv_field(header.names[k]);
-    for (const io::OutputSpec& o : io::output_specs()) out << "," << o.name;
-    out << ",error\n";
+    std::vector<std::string> names{"line", "name"};
+    for (const std::size_t k : header.passed) names.push_back(header.names[k]);
+    for (const io::OutputSpec& o : io::output_specs()) names.emplace_back(o.name);
+    names.emplace_back("error");
+    std::string text;
+    csv_rows->header(std::move(names), text);
+    out << text;
   }
   const Evaluator evaluator(source, options, csv, std::move(header));
   BatchSummary summary;
@@ -1087,20 +806,20 @@ BatchSummary run_batch(std::istream& in, const std::string& source, const BatchO
     // own block of text (or, sorted, its own row); the blocks are written in order.
     for (std::string& text : texts) text.clear();
     const std::span<Row> read(chunk.data(), rows);
-    io::for_blocks(read.size(), options.threads,
-                   [&](std::size_t t, std::size_t from, std::size_t to) {
-                     for (std::size_t i = from; i < to; ++i) {
-                       Row& row = read[i];
-                       Outcome& outcome = outcomes[t];
-                       evaluator.evaluate_row(row, outcome, t);
-                       if (sort_by) {
-                         if (outcome.evaluation) row.key = sort_by->value(*outcome.evaluation);
-                         write_row(row, outcome, evaluator.header(), options.format, row.out);
-                       } else {
-                         write_row(row, outcome, evaluator.header(), options.format, texts[t]);
-                       }
-                     }
-                   });
+    io::for_blocks(
+        read.size(), options.threads, [&](std::size_t t, std::size_t from, std::size_t to) {
+          for (std::size_t i = from; i < to; ++i) {
+            Row& row = read[i];
+            Outcome& outcome = outcomes[t];
+            evaluator.evaluate_row(row, outcome, t);
+            if (sort_by) {
+              if (outcome.evaluation) row.key = sort_by->value(*outcome.evaluation);
+              write_row(row, outcome, evaluator.header(), options.format, *csv_rows, row.out);
+            } else {
+              write_row(row, outcome, evaluator.header(), options.format, *csv_rows, texts[t]);
+            }
+          }
+        });
     for (const Row& row : read) {
       if (!row.bad_column) continue;
       const DesignColumn& column = evaluator.header().design[row.bad_column - 1];
@@ -1129,8 +848,8 @@ BatchSummary run_batch(std::istream& in, const std::string& source, const BatchO
     pending = false;
     const std::size_t line_number = reader.line_number();
     if (trimmed(line).empty()) continue;
-    if (csv) complete_record(reader, line);
-    if (csv && blank_record(line)) continue;  // the empty last row a spreadsheet exports
+    if (csv) io::complete_record(reader, line);
+    if (csv && io::blank_record(line)) continue;  // the empty last row a spreadsheet exports
     chunk_bytes += line.size();
     if (rows == chunk.size()) chunk.emplace_back();
     chunk[rows++].start(line_number, line);

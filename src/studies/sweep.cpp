@@ -4,10 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include "io/format.hpp"
 #include "io/input_error.hpp"
 #include "io/parallel.hpp"
+#include "io/rows.hpp"
 #include "studies/design_binding.hpp"
 #include "studies/thread_mode_cache.hpp"
 #include "sweetspot/evaluate.hpp"
@@ -27,8 +29,9 @@ namespace {
 // variable fastest), each evaluated into its CSV row and its plot values.
 class SweepWorker {
  public:
-  SweepWorker(const Study& study, const std::vector<double>& second, const SweepOptions& options)
-      : study_(study), second_(second), document_(study.design_document) {
+  SweepWorker(const Study& study, const std::vector<double>& second, const SweepOptions& options,
+              const io::RowWriter& rows)
+      : study_(study), rows_(rows), second_(second), document_(study.design_document) {
     const bool share_rows = options.share_rows;
     for (const StudyVariable& variable : study.variables) pointers_.emplace_back(variable.pointer);
     if (options.compiled && compiled_for_variables(study)) bound_.emplace(*study.compiled);
@@ -41,7 +44,7 @@ class SweepWorker {
                     });
     if (study.variables[0].values.size() <= kCachedTexts) {
       for (const double value : study.variables[0].values)
-        io::append_exact(first_text_.emplace_back(), value);
+        rows_.number(0, value, first_text_.emplace_back());
     }
     // The impact point as read_design() reads it: "/impact/from_tip_<unit>" or
     // "/impact/from_butt_<unit>", converted by the same factor.
@@ -55,7 +58,7 @@ class SweepWorker {
     }
   }
 
-  // Appends point p's CSV row to `text` and its outputs to `values`.
+  // Appends point p's row to `text` and its outputs to `values`.
   void point(std::size_t p, std::string& text, std::optional<double>* values) {
     const std::size_t n0 = study_.variables[0].values.size();
     const std::size_t row = p / n0;
@@ -76,30 +79,28 @@ class SweepWorker {
     if (p % n0 < first_text_.size()) {
       text += first_text_[p % n0];
     } else {
-      io::append_exact(text, v);
+      rows_.number(0, v, text);
     }
+    std::size_t column = 1;
     if (study_.variables.size() == 2) {
       if (second_text_row_ != row) {
-        second_text_.assign(1, ',');
-        io::append_exact(second_text_, second_[row]);
+        second_text_.clear();
+        rows_.number(1, second_[row], second_text_);
         second_text_row_ = row;
       }
       text += second_text_;
+      ++column;
     }
-    char buffer[io::kMaxExactChars + 1];
     for (std::size_t k = 0; k < study_.sweep_outputs.size(); ++k) {
       values[k] = e ? study_.sweep_outputs[k]->value(*e) : std::nullopt;
-      char* end = buffer;
-      *end++ = ',';
-      if (values[k]) end = io::write_exact(end, *values[k]);
-      text.append(buffer, static_cast<std::size_t>(end - buffer));
+      rows_.number(column++, values[k], text);
     }
-    text += ',';
-    if (!error.empty()) text += io::csv_field(error);
-    text += '\n';
+    rows_.text(column, error.empty() ? std::nullopt : std::optional<std::string_view>(error), text);
+    rows_.end_row(text);
   }
 
  private:
+  const io::RowWriter& rows_;
   struct Impact {
     bool from_tip;
     io::UnitScale to_si;
@@ -167,7 +168,7 @@ class SweepWorker {
   // The first variable's values as CSV text (when there are at most
   // kCachedTexts of them), and ",second" for the current row.
   static constexpr std::size_t kCachedTexts = 100000;
-  std::vector<std::string> first_text_;
+  std::vector<std::string> first_text_;  // each value's cell, when there are few
   std::string second_text_;
   std::size_t second_text_row_ = static_cast<std::size_t>(-1);
   std::optional<ImpactSweep> shared_;
@@ -177,7 +178,7 @@ class SweepWorker {
 
 }  // namespace
 
-std::vector<io::Plot> run_sweep(const Study& study, std::ostream& csv,
+std::vector<io::Plot> run_sweep(const Study& study, std::ostream& out,
                                 const std::function<void(std::size_t, std::size_t)>& progress,
                                 const SweepOptions& options) {
   if (study.variables.size() > 2) {
@@ -194,10 +195,14 @@ std::vector<io::Plot> run_sweep(const Study& study, std::ostream& csv,
   const std::size_t outputs = study.sweep_outputs.size();
   const bool keep = total <= kMaxPlotPoints;
 
-  csv << first.pointer;
-  if (study.variables.size() == 2) csv << "," << study.variables[1].pointer;
-  for (const io::OutputSpec* o : study.sweep_outputs) csv << "," << o->name;
-  csv << ",error\n";
+  const std::unique_ptr<io::RowWriter> rows = io::row_writer(options.format);
+  std::vector<std::string> names;
+  for (const StudyVariable& variable : study.variables) names.emplace_back(variable.pointer);
+  for (const io::OutputSpec* o : study.sweep_outputs) names.emplace_back(o->name);
+  names.emplace_back("error");
+  std::string header;
+  rows->header(std::move(names), header);
+  out << header;
 
   // Axes and keys in a reader's words and units (io/plot.hpp), never the pointers.
   const io::AxisQuantity x_axis = io::pointer_axis(first.pointer);
@@ -220,7 +225,7 @@ std::vector<io::Plot> run_sweep(const Study& study, std::ostream& csv,
   }
   const int threads = std::max(1, options.threads);
   std::vector<SweepWorker> workers;
-  for (int t = 0; t < threads; ++t) workers.emplace_back(study, second, options);
+  for (int t = 0; t < threads; ++t) workers.emplace_back(study, second, options, *rows);
   std::vector<std::string> texts(threads);
   std::vector<std::optional<double>> values(kSweepChunkPoints * outputs);
   for (std::size_t begin = 0; begin < total; begin += kSweepChunkPoints) {
@@ -230,7 +235,7 @@ std::vector<io::Plot> run_sweep(const Study& study, std::ostream& csv,
       for (std::size_t i = from; i < to; ++i)
         workers[t].point(begin + i, texts[t], &values[i * outputs]);
     });
-    for (const std::string& text : texts) csv << text;
+    for (const std::string& text : texts) out << text;
     if (keep) {
       for (std::size_t i = 0; i < count; ++i) {
         const std::size_t p = begin + i;

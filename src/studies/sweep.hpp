@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "io/format.hpp"
 #include "io/plot.hpp"
 #include "studies/study.hpp"
 
@@ -29,20 +30,24 @@ struct SweepOptions {
   // only those at each compiled point (evaluate_rigid_outcome()). Off, every
   // point is evaluated whole: the reference the tests compare it with.
   bool outcome_only = true;
+  // The rows: CSV (a header line) or JSON Lines (one object a point, keyed
+  // by the CSV's header, numbers as numbers, a missing value null).
+  io::Format format = io::Format::kCsv;
 };
 
 // The outputs (outputs.hpp) that evaluate_rigid_outcome() answers.
 std::span<const std::string_view> rigid_outcome_outputs();
 
 // A sweep over the grid of the study's variables (one or two), streaming one
-// CSV row per point to `csv` in grid order (the first variable fastest);
+// row per point to `out` in grid order (the first variable fastest), in
+// options.format (io/rows.hpp);
 // `progress(done, total)` is called now and then. Returns one plot per output
 // against the first variable, a line per value of the second; plot data is
 // kept only for grids up to kMaxPlotPoints (memory stays bounded: points are
 // evaluated kSweepChunkPoints at a time, split among the threads).
 inline constexpr std::size_t kMaxPlotPoints = 100000;
 inline constexpr std::size_t kSweepChunkPoints = 8192;
-std::vector<io::Plot> run_sweep(const Study& study, std::ostream& csv,
+std::vector<io::Plot> run_sweep(const Study& study, std::ostream& out,
                                 const std::function<void(std::size_t, std::size_t)>& progress,
                                 const SweepOptions& options = {});
 
