@@ -24,6 +24,7 @@
 #include "io/outputs.hpp"
 #include "io/parallel.hpp"
 #include "io/rows.hpp"
+#include "studies/catalogue_header.hpp"
 #include "studies/design_binding.hpp"
 #include "studies/thread_mode_cache.hpp"
 #include "sweetspot/evaluate.hpp"
@@ -32,180 +33,10 @@
 namespace sweetspot::studies {
 namespace {
 
-constexpr std::string_view kBlank = " \t";
-
-std::string_view trimmed(std::string_view text) {
-  const auto first = text.find_first_not_of(kBlank);
-  if (first == std::string_view::npos) return {};
-  return text.substr(first, text.find_last_not_of(kBlank) - first + 1);
-}
-
-// A cell or column name quoted for a message, shortened like brief().
-std::string shown(std::string_view text) { return io::brief(io::Json(io::valid_utf8(text))); }
-
 // A cell's text in a row's error, in single quotes: the error column is a CSV
 // field, where a double quote would be written twice ("got ""VS5""").
 std::string shown_cell(std::string_view text) {
   return "'" + io::one_line(io::valid_utf8(text)) + "'";
-}
-
-// Columns that hold text, not numbers.
-bool is_text_field(std::string_view field) {
-  return field == "name" || field == "description" || field == "fidelity" ||
-         field == "reference.source";
-}
-
-// The parts of a design a column may name directly when a map is given.
-bool names_design_part(std::string_view field) {
-  constexpr std::string_view kParts[] = {"implement", "frame", "strings", "hand",
-                                         "forearm",   "ball",  "impact",  "reference"};
-  const std::string_view part = field.substr(0, field.find('.'));
-  return is_text_field(field) ||
-         (part.size() < field.size() &&
-          std::find(std::begin(kParts), std::end(kParts), part) != std::end(kParts));
-}
-
-// Why `field` cannot name a design field, "" when it can: dot-separated
-// names of ASCII letters, digits and '_', an all-digit name an array index.
-std::string field_problem(std::string_view field) {
-  constexpr std::string_view kExample = " (expected a path of names such as implement.mass_g)";
-  if (field.empty()) return "an empty column name" + std::string(kExample);
-  std::size_t start = 0;
-  for (int depth = 0;; ++depth) {
-    const std::size_t dot = field.find('.', start);
-    const std::string_view name =
-        field.substr(start, dot == std::string_view::npos ? dot : dot - start);
-    if (name.empty()) return "an empty name between dots" + std::string(kExample);
-    if (name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_") !=
-        std::string_view::npos) {
-      return "a character other than letters, digits, '_' and '.'" + std::string(kExample);
-    }
-    if (name.find_first_not_of("0123456789") == std::string_view::npos) {
-      if (depth == 0)
-        return "a path starts with a part of the design, not an index" + std::string(kExample);
-      if (name.size() > 1 && name[0] == '0') return "an array index with a leading zero";
-      if (name.size() > 5) return "an array index above 99999";
-    }
-    if (dot == std::string_view::npos) return "";
-    start = dot + 1;
-  }
-}
-
-// A column that sets a design field.
-struct DesignColumn {
-  std::size_t cell = 0;  // its index among the record's fields
-  std::string field;     // "implement.mass_g"
-  std::string label;     // for messages: "column 7 'weight' (mapped to implement.mass_g)"
-};
-
-struct Header {
-  std::size_t count = 0;             // fields in every record
-  std::vector<DesignColumn> design;  // the columns that set design fields
-  std::vector<std::size_t> passed;   // the columns passed through, in order
-  std::vector<std::string> names;    // every column's name as the file gives it
-};
-
-// The header, checked once: every column a design field (or, with a map,
-// mapped onto one or passed through), none given twice, in two units or
-// forms, or inside another; every column of the map in the header.
-Header read_header(std::string_view line, const std::string& where, const BatchOptions& options) {
-  io::CsvRecord record;
-  io::split_csv(line, kMaxBatchColumns, record);
-  if (!record.error.empty())
-    throw io::InputError(where, "", "the header is not CSV: " + record.error);
-  if (record.count > kMaxBatchColumns) {
-    throw io::InputError(
-        where, "",
-        fmt::format("{} columns, more than the limit of {}", record.count, kMaxBatchColumns));
-  }
-  Header header;
-  header.count = record.count;
-  for (const std::string_view field : record.fields) header.names.emplace_back(trimmed(field));
-  const bool mapped = !options.map.empty();
-  std::map<std::string, std::string> target_of;  // column name -> design field
-  for (const auto& [column, field] : options.map) {
-    const auto first = std::find(header.names.begin(), header.names.end(), column);
-    if (first == header.names.end()) {
-      std::string columns;
-      for (std::size_t k = 0; k < header.names.size() && k < 12; ++k)
-        columns += (k ? ", " : "") + shown(header.names[k]);
-      if (header.names.size() > 12) columns += ", ...";
-      throw io::InputError(options.map_source, "",
-                           fmt::format("column {}: not in the header of {} (expected one of {})",
-                                       shown(column), where, columns));
-    }
-    if (std::find(first + 1, header.names.end(), column) != header.names.end()) {
-      throw io::InputError(
-          options.map_source, "",
-          fmt::format("column {}: the header of {} has it twice (columns {} and {}), "
-                      "expected a column name given once",
-                      shown(column), where, first - header.names.begin() + 1,
-                      std::find(first + 1, header.names.end(), column) - header.names.begin() + 1));
-    }
-    target_of.emplace(column, field);
-  }
-  std::map<std::string, std::size_t> column_of;  // pointer -> index in header.design
-  for (std::size_t k = 0; k < header.names.size(); ++k) {
-    const std::string& name = header.names[k];
-    const auto target = target_of.find(name);
-    if (mapped && target == target_of.end() && !names_design_part(name)) {
-      for (const std::size_t other : header.passed) {
-        if (header.names[other] == name) {
-          throw io::InputError(where, "",
-                               fmt::format("column {} {}: repeats column {}, passed through too "
-                                           "(expected each column passed through named once)",
-                                           k + 1, shown(name), other + 1));
-        }
-      }
-      header.passed.push_back(k);
-      continue;
-    }
-    const std::string& field = target == target_of.end() ? name : target->second;
-    std::string label = fmt::format("column {} {}", k + 1, shown(name));
-    if (target != target_of.end()) label += " (mapped to " + shown(field) + ")";
-    if (const std::string problem = field_problem(field); !problem.empty()) {
-      if (target != target_of.end()) {
-        throw io::InputError(
-            options.map_source, "",
-            fmt::format("column {}: the field {}: {}", shown(name), shown(field), problem));
-      }
-      throw io::InputError(where, "", label + ": " + problem);
-    }
-    const std::string pointer = field_to_pointer(field);
-    // A field no design has is the header's fault, refused once whatever the cells hold.
-    if (const std::string unknown = io::design_path_problem(pointer); !unknown.empty())
-      throw io::InputError(where, "", label + ": " + unknown);
-    const auto [same, inserted] = column_of.emplace(pointer, header.design.size());
-    if (!inserted) {
-      throw io::InputError(where, "",
-                           fmt::format("{}: repeats {} (each field may be given once)", label,
-                                       header.design[same->second].label));
-    }
-    header.design.push_back(DesignColumn{k, field, std::move(label)});
-  }
-  for (const auto& [pointer, j] : column_of) {
-    const std::string& label = header.design[j].label;
-    const std::size_t slash = pointer.rfind('/');
-    const std::string parent = pointer.substr(0, slash);
-    for (std::size_t at = parent.size(); at > 0; at = parent.rfind('/', at - 1)) {
-      const auto outer = column_of.find(parent.substr(0, at));
-      if (outer != column_of.end()) {
-        throw io::InputError(where, "",
-                             fmt::format("{}: lies inside {} (give the field or what it holds)",
-                                         label, header.design[outer->second].label));
-      }
-      if (at == 0) break;
-    }
-    for (const std::string& other : io::alternative_spellings(pointer.substr(slash + 1))) {
-      const auto contradicted = column_of.find(parent + "/" + other);
-      if (contradicted != column_of.end() && contradicted->second < j) {
-        throw io::InputError(where, "",
-                             fmt::format("{}: contradicts {}: give the quantity once, in one unit",
-                                         label, header.design[contradicted->second].label));
-      }
-    }
-  }
-  return header;
 }
 
 // A row of the catalogue, and what becomes of it. The rows of a chunk are
@@ -669,68 +500,6 @@ class SortedRows {
 
 }  // namespace
 
-std::string field_to_pointer(const std::string& field) {
-  std::string pointer = "/";
-  for (const char c : field) pointer += c == '.' ? '/' : c;
-  return pointer;
-}
-
-std::vector<std::pair<std::string, std::string>> parse_column_map(std::string_view text,
-                                                                  const std::string& source) {
-  std::vector<std::pair<std::string, std::string>> map;
-  std::size_t start = 0;
-  for (std::size_t item = 1;; ++item) {
-    const std::size_t comma = std::min(text.find(',', start), text.size());
-    const std::string_view entry = trimmed(text.substr(start, comma - start));
-    const std::size_t equals = entry.find('=');
-    if (equals == std::string_view::npos) {
-      throw io::InputError(source, "",
-                           fmt::format("item {} {}: expected COLUMN=design.field, such as "
-                                       "weight=implement.mass_g",
-                                       item, shown(entry)));
-    }
-    std::string column(trimmed(entry.substr(0, equals)));
-    std::string field(trimmed(entry.substr(equals + 1)));
-    if (column.empty() || field.empty()) {
-      throw io::InputError(source, "",
-                           fmt::format("item {} {}: expected a column name and a design field on "
-                                       "either side of '=', such as weight=implement.mass_g",
-                                       item, shown(entry)));
-    }
-    for (const auto& [other, _] : map) {
-      if (other == column) {
-        throw io::InputError(
-            source, "",
-            fmt::format("column {}: mapped twice (expected each column once)", shown(column)));
-      }
-    }
-    map.emplace_back(std::move(column), std::move(field));
-    if (comma == text.size()) return map;
-    start = comma + 1;
-  }
-}
-
-std::vector<std::pair<std::string, std::string>> column_map_from_json(const io::Json& json,
-                                                                      const std::string& source) {
-  if (!json.is_object() || json.empty()) {
-    throw io::InputError(
-        source, "",
-        "expected a JSON object from the catalogue's column names to design fields, "
-        "such as {\"weight\": \"implement.mass_g\"}, got " +
-            io::brief(json));
-  }
-  std::vector<std::pair<std::string, std::string>> map;
-  for (const auto& [column, field] : json.items()) {
-    if (!field.is_string()) {
-      throw io::InputError(
-          source, (io::Json::json_pointer() / column).to_string(),
-          "expected a design field as text, such as \"implement.mass_g\", got " + io::brief(field));
-    }
-    map.emplace_back(column, field.get<std::string>());
-  }
-  return map;
-}
-
 BatchSummary run_batch(std::istream& in, const std::string& source, const BatchOptions& options,
                        std::ostream& out) {
   io::LineReader reader(in, source, kMaxBatchLineBytes);
@@ -766,7 +535,7 @@ BatchSummary run_batch(std::istream& in, const std::string& source, const BatchO
   }
   if (csv) {
     io::complete_record(reader, line);
-    header = read_header(line, header_at, options);
+    header = read_header(line, header_at, options.map, options.map_source);
   }
   const std::unique_ptr<io::RowWriter> csv_rows = io::row_writer(io::Format::kCsv);
   if (options.format == io::Format::kCsv) {

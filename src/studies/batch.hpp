@@ -22,6 +22,7 @@
 
 #include "io/format.hpp"
 #include "io/json_reader.hpp"
+#include "studies/catalogue_header.hpp"
 
 namespace sweetspot::studies {
 
@@ -31,9 +32,9 @@ inline constexpr std::size_t kBatchChunkRows = 4096;
 inline constexpr std::size_t kBatchChunkBytes = std::size_t{16} << 20;
 
 // Limits on a catalogue (docs/catalogues.md, "Input limits"): a line (a CSV record, which
-// may span lines inside quotes) of at most 1 MiB, at most 1000 CSV columns.
+// may span lines inside quotes) of at most 1 MiB; at most kMaxBatchColumns CSV columns
+// (catalogue_header.hpp).
 inline constexpr std::size_t kMaxBatchLineBytes = std::size_t{1} << 20;
-inline constexpr std::size_t kMaxBatchColumns = 1000;
 
 enum class CatalogueFormat {
   kAuto,  // CSV unless the first line that is not blank starts with '{'
@@ -58,7 +59,7 @@ struct BatchOptions {
   // mapped nor naming a design field itself (a path under implement, frame,
   // strings, hand, forearm, ball or impact; name, description, fidelity) is
   // passed through to the output as it is.
-  std::vector<std::pair<std::string, std::string>> map;
+  ColumnMap map;
   std::string map_source = "--map";  // how messages name the map
   // Rows ordered by this output (a name of outputs.hpp), ascending, or
   // descending with `descending`; rows without it (failed, or null) last, in
@@ -72,17 +73,6 @@ struct BatchOptions {
   // and the bytes of the input read so far (for a progress line); may be empty.
   std::function<void(std::size_t, std::uint64_t)> progress;
 };
-
-// A column map written inline, "weight=implement.mass_g,length=implement.length_in".
-// Throws InputError naming `source` and the item for an item without '=', an
-// empty name or field, or a column mapped twice.
-std::vector<std::pair<std::string, std::string>> parse_column_map(std::string_view text,
-                                                                  const std::string& source);
-
-// A column map from a JSON object {"weight": "implement.mass_g", ...}.
-// Throws InputError naming `source` and the key for anything else.
-std::vector<std::pair<std::string, std::string>> column_map_from_json(const io::Json& map,
-                                                                      const std::string& source);
 
 struct BatchSummary {
   std::size_t rows = 0;
@@ -100,8 +90,5 @@ BatchSummary run_batch(std::istream& in, const std::string& source, const BatchO
 // The format a catalogue's name gives: ".csv" CSV; ".jsonl", ".ndjson",
 // ".json" JSON Lines; anything else (standard input, "-") kAuto.
 CatalogueFormat catalogue_format(const std::string& path);
-
-// "implement.point_masses.0.mass_g" -> "/implement/point_masses/0/mass_g".
-std::string field_to_pointer(const std::string& field);
 
 }  // namespace sweetspot::studies
