@@ -9,6 +9,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "sweetspot/errors.hpp"
+
 namespace sweetspot {
 
 struct CollisionResult;
@@ -21,18 +23,14 @@ struct Evaluation;
 // stiffness") that took the model outside its valid range, `value` its value
 // in SI; what() is "field: detail", as every core error, so that the JSON layer
 // points at the file's key. The command line exits 3 for it (an input outside
-// its stated range is a plain std::invalid_argument from validate(), exit 2).
-class ModelRefusal : public std::invalid_argument {
+// its stated range is a FieldError from validate(), exit 2).
+class ModelRefusal : public FieldError {
  public:
   ModelRefusal(std::string field, double value, std::string detail);
-  const std::string& field() const { return field_; }
   double value() const { return value_; }
-  const std::string& detail() const { return detail_; }
 
  private:
-  std::string field_;
   double value_;
-  std::string detail_;
 };
 
 // Round-off allowed in the invariants, relative to the ball's incident kinetic

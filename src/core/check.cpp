@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "sweetspot/errors.hpp"
 #include "sweetspot/implement.hpp"
 
 namespace sweetspot::detail {
@@ -41,11 +42,9 @@ std::string format_significant(double value) {
 namespace {
 [[noreturn]] void fail(std::string_view name, const std::string& expected, double value,
                        std::string_view unit) {
-  std::string message(name);
-  message += ": must be " + expected;
-  message += ", got " + format_number(value);
-  if (!unit.empty() && std::isfinite(value)) message += " " + std::string(unit);
-  throw std::invalid_argument(message);
+  std::string detail = "must be " + expected + ", got " + format_number(value);
+  if (!unit.empty() && std::isfinite(value)) detail += " " + std::string(unit);
+  throw FieldError(std::string(name), std::move(detail));
 }
 }  // namespace
 

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/check.hpp"
+#include "sweetspot/errors.hpp"
 #include "sweetspot/rigid_impact.hpp"
 #include "sweetspot/string_bed.hpp"
 
@@ -129,9 +130,9 @@ double contact_elastic_energy(const BallContactLaw& law, double compression_m) {
 
 FrameAtImpact frame_at_impact(const ResponseModel& model, double impact_from_butt_m, int modes) {
   if (!(impact_from_butt_m >= 0.0 && impact_from_butt_m <= model.length_m)) {
-    throw std::invalid_argument("impact_from_butt_m: must be on the implement [0, " +
-                                detail::format_number(model.length_m) + "] m, got " +
-                                detail::format_number(impact_from_butt_m));
+    throw FieldError("impact_from_butt_m", "must be on the implement [0, " +
+                                               detail::format_number(model.length_m) + "] m, got " +
+                                               detail::format_number(impact_from_butt_m));
   }
   FrameAtImpact frame;
   frame.inverse_effective_mass_per_kg = 1.0 / effective_mass(model.rigid_body, impact_from_butt_m);
@@ -180,8 +181,9 @@ CollisionResult integrate(const FrameAtImpact& frame,
     throw std::invalid_argument("options." + why);
   if (!(frame.inverse_effective_mass_per_kg >= 0.0 &&
         std::isfinite(frame.inverse_effective_mass_per_kg))) {
-    throw std::invalid_argument("frame.inverse_effective_mass_per_kg: must be >= 0, got " +
-                                detail::format_number(frame.inverse_effective_mass_per_kg));
+    throw FieldError(
+        "frame.inverse_effective_mass_per_kg",
+        "must be >= 0, got " + detail::format_number(frame.inverse_effective_mass_per_kg));
   }
   for (std::size_t k = 0; k < frame.modes.size(); ++k) {
     const ModeAtImpact& m = frame.modes[k];

@@ -8,6 +8,7 @@
 
 #include "core/check.hpp"
 #include "sweetspot/collision.hpp"
+#include "sweetspot/errors.hpp"
 #include "sweetspot/frame_modes.hpp"
 #include "sweetspot/impact_response.hpp"
 #include "sweetspot/invariants.hpp"
@@ -29,26 +30,26 @@ DesignCollision::DesignCollision(const Design& design, double rel_tol, ModeCache
 void DesignCollision::init(double rel_tol, ModeCache& cache) {
   const Design& design = design_;
   if (design.cor_rigid) {
-    throw std::invalid_argument(
-        "frame/cor_rigid: the solved collision derives the COR itself; give neither cor nor "
-        "cor_rigid (or evaluate with --fidelity response)");
+    throw FieldError("frame/cor_rigid",
+                     "the solved collision derives the COR itself; give neither cor nor "
+                     "cor_rigid (or evaluate with --fidelity response)");
   }
   if (design.cor_given) {
-    throw std::invalid_argument(
-        "frame/cor: the solved collision derives the COR itself; give no frame cor (or "
-        "evaluate with --fidelity modal), got " +
-        detail::format_number(design.cor));
+    throw FieldError("frame/cor",
+                     "the solved collision derives the COR itself; give no frame cor (or "
+                     "evaluate with --fidelity modal), got " +
+                         detail::format_number(design.cor));
   }
   validate(design);
   if (!design.strings) {
-    throw std::invalid_argument(
-        "strings/tension_N: the solved collision needs the string tension (the string bed's "
-        "stiffness), not a given impact duration");
+    throw FieldError("strings/tension_N",
+                     "the solved collision needs the string tension (the string bed's "
+                     "stiffness), not a given impact duration");
   }
   if (!has_stiffness(design)) {
-    throw std::invalid_argument(
-        "frame/EI_N_m2: the solved collision needs the frame's stiffness (EI_N_m2, RA or "
-        "fundamental_free_Hz)");
+    throw FieldError("frame/EI_N_m2",
+                     "the solved collision needs the frame's stiffness (EI_N_m2, RA or "
+                     "fundamental_free_Hz)");
   }
   ResponseOptions options;
   options.modes = kCollisionModes;
@@ -63,10 +64,10 @@ FrameAtImpact DesignCollision::frame_at(double from_butt_m, double off_axis_m) c
   FrameAtImpact frame = frame_at_impact(model_, from_butt_m);
   if (off_axis_m != 0.0) {
     if (!polar_inertia_kg_m2_) {
-      throw std::invalid_argument(
-          "impact/off_axis_m: an impact off the long axis needs the polar inertia "
-          "(implement/twistweight_kg_cm2 or implement/headsize_sq_in), got " +
-          detail::format_number(off_axis_m) + " m");
+      throw FieldError("impact/off_axis_m",
+                       "an impact off the long axis needs the polar inertia "
+                       "(implement/twistweight_kg_cm2 or implement/headsize_sq_in), got " +
+                           detail::format_number(off_axis_m) + " m");
     }
     frame.inverse_effective_mass_per_kg += impact_twist_per_kg(off_axis_m, *polar_inertia_kg_m2_);
   }

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/check.hpp"
+#include "sweetspot/errors.hpp"
 #include "sweetspot/frame_specs.hpp"
 
 namespace sweetspot {
@@ -25,9 +26,9 @@ void validate(const Design& d) {
   // The implement's own parts are bounded where they are built; in all it
   // weighs at least kMinImplementMass_kg.
   if (!(d.implement.mass_properties().mass_kg >= kMinImplementMass_kg)) {
-    throw std::invalid_argument(
-        "implement/mass_kg: must be >= " + detail::format_number(kMinImplementMass_kg) +
-        " kg, got " + detail::format_number(d.implement.mass_properties().mass_kg) + " kg");
+    throw FieldError("implement/mass_kg",
+                     "must be >= " + detail::format_number(kMinImplementMass_kg) + " kg, got " +
+                         detail::format_number(d.implement.mass_properties().mass_kg) + " kg");
   }
   detail::require_positive("ball/speed_m_s", d.ball.speed_m_s, "m/s");
   detail::require_in_range("ball/speed_m_s", d.ball.speed_m_s, kMinSpeed_m_s, kMaxSpeed_m_s, "m/s");
@@ -62,9 +63,9 @@ void validate(const Design& d) {
     detail::require_positive("frame/fundamental_free_Hz", *k.fundamental_free_Hz, "Hz");
   if (k.RA) {
     if (k.EI_N_m2 || k.fundamental_free_Hz) {
-      throw std::invalid_argument(
-          "frame/RA: contradicts the frame's EI_N_m2 or fundamental_free_Hz: give the stiffness "
-          "once");
+      throw FieldError("frame/RA",
+                       "contradicts the frame's EI_N_m2 or fundamental_free_Hz: give the stiffness "
+                       "once");
     }
     fundamental_free_Hz_from_RA(*k.RA, d.implement.frame_mass_properties().mass_kg);  // its range
   }
@@ -84,7 +85,7 @@ void validate(const Design& d) {
     try {
       outline = string_bed(*d.head, L);
     } catch (const std::invalid_argument& error) {
-      throw std::invalid_argument("implement/" + std::string(error.what()));
+      rethrow_under("implement/", error);
     }
     outline->semi_length_m += d.head->hoop_width_m;
     outline->semi_width_m += d.head->hoop_width_m;
@@ -96,45 +97,47 @@ void validate(const Design& d) {
     const double most_kg_m2 = frame_mass_kg * half_width_m * half_width_m;
     const double twistweight = *d.twistweight_kg_m2;
     if (!(twistweight >= kMinTwistweight_kg_m2 && twistweight <= most_kg_m2)) {
-      throw std::invalid_argument(
-          "implement/twistweight_kg_m2: must be in [" +
-          detail::format_number(kMinTwistweight_kg_m2) + ", " +
-          detail::format_significant(most_kg_m2) + "] kg m^2 (at most the frame's " +
-          detail::format_significant(frame_mass_kg) + " kg all " +
-          detail::format_significant(half_width_m) + " m off the axis), got " +
-          detail::format_number(twistweight) + " kg m^2");
+      throw FieldError("implement/twistweight_kg_m2",
+                       "must be in [" + detail::format_number(kMinTwistweight_kg_m2) + ", " +
+                           detail::format_significant(most_kg_m2) +
+                           "] kg m^2 (at most the frame's " +
+                           detail::format_significant(frame_mass_kg) + " kg all " +
+                           detail::format_significant(half_width_m) + " m off the axis), got " +
+                           detail::format_number(twistweight) + " kg m^2");
     }
   }
   if (const double y = d.impact_off_axis_m; y != 0.0) {
     const bool on_head = outline ? on_string_bed(*outline, d.impact_from_butt_m, y)
                                  : std::abs(y) <= kMaxHeadHalfWidth_m;
     if (!on_head) {
-      throw std::invalid_argument(
-          "impact/off_axis_m: must land on the head (" +
-          std::string(outline ? "inside the hoop's outer edge, " +
-                                    detail::format_significant(
-                                        outline->semi_width_m *
-                                        std::sqrt(std::max(
-                                            0.0, 1.0 - std::pow((d.impact_from_butt_m -
-                                                                 outline->center_from_butt_m) /
-                                                                    outline->semi_length_m,
-                                                                2)))) +
-                                    " m either side of the axis at this impact"
-                              : "within " + detail::format_number(kMaxHeadHalfWidth_m) +
-                                    " m of the axis, the widest head the rules allow") +
-          "), got " + detail::format_number(y) + " m");
+      throw FieldError(
+          "impact/off_axis_m",
+          "must land on the head (" +
+              std::string(outline ? "inside the hoop's outer edge, " +
+                                        detail::format_significant(
+                                            outline->semi_width_m *
+                                            std::sqrt(std::max(
+                                                0.0, 1.0 - std::pow((d.impact_from_butt_m -
+                                                                     outline->center_from_butt_m) /
+                                                                        outline->semi_length_m,
+                                                                    2)))) +
+                                        " m either side of the axis at this impact"
+                                  : "within " + detail::format_number(kMaxHeadHalfWidth_m) +
+                                        " m of the axis, the widest head the rules allow") +
+              "), got " + detail::format_number(y) + " m");
     }
   }
   if (d.impact_off_axis_m != 0.0 && !d.twistweight_kg_m2 && !d.head) {
-    throw std::invalid_argument(
-        "impact/off_axis_m: an impact off the long axis twists the implement, which needs its "
+    throw FieldError(
+        "impact/off_axis_m",
+        "an impact off the long axis twists the implement, which needs its "
         "polar inertia: give implement/twistweight_kg_cm2 or implement/headsize_sq_in, got " +
-        detail::format_number(d.impact_off_axis_m) + " m");
+            detail::format_number(d.impact_off_axis_m) + " m");
   }
   if (!(hand_held_system(d).com_from_butt_m > 0.0)) {
-    throw std::invalid_argument(
-        "hand/center_from_butt_m: implement and hand have all their mass at the butt; the wrist "
-        "force (Cross 2004 Eq. 11) needs a centre of mass beyond the wrist");
+    throw FieldError("hand/center_from_butt_m",
+                     "implement and hand have all their mass at the butt; the wrist "
+                     "force (Cross 2004 Eq. 11) needs a centre of mass beyond the wrist");
   }
 }
 

@@ -6,6 +6,7 @@
 
 #include "core/check.hpp"
 #include "core/collision_evaluation.hpp"
+#include "sweetspot/errors.hpp"
 #include "sweetspot/impact_response.hpp"
 #include "sweetspot/invariants.hpp"
 #include "sweetspot/mode_cache.hpp"
@@ -35,9 +36,9 @@ Evaluation evaluate_settled_valid(const Design& design) {
   if (!all_finite(e.mass_kg, e.I_cm_kg_m2, e.swingweight_kg_m2, e.effective_mass_kg, e.apparent_cor,
                   e.impulse_N_s, e.peak_impact_force_N, e.system_I_cm_kg_m2, e.wrist_force_ratio,
                   e.peak_wrist_force_N)) {
-    throw std::invalid_argument(
-        "implement: the inputs are outside the range the model can represent "
-        "(a result is not finite)");
+    throw FieldError("implement",
+                     "the inputs are outside the range the model can represent "
+                     "(a result is not finite)");
   }
   check_invariants(e, design);
   return e;
@@ -61,11 +62,11 @@ double settled_duration(const Design& design) {
           .duration_s;
   // Out of range, the tension is to blame: the duration is not the user's.
   if (!(duration_s >= kMinDuration_s && duration_s <= kMaxDuration_s)) {
-    throw std::invalid_argument(
-        "strings/tension_N: " + detail::format_number(design.strings->tension_N) +
-        " N gives an impact duration of " + detail::format_number(duration_s) + " s, outside [" +
-        detail::format_number(kMinDuration_s) + ", " + detail::format_number(kMaxDuration_s) +
-        "] s");
+    throw FieldError("strings/tension_N", "" + detail::format_number(design.strings->tension_N) +
+                                              " N gives an impact duration of " +
+                                              detail::format_number(duration_s) + " s, outside [" +
+                                              detail::format_number(kMinDuration_s) + ", " +
+                                              detail::format_number(kMaxDuration_s) + "] s");
   }
   return duration_s;
 }
@@ -106,9 +107,9 @@ Evaluation evaluate(const Design& design, Fidelity fidelity, double rel_tol, Mod
   if (fidelity == Fidelity::kRigid && !design.cor_rigid && !design.strings)
     return evaluate_settled(design);
   if (design.cor_rigid && fidelity != Fidelity::kResponse) {
-    throw std::invalid_argument(
-        "frame/cor_rigid: a COR derived from the frame's vibration needs the response model "
-        "(fidelity response or auto)");
+    throw FieldError("frame/cor_rigid",
+                     "a COR derived from the frame's vibration needs the response model "
+                     "(fidelity response or auto)");
   }
   Design resolved = design;
   validate(resolved);
@@ -127,7 +128,7 @@ Evaluation evaluate(const Design& design, Fidelity fidelity, double rel_tol, Mod
                                               resolved.ball, resolved.impact_duration_s);
         resolved.cor = derived.cor;
       } catch (const std::invalid_argument& error) {
-        throw std::invalid_argument("frame/" + std::string(error.what()));
+        rethrow_under("frame/", error);
       }
     }
     kappa = vibration_compliance_per_mode(model, resolved.impact_from_butt_m,
@@ -145,11 +146,13 @@ Evaluation evaluate(const Design& design, Fidelity fidelity, double rel_tol, Mod
     const double v1 = resolved.ball.speed_m_s, eA = rigid.apparent_cor;
     const double ball_loss_J = 0.5 * resolved.ball.mass_kg * v1 * v1 * (1.0 - eA * eA);
     if (!(*vibration_energy <= ball_loss_J * (1.0 + 1e-12))) {
-      throw std::invalid_argument(
-          "frame/cor: with a COR of " + detail::format_number(resolved.cor) +
-          " the frame would keep " + detail::format_significant(*vibration_energy) +
-          " J as vibration, more than the ball loses (" + detail::format_significant(ball_loss_J) +
-          " J); the prescribed-pulse model does not hold for this implement");
+      throw FieldError("frame/cor",
+                       "with a COR of " + detail::format_number(resolved.cor) +
+                           " the frame would keep " +
+                           detail::format_significant(*vibration_energy) +
+                           " J as vibration, more than the ball loses (" +
+                           detail::format_significant(ball_loss_J) +
+                           " J); the prescribed-pulse model does not hold for this implement");
     }
   }
   Evaluation e = evaluate_settled(resolved);
@@ -221,10 +224,10 @@ RigidCase case_of(const Design& d, double impact_duration_s, double twist_per_kg
 // inertia is unknown.
 double twist_per_kg(const std::optional<double>& polar_inertia_kg_m2, double off_axis_m) {
   if (off_axis_m != 0.0 && !polar_inertia_kg_m2) {
-    throw std::invalid_argument(
-        "impact/off_axis_m: an impact off the long axis needs the polar inertia "
-        "(implement/twistweight_kg_cm2 or implement/headsize_sq_in), got " +
-        detail::format_number(off_axis_m) + " m");
+    throw FieldError("impact/off_axis_m",
+                     "an impact off the long axis needs the polar inertia "
+                     "(implement/twistweight_kg_cm2 or implement/headsize_sq_in), got " +
+                         detail::format_number(off_axis_m) + " m");
   }
   return impact_twist_per_kg(off_axis_m, polar_inertia_kg_m2.value_or(0.0));
 }
@@ -290,9 +293,9 @@ bool evaluate_rigid_outcome(const Design& d, Evaluation& e) {
 
 RigidCase rigid_case(const Design& design) {
   if (design.cor_rigid) {
-    throw std::invalid_argument(
-        "frame/cor_rigid: a COR derived from the frame's vibration needs the response model, not a "
-        "rigid case");
+    throw FieldError("frame/cor_rigid",
+                     "a COR derived from the frame's vibration needs the response model, not a "
+                     "rigid case");
   }
   validate(design);
   return case_of(design, settled_duration(design),
@@ -302,8 +305,8 @@ RigidCase rigid_case(const Design& design) {
 ImpactSweep::ImpactSweep(const Design& design)
     : design_(design), system_(hand_held_system(design)) {
   if (design.cor_rigid || design.strings) {
-    throw std::invalid_argument(
-        "frame/cor_rigid: ImpactSweep evaluates the rigid model with a given COR and duration");
+    throw FieldError("frame/cor_rigid",
+                     "ImpactSweep evaluates the rigid model with a given COR and duration");
   }
   validate(design_);
   base_ = design_part(design_, design_.implement.mass_properties(), system_);

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "core/check.hpp"
+#include "sweetspot/errors.hpp"
 #include "sweetspot/frame_specs.hpp"
 #include "sweetspot/invariants.hpp"
 
@@ -21,7 +22,7 @@ std::optional<double> node_nearest_tip(const Mode& mode) {
 
 std::vector<Section> fitted_sections(double length_m, const MassProperties& frame, int count) {
   detail::require_positive("length_m", length_m, "m");
-  if (count < 3) throw std::invalid_argument("count: must be >= 3, got " + std::to_string(count));
+  if (count < 3) throw FieldError("count", "must be >= 3, got " + std::to_string(count));
   const double l = length_m / count;
   // Section i's mass is L (a A_i + b B_i + c C_i): the integrals of 1, s, s^2.
   Eigen::Matrix3d moments = Eigen::Matrix3d::Zero();
@@ -43,8 +44,9 @@ std::vector<Section> fitted_sections(double length_m, const MassProperties& fram
   for (int i = 0; i < count; ++i) {
     const double mass = basis[i].dot(abc);
     if (!(mass > 0.0)) {
-      throw std::invalid_argument(
-          "implement: no smooth (quadratic) positive mass distribution has this mass, balance and "
+      throw FieldError(
+          "implement",
+          "no smooth (quadratic) positive mass distribution has this mass, balance and "
           "swingweight; give sections instead");
     }
     sections[i] = Section{l, mass, {}};
@@ -77,9 +79,9 @@ FlexibleFrame flexible_frame(const Design& design) {
     // kappa G w t can underflow to 0 (or overflow) for inputs each inside
     // its range: the cross-section is then no beam's, named as the input.
     if (!(t.shear_stiffness_N > 0.0 && std::isfinite(t.shear_stiffness_N))) {
-      throw std::invalid_argument(
-          "frame/cross_section: the shear stiffness kappa G w t must be > 0 and finite, got " +
-          detail::format_number(t.shear_stiffness_N) + " N");
+      throw FieldError("frame/cross_section",
+                       "the shear stiffness kappa G w t must be > 0 and finite, got " +
+                           detail::format_number(t.shear_stiffness_N) + " N");
     }
     frame.options.timoshenko.assign(frame.sections.size(), t);
   }
@@ -89,9 +91,9 @@ FlexibleFrame flexible_frame(const Design& design) {
     if (!s.EI_N_m2 && (stiffness.fundamental_free_Hz || stiffness.RA))
       s.EI_N_m2 = 1.0;  // scaled below
     if (!s.EI_N_m2) {
-      throw std::invalid_argument(
-          "frame/EI_N_m2: the modes need the frame's stiffness: give frame EI_N_m2, "
-          "fundamental_free_Hz, or EI_N_m2 for every section");
+      throw FieldError("frame/EI_N_m2",
+                       "the modes need the frame's stiffness: give frame EI_N_m2, "
+                       "fundamental_free_Hz, or EI_N_m2 for every section");
     }
   }
   if (stiffness.fundamental_free_Hz) {
@@ -124,10 +126,10 @@ FlexibleFrame flexible_frame(const Design& design) {
     for (const Section& s : frame.sections) {
       const double shear_parameter = 12.0 * (*s.EI_N_m2 / kGA) / L / L;
       if (!(shear_parameter <= kMaxShearParameter)) {
-        throw std::invalid_argument(
-            "frame/cross_section: the shear parameter 12 EI/(kappa G w t L^2) must be at most " +
-            detail::format_number(kMaxShearParameter) + " (a beam in bending), got " +
-            detail::format_number(shear_parameter));
+        throw FieldError("frame/cross_section",
+                         "the shear parameter 12 EI/(kappa G w t L^2) must be at most " +
+                             detail::format_number(kMaxShearParameter) +
+                             " (a beam in bending), got " + detail::format_number(shear_parameter));
       }
     }
   }
@@ -144,9 +146,9 @@ HandCoupling hand_coupling(const Design& design) {
   // while its start plus its length does not.
   if (start < 0.0 || end > design.implement.length_m() ||
       hand.grip_length_m > design.implement.length_m() - start) {
-    throw std::invalid_argument("hand/grip_length_m: the grip " + detail::format_number(start) +
-                                " to " + detail::format_number(end) +
-                                " m must lie on the implement");
+    throw FieldError("hand/grip_length_m", "the grip " + detail::format_number(start) + " to " +
+                                               detail::format_number(end) +
+                                               " m must lie on the implement");
   }
   detail::require_at_least("hand/grip_stiffness_N_m2", hand.grip_stiffness_N_m2, 0.0, "N/m^2");
   detail::require_at_least("hand/grip_damping_N_s_m2", hand.grip_damping_N_s_m2, 0.0, "N s/m^2");
@@ -175,7 +177,7 @@ ModalOutputs evaluate_modes(const Design& design, double rel_tol) {
   free_options.modes = 1;
   const ModalResult free = free_modes(frame.sections, frame.point_masses, free_options);
   if (free.modes.empty())
-    throw std::invalid_argument("frame: no flexible mode found (" + free.message + ")");
+    throw FieldError("frame", "no flexible mode found (" + free.message + ")");
   out.fundamental_free_Hz = free.modes[0].frequency_Hz;
   out.node_free_from_butt_m = node_nearest_tip(free.modes[0]);
 
@@ -191,8 +193,7 @@ ModalOutputs evaluate_modes(const Design& design, double rel_tol) {
   const ModalResult held = hand_held_beam_fundamental(frame.sections, frame.point_masses,
                                                       hand_coupling(design), hand_options);
   const Mode* fundamental = hand_held_fundamental(held);
-  if (!fundamental)
-    throw std::invalid_argument("hand: no beam mode found among the hand-held modes");
+  if (!fundamental) throw FieldError("hand", "no beam mode found among the hand-held modes");
   out.fundamental_hand_Hz = fundamental->frequency_Hz;
   out.hand_damping_ratio = fundamental->damping_ratio;
   out.node_hand_from_butt_m = node_nearest_tip(*fundamental);

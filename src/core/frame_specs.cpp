@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "core/check.hpp"
+#include "sweetspot/errors.hpp"
 
 namespace sweetspot {
 
@@ -11,12 +12,12 @@ double fundamental_free_Hz_from_RA(double RA, double frame_mass_kg) {
   detail::require_in_range("frame/RA", RA, kMinRA, kMaxRA, "");
   if (!std::isfinite(frame_mass_kg) || frame_mass_kg < kMinRAFrameMass_kg ||
       frame_mass_kg > kMaxRAFrameMass_kg) {
-    throw std::invalid_argument(
-        "frame/RA: the RA relation is fitted to tennis racquets of 242-349 g (used for " +
-        detail::format_number(kMinRAFrameMass_kg * 1e3) + "-" +
-        detail::format_number(kMaxRAFrameMass_kg * 1e3) + " g); this frame is " +
-        detail::format_significant(frame_mass_kg * 1e3) +
-        " g: give frame fundamental_free_Hz or EI_N_m2 instead");
+    throw FieldError("frame/RA",
+                     "the RA relation is fitted to tennis racquets of 242-349 g (used for " +
+                         detail::format_number(kMinRAFrameMass_kg * 1e3) + "-" +
+                         detail::format_number(kMaxRAFrameMass_kg * 1e3) + " g); this frame is " +
+                         detail::format_significant(frame_mass_kg * 1e3) +
+                         " g: give frame fundamental_free_Hz or EI_N_m2 instead");
   }
   return kRAFitReference_Hz * std::pow(RA / kRAFitReferenceRA, kRAFitRAExponent) *
          std::pow(frame_mass_kg / kRAFitReferenceMass_kg, kRAFitMassExponent);

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/check.hpp"
+#include "sweetspot/errors.hpp"
 
 namespace sweetspot {
 namespace {
@@ -28,10 +29,10 @@ HeadEllipse string_bed(const HeadShape& head, double length_m) {
   const double a = head.aspect_ratio * c;
   const double overall_m = 2.0 * a + 2.0 * head.hoop_width_m;
   if (!(overall_m <= length_m)) {
-    throw std::invalid_argument("headsize: a head of " + detail::format_significant(head.area_m2) +
-                                " m^2 is " + detail::format_significant(overall_m) +
-                                " m long with its hoop, longer than the implement (" +
-                                detail::format_number(length_m) + " m)");
+    throw FieldError("headsize", "a head of " + detail::format_significant(head.area_m2) +
+                                     " m^2 is " + detail::format_significant(overall_m) +
+                                     " m long with its hoop, longer than the implement (" +
+                                     detail::format_number(length_m) + " m)");
   }
   return HeadEllipse{length_m - head.hoop_width_m - a, a, c};
 }

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "core/check.hpp"
+#include "sweetspot/errors.hpp"
 #include "sweetspot/frame_modes.hpp"
 #include "sweetspot/rigid_impact.hpp"
 #include "sweetspot/roots.hpp"
@@ -143,7 +144,7 @@ double fe_normalisation(const Mode& mode) {
       best = e;
   }
   if (2 * best >= mode.fe_dofs.size() || mode.shape[best].derivatives[0] == 0.0) {
-    throw std::invalid_argument("modes: finite-element mode without matching fe_dofs");
+    throw FieldError("modes", "finite-element mode without matching fe_dofs");
   }
   return mode.fe_dofs[2 * best] / mode.shape[best].derivatives[0];
 }
@@ -151,9 +152,10 @@ double fe_normalisation(const Mode& mode) {
 // Backstop: a response that is not finite is never handed out.
 void require_finite_response(const ImpactResponse& r) {
   auto fail = [](const std::string& what) {
-    throw std::invalid_argument(
-        "model: " + what +
-        " is not finite; the implement is outside the range the response model can represent");
+    throw FieldError(
+        "model",
+        "" + what +
+            " is not finite; the implement is outside the range the response model can represent");
   };
   for (std::size_t k = 0; k < r.modes.size(); ++k) {
     const ModeExcitation& e = r.modes[k];
@@ -250,8 +252,8 @@ ModalState half_sine_modal_response(double omega_rad_s, double damping_ratio,
                                     double modal_peak_force, double duration_s, double t_s) {
   detail::require_positive("omega_rad_s", omega_rad_s, "rad/s");
   if (!(damping_ratio >= 0.0 && damping_ratio < 1.0)) {
-    throw std::invalid_argument("damping_ratio: must be in [0, 1), got " +
-                                detail::format_number(damping_ratio));
+    throw FieldError("damping_ratio",
+                     "must be in [0, 1), got " + detail::format_number(damping_ratio));
   }
   detail::require_positive("duration_s", duration_s, "s");
   detail::require_finite("modal_peak_force", modal_peak_force);
@@ -291,8 +293,8 @@ ResponseModel free_response_model(const std::vector<Section>& sections,
                                   const std::vector<PointMass>& point_masses,
                                   const ModalResult& free, double damping_ratio) {
   if (!(damping_ratio >= 0.0 && damping_ratio < 1.0)) {
-    throw std::invalid_argument("damping_ratio: must be in [0, 1), got " +
-                                detail::format_number(damping_ratio));
+    throw FieldError("damping_ratio",
+                     "must be in [0, 1), got " + detail::format_number(damping_ratio));
   }
   ResponseModel model;
   const Implement implement = Implement::from_sections(sections, point_masses);
@@ -301,8 +303,8 @@ ResponseModel free_response_model(const std::vector<Section>& sections,
   for (const Mode& mode : free.modes) {
     if (mode.shape.empty() ||
         std::abs(mode.shape.back().end_m - model.length_m) > 1e-9 * model.length_m) {
-      throw std::invalid_argument("free.modes: shape does not span the sections' length " +
-                                  detail::format_number(model.length_m) + " m");
+      throw FieldError("free.modes", "shape does not span the sections' length " +
+                                         detail::format_number(model.length_m) + " m");
     }
     const double n = mode.fe_dofs.empty()
                          ? 1.0 / std::sqrt(generalised_mass(mode, sections, point_masses))
@@ -330,7 +332,7 @@ ResponseModel hand_held_response_model(const std::vector<Section>& sections,
       hand.mass_kg * hand.grip_length_m * hand.grip_length_m / 12.0);
   for (const Mode& mode : hand_held.modes) {
     if (mode.fe_dofs.empty()) {
-      throw std::invalid_argument("hand_held.modes: need finite-element modes (fe_dofs)");
+      throw FieldError("hand_held.modes", "need finite-element modes (fe_dofs)");
     }
     // A damped complex mode used as a real mode (header comment).
     model.modes.push_back(prepare_mode(mode, fe_normalisation(mode)));
@@ -340,11 +342,10 @@ ResponseModel hand_held_response_model(const std::vector<Section>& sections,
 
 ResponseModel with_fundamental(const ResponseModel& model, double f1_Hz) {
   detail::require_positive("f1_Hz", f1_Hz, "Hz");
-  if (model.modes.empty())
-    throw std::invalid_argument("model.modes: empty, no fundamental to scale");
+  if (model.modes.empty()) throw FieldError("model.modes", "empty, no fundamental to scale");
   if (model.hand_held) {
-    throw std::invalid_argument(
-        "model: with_fundamental needs a free model (hand modes do not scale with EI)");
+    throw FieldError("model",
+                     "with_fundamental needs a free model (hand modes do not scale with EI)");
   }
   ResponseModel out = model;
   const double ratio = 2.0 * kPi * f1_Hz / model.modes.front().omega_rad_s;
@@ -387,8 +388,8 @@ ResponseModel response_model(const Design& design, const ResponseOptions& option
                                options.free_damping_ratio);
   }
   if (!(design.hand.mass_kg > 0.0)) {
-    throw std::invalid_argument("hand/mass_kg: the hand-held response needs a hand, got " +
-                                detail::format_number(design.hand.mass_kg) + " kg");
+    throw FieldError("hand/mass_kg", "the hand-held response needs a hand, got " +
+                                         detail::format_number(design.hand.mass_kg) + " kg");
   }
   const HandCoupling hand = hand_coupling(design);
   mode_options.method = ModeOptions::Method::kFiniteElement;
@@ -509,12 +510,12 @@ DerivedCor derive_cor(const ResponseModel& model, double impact_from_butt_m, dou
   const double a = out.reduced_mass_kg * out.vibration_compliance_per_kg;
   const std::optional<double> e = cor_from_balance(a, cor_rigid);
   if (!e) {
-    throw std::invalid_argument(
-        "cor_rigid: the frame would keep more than the collision's energy as vibration (mu kappa "
-        "= " +
-        detail::format_significant(a) +
-        " > cor_rigid^2 = " + detail::format_significant(cor_rigid * cor_rigid) +
-        "); the prescribed-pulse model does not hold for this implement");
+    throw FieldError("cor_rigid",
+                     "the frame would keep more than the collision's energy as vibration (mu kappa "
+                     "= " +
+                         detail::format_significant(a) +
+                         " > cor_rigid^2 = " + detail::format_significant(cor_rigid * cor_rigid) +
+                         "); the prescribed-pulse model does not hold for this implement");
   }
   out.cor = *e;
   out.apparent_cor = apparent_cor(out.cor, out.effective_mass_kg, m);                // Eq. (16)

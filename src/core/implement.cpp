@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "core/check.hpp"
+#include "sweetspot/errors.hpp"
 
 namespace sweetspot {
 namespace {
@@ -19,7 +20,7 @@ MassProperties add_all(MassProperties body, const std::vector<PointMass>& point_
 }  // namespace
 
 MassProperties section_mass_properties(const std::vector<Section>& sections) {
-  if (sections.empty()) throw std::invalid_argument("sections: must list at least one section");
+  if (sections.empty()) throw FieldError("sections", "must list at least one section");
   double mass = 0.0;
   double first_moment = 0.0;
   double x_start = 0.0;
@@ -42,8 +43,8 @@ MassProperties section_mass_properties(const std::vector<Section>& sections) {
     x_start += s.length_m;
   }
   if (!(mass > 0.0)) {
-    throw std::invalid_argument("sections: total mass must be > 0 kg, got " +
-                                detail::format_number(mass) + " kg");
+    throw FieldError("sections",
+                     "total mass must be > 0 kg, got " + detail::format_number(mass) + " kg");
   }
   detail::require_in_range("sections total length", x_start, 0.0, kMaxLength_m, "m");
   detail::require_in_range("sections total mass", mass, 0.0, kMaxMass_kg, "kg");
@@ -62,11 +63,11 @@ MassProperties section_mass_properties(const std::vector<Section>& sections) {
     for (std::size_t i = 1; i < sections.size(); ++i) {
       if (sections[i].length_m > sections[longest].length_m) longest = i;
     }
-    throw std::invalid_argument(
-        detail::indexed("sections", longest, "length_m") + ": too short to model, got " +
-        detail::format_number(sections[longest].length_m) +
-        " m (the implement's moment of inertia underflows: " + detail::format_number(I_cm) +
-        " kg m^2)");
+    throw FieldError(
+        detail::indexed("sections", longest, "length_m"),
+        "too short to model, got " + detail::format_number(sections[longest].length_m) +
+            " m (the implement's moment of inertia underflows: " + detail::format_number(I_cm) +
+            " kg m^2)");
   }
   return MassProperties{mass, com, I_cm};
 }
@@ -94,14 +95,13 @@ Implement Implement::paper_racquet(double length_m, double mass_kg,
   // The inertia M L^2 / 12 must be a normal number: name the input that makes
   // it underflow rather than the halves built from it.
   if (!(0.5 * length_m * length_m >= std::numeric_limits<double>::min())) {
-    throw std::invalid_argument("length_m: too short to model, got " +
-                                detail::format_number(length_m) +
-                                " m (its moment of inertia underflows)");
+    throw FieldError("length_m", "too short to model, got " + detail::format_number(length_m) +
+                                     " m (its moment of inertia underflows)");
   }
   if (!(mass_kg * length_m * length_m / 48.0 >= std::numeric_limits<double>::min())) {
-    throw std::invalid_argument("mass_kg: too light to model at this length, got " +
-                                detail::format_number(mass_kg) +
-                                " kg (its moment of inertia underflows)");
+    throw FieldError("mass_kg", "too light to model at this length, got " +
+                                    detail::format_number(mass_kg) +
+                                    " kg (its moment of inertia underflows)");
   }
   // M1 / M2 = ratio and M1 + M2 = M  =>  M2 = M / (1 + ratio).
   const double handle_kg = mass_kg / (1.0 + head_to_handle_mass_ratio);
@@ -120,9 +120,9 @@ Implement Implement::from_specs(const IndustrySpecs& specs, std::vector<PointMas
   detail::require_in_range("length_m", L, 0.0, kMaxLength_m, "m");
   detail::require_in_range("mass_kg", M, 0.0, kMaxMass_kg, "kg");
   if (!std::isfinite(B) || B <= 0.0 || B >= L) {
-    throw std::invalid_argument("balance_from_butt_m: must lie inside the length (0, " +
-                                detail::format_number(L) + ") m, got " + detail::format_number(B) +
-                                " m");
+    throw FieldError("balance_from_butt_m", "must lie inside the length (0, " +
+                                                detail::format_number(L) + ") m, got " +
+                                                detail::format_number(B) + " m");
   }
   detail::require_positive("swingweight_kg_m2", specs.swingweight_kg_m2, "kg m^2");
   // A body on [0, L] with its centre of mass at B has 0 < I_cm <= M B (L - B)
@@ -133,10 +133,11 @@ Implement Implement::from_specs(const IndustrySpecs& specs, std::vector<PointMas
   // I_cm = SW - M (B - 0.1)^2 must also be a normal number, not an underflow.
   if (!(specs.swingweight_kg_m2 - sw_min >= std::numeric_limits<double>::min()) ||
       specs.swingweight_kg_m2 > sw_max) {
-    throw std::invalid_argument(
-        "swingweight_kg_m2: must be in (" + detail::format_significant(sw_min) + ", " +
-        detail::format_significant(sw_max) + "] kg m^2 for this mass, balance and length, got " +
-        detail::format_number(specs.swingweight_kg_m2) + " kg m^2");
+    throw FieldError("swingweight_kg_m2", "must be in (" + detail::format_significant(sw_min) +
+                                              ", " + detail::format_significant(sw_max) +
+                                              "] kg m^2 for this mass, balance and length, got " +
+                                              detail::format_number(specs.swingweight_kg_m2) +
+                                              " kg m^2");
   }
   Implement implement;
   implement.length_m_ = L;

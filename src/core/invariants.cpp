@@ -12,10 +12,7 @@
 namespace sweetspot {
 
 ModelRefusal::ModelRefusal(std::string field, double value, std::string detail)
-    : std::invalid_argument(field + ": " + detail),
-      field_(std::move(field)),
-      value_(value),
-      detail_(std::move(detail)) {}
+    : FieldError(std::move(field), std::move(detail)), value_(value) {}
 
 namespace {
 

@@ -6,6 +6,7 @@
 
 #include "core/check.hpp"
 #include "core/rigid_kernel.hpp"
+#include "sweetspot/errors.hpp"
 
 namespace sweetspot {
 
@@ -34,10 +35,10 @@ MassProperties from_swingweight(double mass_kg, double balance_from_butt_m,
   const double arm = balance_from_butt_m - kSwingweightAxisFromButt_m;
   const double I_cm = swingweight_kg_m2 - mass_kg * arm * arm;
   if (I_cm < 0.0) {
-    throw std::invalid_argument(
-        "swingweight: must be >= " + detail::format_number(mass_kg * arm * arm * 1e4) +
-        " kg cm^2 (the mass at its balance point), got " +
-        detail::format_number(swingweight_kg_m2 * 1e4) + " kg cm^2");
+    throw FieldError("swingweight",
+                     "must be >= " + detail::format_number(mass_kg * arm * arm * 1e4) +
+                         " kg cm^2 (the mass at its balance point), got " +
+                         detail::format_number(swingweight_kg_m2 * 1e4) + " kg cm^2");
   }
   return MassProperties{mass_kg, balance_from_butt_m, I_cm};
 }

@@ -8,6 +8,7 @@
 
 #include "core/check.hpp"
 #include "core/rigid_kernel.hpp"
+#include "sweetspot/errors.hpp"
 
 namespace sweetspot {
 
@@ -263,8 +264,8 @@ void rigid_outcomes(const RigidCases& in, const RigidOutcomes& out) {
 
 void rigid_outcomes(std::span<const RigidCase> cases, std::span<RigidOutcome> out) {
   if (cases.size() != out.size()) {
-    throw std::invalid_argument("rigid_outcomes: " + std::to_string(cases.size()) +
-                                " cases but room for " + std::to_string(out.size()) + " outcomes");
+    throw FieldError("rigid_outcomes", "" + std::to_string(cases.size()) + " cases but room for " +
+                                           std::to_string(out.size()) + " outcomes");
   }
   // A block at a time laid out as arrays (19 kB on the stack), then back.
   constexpr std::size_t kBlock = 128;

@@ -12,6 +12,7 @@
 #include "io/design_fields.hpp"
 #include "io/input_error.hpp"
 #include "io/outputs.hpp"
+#include "sweetspot/errors.hpp"
 #include "sweetspot/head_geometry.hpp"
 #include "sweetspot/rigid_impact.hpp"
 
@@ -40,10 +41,13 @@ bool is_design_path(std::string_view name) {
                              const KeyMap& keys, const std::string& source,
                              const std::string& fallback_pointer) {
   const std::string message = error.what();
-  const auto colon = message.find(": ");
-  if (colon != std::string::npos) {
-    const std::string core_name = message.substr(0, colon);
-    std::string detail = message.substr(colon + 2);
+  // The core names the field by type (FieldError); what is left of its
+  // messages as text ("options.", a validate() string) is "field: detail".
+  const auto* typed = dynamic_cast<const FieldError*>(&error);
+  const auto colon = typed ? std::string::npos : message.find(": ");
+  if (typed || colon != std::string::npos) {
+    const std::string core_name = typed ? typed->field() : message.substr(0, colon);
+    std::string detail = typed ? typed->detail() : message.substr(colon + 2);
     std::string name = prefix + core_name;
     if (prefix.empty() &&
         (core_name.starts_with("sections") || core_name.starts_with("point_masses"))) {

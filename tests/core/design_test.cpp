@@ -4,6 +4,9 @@
 
 #include <catch2/catch.hpp>
 #include <stdexcept>
+#include <string>
+
+#include "sweetspot/errors.hpp"
 
 namespace sweetspot {
 namespace {
@@ -63,4 +66,25 @@ TEST_CASE("The hand-held system is implement plus hand at its centre") {
 }
 
 }  // namespace
+}  // namespace sweetspot
+
+namespace sweetspot {
+
+TEST_CASE("The core refuses an input by type: the field it names and what is wrong, apart") {
+  Design d{Implement::paper_racquet(0.70, 0.25, 0.8)};
+  d.ball.mass_kg = -0.057;
+  try {
+    validate(d);
+    FAIL("a negative ball mass was accepted");
+  } catch (const FieldError& e) {
+    CHECK(e.field() == "ball/mass_kg");
+    CHECK(e.detail() == "must be > 0 kg, got -0.057 kg");
+    CHECK(std::string(e.what()) == e.field() + ": " + e.detail());
+  }
+  // An impact off the implement, likewise.
+  d = Design{Implement::paper_racquet(0.70, 0.25, 0.8)};
+  d.impact_from_butt_m = 0.9;
+  CHECK_THROWS_AS(validate(d), FieldError);
+}
+
 }  // namespace sweetspot

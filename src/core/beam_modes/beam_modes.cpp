@@ -17,6 +17,7 @@
 #include "core/beam_modes/shapes.hpp"
 #include "core/beam_modes/transfer_matrix.hpp"
 #include "core/check.hpp"
+#include "sweetspot/errors.hpp"
 #include "sweetspot/invariants.hpp"
 
 namespace sweetspot {
@@ -77,7 +78,7 @@ std::string ModeOptions::validate() const {
 }
 
 double mode_shape_at(const Mode& mode, double x_m) {
-  if (mode.shape.empty()) throw std::invalid_argument("mode: has no shape");
+  if (mode.shape.empty()) throw FieldError("mode", "has no shape");
   const double length = mode.shape.back().end_m;
   const double eps = 1e-12 * length;
   if (!(x_m >= -eps && x_m <= length + eps))
@@ -137,8 +138,7 @@ ModalResult solve_hand_held(const std::vector<Section>& sections,
   detail::validate_point_masses(point_masses, length);
   validate_options(options, sections.size());
   if (options.method != ModeOptions::Method::kFiniteElement) {
-    throw std::invalid_argument(
-        "options.method: the hand-held beam needs kFiniteElement, got kExact");
+    throw FieldError("options.method", "the hand-held beam needs kFiniteElement, got kExact");
   }
   validate_hand(hand, length);
 
@@ -238,7 +238,7 @@ std::vector<Section> scale_EI_to_fundamental(const std::vector<Section>& section
   const int steps = options.theory == ModeOptions::Theory::kTimoshenko ? 30 : 1;
   for (int i = 0; i < steps; ++i) {
     const ModalResult r = free_modes(scaled, point_masses, one);
-    if (r.modes.empty()) throw std::invalid_argument("sections: no flexible mode found");
+    if (r.modes.empty()) throw FieldError("sections", "no flexible mode found");
     const double ratio = f1_Hz / r.modes[0].frequency_Hz;
     for (Section& s : scaled) s.EI_N_m2 = *s.EI_N_m2 * ratio * ratio;
     if (std::abs(ratio - 1.0) < 1e-13) break;
@@ -262,7 +262,7 @@ double uniform_EI_for_fundamental(const std::vector<Section>& sections,
   ModeOptions one;
   one.modes = 1;
   const ModalResult r = free_modes(unit, point_masses, one);
-  if (r.modes.empty()) throw std::invalid_argument("sections: no flexible mode found");
+  if (r.modes.empty()) throw FieldError("sections", "no flexible mode found");
   const double ratio = f1_Hz / r.modes[0].frequency_Hz;
   return ratio * ratio;
 }

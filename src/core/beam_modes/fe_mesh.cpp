@@ -10,6 +10,7 @@
 #include "core/beam_modes/free_fe.hpp"
 #include "core/beam_modes/shapes.hpp"
 #include "core/check.hpp"
+#include "sweetspot/errors.hpp"
 #include "sweetspot/invariants.hpp"
 
 namespace sweetspot::beam_detail {
@@ -75,14 +76,14 @@ void merge_tiny_elements(Mesh& mesh) {
                     : std::numeric_limits<double>::infinity();
     if (std::min(error_left, error_right) > kMergeTolerance) {
       const ElementPiece& p = mesh.elements[tiny].pieces.front();
-      throw std::invalid_argument(
-          detail::indexed("sections", p.section, "length_m") + ": a stretch of " +
-          detail::format_number(mesh.elements[tiny].h) + " m at " +
-          detail::format_number(mesh.elements[tiny].x0) + " m from the butt, with EI " +
-          detail::format_number(p.EI) +
-          " N m^2 unlike its neighbours', is too short for finite elements to resolve (the "
-          "hand-held "
-          "modes always use them); lengthen it or give it its neighbours' EI");
+      throw FieldError(
+          detail::indexed("sections", p.section, "length_m"),
+          "a stretch of " + detail::format_number(mesh.elements[tiny].h) + " m at " +
+              detail::format_number(mesh.elements[tiny].x0) + " m from the butt, with EI " +
+              detail::format_number(p.EI) +
+              " N m^2 unlike its neighbours', is too short for finite elements to resolve (the "
+              "hand-held "
+              "modes always use them); lengthen it or give it its neighbours' EI");
     }
     const bool into_left = error_left < error_right || (error_left == error_right && tiny > 0 &&
                                                         phases[tiny - 1] >= phases[tiny + 1]);

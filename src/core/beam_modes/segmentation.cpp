@@ -5,17 +5,18 @@
 #include <stdexcept>
 
 #include "core/check.hpp"
+#include "sweetspot/errors.hpp"
 
 namespace sweetspot::beam_detail {
 
 using detail::format_number;
 
 [[noreturn]] void fail(const std::string& name, const std::string& expected, double value) {
-  throw std::invalid_argument(name + ": must be " + expected + ", got " + format_number(value));
+  throw FieldError(name, "must be " + expected + ", got " + format_number(value));
 }
 
 double validated_length(const std::vector<Section>& sections, bool need_mass) {
-  if (sections.empty()) throw std::invalid_argument("sections: must not be empty");
+  if (sections.empty()) throw FieldError("sections", "must not be empty");
   double length = 0.0;
   for (std::size_t i = 0; i < sections.size(); ++i) {
     const Section& s = sections[i];
@@ -26,8 +27,8 @@ double validated_length(const std::vector<Section>& sections, bool need_mass) {
       detail::require_at_least(detail::indexed("sections", i, "mass_kg"), s.mass_kg, 0.0, "kg");
     }
     if (!s.EI_N_m2) {
-      throw std::invalid_argument(detail::indexed("sections", i, "EI_N_m2") +
-                                  ": must be given for the bending modes, got none");
+      throw FieldError(detail::indexed("sections", i, "EI_N_m2"),
+                       "must be given for the bending modes, got none");
     }
     detail::require_positive(detail::indexed("sections", i, "EI_N_m2"), *s.EI_N_m2, "N m^2");
     length += s.length_m;

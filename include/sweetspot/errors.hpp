@@ -1,0 +1,40 @@
+#pragma once
+
+// The core's refusal of an input, as a type: which field of the design it
+// names (a path relative to the design, as the design file's SI keys spell
+// it: "frame/EI_N_m2", "point_masses/1/mass_kg", "hand/grip_length_m") and
+// what is wrong with it ("must be > 0 N m^2, got -3 N m^2"). what() is
+// "field: detail". The layer that read the design maps the field to the
+// file's own key (its unit, its JSON pointer) by lookup, never by reading
+// the message.
+
+#include <stdexcept>
+#include <string>
+
+namespace sweetspot {
+
+class FieldError : public std::invalid_argument {
+ public:
+  FieldError(std::string field, std::string detail)
+      : std::invalid_argument(field + ": " + detail),
+        field_(std::move(field)),
+        detail_(std::move(detail)) {}
+
+  const std::string& field() const { return field_; }
+  const std::string& detail() const { return detail_; }
+
+ private:
+  std::string field_;
+  std::string detail_;
+};
+
+// `error` with its field placed under `part` ("frame/" + "cor": "frame/cor"):
+// a FieldError keeps its type, any other message is prefixed as text.
+[[noreturn]] inline void rethrow_under(const std::string& part,
+                                       const std::invalid_argument& error) {
+  if (const auto* field = dynamic_cast<const FieldError*>(&error))
+    throw FieldError(part + field->field(), field->detail());
+  throw std::invalid_argument(part + error.what());
+}
+
+}  // namespace sweetspot
