@@ -464,6 +464,255 @@ class Part {
   std::optional<ObjectReader> reader_;
 };
 
+// What the steps of reading a design share: where the file came from, the
+// key map and provenance kept with `bookkeeping` (null without), the design
+// being read and the defaults it starts from.
+struct Reading {
+  const std::string& source;
+  KeyMap* keys;
+  std::map<std::string, std::string>* provenance;
+  const Design& defaults;
+  Design& design;
+  void note(const char* input, const char* how) const {
+    if (provenance) (*provenance)[input] = how;
+  }
+};
+
+// /frame: the COR (given or derived) and the stiffness in one of its forms.
+void read_frame(ObjectReader& top, Reading& in) {
+  Part frame(top, "frame", in.keys, in.provenance);
+  in.design.cor = frame.get_number("cor", in.defaults.cor);
+  {
+    ObjectReader& r = frame.reader();
+    in.design.cor_given = r.has("cor");
+    in.design.cor_rigid = r.number("cor_rigid");
+    if (in.design.cor_rigid && r.has("cor")) {
+      r.fail("cor_rigid",
+             "contradicts /frame/cor: give the COR, or cor_rigid to derive it from the frame's "
+             "vibration");
+    }
+    if (in.design.cor_rigid)
+      in.note("frame/cor", "derived from cor_rigid and the frame's vibration");
+    in.design.stiffness.EI_N_m2 = r.quantity("EI", Dimension::kStiffness);
+    in.design.stiffness.fundamental_free_Hz = r.quantity("fundamental_free", Dimension::kFrequency);
+    if (in.design.stiffness.EI_N_m2 && in.design.stiffness.fundamental_free_Hz) {
+      r.fail("fundamental_free_Hz", "contradicts /frame/EI_N_m2: give the stiffness once");
+    }
+    in.design.stiffness.RA = r.number("RA");
+    if (in.design.stiffness.RA &&
+        (in.design.stiffness.EI_N_m2 || in.design.stiffness.fundamental_free_Hz)) {
+      r.fail("RA", std::string("contradicts /frame/") +
+                       (in.design.stiffness.EI_N_m2 ? "EI_N_m2" : "fundamental_free_Hz") +
+                       ": give the stiffness once (RA derives the free fundamental)");
+    }
+    if (const Json* section = r.child("cross_section")) {
+      ObjectReader c(*section, "/frame/cross_section", "frame/cross_section", in.source, in.keys);
+      c.check_known(design_keys("frame/cross_section"));
+      in.design.stiffness.shear_modulus_Pa = c.number("shear_modulus_Pa");
+      const auto width = c.quantity("width", Dimension::kLength);
+      const auto thickness = c.quantity("thickness", Dimension::kLength);
+      if (!in.design.stiffness.shear_modulus_Pa || !width || !thickness) {
+        c.fail("", "give shear_modulus_Pa, width_m and thickness_m (for Timoshenko theory)");
+      }
+      in.design.stiffness.width_m = *width;
+      in.design.stiffness.thickness_m = *thickness;
+      c.finish(design_keys("frame/cross_section"));
+    }
+    r.finish(design_keys("frame"));
+  }
+}
+
+// /strings: the impact duration, or the string bed that derives it; the
+// string bed's size when given (its area in SI, returned).
+std::optional<double> read_strings(ObjectReader& top, Reading& in, const ImplementRead& implement) {
+  std::optional<double> head_area_m2;
+  Part strings(top, "strings", in.keys, in.provenance);
+  in.design.impact_duration_s = strings.get("impact_duration", Dimension::kTime,
+                                            "impact_duration_s", in.defaults.impact_duration_s);
+  {
+    ObjectReader& r = strings.reader();
+    if (const auto tension = r.quantity("tension", Dimension::kForce)) {
+      if (r.has("impact_duration_s") || r.has("impact_duration_ms")) {
+        r.fail(r.one_of(spellings("tension", Dimension::kForce)),
+               "contradicts the impact duration: give the duration, or the tension to derive it");
+      }
+      StringBed bed;
+      bed.tension_N = *tension;
+      bed.string_spacing_m =
+          r.quantity("string_spacing", Dimension::kLength).value_or(bed.string_spacing_m);
+      const std::string head = r.one_of(keys_of("strings", {"head_size"}));
+      if (!head.empty()) {
+        const double given = *r.number(head);
+        const double area_m2 = find_spelling("strings", head)->scale.to_si(given);
+        if (!(area_m2 > 0)) r.fail(head, "must be > 0, got " + brief(Json(*r.number(head))));
+        if (in.design.head && !same_head_area(area_m2, in.design.head->area_m2)) {
+          r.fail(head, "contradicts /implement/" + implement.head.key +
+                           ": one head, one size: give it once, as implement." +
+                           implement.head.key + " (the string bed's size is the head's)");
+        }
+        bed.head_radius_m = head_radius_from_area(area_m2);
+        head_area_m2 = area_m2;
+        r.record("head_radius_m", head);
+      } else if (in.design.head) {
+        bed.head_radius_m = head_radius_from_area(in.design.head->area_m2);  // the head's strings
+      }
+      bed.contact_radius_m =
+          r.quantity("contact_radius", Dimension::kLength).value_or(bed.contact_radius_m);
+      in.design.strings = bed;
+      in.note("strings/impact_duration_s", "derived from the string tension");
+    }
+    // The solved collision's string bed: its moving mass and loss.
+    in.design.string_bed_mass_kg =
+        r.quantity("bed_mass", Dimension::kMass).value_or(in.defaults.string_bed_mass_kg);
+    in.design.string_bed_damping_ratio =
+        r.number("bed_damping_ratio").value_or(in.defaults.string_bed_damping_ratio);
+    r.finish(design_keys("strings"));
+  }
+  return head_area_m2;
+}
+
+// /hand: the paper's hand and its grip.
+void read_hand(ObjectReader& top, Reading& in) {
+  Part hand(top, "hand", in.keys, in.provenance);
+  in.design.hand.mass_kg = hand.get("mass", Dimension::kMass, "mass_kg", in.defaults.hand.mass_kg);
+  in.design.hand.center_from_butt_m =
+      hand.get("center_from_butt", Dimension::kLength, "center_from_butt_m",
+               in.defaults.hand.center_from_butt_m);
+  in.design.hand.grip_length_m =
+      hand.get("grip_length", Dimension::kLength, "grip_length_m", in.defaults.hand.grip_length_m);
+  in.design.hand.grip_stiffness_N_m2 =
+      hand.get("grip_stiffness", Dimension::kStiffness, "grip_stiffness_N_m2",
+               in.defaults.hand.grip_stiffness_N_m2);
+  in.design.hand.grip_damping_N_s_m2 =
+      hand.get("grip_damping", Dimension::kDamping, "grip_damping_N_s_m2",
+               in.defaults.hand.grip_damping_N_s_m2);
+  hand.reader().finish(design_keys("hand"));
+}
+
+// /forearm: its equivalent mass, or its mass (Eq. 7; returned when given).
+std::optional<double> read_forearm(ObjectReader& top, Reading& in) {
+  Part forearm(top, "forearm", in.keys, in.provenance);
+  std::optional<double> forearm_mass_kg;
+  {
+    ObjectReader& r = forearm.reader();
+    const std::string key =
+        r.one_of({"equivalent_mass_kg", "equivalent_mass_g", "mass_kg", "mass_g"});
+    if (key.starts_with("mass")) {
+      const double forearm_mass = *r.quantity("mass", Dimension::kMass);
+      forearm_mass_kg = forearm_mass;
+      try {
+        in.design.forearm_equivalent_mass_kg = forearm_equivalent_mass(forearm_mass);  // Eq. (7)
+      } catch (const std::invalid_argument&) {
+        r.fail(key, "must be >= 0 kg, got " + brief(Json(forearm_mass)) + " kg");
+      }
+      r.record("equivalent_mass_kg", key);
+      in.note("forearm/equivalent_mass_kg", "derived from forearm/mass_kg (Eq. 7)");
+    } else {
+      in.design.forearm_equivalent_mass_kg =
+          forearm.get("equivalent_mass", Dimension::kMass, "equivalent_mass_kg",
+                      in.defaults.forearm_equivalent_mass_kg);
+    }
+    r.finish(design_keys("forearm"));
+  }
+  return forearm_mass_kg;
+}
+
+// /ball: its mass, speed and contact law.
+void read_ball(ObjectReader& top, Reading& in) {
+  Part ball(top, "ball", in.keys, in.provenance);
+  in.design.ball.mass_kg = ball.get("mass", Dimension::kMass, "mass_kg", in.defaults.ball.mass_kg);
+  in.design.ball.speed_m_s =
+      ball.get("speed", Dimension::kSpeed, "speed_m_s", in.defaults.ball.speed_m_s);
+  if (const Json* contact = ball.reader().child("contact")) {
+    // The ball's contact law F = k x^n + b x^p x' (collision.hpp); the
+    // calibrated tennis ball for every coefficient not given.
+    ObjectReader c(*contact, "/ball/contact", "ball/contact", in.source, in.keys);
+    c.check_known(design_keys("ball/contact"));
+    in.design.ball_contact.stiffness = c.number("stiffness").value_or(kTennisBallLaw.stiffness);
+    in.design.ball_contact.exponent = c.number("exponent").value_or(kTennisBallLaw.exponent);
+    in.design.ball_contact.damping = c.number("damping").value_or(kTennisBallLaw.damping);
+    in.design.ball_contact.damping_exponent =
+        c.number("damping_exponent").value_or(kTennisBallLaw.damping_exponent);
+    c.finish(design_keys("ball/contact"));
+  }
+  ball.reader().finish(design_keys("ball"));
+}
+
+// Where the ball hits, as the file gives it (or the default of its kind).
+struct ImpactRead {
+  ImpactPlace place = ImpactPlace::kFromTip;
+  double m = kPaperImpactFromTip_m;
+  bool given = true;
+};
+
+// /impact: from the tip, from the butt or the default, and off the axis.
+ImpactRead read_impact(ObjectReader& top, Reading& in, double L, const std::string& form) {
+  Part impact(top, "impact", in.keys, in.provenance);
+  ImpactPlace impact_place = ImpactPlace::kFromTip;
+  double impact_m = kPaperImpactFromTip_m;
+  bool impact_given = true;
+  {
+    ObjectReader& r = impact.reader();
+    r.check_known(impact_keys());
+    const auto from_tip = r.quantity("from_tip", Dimension::kLength);
+    const auto from_butt = r.quantity("from_butt", Dimension::kLength);
+    if (from_tip && from_butt) r.fail("", "give the impact point once: from_tip_m or from_butt_m");
+    if (from_tip) {
+      if (!(*from_tip >= 0.0 && *from_tip <= L)) {
+        r.fail(r.one_of(spellings("from_tip", Dimension::kLength)),
+               "must be in [0, " + brief(Json(L)) + "] m (on the implement), got " +
+                   brief(Json(*from_tip)) + " m");
+      }
+      in.design.impact_from_butt_m = L - *from_tip;
+      impact_m = *from_tip;
+      in.note("impact/from_butt_m", "given (from the tip)");
+    } else if (from_butt) {
+      in.design.impact_from_butt_m = *from_butt;
+      impact_place = ImpactPlace::kFromButt;
+      impact_m = *from_butt;
+      in.note("impact/from_butt_m", "given");
+    } else {
+      impact_given = false;
+      impact_place = default_impact(in.design, implement_form_of(form));
+      if (impact_place == ImpactPlace::kCentreOfStrings) {
+        const double centre = centre_of_strings_from_tip_m(in.design);
+        in.design.impact_from_butt_m = L - centre;
+        if (in.provenance) {
+          (*in.provenance)["impact/from_butt_m"] =
+              "default for a racquet: the centre of the strings, " + half_cm_text(centre) +
+              " from the tip";
+        }
+      } else {
+        in.design.impact_from_butt_m = L - kPaperImpactFromTip_m;
+        in.note("impact/from_butt_m", "default (5 cm from the tip)");
+      }
+    }
+    if (const auto off_axis = r.quantity("off_axis", Dimension::kLength)) {
+      in.design.impact_off_axis_m = *off_axis;
+      in.note("impact/off_axis_m", "given");
+    }
+    r.finish(impact_keys());
+  }
+  return ImpactRead{impact_place, impact_m, impact_given};
+}
+
+// /reference: published values of named outputs, kept as given.
+Json read_reference(ObjectReader& top, const std::string& source) {
+  Json reference;
+  if (const Json* given = top.child("reference")) {
+    ObjectReader r(*given, "/reference", "reference", source, nullptr);
+    r.string("source");
+    std::vector<std::string> expected{"source"};
+    for (const OutputSpec& output : output_specs()) {
+      expected.emplace_back(output.name);
+      r.number(output.name);
+    }
+    r.finish(expected);
+    reference = *given;
+  }
+  return reference;
+}
+
 // With `bookkeeping`, the provenance of every input and the key map that
 // lets a later error name the user's own key; without, neither (a core error
 // is then rethrown as it is, for the caller to read again with them).
@@ -505,204 +754,14 @@ DesignFile read_design_impl(const Json& document, const std::string& source, boo
     note("implement/twistweight_kg_m2", "estimated from the head's size (about +-15 %)");
   }
 
-  Part frame(top, "frame", keys, provenance);
-  design.cor = frame.get_number("cor", defaults.cor);
-  {
-    ObjectReader& r = frame.reader();
-    design.cor_given = r.has("cor");
-    design.cor_rigid = r.number("cor_rigid");
-    if (design.cor_rigid && r.has("cor")) {
-      r.fail("cor_rigid",
-             "contradicts /frame/cor: give the COR, or cor_rigid to derive it from the frame's "
-             "vibration");
-    }
-    if (design.cor_rigid) note("frame/cor", "derived from cor_rigid and the frame's vibration");
-    design.stiffness.EI_N_m2 = r.quantity("EI", Dimension::kStiffness);
-    design.stiffness.fundamental_free_Hz = r.quantity("fundamental_free", Dimension::kFrequency);
-    if (design.stiffness.EI_N_m2 && design.stiffness.fundamental_free_Hz) {
-      r.fail("fundamental_free_Hz", "contradicts /frame/EI_N_m2: give the stiffness once");
-    }
-    design.stiffness.RA = r.number("RA");
-    if (design.stiffness.RA && (design.stiffness.EI_N_m2 || design.stiffness.fundamental_free_Hz)) {
-      r.fail("RA", std::string("contradicts /frame/") +
-                       (design.stiffness.EI_N_m2 ? "EI_N_m2" : "fundamental_free_Hz") +
-                       ": give the stiffness once (RA derives the free fundamental)");
-    }
-    if (const Json* section = r.child("cross_section")) {
-      ObjectReader c(*section, "/frame/cross_section", "frame/cross_section", source, keys);
-      c.check_known(design_keys("frame/cross_section"));
-      design.stiffness.shear_modulus_Pa = c.number("shear_modulus_Pa");
-      const auto width = c.quantity("width", Dimension::kLength);
-      const auto thickness = c.quantity("thickness", Dimension::kLength);
-      if (!design.stiffness.shear_modulus_Pa || !width || !thickness) {
-        c.fail("", "give shear_modulus_Pa, width_m and thickness_m (for Timoshenko theory)");
-      }
-      design.stiffness.width_m = *width;
-      design.stiffness.thickness_m = *thickness;
-      c.finish(design_keys("frame/cross_section"));
-    }
-    r.finish(design_keys("frame"));
-  }
-
-  std::optional<double> head_area_m2;
-  Part strings(top, "strings", keys, provenance);
-  design.impact_duration_s = strings.get("impact_duration", Dimension::kTime, "impact_duration_s",
-                                         defaults.impact_duration_s);
-  {
-    ObjectReader& r = strings.reader();
-    if (const auto tension = r.quantity("tension", Dimension::kForce)) {
-      if (r.has("impact_duration_s") || r.has("impact_duration_ms")) {
-        r.fail(r.one_of(spellings("tension", Dimension::kForce)),
-               "contradicts the impact duration: give the duration, or the tension to derive it");
-      }
-      StringBed bed;
-      bed.tension_N = *tension;
-      bed.string_spacing_m =
-          r.quantity("string_spacing", Dimension::kLength).value_or(bed.string_spacing_m);
-      const std::string head = r.one_of(keys_of("strings", {"head_size"}));
-      if (!head.empty()) {
-        const double given = *r.number(head);
-        const double area_m2 = find_spelling("strings", head)->scale.to_si(given);
-        if (!(area_m2 > 0)) r.fail(head, "must be > 0, got " + brief(Json(*r.number(head))));
-        if (design.head && !same_head_area(area_m2, design.head->area_m2)) {
-          r.fail(head, "contradicts /implement/" + implement.head.key +
-                           ": one head, one size: give it once, as implement." +
-                           implement.head.key + " (the string bed's size is the head's)");
-        }
-        bed.head_radius_m = head_radius_from_area(area_m2);
-        head_area_m2 = area_m2;
-        r.record("head_radius_m", head);
-      } else if (design.head) {
-        bed.head_radius_m = head_radius_from_area(design.head->area_m2);  // the head's strings
-      }
-      bed.contact_radius_m =
-          r.quantity("contact_radius", Dimension::kLength).value_or(bed.contact_radius_m);
-      design.strings = bed;
-      note("strings/impact_duration_s", "derived from the string tension");
-    }
-    // The solved collision's string bed: its moving mass and loss.
-    design.string_bed_mass_kg =
-        r.quantity("bed_mass", Dimension::kMass).value_or(defaults.string_bed_mass_kg);
-    design.string_bed_damping_ratio =
-        r.number("bed_damping_ratio").value_or(defaults.string_bed_damping_ratio);
-    r.finish(design_keys("strings"));
-  }
-
-  Part hand(top, "hand", keys, provenance);
-  design.hand.mass_kg = hand.get("mass", Dimension::kMass, "mass_kg", defaults.hand.mass_kg);
-  design.hand.center_from_butt_m = hand.get("center_from_butt", Dimension::kLength,
-                                            "center_from_butt_m", defaults.hand.center_from_butt_m);
-  design.hand.grip_length_m =
-      hand.get("grip_length", Dimension::kLength, "grip_length_m", defaults.hand.grip_length_m);
-  design.hand.grip_stiffness_N_m2 =
-      hand.get("grip_stiffness", Dimension::kStiffness, "grip_stiffness_N_m2",
-               defaults.hand.grip_stiffness_N_m2);
-  design.hand.grip_damping_N_s_m2 =
-      hand.get("grip_damping", Dimension::kDamping, "grip_damping_N_s_m2",
-               defaults.hand.grip_damping_N_s_m2);
-  hand.reader().finish(design_keys("hand"));
-
-  Part forearm(top, "forearm", keys, provenance);
-  std::optional<double> forearm_mass_kg;
-  {
-    ObjectReader& r = forearm.reader();
-    const std::string key =
-        r.one_of({"equivalent_mass_kg", "equivalent_mass_g", "mass_kg", "mass_g"});
-    if (key.starts_with("mass")) {
-      const double forearm_mass = *r.quantity("mass", Dimension::kMass);
-      forearm_mass_kg = forearm_mass;
-      try {
-        design.forearm_equivalent_mass_kg = forearm_equivalent_mass(forearm_mass);  // Eq. (7)
-      } catch (const std::invalid_argument&) {
-        r.fail(key, "must be >= 0 kg, got " + brief(Json(forearm_mass)) + " kg");
-      }
-      r.record("equivalent_mass_kg", key);
-      note("forearm/equivalent_mass_kg", "derived from forearm/mass_kg (Eq. 7)");
-    } else {
-      design.forearm_equivalent_mass_kg =
-          forearm.get("equivalent_mass", Dimension::kMass, "equivalent_mass_kg",
-                      defaults.forearm_equivalent_mass_kg);
-    }
-    r.finish(design_keys("forearm"));
-  }
-
-  Part ball(top, "ball", keys, provenance);
-  design.ball.mass_kg = ball.get("mass", Dimension::kMass, "mass_kg", defaults.ball.mass_kg);
-  design.ball.speed_m_s =
-      ball.get("speed", Dimension::kSpeed, "speed_m_s", defaults.ball.speed_m_s);
-  if (const Json* contact = ball.reader().child("contact")) {
-    // The ball's contact law F = k x^n + b x^p x' (collision.hpp); the
-    // calibrated tennis ball for every coefficient not given.
-    ObjectReader c(*contact, "/ball/contact", "ball/contact", source, keys);
-    c.check_known(design_keys("ball/contact"));
-    design.ball_contact.stiffness = c.number("stiffness").value_or(kTennisBallLaw.stiffness);
-    design.ball_contact.exponent = c.number("exponent").value_or(kTennisBallLaw.exponent);
-    design.ball_contact.damping = c.number("damping").value_or(kTennisBallLaw.damping);
-    design.ball_contact.damping_exponent =
-        c.number("damping_exponent").value_or(kTennisBallLaw.damping_exponent);
-    c.finish(design_keys("ball/contact"));
-  }
-  ball.reader().finish(design_keys("ball"));
-
-  Part impact(top, "impact", keys, provenance);
-  ImpactPlace impact_place = ImpactPlace::kFromTip;
-  double impact_m = kPaperImpactFromTip_m;
-  bool impact_given = true;
-  {
-    ObjectReader& r = impact.reader();
-    r.check_known(impact_keys());
-    const auto from_tip = r.quantity("from_tip", Dimension::kLength);
-    const auto from_butt = r.quantity("from_butt", Dimension::kLength);
-    if (from_tip && from_butt) r.fail("", "give the impact point once: from_tip_m or from_butt_m");
-    if (from_tip) {
-      if (!(*from_tip >= 0.0 && *from_tip <= L)) {
-        r.fail(r.one_of(spellings("from_tip", Dimension::kLength)),
-               "must be in [0, " + brief(Json(L)) + "] m (on the implement), got " +
-                   brief(Json(*from_tip)) + " m");
-      }
-      design.impact_from_butt_m = L - *from_tip;
-      impact_m = *from_tip;
-      note("impact/from_butt_m", "given (from the tip)");
-    } else if (from_butt) {
-      design.impact_from_butt_m = *from_butt;
-      impact_place = ImpactPlace::kFromButt;
-      impact_m = *from_butt;
-      note("impact/from_butt_m", "given");
-    } else {
-      impact_given = false;
-      impact_place = default_impact(design, implement_form_of(implement.form));
-      if (impact_place == ImpactPlace::kCentreOfStrings) {
-        const double centre = centre_of_strings_from_tip_m(design);
-        design.impact_from_butt_m = L - centre;
-        if (provenance) {
-          (*provenance)["impact/from_butt_m"] =
-              "default for a racquet: the centre of the strings, " + half_cm_text(centre) +
-              " from the tip";
-        }
-      } else {
-        design.impact_from_butt_m = L - kPaperImpactFromTip_m;
-        note("impact/from_butt_m", "default (5 cm from the tip)");
-      }
-    }
-    if (const auto off_axis = r.quantity("off_axis", Dimension::kLength)) {
-      design.impact_off_axis_m = *off_axis;
-      note("impact/off_axis_m", "given");
-    }
-    r.finish(impact_keys());
-  }
-
-  Json reference;
-  if (const Json* given = top.child("reference")) {
-    ObjectReader r(*given, "/reference", "reference", source, nullptr);
-    r.string("source");
-    std::vector<std::string> expected{"source"};
-    for (const OutputSpec& output : output_specs()) {
-      expected.emplace_back(output.name);
-      r.number(output.name);
-    }
-    r.finish(expected);
-    reference = *given;
-  }
+  Reading in{source, keys, provenance, defaults, design};
+  read_frame(top, in);
+  const std::optional<double> head_area_m2 = read_strings(top, in, implement);
+  read_hand(top, in);
+  const std::optional<double> forearm_mass_kg = read_forearm(top, in);
+  read_ball(top, in);
+  const ImpactRead impact = read_impact(top, in, L, implement.form);
+  Json reference = read_reference(top, source);
   top.finish(design_keys(""));
 
   try {
@@ -714,7 +773,7 @@ DesignFile read_design_impl(const Json& document, const std::string& source, boo
   if (described) {
     described->emplace(DesignDescription{std::move(implement_described), design,
                                          forearm_mass_kg.has_value(), forearm_mass_kg.value_or(0.0),
-                                         impact_place, impact_m, impact_given, head_area_m2});
+                                         impact.place, impact.m, impact.given, head_area_m2});
   }
   return DesignFile{source,
                     name,
