@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <fmt/format.h>
+#include <pthread.h>
 #include <spawn.h>
 #include <sys/mman.h>
 #include <sys/resource.h>
@@ -77,14 +78,35 @@ class Messages {
   int fd_ = -1;
 };
 
-// Writes the whole of `text` into `fd`. Throws PlotFailure.
-void write_all(int fd, std::string_view text) {
+// Writes `text` into the pipe `fd` until its reader has gone, which is no
+// signal here: SIGPIPE is held back in this thread while it writes, and the
+// one a gone reader raised is taken (a write to a pipe has no MSG_NOSIGNAL).
+void write_to_pipe(int fd, std::string_view text) {
+  sigset_t pipe_signal;
+  sigemptyset(&pipe_signal);
+  sigaddset(&pipe_signal, SIGPIPE);
+  sigset_t before;
+  ::pthread_sigmask(SIG_BLOCK, &pipe_signal, &before);
+  sigset_t pending;
+  sigemptyset(&pending);
+  ::sigpending(&pending);
+  const bool was_pending = sigismember(&pending, SIGPIPE) == 1;
+  bool gone = false;
   while (!text.empty()) {
     const ssize_t n = ::write(fd, text.data(), text.size());
     if (n < 0 && errno == EINTR) continue;
-    if (n < 0) throw PlotFailure(std::string("cannot hold the plot: ") + std::strerror(errno));
+    if (n < 0) {
+      gone = true;  // gnuplot has gone; its status says why
+      break;
+    }
     text.remove_prefix(static_cast<std::size_t>(n));
   }
+  if (gone && !was_pending) {
+    const timespec now{0, 0};
+    while (::sigtimedwait(&pipe_signal, nullptr, &now) < 0 && errno == EINTR) {
+    }
+  }
+  ::pthread_sigmask(SIG_SETMASK, &before, nullptr);
 }
 
 // An anonymous file in memory (memfd), closed with this object. Throws
@@ -106,17 +128,17 @@ class MemoryFile {
 // Runs gnuplot on `script` with the PNG on its standard output going to
 // `png_fd` and its messages captured, never on ours. Throws PlotFailure.
 void run_gnuplot(const std::string& script, int png_fd) {
-  // gnuplot reads the script as a file, from a memory file on its standard
-  // input opened again by name: commands piped to it are read a byte per
-  // system call (a heat map's 140 kB script: 60 ms of CPU so, 3 ms as a file).
-  const MemoryFile script_file("gnuplot-script");
-  write_all(script_file.fd(), script);
-  if (::lseek(script_file.fd(), 0, SEEK_SET) != 0)
-    throw PlotFailure(std::string("cannot hold the plot: ") + std::strerror(errno));
+  // gnuplot reads the script as a file, the pipe on its standard input
+  // opened again by name: commands it reads as standard input are read a
+  // byte per system call (a heat map's 140 kB script: 60 ms of CPU so, 3 ms
+  // as a file). A pipe, not a file in memory: `ulimit -f` limits no pipe.
+  std::array<int, 2> pipe_fds{};
+  if (::pipe2(pipe_fds.data(), O_CLOEXEC) != 0)
+    throw PlotFailure(std::string("cannot start gnuplot: ") + std::strerror(errno));
   const Messages messages;
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_adddup2(&actions, script_file.fd(), 0);
+  posix_spawn_file_actions_adddup2(&actions, pipe_fds[0], 0);
   posix_spawn_file_actions_adddup2(&actions, png_fd, 1);
   posix_spawn_file_actions_adddup2(&actions, messages.fd(), 2);
   posix_spawnattr_t attributes;
@@ -136,11 +158,15 @@ void run_gnuplot(const std::string& script, int png_fd) {
   const int spawned = ::posix_spawnp(&pid, name, &actions, &attributes, argv, environ);
   posix_spawn_file_actions_destroy(&actions);
   posix_spawnattr_destroy(&attributes);
+  ::close(pipe_fds[0]);
   if (spawned != 0) {
+    ::close(pipe_fds[1]);
     if (spawned == ENOENT)
       throw PlotFailure("gnuplot is not installed (apt-get install gnuplot-nox)");
     throw PlotFailure(std::string("cannot start gnuplot: ") + std::strerror(spawned));
   }
+  write_to_pipe(pipe_fds[1], script);
+  ::close(pipe_fds[1]);
   int status = 0;
   while (::waitpid(pid, &status, 0) < 0) {
     if (errno != EINTR) throw PlotFailure(std::string("gnuplot: ") + std::strerror(errno));

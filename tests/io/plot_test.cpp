@@ -335,5 +335,17 @@ TEST_CASE("A plot gnuplot cannot draw among a page's loses only itself, and says
   }
 }
 
+TEST_CASE("A gnuplot that stops early on a long script is a failure said, not a SIGPIPE") {
+  // An unknown command on line 2, then 4 MB more of script than a pipe holds:
+  // gnuplot has gone long before the script is written.
+  std::string script = "set terminal svg\nno_such_command\n";
+  while (script.size() < (4u << 20)) script += "# a line of comment to fill the pipe\n";
+  std::string why;
+  const auto svg = render_script_svg(script, "early-", &why);
+  CHECK_FALSE(svg);
+  CHECK(why.find("gnuplot failed (exit status 1)") == 0);
+  CHECK(why.find("line 2") != std::string::npos);
+}
+
 }  // namespace
 }  // namespace sweetspot::io
