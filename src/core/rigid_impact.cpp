@@ -148,6 +148,10 @@ namespace {
 // are those of the scalar functions, bit for bit. Without a twist (kTwist
 // false) its division is left out: M_eff / (1 + M_eff * 0) is M_eff exactly
 // for the finite M_eff of a valid case.
+// No AVX-512 copy: one built with -ffp-contract=off (without it GCC fuses
+// multiply-adds there and the results differ) gave the same results but was
+// no faster on an AMD EPYC with AVX-512: the loop's time goes to its eight
+// or so divisions a case, and wider vectors divide no more numbers a cycle.
 template <bool kTwist>
 [[gnu::always_inline]] inline void outcomes_body(
     std::size_t n, const double* __restrict M, const double* __restrict c,

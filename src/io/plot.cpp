@@ -2,10 +2,10 @@
 
 #include <fcntl.h>
 #include <fmt/format.h>
+#include <pthread.h>
 #include <spawn.h>
 #include <sys/mman.h>
 #include <sys/resource.h>
-#include <sys/socket.h>
 #include <sys/stat.h>
 #include <sys/statvfs.h>
 #include <sys/wait.h>
@@ -66,6 +66,11 @@ class Messages {
       line += c;
     }
     if (n == static_cast<ssize_t>(buffer.size())) line += " ...";
+    // gnuplot names the file it reads its script from (run_gnuplot) before
+    // each line number: the name says nothing to the reader.
+    static constexpr std::string_view kScript = "\"/dev/stdin\" ";
+    for (std::size_t at = line.find(kScript); at != std::string::npos; at = line.find(kScript, at))
+      line.erase(at, kScript.size());
     return line;
   }
 
@@ -73,19 +78,67 @@ class Messages {
   int fd_ = -1;
 };
 
+// Writes `text` into the pipe `fd` until its reader has gone, which is no
+// signal here: SIGPIPE is held back in this thread while it writes, and the
+// one a gone reader raised is taken (a write to a pipe has no MSG_NOSIGNAL).
+void write_to_pipe(int fd, std::string_view text) {
+  sigset_t pipe_signal;
+  sigemptyset(&pipe_signal);
+  sigaddset(&pipe_signal, SIGPIPE);
+  sigset_t before;
+  ::pthread_sigmask(SIG_BLOCK, &pipe_signal, &before);
+  sigset_t pending;
+  sigemptyset(&pending);
+  ::sigpending(&pending);
+  const bool was_pending = sigismember(&pending, SIGPIPE) == 1;
+  bool gone = false;
+  while (!text.empty()) {
+    const ssize_t n = ::write(fd, text.data(), text.size());
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) {
+      gone = true;  // gnuplot has gone; its status says why
+      break;
+    }
+    text.remove_prefix(static_cast<std::size_t>(n));
+  }
+  if (gone && !was_pending) {
+    const timespec now{0, 0};
+    while (::sigtimedwait(&pipe_signal, nullptr, &now) < 0 && errno == EINTR) {
+    }
+  }
+  ::pthread_sigmask(SIG_SETMASK, &before, nullptr);
+}
+
+// An anonymous file in memory (memfd), closed with this object. Throws
+// PlotFailure when none can be made.
+class MemoryFile {
+ public:
+  explicit MemoryFile(const char* name) : fd_(::memfd_create(name, MFD_CLOEXEC)) {
+    if (fd_ < 0) throw PlotFailure(std::string("cannot hold the plot: ") + std::strerror(errno));
+  }
+  ~MemoryFile() { ::close(fd_); }
+  MemoryFile(const MemoryFile&) = delete;
+  MemoryFile& operator=(const MemoryFile&) = delete;
+  int fd() const { return fd_; }
+
+ private:
+  int fd_;
+};
+
 // Runs gnuplot on `script` with the PNG on its standard output going to
 // `png_fd` and its messages captured, never on ours. Throws PlotFailure.
 void run_gnuplot(const std::string& script, int png_fd) {
-  std::array<int, 2> sockets{};
-  // A socket rather than a pipe: send() reports a gnuplot that quit early as
-  // EPIPE (MSG_NOSIGNAL) instead of raising SIGPIPE in this process.
-  if (::socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, sockets.data()) != 0) {
+  // gnuplot reads the script as a file, the pipe on its standard input
+  // opened again by name: commands it reads as standard input are read a
+  // byte per system call (a heat map's 140 kB script: 60 ms of CPU so, 3 ms
+  // as a file). A pipe, not a file in memory: `ulimit -f` limits no pipe.
+  std::array<int, 2> pipe_fds{};
+  if (::pipe2(pipe_fds.data(), O_CLOEXEC) != 0)
     throw PlotFailure(std::string("cannot start gnuplot: ") + std::strerror(errno));
-  }
   const Messages messages;
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_adddup2(&actions, sockets[1], 0);
+  posix_spawn_file_actions_adddup2(&actions, pipe_fds[0], 0);
   posix_spawn_file_actions_adddup2(&actions, png_fd, 1);
   posix_spawn_file_actions_adddup2(&actions, messages.fd(), 2);
   posix_spawnattr_t attributes;
@@ -99,26 +152,21 @@ void run_gnuplot(const std::string& script, int png_fd) {
   posix_spawnattr_setsigmask(&attributes, &none);
   posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETSIGMASK);
   char name[] = "gnuplot";
-  char* argv[] = {name, nullptr};
+  char file[] = "/dev/stdin";
+  char* argv[] = {name, file, nullptr};
   pid_t pid = -1;
   const int spawned = ::posix_spawnp(&pid, name, &actions, &attributes, argv, environ);
   posix_spawn_file_actions_destroy(&actions);
   posix_spawnattr_destroy(&attributes);
-  ::close(sockets[1]);
+  ::close(pipe_fds[0]);
   if (spawned != 0) {
-    ::close(sockets[0]);
+    ::close(pipe_fds[1]);
     if (spawned == ENOENT)
       throw PlotFailure("gnuplot is not installed (apt-get install gnuplot-nox)");
     throw PlotFailure(std::string("cannot start gnuplot: ") + std::strerror(spawned));
   }
-  std::string_view left = script;
-  while (!left.empty()) {
-    const ssize_t n = ::send(sockets[0], left.data(), left.size(), MSG_NOSIGNAL);
-    if (n < 0 && errno == EINTR) continue;
-    if (n < 0) break;  // gnuplot has gone; its status says why
-    left.remove_prefix(static_cast<std::size_t>(n));
-  }
-  ::close(sockets[0]);
+  write_to_pipe(pipe_fds[1], script);
+  ::close(pipe_fds[1]);
   int status = 0;
   while (::waitpid(pid, &status, 0) < 0) {
     if (errno != EINTR) throw PlotFailure(std::string("gnuplot: ") + std::strerror(errno));
@@ -449,21 +497,16 @@ namespace {
 // What gnuplot writes for `script`, held in an anonymous memory file and
 // read back; with `png`, checked as a whole PNG first. Throws PlotFailure.
 std::string gnuplot_output_in_memory(const std::string& script, const char* name, bool png) {
-  const int fd = ::memfd_create(name, MFD_CLOEXEC);
-  if (fd < 0) throw PlotFailure(std::string("cannot hold the plot: ") + std::strerror(errno));
-  struct Closer {
-    int fd;
-    ~Closer() { ::close(fd); }
-  } closer{fd};
-  run_gnuplot(script, fd);
+  const MemoryFile out(name);
+  run_gnuplot(script, out.fd());
   if (png) {
-    const std::string problem = png_problem(fd);
+    const std::string problem = png_problem(out.fd());
     if (!problem.empty()) throw PlotFailure(problem);
   }
   std::string bytes;
   std::array<char, 1 << 16> buffer{};
   for (off_t at = 0;;) {
-    const ssize_t n = ::pread(fd, buffer.data(), buffer.size(), at);
+    const ssize_t n = ::pread(out.fd(), buffer.data(), buffer.size(), at);
     if (n < 0 && errno == EINTR) continue;
     if (n < 0) throw PlotFailure(std::string("cannot read the plot: ") + std::strerror(errno));
     if (n == 0) return bytes;
@@ -497,6 +540,76 @@ std::string replace_all(std::string text, std::string_view from, std::string_vie
   return text;
 }
 
+// What gnuplot wrote for one SVG plot made fit to inline on a page (as
+// render_script_svg() describes). Throws PlotFailure.
+std::string inline_svg(std::string_view written, const std::string& id_prefix) {
+  const std::size_t start = written.find("<svg");
+  const std::size_t end = written.rfind("</svg>");
+  if (start == std::string::npos || end == std::string::npos || end < start)
+    throw PlotFailure("gnuplot wrote no complete SVG");
+  std::string svg(written.substr(start, end + 6 - start));
+  // gnuplot writes '<' in text as "&lt;" but '&' and '>' as they are: a
+  // title or key with '&' (or "]]>") would break the page's XML. Every '&'
+  // but those of gnuplot's "&lt;" becomes "&amp;" (a name holding "&amp;"
+  // shows it as typed), and "]]>" becomes "]]&gt;".
+  std::string escaped;
+  escaped.reserve(svg.size());
+  for (std::size_t at = 0; at < svg.size(); ++at) {
+    if (svg[at] == '&' && svg.compare(at, 4, "&lt;") != 0) {
+      escaped += "&amp;";
+    } else if (svg[at] == '>' && at >= 2 && svg[at - 1] == ']' && svg[at - 2] == ']') {
+      escaped += "&gt;";
+    } else {
+      escaped += svg[at];
+    }
+  }
+  // A name's characters that XML cannot hold (U+FFFE, U+FFFF, controls)
+  // reach gnuplot's text as they are: the SVG is made well-formed here, for
+  // every page that inlines it.
+  svg = xml_chars(escaped);
+  // The ids gnuplot gives its groups serve its mouse script only (not
+  // written): dropped, since each plot repeats them. The rest get the prefix.
+  for (const char* group : {"gnuplot_canvas", "gnuplot_plot_"}) {
+    for (std::size_t at = svg.find(std::string(" id=\"") + group); at != std::string::npos;
+         at = svg.find(std::string(" id=\"") + group, at)) {
+      const std::size_t close = svg.find('"', at + 5);
+      svg.erase(at, close + 1 - at);
+    }
+  }
+  svg = replace_all(std::move(svg), "id='", "id='" + id_prefix);
+  svg = replace_all(std::move(svg), "href='#", "href='#" + id_prefix);
+  svg = replace_all(std::move(svg), "url(#", "url(#" + id_prefix);
+  return svg;
+}
+
+// What one gnuplot prints after each plot of render_svgs(): a tag of its
+// own, which no SVG holds (gnuplot writes a '<' in a plot's text as "&lt;").
+constexpr std::string_view kPlotEnd = "<sweetspot-plot-end/>";
+
+// The plots drawn by one gnuplot, in order. Throws PlotFailure when that
+// gnuplot fails or does not end every plot.
+std::vector<std::string> svgs_of_one_gnuplot(const std::vector<SvgPlot>& plots) {
+  // Each script as it is, then the tag on standard output (after the SVG,
+  // which gnuplot has finished by then) and every setting, variable and
+  // data block back to gnuplot's defaults for the next.
+  std::string script;
+  for (const SvgPlot& plot : plots) {
+    script += plot.script;
+    if (!plot.script.empty() && plot.script.back() != '\n') script += '\n';
+    script += "set print '-'\nprint '" + std::string(kPlotEnd) + "'\nunset print\nreset session\n";
+  }
+  const std::string written = gnuplot_output_in_memory(script, "sweetspot-svg", false);
+  std::vector<std::string> svgs;
+  std::size_t from = 0;
+  for (const SvgPlot& plot : plots) {
+    const std::size_t end = written.find(kPlotEnd, from);
+    if (end == std::string::npos) throw PlotFailure("gnuplot did not finish every plot");
+    svgs.push_back(inline_svg(std::string_view(written).substr(from, end - from), plot.id_prefix));
+    from = end + kPlotEnd.size();
+  }
+  return svgs;
+}
+
 }  // namespace
 
 std::optional<std::string> render_svg(const Plot& plot, const std::string& id_prefix,
@@ -507,48 +620,34 @@ std::optional<std::string> render_svg(const Plot& plot, const std::string& id_pr
 std::optional<std::string> render_script_svg(const std::string& script,
                                              const std::string& id_prefix, std::string* why) {
   try {
-    std::string svg = gnuplot_output_in_memory(script, "sweetspot-svg", false);
-    const std::size_t start = svg.find("<svg");
-    const std::size_t end = svg.rfind("</svg>");
-    if (start == std::string::npos || end == std::string::npos || end < start)
-      throw PlotFailure("gnuplot wrote no complete SVG");
-    svg = svg.substr(start, end + 6 - start);
-    // gnuplot writes '<' in text as "&lt;" but '&' and '>' as they are: a
-    // title or key with '&' (or "]]>") would break the page's XML. Every '&'
-    // but those of gnuplot's "&lt;" becomes "&amp;" (a name holding "&amp;"
-    // shows it as typed), and "]]>" becomes "]]&gt;".
-    std::string escaped;
-    escaped.reserve(svg.size());
-    for (std::size_t at = 0; at < svg.size(); ++at) {
-      if (svg[at] == '&' && svg.compare(at, 4, "&lt;") != 0) {
-        escaped += "&amp;";
-      } else if (svg[at] == '>' && at >= 2 && svg[at - 1] == ']' && svg[at - 2] == ']') {
-        escaped += "&gt;";
-      } else {
-        escaped += svg[at];
-      }
-    }
-    // A name's characters that XML cannot hold (U+FFFE, U+FFFF, controls)
-    // reach gnuplot's text as they are: the SVG is made well-formed here, for
-    // every page that inlines it.
-    svg = xml_chars(escaped);
-    // The ids gnuplot gives its groups serve its mouse script only (not
-    // written): dropped, since each plot repeats them. The rest get the prefix.
-    for (const char* group : {"gnuplot_canvas", "gnuplot_plot_"}) {
-      for (std::size_t at = svg.find(std::string(" id=\"") + group); at != std::string::npos;
-           at = svg.find(std::string(" id=\"") + group, at)) {
-        const std::size_t close = svg.find('"', at + 5);
-        svg.erase(at, close + 1 - at);
-      }
-    }
-    svg = replace_all(std::move(svg), "id='", "id='" + id_prefix);
-    svg = replace_all(std::move(svg), "href='#", "href='#" + id_prefix);
-    svg = replace_all(std::move(svg), "url(#", "url(#" + id_prefix);
-    return svg;
+    return inline_svg(gnuplot_output_in_memory(script, "sweetspot-svg", false), id_prefix);
   } catch (const std::exception& e) {
     if (why) *why = e.what();
   }
   return std::nullopt;
+}
+
+std::vector<RenderedSvg> render_svgs(const std::vector<SvgPlot>& plots) {
+  std::vector<RenderedSvg> rendered(plots.size());
+  std::string why;
+  if (plots.size() > 1) {
+    try {
+      std::vector<std::string> svgs = svgs_of_one_gnuplot(plots);
+      for (std::size_t i = 0; i < plots.size(); ++i) rendered[i].svg = std::move(svgs[i]);
+      return rendered;
+    } catch (const std::exception& e) {
+      why = e.what();
+    }
+    if (why.rfind("gnuplot is not installed", 0) == 0) {
+      for (RenderedSvg& r : rendered) r.why = why;
+      return rendered;
+    }
+  }
+  // A plot gnuplot cannot draw ends that gnuplot: each plot is then drawn by
+  // one of its own, so that the others are drawn and the failing one says why.
+  for (std::size_t i = 0; i < plots.size(); ++i)
+    rendered[i].svg = render_script_svg(plots[i].script, plots[i].id_prefix, &rendered[i].why);
+  return rendered;
 }
 
 }  // namespace sweetspot::io

@@ -124,4 +124,33 @@ std::optional<std::string> render_svg(const Plot& plot, const std::string& id_pr
 std::optional<std::string> render_script_svg(const std::string& script,
                                              const std::string& id_prefix, std::string* why);
 
+// One plot of several that render_svgs() draws: a script that sets an svg
+// terminal and no output (gnuplot_svg_script(), a heat map's) and the prefix
+// of its ids on the page.
+struct SvgPlot {
+  std::string script;
+  std::string id_prefix;
+};
+
+// A plot render_svgs() drew (`svg`, as render_script_svg() returns it), or
+// why not.
+struct RenderedSvg {
+  std::optional<std::string> svg;
+  std::string why;
+};
+
+// The plots of a page, each as render_script_svg() draws it, drawn by one
+// gnuplot (its start costs more than most plots): the scripts run one after
+// another, every setting back to gnuplot's defaults between them, and each
+// SVG is cut from gnuplot's standard output at a tag printed after it. When
+// that gnuplot fails, each plot is drawn by a gnuplot of its own, so that a
+// plot gnuplot cannot draw loses only itself and says why.
+// The SVG is byte for byte the one a gnuplot of its own draws for the plots
+// of the pages (tests/io/plot_test.cpp). One thing carries over in gnuplot
+// 5.4's svg terminal: the stroke colour of the empty group that opens a plot
+// is the last colour of the plot before, where that plot ends on a coloured
+// stroke rather than its labels (a colour box with no label, say); nothing
+// in that group is drawn.
+std::vector<RenderedSvg> render_svgs(const std::vector<SvgPlot>& plots);
+
 }  // namespace sweetspot::io

@@ -140,16 +140,25 @@ std::string html_page_close(std::string_view footer_html) {
   return "<footer>" + std::string(footer_html) + "</footer>\n</main>\n</body>\n</html>\n";
 }
 
-std::string html_figure(const io::Plot& plot, const std::string& id, const std::string& caption) {
-  std::string why;
-  const auto wide = render_svg(plot, id + "-w-", &why, 960, 560);
-  const auto narrow = wide ? render_svg(plot, id + "-n-", &why, 520, 460) : std::nullopt;
-  const std::string body =
-      wide && narrow
-          ? "<div class=\"wide\">" + *wide + "</div><div class=\"narrow\">" + *narrow + "</div>"
-          : "<p class=\"missing\">Plot not drawn: " + html_escape(why) + "</p>";
+std::vector<io::SvgPlot> figure_svg_plots(const io::Plot& plot, const std::string& id) {
+  return {{io::gnuplot_svg_script(plot, 960, 560), id + "-w-"},
+          {io::gnuplot_svg_script(plot, 520, 460), id + "-n-"}};
+}
+
+std::string html_figure(const io::RenderedSvg& wide, const io::RenderedSvg& narrow,
+                        const std::string& id, const std::string& caption) {
+  const std::string body = wide.svg && narrow.svg
+                               ? "<div class=\"wide\">" + *wide.svg +
+                                     "</div><div class=\"narrow\">" + *narrow.svg + "</div>"
+                               : "<p class=\"missing\">Plot not drawn: " +
+                                     html_escape(wide.svg ? narrow.why : wide.why) + "</p>";
   return fmt::format("<figure id=\"{}\">{}<figcaption>{}</figcaption></figure>\n", id, body,
                      caption);
+}
+
+std::string html_figure(const io::Plot& plot, const std::string& id, const std::string& caption) {
+  const std::vector<io::RenderedSvg> svgs = io::render_svgs(figure_svg_plots(plot, id));
+  return html_figure(svgs[0], svgs[1], id, caption);
 }
 
 }  // namespace sweetspot::reports

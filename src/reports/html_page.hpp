@@ -8,6 +8,7 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "io/plot.hpp"
 
@@ -46,5 +47,13 @@ std::string html_page_close(std::string_view footer_html);
 // the plot is missing in its place.
 std::string html_figure(const io::Plot& plot, const std::string& id,
                         const std::string& caption_html);
+
+// The two layouts of `plot` that html_figure() draws, wide then narrow, for a
+// page that draws all its plots with one io::render_svgs().
+std::vector<io::SvgPlot> figure_svg_plots(const io::Plot& plot, const std::string& id);
+
+// The figure of html_figure() from its two layouts as drawn.
+std::string html_figure(const io::RenderedSvg& wide, const io::RenderedSvg& narrow,
+                        const std::string& id, const std::string& caption_html);
 
 }  // namespace sweetspot::reports

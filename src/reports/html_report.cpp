@@ -5,7 +5,10 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <optional>
+#include <span>
 #include <stdexcept>
+#include <vector>
 
 #include "io/format.hpp"
 #include "io/json_reader.hpp"
@@ -185,21 +188,24 @@ void tape_marks(const io::DesignFile& file, std::vector<Mark>& ms) {
 constexpr int kMapTableStep = 5;
 constexpr int kMapTableFirst = 2;
 
-// The string-bed maps (power, shock and, with the frame's stiffness, feel):
-// gnuplot's heat maps as inline SVG, a caption each, the numbers behind them.
-// Without a head size the drawing's mid-size head is assumed, and said.
-std::string maps_html(const io::DesignFile& file, Fidelity fidelity) {
+// The string-bed maps of the page: computed over the design (its head
+// assumed when not given), or why not.
+struct PageMaps {
+  bool head_assumed = false;
+  std::optional<studies::StringBedMap> map;
+  std::string refused;  // why there is no map
+};
+
+PageMaps page_maps(const io::DesignFile& file, Fidelity fidelity) {
   Design d = file.design;
-  const double L = d.implement.length_m();
-  const bool head_assumed = !d.head && !d.twistweight_kg_m2;
-  if (head_assumed) {
+  PageMaps maps;
+  maps.head_assumed = !d.head && !d.twistweight_kg_m2;
+  if (maps.head_assumed) {
     HeadShape head;
     head.area_m2 = kDefaultHeadArea_m2;
     d.head = head;
   }
   studies::StringBedMapOptions options;
-  studies::StringBedMap map;
-  std::string html = "<section id=\"maps\"><h2>Over the string bed</h2>\n<!-- sweetspot:maps -->\n";
   try {
     // The maps are drawn at the fidelity of the page's answer: the solved
     // collision when the answer is solved, so the power map agrees with the
@@ -207,11 +213,37 @@ std::string maps_html(const io::DesignFile& file, Fidelity fidelity) {
     options.fidelity = fidelity == Fidelity::kRigid || fidelity == Fidelity::kCollision
                            ? fidelity
                            : Fidelity::kModal;
-    map = studies::string_bed_map(d, options);
+    maps.map = studies::string_bed_map(d, options);
   } catch (const std::invalid_argument& e) {
-    return html + "<p class=\"missing\">No maps for this design: " + html_escape(e.what()) +
+    maps.refused = e.what();
+  }
+  return maps;
+}
+
+// The heat maps' plots, one per quantity of map_quantities(), for io::render_svgs().
+std::vector<io::SvgPlot> map_svg_plots(const PageMaps& maps, double length_m) {
+  std::vector<io::SvgPlot> plots;
+  if (!maps.map) return plots;
+  for (const MapQuantity q : map_quantities(*maps.map))
+    plots.push_back({string_bed_heat_map_svg_script(*maps.map, q, length_m, ""),
+                     "map-" + map_quantity_name(q) + "-"});
+  return plots;
+}
+
+// The string-bed maps (power, shock and, with the frame's stiffness, feel):
+// gnuplot's heat maps as inline SVG (`svgs`, as drawn from map_svg_plots()),
+// a caption each, the numbers behind them. Without a head size the drawing's
+// mid-size head is assumed, and said.
+std::string maps_html(const io::DesignFile& file, const PageMaps& maps,
+                      std::span<const io::RenderedSvg> svgs) {
+  const double L = file.design.implement.length_m();
+  const bool head_assumed = maps.head_assumed;
+  std::string html = "<section id=\"maps\"><h2>Over the string bed</h2>\n<!-- sweetspot:maps -->\n";
+  if (!maps.map) {
+    return html + "<p class=\"missing\">No maps for this design: " + html_escape(maps.refused) +
            "</p>\n</section>\n";
   }
+  const studies::StringBedMap& map = *maps.map;
   std::string lines;
   if (map.cop_hand_from_butt_m)
     lines += fmt::format("the solid line across the head is the hand-held COP, {} cm from the tip",
@@ -237,11 +269,11 @@ std::string maps_html(const io::DesignFile& file, Fidelity fidelity) {
     if (p.on_bed && p.apparent_cor > best_power.apparent_cor) best_power = p;
   }
   html += "<div class=\"maps\">\n";
-  for (const MapQuantity q : map_quantities(map)) {
+  const std::vector<MapQuantity> quantities = map_quantities(map);
+  for (std::size_t k = 0; k < quantities.size(); ++k) {
+    const MapQuantity q = quantities[k];
     const std::string name = map_quantity_name(q);
-    std::string why;
-    const auto svg = io::render_script_svg(string_bed_heat_map_svg_script(map, q, L, ""),
-                                           "map-" + name + "-", &why);
+    const io::RenderedSvg& svg = svgs[k];
     std::string says;
     switch (q) {
       case MapQuantity::kPower:
@@ -265,10 +297,10 @@ std::string maps_html(const io::DesignFile& file, Fidelity fidelity) {
         says = "Feel: the vibration energy the hit leaves in the frame, least near the node";
         break;
     }
-    html +=
-        fmt::format("<figure id=\"map-{}\">{}<figcaption>{}; {}.</figcaption></figure>\n", name,
-                    svg ? *svg : "<p class=\"missing\">Map not drawn: " + html_escape(why) + "</p>",
-                    says, lines);
+    html += fmt::format(
+        "<figure id=\"map-{}\">{}<figcaption>{}; {}.</figcaption></figure>\n", name,
+        svg.svg ? *svg.svg : "<p class=\"missing\">Map not drawn: " + html_escape(svg.why) + "</p>",
+        says, lines);
   }
   html += "</div>\n";
   const bool feel = map.fidelity != Fidelity::kRigid;
@@ -586,15 +618,22 @@ std::string design_html_report(const io::DesignFile& file, const io::Json& docum
                     lines};
   wrist_plot.key_position = "off";
   cor_plot.key_position = "off";
+  // Every plot of the page drawn by one gnuplot: the two curves, each wide
+  // and narrow, then the maps over the string bed.
+  const PageMaps maps = page_maps(file, fidelity_of(e));
+  std::vector<io::SvgPlot> plots = figure_svg_plots(wrist_plot, "plot-wrist");
+  for (io::SvgPlot& p : figure_svg_plots(cor_plot, "plot-cor")) plots.push_back(std::move(p));
+  for (io::SvgPlot& p : map_svg_plots(maps, L)) plots.push_back(std::move(p));
+  std::vector<io::RenderedSvg> svgs = io::render_svgs(plots);
   html +=
-      html_figure(wrist_plot, "plot-wrist",
+      html_figure(svgs[0], svgs[1], "plot-wrist",
                   "The share of the force on the strings that reaches the wrist (Cross 2004, Eq. "
                   "11), rigid model: zero at the hand-held COP.");
   const auto most = std::max_element(
       curve.begin(), curve.end(),
       [](const FramePoint& a, const FramePoint& b) { return a.apparent_cor < b.apparent_cor; });
   html += html_figure(
-      cor_plot, "plot-cor",
+      svgs[2], svgs[3], "plot-cor",
       most == curve.end()
           ? std::string("The apparent COR.")
           : fmt::format("{}, highest {} cm from the tip ({:.2f}).",
@@ -616,7 +655,7 @@ std::string design_html_report(const io::DesignFile& file, const io::Json& docum
   }
   html += "</tbody></table></div></details>\n</section>\n";
 
-  html += maps_html(file, fidelity_of(e));
+  html += maps_html(file, maps, std::span(svgs).subspan(4));
 
   // Every output, in people's units.
   html +=

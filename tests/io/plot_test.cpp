@@ -8,11 +8,14 @@
 #include <catch2/catch.hpp>
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <set>
 #include <sstream>
 #include <thread>
+#include <vector>
 
 #include "file_helpers.hpp"
 #include "io/format.hpp"
@@ -102,6 +105,7 @@ TEST_CASE(
   CHECK(why.find("gnuplot failed (exit status 1)") == 0);
   CHECK(why.find("no valid points") != std::string::npos);
   CHECK(why.find('\n') == std::string::npos);
+  CHECK(why.find("/dev/stdin") == std::string::npos);  // how gnuplot got its script is not news
   CHECK_FALSE(std::filesystem::exists(png));
   CHECK(std::distance(std::filesystem::directory_iterator(dir), {}) == 1);  // stdout only
   std::filesystem::remove_all(dir);
@@ -229,6 +233,118 @@ TEST_CASE("An SVG plot holds only characters XML 1.0 allows, whatever its title 
   CHECK(svg->find('\xff') == std::string::npos);
   CHECK(*svg == xml_chars(*svg));
   CHECK(svg->find("title \xef\xbf\xbd\xef\xbf\xbd end") != std::string::npos);
+}
+
+// Plots as a page draws them: settings that would carry over from one plot
+// to the next in one gnuplot (a log scale, a fixed aspect ratio, a palette,
+// labels, arrows, data blocks), a text that spells the tag between plots.
+std::vector<SvgPlot> page_of_plots() {
+  Plot logged = two_points("logged");
+  logged.log_y = true;
+  logged.vertical_lines = {{0.5, "COP"}};
+  logged.markers = {PlotMarker{0.25, 1.5, "here"}};
+  // A heat map as the string bed's are drawn: an image with its colour box,
+  // labelled, and a line in the key below.
+  const std::string image =
+      "set terminal svg size 300,360 dynamic enhanced font 'DejaVu Sans,12' background "
+      "'#ffffff'\nset title 'a map'\nset xlabel 'across (cm)'\nset ylabel 'along (cm)'\n"
+      "set cblabel 'value'\nset palette defined (0 '#1a9850', 1 '#d73027')\n"
+      "set size ratio -1\nset key below box opaque\n"
+      "$grid << EOD\n0 0 1\n0 1 2\n\n1 0 3\n1 1 4\nEOD\n$outline << EOD\n0 0\n1 1\nEOD\n"
+      "plot $grid using 1:2:3 with image notitle, $outline using 1:2 with lines lw 2 lc rgb "
+      "'gray20' title 'bed'\n";
+  return {{gnuplot_svg_script(logged, 960, 560), "a-"},
+          {image, "b-"},
+          {gnuplot_svg_script(two_points("plain after the others"), 520, 460), "c-"},
+          {gnuplot_svg_script(two_points("<sweetspot-plot-end/> in a title"), 520, 460), "d-"},
+          {gnuplot_svg_script(two_points("last"), 960, 560), "e-"}};
+}
+
+// The full path of the first gnuplot on PATH.
+std::string gnuplot_on_path() {
+  std::istringstream path(std::getenv("PATH") ? std::getenv("PATH") : "");
+  for (std::string dir; std::getline(path, dir, ':');) {
+    const auto candidate = std::filesystem::path(dir) / "gnuplot";
+    if (!dir.empty() && ::access(candidate.c_str(), X_OK) == 0) return candidate.string();
+  }
+  return "";
+}
+
+TEST_CASE("A page's plots are drawn by one gnuplot, each SVG the same as drawn alone") {
+  const std::vector<SvgPlot> plots = page_of_plots();
+  std::vector<std::string> alone;
+  for (const SvgPlot& plot : plots) {
+    std::string why;
+    const auto svg = render_script_svg(plot.script, plot.id_prefix, &why);
+    INFO(why);
+    REQUIRE(svg);
+    alone.push_back(*svg);
+  }
+  // gnuplot on PATH is a script that counts its starts, then runs gnuplot.
+  const std::string gnuplot = gnuplot_on_path();
+  REQUIRE_FALSE(gnuplot.empty());
+  const auto dir = std::filesystem::temp_directory_path() / "sweetspot_plot_one_gnuplot_test";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const auto starts = dir / "starts";
+  {
+    std::ofstream counter(dir / "gnuplot");
+    counter << "#!/bin/sh\necho start >> '" << starts.string() << "'\nexec '" << gnuplot
+            << "' \"$@\"\n";
+  }
+  std::filesystem::permissions(dir / "gnuplot", std::filesystem::perms::owner_all);
+  const std::string path = std::getenv("PATH");
+  ::setenv("PATH", (dir.string() + ":" + path).c_str(), 1);
+  const std::vector<RenderedSvg> together = render_svgs(plots);
+  ::setenv("PATH", path.c_str(), 1);
+  std::ifstream counted(starts);
+  const std::string log((std::istreambuf_iterator<char>(counted)),
+                        std::istreambuf_iterator<char>());
+  CHECK(log == "start\n");
+  REQUIRE(together.size() == plots.size());
+  for (std::size_t i = 0; i < plots.size(); ++i) {
+    INFO(i << ": " << together[i].why);
+    REQUIRE(together[i].svg);
+    CHECK(*together[i].svg == alone[i]);
+  }
+  CHECK(alone[3].find("&lt;sweetspot-plot-end/>") != std::string::npos);
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("A plot gnuplot cannot draw among a page's loses only itself, and says why") {
+  std::vector<SvgPlot> plots = page_of_plots();
+  const Plot empty{
+      "empty", "x (m)", "y (N)", std::nullopt, std::nullopt, {PlotSeries{"none", {}, {}}}, {}, {}};
+  plots.insert(plots.begin() + 2, SvgPlot{gnuplot_svg_script(empty), "empty-"});
+  const std::vector<RenderedSvg> drawn = render_svgs(plots);
+  REQUIRE(drawn.size() == plots.size());
+  for (std::size_t i = 0; i < plots.size(); ++i) {
+    INFO(i);
+    if (i == 2) {
+      CHECK_FALSE(drawn[i].svg);
+      CHECK(drawn[i].why.find("gnuplot failed (exit status 1)") == 0);
+      CHECK(drawn[i].why.find("no valid points") != std::string::npos);
+      continue;
+    }
+    std::string why;
+    const auto alone = render_script_svg(plots[i].script, plots[i].id_prefix, &why);
+    REQUIRE(alone);
+    REQUIRE(drawn[i].svg);
+    CHECK(*drawn[i].svg == *alone);
+    CHECK(drawn[i].why.empty());
+  }
+}
+
+TEST_CASE("A gnuplot that stops early on a long script is a failure said, not a SIGPIPE") {
+  // An unknown command on line 2, then 4 MB more of script than a pipe holds:
+  // gnuplot has gone long before the script is written.
+  std::string script = "set terminal svg\nno_such_command\n";
+  while (script.size() < (4u << 20)) script += "# a line of comment to fill the pipe\n";
+  std::string why;
+  const auto svg = render_script_svg(script, "early-", &why);
+  CHECK_FALSE(svg);
+  CHECK(why.find("gnuplot failed (exit status 1)") == 0);
+  CHECK(why.find("line 2") != std::string::npos);
 }
 
 }  // namespace
