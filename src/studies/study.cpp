@@ -275,40 +275,54 @@ double terms_value(const Study& study, const Evaluation& e) {
   return sum;
 }
 
-Study read_study(const io::Json& document, const std::string& source, const std::string& folder) {
-  Study study;
-  study.source = source;
-  io::ObjectReader top(document, "", "", source, nullptr);
-  study.name = top.string("name").value_or(source);
-  study.question = top.string("question").value_or("");
-  top.string("description");
-  top.string("$schema");
+namespace {
 
-  const io::Json* design = top.child("design");
-  if (!design) top.fail("design", "missing: a design file path or an inline design");
+// What the steps of read_study share: the study being filled, the reader of
+// the study file's top level and the file's name for messages.
+struct StudyReading {
+  Study& study;
+  io::ObjectReader& top;
+  const std::string& source;
+};
+
+void read_names(StudyReading& in) {
+  in.study.name = in.top.string("name").value_or(in.source);
+  in.study.question = in.top.string("question").value_or("");
+  in.top.string("description");
+  in.top.string("$schema");
+}
+
+// The design, a file path (relative to the study's folder) or inline; true
+// when the design gives no impact (the default impact applies).
+bool read_design_reference(StudyReading& in, const std::string& folder) {
+  Study& study = in.study;
+  const io::Json* design = in.top.child("design");
+  if (!design) in.top.fail("design", "missing: a design file path or an inline design");
   if (design->is_string()) {
     const std::string path = (std::filesystem::path(folder) / design->get<std::string>()).string();
     try {
       study.design_document = io::read_json_file(path);
     } catch (const io::InputError& e) {
-      throw io::InputError(source, "/design", "cannot read the design: " + std::string(e.what()));
+      throw io::InputError(in.source, "/design",
+                           "cannot read the design: " + std::string(e.what()));
     }
     study.design_source = path;
   } else if (design->is_object()) {
     study.design_document = *design;
-    study.design_source = source + " (inline design)";
+    study.design_source = in.source + " (inline design)";
   } else {
-    top.fail("design", "expected a path or an inline design object, got " + io::brief(*design));
+    in.top.fail("design", "expected a path or an inline design object, got " + io::brief(*design));
   }
   // The design must be valid as written.
   const io::DesignFile as_written = io::read_design(study.design_document, study.design_source);
   const auto impact = as_written.provenance.find("impact/from_butt_m");
-  const bool default_impact =
-      impact != as_written.provenance.end() && impact->second.starts_with("default");
+  return impact != as_written.provenance.end() && impact->second.starts_with("default");
+}
 
+int read_grid_points(StudyReading& in) {
   int grid_points = kDefaultGridPoints;
-  if (const io::Json* grid = top.child("grid")) {
-    io::ObjectReader g(*grid, "/grid", "grid", source, nullptr);
+  if (const io::Json* grid = in.top.child("grid")) {
+    io::ObjectReader g(*grid, "/grid", "grid", in.source, nullptr);
     const auto points = g.number("points");
     if (points && !(*points >= 1 && *points <= kMaxGridPoints && *points == std::floor(*points))) {
       g.fail("points", "must be a whole number in [1, 1e7], got " + io::brief(io::Json(*points)));
@@ -316,13 +330,17 @@ Study read_study(const io::Json& document, const std::string& source, const std:
     if (points) grid_points = static_cast<int>(*points);
     g.finish({"points"});
   }
+  return grid_points;
+}
 
-  const io::Json& variables = array_at(top, "variables", true);
-  if (variables.empty()) top.fail("variables", "expected at least one variable");
+void read_variables(StudyReading& in, int grid_points) {
+  Study& study = in.study;
+  const io::Json& variables = array_at(in.top, "variables", true);
+  if (variables.empty()) in.top.fail("variables", "expected at least one variable");
   if (variables.size() > 64)
-    top.fail("variables", "at most 64 variables, got " + std::to_string(variables.size()));
+    in.top.fail("variables", "at most 64 variables, got " + std::to_string(variables.size()));
   for (std::size_t i = 0; i < variables.size(); ++i) {
-    io::ObjectReader r(variables[i], "/variables/" + std::to_string(i), "", source, nullptr);
+    io::ObjectReader r(variables[i], "/variables/" + std::to_string(i), "", in.source, nullptr);
     study.variables.push_back(read_variable(r, study.design_document, grid_points));
     for (std::size_t j = 0; j < i; ++j) {
       if (study.variables[j].pointer == study.variables[i].pointer) {
@@ -330,115 +348,139 @@ Study read_study(const io::Json& document, const std::string& source, const std:
       }
     }
   }
-
+  // The grid a sweep walks (its first two variables) must be finite in time.
   double total = 1.0;
   for (std::size_t i = 0; i < std::min<std::size_t>(2, study.variables.size()); ++i) {
     total *= static_cast<double>(study.variables[i].values.size());
   }
   if (total > kMaxGridTotal) {
-    top.fail("variables", "a grid of " + io::brief(io::Json(total)) + " points is more than 1e8");
+    in.top.fail("variables",
+                "a grid of " + io::brief(io::Json(total)) + " points is more than 1e8");
   }
+}
 
-  if (const io::Json* objective = top.child("objective")) {
-    io::ObjectReader r(*objective, "/objective", "", source, nullptr);
-    if (r.has("terms")) {
-      const io::Json& terms = array_at(r, "terms", true);
-      if (terms.empty()) r.fail("terms", "expected at least one term");
-      for (std::size_t i = 0; i < terms.size(); ++i) {
-        io::ObjectReader t(terms[i], "/objective/terms/" + std::to_string(i), "", source, nullptr);
-        study.objective.push_back(read_term(t, false));
-      }
-      if (const io::Json* spread = r.child("over_impacts")) {
-        io::ObjectReader s(*spread, "/objective/over_impacts", "", source, nullptr);
-        study.over_impacts = read_spread(s);
-      }
-      r.finish({"terms", "over_impacts"});
-    } else {
-      if (const io::Json* spread = r.child("over_impacts")) {
-        io::ObjectReader s(*spread, "/objective/over_impacts", "", source, nullptr);
-        study.over_impacts = read_spread(s);
-      }
-      study.objective.push_back(read_term(r, true));
+std::optional<ImpactSpread> read_over_impacts(io::ObjectReader& r, const std::string& source) {
+  const io::Json* spread = r.child("over_impacts");
+  if (!spread) return std::nullopt;
+  io::ObjectReader s(*spread, "/objective/over_impacts", "", source, nullptr);
+  return read_spread(s);
+}
+
+// The objective: one term, or "terms" summed; either over a spread of impacts.
+void read_objective(StudyReading& in) {
+  Study& study = in.study;
+  const io::Json* objective = in.top.child("objective");
+  if (!objective) return;
+  io::ObjectReader r(*objective, "/objective", "", in.source, nullptr);
+  if (r.has("terms")) {
+    const io::Json& terms = array_at(r, "terms", true);
+    if (terms.empty()) r.fail("terms", "expected at least one term");
+    for (std::size_t i = 0; i < terms.size(); ++i) {
+      io::ObjectReader t(terms[i], "/objective/terms/" + std::to_string(i), "", in.source, nullptr);
+      study.objective.push_back(read_term(t, false));
     }
-    if (study.over_impacts) {
-      for (std::size_t i = 0; i < study.variables.size(); ++i) {
-        if (study.variables[i].pointer.starts_with("/impact")) {
-          throw io::InputError(
-              source, "/variables/" + std::to_string(i) + "/path",
-              "the impact point cannot be a variable of a study over a spread of impacts");
-        }
-      }
+    study.over_impacts = read_over_impacts(r, in.source);
+    r.finish({"terms", "over_impacts"});
+  } else {
+    study.over_impacts = read_over_impacts(r, in.source);
+    study.objective.push_back(read_term(r, true));
+  }
+  if (!study.over_impacts) return;
+  for (std::size_t i = 0; i < study.variables.size(); ++i) {
+    if (study.variables[i].pointer.starts_with("/impact")) {
+      throw io::InputError(
+          in.source, "/variables/" + std::to_string(i) + "/path",
+          "the impact point cannot be a variable of a study over a spread of impacts");
     }
   }
+}
 
-  const io::Json& constraints = array_at(top, "constraints", false);
+StudyConstraint read_constraint(io::ObjectReader& r) {
+  StudyConstraint c;
+  c.output = read_output_name(r, "output");
+  c.min = r.number("min");
+  c.max = r.number("max");
+  c.equals = r.number("equals");
+  if (!c.min && !c.max && !c.equals) r.fail("", "give \"min\", \"max\" or \"equals\"");
+  if (c.equals && (c.min || c.max)) r.fail("equals", "give either \"equals\" or \"min\"/\"max\"");
+  if (c.min && c.max && !(*c.min <= *c.max)) {
+    r.fail("min", "must be <= max, got min " + io::brief(io::Json(*c.min)) + " and max " +
+                      io::brief(io::Json(*c.max)));
+  }
+  c.tolerance = r.number("tolerance");
+  if (c.tolerance && !(*c.tolerance > 0))
+    r.fail("tolerance", "must be > 0, got " + io::brief(io::Json(*c.tolerance)));
+  r.finish({"output", "min", "max", "equals", "tolerance"});
+  return c;
+}
+
+void read_constraints(StudyReading& in) {
+  const io::Json& constraints = array_at(in.top, "constraints", false);
   for (std::size_t i = 0; i < constraints.size(); ++i) {
-    io::ObjectReader r(constraints[i], "/constraints/" + std::to_string(i), "", source, nullptr);
-    StudyConstraint c;
-    c.output = read_output_name(r, "output");
-    c.min = r.number("min");
-    c.max = r.number("max");
-    c.equals = r.number("equals");
-    if (!c.min && !c.max && !c.equals) r.fail("", "give \"min\", \"max\" or \"equals\"");
-    if (c.equals && (c.min || c.max)) r.fail("equals", "give either \"equals\" or \"min\"/\"max\"");
-    if (c.min && c.max && !(*c.min <= *c.max)) {
-      r.fail("min", "must be <= max, got min " + io::brief(io::Json(*c.min)) + " and max " +
-                        io::brief(io::Json(*c.max)));
-    }
-    c.tolerance = r.number("tolerance");
-    if (c.tolerance && !(*c.tolerance > 0))
-      r.fail("tolerance", "must be > 0, got " + io::brief(io::Json(*c.tolerance)));
-    r.finish({"output", "min", "max", "equals", "tolerance"});
-    study.constraints.push_back(c);
+    io::ObjectReader r(constraints[i], "/constraints/" + std::to_string(i), "", in.source, nullptr);
+    in.study.constraints.push_back(read_constraint(r));
   }
+}
 
-  optimizer::OptimizeOptions& o = study.options;
-  if (const auto algorithm = top.string("algorithm")) o.algorithm = *algorithm;
+void read_tolerances(StudyReading& in) {
+  optimizer::OptimizeOptions& o = in.study.options;
+  const io::Json* tolerances = in.top.child("tolerances");
+  if (!tolerances) return;
+  io::ObjectReader t(*tolerances, "/tolerances", "", in.source, nullptr);
+  const auto positive = [&](std::string_view key, double fallback) {
+    const auto value = t.number(key);
+    if (value && !(*value > 0)) t.fail(key, "must be > 0, got " + io::brief(io::Json(*value)));
+    return value.value_or(fallback);
+  };
+  o.x_tolerance_rel = positive("x_rel", o.x_tolerance_rel);
+  o.f_tolerance_rel = positive("f_rel", o.f_tolerance_rel);
+  o.max_seconds = positive("max_seconds", o.max_seconds);
+  if (const auto max_evaluations = t.number("max_evaluations")) {
+    if (!(*max_evaluations >= 1 && *max_evaluations <= 1e9 &&
+          *max_evaluations == std::floor(*max_evaluations))) {
+      t.fail("max_evaluations",
+             "must be a whole number in [1, 1e9], got " + io::brief(io::Json(*max_evaluations)));
+    }
+    o.max_evaluations = static_cast<int>(*max_evaluations);
+  }
+  t.finish({"x_rel", "f_rel", "max_evaluations", "max_seconds"});
+  if (const std::string why = o.validate(); !why.empty()) {
+    throw io::InputError(in.source, "/tolerances", why);
+  }
+}
+
+// The optimiser's algorithm, local algorithm, seed and tolerances.
+void read_algorithm_options(StudyReading& in) {
+  optimizer::OptimizeOptions& o = in.study.options;
+  if (const auto algorithm = in.top.string("algorithm")) o.algorithm = *algorithm;
   if (!optimizer::is_known_algorithm(o.algorithm)) {
-    top.fail("algorithm", "unknown algorithm \"" + o.algorithm +
-                              "\" (auto, or an NLopt name such as LD_SLSQP, LN_COBYLA, GN_ISRES)");
+    in.top.fail("algorithm",
+                "unknown algorithm \"" + o.algorithm +
+                    "\" (auto, or an NLopt name such as LD_SLSQP, LN_COBYLA, GN_ISRES)");
   }
-  if (const auto local = top.string("local_algorithm")) o.local_algorithm = *local;
+  if (const auto local = in.top.string("local_algorithm")) o.local_algorithm = *local;
   if (!optimizer::is_known_algorithm(o.local_algorithm)) {
-    top.fail("local_algorithm", "unknown algorithm \"" + o.local_algorithm + "\"");
+    in.top.fail("local_algorithm", "unknown algorithm \"" + o.local_algorithm + "\"");
   }
-  if (const auto seed = top.number("seed")) {
+  if (const auto seed = in.top.number("seed")) {
     if (!(*seed >= 0 && *seed <= 4294967295.0 && *seed == std::floor(*seed))) {
-      top.fail("seed",
-               "must be a whole number in [0, 4294967295], got " + io::brief(io::Json(*seed)));
+      in.top.fail("seed",
+                  "must be a whole number in [0, 4294967295], got " + io::brief(io::Json(*seed)));
     }
     o.seed = static_cast<unsigned long>(*seed);
   }
-  if (const io::Json* tolerances = top.child("tolerances")) {
-    io::ObjectReader t(*tolerances, "/tolerances", "", source, nullptr);
-    const auto positive = [&](std::string_view key, double fallback) {
-      const auto value = t.number(key);
-      if (value && !(*value > 0)) t.fail(key, "must be > 0, got " + io::brief(io::Json(*value)));
-      return value.value_or(fallback);
-    };
-    o.x_tolerance_rel = positive("x_rel", o.x_tolerance_rel);
-    o.f_tolerance_rel = positive("f_rel", o.f_tolerance_rel);
-    o.max_seconds = positive("max_seconds", o.max_seconds);
-    if (const auto max_evaluations = t.number("max_evaluations")) {
-      if (!(*max_evaluations >= 1 && *max_evaluations <= 1e9 &&
-            *max_evaluations == std::floor(*max_evaluations))) {
-        t.fail("max_evaluations",
-               "must be a whole number in [1, 1e9], got " + io::brief(io::Json(*max_evaluations)));
-      }
-      o.max_evaluations = static_cast<int>(*max_evaluations);
-    }
-    t.finish({"x_rel", "f_rel", "max_evaluations", "max_seconds"});
-    if (const std::string why = o.validate(); !why.empty()) {
-      throw io::InputError(source, "/tolerances", why);
-    }
-  }
+  read_tolerances(in);
+}
 
-  const io::Json& outputs = array_at(top, "outputs", false);
+// The outputs a sweep writes.
+void read_sweep_outputs(StudyReading& in, bool default_impact) {
+  Study& study = in.study;
+  const io::Json& outputs = array_at(in.top, "outputs", false);
   for (std::size_t i = 0; i < outputs.size(); ++i) {
     const std::string at = "/outputs/" + std::to_string(i);
     if (!outputs[i].is_string() || !io::find_output(outputs[i].get<std::string>())) {
       throw io::InputError(
-          source, at,
+          in.source, at,
           "expected the name of an output of sweetspot evaluate, got " + io::brief(outputs[i]));
     }
     study.sweep_outputs.push_back(io::find_output(outputs[i].get<std::string>()));
@@ -450,53 +492,59 @@ Study read_study(const io::Json& document, const std::string& source, const std:
           study.sweep_outputs.end()) {
     study.sweep_outputs.push_back(impact_output);
   }
-  const std::string fidelity = top.string("fidelity").value_or("auto");
+}
+
+// Every output the study asks for: swept, in the objective, constrained.
+std::vector<const io::OutputSpec*> outputs_used(const Study& study) {
+  std::vector<const io::OutputSpec*> used = study.sweep_outputs;
+  for (const ObjectiveTerm& t : study.objective) used.push_back(t.output);
+  for (const StudyConstraint& c : study.constraints) used.push_back(c.output);
+  return used;
+}
+
+// "auto": the cheapest model that answers the design and every output used.
+Fidelity auto_fidelity(const Study& study) {
+  Fidelity fidelity =
+      needed_fidelity(io::read_design(study.design_document, study.design_source).design);
+  for (const io::OutputSpec* o : outputs_used(study)) {
+    if (o->needs_response && fidelity != Fidelity::kCollision) fidelity = Fidelity::kResponse;
+    if (o->needs_modes && fidelity == Fidelity::kRigid) fidelity = Fidelity::kModal;
+  }
+  return fidelity;
+}
+
+void read_fidelity(StudyReading& in) {
+  Study& study = in.study;
+  const std::string fidelity = in.top.string("fidelity").value_or("auto");
   std::optional<Fidelity> asked;
   try {
     asked = parse_fidelity(fidelity);
   } catch (const std::invalid_argument& e) {
-    top.fail("fidelity", e.what());
+    in.top.fail("fidelity", e.what());
   }
-  if (asked) {
-    study.fidelity = *asked;
-  } else {
-    std::vector<const io::OutputSpec*> used = study.sweep_outputs;
-    for (const ObjectiveTerm& t : study.objective) used.push_back(t.output);
-    for (const StudyConstraint& c : study.constraints) used.push_back(c.output);
-    study.fidelity =
-        needed_fidelity(io::read_design(study.design_document, study.design_source).design);
-    for (const io::OutputSpec* o : used) {
-      if (o->needs_response && study.fidelity != Fidelity::kCollision)
-        study.fidelity = Fidelity::kResponse;
-      if (o->needs_modes && study.fidelity == Fidelity::kRigid) study.fidelity = Fidelity::kModal;
+  study.fidelity = asked ? *asked : auto_fidelity(study);
+  for (const io::OutputSpec* o : outputs_used(study)) {
+    const bool too_low = (o->needs_response && study.fidelity != Fidelity::kResponse &&
+                          study.fidelity != Fidelity::kCollision) ||
+                         (o->needs_modes && study.fidelity == Fidelity::kRigid);
+    if (too_low) {
+      in.top.fail("fidelity", "\"" + fidelity + "\" cannot give " + std::string(o->name) +
+                                  "; use \"auto\" or a higher fidelity");
     }
   }
-  {
-    std::vector<const io::OutputSpec*> used = study.sweep_outputs;
-    for (const ObjectiveTerm& t : study.objective) used.push_back(t.output);
-    for (const StudyConstraint& c : study.constraints) used.push_back(c.output);
-    for (const io::OutputSpec* o : used) {
-      const bool too_low = (o->needs_response && study.fidelity != Fidelity::kResponse &&
-                            study.fidelity != Fidelity::kCollision) ||
-                           (o->needs_modes && study.fidelity == Fidelity::kRigid);
-      if (too_low) {
-        top.fail("fidelity", "\"" + fidelity + "\" cannot give " + std::string(o->name) +
-                                 "; use \"auto\" or a higher fidelity");
-      }
-    }
-  }
-  if (const auto tolerance = top.number("modal_tolerance")) {
+  if (const auto tolerance = in.top.number("modal_tolerance")) {
     if (!(*tolerance >= kMinRelTol && *tolerance <= kMaxRelTol)) {
-      top.fail("modal_tolerance",
-               "must be in [1e-08, 0.1], got " + io::brief(io::Json(*tolerance)));
+      in.top.fail("modal_tolerance",
+                  "must be in [1e-08, 0.1], got " + io::brief(io::Json(*tolerance)));
     }
     study.modal_tolerance = *tolerance;
   }
-  top.finish({"$schema", "name", "question", "description", "design", "variables", "objective",
-              "constraints", "algorithm", "local_algorithm", "seed", "tolerances", "grid",
-              "outputs", "fidelity", "modal_tolerance"});
+}
 
-  // The start must be a valid design.
+// The start must be a valid design the study's model evaluates, and every
+// impact of a spread must hit the implement there (an impact off it has no
+// value and would only ever be the optimizer's penalty).
+void check_start(const Study& study, const std::string& source) {
   std::vector<double> start;
   for (const StudyVariable& v : study.variables) start.push_back(v.start);
   io::DesignFile at_start = [&] {
@@ -512,24 +560,47 @@ Study read_study(const io::Json& document, const std::string& source, const std:
   } catch (const std::invalid_argument& e) {
     io::rethrow_in(at_start, e);
   }
-  // Every impact of a spread must hit the implement (an impact off it has no
-  // value and would only ever be the optimizer's penalty).
-  if (study.over_impacts) {
-    const double length_m = at_start.design.implement.length_m();
-    if (study.over_impacts->from_tip_hi_m > length_m) {
-      throw io::InputError(
-          source, "/objective/over_impacts/from_tip_m/1",
-          "the farthest impact, " + io::brief(io::Json(study.over_impacts->from_tip_hi_m)) +
-              " m from the tip, is off the implement, which is " + io::brief(io::Json(length_m)) +
-              " m long (at the start); expected at most " + io::brief(io::Json(length_m)) + " m");
-    }
+  if (!study.over_impacts) return;
+  const double length_m = at_start.design.implement.length_m();
+  if (study.over_impacts->from_tip_hi_m > length_m) {
+    throw io::InputError(
+        source, "/objective/over_impacts/from_tip_m/1",
+        "the farthest impact, " + io::brief(io::Json(study.over_impacts->from_tip_hi_m)) +
+            " m from the tip, is off the implement, which is " + io::brief(io::Json(length_m)) +
+            " m long (at the start); expected at most " + io::brief(io::Json(length_m)) + " m");
   }
+}
+
+// The design compiled for fast evaluation at the variables' pointers, when it can be.
+void compile_design(Study& study) {
   std::vector<std::string> pointers;
   for (const StudyVariable& v : study.variables) pointers.push_back(v.pointer);
   if (auto compiled = CompiledDesign::compile(
           io::describe_design(study.design_document, study.design_source), pointers)) {
     study.compiled = std::make_shared<const CompiledDesign>(std::move(*compiled));
   }
+}
+
+}  // namespace
+
+Study read_study(const io::Json& document, const std::string& source, const std::string& folder) {
+  Study study;
+  study.source = source;
+  io::ObjectReader top(document, "", "", source, nullptr);
+  StudyReading in{study, top, source};
+  read_names(in);
+  const bool default_impact = read_design_reference(in, folder);
+  read_variables(in, read_grid_points(in));
+  read_objective(in);
+  read_constraints(in);
+  read_algorithm_options(in);
+  read_sweep_outputs(in, default_impact);
+  read_fidelity(in);
+  top.finish({"$schema", "name", "question", "description", "design", "variables", "objective",
+              "constraints", "algorithm", "local_algorithm", "seed", "tolerances", "grid",
+              "outputs", "fidelity", "modal_tolerance"});
+  check_start(study, source);
+  compile_design(study);
   return study;
 }
 
