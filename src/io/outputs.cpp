@@ -141,6 +141,21 @@ const std::array kOutputs{
                  return e.details->collision->contact_time_s;
                },
                kNeedsCollision, false, true, true},
+    OutputSpec{"peak_ball_compression_m", "m",
+               "largest compression of the ball in the solved collision (its law's x)",
+               [](const Evaluation& e) -> std::optional<double> {
+                 if (!e.details || !e.details->collision) return std::nullopt;
+                 return e.details->collision->peak_ball_compression_m;
+               },
+               kNeedsCollision, false, true, true},
+    OutputSpec{"peak_string_deflection_m", "m",
+               "largest deflection of the string bed from the frame under the ball in the solved "
+               "collision",
+               [](const Evaluation& e) -> std::optional<double> {
+                 if (!e.details || !e.details->collision) return std::nullopt;
+                 return e.details->collision->peak_string_deflection_m;
+               },
+               kNeedsCollision, false, true, true},
     OutputSpec{"system_mass_kg", "kg", "implement plus hand, M",
                [](const Evaluation& e) -> std::optional<double> { return e.system_mass_kg; }, ""},
     OutputSpec{

@@ -10,6 +10,7 @@
 #include <optional>
 #include <vector>
 
+#include "sweetspot/collision.hpp"
 #include "sweetspot/string_bed.hpp"
 
 namespace sweetspot {
@@ -443,4 +444,37 @@ TEST_CASE(
 }
 
 }  // namespace
+}  // namespace sweetspot
+
+namespace sweetspot {
+
+TEST_CASE("The solved collision's peak ball compression stays below a rigid wall's closed form") {
+  // A ball of law F = k x^n (+ damping, which only takes energy) stores at
+  // most its incident kinetic energy: k x^(n+1) / (n+1) <= m v^2 / 2, so its
+  // compression is at most that against an immovable wall,
+  // x_wall = ((n+1) m v^2 / (2k))^(1/(n+1)); on strings it is less.
+  Design d{Implement::from_specs({27.0 * 0.0254, 0.305, 0.325, 0.0320})};
+  d.stiffness.RA = 66.0;
+  d.strings = StringBed{};
+  d.cor_given = false;
+  const BallContactLaw& law = d.ball_contact;
+  for (const double from_tip : {0.10, 0.17, 0.25}) {
+    for (const double speed : {10.0, 30.0, 50.0}) {
+      d.impact_from_butt_m = d.implement.length_m() - from_tip;
+      d.ball.speed_m_s = speed;
+      const Evaluation e = evaluate(d, Fidelity::kCollision);
+      REQUIRE(e.details);
+      REQUIRE(e.details->collision);
+      const CollisionResult& r = *e.details->collision;
+      const double n = law.exponent;
+      const double x_wall = std::pow(
+          (n + 1.0) * d.ball.mass_kg * speed * speed / (2.0 * law.stiffness), 1.0 / (n + 1));
+      INFO(from_tip << " m from the tip at " << speed << " m/s");
+      CHECK(r.peak_ball_compression_m > 0.0);
+      CHECK(r.peak_ball_compression_m < x_wall);
+      CHECK(r.peak_string_deflection_m > 0.0);
+    }
+  }
+}
+
 }  // namespace sweetspot
