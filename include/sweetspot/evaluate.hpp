@@ -18,7 +18,14 @@ namespace sweetspot {
 
 class ModeCache;  // mode_cache.hpp
 
+// The model that answers (the invariants of each are listed below).
+enum class Fidelity { kRigid, kModal, kResponse, kCollision };
+
 struct Evaluation {
+  // The model that gave these numbers: every field below that the fidelity
+  // computes is set, the others are absent.
+  Fidelity fidelity = Fidelity::kRigid;
+
   // The implement (with its point masses), Section III.
   double length_m = 0.0;
   double mass_kg = 0.0;
@@ -123,7 +130,6 @@ struct Evaluation {
 //    error of e_A <= kMaxStepError. Valid over the ranges of design.hpp
 //    (tension, string bed mass, head) and ball_contact.hpp, for an impact on
 //    the head, while the bed's deflection stays small against the head.
-enum class Fidelity { kRigid, kModal, kResponse, kCollision };
 
 // Every name a fidelity is asked by: the four levels and "auto" (the
 // cheapest that answers the design, needed_fidelity).

@@ -130,6 +130,7 @@ Evaluation evaluate_collision(const Design& design, double rel_tol, ModeCache& c
   resolved.cor = std::clamp(cor, 0.0, 1.0);
   resolved.impact_duration_s = r.contact_time_s;
   Evaluation e = evaluate(resolved, Fidelity::kModal, rel_tol, cache);
+  e.fidelity = Fidelity::kCollision;
   e.cor = cor;
   e.cor_derived = true;
   e.impact_duration_s = r.contact_time_s;

@@ -156,6 +156,7 @@ Evaluation evaluate(const Design& design, Fidelity fidelity, double rel_tol, Mod
     }
   }
   Evaluation e = evaluate_settled(resolved);
+  e.fidelity = fidelity;
   e.impact_duration_derived = duration_derived;
   if (fidelity != Fidelity::kRigid) e.modal = cache.modal_outputs(resolved, rel_tol);
   if (e.modal) {
@@ -353,11 +354,6 @@ Fidelity resolve_fidelity(std::string_view name, const Design& design) {
   return parse_fidelity(name).value_or(needed_fidelity(design));
 }
 
-Fidelity fidelity_of(const Evaluation& evaluation) {
-  if (evaluation.details && evaluation.details->collision) return Fidelity::kCollision;
-  return evaluation.vibration_energy_J ? Fidelity::kResponse
-         : evaluation.modal            ? Fidelity::kModal
-                                       : Fidelity::kRigid;
-}
+Fidelity fidelity_of(const Evaluation& evaluation) { return evaluation.fidelity; }
 
 }  // namespace sweetspot

@@ -478,3 +478,25 @@ TEST_CASE("The solved collision's peak ball compression stays below a rigid wall
 }
 
 }  // namespace sweetspot
+
+namespace sweetspot {
+
+TEST_CASE("An evaluation records the fidelity that answered it") {
+  Design d{Implement::from_specs({27.0 * 0.0254, 0.305, 0.325, 0.0320})};
+  d.stiffness.RA = 66.0;
+  for (const Fidelity f : {Fidelity::kRigid, Fidelity::kModal, Fidelity::kResponse}) {
+    const Evaluation e = evaluate(d, f);
+    CHECK(e.fidelity == f);
+    CHECK(fidelity_of(e) == f);
+    CHECK(e.modal.has_value() == (f != Fidelity::kRigid));
+    CHECK(e.vibration_energy_J.has_value() == (f == Fidelity::kResponse));
+  }
+  d.strings = StringBed{};
+  d.cor_given = false;
+  const Evaluation solved = evaluate(d, Fidelity::kCollision);
+  CHECK(solved.fidelity == Fidelity::kCollision);
+  CHECK((solved.details && solved.details->collision));
+  CHECK(evaluate(d, resolve_fidelity("auto", d)).fidelity == Fidelity::kCollision);
+}
+
+}  // namespace sweetspot
