@@ -43,6 +43,13 @@ std::optional<double> modal_from_tip(const Evaluation& e) {
   return from_tip(e, (*e.modal).*Field);
 }
 
+// A number of the solved collision's record (collision.hpp).
+template <double CollisionResult::*Field>
+std::optional<double> collision(const Evaluation& e) {
+  if (!e.details || !e.details->collision) return std::nullopt;
+  return (*e.details->collision).*Field;
+}
+
 const std::array kOutputs{
     OutputSpec{"length_m", "m", "length, butt to tip",
                [](const Evaluation& e) -> std::optional<double> { return e.length_m; }, ""},
@@ -136,26 +143,16 @@ const std::array kOutputs{
                true},
     OutputSpec{"contact_time_s", "s",
                "contact time of the solved collision, first touch to the ball's last separation",
-               [](const Evaluation& e) -> std::optional<double> {
-                 if (!e.details || !e.details->collision) return std::nullopt;
-                 return e.details->collision->contact_time_s;
-               },
-               kNeedsCollision, false, true, true},
+               &collision<&CollisionResult::contact_time_s>, kNeedsCollision, false, true, true},
     OutputSpec{"peak_ball_compression_m", "m",
                "largest compression of the ball in the solved collision (its law's x)",
-               [](const Evaluation& e) -> std::optional<double> {
-                 if (!e.details || !e.details->collision) return std::nullopt;
-                 return e.details->collision->peak_ball_compression_m;
-               },
-               kNeedsCollision, false, true, true},
+               &collision<&CollisionResult::peak_ball_compression_m>, kNeedsCollision, false, true,
+               true},
     OutputSpec{"peak_string_deflection_m", "m",
                "largest deflection of the string bed from the frame under the ball in the solved "
                "collision",
-               [](const Evaluation& e) -> std::optional<double> {
-                 if (!e.details || !e.details->collision) return std::nullopt;
-                 return e.details->collision->peak_string_deflection_m;
-               },
-               kNeedsCollision, false, true, true},
+               &collision<&CollisionResult::peak_string_deflection_m>, kNeedsCollision, false, true,
+               true},
     OutputSpec{"system_mass_kg", "kg", "implement plus hand, M",
                [](const Evaluation& e) -> std::optional<double> { return e.system_mass_kg; }, ""},
     OutputSpec{
