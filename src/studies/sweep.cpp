@@ -100,7 +100,6 @@ class SweepWorker {
   }
 
  private:
-  const io::RowWriter& rows_;
   struct Impact {
     bool from_tip;
     io::UnitScale to_si;
@@ -158,6 +157,7 @@ class SweepWorker {
   }
 
   const Study& study_;
+  const io::RowWriter& rows_;  // how a point's row is written
   const std::vector<double>& second_;
   io::Json document_;  // this thread's copy, the variables set in place
   std::vector<io::Json::json_pointer> pointers_;
