@@ -8,6 +8,8 @@
 #include <numbers>
 #include <utility>
 
+#include "sweetspot/ball_contact.hpp"
+
 namespace sweetspot::property {
 namespace {
 
@@ -542,6 +544,9 @@ std::optional<Truth> read_truth(const Json& document) {
   const Json& ball = part(document, "ball");
   t.ball_mass_kg = si(ball, "mass", kMass).value_or(0.057);
   t.ball_speed_m_s = si(ball, "speed", kSpeed).value_or(50.0);
+  const Json& contact = part(ball, "contact");
+  t.ball_stiffness = number(contact, "stiffness").value_or(sweetspot::kTennisBallLaw.stiffness);
+  t.ball_exponent = number(contact, "exponent").value_or(sweetspot::kTennisBallLaw.exponent);
   const Json& impact = part(document, "impact");
   if (const auto from_tip = si(impact, "from_tip", kLength)) t.impact_from_butt_m = L - *from_tip;
   if (const auto from_butt = si(impact, "from_butt", kLength)) t.impact_from_butt_m = *from_butt;

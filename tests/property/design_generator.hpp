@@ -97,6 +97,8 @@ struct Truth {
   std::optional<HeadShape> head;
   std::optional<double> twistweight_kg_m2;
   double ball_mass_kg = 0.057, ball_speed_m_s = 50.0;
+  // The ball's elastic law k x^n (ball.contact; absent: the calibrated tennis ball's).
+  double ball_stiffness = 0.0, ball_exponent = 0.0;
   std::optional<double> impact_from_butt_m;  // absent: the code's default
   double impact_off_axis_m = 0.0;
 };

@@ -14,6 +14,9 @@
 //      every term of the solved collision's energy ledger >= 0 and the
 //        ledger closing, within kEnergyRoundOff of 1/2 m v1^2;
 //      impulse > 0 and contact time > 0;
+//      the solved collision's peak ball compression x > 0 with the ball's
+//        elastic energy k x^(n+1)/(n+1) <= 1/2 m v1^2, and the string bed's
+//        peak deflection >= 0;
 //      0 <= vibration energy (and each mode's) <= 1/2 m v1^2;
 //      every output finite.
 // 2. One design file gives the same numbers through every command: evaluate,
@@ -469,6 +472,18 @@ std::vector<Finding> judge_answer(const Json& document, const Evaluation& e,
     }
     if (!(c.impulse_N_s > 0.0))
       j.fail("impulse not > 0", "collision impulse_N_s = " + number(c.impulse_N_s));
+    // At its peak compression the ball holds k x^(n+1) / (n+1) of elastic
+    // energy, never more than it brought (damping only takes energy away).
+    const double x = c.peak_ball_compression_m;
+    if (!(x > 0.0))
+      j.fail("peak ball compression not > 0", "peak_ball_compression_m = " + number(x));
+    j.at_most("the ball's elastic energy at its peak compression above the ball-in energy",
+              "k x^(n+1)/(n+1) at peak_ball_compression_m " + number(x) + " m",
+              truth->ball_stiffness * std::pow(x, truth->ball_exponent + 1.0) /
+                  (truth->ball_exponent + 1.0),
+              ball_in, energy_tol);
+    j.at_least("string-bed deflection negative", "peak_string_deflection_m",
+               c.peak_string_deflection_m, 0.0, 0.0);
   }
   return std::move(j).findings();
 }
