@@ -49,6 +49,19 @@ bool has_cross_section(const D& d, std::size_t) {
   return d.design.stiffness.shear_modulus_Pa.has_value();
 }
 
+// The impact given from the tip or from the butt: settable when the file
+// gives it that way, or gives none (the pointer then places it).
+template <io::ImpactPlace Place>
+bool impact_available(const D& d, std::size_t) {
+  return d.impact_place == Place || !d.impact_given;
+}
+template <io::ImpactPlace Place>
+void set_impact(D& x, std::size_t, double v) {
+  x.impact_place = Place;
+  x.impact_given = true;
+  x.impact_m = v;
+}
+
 // Every number a sweep, a study or a catalogue column can set. A test checks
 // each row names a field of the table.
 const std::vector<FieldSetter>& field_setters() {
@@ -159,24 +172,10 @@ const std::vector<FieldSetter>& field_setters() {
       {"ball", "speed", "", always,
        [](D& x, std::size_t, double v) { x.design.ball.speed_m_s = v; }},
       // A file without an impact takes the one written at the pointer.
-      {"impact", "from_tip", "",
-       [](const D& d, std::size_t) {
-         return d.impact_place == io::ImpactPlace::kFromTip || !d.impact_given;
-       },
-       [](D& x, std::size_t, double v) {
-         x.impact_place = io::ImpactPlace::kFromTip;
-         x.impact_given = true;
-         x.impact_m = v;
-       }},
-      {"impact", "from_butt", "",
-       [](const D& d, std::size_t) {
-         return d.impact_place == io::ImpactPlace::kFromButt || !d.impact_given;
-       },
-       [](D& x, std::size_t, double v) {
-         x.impact_place = io::ImpactPlace::kFromButt;
-         x.impact_given = true;
-         x.impact_m = v;
-       }},
+      {"impact", "from_tip", "", impact_available<io::ImpactPlace::kFromTip>,
+       set_impact<io::ImpactPlace::kFromTip>},
+      {"impact", "from_butt", "", impact_available<io::ImpactPlace::kFromButt>,
+       set_impact<io::ImpactPlace::kFromButt>},
   };
   return kSetters;
 }
