@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <set>
 #include <sstream>
 #include <thread>
@@ -19,6 +20,7 @@
 
 #include "file_helpers.hpp"
 #include "io/format.hpp"
+#include "io/outputs.hpp"
 
 namespace sweetspot::io {
 namespace {
@@ -149,7 +151,9 @@ TEST_CASE("Axes read as words with one unit, never a JSON pointer or a doubled u
     const AxisQuantity axis = output_axis(o);
     INFO(o.name << " -> " << axis.label);
     CHECK(axis.label.find('_') == std::string::npos);
-    CHECK((axis.label.find('/') == std::string::npos || o.unit == "m/s"));
+    // A '/' only inside a unit (m/s, rad/s), never in the words (a pointer).
+    CHECK(axis.name.find('/') == std::string::npos);
+    CHECK((axis.label.find('/') == std::string::npos || axis.unit.find('/') != std::string::npos));
     // The unit once: the name's suffix is gone when the unit is shown.
     if (!axis.unit.empty()) CHECK(axis.name.find(axis.unit) == std::string::npos);
   }
@@ -345,6 +349,27 @@ TEST_CASE("A gnuplot that stops early on a long script is a failure said, not a 
   CHECK_FALSE(svg);
   CHECK(why.find("gnuplot failed (exit status 1)") == 0);
   CHECK(why.find("line 2") != std::string::npos);
+}
+
+TEST_CASE("Every output's axis shows its own unit, in people's units, and the factor to it") {
+  // The unit a person reads for each SI unit the outputs table uses, with the
+  // factor from SI: what the name's suffix says must be what the value is.
+  const std::map<std::string_view, std::pair<std::string_view, double>> kShown{
+      {"", {"", 1.0}},          {"m", {"cm", 100.0}},       {"s", {"ms", 1000.0}},
+      {"kg", {"kg", 1.0}},      {"kg m^2", {"kg·m²", 1.0}}, {"kg cm^2", {"kg·cm²", 1.0}},
+      {"N", {"N", 1.0}},        {"N s", {"N·s", 1.0}},      {"N m", {"N·m", 1.0}},
+      {"J", {"J", 1.0}},        {"Hz", {"Hz", 1.0}},        {"m/s", {"m/s", 1.0}},
+      {"rad/s", {"rad/s", 1.0}}};
+  for (const OutputSpec& o : output_specs()) {
+    INFO(o.name << " in " << o.unit);
+    const auto shown = kShown.find(o.unit);
+    REQUIRE(shown != kShown.end());
+    const AxisQuantity axis = output_axis(o);
+    CHECK(axis.unit == shown->second.first);
+    CHECK(axis.factor == shown->second.second);
+    // The words carry no unit of their own ("twist rate", not "twist rate rad").
+    CHECK(axis.name.find(" rad") == std::string::npos);
+  }
 }
 
 }  // namespace
