@@ -33,6 +33,7 @@
 #include "studies/sweep.hpp"
 #include "sweetspot/beam_modes.hpp"
 #include "sweetspot/evaluate.hpp"
+#include "sweetspot/kernels.hpp"
 #include "sweetspot/string_bed.hpp"
 
 namespace sweetspot::bench {

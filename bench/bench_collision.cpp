@@ -102,7 +102,7 @@ void bench_collision(const BenchOptions& options, std::ostream& log) {
   int row = 0;
   const double row_us = median_us(options.repeats, 50, [&] {
     moved.impact_from_butt_m = d.impact_from_butt_m - 0.001 * (row++ % 20);
-    evaluate(moved, Fidelity::kCollision, 1e-6, cache);
+    evaluate(moved, Fidelity::kCollision, {.rel_tol = 1e-6, .modes = &cache});
   });
   md += fmt::format(
       "\nThe default (64 steps per contact, extrapolated): {:.1f} us after the modes are known, "

@@ -89,9 +89,6 @@ struct Evaluation {
   struct Details {
     // Per mode of the free frame (response): damped frequency [Hz] and the energy it keeps [J].
     std::vector<std::pair<double, double>> vibration_modes;
-    // Why a cheaper model would have done (empty when nothing to say), e.g. a
-    // fundamental above 1.5/T, which the impact barely excites.
-    std::string fidelity_note;
     // Fidelity::kCollision: the solved collision (force history, energy ledger).
     std::optional<CollisionResult> collision;
   };
@@ -147,8 +144,8 @@ std::optional<Fidelity> parse_fidelity(std::string_view name);
 // needed_fidelity(design)). Throws like parse_fidelity.
 Fidelity resolve_fidelity(std::string_view name, const Design& design);
 
-// The level an evaluation was made at.
-Fidelity fidelity_of(const Evaluation& evaluation);
+// The level an evaluation was made at (its own record of it).
+inline Fidelity fidelity_of(const Evaluation& evaluation) { return evaluation.fidelity; }
 
 // The cheapest fidelity that answers everything the design asks: kCollision
 // when a string tension and the frame's stiffness are given and the COR is
@@ -156,81 +153,41 @@ Fidelity fidelity_of(const Evaluation& evaluation);
 // from cor_rigid, kModal when the stiffness is given, else kRigid.
 Fidelity needed_fidelity(const Design& design);
 
-// Evaluates every quantity of the rigid model for a valid design (validate()
-// first: evaluate() calls it and throws std::invalid_argument the same way):
-// evaluate(design, Fidelity::kRigid). A string tension sets the duration; a
-// COR to be derived (cor_rigid) needs Fidelity::kResponse and throws here.
-Evaluation evaluate(const Design& design);
-
-// kCollision solves the collision (collision.hpp) with the design's ball
-// law and string bed on the free frame's modes: the COR is derived (Eq. 16
-// inverted with M_eff), the duration is the solved contact time, the peak
-// force, the impulse and the vibration energy are the solved ones, and the
-// peak wrist force is Eq. (11)'s ratio times the solved peak force. It needs
-// a string tension and the frame's stiffness, and refuses cor_rigid.
-// The same with the modes too when `fidelity` is kModal or kResponse (the
-// hand-held ones to `rel_tol`, the frequency's relative error) and the impact
-// response with kResponse. A design whose COR is to be derived (cor_rigid)
-// needs kResponse: anything less throws std::invalid_argument naming
-// "frame/cor_rigid".
-Evaluation evaluate(const Design& design, Fidelity fidelity, double rel_tol = 1e-6);
-
-// The same, with the frame's modes taken from `cache` when the last design
-// it saw has the same frame, stiffness and hand (mode_cache.hpp): a
-// catalogue's rows or a study's points that change only the impact, the
-// ball or the strings then solve no modes. The numbers are the same, bit
-// for bit.
-Evaluation evaluate(const Design& design, Fidelity fidelity, double rel_tol, ModeCache& cache);
-
-// evaluate(design, fidelity, rel_tol) for a design validate() has accepted
-// (a sweep's point after its numbers were set and checked): the same numbers
-// and the same exceptions, without validating the design a second time.
-Evaluation evaluate_validated(const Design& design, Fidelity fidelity, double rel_tol = 1e-6);
-Evaluation evaluate_validated(const Design& design, Fidelity fidelity, double rel_tol,
-                              ModeCache& cache);
-
-// Only what rigid_outcome() answers of evaluate(design, Fidelity::kRigid), for
-// a design validate() has accepted: effective_mass_kg, apparent_cor,
-// rebound_speed_m_s, impulse_N_s, peak_impact_force_N, wrist_force_ratio and
-// peak_wrist_force_N are written into `e`, bit for bit evaluate()'s, and its
-// other fields are left as they are (a sweep that outputs only these). Returns
-// false, `e` untouched, where only evaluate() answers as it would: a COR or a
-// duration to derive (cor_rigid, a string tension), an impact off the long
-// axis, or a result that is not finite (evaluate() refuses it, saying why).
-// For a validated design the rigid model's invariants (Fidelity) follow from
-// Eqs. (15)-(17) once every number is finite, so this check is theirs.
-bool evaluate_rigid_outcome(const Design& design, Evaluation& e);
-
-// The rigid model without validation and with the design's cor and
-// impact_duration_s as they stand (no tension, no cor_rigid), for callers that
-// validated once and evaluate many impacts or variants in a loop. No allocation.
-Evaluation evaluate_unchecked(const Design& design);
-
-// The design as a RigidCase for rigid_outcomes(): validated like evaluate(),
-// with the duration derived from a string tension. A COR to be derived
-// (cor_rigid) needs the response model and throws std::invalid_argument.
-RigidCase rigid_case(const Design& design);
-
-// The rigid model of one design at many impact points (a player's spread of
-// hits, a sweep along the strings): what does not depend on the impact point
-// is computed once. at() allocates nothing and does not check the impact
-// point (keep it on the implement). The design's COR and duration are used as
-// given: a design with cor_rigid or a string tension is refused.
-class ImpactSweep {
- public:
-  // Validates the design; throws std::invalid_argument like evaluate().
-  explicit ImpactSweep(const Design& design);
-  // At the design's distance off the axis (Design::impact_off_axis_m).
-  Evaluation at(double impact_from_butt_m) const;
-  // The same at a distance `off_axis_m` off the long axis, which needs the
-  // polar inertia (Design::twistweight_kg_m2 or head): throws
-  // std::invalid_argument naming "impact/off_axis_m" without it when y != 0.
-  Evaluation at(double impact_from_butt_m, double off_axis_m) const;
-
- private:
-  Design design_;
-  MassProperties system_;
-  Evaluation base_;
+// How an evaluation is made; none of these changes a number it gives.
+struct EvaluationOptions {
+  // The hand-held modes' frequencies to this relative error (kModal and above).
+  double rel_tol = 1e-6;
+  // The frame's modes kept between calls (mode_cache.hpp): a catalogue's rows
+  // or a study's points that change only the impact, the ball or the strings
+  // then solve no modes. Null: the modes are solved for this call alone.
+  ModeCache* modes = nullptr;
+  // The design was accepted by validate() and not changed since (a sweep's
+  // point after its numbers were set and checked): the rigid model with a
+  // given COR and duration does not validate it a second time.
+  bool validated = false;
 };
+
+// The one front door: every quantity of the model at `fidelity` for a valid
+// design (validate() is called and throws std::invalid_argument, a FieldError
+// naming the design's path, the same way).
+//  * kRigid: Eqs. (1)-(17). A string tension sets the duration; a COR to be
+//    derived (cor_rigid) needs kResponse and throws here.
+//  * kModal: also the frame's modes, free and hand-held (the hand-held ones
+//    to options.rel_tol, the frequency's relative error).
+//  * kResponse: also the frame's response to the prescribed pulse: the
+//    vibration energy per mode and, with cor_rigid, the derived COR.
+//  * kCollision: the collision solved (collision.hpp) with the design's ball
+//    law and string bed on the free frame's modes: the COR is derived (Eq. 16
+//    inverted with M_eff), the duration is the solved contact time, the peak
+//    force, the impulse and the vibration energy are the solved ones, and the
+//    peak wrist force is Eq. (11)'s ratio times the solved peak force; the
+//    modal outputs as kModal. It needs a string tension and the frame's
+//    stiffness, and refuses cor_rigid.
+// A design whose COR is to be derived (cor_rigid) needs kResponse: anything
+// else throws naming "frame/cor_rigid". An answer that breaks its fidelity's
+// invariants (above) is a ModelRefusal. The loop paths that skip parts of
+// this for many evaluations of one design are in kernels.hpp.
+Evaluation evaluate(const Design& design, Fidelity fidelity = Fidelity::kRigid,
+                    const EvaluationOptions& options = {});
 
 }  // namespace sweetspot

@@ -129,7 +129,7 @@ Evaluation evaluate_collision(const Design& design, double rel_tol, ModeCache& c
   resolved.strings.reset();
   resolved.cor = std::clamp(cor, 0.0, 1.0);
   resolved.impact_duration_s = r.contact_time_s;
-  Evaluation e = evaluate(resolved, Fidelity::kModal, rel_tol, cache);
+  Evaluation e = evaluate(resolved, Fidelity::kModal, {.rel_tol = rel_tol, .modes = &cache});
   e.fidelity = Fidelity::kCollision;
   e.cor = cor;
   e.cor_derived = true;
@@ -148,7 +148,6 @@ Evaluation evaluate_collision(const Design& design, double rel_tol, ModeCache& c
   e.vibration_energy_J = r.vibration_J;
   e.vibration_share = r.vibration_J / r.ball_in_J;
   if (!e.details) e.details.emplace();
-  e.details->fidelity_note.clear();
   e.details->vibration_modes.clear();
   for (std::size_t k = 0; k < r.mode_energy_J.size(); ++k) {
     e.details->vibration_modes.emplace_back(collision.model().modes[k].mode.frequency_Hz,

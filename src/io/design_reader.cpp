@@ -927,7 +927,7 @@ Json design_to_json(const DesignFile& file) {
 Evaluation evaluate_design_file(const DesignFile& file, std::string_view fidelity, double rel_tol) {
   try {
     const std::string_view name = fidelity.empty() ? std::string_view(file.fidelity) : fidelity;
-    return evaluate(file.design, resolve_fidelity(name, file.design), rel_tol);
+    return evaluate(file.design, resolve_fidelity(name, file.design), {.rel_tol = rel_tol});
   } catch (const std::invalid_argument& e) {
     rethrow_in(file, e);
   }

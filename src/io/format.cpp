@@ -528,6 +528,23 @@ Json inputs_json(const DesignFile& file, const Evaluation& e) {
 
 }  // namespace
 
+// Why a cheaper model would have done (empty when nothing to say): the modal
+// and response models on a frame whose free fundamental is above 1.5/T, which
+// a half-sine of duration T barely excites (Cross 2004, Sec. III); every mode
+// keeps at most 1/(x^2 - 1)^2 of its impulse-limit energy, x = 2 f1 T.
+static std::string fidelity_note(const Evaluation& e) {
+  if (!e.modal || (e.fidelity != Fidelity::kModal && e.fidelity != Fidelity::kResponse)) return {};
+  const double limit_Hz = 1.5 / e.impact_duration_s;
+  const double f1 = e.modal->fundamental_free_Hz;
+  if (!(f1 > limit_Hz)) return {};
+  const double x = 2.0 * f1 * e.impact_duration_s;
+  return "the free fundamental (" + std::to_string(static_cast<int>(std::lround(f1))) +
+         " Hz) is above 1.5/T = " + std::to_string(static_cast<int>(std::lround(limit_Hz))) +
+         " Hz: the impact barely excites the frame (every mode keeps at most " +
+         std::to_string(1.0 / ((x * x - 1) * (x * x - 1))) +
+         " of its impulse-limit energy), so the rigid model answers this design";
+}
+
 Json evaluation_json(const DesignFile& file, const Evaluation& e) {
   Json j;
   j["name"] = file.name;
@@ -559,7 +576,7 @@ Json evaluation_json(const DesignFile& file, const Evaluation& e) {
                       {"time_s", c.time_s},
                       {"force_N", c.force_N}};
   }
-  if (!details.fidelity_note.empty()) notes["fidelity"] = details.fidelity_note;
+  if (const std::string note = fidelity_note(e); !note.empty()) notes["fidelity"] = note;
   j["notes"] = notes;
   if (!details.vibration_modes.empty()) {
     j["vibration_modes"] = Json::array();
@@ -639,7 +656,7 @@ std::string evaluation_report(const DesignFile& file, const Evaluation& e, Forma
                         significant(details.vibration_modes[k].second, 4));
     }
   }
-  if (!details.fidelity_note.empty()) md += "\nNote: " + details.fidelity_note + ".\n";
+  if (const std::string note = fidelity_note(e); !note.empty()) md += "\nNote: " + note + ".\n";
   md += inputs_markdown(file, e);
   return md;
 }

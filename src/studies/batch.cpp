@@ -174,8 +174,9 @@ class Evaluator {
       const Fidelity fidelity = resolve_fidelity(
           options_.fidelity.empty() ? std::string_view(shape.fidelity) : options_.fidelity,
           *design);
-      outcome.evaluation.emplace(
-          evaluate_validated(*design, fidelity, options_.modal_tolerance, thread_mode_cache()));
+      outcome.evaluation.emplace(evaluate(
+          *design, fidelity,
+          {.rel_tol = options_.modal_tolerance, .modes = &thread_mode_cache(), .validated = true}));
     } catch (const std::exception&) {
       outcome.evaluation.reset();
       return false;
@@ -299,7 +300,8 @@ class Evaluator {
             options_.fidelity.empty() ? std::string_view(design.fidelity) : options_.fidelity,
             design.design);
         outcome.evaluation =
-            evaluate(design.design, fidelity, options_.modal_tolerance, thread_mode_cache());
+            evaluate(design.design, fidelity,
+                     {.rel_tol = options_.modal_tolerance, .modes = &thread_mode_cache()});
       } catch (const std::invalid_argument& e) {
         io::rethrow_in(io::read_design(document, where),
                        e);  // with the key map, to name the user's key

@@ -9,6 +9,7 @@
 #include "sweetspot/collision.hpp"
 #include "sweetspot/frame_modes.hpp"
 #include "sweetspot/impact_response.hpp"
+#include "sweetspot/kernels.hpp"
 #include "sweetspot/rigid_impact.hpp"
 #include "sweetspot/string_bed.hpp"
 

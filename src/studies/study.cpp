@@ -13,6 +13,7 @@
 #include "studies/design_binding.hpp"
 #include "studies/thread_mode_cache.hpp"
 #include "sweetspot/evaluate.hpp"
+#include "sweetspot/kernels.hpp"
 
 namespace sweetspot::studies {
 namespace {
@@ -614,7 +615,8 @@ Evaluation evaluate_in(const Study& study, const io::DesignFile& design) {
 }
 
 Evaluation evaluate_in(const Study& study, const Design& design) {
-  return evaluate(design, study.fidelity, study.modal_tolerance, thread_mode_cache());
+  return evaluate(design, study.fidelity,
+                  {.rel_tol = study.modal_tolerance, .modes = &thread_mode_cache()});
 }
 
 bool compiled_for_variables(const Study& study) {
@@ -681,7 +683,8 @@ std::optional<std::string> objective_undefined(const Study& study, const io::Des
       }
       d.impact_from_butt_m = x;
       if (auto why = terms_undefined(
-              study, evaluate(d, study.fidelity, study.modal_tolerance, thread_mode_cache())))
+              study, evaluate(d, study.fidelity,
+                              {.rel_tol = study.modal_tolerance, .modes = &thread_mode_cache()})))
         return why;
     }
   } catch (const std::invalid_argument& e) {
@@ -714,7 +717,8 @@ double objective_of(const Study& study, const Design& design) {
         d.impact_from_butt_m = x;
         try {
           value = terms_value(
-              study, evaluate(d, study.fidelity, study.modal_tolerance, thread_mode_cache()));
+              study, evaluate(d, study.fidelity,
+                              {.rel_tol = study.modal_tolerance, .modes = &thread_mode_cache()}));
         } catch (const std::invalid_argument&) {
         }
       }

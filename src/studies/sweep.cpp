@@ -13,6 +13,7 @@
 #include "studies/design_binding.hpp"
 #include "studies/thread_mode_cache.hpp"
 #include "sweetspot/evaluate.hpp"
+#include "sweetspot/kernels.hpp"
 
 namespace sweetspot::studies {
 
@@ -115,8 +116,9 @@ class SweepWorker {
       const Design* design = bound_->at(std::span<const double>(values, pointers_.size()));
       if (!design) return nullptr;
       if (!(outcome_only_ && evaluate_rigid_outcome(*design, evaluation_)))
-        evaluation_ = evaluate_validated(*design, study_.fidelity, study_.modal_tolerance,
-                                         thread_mode_cache());
+        evaluation_ = evaluate(
+            *design, study_.fidelity,
+            {.rel_tol = study_.modal_tolerance, .modes = &thread_mode_cache(), .validated = true});
       share_row(*design, row);
       return &evaluation_;
     } catch (const std::exception&) {

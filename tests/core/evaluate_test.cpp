@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "sweetspot/collision.hpp"
+#include "sweetspot/kernels.hpp"
 #include "sweetspot/string_bed.hpp"
 
 namespace sweetspot {
@@ -295,7 +296,9 @@ TEST_CASE("Thousands of rigid cases as arrays, twisted or not, match rigid_outco
   CHECK(differ == 0);
 }
 
-TEST_CASE("evaluate_validated() gives what evaluate() gives, every field, at every fidelity") {
+TEST_CASE(
+    "evaluate() of a validated design gives what evaluate() gives, every field, at every "
+    "fidelity") {
   // The oracle is evaluate(): for a design validate() accepts, skipping the
   // second validation changes nothing, rigid or not, given COR or derived.
   const auto bits = [](double x) {
@@ -348,21 +351,24 @@ TEST_CASE("evaluate_validated() gives what evaluate() gives, every field, at eve
   };
   for (const TableRow& row : kTableI) {
     Design d = table_design(row);
-    CHECK(same(evaluate_validated(d, Fidelity::kRigid), evaluate(d, Fidelity::kRigid)));
+    CHECK(same(evaluate(d, Fidelity::kRigid, {.validated = true}), evaluate(d, Fidelity::kRigid)));
     d.twistweight_kg_m2 = 15e-4;
     d.impact_off_axis_m = 0.03;
-    CHECK(same(evaluate_validated(d, Fidelity::kRigid), evaluate(d, Fidelity::kRigid)));
+    CHECK(same(evaluate(d, Fidelity::kRigid, {.validated = true}), evaluate(d, Fidelity::kRigid)));
   }
   Design strung = table_design(kTableI[0]);
   strung.strings = StringBed{};
-  CHECK(same(evaluate_validated(strung, Fidelity::kRigid), evaluate(strung, Fidelity::kRigid)));
-  CHECK(evaluate_validated(strung, Fidelity::kRigid).impact_duration_derived);
+  CHECK(same(evaluate(strung, Fidelity::kRigid, {.validated = true}),
+             evaluate(strung, Fidelity::kRigid)));
+  CHECK(evaluate(strung, Fidelity::kRigid, {.validated = true}).impact_duration_derived);
   Design stiff = table_design(kTableI[1]);
   stiff.stiffness.EI_N_m2 = 152.0;
-  CHECK(same(evaluate_validated(stiff, Fidelity::kModal), evaluate(stiff, Fidelity::kModal)));
+  CHECK(same(evaluate(stiff, Fidelity::kModal, {.validated = true}),
+             evaluate(stiff, Fidelity::kModal)));
   stiff.cor_rigid = 0.85;
-  CHECK(same(evaluate_validated(stiff, Fidelity::kResponse), evaluate(stiff, Fidelity::kResponse)));
-  CHECK_THROWS_WITH(evaluate_validated(stiff, Fidelity::kRigid),
+  CHECK(same(evaluate(stiff, Fidelity::kResponse, {.validated = true}),
+             evaluate(stiff, Fidelity::kResponse)));
+  CHECK_THROWS_WITH(evaluate(stiff, Fidelity::kRigid, {.validated = true}),
                     Catch::StartsWith("frame/cor_rigid"));
 }
 

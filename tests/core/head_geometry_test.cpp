@@ -12,6 +12,7 @@
 
 #include "sweetspot/design.hpp"
 #include "sweetspot/evaluate.hpp"
+#include "sweetspot/kernels.hpp"
 #include "sweetspot/rigid_impact.hpp"
 #include "sweetspot/string_bed.hpp"
 

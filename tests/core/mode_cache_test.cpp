@@ -79,8 +79,8 @@ TEST_CASE(
   for (const auto& [change, frame_changes] : steps) {
     change(d);
     const std::size_t before = cache.solves();
-    const Evaluation cached = evaluate(d, Fidelity::kCollision, 1e-6, cache);
-    const Evaluation fresh = evaluate(d, Fidelity::kCollision, 1e-6);
+    const Evaluation cached = evaluate(d, Fidelity::kCollision, {.rel_tol = 1e-6, .modes = &cache});
+    const Evaluation fresh = evaluate(d, Fidelity::kCollision, {.rel_tol = 1e-6});
     check_same(cached, fresh);
     // A collision solves the free response model and the hand-held modes.
     CHECK(cache.solves() - before == (frame_changes ? 2u : 0u));
@@ -98,7 +98,8 @@ TEST_CASE("A mode cache serves the modal and response fidelities as they are wit
   for (const Fidelity fidelity : {Fidelity::kModal, Fidelity::kResponse, Fidelity::kModal}) {
     for (const double from_tip : {0.12, 0.17, 0.22}) {
       d.impact_from_butt_m = d.implement.length_m() - from_tip;
-      check_same(evaluate(d, fidelity, 1e-6, cache), evaluate(d, fidelity, 1e-6));
+      check_same(evaluate(d, fidelity, {.rel_tol = 1e-6, .modes = &cache}),
+                 evaluate(d, fidelity, {.rel_tol = 1e-6}));
     }
   }
   // One modal solve and one response model, each reused from then on.
@@ -109,11 +110,11 @@ TEST_CASE("A mode cache keeps nothing from a design whose modes it could not sol
   ModeCache cache;
   Design d = strung_racquet();
   d.hand.grip_length_m = 10.0;  // off the implement: the modes refuse it
-  CHECK_THROWS(evaluate(d, Fidelity::kCollision, 1e-6, cache));
-  CHECK_THROWS(evaluate(d, Fidelity::kCollision, 1e-6, cache));
+  CHECK_THROWS(evaluate(d, Fidelity::kCollision, {.rel_tol = 1e-6, .modes = &cache}));
+  CHECK_THROWS(evaluate(d, Fidelity::kCollision, {.rel_tol = 1e-6, .modes = &cache}));
   d.hand.grip_length_m = 0.10;
-  check_same(evaluate(d, Fidelity::kCollision, 1e-6, cache),
-             evaluate(d, Fidelity::kCollision, 1e-6));
+  check_same(evaluate(d, Fidelity::kCollision, {.rel_tol = 1e-6, .modes = &cache}),
+             evaluate(d, Fidelity::kCollision, {.rel_tol = 1e-6}));
 }
 
 }  // namespace sweetspot

@@ -134,6 +134,37 @@ TEST_CASE("Every output of an evaluation is in the JSON, null only with a note")
   }
 }
 
+TEST_CASE("The fidelity note says when the impact barely excites the frame, with its bound") {
+  // Cross (2004) Sec. III: a half-sine of duration T excites modes up to about
+  // 1.5/T; a mode at f keeps at most 1/(x^2 - 1)^2 of its impulse-limit energy,
+  // x = 2 f T. The note is written for the modal and response models only.
+  DesignFile file{"stiff.json", "",    Design{Implement::paper_racquet(0.70, 0.25, 0.8)},
+                  "",           {},    Json::object(),
+                  {},           "auto"};
+  const auto note_of = [&](double EI_N_m2, Fidelity fidelity) -> std::string {
+    file.design.stiffness.EI_N_m2 = EI_N_m2;
+    const Json j = evaluation_json(file, evaluate(file.design, fidelity));
+    return j["notes"].contains("fidelity") ? j["notes"]["fidelity"].get<std::string>() : "";
+  };
+  // A stiff frame: the fundamental is well above 1.5/T.
+  file.design.stiffness.EI_N_m2 = 1e4;
+  const Evaluation stiff = evaluate(file.design, Fidelity::kModal);
+  const double f1 = stiff.modal->fundamental_free_Hz, T = stiff.impact_duration_s;
+  REQUIRE(f1 > 1.5 / T);
+  const double x = 2.0 * f1 * T;
+  const std::string note = note_of(1e4, Fidelity::kModal);
+  CHECK_THAT(note, Catch::Contains("is above 1.5/T = " +
+                                   std::to_string(static_cast<int>(std::lround(1.5 / T))) + " Hz"));
+  const std::size_t at = note.find("at most ") + 8;
+  // Printed with six decimals: within half the last digit.
+  CHECK(std::abs(std::stod(note.substr(at)) - 1.0 / ((x * x - 1) * (x * x - 1))) <= 5e-7);
+  CHECK(note_of(1e4, Fidelity::kRigid).empty());  // no modes, nothing to compare
+  // The paper's soft beam: its fundamental is below 1.5/T, the rigid model does not answer.
+  file.design.stiffness.EI_N_m2 = 152.0;
+  REQUIRE(evaluate(file.design, Fidelity::kModal).modal->fundamental_free_Hz < 1.5 / T);
+  CHECK(note_of(152.0, Fidelity::kModal).empty());
+}
+
 TEST_CASE("An evaluation's CSV and Markdown apply their format's rule to a hostile name") {
   DesignFile file{"a\nb.json",
                   "=cmd|x\n# injected\x1b[2J",

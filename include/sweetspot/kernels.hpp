@@ -1,0 +1,62 @@
+#pragma once
+
+// The loop paths of the rigid model: what a sweep, a catalogue or a study
+// evaluates many times over after validating a design once. Each gives, bit
+// for bit, the numbers evaluate() (evaluate.hpp) gives for the same design;
+// they differ from it only in what they skip (validation, allocation, the
+// parts that do not depend on the impact point). The solved collision's loop
+// path is DesignCollision (collision.hpp), the modes' ModeCache
+// (mode_cache.hpp). Use evaluate() unless a profile says otherwise.
+
+#include "sweetspot/design.hpp"
+#include "sweetspot/evaluate.hpp"
+#include "sweetspot/mass_properties.hpp"
+#include "sweetspot/rigid_impact.hpp"
+
+namespace sweetspot {
+
+// Only what rigid_outcome() answers of evaluate(design, Fidelity::kRigid), for
+// a design validate() has accepted: effective_mass_kg, apparent_cor,
+// rebound_speed_m_s, impulse_N_s, peak_impact_force_N, wrist_force_ratio and
+// peak_wrist_force_N are written into `e`, bit for bit evaluate()'s, and its
+// other fields are left as they are (a sweep that outputs only these). Returns
+// false, `e` untouched, where only evaluate() answers as it would: a COR or a
+// duration to derive (cor_rigid, a string tension), an impact off the long
+// axis, or a result that is not finite (evaluate() refuses it, saying why).
+// For a validated design the rigid model's invariants (Fidelity) follow from
+// Eqs. (15)-(17) once every number is finite, so this check is theirs.
+bool evaluate_rigid_outcome(const Design& design, Evaluation& e);
+
+// The rigid model without validation and with the design's cor and
+// impact_duration_s as they stand (no tension, no cor_rigid), for callers that
+// validated once and evaluate many impacts or variants in a loop. No allocation.
+Evaluation evaluate_unchecked(const Design& design);
+
+// The design as a RigidCase for rigid_outcomes(): validated like evaluate(),
+// with the duration derived from a string tension. A COR to be derived
+// (cor_rigid) needs the response model and throws std::invalid_argument.
+RigidCase rigid_case(const Design& design);
+
+// The rigid model of one design at many impact points (a player's spread of
+// hits, a sweep along the strings): what does not depend on the impact point
+// is computed once. at() allocates nothing and does not check the impact
+// point (keep it on the implement). The design's COR and duration are used as
+// given: a design with cor_rigid or a string tension is refused.
+class ImpactSweep {
+ public:
+  // Validates the design; throws std::invalid_argument like evaluate().
+  explicit ImpactSweep(const Design& design);
+  // At the design's distance off the axis (Design::impact_off_axis_m).
+  Evaluation at(double impact_from_butt_m) const;
+  // The same at a distance `off_axis_m` off the long axis, which needs the
+  // polar inertia (Design::twistweight_kg_m2 or head): throws
+  // std::invalid_argument naming "impact/off_axis_m" without it when y != 0.
+  Evaluation at(double impact_from_butt_m, double off_axis_m) const;
+
+ private:
+  Design design_;
+  MassProperties system_;
+  Evaluation base_;
+};
+
+}  // namespace sweetspot
