@@ -13,6 +13,10 @@ inline constexpr double kMaxLength_m = 100.0;
 inline constexpr double kMaxMass_kg = 1e6;
 // Bending stiffness: a solid steel bar 30 cm thick has about 1.4e8 N m^2.
 inline constexpr double kMaxEI_N_m2 = 1e12;
+// A profile's material: denser than osmium (22 600 kg/m^3) or stiffer than
+// diamond (about 1.2e12 Pa) is refused.
+inline constexpr double kMaxDensity_kg_m3 = 3e4;
+inline constexpr double kMaxModulus_Pa = 2e12;
 
 // A uniform slice of an implement. Sections are listed butt to tip.
 struct Section {
@@ -29,6 +33,34 @@ struct IndustrySpecs {
   double balance_from_butt_m = 0.0;  // [m], in (0, L)
   double swingweight_kg_m2 = 0.0;    // [kg m^2] about the axis 10 cm from the butt
 };
+
+// A station of a round implement's profile: its diameter at a distance from the butt.
+struct ProfileStation {
+  double from_butt_m = 0.0;  // [m]
+  double diameter_m = 0.0;   // [m], > 0
+};
+
+// A solid round implement of one material (a wood bat, a tool handle, a rod)
+// by its profile: the diameter at stations butt to tip, a straight taper
+// between them. The first station is the butt (0), the last the tip.
+struct RoundProfile {
+  std::vector<ProfileStation> stations;  // at least two, from_butt_m strictly increasing
+  double density_kg_m3 = 0.0;            // > 0 (ash and maple about 650-700)
+  double youngs_modulus_Pa = 0.0;        // > 0, along the grain (wood about 1e10-1.5e10)
+};
+
+// The longest slice profile_sections() cuts (a longer implement than 2 m is
+// cut into 400 slices).
+inline constexpr double kProfileSlice_m = 0.005;
+
+// The profile as sections: each interval between stations cut into equal
+// slices no longer than kProfileSlice_m. A slice's mass is the density times
+// its frustum's volume, pi h (d1^2 + d1 d2 + d2^2) / 12 (exact); its bending
+// stiffness E pi d^4 / 64 at its middle diameter (Euler-Bernoulli, a solid
+// circle). A uniform profile is exact; a taper's centre of mass, inertia and
+// stiffness are right to O((h / L)^2). Throws FieldError naming
+// "profile/N/..." , "density_kg_m3" or "youngs_modulus_Pa".
+std::vector<Section> profile_sections(const RoundProfile& profile);
 
 // An implement (racquet, bat, beam) from butt (x = 0) to tip (x = L): a frame
 // plus point masses. Immutable; every factory validates its arguments and throws
@@ -47,6 +79,11 @@ class Implement {
   // Measured specs. The swingweight must be physically possible for a body of
   // that length: M (B - 0.1)^2 < SW <= M (B - 0.1)^2 + M B (L - B).
   static Implement from_specs(const IndustrySpecs& specs, std::vector<PointMass> point_masses = {});
+
+  // A solid round implement by its profile (profile_sections()): a wood bat
+  // given by its diameters, its wood's density and modulus.
+  static Implement from_profile(const RoundProfile& profile,
+                                std::vector<PointMass> point_masses = {});
 
   double length_m() const { return length_m_; }
 

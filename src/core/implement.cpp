@@ -1,5 +1,6 @@
 #include "sweetspot/implement.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -82,6 +83,62 @@ Implement Implement::from_sections(std::vector<Section> sections,
   implement.sections_ = std::move(sections);
   implement.point_masses_ = std::move(point_masses);
   return implement;
+}
+
+std::vector<Section> profile_sections(const RoundProfile& profile) {
+  const std::vector<ProfileStation>& s = profile.stations;
+  if (s.size() < 2) {
+    throw FieldError("profile", "needs at least two stations (the butt and the tip), got " +
+                                    std::to_string(s.size()));
+  }
+  detail::require_positive("density_kg_m3", profile.density_kg_m3, "kg/m^3");
+  detail::require_in_range("density_kg_m3", profile.density_kg_m3, 0.0, kMaxDensity_kg_m3,
+                           "kg/m^3");
+  detail::require_positive("youngs_modulus_Pa", profile.youngs_modulus_Pa, "Pa");
+  detail::require_in_range("youngs_modulus_Pa", profile.youngs_modulus_Pa, 0.0, kMaxModulus_Pa,
+                           "Pa");
+  for (std::size_t k = 0; k < s.size(); ++k) {
+    detail::require_positive(detail::Element{"profile", k, "diameter_m"}, s[k].diameter_m, "m");
+    detail::require_in_range(detail::Element{"profile", k, "diameter_m"}, s[k].diameter_m, 0.0,
+                             kMaxLength_m, "m");
+    if (k == 0 && s[k].from_butt_m != 0.0) {
+      throw FieldError(detail::indexed("profile", k, "from_butt_m"),
+                       "the first station is the butt, 0, got " +
+                           detail::format_number(s[k].from_butt_m) + " m");
+    }
+    if (k > 0 && !(s[k].from_butt_m > s[k - 1].from_butt_m)) {
+      throw FieldError(detail::indexed("profile", k, "from_butt_m"),
+                       "must be beyond the station before (" +
+                           detail::format_number(s[k - 1].from_butt_m) + " m), got " +
+                           detail::format_number(s[k].from_butt_m) + " m");
+    }
+  }
+  detail::require_in_range(detail::Element{"profile", s.size() - 1, "from_butt_m"},
+                           s.back().from_butt_m, 0.0, kMaxLength_m, "m");
+  constexpr double kPi = 3.14159265358979323846;
+  const double rho = profile.density_kg_m3, E = profile.youngs_modulus_Pa;
+  const double slice_m = std::max(kProfileSlice_m, s.back().from_butt_m / 400.0);
+  std::vector<Section> sections;
+  for (std::size_t k = 0; k + 1 < s.size(); ++k) {
+    const double length = s[k + 1].from_butt_m - s[k].from_butt_m;
+    const auto n = static_cast<std::size_t>(std::ceil(length / slice_m * (1.0 - 1e-12)));
+    const double h = length / static_cast<double>(n);
+    const double d0 = s[k].diameter_m, d1 = s[k + 1].diameter_m;
+    const auto diameter = [&](double t) { return d0 + (d1 - d0) * t; };
+    for (std::size_t i = 0; i < n; ++i) {
+      const double a = diameter(static_cast<double>(i) / static_cast<double>(n));
+      const double b = diameter(static_cast<double>(i + 1) / static_cast<double>(n));
+      const double mid = diameter((static_cast<double>(i) + 0.5) / static_cast<double>(n));
+      sections.push_back(Section{h, rho * kPi * h * (a * a + a * b + b * b) / 12.0,
+                                 E * kPi * mid * mid * mid * mid / 64.0});
+    }
+  }
+  return sections;
+}
+
+Implement Implement::from_profile(const RoundProfile& profile,
+                                  std::vector<PointMass> point_masses) {
+  return from_sections(profile_sections(profile), std::move(point_masses));
 }
 
 Implement Implement::paper_racquet(double length_m, double mass_kg,

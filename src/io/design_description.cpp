@@ -27,6 +27,8 @@ namespace {
 std::string metres(double value) { return brief(Json(value)); }
 
 double length_of(const ImplementDescription& d) {
+  if (d.form == ImplementDescription::Form::kProfile)
+    return d.profile.stations.empty() ? 0.0 : d.profile.stations.back().from_butt_m;
   if (d.form != ImplementDescription::Form::kSections) return d.length_m;
   double total_m = 0.0;
   for (const Section& section : d.sections) total_m += section.length_m;
@@ -117,6 +119,8 @@ Implement build_implement(const ImplementDescription& d) {
   switch (d.form) {
     case ImplementDescription::Form::kSections:
       return Implement::from_sections(d.sections, points);
+    case ImplementDescription::Form::kProfile:
+      return Implement::from_profile(d.profile, points);
     case ImplementDescription::Form::kHeadToHandleRatio:
       return Implement::paper_racquet(d.length_m, d.mass_kg, d.head_to_handle_mass_ratio, points);
     case ImplementDescription::Form::kSpecs:

@@ -66,7 +66,7 @@ std::vector<PointMass> place_point_masses(const std::vector<PointMassDescription
 
 // How the implement was given, in SI, before the implement is built.
 struct ImplementDescription {
-  enum class Form { kHeadToHandleRatio, kSections, kSpecs };
+  enum class Form { kHeadToHandleRatio, kSections, kSpecs, kProfile };
   Form form = Form::kHeadToHandleRatio;
   double length_m = 0.0;                   // kHeadToHandleRatio, kSpecs
   double mass_kg = 0.0;                    // kHeadToHandleRatio, kSpecs
@@ -75,6 +75,7 @@ struct ImplementDescription {
   double balance = 0.0;                    // kSpecs: [m] from the butt, or points head-light
   double swingweight_kg_m2 = 0.0;          // kSpecs
   std::vector<Section> sections;           // kSections
+  RoundProfile profile;                    // kProfile
   // The file's list, entry for entry: /implement/point_masses/N is entry N.
   std::vector<PointMassDescription> point_masses;
   std::optional<HeadShape> head;  // implement/headsize_*: places clock positions

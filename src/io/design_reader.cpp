@@ -50,7 +50,8 @@ bool is_design_path(std::string_view name) {
     std::string detail = typed ? typed->detail() : message.substr(colon + 2);
     std::string name = prefix + core_name;
     if (prefix.empty() &&
-        (core_name.starts_with("sections") || core_name.starts_with("point_masses"))) {
+        (core_name.starts_with("sections") || core_name.starts_with("point_masses") ||
+         core_name.starts_with("profile"))) {
       name = "implement/" + core_name;
     }
     const auto it = keys.find(name);
@@ -123,6 +124,43 @@ Section read_section(ObjectReader& r) {
   section.EI_N_m2 = r.quantity("EI", Dimension::kStiffness);
   r.finish(kKeys);
   return section;
+}
+
+// A round implement's profile: its stations (from the butt, diameter), the
+// density and Young's modulus of its material.
+RoundProfile read_profile(ObjectReader& r, const std::string& source, KeyMap* keys) {
+  const Json* list = r.child("profile");
+  if (!list->is_array() || list->size() < 2) {
+    r.fail("profile", "expected an array of at least two stations (the butt and the tip), got " +
+                          brief(*list));
+  }
+  const std::vector<std::string>& kKeys = design_keys("implement/profile/N");
+  RoundProfile profile;
+  for (std::size_t i = 0; i < list->size(); ++i) {
+    const std::string index = std::to_string(i);
+    ObjectReader s((*list)[i], r.pointer_of("profile") + "/" + index, "implement/profile/" + index,
+                   source, keys);
+    s.check_known(kKeys);
+    const auto from_butt = s.quantity("from_butt", Dimension::kLength);
+    const auto diameter = s.quantity("diameter", Dimension::kLength);
+    if (!from_butt) s.fail("", "missing from_butt_m (or from_butt_cm, from_butt_in)");
+    if (!diameter) s.fail("", "missing diameter_m (or diameter_cm, diameter_in)");
+    s.finish(kKeys);
+    profile.stations.push_back(ProfileStation{*from_butt, *diameter});
+  }
+  const auto density = r.number("density_kg_m3");
+  if (!density) r.fail("", "missing density_kg_m3 (the profile's material)");
+  profile.density_kg_m3 = *density;
+  const std::string modulus_key = r.one_of(keys_of("implement", {"youngs_modulus"}));
+  if (modulus_key.empty()) {
+    r.fail("",
+           "missing youngs_modulus_Pa (or youngs_modulus_GPa), the profile's material "
+           "along its length");
+  }
+  profile.youngs_modulus_Pa =
+      find_spelling("implement", modulus_key)->scale.to_si(*r.number(modulus_key));
+  r.record("youngs_modulus_Pa", modulus_key);
+  return profile;
 }
 
 // A point mass as the file places it (the description), with the keys that
@@ -332,6 +370,19 @@ ImplementRead read_implement(const Json& document, const std::string& source, Ke
     points = place_point_masses(point_specs, length_m, head.head, source);
   };
   try {
+    if (r.has("profile")) {
+      const RoundProfile profile = read_profile(r, source, keys);
+      r.finish(with_head_keys({"profile", "density_kg_m3", "youngs_modulus", "point_masses"}));
+      const double length_m = profile.stations.back().from_butt_m;
+      if (std::isfinite(length_m) && length_m > 0.0) place(length_m);
+      if (described) {
+        described->form = ImplementDescription::Form::kProfile;
+        described->profile = profile;
+        described->point_masses = descriptions_of(point_specs);
+        described->head = head.head;
+      }
+      return {Implement::from_profile(profile, std::move(points)), "profile", head};
+    }
     if (r.has("sections")) {
       const Json* list = r.child("sections");
       if (!list->is_array() || list->empty()) {
@@ -370,6 +421,7 @@ ImplementRead read_implement(const Json& document, const std::string& source, Ke
                                           .mass_kg = *mass,
                                           .head_to_handle_mass_ratio = ratio,
                                           .sections = {},
+                                          .profile = {},
                                           .point_masses = descriptions_of(point_specs),
                                           .head = head.head};
       }
@@ -407,6 +459,7 @@ ImplementRead read_implement(const Json& document, const std::string& source, Ke
                                         .balance = balance_as_given,
                                         .swingweight_kg_m2 = *swingweight,
                                         .sections = {},
+                                        .profile = {},
                                         .point_masses = descriptions_of(point_specs),
                                         .head = head.head};
     }
@@ -421,6 +474,7 @@ ImplementRead read_implement(const Json& document, const std::string& source, Ke
 
 ImplementDescription::Form implement_form_of(const std::string& form) {
   if (form == "sections") return ImplementDescription::Form::kSections;
+  if (form == "profile") return ImplementDescription::Form::kProfile;
   if (form == "specs") return ImplementDescription::Form::kSpecs;
   return ImplementDescription::Form::kHeadToHandleRatio;
 }
@@ -756,6 +810,25 @@ DesignFile read_design_impl(const Json& document, const std::string& source, boo
 
   Reading in{source, keys, provenance, defaults, design};
   read_frame(top, in);
+  // The frame's EI is for the sections without their own: where every
+  // section has one (a profile, or sections each with EI_N_m2) it would be
+  // read and never used.
+  if (const std::vector<Section>& sections = implement.implement.sections();
+      design.stiffness.EI_N_m2 && !sections.empty() &&
+      std::all_of(sections.begin(), sections.end(),
+                  [](const Section& s) { return s.EI_N_m2.has_value(); })) {
+    std::string key = "EI_N_m2";
+    for (const auto& [name, value] : document.at("frame").items()) {
+      if (name.starts_with("EI_")) key = name;
+    }
+    throw InputError(
+        source, "/frame/" + key,
+        implement.form == "profile"
+            ? "contradicts /implement/youngs_modulus: the profile gives the stiffness; "
+              "give it once"
+            : "every section gives its own EI_N_m2, so this one would not be used; "
+              "give the stiffness once");
+  }
   const std::optional<double> head_area_m2 = read_strings(top, in, implement);
   read_hand(top, in);
   const std::optional<double> forearm_mass_kg = read_forearm(top, in);

@@ -41,6 +41,10 @@ bool has_head(const D& d, std::size_t) { return d.implement.head.has_value(); }
 bool has_section(const D& d, std::size_t k) {
   return d.implement.form == Form::kSections && k < d.implement.sections.size();
 }
+bool profile(const D& d, std::size_t) { return d.implement.form == Form::kProfile; }
+bool has_station(const D& d, std::size_t k) {
+  return d.implement.form == Form::kProfile && k < d.implement.profile.stations.size();
+}
 const io::PointMassDescription* entry(const D& d, std::size_t k) {
   return k < d.implement.point_masses.size() ? &d.implement.point_masses[k] : nullptr;
 }
@@ -102,6 +106,15 @@ const std::vector<FieldSetter>& field_setters() {
          return has_section(d, k) && d.implement.sections[k].EI_N_m2.has_value();
        },
        [](D& x, std::size_t k, double v) { x.implement.sections[k].EI_N_m2 = v; }, true},
+      {"implement/profile/N", "from_butt", "", has_station,
+       [](D& x, std::size_t k, double v) { x.implement.profile.stations[k].from_butt_m = v; },
+       true},
+      {"implement/profile/N", "diameter", "", has_station,
+       [](D& x, std::size_t k, double v) { x.implement.profile.stations[k].diameter_m = v; }, true},
+      {"implement", "density_kg_m3", "", profile,
+       [](D& x, std::size_t, double v) { x.implement.profile.density_kg_m3 = v; }, true},
+      {"implement", "youngs_modulus", "", profile,
+       [](D& x, std::size_t, double v) { x.implement.profile.youngs_modulus_Pa = v; }, true},
       // Entry N of the file's list, whatever it holds (a clock pair is one
       // entry; its mass is each piece's).
       {"implement/point_masses/N", "mass", "",

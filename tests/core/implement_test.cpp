@@ -1,6 +1,10 @@
 #include "sweetspot/implement.hpp"
 
 #include <catch2/catch.hpp>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 namespace sweetspot {
 namespace {
@@ -81,6 +85,71 @@ TEST_CASE("Impossible implements are refused with the argument named") {
   // Nor above what all the mass at the two ends gives: M B (L - B) more.
   CHECK_THROWS_WITH(Implement::from_specs({0.686, 0.3, 0.32, 0.01452 + 0.3 * 0.32 * 0.366 + 1e-6}),
                     Catch::Contains("swingweight_kg_m2"));
+}
+
+TEST_CASE("A round profile of one diameter is the uniform rod: rho pi d^2 L / 4, E pi d^4 / 64") {
+  constexpr double kPi = 3.14159265358979323846;
+  const double L = 0.84, d = 0.06, rho = 650.0, E = 1.2e10;
+  const RoundProfile rod{{{0.0, d}, {L, d}}, rho, E};
+  const std::vector<Section> slices = profile_sections(rod);
+  REQUIRE(slices.size() == 168);  // 84 cm in slices of kProfileSlice_m
+  for (const Section& s : slices) {
+    CHECK(s.EI_N_m2.value() == Approx(E * kPi * d * d * d * d / 64.0).epsilon(kRoundOff));
+  }
+  const MassProperties body = Implement::from_profile(rod).mass_properties();
+  const double M = rho * kPi * d * d / 4.0 * L;
+  CHECK(body.mass_kg == Approx(M).epsilon(kRoundOff));
+  CHECK(body.com_from_butt_m == Approx(L / 2).epsilon(kRoundOff));
+  CHECK(body.I_cm_kg_m2 == Approx(M * L * L / 12).epsilon(1e-12));
+}
+
+TEST_CASE("A tapered profile has the cone frustum's exact mass, and its centre and inertia") {
+  // A straight taper d(x) = d0 + (d1 - d0) x / L: the mass rho pi/4 int d^2 dx
+  // is exact slice by slice; the centre and the inertia of the slices, each
+  // taken uniform, are within O((h / L)^2) of the integrals, here in closed
+  // form by the moments of d^2, a quadratic in x.
+  constexpr double kPi = 3.14159265358979323846;
+  const double L = 0.80, d0 = 0.025, d1 = 0.065, rho = 700.0;
+  const RoundProfile bat{{{0.0, d0}, {L, d1}}, rho, 1.1e10};
+  const double a = d0 * d0, b = 2 * d0 * (d1 - d0) / L, c = (d1 - d0) * (d1 - d0) / (L * L);
+  // int_0^L x^n (a + b x + c x^2) dx
+  const auto moment = [&](int n) {
+    return a * std::pow(L, n + 1) / (n + 1) + b * std::pow(L, n + 2) / (n + 2) +
+           c * std::pow(L, n + 3) / (n + 3);
+  };
+  const double k = rho * kPi / 4.0;
+  const double M = k * moment(0), com = k * moment(1) / M, I_cm = k * moment(2) - M * com * com;
+  const MassProperties body = Implement::from_profile(bat).mass_properties();
+  const double h_over_L = kProfileSlice_m / L;
+  CHECK(body.mass_kg == Approx(M).epsilon(1e-13));
+  CHECK(body.com_from_butt_m == Approx(com).epsilon(h_over_L * h_over_L));
+  CHECK(body.I_cm_kg_m2 == Approx(I_cm).epsilon(h_over_L * h_over_L));
+  // Halving the slice (two stations more at the third points) moves nothing
+  // beyond that order: a station on a straight taper changes no volume.
+  const RoundProfile same{{{0.0, d0}, {L / 3, d0 + (d1 - d0) / 3}, {L, d1}}, rho, 1.1e10};
+  CHECK(Implement::from_profile(same).mass_properties().mass_kg == Approx(M).epsilon(1e-13));
+}
+
+TEST_CASE("A profile names the station or the material it cannot take") {
+  const auto message = [](const RoundProfile& p) {
+    try {
+      (void)profile_sections(p);
+    } catch (const std::invalid_argument& error) {
+      return std::string(error.what());
+    }
+    return std::string("accepted");
+  };
+  CHECK_THAT(message({{{0.0, 0.05}}, 650.0, 1e10}),
+             Catch::StartsWith("profile: needs at least two"));
+  CHECK_THAT(message({{{0.01, 0.05}, {0.8, 0.06}}, 650.0, 1e10}),
+             Catch::StartsWith("profile/0/from_butt_m: the first station is the butt"));
+  CHECK_THAT(message({{{0.0, 0.05}, {0.8, 0.06}, {0.8, 0.06}}, 650.0, 1e10}),
+             Catch::StartsWith("profile/2/from_butt_m: must be beyond"));
+  CHECK_THAT(message({{{0.0, 0.05}, {0.8, 0.0}}, 650.0, 1e10}),
+             Catch::StartsWith("profile/1/diameter_m"));
+  CHECK_THAT(message({{{0.0, 0.05}, {0.8, 0.06}}, -1.0, 1e10}), Catch::StartsWith("density_kg_m3"));
+  CHECK_THAT(message({{{0.0, 0.05}, {0.8, 0.06}}, 650.0, 1e13}),
+             Catch::StartsWith("youngs_modulus_Pa"));
 }
 
 }  // namespace
