@@ -120,6 +120,27 @@ void write_beam_motion(const studies::PaperBeamResponses& beam, const ReportWrit
   }
 }
 
+// The fundamentals that give the paper's 0.8 and 0.6 at each cor_rigid, and
+// in `found` the sentence for cor_rigid 0.90.
+std::string fundamentals_md(const studies::CorFromStiffness& computed, std::string& found) {
+  std::string md =
+      "\n| cor_rigid | fundamental for e = 0.8 (Table I, stiff) | fundamental for e = 0.6 "
+      "(flexible) |\n"
+      "|---:|---:|---:|\n";
+  for (const studies::FundamentalsForCor& fundamentals : computed.fundamentals) {
+    const double er = fundamentals.cor_rigid;
+    const std::optional<double>&stiff = fundamentals.stiff_Hz, &flexible = fundamentals.flexible_Hz;
+    const auto hz = [](const std::optional<double>& f) {
+      return f ? fmt::format("{:.0f} Hz", *f) : std::string("none");
+    };
+    md += fmt::format("| {:.2f} | {} | {} |\n", er, hz(stiff), hz(flexible));
+    if (er == 0.90)
+      found = fmt::format("with cor_rigid 0.90, e = 0.8 at {} and e = 0.6 at {}", hz(stiff),
+                          hz(flexible));
+  }
+  return md;
+}
+
 // cor-from-stiffness: the derived COR against the free fundamental.
 void write_cor_from_stiffness(const studies::CorFromStiffness& computed, const ReportWriter& write,
                               std::vector<ReportEntry>& entries) {
@@ -154,22 +175,8 @@ void write_cor_from_stiffness(const studies::CorFromStiffness& computed, const R
     e90.x.push_back(f);
     e90.y.push_back(b.cor);
   }
-  md +=
-      "\n| cor_rigid | fundamental for e = 0.8 (Table I, stiff) | fundamental for e = 0.6 "
-      "(flexible) |\n"
-      "|---:|---:|---:|\n";
   std::string found;
-  for (const studies::FundamentalsForCor& fundamentals : computed.fundamentals) {
-    const double er = fundamentals.cor_rigid;
-    const std::optional<double>&stiff = fundamentals.stiff_Hz, &flexible = fundamentals.flexible_Hz;
-    const auto hz = [](const std::optional<double>& f) {
-      return f ? fmt::format("{:.0f} Hz", *f) : std::string("none");
-    };
-    md += fmt::format("| {:.2f} | {} | {} |\n", er, hz(stiff), hz(flexible));
-    if (er == 0.90)
-      found = fmt::format("with cor_rigid 0.90, e = 0.8 at {} and e = 0.6 at {}", hz(stiff),
-                          hz(flexible));
-  }
+  md += fundamentals_md(computed, found);
   md +=
       "\nFree racquet frames run about 100-180 Hz. In this model a frame reaches the paper's "
       "\"flexible\" "
