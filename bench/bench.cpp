@@ -27,6 +27,7 @@
 #include "reports/html_report.hpp"
 #include "reports/optimization_report.hpp"
 #include "studies/design_binding.hpp"
+#include "studies/design_page.hpp"
 #include "studies/optimization.hpp"
 #include "studies/string_bed_map.hpp"
 #include "studies/study.hpp"
@@ -255,8 +256,9 @@ std::string bench_maps(const BenchOptions& options, std::ostream& log) {
     const io::DesignFile file = io::load_design(page_design.string());
     const io::Json document = io::read_json_file(page_design.string());
     std::string page;
-    const double seconds = median_seconds(
-        options.repeats, [&] { page = reports::design_html_report(file, document); });
+    const double seconds = median_seconds(options.repeats, [&] {
+      page = reports::design_html_report(file, document, studies::design_page(file));
+    });
     std::size_t figures = 0;
     for (std::size_t at = page.find("<svg"); at != std::string::npos;
          at = page.find("<svg", at + 1))

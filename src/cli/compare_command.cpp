@@ -10,6 +10,7 @@
 #include "io/design_reader.hpp"
 #include "io/input_error.hpp"
 #include "reports/comparison.hpp"
+#include "studies/comparison.hpp"
 
 namespace sweetspot::cli {
 
@@ -62,7 +63,7 @@ int CompareCommand::run() const {
   std::vector<reports::ComparedDesign> designs;
   const std::string level = command->count("--fidelity") ? fidelity : std::string();
   for (const std::string& path : design_paths) {
-    designs.push_back(reports::compare_one(io::load_design(path), level, tolerance));
+    designs.push_back(studies::compare_one(io::load_design(path), level, tolerance, !html.empty()));
   }
   io::OutputSet outputs;
   if (html.empty() || !out.output.empty())

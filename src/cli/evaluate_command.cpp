@@ -21,6 +21,7 @@
 #include "io/parallel.hpp"
 #include "reports/summary.hpp"
 #include "studies/batch.hpp"
+#include "studies/sweet_spots.hpp"
 
 namespace sweetspot::cli {
 namespace {
@@ -215,7 +216,7 @@ int EvaluateCommand::run() const {
   std::string answer;
   if (out.parsed() == io::Format::kMarkdown) {
     answer =
-        reports::sweet_spot_paragraph(design, reports::find_sweet_spots(design, result, tolerance));
+        reports::sweet_spot_paragraph(design, studies::find_sweet_spots(design, result, tolerance));
   }
   io::OutputSet outputs;
   out.emit(io::evaluation_report(design, result, out.parsed(), answer, units == "people"), outputs);

@@ -13,6 +13,8 @@
 #include "io/design_reader.hpp"
 #include "reports/modes_report.hpp"
 #include "reports/response_report.hpp"
+#include "studies/modes.hpp"
+#include "studies/response.hpp"
 
 namespace sweetspot::cli {
 namespace {
@@ -59,7 +61,7 @@ int ModesCommand::run() const {
   out.plan(plan);
   if (!plot.empty()) plan.write("--plot", plot);
   const io::DesignFile design = io::load_design(design_path);
-  const auto data = reports::compute_modes(
+  const auto data = studies::compute_modes(
       design, modes, tolerance,
       method == "fe" ? ModeOptions::Method::kFiniteElement : ModeOptions::Method::kExact);
   io::OutputSet outputs;
@@ -124,12 +126,12 @@ int ResponseCommand::run() const {
     require_plot_stem("--plot", plot);
     for (const double x : at) plan.write("--plot", plot_png(plot, x));
   }
-  reports::ResponseRequest request;
+  studies::ResponseRequest request;
   request.points_from_butt_m = at;
   request.impacts_from_butt_m = impacts;
   request.hand_held = held;
   request.until_s = until_ms / 1e3;
-  const auto data = reports::compute_response(design, request);
+  const auto data = studies::compute_response(design, request);
   io::OutputSet outputs;
   OutputOptions{"csv", csv_path}.emit(reports::response_csv(data), outputs);
   if (!plot.empty()) {

@@ -7,13 +7,15 @@
 #include <system_error>
 
 #include "cli/commands.hpp"
+#include "cli/reports_folder.hpp"
 #include "io/atomic_file.hpp"
 #include "io/design_reader.hpp"
 #include "io/input_error.hpp"
 #include "reports/html_report.hpp"
 #include "reports/paper_reports.hpp"
-#include "reports/reports.hpp"
 #include "reports/summary.hpp"
+#include "studies/design_page.hpp"
+#include "studies/paper.hpp"
 
 namespace sweetspot::cli {
 
@@ -45,7 +47,7 @@ int Table1Command::run() const {
   plan.read_folder(folder);
   out.plan(plan);
   io::OutputSet outputs;
-  out.emit(reports::table1_report(reports::compute_table1(folder), out.parsed()), outputs);
+  out.emit(reports::table1_report(studies::compute_table1(folder), out.parsed()), outputs);
   outputs.commit();
   return kExitOk;
 }
@@ -66,7 +68,8 @@ int FigureCommand::run() const {
   OutputOptions{"csv", csv_path}.plan(plan);
   if (!png.empty()) plan.write("--plot", png);
   const io::DesignFile beam = io::load_design(beam_path);
-  const reports::Figure data = number == 5 ? reports::figure5(beam) : reports::figure11(beam);
+  const reports::Figure data = number == 5 ? reports::figure5(beam, studies::figure5_data(beam))
+                                           : reports::figure11(beam, studies::figure11_data(beam));
   io::OutputSet outputs;
   OutputOptions{"csv", csv_path}.emit(data.csv, outputs);
   if (!png.empty()) {
@@ -98,8 +101,8 @@ int ReportCommand::run() const {
     plan.read_folder(designs);
     plan.write_folder("--out", out_dir);
     // Each file is checked again once its name is known, before any is written.
-    reports::write_reports(designs, out_dir, std::cout,
-                           [&plan](const std::string& file) { plan.write("--out", file, true); });
+    write_reports(designs, out_dir, std::cout,
+                  [&plan](const std::string& file) { plan.write("--out", file, true); });
     return kExitOk;
   }
   for (const char* option : {"--designs", "--out"}) {
@@ -124,7 +127,8 @@ int ReportCommand::run() const {
   plan.write("--html", html);
   const io::DesignFile file = io::load_design(design);
   const io::Json document = io::read_json_file(design);
-  io::write_file_atomically(html, reports::design_html_report(file, document));
+  io::write_file_atomically(
+      html, reports::design_html_report(file, document, studies::design_page(file)));
   say_written(html);
   return kExitOk;
 }

@@ -14,6 +14,7 @@
 #include "io/plot.hpp"
 #include "reports/html_page.hpp"
 #include "reports/html_report.hpp"
+#include "reports/summary.hpp"
 
 namespace sweetspot::reports {
 namespace {
@@ -466,13 +467,6 @@ std::string inputs_sentence(const ComparedDesign& a, const ComparedDesign& b) {
 
 }  // namespace
 
-ComparedDesign compare_one(io::DesignFile design, std::string_view fidelity, double rel_tol) {
-  io::DesignFile placed = std::move(design);
-  const Evaluation asked = io::evaluate_design_file(placed, fidelity, rel_tol);
-  SweetSpots spots = find_sweet_spots(placed, asked, rel_tol);
-  return ComparedDesign{std::move(placed), std::move(spots)};
-}
-
 std::vector<std::string> differences(const ComparedDesign& a, const ComparedDesign& b) {
   std::vector<std::string> sentences;
   sentences.push_back(
@@ -659,16 +653,12 @@ std::string wrist_along_frame_html(const std::vector<ComparedDesign>& designs) {
   std::map<long, std::vector<std::optional<double>>> table;
   double longest_cm = 0.0;
   for (std::size_t k = 0; k < designs.size(); ++k) {
-    const Fidelity fidelity = fidelity_of(designs[k].spots.asked.evaluation) == Fidelity::kCollision
-                                  ? Fidelity::kCollision
-                                  : Fidelity::kRigid;
-    const std::vector<reports::FramePoint> curve =
-        reports::frame_curves(designs[k].design.design, reports::kFrameCurveStep_m, fidelity);
+    const std::vector<studies::FramePoint>& curve = designs[k].curve;
     // The key numbers the lines (a name would not fit a phone's layout);
     // the caption names them.
     io::PlotSeries series{std::to_string(k + 1), {}, {}, "lines lw 2.5"};
     series.color = io::plot_color(k);
-    for (const reports::FramePoint& p : curve) {
+    for (const studies::FramePoint& p : curve) {
       series.x.push_back(p.from_tip_m * 100.0);
       series.y.push_back(p.peak_wrist_force_N);
       auto& cells = table[std::lround(p.from_tip_m * 1e4)];

@@ -1,27 +1,19 @@
 #pragma once
 
 // `sweetspot compare A.json B.json ...`: designs side by side (each at its
-// own impact and at its sweet spots), and what changes from the first to each
-// of the others stated in words.
+// own impact and at its sweet spots, as studies::compare_one() gives them),
+// and what changes from the first to each of the others stated in words.
 
 #include <string>
 #include <vector>
 
 #include "io/design_reader.hpp"
 #include "io/format.hpp"
-#include "reports/summary.hpp"
+#include "studies/comparison.hpp"
 
 namespace sweetspot::reports {
 
-struct ComparedDesign {
-  io::DesignFile design;  // as read (a default impact is the reader's, io::default_impact())
-  SweetSpots spots;       // spots.asked.evaluation is the design's own evaluation
-};
-
-// Reads nothing: evaluates each design (at `fidelity`, "" for the file's own,
-// the hand-held modes to `rel_tol`) and finds its sweet spots. Throws like
-// io::evaluate_design_file, naming the file and the JSON path.
-ComparedDesign compare_one(io::DesignFile design, std::string_view fidelity, double rel_tol);
+using studies::ComparedDesign;
 
 // What changes from `before` to `after`, one sentence each: first every input
 // of the read designs that differs (the implement in a player's words where
@@ -44,7 +36,8 @@ std::string comparison_report(const std::vector<ComparedDesign>& designs, io::Fo
 // differences in words first, each design's sweet spots, the table side by
 // side (people's units, the SI value under each), the racquets drawn from
 // above to one scale with the positions behind the drawing, and the peak
-// wrist force along each frame overlaid, with its table.
+// wrist force along each frame overlaid, with its table (each design's
+// curve: compare_one(..., along_frame = true)).
 std::string comparison_html(const std::vector<ComparedDesign>& designs);
 
 }  // namespace sweetspot::reports

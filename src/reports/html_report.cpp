@@ -17,16 +17,12 @@
 #include "reports/html_page.hpp"
 #include "reports/string_bed_map_report.hpp"
 #include "reports/summary.hpp"
-#include "studies/string_bed_map.hpp"
-#include "sweetspot/collision.hpp"
-#include "sweetspot/evaluate.hpp"
-#include "sweetspot/rigid_impact.hpp"
+#include "studies/design_page.hpp"
 
 namespace sweetspot::reports {
 namespace {
 
-// A mid-size tennis head (100 sq in) when the file does not say.
-constexpr double kDefaultHeadArea_m2 = 100.0 * io::kSquareInch_m2;
+using studies::kDefaultHeadArea_m2;
 // The drawn head: an ellipse this much longer than wide (a 100 sq in head is
 // about 34 cm by 25 cm).
 constexpr double kHeadAspect = 1.35;
@@ -37,9 +33,6 @@ constexpr double kHandleWidth_cm = 2.8;
 constexpr double kThroat_cm = 14.0;
 constexpr double kBall_cm = 6.7;
 constexpr double kBeamDepth_cm = 2.4;
-// Steps of the curves along the frame.
-// The hand-held modes' relative tolerance (evaluate's default).
-constexpr double kRelTol = 1e-6;
 
 // A number for an SVG attribute (centimetres, two decimals are plenty).
 std::string n(double v) { return fmt::format("{:.2f}", v); }
@@ -68,20 +61,12 @@ void flatten(const io::Json& value, const std::string& pointer, std::string& row
                       html_escape(pointer), html_escape(shown), html_escape(io::unit_of_key(key)));
 }
 
-Evaluation evaluate_at(const Design& design, double from_butt_m) {
-  Design at = design;
-  at.impact_from_butt_m = std::clamp(from_butt_m, 0.0, design.implement.length_m());
-  at.impact_off_axis_m = 0.0;  // the curves run along the long axis
-  return evaluate(at, Fidelity::kRigid);
-}
-
 // The answer in sentences (reports/summary.hpp, the same as `evaluate`'s
 // Markdown opens with), one paragraph each, then what the rigid model gives
 // at the COP, which the drawing marks.
-std::string answer_html(const io::DesignFile& file, const Evaluation& e) {
+std::string answer_html(const io::DesignFile& file, const studies::SweetSpots& spots) {
   std::string html;
-  for (const std::string& sentence :
-       reports::sweet_spot_sentences(file, reports::find_sweet_spots(file, e, kRelTol)))
+  for (const std::string& sentence : reports::sweet_spot_sentences(file, spots))
     html += "<p>" + html_escape(sentence) + "</p>\n";
   return html;
 }
@@ -188,40 +173,8 @@ void tape_marks(const io::DesignFile& file, std::vector<Mark>& ms) {
 constexpr int kMapTableStep = 5;
 constexpr int kMapTableFirst = 2;
 
-// The string-bed maps of the page: computed over the design (its head
-// assumed when not given), or why not.
-struct PageMaps {
-  bool head_assumed = false;
-  std::optional<studies::StringBedMap> map;
-  std::string refused;  // why there is no map
-};
-
-PageMaps page_maps(const io::DesignFile& file, Fidelity fidelity) {
-  Design d = file.design;
-  PageMaps maps;
-  maps.head_assumed = !d.head && !d.twistweight_kg_m2;
-  if (maps.head_assumed) {
-    HeadShape head;
-    head.area_m2 = kDefaultHeadArea_m2;
-    d.head = head;
-  }
-  studies::StringBedMapOptions options;
-  try {
-    // The maps are drawn at the fidelity of the page's answer: the solved
-    // collision when the answer is solved, so the power map agrees with the
-    // best rebound in the sentences above.
-    options.fidelity = fidelity == Fidelity::kRigid || fidelity == Fidelity::kCollision
-                           ? fidelity
-                           : Fidelity::kModal;
-    maps.map = studies::string_bed_map(d, options);
-  } catch (const std::invalid_argument& e) {
-    maps.refused = e.what();
-  }
-  return maps;
-}
-
 // The heat maps' plots, one per quantity of map_quantities(), for io::render_svgs().
-std::vector<io::SvgPlot> map_svg_plots(const PageMaps& maps, double length_m) {
+std::vector<io::SvgPlot> map_svg_plots(const studies::PageMaps& maps, double length_m) {
   std::vector<io::SvgPlot> plots;
   if (!maps.map) return plots;
   for (const MapQuantity q : map_quantities(*maps.map))
@@ -230,20 +183,8 @@ std::vector<io::SvgPlot> map_svg_plots(const PageMaps& maps, double length_m) {
   return plots;
 }
 
-// The string-bed maps (power, shock and, with the frame's stiffness, feel):
-// gnuplot's heat maps as inline SVG (`svgs`, as drawn from map_svg_plots()),
-// a caption each, the numbers behind them. Without a head size the drawing's
-// mid-size head is assumed, and said.
-std::string maps_html(const io::DesignFile& file, const PageMaps& maps,
-                      std::span<const io::RenderedSvg> svgs) {
-  const double L = file.design.implement.length_m();
-  const bool head_assumed = maps.head_assumed;
-  std::string html = "<section id=\"maps\"><h2>Over the string bed</h2>\n<!-- sweetspot:maps -->\n";
-  if (!maps.map) {
-    return html + "<p class=\"missing\">No maps for this design: " + html_escape(maps.refused) +
-           "</p>\n</section>\n";
-  }
-  const studies::StringBedMap& map = *maps.map;
+// The sentence under each map naming its lines: the hand-held COP, the node.
+std::string map_lines_text(const studies::StringBedMap& map, double L) {
   std::string lines;
   if (map.cop_hand_from_butt_m)
     lines += fmt::format("the solid line across the head is the hand-held COP, {} cm from the tip",
@@ -254,56 +195,61 @@ std::string maps_html(const io::DesignFile& file, const PageMaps& maps,
         "the tip",
         lines.empty() ? "" : "; ", html_cm(L - *map.node_free_from_butt_m));
   if (lines.empty()) lines = "neither the COP nor the node falls on the string bed";
-  html += fmt::format(
-      "<p>The head seen from the front, tip up, for a hit anywhere on the strings ({} by {} "
-      "points over the bed's ellipse{}). Warm colours are more of what each map shows.</p>\n",
-      map.columns, map.rows,
-      head_assumed
-          ? ": the head's size is not given, so a 100 sq in head is assumed, as in the drawing; "
-            "give <code>implement.headsize_sq_in</code> for yours"
-          : "");
-  // The point of most power on the bed, which the power caption names.
-  studies::StringBedMapPoint best_power;
-  best_power.apparent_cor = -1.0;
-  for (const studies::StringBedMapPoint& p : map.points) {
-    if (p.on_bed && p.apparent_cor > best_power.apparent_cor) best_power = p;
+  return lines;
+}
+
+// What the map of `q` shows, for its caption.
+std::string map_caption(const studies::StringBedMap& map, MapQuantity q, double L) {
+  switch (q) {
+    case MapQuantity::kPower: {
+      // The point of most power on the bed, which the power caption names.
+      studies::StringBedMapPoint best_power;
+      best_power.apparent_cor = -1.0;
+      for (const studies::StringBedMapPoint& p : map.points) {
+        if (p.on_bed && p.apparent_cor > best_power.apparent_cor) best_power = p;
+      }
+      return fmt::format(
+          "{}, highest {} cm from the tip ({:.2f}){}",
+          map.fidelity == Fidelity::kCollision
+              ? "Power: how fast the ball comes back from the solved collision of ball, "
+                "strings and flexible frame (with the twist about the long axis)"
+              : "Power: how fast the ball comes back (the apparent COR, Eq. 16 at the frame's "
+                "given COR, with the twist about the long axis)",
+          html_cm(L - best_power.from_butt_m), best_power.apparent_cor,
+          map.fidelity == Fidelity::kCollision
+              ? ""
+              : "; the frame's vibration losses are in its COR, not in the map, so the "
+                "highest lies towards the throat");
+    }
+    case MapQuantity::kShock:
+      return "Shock: the peak force on the wrist, least along the hand-held COP";
+    case MapQuantity::kFeel:
+      return "Feel: the vibration energy the hit leaves in the frame, least near the node";
   }
-  html += "<div class=\"maps\">\n";
+  return "";
+}
+
+// The maps' figures, one per quantity, each its SVG (or why not) and caption.
+std::string map_figures_html(const studies::StringBedMap& map, double L,
+                             std::span<const io::RenderedSvg> svgs) {
+  const std::string lines = map_lines_text(map, L);
+  std::string html = "<div class=\"maps\">\n";
   const std::vector<MapQuantity> quantities = map_quantities(map);
   for (std::size_t k = 0; k < quantities.size(); ++k) {
     const MapQuantity q = quantities[k];
-    const std::string name = map_quantity_name(q);
     const io::RenderedSvg& svg = svgs[k];
-    std::string says;
-    switch (q) {
-      case MapQuantity::kPower:
-        says = fmt::format(
-            "{}, highest {} cm from the tip ({:.2f}){}",
-            map.fidelity == Fidelity::kCollision
-                ? "Power: how fast the ball comes back from the solved collision of ball, "
-                  "strings and flexible frame (with the twist about the long axis)"
-                : "Power: how fast the ball comes back (the apparent COR, Eq. 16 at the frame's "
-                  "given COR, with the twist about the long axis)",
-            html_cm(L - best_power.from_butt_m), best_power.apparent_cor,
-            map.fidelity == Fidelity::kCollision
-                ? ""
-                : "; the frame's vibration losses are in its COR, not in the map, so the "
-                  "highest lies towards the throat");
-        break;
-      case MapQuantity::kShock:
-        says = "Shock: the peak force on the wrist, least along the hand-held COP";
-        break;
-      case MapQuantity::kFeel:
-        says = "Feel: the vibration energy the hit leaves in the frame, least near the node";
-        break;
-    }
     html += fmt::format(
-        "<figure id=\"map-{}\">{}<figcaption>{}; {}.</figcaption></figure>\n", name,
+        "<figure id=\"map-{}\">{}<figcaption>{}; {}.</figcaption></figure>\n", map_quantity_name(q),
         svg.svg ? *svg.svg : "<p class=\"missing\">Map not drawn: " + html_escape(svg.why) + "</p>",
-        says, lines);
+        map_caption(map, q, L), lines);
   }
-  html += "</div>\n";
+  return html + "</div>\n";
+}
+
+// The numbers behind the maps: every kMapTableStep-th grid point on the bed.
+std::string map_numbers_html(const studies::StringBedMap& map, double L) {
   const bool feel = map.fidelity != Fidelity::kRigid;
+  std::string html;
   if (!feel) {
     html +=
         "<p>No feel map: the vibration a hit excites needs the frame's stiffness; give "
@@ -333,35 +279,35 @@ std::string maps_html(const io::DesignFile& file, const PageMaps& maps,
       html += "</tr>\n";
     }
   }
-  return html + "</tbody></table></div></details>\n</section>\n";
+  return html + "</tbody></table></div></details>\n";
+}
+
+// The string-bed maps (power, shock and, with the frame's stiffness, feel):
+// gnuplot's heat maps as inline SVG (`svgs`, as drawn from map_svg_plots()),
+// a caption each, the numbers behind them. Without a head size the drawing's
+// mid-size head is assumed, and said.
+std::string maps_html(const io::DesignFile& file, const studies::PageMaps& maps,
+                      std::span<const io::RenderedSvg> svgs) {
+  const double L = file.design.implement.length_m();
+  std::string html = "<section id=\"maps\"><h2>Over the string bed</h2>\n<!-- sweetspot:maps -->\n";
+  if (!maps.map) {
+    return html + "<p class=\"missing\">No maps for this design: " + html_escape(maps.refused) +
+           "</p>\n</section>\n";
+  }
+  const studies::StringBedMap& map = *maps.map;
+  html += fmt::format(
+      "<p>The head seen from the front, tip up, for a hit anywhere on the strings ({} by {} "
+      "points over the bed's ellipse{}). Warm colours are more of what each map shows.</p>\n",
+      map.columns, map.rows,
+      maps.head_assumed
+          ? ": the head's size is not given, so a 100 sq in head is assumed, as in the drawing; "
+            "give <code>implement.headsize_sq_in</code> for yours"
+          : "");
+  html += map_figures_html(map, L, svgs);
+  return html + map_numbers_html(map, L) + "</section>\n";
 }
 
 }  // namespace
-
-std::vector<FramePoint> frame_curves(const Design& design, double step_m, Fidelity fidelity) {
-  if (!(step_m > 0)) throw std::invalid_argument("step_m: must be > 0 m, got " + io::exact(step_m));
-  const double L = design.implement.length_m();
-  std::optional<DesignCollision> collision;
-  if (fidelity == Fidelity::kCollision) collision.emplace(design);
-  std::vector<FramePoint> points;
-  const auto steps = static_cast<std::size_t>(std::ceil(L / step_m - 1e-9));
-  for (std::size_t i = 0; i <= steps; ++i) {
-    const double d = std::min(L, static_cast<double>(i) * step_m);
-    const Evaluation e = evaluate_at(design, L - d);
-    if (!collision) {
-      points.push_back({d, e.wrist_force_ratio, e.apparent_cor, e.peak_wrist_force_N});
-      continue;
-    }
-    try {
-      const CollisionResult r = collision->at(e.impact_from_butt_m, 0.0);
-      points.push_back({d, e.wrist_force_ratio, r.apparent_cor,
-                        peak_wrist_force(e.wrist_force_ratio, r.peak_force_N)});
-    } catch (const std::invalid_argument&) {
-      // No solved collision here (its contact time out of range): no point.
-    }
-  }
-  return points;
-}
 
 double drawn_head_area_m2(const io::DesignFile& file, const io::Json& document) {
   if (file.design.strings) {
@@ -520,37 +466,21 @@ std::string racquets_to_scale_html(const std::vector<DrawnRacquet>& racquets,
   return html + "</tbody></table></div>\n";
 }
 
-std::string design_html_report(const io::DesignFile& file, const io::Json& document) {
+namespace {
+
+// The file's own description, for the page's head.
+std::string description_of(const io::Json& document) {
+  return document.is_object() && document.contains("description") &&
+                 document["description"].is_string()
+             ? document["description"].get<std::string>()
+             : std::string();
+}
+
+// The numbers behind the drawing: each marker from the tip and the butt.
+std::string positions_table_html(const io::DesignFile& file, const Evaluation& e) {
   const Design& d = file.design;
   const double L = d.implement.length_m();
-  const Evaluation e = evaluate_design_file(file, "", kRelTol);
-  const std::vector<FramePoint> curve = frame_curves(
-      d, kFrameCurveStep_m,
-      fidelity_of(e) == Fidelity::kCollision ? Fidelity::kCollision : Fidelity::kRigid);
-  const double head_area = drawn_head_area_m2(file, document);
-  const bool head_given = file.design.strings || head_area != kDefaultHeadArea_m2;
-  const std::string description = document.is_object() && document.contains("description") &&
-                                          document["description"].is_string()
-                                      ? document["description"].get<std::string>()
-                                      : std::string();
-
-  std::string html = html_page_open(file.name, description);
-
-  html += "<section id=\"answer\"><h2>The answer</h2>\n<div class=\"answer\">\n" +
-          answer_html(file, e) + "</div></section>\n";
-
-  // The racquet drawn to scale.
-  html += "<section id=\"racquet\"><h2>The racquet, to scale</h2>\n";
-  html += "<figure class=\"drawing-figure\">" + racquet_top_svg(file, e, head_area) +
-          fmt::format(
-              "<figcaption>From above. The head is drawn as an ellipse of {:.0f} sq in{}; "
-              "the outline is a sketch, the positions are computed.</figcaption></figure>\n",
-              head_area / io::kSquareInch_m2,
-              head_given ? " (as given)" : " (not given: a mid-size head assumed)");
-  html += "<figure class=\"drawing-figure\">" + racquet_side_svg(file, e) +
-          "<figcaption>From the side, the ball arriving on the strings.</figcaption></figure>\n";
-  // The numbers behind the drawing.
-  html +=
+  std::string html =
       "<div class=\"table-wrap\"><table id=\"positions\"><thead><tr><th>where</th>"
       "<th class=\"num\">from the tip (cm)</th><th class=\"num\">from the butt (cm)</th>"
       "</tr></thead><tbody>\n";
@@ -579,17 +509,45 @@ std::string design_html_report(const io::DesignFile& file, const io::Json& docum
     row(fmt::format("lead{}", i + 1).c_str(), fmt::format("lead, {:.1f} g", p.mass_kg * 1000.0),
         p.from_butt_m, "added mass (tape)");
   }
-  html += fmt::format(
-      "</tbody></table></div>\n<p>Length {} cm, mass {:.0f} g, swingweight {:.0f} kg·cm².</p>\n"
-      "</section>\n",
-      html_cm(L), e.mass_kg * 1000.0, e.swingweight_kg_m2 * 1e4);
+  return html + "</tbody></table></div>\n";
+}
 
-  // The curves along the frame.
-  html += "<section id=\"frame\"><h2>Along the frame</h2>\n";
+// The racquet drawn to scale from above and from the side, and the numbers
+// behind the drawing.
+std::string racquet_html(const io::DesignFile& file, const Evaluation& e,
+                         const io::Json& document) {
+  const double head_area = drawn_head_area_m2(file, document);
+  const bool head_given = file.design.strings || head_area != kDefaultHeadArea_m2;
+  std::string html = "<section id=\"racquet\"><h2>The racquet, to scale</h2>\n";
+  html += "<figure class=\"drawing-figure\">" + racquet_top_svg(file, e, head_area) +
+          fmt::format(
+              "<figcaption>From above. The head is drawn as an ellipse of {:.0f} sq in{}; "
+              "the outline is a sketch, the positions are computed.</figcaption></figure>\n",
+              head_area / io::kSquareInch_m2,
+              head_given ? " (as given)" : " (not given: a mid-size head assumed)");
+  html += "<figure class=\"drawing-figure\">" + racquet_side_svg(file, e) +
+          "<figcaption>From the side, the ball arriving on the strings.</figcaption></figure>\n";
+  html += positions_table_html(file, e);
+  return html + fmt::format(
+                    "<p>Length {} cm, mass {:.0f} g, swingweight {:.0f} kg·cm².</p>\n"
+                    "</section>\n",
+                    html_cm(file.design.implement.length_m()), e.mass_kg * 1000.0,
+                    e.swingweight_kg_m2 * 1e4);
+}
+
+// The two plots along the frame: what the wrist feels and how the ball comes back.
+struct FramePlots {
+  io::Plot wrist, cor;
+};
+
+FramePlots frame_plots(const io::DesignFile& file, const Evaluation& e,
+                       const std::vector<studies::FramePoint>& curve) {
+  const Design& d = file.design;
+  const double L = d.implement.length_m();
   io::PlotSeries wrist{"wrist force / string force, |F_w / F|", {}, {}, "lines lw 2.5"};
   io::PlotSeries cor{"apparent COR e_A", {}, {}, "lines lw 2.5"};
   cor.color = io::plot_color(1);
-  for (const FramePoint& p : curve) {
+  for (const studies::FramePoint& p : curve) {
     wrist.x.push_back(p.from_tip_m * 100.0);
     wrist.y.push_back(std::abs(p.wrist_force_ratio));
     cor.x.push_back(p.from_tip_m * 100.0);
@@ -600,38 +558,40 @@ std::string design_html_report(const io::DesignFile& file, const io::Json& docum
   if (e.modal && e.modal->node_hand_from_butt_m)
     lines.push_back({(L - *e.modal->node_hand_from_butt_m) * 100.0, "node"});
   lines.push_back({(L - d.impact_from_butt_m) * 100.0, "impact"});
-  io::Plot wrist_plot{"What the wrist feels, for a hit along the frame",
-                      "impact point from the tip (cm)",
-                      "wrist force over the force on the strings",
-                      std::pair{0.0, L * 100.0},
-                      std::nullopt,
-                      {wrist},
-                      {},
-                      lines};
-  io::Plot cor_plot{"How the ball comes back, for a hit along the frame",
-                    "impact point from the tip (cm)",
-                    "apparent COR (rebound over incoming speed)",
-                    std::pair{0.0, L * 100.0},
-                    std::nullopt,
-                    {cor},
-                    {},
-                    lines};
-  wrist_plot.key_position = "off";
-  cor_plot.key_position = "off";
-  // Every plot of the page drawn by one gnuplot: the two curves, each wide
-  // and narrow, then the maps over the string bed.
-  const PageMaps maps = page_maps(file, fidelity_of(e));
-  std::vector<io::SvgPlot> plots = figure_svg_plots(wrist_plot, "plot-wrist");
-  for (io::SvgPlot& p : figure_svg_plots(cor_plot, "plot-cor")) plots.push_back(std::move(p));
-  for (io::SvgPlot& p : map_svg_plots(maps, L)) plots.push_back(std::move(p));
-  std::vector<io::RenderedSvg> svgs = io::render_svgs(plots);
+  FramePlots plots{io::Plot{"What the wrist feels, for a hit along the frame",
+                            "impact point from the tip (cm)",
+                            "wrist force over the force on the strings",
+                            std::pair{0.0, L * 100.0},
+                            std::nullopt,
+                            {wrist},
+                            {},
+                            lines},
+                   io::Plot{"How the ball comes back, for a hit along the frame",
+                            "impact point from the tip (cm)",
+                            "apparent COR (rebound over incoming speed)",
+                            std::pair{0.0, L * 100.0},
+                            std::nullopt,
+                            {cor},
+                            {},
+                            lines}};
+  plots.wrist.key_position = "off";
+  plots.cor.key_position = "off";
+  return plots;
+}
+
+// The curves along the frame (`svgs`: the wrist's plot wide and narrow, then
+// the COR's) and the numbers behind them.
+std::string frame_html(const Evaluation& e, const std::vector<studies::FramePoint>& curve,
+                       std::span<const io::RenderedSvg> svgs) {
+  std::string html = "<section id=\"frame\"><h2>Along the frame</h2>\n";
   html +=
       html_figure(svgs[0], svgs[1], "plot-wrist",
                   "The share of the force on the strings that reaches the wrist (Cross 2004, Eq. "
                   "11), rigid model: zero at the hand-held COP.");
   const auto most = std::max_element(
-      curve.begin(), curve.end(),
-      [](const FramePoint& a, const FramePoint& b) { return a.apparent_cor < b.apparent_cor; });
+      curve.begin(), curve.end(), [](const studies::FramePoint& a, const studies::FramePoint& b) {
+        return a.apparent_cor < b.apparent_cor;
+      });
   html += html_figure(
       svgs[2], svgs[3], "plot-cor",
       most == curve.end()
@@ -647,18 +607,18 @@ std::string design_html_report(const io::DesignFile& file, const io::Json& docum
       "<table id=\"curve\"><thead><tr><th class=\"num\">impact from the tip (cm)</th>"
       "<th class=\"num\">|F_w / F|</th><th class=\"num\">wrist force (N)</th>"
       "<th class=\"num\">apparent COR</th></tr></thead><tbody>\n";
-  for (const FramePoint& p : curve) {
+  for (const studies::FramePoint& p : curve) {
     html += fmt::format(
         "<tr><td class=\"num\">{}</td><td class=\"num\">{:.3f}</td><td class=\"num\">{:.0f}</td>"
         "<td class=\"num\">{:.3f}</td></tr>\n",
         html_cm(p.from_tip_m), std::abs(p.wrist_force_ratio), p.peak_wrist_force_N, p.apparent_cor);
   }
-  html += "</tbody></table></div></details>\n</section>\n";
+  return html + "</tbody></table></div></details>\n</section>\n";
+}
 
-  html += maps_html(file, maps, std::span(svgs).subspan(4));
-
-  // Every output, in people's units.
-  html +=
+// Every output, in people's units.
+std::string outputs_html(const Evaluation& e) {
+  std::string html =
       "<section id=\"outputs\"><h2>Every number</h2>\n<div class=\"table-wrap\"><table "
       "id=\"all-outputs\"><thead><tr><th>quantity</th><th class=\"num\">value</th><th>unit</th>"
       "<th>output</th></tr></thead><tbody>\n";
@@ -675,12 +635,14 @@ std::string design_html_report(const io::DesignFile& file, const io::Json& docum
         o.name, html_escape(words), value ? io::significant(*value * axis.factor, 4) : "—",
         html_escape(unit), o.name);
   }
-  html += "</tbody></table></div></section>\n";
+  return html + "</tbody></table></div></section>\n";
+}
 
-  // The inputs as the file gave them, then the defaults the model filled in.
+// The inputs as the file gave them, then the defaults the model filled in.
+std::string inputs_html(const io::DesignFile& file, const io::Json& document, const Evaluation& e) {
   std::string given;
   flatten(document, "", given);
-  html +=
+  std::string html =
       "<section id=\"inputs\"><h2>The inputs</h2>\n<p>As the file gives them, in its units:</p>\n"
       "<div class=\"table-wrap\"><table id=\"inputs-given\"><thead><tr><th>input</th>"
       "<th class=\"num\">value</th><th>unit</th></tr></thead><tbody>\n" +
@@ -701,8 +663,30 @@ std::string design_html_report(const io::DesignFile& file, const io::Json& docum
         "<th class=\"num\">value</th><th>unit</th></tr></thead><tbody>\n" +
         defaults + "</tbody></table></div>\n";
   }
-  html += "</section>\n";
+  return html + "</section>\n";
+}
 
+}  // namespace
+
+std::string design_html_report(const io::DesignFile& file, const io::Json& document,
+                               const studies::DesignPage& page) {
+  const Evaluation& e = page.evaluation;
+  std::string html = html_page_open(file.name, description_of(document));
+  html += "<section id=\"answer\"><h2>The answer</h2>\n<div class=\"answer\">\n" +
+          answer_html(file, page.spots) + "</div></section>\n";
+  html += racquet_html(file, e, document);
+  // Every plot of the page drawn by one gnuplot: the two curves, each wide
+  // and narrow, then the maps over the string bed.
+  const FramePlots frame = frame_plots(file, e, page.curve);
+  std::vector<io::SvgPlot> plots = figure_svg_plots(frame.wrist, "plot-wrist");
+  for (io::SvgPlot& p : figure_svg_plots(frame.cor, "plot-cor")) plots.push_back(std::move(p));
+  for (io::SvgPlot& p : map_svg_plots(page.maps, file.design.implement.length_m()))
+    plots.push_back(std::move(p));
+  const std::vector<io::RenderedSvg> svgs = io::render_svgs(plots);
+  html += frame_html(e, page.curve, std::span(svgs).first(4));
+  html += maps_html(file, page.maps, std::span(svgs).subspan(4));
+  html += outputs_html(e);
+  html += inputs_html(file, document, e);
   return html + html_page_close(fmt::format(
                     "Computed by sweetspot ({} model) from <code>{}</code>, after R. Cross, "
                     "\"Center of percussion of hand-held implements\", Am. J. Phys. 72 (2004). "

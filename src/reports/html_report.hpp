@@ -2,8 +2,9 @@
 
 // The report a coach opens: one self-contained HTML page for a design (no
 // network, no scripts, no fonts fetched; CSS inline; plots are gnuplot's SVG
-// inlined), readable on a phone. Everything the page shows is computed here;
-// the command line only writes it (`sweetspot report DESIGN.json --html FILE`).
+// inlined), readable on a phone. Everything the page shows is computed by
+// studies::design_page() (studies/design_page.hpp) and only drawn here; the
+// command line writes it (`sweetspot report DESIGN.json --html FILE`).
 
 #include <string>
 #include <string_view>
@@ -12,30 +13,9 @@
 #include "io/design_reader.hpp"
 #include "io/json_reader.hpp"
 #include "reports/html_page.hpp"
+#include "studies/design_page.hpp"
 
 namespace sweetspot::reports {
-
-// One impact point along the frame: the rigid model (Eqs. 11, 15-17) or the
-// solved collision.
-struct FramePoint {
-  double from_tip_m = 0.0;
-  double wrist_force_ratio = 0.0;  // F_w / F (Eq. 11), signed
-  double apparent_cor = 0.0;       // e_A (Eq. 16, or the solved rebound)
-  double peak_wrist_force_N = 0.0;
-};
-
-// Steps along the frame of the curves on a page [m].
-inline constexpr double kFrameCurveStep_m = 0.01;
-
-// The impact moved along the frame from the tip to the butt in steps of
-// `step_m` (> 0; the butt itself always included). At Fidelity::kCollision
-// each point is the solved collision there (DesignCollision: e_A its rebound,
-// the wrist its share |F_w / F| of the solved peak force, as evaluate() does);
-// a point whose collision cannot be solved (a contact time out of range near
-// the butt) is left out. Any other fidelity: the rigid model at the design's
-// COR. Throws std::invalid_argument for a step <= 0, or as DesignCollision.
-std::vector<FramePoint> frame_curves(const Design& design, double step_m,
-                                     Fidelity fidelity = Fidelity::kRigid);
 
 // The head's size used for the drawing [m^2]: the strings' head size when the
 // design has strings, the design's head shape (`implement.headsize_sq_in`)
@@ -70,8 +50,10 @@ std::string racquets_to_scale_html(const std::vector<DrawnRacquet>& racquets,
 
 // The whole page for `design` (read from `document`, the file as written, for
 // its inputs in the units they were given; its impact as every command takes
-// it, io::default_impact()). Plots that gnuplot cannot draw
+// it, io::default_impact()) from its numbers, `page` =
+// studies::design_page(design). Plots that gnuplot cannot draw
 // are replaced by a sentence saying why; the tables are always there.
-std::string design_html_report(const io::DesignFile& design, const io::Json& document);
+std::string design_html_report(const io::DesignFile& design, const io::Json& document,
+                               const studies::DesignPage& page);
 
 }  // namespace sweetspot::reports

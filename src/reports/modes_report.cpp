@@ -2,8 +2,6 @@
 
 #include <fmt/format.h>
 
-#include "sweetspot/frame_modes.hpp"
-
 namespace sweetspot::reports {
 namespace {
 
@@ -30,37 +28,7 @@ io::Json mode_json(const Mode& mode, double length_m, bool held) {
 
 }  // namespace
 
-ModesData compute_modes(const io::DesignFile& file, int modes, double rel_tol,
-                        ModeOptions::Method method) {
-  try {
-    const FlexibleFrame frame = flexible_frame(file.design);
-    ModeOptions options = frame.options;
-    options.modes = modes;
-    options.rel_tol = rel_tol;
-    options.shape_samples = kShapeSamples;
-    if (options.theory == ModeOptions::Theory::kEulerBernoulli) options.method = method;
-    // The report reads only the COPs, which need no COR: a COR to be derived (cor_rigid) is not
-    // asked for.
-    Design rigid = file.design;
-    rigid.cor_rigid.reset();
-    ModesData data{file,
-                   evaluate(rigid),
-                   free_modes(frame.sections, frame.point_masses, options),
-                   {},
-                   frame.mass_distribution_fitted};
-    if (file.design.hand.mass_kg > 0.0) {
-      options.method = ModeOptions::Method::kFiniteElement;
-      options.modes = modes + 2;  // room for the hand rocking on the grip
-      data.held =
-          hand_held_modes(frame.sections, frame.point_masses, hand_coupling(file.design), options);
-    }
-    return data;
-  } catch (const std::invalid_argument& e) {
-    rethrow_in(file, e);
-  }
-}
-
-std::string modes_report(const ModesData& data, io::Format format) {
+std::string modes_report(const studies::ModesData& data, io::Format format) {
   const double L = data.design.design.implement.length_m();
   if (format == io::Format::kCsv) {
     std::string csv = "x_from_butt_m";
@@ -132,7 +100,7 @@ std::string modes_report(const ModesData& data, io::Format format) {
   return md;
 }
 
-io::Plot modes_plot(const ModesData& data) {
+io::Plot modes_plot(const studies::ModesData& data) {
   const double L = data.design.design.implement.length_m();
   io::Plot plot{fmt::format("Mode shapes: {}", data.design.name),
                 "position from the tip (m)",

@@ -4,45 +4,18 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
-
-#include "io/atomic_file.hpp"
-#include "io/input_error.hpp"
-#include "sweetspot/rigid_impact.hpp"
-#include "sweetspot/roots.hpp"
 
 namespace sweetspot::reports {
 namespace {
 
-// The accelerometers of Section II: 2 and 16 cm from the handle end.
-constexpr double kDisk2_m = 0.02;
-constexpr double kDisk16_m = 0.16;
-// Resolution of the figures' curves along the beam.
-constexpr double kFigureStep_m = 0.005;
-// Where to look for the crossing of Fig. 11 and how precisely.
-constexpr double kCrossingSearchLo_m = 0.10;
-constexpr double kCrossingSearchHi_m = 0.30;
-constexpr double kCrossingTolerance_m = 1e-9;
 // The range of Fig. 11's axis s, as the paper draws it [cm].
 constexpr double kFigure11Low_cm = -30.0;
 constexpr double kFigure11High_cm = 40.0;
-
-std::optional<double> reference(const io::DesignFile& file, const char* name) {
-  if (!file.reference.is_object() || !file.reference.contains(name)) return std::nullopt;
-  return file.reference[name].get<double>();
-}
 
 std::optional<double> head_to_handle_ratio(const Implement& implement) {
   const auto& s = implement.sections();
   if (s.size() != 2 || s[0].mass_kg == 0.0) return std::nullopt;
   return s[1].mass_kg / s[0].mass_kg;
-}
-
-std::vector<double> impact_distances(double length_m) {
-  std::vector<double> d;
-  const int steps = static_cast<int>(std::lround(length_m / kFigureStep_m));
-  for (int i = 0; i <= steps; ++i) d.push_back(std::min(length_m, i * kFigureStep_m));
-  return d;
 }
 
 std::string optional_csv(const std::optional<double>& value) {
@@ -65,22 +38,10 @@ std::string paper_says(const io::DesignFile& beam, const std::string& printed) {
 
 }  // namespace
 
-std::vector<Table1Row> compute_table1(const std::string& dir) {
-  std::vector<Table1Row> rows;
-  for (int row = 1; row <= kTableIRows; ++row) {
-    io::DesignFile file = io::load_design(fmt::format("{}/row{}.json", dir, row));
-    const Evaluation evaluation = evaluate(file.design);
-    const auto F0 = reference(file, "peak_impact_force_N");
-    const auto Fw = reference(file, "peak_wrist_force_N");
-    rows.push_back(Table1Row{row, std::move(file), evaluation, F0, Fw});
-  }
-  return rows;
-}
-
-std::string table1_report(const std::vector<Table1Row>& rows, io::Format format) {
+std::string table1_report(const std::vector<studies::Table1Row>& rows, io::Format format) {
   if (format == io::Format::kJson) {
     io::Json j = io::Json::array();
-    for (const Table1Row& r : rows) {
+    for (const studies::Table1Row& r : rows) {
       j.push_back({{"row", r.row},
                    {"name", r.design.name},
                    {"peak_impact_force_N", r.evaluation.peak_impact_force_N},
@@ -95,7 +56,7 @@ std::string table1_report(const std::vector<Table1Row>& rows, io::Format format)
         "row,mass_kg,head_to_handle_mass_ratio,cor,impact_duration_s,hand_mass_kg,"
         "forearm_equivalent_mass_kg,effective_mass_kg,apparent_cor,peak_impact_force_N,"
         "peak_wrist_force_N,paper_F0_N,paper_Fw_N,diff_F0_N,diff_Fw_N\n";
-    for (const Table1Row& r : rows) {
+    for (const studies::Table1Row& r : rows) {
       const Design& d = r.design.design;
       const Evaluation& e = r.evaluation;
       csv += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", r.row,
@@ -120,7 +81,7 @@ std::string table1_report(const std::vector<Table1Row>& rows, io::Format format)
       "paper F_w | ΔF_w |\n"
       "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   double worst_F0 = 0.0, worst_Fw = 0.0;
-  for (const Table1Row& r : rows) {
+  for (const studies::Table1Row& r : rows) {
     const Design& d = r.design.design;
     const Evaluation& e = r.evaluation;
     const auto dF0 = diff(e.peak_impact_force_N, r.paper_F0_N);
@@ -148,21 +109,20 @@ std::string table1_report(const std::vector<Table1Row>& rows, io::Format format)
   return md;
 }
 
-Figure figure5(const io::DesignFile& beam) {
-  const MassProperties& body = beam.design.implement.mass_properties();
-  const double L = beam.design.implement.length_m();
+Figure figure5(const io::DesignFile& beam, const studies::Figure5Data& data) {
+  const double L = data.length_m;
   Figure figure;
   figure.csv = "d_from_free_end_m,impact_from_butt_m,v2_over_v16\n";
   io::PlotSeries curve{"Eq. (6), free beam", {}, {}};
-  for (const double d : impact_distances(L)) {
+  for (std::size_t i = 0; i < data.d_m.size(); ++i) {
+    const double d = data.d_m[i];
     const double x = L - d;
-    const auto ratio = velocity_ratio(body, x, kDisk2_m, kDisk16_m);
+    const std::optional<double>& ratio = data.v2_over_v16[i];
     figure.csv += fmt::format("{},{},{}\n", io::exact(d), io::exact(x), optional_csv(ratio));
     curve.x.push_back(d * 100.0);
     curve.y.push_back(ratio);
   }
-  const auto zero = free_conjugate_from_butt(body, kDisk2_m);
-  const auto pole = free_conjugate_from_butt(body, kDisk16_m);
+  const std::optional<double>&zero = data.zero_from_butt_m, &pole = data.pole_from_butt_m;
   figure.plot =
       io::Plot{"Fig. 5: velocity ratio v2/v16 of the free beam (Cross 2004, Eq. 6)",
                "impact distance d from the free end (cm)",
@@ -170,7 +130,7 @@ Figure figure5(const io::DesignFile& beam) {
                std::pair{0.0, L * 100.0},
                std::pair{-4.0, 4.0},
                {curve},
-               {io::PlotMarker{(L - body.com_from_butt_m) * 100.0, 1.0, "centre: v2/v16 = 1"}},
+               {io::PlotMarker{(L - data.com_from_butt_m) * 100.0, 1.0, "centre: v2/v16 = 1"}},
                {}};
   if (zero) figure.plot.vertical_lines.push_back({(L - *zero) * 100.0, "COP for the 2 cm disk"});
   if (pole) figure.plot.vertical_lines.push_back({(L - *pole) * 100.0, "COP for the 16 cm disk"});
@@ -181,36 +141,12 @@ Figure figure5(const io::DesignFile& beam) {
   figure.summary = fmt::format(
       "v2/v16 is 0 {}{}, has its pole {}{} and is 1 at the centre, d = {:.0f} cm{}.", at_d(zero),
       paper_says(beam, "COP 23.3 cm from the end"), at_d(pole), paper_says(beam, "14.4 cm"),
-      (L - body.com_from_butt_m) * 100.0, paper_says(beam, "36 cm"));
+      (L - data.com_from_butt_m) * 100.0, paper_says(beam, "36 cm"));
   return figure;
 }
 
-namespace {
-std::optional<double> free_axis(const io::DesignFile& beam, double d) {
-  const Implement& implement = beam.design.implement;
-  return free_conjugate_from_butt(implement.mass_properties(), implement.length_m() - d);
-}
-std::optional<double> hand_axis(const io::DesignFile& beam, double d) {
-  const Implement& implement = beam.design.implement;
-  return hand_held_rotation_axis_from_butt(hand_held_system(beam.design),
-                                           beam.design.forearm_equivalent_mass_kg,
-                                           implement.length_m() - d);
-}
-}  // namespace
-
-std::optional<AxesCrossing> figure11_crossing(const io::DesignFile& beam) {
-  const auto gap = [&](double d) {
-    const auto free = free_axis(beam, d);
-    const auto hand = hand_axis(beam, d);
-    return free && hand ? *free - *hand : NAN;
-  };
-  const auto d = find_root(gap, kCrossingSearchLo_m, kCrossingSearchHi_m, kCrossingTolerance_m);
-  if (!d) return std::nullopt;
-  return AxesCrossing{*d, *hand_axis(beam, *d)};
-}
-
-Figure figure11(const io::DesignFile& beam) {
-  const double L = beam.design.implement.length_m();
+Figure figure11(const io::DesignFile& beam, const studies::Figure11Data& data) {
+  const double L = data.length_m;
   Figure figure;
   figure.csv = "d_from_free_end_m,s_free_m,s_hand_m\n";
   io::PlotSeries free{"free beam (Eq. 5)", {}, {}};
@@ -219,9 +155,9 @@ Figure figure11(const io::DesignFile& beam) {
                                   io::significant(beam.design.forearm_equivalent_mass_kg)),
                       {},
                       {}};
-  for (const double d : impact_distances(L)) {
-    const auto s_free = free_axis(beam, d);
-    const auto s_hand = hand_axis(beam, d);
+  for (std::size_t i = 0; i < data.d_m.size(); ++i) {
+    const double d = data.d_m[i];
+    const std::optional<double>&s_free = data.s_free_m[i], &s_hand = data.s_hand_m[i];
     figure.csv +=
         fmt::format("{},{},{}\n", io::exact(d), optional_csv(s_free), optional_csv(s_hand));
     free.x.push_back(d * 100.0);
@@ -253,7 +189,7 @@ Figure figure11(const io::DesignFile& beam) {
                          {free, hand},
                          {},
                          {}};
-  const auto crossing = figure11_crossing(beam);
+  const std::optional<studies::AxesCrossing>& crossing = data.crossing;
   if (crossing) {
     figure.plot.markers.push_back(io::PlotMarker{
         crossing->d_m * 100.0, crossing->s_m * 100.0,
@@ -269,14 +205,11 @@ Figure figure11(const io::DesignFile& beam) {
   return figure;
 }
 
-std::vector<ReportEntry> write_paper_reports(const std::string& designs_dir,
-                                             const std::string& out_dir,
+std::vector<ReportEntry> write_paper_reports(const studies::PaperResults& results,
                                              const ReportWriter& write) {
-  // Read and compute everything before writing anything.
-  const std::vector<Table1Row> rows = compute_table1(designs_dir + "/table1");
-  const io::DesignFile beam = io::load_design(designs_dir + "/paper-beam.json");
-  const Figure fig5 = figure5(beam);
-  const Figure fig11 = figure11(beam);
+  const std::vector<studies::Table1Row>& rows = results.table1;
+  const Figure fig5 = figure5(results.beam, results.figure5);
+  const Figure fig11 = figure11(results.beam, results.figure11);
   const std::string table_md = table1_report(rows, io::Format::kMarkdown);
   write.text("table1.md", table_md);
   write.text("table1.csv", table1_report(rows, io::Format::kCsv));
@@ -284,7 +217,6 @@ std::vector<ReportEntry> write_paper_reports(const std::string& designs_dir,
   write.text("fig11.csv", fig11.csv);
   write.plot("fig5.png", fig5.plot);
   write.plot("fig11.png", fig11.plot);
-  (void)out_dir;
   const std::string last_line = table_md.substr(table_md.rfind("\nLargest") + 1);
   return {
       {"[table1.md](table1.md), [table1.csv](table1.csv)",

@@ -1,6 +1,6 @@
 #pragma once
 
-// The paper's Table I and Figs. 5 and 11, computed from design files and
+// The paper's Table I and Figs. 5 and 11 (computed in studies/paper.hpp)
 // written as Markdown, CSV and PNG into reports/.
 
 #include <optional>
@@ -12,23 +12,13 @@
 #include "io/format.hpp"
 #include "io/plot.hpp"
 #include "reports/report_writer.hpp"
-#include "sweetspot/evaluate.hpp"
+#include "studies/paper.hpp"
 
 namespace sweetspot::reports {
 
-inline constexpr int kTableIRows = 8;
-
-struct Table1Row {
-  int row = 0;
-  io::DesignFile design;
-  Evaluation evaluation;
-  std::optional<double> paper_F0_N;  // from the design's "reference"
-  std::optional<double> paper_Fw_N;
-};
-
-// Evaluates DIR/row1.json ... DIR/row8.json.
-std::vector<Table1Row> compute_table1(const std::string& dir);
-std::string table1_report(const std::vector<Table1Row>& rows, io::Format format);
+// Table I (studies::compute_table1()) in `format`: Markdown beside the
+// printed values, CSV, JSON.
+std::string table1_report(const std::vector<studies::Table1Row>& rows, io::Format format);
 
 // A figure's data as CSV, its plot and a sentence comparing it with the paper.
 struct Figure {
@@ -37,23 +27,19 @@ struct Figure {
   std::string summary;
 };
 
-// Fig. 5: v2/v16 against the impact distance d from the free end for the free
-// beam, Eq. (6), with observation points 2 and 16 cm from the handle end.
-Figure figure5(const io::DesignFile& beam);
+// Fig. 5 of `beam` (studies::figure5_data(beam)): v2/v16 against the impact
+// distance d from the free end for the free beam, Eq. (6), with observation
+// points 2 and 16 cm from the handle end; the paper's printed values beside
+// the paper's own beam (its reference cites Cross 2004).
+Figure figure5(const io::DesignFile& beam, const studies::Figure5Data& data);
 
-// Where the free and hand-held rotation axes of Fig. 11 coincide.
-struct AxesCrossing {
-  double d_m = 0.0;  // impact distance from the free end
-  double s_m = 0.0;  // rotation axis from the handle end
-};
-std::optional<AxesCrossing> figure11_crossing(const io::DesignFile& beam);
+// Fig. 11 of `beam` (studies::figure11_data(beam)): rotation axis s = h - A
+// against d, free (Eq. 5) and hand-held (Eq. 12), and where they cross.
+Figure figure11(const io::DesignFile& beam, const studies::Figure11Data& data);
 
-// Fig. 11: rotation axis s = h - A against d, free (Eq. 5) and hand-held (Eq. 12).
-Figure figure11(const io::DesignFile& beam);
-
-// Table I and Figs. 5 and 11 from the designs in `designs_dir`: table1.md,
+// Table I and Figs. 5 and 11 (studies::paper_results()): table1.md,
 // table1.csv, fig5.csv, fig5.png, fig11.csv, fig11.png. Returns their index entries.
-std::vector<ReportEntry> write_paper_reports(const std::string& designs_dir,
-                                             const std::string& out_dir, const ReportWriter& write);
+std::vector<ReportEntry> write_paper_reports(const studies::PaperResults& results,
+                                             const ReportWriter& write);
 
 }  // namespace sweetspot::reports

@@ -6,9 +6,6 @@
 
 #include "io/format.hpp"
 #include "io/json_reader.hpp"
-#include "sweetspot/evaluate.hpp"
-#include "sweetspot/rigid_impact.hpp"
-#include "sweetspot/string_bed.hpp"
 
 namespace sweetspot::reports {
 namespace {
@@ -16,44 +13,9 @@ namespace {
 // One pound-force [N], for tensions as stringers quote them.
 constexpr double kNewtonsPerPoundForce = io::kPoundForce_N;
 
-// Modes summed in the response (the paper saw one; the rest show 1.5/T at work).
-constexpr int kResponseModes = 6;
-
-std::vector<double> times(double until_s, int samples) {
-  std::vector<double> t(samples);
-  for (int i = 0; i < samples; ++i) t[i] = until_s * i / (samples - 1);
-  return t;
-}
-
 }  // namespace
 
-ResponseData compute_response(const io::DesignFile& file, const ResponseRequest& request) {
-  try {
-    ResponseData data{file, request, times(request.until_s, request.samples), {}, {}, {}};
-    ResponseOptions options;
-    options.support =
-        request.hand_held ? ResponseOptions::Support::kHandHeld : ResponseOptions::Support::kFree;
-    options.modes = kResponseModes;
-    const ResponseModel model = response_model(file.design, options);
-    std::vector<double> impacts = request.impacts_from_butt_m;
-    if (impacts.empty()) impacts.push_back(file.design.impact_from_butt_m);
-    for (const double x : impacts) {
-      Design at = file.design;
-      at.impact_from_butt_m = x;
-      const Evaluation e = evaluate(at, needed_fidelity(at));
-      const HalfSinePulse pulse{e.peak_impact_force_N, e.impact_duration_s};
-      data.peak_force_N.push_back(pulse.peak_force_N);
-      data.duration_s.push_back(pulse.duration_s);
-      data.responses.push_back(
-          impact_response(model, x, pulse, request.points_from_butt_m, data.time_s));
-    }
-    return data;
-  } catch (const std::invalid_argument& e) {
-    rethrow_in(file, e);
-  }
-}
-
-std::string response_csv(const ResponseData& data) {
+std::string response_csv(const studies::ResponseData& data) {
   std::string csv = "impact_from_butt_m,t_s,point_from_butt_m,v_dc_m_s,v_ac_m_s,v_m_s\n";
   for (const ImpactResponse& r : data.responses) {
     const double x = data.request.impacts_from_butt_m.empty()
@@ -70,7 +32,7 @@ std::string response_csv(const ResponseData& data) {
   return csv;
 }
 
-std::vector<io::Plot> response_plots(const ResponseData& data) {
+std::vector<io::Plot> response_plots(const studies::ResponseData& data) {
   const double L = data.design.design.implement.length_m();
   std::vector<io::Plot> plots;
   for (std::size_t k = 0; k < data.request.points_from_butt_m.size(); ++k) {
@@ -128,22 +90,15 @@ std::vector<io::Plot> response_plots(const ResponseData& data) {
   return plots;
 }
 
-std::vector<ReportEntry> write_response_reports(const std::string& designs_dir,
-                                                const ReportWriter& write) {
-  std::vector<ReportEntry> entries;
+namespace {
 
+// response-free and response-hand-held: the paper beam's motion.
+void write_beam_motion(const studies::PaperBeamResponses& beam, const ReportWriter& write,
+                       std::vector<ReportEntry>& entries) {
   // The paper's figures of the beam's motion: impacts every 6 cm from d = 4 cm,
   // observed 2 and 16 cm from the handle end; T about 8 ms (Sec. IV).
-  const io::DesignFile beam = io::load_design(designs_dir + "/paper-beam.json");
   for (const bool held : {false, true}) {
-    io::DesignFile file = beam;
-    file.design.impact_duration_s = 0.008;
-    file.design.ball.speed_m_s = held ? 3.2 : 1.2;  // Sec. II
-    ResponseRequest request;
-    request.hand_held = held;
-    request.until_s = 0.03;
-    for (double d = 0.04; d < 0.72; d += 0.06) request.impacts_from_butt_m.push_back(0.72 - d);
-    const ResponseData data = compute_response(file, request);
+    const studies::ResponseData& data = held ? beam.hand_held : beam.free;
     const std::vector<io::Plot> plots = response_plots(data);
     const std::string stem = held ? "response-hand-held" : "response-free";
     write.text(stem + ".csv", response_csv(data));
@@ -163,12 +118,33 @@ std::vector<ReportEntry> write_response_reports(const std::string& designs_dir,
                 "fundamental is "
                 "absent."});
   }
+}
 
+// The fundamentals that give the paper's 0.8 and 0.6 at each cor_rigid, and
+// in `found` the sentence for cor_rigid 0.90.
+std::string fundamentals_md(const studies::CorFromStiffness& computed, std::string& found) {
+  std::string md =
+      "\n| cor_rigid | fundamental for e = 0.8 (Table I, stiff) | fundamental for e = 0.6 "
+      "(flexible) |\n"
+      "|---:|---:|---:|\n";
+  for (const studies::FundamentalsForCor& fundamentals : computed.fundamentals) {
+    const double er = fundamentals.cor_rigid;
+    const std::optional<double>&stiff = fundamentals.stiff_Hz, &flexible = fundamentals.flexible_Hz;
+    const auto hz = [](const std::optional<double>& f) {
+      return f ? fmt::format("{:.0f} Hz", *f) : std::string("none");
+    };
+    md += fmt::format("| {:.2f} | {} | {} |\n", er, hz(stiff), hz(flexible));
+    if (er == 0.90)
+      found = fmt::format("with cor_rigid 0.90, e = 0.8 at {} and e = 0.6 at {}", hz(stiff),
+                          hz(flexible));
+  }
+  return md;
+}
+
+// cor-from-stiffness: the derived COR against the free fundamental.
+void write_cor_from_stiffness(const studies::CorFromStiffness& computed, const ReportWriter& write,
+                              std::vector<ReportEntry>& entries) {
   // The derived COR: the Table I racquet with a flexible frame, hit 5 cm from the tip.
-  io::DesignFile racquet = io::load_design(designs_dir + "/table1/row1.json");
-  racquet.design.stiffness.fundamental_free_Hz = 150.0;
-  const ResponseModel model = response_model(racquet.design, ResponseOptions{});
-  const Design& d = racquet.design;
   std::string csv = "fundamental_free_Hz,cor_rigid,cor,vibration_share,peak_impact_force_N\n";
   std::string md =
       "# The COR from the frame's stiffness\n\n"
@@ -184,12 +160,9 @@ std::vector<ReportEntry> write_response_reports(const std::string& designs_dir,
       "|---:|---:|---:|---:|---:|\n";
   io::PlotSeries e85{"cor_rigid 0.85", {}, {}, "lines lw 2"};
   io::PlotSeries e90{"cor_rigid 0.90", {}, {}, "lines lw 2"};
-  for (double f = 80.0; f <= 300.0; f += 10.0) {
-    const ResponseModel scaled = with_fundamental(model, f);
-    const DerivedCor a =
-        derive_cor(scaled, d.impact_from_butt_m, 0.85, d.ball, d.impact_duration_s);
-    const DerivedCor b =
-        derive_cor(scaled, d.impact_from_butt_m, 0.90, d.ball, d.impact_duration_s);
+  for (const studies::CorAtFundamental& row : computed.rows) {
+    const double f = row.fundamental_free_Hz;
+    const DerivedCor &a = row.at_085, &b = row.at_090;
     for (const DerivedCor* c : {&a, &b}) {
       csv +=
           fmt::format("{},{},{},{},{}\n", io::exact(f), io::exact(c->cor_rigid), io::exact(c->cor),
@@ -202,24 +175,8 @@ std::vector<ReportEntry> write_response_reports(const std::string& designs_dir,
     e90.x.push_back(f);
     e90.y.push_back(b.cor);
   }
-  md +=
-      "\n| cor_rigid | fundamental for e = 0.8 (Table I, stiff) | fundamental for e = 0.6 "
-      "(flexible) |\n"
-      "|---:|---:|---:|\n";
   std::string found;
-  for (const double er : {0.85, 0.90}) {
-    const auto stiff = fundamental_for_cor(model, d.impact_from_butt_m, er, d.ball,
-                                           d.impact_duration_s, 0.8, 50, 1000, 1e-3);
-    const auto flexible = fundamental_for_cor(model, d.impact_from_butt_m, er, d.ball,
-                                              d.impact_duration_s, 0.6, 50, 1000, 1e-3);
-    const auto hz = [](const std::optional<double>& f) {
-      return f ? fmt::format("{:.0f} Hz", *f) : std::string("none");
-    };
-    md += fmt::format("| {:.2f} | {} | {} |\n", er, hz(stiff), hz(flexible));
-    if (er == 0.90)
-      found = fmt::format("with cor_rigid 0.90, e = 0.8 at {} and e = 0.6 at {}", hz(stiff),
-                          hz(flexible));
-  }
+  md += fundamentals_md(computed, found);
   md +=
       "\nFree racquet frames run about 100-180 Hz. In this model a frame reaches the paper's "
       "\"flexible\" "
@@ -246,10 +203,13 @@ std::vector<ReportEntry> write_response_reports(const std::string& designs_dir,
       {"[cor-from-stiffness.md](cor-from-stiffness.md), [.csv](cor-from-stiffness.csv), "
        "[.png](cor-from-stiffness.png)",
        "The COR derived from the frame's stiffness for the Table I racquet: " + found + "."});
+}
 
+// duration-from-tension: the impact duration against the string tension.
+void write_duration_from_tension(const studies::DurationFromTension& computed,
+                                 const ReportWriter& write, std::vector<ReportEntry>& entries) {
   // The impact duration from the string tension.
-  const double M_eff = effective_mass(d.implement.mass_properties(), d.impact_from_butt_m);
-  const StringBed bed;
+  const double M_eff = computed.effective_mass_kg;
   std::string tcsv = "tension_N,tension_lb,impact_duration_s,string_bed_stiffness_N_m\n";
   std::string tmd =
       "# The impact duration from the string tension\n\n"
@@ -264,10 +224,9 @@ std::vector<ReportEntry> write_response_reports(const std::string& designs_dir,
       " kg).\n\n| tension (N) | tension (lb) | T (ms) | string bed (kN/m) "
       "|\n|---:|---:|---:|---:|\n";
   io::PlotSeries series{"T against tension", {}, {}, "lines lw 2"};
-  for (double t = 50.0; t <= 400.0; t += 25.0) {
-    StringBed b = bed;
-    b.tension_N = t;
-    const TensionDuration r = tension_impact_duration(b, d.ball.mass_kg, M_eff);
+  for (const studies::DurationAtTension& row : computed.rows) {
+    const double t = row.tension_N;
+    const TensionDuration& r = row.duration;
     tcsv += fmt::format("{},{},{},{}\n", io::exact(t), io::exact(t / kNewtonsPerPoundForce),
                         io::exact(r.duration_s), io::exact(r.string_bed_stiffness_N_m));
     tmd += fmt::format("| {:.0f} | {:.0f} | {:.2f} | {:.1f} |\n", t, t / kNewtonsPerPoundForce,
@@ -275,8 +234,7 @@ std::vector<ReportEntry> write_response_reports(const std::string& designs_dir,
     series.x.push_back(t);
     series.y.push_back(r.duration_s * 1e3);
   }
-  const auto t4 = tension_for_duration(bed, 0.004, d.ball.mass_kg, M_eff);
-  const auto t6 = tension_for_duration(bed, 0.006, d.ball.mass_kg, M_eff);
+  const std::optional<double>&t4 = computed.tension_for_4_ms_N, &t6 = computed.tension_for_6_ms_N;
   const auto show = [](const std::optional<double>& t) {
     return t ? fmt::format("{:.0f} N ({:.0f} lb)", *t, *t / kNewtonsPerPoundForce)
              : std::string("no tension");
@@ -305,6 +263,16 @@ std::vector<ReportEntry> write_response_reports(const std::string& designs_dir,
       {"[duration-from-tension.md](duration-from-tension.md), [.csv](duration-from-tension.csv), "
        "[.png](duration-from-tension.png)",
        "The impact duration derived from string tension: " + where + "."});
+}
+
+}  // namespace
+
+std::vector<ReportEntry> write_response_reports(const studies::ResponseReports& computed,
+                                                const ReportWriter& write) {
+  std::vector<ReportEntry> entries;
+  write_beam_motion(computed.beam, write, entries);
+  write_cor_from_stiffness(computed.cor, write, entries);
+  write_duration_from_tension(computed.duration, write, entries);
   return entries;
 }
 

@@ -2,90 +2,46 @@
 
 #include <fmt/format.h>
 
-#include <cmath>
 #include <optional>
 
-#include "io/design_reader.hpp"
 #include "io/format.hpp"
 #include "io/plot.hpp"
-#include "sweetspot/collision.hpp"
-#include "sweetspot/evaluate.hpp"
 
 namespace sweetspot::reports {
 namespace {
 
 constexpr double kKmhPerMs = 3.6;
 
-struct Point {
-  double rebound_m_s, contact_s, vibration_J, wrist_N, peak_N, compression_m;
+// The grid of tension and frequency: its CSV, the Markdown table's rows and
+// one plot series per frequency of each quantity.
+struct TensionGrid {
+  std::string csv, table;
+  std::vector<io::PlotSeries> rebound, contact, vibration, wrist;
 };
 
-// The design strung at `tension_N` with a free fundamental `f1_Hz`, solved.
-Point solve(Design d, double tension_N, double f1_Hz) {
-  d.stiffness.EI_N_m2.reset();
-  d.stiffness.fundamental_free_Hz = f1_Hz;
-  if (!d.strings) d.strings = StringBed{};
-  d.strings->tension_N = tension_N;
-  d.cor_given = false;
-  d.cor_rigid.reset();
-  const Evaluation e = evaluate(d, Fidelity::kCollision);
-  const CollisionResult& c = *e.details->collision;
-  double frame_J = 0.0;
-  for (const double mode : c.mode_energy_J) frame_J += mode;
-  return {e.rebound_speed_m_s,  c.contact_time_s, frame_J,
-          e.peak_wrist_force_N, c.peak_force_N,   c.peak_ball_compression_m};
-}
-
-// The free fundamental [Hz] in [lo, hi] at which the Table I racquet's COR
-// at its impact point is `target` (bisection; e rises with f1 there).
-std::optional<double> fundamental_for(const Design& d, double tension_N, double target, double lo,
-                                      double hi) {
-  auto cor = [&](double f1) {
-    Design x = d;
-    x.stiffness.EI_N_m2.reset();
-    x.stiffness.fundamental_free_Hz = f1;
-    x.strings = StringBed{};
-    x.strings->tension_N = tension_N;
-    x.cor_given = false;
-    return evaluate(x, Fidelity::kCollision).cor - target;
-  };
-  double flo = cor(lo), fhi = cor(hi);
-  if (flo * fhi > 0) return std::nullopt;
-  for (int i = 0; i < 30 && hi - lo > 0.1; ++i) {
-    const double mid = 0.5 * (lo + hi), fm = cor(mid);
-    (fm * flo <= 0 ? hi : lo) = mid;
-    if (fm * flo > 0) flo = fm;
-  }
-  return 0.5 * (lo + hi);
-}
-
-}  // namespace
-
-std::vector<ReportEntry> write_tension_report(const std::string& designs_dir,
-                                              const ReportWriter& write) {
-  const io::DesignFile racquet = io::load_design(designs_dir + "/racquets/tour-100.json");
-  const Design& d = racquet.design;
-  const std::vector<double> tensions{180, 190, 200, 210, 220, 230, 240,
-                                     250, 260, 270, 280, 290, 300};
-  const std::vector<double> frequencies{100, 125, 155, 175, 200};
-  std::string csv =
+TensionGrid tension_grid(const studies::TensionStudy& study) {
+  TensionGrid g;
+  g.csv =
       "tension_N,fundamental_free_Hz,rebound_speed_m_s,contact_time_s,frame_vibration_J,"
       "peak_wrist_force_N,peak_impact_force_N,peak_ball_compression_m\n";
-  std::vector<io::PlotSeries> rebound, contact, vibration, wrist;
-  std::string table =
+  g.table =
       "| tension (N) | f1 (Hz) | rebound (m/s) | rebound (km/h) | contact (ms) | frame vibration "
       "(J) | peak wrist force (N) | peak force (N) | ball squeeze (mm) |\n"
       "|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
-  for (const double f1 : frequencies) {
+  const std::size_t per_frequency = study.tensions_N.size();
+  for (std::size_t i = 0; i < study.frequencies_Hz.size(); ++i) {
+    const double f1 = study.frequencies_Hz[i];
     const std::string title = fmt::format("f1 = {:.0f} Hz", f1);
     io::PlotSeries r{title, {}, {}}, c{title, {}, {}}, v{title, {}, {}}, w{title, {}, {}};
-    for (const double t : tensions) {
-      const Point p = solve(d, t, f1);
-      csv += fmt::format("{},{},{},{},{},{},{},{}\n", io::exact(t), io::exact(f1),
-                         io::exact(p.rebound_m_s), io::exact(p.contact_s), io::exact(p.vibration_J),
-                         io::exact(p.wrist_N), io::exact(p.peak_N), io::exact(p.compression_m));
+    for (std::size_t j = 0; j < per_frequency; ++j) {
+      const studies::TensionPoint& p = study.grid[i * per_frequency + j];
+      const double t = p.tension_N;
+      g.csv +=
+          fmt::format("{},{},{},{},{},{},{},{}\n", io::exact(t), io::exact(f1),
+                      io::exact(p.rebound_m_s), io::exact(p.contact_s), io::exact(p.vibration_J),
+                      io::exact(p.wrist_N), io::exact(p.peak_N), io::exact(p.compression_m));
       if (static_cast<int>(t) % 40 == 20 || t == 300)
-        table += fmt::format(
+        g.table += fmt::format(
             "| {:.0f} | {:.0f} | {:.2f} | {:.1f} | {:.2f} | {:.2f} | {:.0f} | "
             "{:.0f} | {:.1f} |\n",
             t, f1, p.rebound_m_s, p.rebound_m_s * kKmhPerMs, p.contact_s * 1e3, p.vibration_J,
@@ -96,15 +52,19 @@ std::vector<ReportEntry> write_tension_report(const std::string& designs_dir,
       v.y.push_back(p.vibration_J);
       w.y.push_back(p.wrist_N);
     }
-    rebound.push_back(r);
-    contact.push_back(c);
-    vibration.push_back(v);
-    wrist.push_back(w);
+    g.rebound.push_back(r);
+    g.contact.push_back(c);
+    g.vibration.push_back(v);
+    g.wrist.push_back(w);
   }
+  return g;
+}
 
+// The heading, the grid's table and the published numbers beside the model's.
+std::string published_md(const studies::TensionStudy& study, const std::string& table) {
   // Published numbers beside the model's (f1 = 155 Hz, the racquet's own).
-  const Point low = solve(d, 180.0, 155.0), high = solve(d, 280.0, 155.0);
-  std::string md = fmt::format(
+  const studies::TensionPoint &low = study.low, &high = study.high;
+  return fmt::format(
       "# String tension and frame stiffness: the solved collision\n\n"
       "The typical racquet (`designs/racquets/tour-100.json`: 27 in, 305 g, balance 32.5 cm, "
       "swingweight 320 kg cm^2) hit 16 cm from the tip at 50 m/s by the calibrated tennis ball "
@@ -123,43 +83,42 @@ std::vector<ReportEntry> write_tension_report(const std::string& designs_dir,
       "Technology of Tennis, 2002) | {:.2f} ms at 180 N, {:.2f} ms at 280 N |\n",
       table, low.rebound_m_s * kKmhPerMs, high.rebound_m_s * kKmhPerMs,
       100 * (low.rebound_m_s / high.rebound_m_s - 1), low.contact_s * 1e3, high.contact_s * 1e3);
+}
 
+// The tension effect across the string bed's masses and losses.
+std::string bed_sensitivity_md(const studies::TensionStudy& study) {
   // Sensitivity of the tension effect to the string bed's mass and loss.
-  md +=
+  std::string md =
       "\n## How much the string bed's mass and loss matter\n\nThe rebound gained from 280 N to "
       "180 N, and the contact time at 250 N, across plausible string-bed masses and losses (no "
       "published measurement of either was found; 4 g and 0.008 are the defaults).\n\n"
       "| moving mass (g) | damping ratio | rebound gain 280 -> 180 N | contact at 250 N (ms) | "
       "apparent COR at 250 N |\n|---:|---:|---:|---:|---:|\n";
-  for (const double mass : {0.001, 0.002, 0.004, 0.008}) {
-    for (const double zeta : {0.0, 0.008, 0.02}) {
-      Design x = d;
-      x.string_bed_mass_kg = mass;
-      x.string_bed_damping_ratio = zeta;
-      const Point a = solve(x, 180.0, 155.0), b = solve(x, 280.0, 155.0),
-                  m = solve(x, 250.0, 155.0);
-      md += fmt::format("| {:.0f} | {:.3f} | {:+.1f} % | {:.2f} | {:.3f} |\n", mass * 1e3, zeta,
-                        100 * (a.rebound_m_s / b.rebound_m_s - 1), m.contact_s * 1e3,
-                        m.rebound_m_s / d.ball.speed_m_s);
-    }
+  for (const studies::BedSensitivity& s : study.bed) {
+    const studies::TensionPoint &a = s.at_180_N, &b = s.at_280_N, &m = s.at_250_N;
+    md += fmt::format("| {:.0f} | {:.3f} | {:+.1f} % | {:.2f} | {:.3f} |\n", s.mass_kg * 1e3,
+                      s.damping_ratio, 100 * (a.rebound_m_s / b.rebound_m_s - 1), m.contact_s * 1e3,
+                      m.rebound_m_s / study.ball_speed_m_s);
   }
+  return md;
+}
 
+// The frames that give Table I's e = 0.8 and 0.6.
+std::string table1_frames_md(const studies::TensionStudy& study) {
   // Table I: the frequencies that give the paper's e = 0.8 and 0.6.
-  const io::DesignFile table1 = io::load_design(designs_dir + "/table1/row1.json");
-  md +=
+  std::string md =
       "\n## Table I: which frame gives e = 0.8 and e = 0.6\n\nThe Table I racquet (0.70 m, "
       "0.25 kg, M1/M2 = 0.8, uniform EI) hit 5 cm from the tip; the COR at the impact point from "
       "the solved collision (Eq. 16 inverted). The prescribed pulse "
       "(reports/cor-from-stiffness.md) "
       "gave e = 0.8 at 217-255 Hz and e = 0.6 at 111-137 Hz.\n\n"
       "| tension (N) | f1 for e = 0.8 | f1 for e = 0.6 |\n|---:|---:|---:|\n";
-  for (const double t : {180.0, 250.0}) {
+  for (const studies::Table1Frames& frames : study.table1) {
     const auto hz = [](const std::optional<double>& f) {
       return f ? fmt::format("{:.0f} Hz", *f) : std::string("none in 50-1000 Hz");
     };
-    md += fmt::format("| {:.0f} | {} | {} |\n", t,
-                      hz(fundamental_for(table1.design, t, 0.8, 50.0, 1000.0)),
-                      hz(fundamental_for(table1.design, t, 0.6, 50.0, 1000.0)));
+    md += fmt::format("| {:.0f} | {} | {} |\n", frames.tension_N, hz(frames.for_cor_08_Hz),
+                      hz(frames.for_cor_06_Hz));
   }
   md +=
       "\nFree racquet frames run about 100-180 Hz. The solved collision, like the prescribed "
@@ -167,8 +126,19 @@ std::vector<ReportEntry> write_tension_report(const std::string& designs_dir,
       "of this light (250 g) racquet: the frame's give lengthens the contact slightly, but a "
       "point load on a one-dimensional beam still loses more to vibration than a real hoop "
       "does.\n";
+  return md;
+}
+
+}  // namespace
+
+std::vector<ReportEntry> write_tension_report(const studies::TensionStudy& study,
+                                              const ReportWriter& write) {
+  const TensionGrid grid = tension_grid(study);
+  const std::string md =
+      published_md(study, grid.table) + bed_sensitivity_md(study) + table1_frames_md(study);
+  const studies::TensionPoint &low = study.low, &high = study.high;
   write.text("tension-and-stiffness.md", md);
-  write.text("tension-and-stiffness.csv", csv);
+  write.text("tension-and-stiffness.csv", grid.csv);
   const auto plot = [&](const std::string& name, const std::string& what,
                         const std::vector<io::PlotSeries>& series) {
     write.plot(
@@ -183,10 +153,10 @@ std::vector<ReportEntry> write_tension_report(const std::string& designs_dir,
                  {},
                  "outside right"});
   };
-  plot("rebound", "ball rebound speed (m/s)", rebound);
-  plot("contact", "contact time (ms)", contact);
-  plot("vibration", "frame vibration energy (J)", vibration);
-  plot("wrist", "peak wrist force (N)", wrist);
+  plot("rebound", "ball rebound speed (m/s)", grid.rebound);
+  plot("contact", "contact time (ms)", grid.contact);
+  plot("vibration", "frame vibration energy (J)", grid.vibration);
+  plot("wrist", "peak wrist force (N)", grid.wrist);
   return {
       {"[tension-and-stiffness.md](tension-and-stiffness.md), "
        "[.csv](tension-and-stiffness.csv), [rebound](tension-and-stiffness-rebound.png), "

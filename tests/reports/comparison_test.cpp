@@ -27,8 +27,8 @@ const char* const kBase = R"({
 })";
 
 ComparedDesign compared(const io::Json& document) {
-  return compare_one(io::read_design(document, document["name"].get<std::string>() + ".json"),
-                     "rigid", 1e-6);
+  return studies::compare_one(
+      io::read_design(document, document["name"].get<std::string>() + ".json"), "rigid", 1e-6);
 }
 
 // The first sentence of `compare A B`: what differs in the inputs.

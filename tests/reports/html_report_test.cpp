@@ -10,6 +10,8 @@
 #include "io/design_reader.hpp"
 #include "reports/comparison.hpp"
 #include "reports/optimization_report.hpp"
+#include "studies/comparison.hpp"
+#include "studies/design_page.hpp"
 #include "studies/optimization.hpp"
 #include "studies/study.hpp"
 #include "sweetspot/evaluate.hpp"
@@ -41,7 +43,7 @@ TEST_CASE("Every user string is escaped: markup in a racquet's name is shown, ne
   document["name"] = "<img src=x onerror=alert(1)> & Co";
   document["description"] = "</style><script>x()</script>";
   const io::DesignFile file = io::read_design(document, "<b>file</b>.json");
-  const std::string page = reports::design_html_report(file, document);
+  const std::string page = reports::design_html_report(file, document, studies::design_page(file));
   CHECK(page.find("<img") == std::string::npos);
   CHECK(page.find("<script") == std::string::npos);
   CHECK(page.find("<b>file</b>") == std::string::npos);
@@ -52,7 +54,8 @@ TEST_CASE("Every user string is escaped: markup in a racquet's name is shown, ne
 TEST_CASE("The page is self-contained: nothing fetched, no script, one stylesheet inline") {
   const io::DesignFile file = tour_100();
   const std::string page = reports::design_html_report(
-      file, io::read_json_file(SWEETSPOT_SOURCE_DIR "/designs/racquets/tour-100.json"));
+      file, io::read_json_file(SWEETSPOT_SOURCE_DIR "/designs/racquets/tour-100.json"),
+      studies::design_page(file));
   CHECK(page.rfind("<!DOCTYPE html>", 0) == 0);
   CHECK(page.find("http://") == page.find("http://www.w3.org"));  // only SVG's namespaces
   CHECK(page.find("https://") == std::string::npos);
@@ -62,58 +65,6 @@ TEST_CASE("The page is self-contained: nothing fetched, no script, one styleshee
   CHECK(page.find("name=\"viewport\"") != std::string::npos);
   CHECK(page.find("@media (max-width") != std::string::npos);
   CHECK(page.find("<!-- sweetspot:maps -->") != std::string::npos);
-}
-
-TEST_CASE("The curves along the frame are the rigid model's, and zero wrist force at the COP") {
-  const io::DesignFile file = tour_100();
-  const Design& d = file.design;
-  const std::vector<reports::FramePoint> curve = reports::frame_curves(d, 0.01);
-  const double L = d.implement.length_m();
-  REQUIRE(curve.size() == static_cast<std::size_t>(std::ceil(L / 0.01)) + 1);
-  CHECK(curve.front().from_tip_m == 0.0);
-  CHECK(curve.back().from_tip_m == L);
-  // Each point is Eq. (11) and Eq. (16) at its impact, evaluated afresh.
-  for (const reports::FramePoint& p : {curve[5], curve[30], curve[60]}) {
-    Design at = d;
-    at.impact_from_butt_m = L - p.from_tip_m;
-    const Evaluation e = evaluate(at, Fidelity::kRigid);
-    CHECK(p.wrist_force_ratio == e.wrist_force_ratio);
-    CHECK(p.apparent_cor == e.apparent_cor);
-  }
-  // The ratio changes sign across the hand-held COP (Eq. 13), and only there.
-  const Evaluation e = evaluate(d, Fidelity::kRigid);
-  REQUIRE(e.cop_hand_from_butt_m);
-  const double cop_from_tip = L - *e.cop_hand_from_butt_m;
-  for (std::size_t i = 1; i < curve.size(); ++i) {
-    const bool crosses = curve[i - 1].wrist_force_ratio * curve[i].wrist_force_ratio < 0;
-    const bool cop_between =
-        curve[i - 1].from_tip_m < cop_from_tip && cop_from_tip < curve[i].from_tip_m;
-    CHECK(crosses == cop_between);
-  }
-  CHECK_THROWS_AS(reports::frame_curves(d, 0.0), std::invalid_argument);
-}
-
-TEST_CASE("A strung design's curves are the solved collision's, as evaluate() gives them") {
-  // The numbers on the page and the curves under them must agree: a design
-  // solved at collision fidelity draws its curves from the same collision.
-  const io::DesignFile file =
-      io::load_design(SWEETSPOT_SOURCE_DIR "/designs/racquets/tour-100-strung.json");
-  const Design& d = file.design;
-  REQUIRE(needed_fidelity(d) == Fidelity::kCollision);
-  const std::vector<reports::FramePoint> curve =
-      reports::frame_curves(d, 0.01, Fidelity::kCollision);
-  const double L = d.implement.length_m();
-  int checked = 0;
-  for (const reports::FramePoint& p : curve) {
-    if (std::lround(p.from_tip_m * 100) % 10 != 5) continue;  // 5, 15, 25, ... cm
-    Design at = d;
-    at.impact_from_butt_m = L - p.from_tip_m;
-    const Evaluation e = evaluate(at, Fidelity::kCollision);
-    CHECK(p.apparent_cor == e.apparent_cor);
-    CHECK(p.peak_wrist_force_N == e.peak_wrist_force_N);
-    ++checked;
-  }
-  CHECK(checked >= 4);
 }
 
 TEST_CASE("The drawing is to scale: the racquet's length and each marker where the model puts it") {
@@ -180,8 +131,8 @@ TEST_CASE("A comparison applies each format's rule to its names: CSV, Markdown a
       io::read_json_file(SWEETSPOT_SOURCE_DIR "/designs/racquets/tour-100-lead-at-tip.json");
   hostile["name"] = "@cmd\n# injected \x1b[2J\xef\xbf\xbe";
   std::vector<reports::ComparedDesign> designs;
-  designs.push_back(reports::compare_one(tour_100(), "", 1e-6));
-  designs.push_back(reports::compare_one(io::read_design(hostile, "=b.json"), "", 1e-6));
+  designs.push_back(studies::compare_one(tour_100(), "", 1e-6, true));
+  designs.push_back(studies::compare_one(io::read_design(hostile, "=b.json"), "", 1e-6, true));
   const std::string csv = reports::comparison_report(designs, io::Format::kCsv);
   CHECK(csv.find("\n\"'@cmd\n# injected \\x1b[2J\xef\xbf\xbe\",\"'=b.json\",") !=
         std::string::npos);
@@ -201,8 +152,9 @@ TEST_CASE(
       io::read_json_file(SWEETSPOT_SOURCE_DIR "/designs/racquets/tour-100-lead-at-tip.json");
   hostile["name"] = kHostile;
   std::vector<reports::ComparedDesign> designs;
-  designs.push_back(reports::compare_one(tour_100(), "", 1e-6));
-  designs.push_back(reports::compare_one(io::read_design(hostile, "<i>b</i>.json"), "", 1e-6));
+  designs.push_back(studies::compare_one(tour_100(), "", 1e-6, true));
+  designs.push_back(
+      studies::compare_one(io::read_design(hostile, "<i>b</i>.json"), "", 1e-6, true));
   const std::string page = reports::comparison_html(designs);
   check_self_contained(page);
   CHECK(page.find("<h1 id=\"name\">Compared: Modern 100 sq in tour racquet (typical strung specs) "

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "io/design_reader.hpp"
+#include "studies/sweet_spots.hpp"
 
 namespace sweetspot::reports {
 namespace {
@@ -49,15 +50,16 @@ TEST_CASE(
   const double area = 100 * 0.0254 * 0.0254;
   const double expected = 0.015 + std::sqrt(area * 1.35 / std::numbers::pi);
   // A spec sheet without strings: the default head of exactly 100 sq in.
-  CHECK(centre_of_strings_from_tip_m(design_from(
+  CHECK(studies::centre_of_strings_from_tip_m(design_from(
             R"({"implement": {"length_in": 27, "mass_g": 318, "balance_cm": 32.5,
                 "swingweight_kg_cm2": 325}})")) == Approx(expected).epsilon(1e-12));
   // With strings, the string bed's head (its default radius, 0.1433 m, is 100 sq in to 4 digits).
-  CHECK(centre_of_strings_from_tip_m(design_from(kSpecSheet)) == Approx(expected).epsilon(1e-4));
+  CHECK(studies::centre_of_strings_from_tip_m(design_from(kSpecSheet)) ==
+        Approx(expected).epsilon(1e-4));
   CHECK(expected == Approx(0.1815).margin(1e-4));
   // A head given on the implement is used as it is: 110 sq in, aspect 1.2, a 2 cm hoop.
   const double a110 = std::sqrt(110 * 0.0254 * 0.0254 * 1.2 / std::numbers::pi);
-  CHECK(centre_of_strings_from_tip_m(design_from(
+  CHECK(studies::centre_of_strings_from_tip_m(design_from(
             R"({"implement": {"length_in": 27, "mass_g": 318, "balance_cm": 32.5,
                 "swingweight_kg_cm2": 325, "headsize_sq_in": 110, "head_aspect_ratio": 1.2,
                 "hoop_width_cm": 2}})")) == Approx(0.02 + a110).epsilon(1e-12));
@@ -68,7 +70,7 @@ TEST_CASE(
     "keep 5 cm from the tip") {
   const io::DesignFile racquet = (design_from(kSpecSheet));
   CHECK(racquet.design.implement.length_m() - racquet.design.impact_from_butt_m ==
-        Approx(centre_of_strings_from_tip_m(racquet)));
+        Approx(studies::centre_of_strings_from_tip_m(racquet)));
   CHECK(contains(racquet.provenance.at("impact/from_butt_m"), "centre of the strings"));
 
   const io::DesignFile paper = (design_from(
@@ -86,7 +88,7 @@ TEST_CASE(
     "is the COP-node gap") {
   const io::DesignFile design = (design_from(kSpecSheet));
   const Evaluation asked = io::evaluate_design_file(design, "", 1e-6);
-  const SweetSpots spots = find_sweet_spots(design, asked, 1e-6);
+  const studies::SweetSpots spots = studies::find_sweet_spots(design, asked, 1e-6);
   REQUIRE(spots.cop_hand);
   REQUIRE(spots.node_hand);
   REQUIRE(spots.centre_of_strings);
@@ -97,8 +99,8 @@ TEST_CASE(
   CHECK(spots.node_hand->from_tip_m ==
         Approx(asked.length_m - *asked.modal->node_hand_from_butt_m).epsilon(1e-12));
   CHECK(spots.best_rebound.has_value() == (fidelity_of(asked) == Fidelity::kCollision));
-  const SweetSpots modal =
-      find_sweet_spots(design, io::evaluate_design_file(design, "modal", 1e-6), 1e-6);
+  const studies::SweetSpots modal =
+      studies::find_sweet_spots(design, io::evaluate_design_file(design, "modal", 1e-6), 1e-6);
   CHECK_FALSE(modal.best_rebound);  // the collision fidelity's
 
   const std::string text = sweet_spot_paragraph(design, spots);
@@ -114,7 +116,7 @@ TEST_CASE("Without the stiffness the sentences say which input would locate the 
   const io::DesignFile design = design_from(
       R"({"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8}})");
   const Evaluation asked = io::evaluate_design_file(design, "", 1e-6);
-  const SweetSpots spots = find_sweet_spots(design, asked, 1e-6);
+  const studies::SweetSpots spots = studies::find_sweet_spots(design, asked, 1e-6);
   CHECK_FALSE(spots.node_hand);
   CHECK_FALSE(spots.centre_of_strings);
   const std::string text = sweet_spot_paragraph(design, spots);
@@ -132,12 +134,12 @@ TEST_CASE(
   const io::DesignFile design =
       io::load_design(SWEETSPOT_SOURCE_DIR "/designs/racquets/tour-100-strung.json");
   const Evaluation asked = io::evaluate_design_file(design, "collision", 1e-6);
-  const SweetSpots spots = find_sweet_spots(design, asked, 1e-6);
+  const studies::SweetSpots spots = studies::find_sweet_spots(design, asked, 1e-6);
   REQUIRE(spots.best_rebound);
   const double found = spots.best_rebound->from_tip_m;
   // Brute force: every 2.5 mm along the string bed's axis (head_geometry.hpp:
   // one hoop width below the tip to 2a further).
-  const HeadShape head = head_shape_of(design);
+  const HeadShape head = studies::head_shape_of(design);
   const double a = std::sqrt(head.area_m2 * head.aspect_ratio / std::numbers::pi);
   double best_x = 0.0, best_cor = -1.0;
   for (double x = head.hoop_width_m; x <= head.hoop_width_m + 2.0 * a; x += 0.0025) {
@@ -147,7 +149,7 @@ TEST_CASE(
     if (cor > best_cor) best_cor = cor, best_x = x;
   }
   // The search's tolerance (0.5 cm) plus the scan's half step.
-  CHECK(found == Approx(best_x).margin(kBestReboundTolerance_m + 0.00125));
+  CHECK(found == Approx(best_x).margin(studies::kBestReboundTolerance_m + 0.00125));
   CHECK(spots.best_rebound->evaluation.apparent_cor >= best_cor - 1e-3);
   const std::string text = sweet_spot_paragraph(design, spots);
   CHECK(contains(text, "comes back fastest"));
@@ -166,7 +168,8 @@ TEST_CASE(
   CHECK(spots.node_hand->evaluation.apparent_cor < spots.best_rebound->evaluation.apparent_cor);
   CHECK(found > spots.node_hand->from_tip_m);
   CHECK(found - spots.node_hand->from_tip_m < a);
-  CHECK_THROWS_WITH(best_rebound_on_axis(design, 1e-6, 0.0), Catch::Contains("tolerance_m"));
+  CHECK_THROWS_WITH(studies::best_rebound_on_axis(design, 1e-6, 0.0),
+                    Catch::Contains("tolerance_m"));
 }
 
 }  // namespace sweetspot::reports

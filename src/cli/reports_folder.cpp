@@ -1,4 +1,4 @@
-#include "reports/reports.hpp"
+#include "cli/reports_folder.hpp"
 
 #include <fmt/format.h>
 
@@ -16,11 +16,15 @@
 #include "reports/paper_reports.hpp"
 #include "reports/response_report.hpp"
 #include "reports/tension_report.hpp"
+#include "studies/modes.hpp"
 #include "studies/optimization.hpp"
+#include "studies/paper.hpp"
+#include "studies/response.hpp"
 #include "studies/study.hpp"
 #include "studies/sweep.hpp"
+#include "studies/tension_study.hpp"
 
-namespace sweetspot::reports {
+namespace sweetspot::cli {
 namespace {
 
 namespace fs = std::filesystem;
@@ -47,38 +51,15 @@ std::vector<fs::path> study_files(const std::string& designs_dir) {
   return files;
 }
 
-}  // namespace
-
-void write_reports(const std::string& designs_dir, const std::string& out_dir, std::ostream& log,
-                   const std::function<void(const std::string&)>& before_writing) {
-  // Nothing is created before the inputs are known to be there.
-  if (!fs::is_directory(designs_dir)) {
-    throw io::InputError(designs_dir, "",
-                         "not a folder of designs (expected table1/, paper-beam.json, studies/)");
-  }
-  // Every file is held until all are made, then written all or none: a study
-  // that fails halfway leaves the folder as it was.
-  std::vector<std::pair<std::string, std::string>> files;
-  std::vector<std::string> skipped;
-  const ReportWriter write{[&](const std::string& name, const std::string& content) {
-                             files.emplace_back(out_dir + "/" + name, content);
-                           },
-                           [&](const std::string& name, const io::Plot& plot) {
-                             std::string why;
-                             if (std::optional<std::string> png = render_png_bytes(plot, &why)) {
-                               files.emplace_back(out_dir + "/" + name, std::move(*png));
-                             } else {
-                               skipped.push_back(out_dir + "/" + name + ": " + why);
-                             }
-                           }};
-
-  std::vector<ReportEntry> entries = write_paper_reports(designs_dir, out_dir, write);
-
+// The paper beam's modes, Euler-Bernoulli and Timoshenko.
+void write_modes_reports(const std::string& designs_dir, const reports::ReportWriter& write,
+                         std::vector<reports::ReportEntry>& entries) {
   const io::DesignFile beam = io::load_design(designs_dir + "/paper-beam.json");
-  const ModesData modes = compute_modes(beam, 3, 1e-6, ModeOptions::Method::kExact);
-  write.text("modes-paper-beam.md", modes_report(modes, io::Format::kMarkdown));
-  write.text("modes-paper-beam.csv", modes_report(modes, io::Format::kCsv));
-  write.plot("modes-paper-beam.png", modes_plot(modes));
+  const studies::ModesData modes =
+      studies::compute_modes(beam, 3, 1e-6, ModeOptions::Method::kExact);
+  write.text("modes-paper-beam.md", reports::modes_report(modes, io::Format::kMarkdown));
+  write.text("modes-paper-beam.csv", reports::modes_report(modes, io::Format::kCsv));
+  write.plot("modes-paper-beam.png", reports::modes_plot(modes));
   entries.push_back(
       {"[modes-paper-beam.md](modes-paper-beam.md), [.csv](modes-paper-beam.csv), "
        "[.png](modes-paper-beam.png)",
@@ -88,12 +69,13 @@ void write_reports(const std::string& designs_dir, const std::string& out_dir, s
            "end; {:.1f} Hz held (damping ratio {:.3f}).",
            modes.free.modes[0].frequency_Hz,
            100 * (beam.design.implement.length_m() - modes.free.modes[0].nodes_from_butt_m.back()),
-           hand_held_fundamental(modes.held)->frequency_Hz,
-           hand_held_fundamental(modes.held)->damping_ratio)});
+           modes.held_fundamental.value().frequency_Hz,
+           modes.held_fundamental.value().damping_ratio)});
 
   const io::DesignFile thick = io::load_design(designs_dir + "/paper-beam-timoshenko.json");
-  const ModesData shear = compute_modes(thick, 3, 1e-6, ModeOptions::Method::kFiniteElement);
-  write.text("modes-paper-beam-timoshenko.md", modes_report(shear, io::Format::kMarkdown));
+  const studies::ModesData shear =
+      studies::compute_modes(thick, 3, 1e-6, ModeOptions::Method::kFiniteElement);
+  write.text("modes-paper-beam-timoshenko.md", reports::modes_report(shear, io::Format::kMarkdown));
   entries.push_back(
       {"[modes-paper-beam-timoshenko.md](modes-paper-beam-timoshenko.md)",
        fmt::format("The beam with shear and rotary inertia (Timoshenko, G = 1 GPa): modes 2 and 3 "
@@ -103,25 +85,26 @@ void write_reports(const std::string& designs_dir, const std::string& out_dir, s
                    "and 962 Hz.",
                    shear.free.modes[1].frequency_Hz, shear.free.modes[2].frequency_Hz,
                    modes.free.modes[1].frequency_Hz, modes.free.modes[2].frequency_Hz)});
+}
 
-  for (ReportEntry& entry : write_response_reports(designs_dir, write))
-    entries.push_back(std::move(entry));
-  for (ReportEntry& entry : write_tension_report(designs_dir, write))
-    entries.push_back(std::move(entry));
-
+// Every shipped study: an optimisation's report and convergence plot, a
+// sweep's CSV and plots.
+void write_study_reports(const std::string& designs_dir, const reports::ReportWriter& write,
+                         std::vector<reports::ReportEntry>& entries) {
   for (const fs::path& path : study_files(designs_dir)) {
     const studies::Study study = studies::load_study(path.string());
     const std::string stem = "studies/" + path.stem().string();
     if (!study.objective.empty()) {
-      const studies::OptimizationResult result = run_optimization(study);
+      const studies::OptimizationResult result = studies::run_optimization(study);
       // A shipped study whose printed best design does not re-evaluate to
       // the search's numbers is a defect of sweetspot, never a report.
       if (!result.inconsistency.empty()) {
         throw std::runtime_error("internal error: " + study.source + ": " + result.inconsistency);
       }
-      const std::string md = optimization_report(study, result, io::Format::kMarkdown, false);
+      const std::string md =
+          reports::optimization_report(study, result, io::Format::kMarkdown, false);
       write.text(stem + ".md", md);
-      write.plot(stem + ".png", convergence_plot(study, result));
+      write.plot(stem + ".png", reports::convergence_plot(study, result));
       entries.push_back({fmt::format("[{0}.md]({0}.md), [.png]({0}.png)", stem),
                          study.name + ": " + answer_of(md)});
     } else {
@@ -139,6 +122,47 @@ void write_reports(const std::string& designs_dir, const std::string& out_dir, s
           {links, study.name + (study.question.empty() ? "" : ": " + study.question)});
     }
   }
+}
+
+}  // namespace
+
+void write_reports(const std::string& designs_dir, const std::string& out_dir, std::ostream& log,
+                   const std::function<void(const std::string&)>& before_writing) {
+  // Nothing is created before the inputs are known to be there.
+  if (!fs::is_directory(designs_dir)) {
+    throw io::InputError(designs_dir, "",
+                         "not a folder of designs (expected table1/, paper-beam.json, studies/)");
+  }
+  // Every file is held until all are made, then written all or none: a study
+  // that fails halfway leaves the folder as it was.
+  std::vector<std::pair<std::string, std::string>> files;
+  std::vector<std::string> skipped;
+  const reports::ReportWriter write{
+      [&](const std::string& name, const std::string& content) {
+        files.emplace_back(out_dir + "/" + name, content);
+      },
+      [&](const std::string& name, const io::Plot& plot) {
+        std::string why;
+        if (std::optional<std::string> png = render_png_bytes(plot, &why)) {
+          files.emplace_back(out_dir + "/" + name, std::move(*png));
+        } else {
+          skipped.push_back(out_dir + "/" + name + ": " + why);
+        }
+      }};
+
+  std::vector<reports::ReportEntry> entries =
+      reports::write_paper_reports(studies::paper_results(designs_dir), write);
+
+  write_modes_reports(designs_dir, write, entries);
+
+  for (reports::ReportEntry& entry :
+       reports::write_response_reports(studies::response_reports(designs_dir), write))
+    entries.push_back(std::move(entry));
+  for (reports::ReportEntry& entry :
+       reports::write_tension_report(studies::tension_study(designs_dir), write))
+    entries.push_back(std::move(entry));
+
+  write_study_reports(designs_dir, write, entries);
 
   std::string index =
       "# sweetspot reports\n\n"
@@ -147,7 +171,7 @@ void write_reports(const std::string& designs_dir, const std::string& out_dir, s
       "PNG plots are rendered by gnuplot from the same data. Timings are not in these files (they "
       "would never reproduce); they are in the benchmark reports.\n\n"
       "| files | what they show |\n|---|---|\n";
-  for (const ReportEntry& e : entries)
+  for (const reports::ReportEntry& e : entries)
     index += "| " + e.files + " | " + io::md_cell(e.says) + " |\n";
   write.text("README.md", index);
   if (before_writing) {
@@ -157,7 +181,7 @@ void write_reports(const std::string& designs_dir, const std::string& out_dir, s
   for (const auto& file : files) log << "wrote " << io::terminal_text(file.first) << "\n";
   for (const std::string& file : skipped) log << "skipped " << io::terminal_text(file) << "\n";
   log << "\nSummary (index: " << io::terminal_text(out_dir + "/README.md") << "):\n";
-  for (const ReportEntry& e : entries) log << "- " << io::terminal_text(e.says) << "\n";
+  for (const reports::ReportEntry& e : entries) log << "- " << io::terminal_text(e.says) << "\n";
 }
 
-}  // namespace sweetspot::reports
+}  // namespace sweetspot::cli

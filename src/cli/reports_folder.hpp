@@ -1,12 +1,14 @@
 #pragma once
 
-// `sweetspot report`: everything `scripts/run` writes into reports/.
+// `sweetspot report`: everything `scripts/run` writes into reports/, each
+// report's numbers computed by its analysis in studies/ and written by its
+// renderer in reports/.
 
 #include <functional>
 #include <ostream>
 #include <string>
 
-namespace sweetspot::reports {
+namespace sweetspot::cli {
 
 // Writes the paper's Table I and figures, the paper beam's vibration modes,
 // and every shipped study in `designs_dir`/studies (optimisations: a report
@@ -19,4 +21,4 @@ namespace sweetspot::reports {
 void write_reports(const std::string& designs_dir, const std::string& out_dir, std::ostream& log,
                    const std::function<void(const std::string&)>& before_writing = {});
 
-}  // namespace sweetspot::reports
+}  // namespace sweetspot::cli

@@ -1,0 +1,31 @@
+#pragma once
+
+// `sweetspot compare A.json B.json ...`, its numbers: each design evaluated
+// at its own impact and at its sweet spots, and, for the web page, along its
+// frame. reports/comparison.hpp says what changes in words and draws it.
+
+#include <string_view>
+#include <vector>
+
+#include "io/design_reader.hpp"
+#include "studies/frame_curves.hpp"
+#include "studies/sweet_spots.hpp"
+
+namespace sweetspot::studies {
+
+struct ComparedDesign {
+  io::DesignFile design;  // as read (a default impact is the reader's, io::default_impact())
+  SweetSpots spots;       // spots.asked.evaluation is the design's own evaluation
+  // Along the frame every kFrameCurveStep_m at frame_curve_fidelity() of the
+  // design's own evaluation; empty unless asked (compare_one's along_frame).
+  std::vector<FramePoint> curve;
+};
+
+// Reads nothing: evaluates each design (at `fidelity`, "" for the file's own,
+// the hand-held modes to `rel_tol`) and finds its sweet spots, and with
+// `along_frame` its curve along the frame. Throws like
+// io::evaluate_design_file, naming the file and the JSON path.
+ComparedDesign compare_one(io::DesignFile design, std::string_view fidelity, double rel_tol,
+                           bool along_frame = false);
+
+}  // namespace sweetspot::studies

@@ -1,0 +1,40 @@
+#include "studies/design_page.hpp"
+
+#include <stdexcept>
+
+namespace sweetspot::studies {
+
+PageMaps page_maps(const io::DesignFile& file, Fidelity fidelity) {
+  Design d = file.design;
+  PageMaps maps;
+  maps.head_assumed = !d.head && !d.twistweight_kg_m2;
+  if (maps.head_assumed) {
+    HeadShape head;
+    head.area_m2 = kDefaultHeadArea_m2;
+    d.head = head;
+  }
+  StringBedMapOptions options;
+  try {
+    // The maps are drawn at the fidelity of the page's answer: the solved
+    // collision when the answer is solved, so the power map agrees with the
+    // best rebound in the sentences above.
+    options.fidelity = fidelity == Fidelity::kRigid || fidelity == Fidelity::kCollision
+                           ? fidelity
+                           : Fidelity::kModal;
+    maps.map = string_bed_map(d, options);
+  } catch (const std::invalid_argument& e) {
+    maps.refused = e.what();
+  }
+  return maps;
+}
+
+DesignPage design_page(const io::DesignFile& file) {
+  DesignPage page;
+  page.evaluation = io::evaluate_design_file(file, "", kPageRelTol);
+  page.curve = frame_curves(file.design, kFrameCurveStep_m, frame_curve_fidelity(page.evaluation));
+  page.spots = find_sweet_spots(file, page.evaluation, kPageRelTol);
+  page.maps = page_maps(file, fidelity_of(page.evaluation));
+  return page;
+}
+
+}  // namespace sweetspot::studies

@@ -1,0 +1,40 @@
+#pragma once
+
+// The impact moved along the frame: what the wrist feels and how the ball
+// comes back for a hit at each point from the tip to the butt. Plain data,
+// drawn by the HTML page and `compare --html`.
+
+#include <vector>
+
+#include "sweetspot/design.hpp"
+#include "sweetspot/evaluate.hpp"
+
+namespace sweetspot::studies {
+
+// One impact point along the frame: the rigid model (Eqs. 11, 15-17) or the
+// solved collision.
+struct FramePoint {
+  double from_tip_m = 0.0;
+  double wrist_force_ratio = 0.0;  // F_w / F (Eq. 11), signed
+  double apparent_cor = 0.0;       // e_A (Eq. 16, or the solved rebound)
+  double peak_wrist_force_N = 0.0;
+};
+
+// Steps along the frame of the curves on a page [m].
+inline constexpr double kFrameCurveStep_m = 0.01;
+
+// The impact moved along the frame from the tip to the butt in steps of
+// `step_m` (> 0; the butt itself always included). At Fidelity::kCollision
+// each point is the solved collision there (DesignCollision: e_A its rebound,
+// the wrist its share |F_w / F| of the solved peak force, as evaluate() does);
+// a point whose collision cannot be solved (a contact time out of range near
+// the butt) is left out. Any other fidelity: the rigid model at the design's
+// COR. Throws std::invalid_argument for a step <= 0, or as DesignCollision.
+std::vector<FramePoint> frame_curves(const Design& design, double step_m,
+                                     Fidelity fidelity = Fidelity::kRigid);
+
+// The fidelity of the curves drawn beside an evaluation: the solved collision
+// when it was solved, else the rigid model.
+Fidelity frame_curve_fidelity(const Evaluation& evaluation);
+
+}  // namespace sweetspot::studies
