@@ -36,10 +36,17 @@ class ModeCache {
   std::size_t reuses() const { return reuses_; }
 
  private:
+  // The design's flexible frame, built once for both mode sets.
+  const FlexibleFrame& frame(const Design& design, const std::vector<std::uint64_t>& key);
+
+  std::vector<std::uint64_t> frame_key_;
+  std::optional<FlexibleFrame> frame_;
   std::vector<std::uint64_t> modal_key_;
   std::optional<ModalOutputs> modal_;
   std::vector<std::uint64_t> response_key_;
   std::optional<ResponseModel> response_;
+  std::vector<std::uint64_t> response_frame_key_;
+  bool response_free_exact_ = false;  // free modes from the exact solver
   std::size_t solves_ = 0;
   std::size_t reuses_ = 0;
 };
