@@ -91,7 +91,9 @@ struct ModeOptions {
   // hand_held_modes only: how the damped eigenproblem (s^2 M + s C + K) q = 0
   // is solved on the mesh. Both give the same modes to round-off.
   //  * kRefined: a dense state-space solve on a coarse mesh (~2.6 elements per
-  //    requested mode) finds and orders the modes; each is then converged on
+  //    requested mode; runs of short sections share its elements when one
+  //    element each would be more than twice that) finds and orders the
+  //    modes; each is then converged on
   //    the full mesh by Rayleigh-functional iteration with a banded
   //    factorisation of s^2 M + s C + K, O(n) per step. Falls back to
   //    kDenseStateSpace (saying so in ModalResult::message) when a coarse mode

@@ -69,6 +69,10 @@ inline void require_positive(const Element& e, double value, std::string_view un
   if (!std::isfinite(value) || value <= 0.0) [[unlikely]]
     fail_positive(indexed(e.list, e.index, e.field), value, unit);
 }
+inline void require_at_least(const Element& e, double value, double min, std::string_view unit) {
+  if (!std::isfinite(value) || value < min) [[unlikely]]
+    fail_at_least(indexed(e.list, e.index, e.field), value, min, unit);
+}
 inline void require_in_range(const Element& e, double value, double min, double max,
                              std::string_view unit) {
   if (!std::isfinite(value) || value < min || value > max) [[unlikely]]

@@ -3,9 +3,12 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 
+#include "core/beam_modes/hand_held.hpp"
 #include "core/check.hpp"
+#include "core/frame_solve.hpp"
 #include "sweetspot/errors.hpp"
 #include "sweetspot/frame_specs.hpp"
 #include "sweetspot/invariants.hpp"
@@ -169,17 +172,26 @@ const Mode* hand_held_fundamental(const ModalResult& result) {
 }
 
 ModalOutputs evaluate_modes(const Design& design, double rel_tol) {
-  const FlexibleFrame frame = flexible_frame(design);
+  return detail::evaluate_modes_on(design, flexible_frame(design), rel_tol);
+}
+
+ModalOutputs detail::evaluate_modes_on(const Design& design, const FlexibleFrame& frame,
+                                       double rel_tol, const Mode* free_fundamental) {
   ModalOutputs out;
   out.mass_distribution_fitted = frame.mass_distribution_fitted;
 
-  ModeOptions free_options = frame.options;
-  free_options.modes = 1;
-  const ModalResult free = free_modes(frame.sections, frame.point_masses, free_options);
-  if (free.modes.empty())
-    throw FieldError("frame", "no flexible mode found (" + free.message + ")");
-  out.fundamental_free_Hz = free.modes[0].frequency_Hz;
-  out.node_free_from_butt_m = node_nearest_tip(free.modes[0]);
+  if (free_fundamental) {
+    out.fundamental_free_Hz = free_fundamental->frequency_Hz;
+    out.node_free_from_butt_m = node_nearest_tip(*free_fundamental);
+  } else {
+    ModeOptions free_options = frame.options;
+    free_options.modes = 1;
+    const ModalResult free = free_modes(frame.sections, frame.point_masses, free_options);
+    if (free.modes.empty())
+      throw FieldError("frame", "no flexible mode found (" + free.message + ")");
+    out.fundamental_free_Hz = free.modes[0].frequency_Hz;
+    out.node_free_from_butt_m = node_nearest_tip(free.modes[0]);
+  }
 
   if (design.hand.mass_kg == 0.0) {
     out.fundamental_hand_Hz = out.fundamental_free_Hz;
@@ -190,8 +202,10 @@ ModalOutputs evaluate_modes(const Design& design, double rel_tol) {
   hand_options.method = ModeOptions::Method::kFiniteElement;
   hand_options.rel_tol = rel_tol;
   hand_options.modes = 3;  // the hand's rocking modes come first
-  const ModalResult held = hand_held_beam_fundamental(frame.sections, frame.point_masses,
-                                                      hand_coupling(design), hand_options);
+  // The free fundamental sizes the mesh (the same mesh as a coarse estimate's).
+  const ModalResult held = beam_detail::hand_held_beam_fundamental(
+      frame.sections, frame.point_masses, hand_coupling(design), hand_options,
+      2.0 * std::numbers::pi * out.fundamental_free_Hz);
   const Mode* fundamental = hand_held_fundamental(held);
   if (!fundamental) throw FieldError("hand", "no beam mode found among the hand-held modes");
   out.fundamental_hand_Hz = fundamental->frequency_Hz;

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "core/check.hpp"
+#include "core/frame_solve.hpp"
 #include "sweetspot/errors.hpp"
 #include "sweetspot/frame_modes.hpp"
 #include "sweetspot/rigid_impact.hpp"
@@ -375,7 +376,12 @@ std::string ResponseOptions::validate() const {
 ResponseModel response_model(const Design& design, const ResponseOptions& options) {
   const std::string why = options.validate();
   if (!why.empty()) throw std::invalid_argument("options." + why);
-  const FlexibleFrame frame = flexible_frame(design);
+  return detail::response_model_on(design, flexible_frame(design), options);
+}
+
+ResponseModel detail::response_model_on(const Design& design, const FlexibleFrame& frame,
+                                        const ResponseOptions& options, bool* exact_free) {
+  if (exact_free) *exact_free = false;
   ModeOptions mode_options = frame.options;
   mode_options.modes = options.modes;
   mode_options.rel_tol = options.rel_tol;
@@ -384,6 +390,16 @@ ResponseModel response_model(const Design& design, const ResponseOptions& option
     // The exact solver gives at most kMaxExactModes; finite elements beyond.
     if (options.modes > kMaxExactModes) mode_options.method = ModeOptions::Method::kFiniteElement;
     const ModalResult free = free_modes(frame.sections, frame.point_masses, mode_options);
+    if (exact_free && free.method == ModeOptions::Method::kExact && !free.modes.empty()) {
+      // A one-mode exact solve scans the total phase lambda = sum beta l up
+      // to 8 pi and finds the same first root; well below that bound the two agree.
+      double phase_per_root_omega = 0.0;
+      for (const Section& s : frame.sections)
+        phase_per_root_omega += std::pow(s.mass_kg / s.length_m / *s.EI_N_m2, 0.25) * s.length_m;
+      const double lambda1 =
+          std::sqrt(2.0 * kPi * free.modes.front().frequency_Hz) * phase_per_root_omega;
+      *exact_free = lambda1 < 7.0 * kPi;
+    }
     return free_response_model(frame.sections, frame.point_masses, free,
                                options.free_damping_ratio);
   }

@@ -2,6 +2,10 @@
 
 #include <bit>
 #include <cstdint>
+#include <stdexcept>
+#include <string>
+
+#include "core/frame_solve.hpp"
 
 namespace sweetspot {
 namespace {
@@ -60,15 +64,32 @@ class Key {
 
 }  // namespace
 
+const FlexibleFrame& ModeCache::frame(const Design& design, const std::vector<std::uint64_t>& key) {
+  if (frame_ && frame_key_ == key) return *frame_;
+  frame_.reset();
+  FlexibleFrame built = flexible_frame(design);  // may throw: nothing is kept
+  frame_key_ = key;
+  return frame_.emplace(std::move(built));
+}
+
 const ModalOutputs& ModeCache::modal_outputs(const Design& design, double rel_tol) {
-  Key key(design);
+  const Key frame_key(design);
+  Key key = frame_key;
   key.add(rel_tol);
   if (modal_ && modal_key_ == key.bits()) {
     ++reuses_;
     return *modal_;
   }
   modal_.reset();
-  ModalOutputs solved = evaluate_modes(design, rel_tol);  // may throw: nothing is kept
+  const FlexibleFrame& shared = frame(design, frame_key.bits());
+  // The free fundamental of the free response model on this frame, when the
+  // exact solver gave it: a second solve would give the same numbers.
+  const Mode* free_fundamental =
+      response_ && response_free_exact_ && response_frame_key_ == frame_key.bits()
+          ? &response_->modes.front().mode
+          : nullptr;
+  ModalOutputs solved = detail::evaluate_modes_on(design, shared, rel_tol,
+                                                  free_fundamental);  // may throw: nothing is kept
   ++solves_;
   modal_key_ = key.bits();
   return modal_.emplace(std::move(solved));
@@ -76,7 +97,8 @@ const ModalOutputs& ModeCache::modal_outputs(const Design& design, double rel_to
 
 const ResponseModel& ModeCache::response_model(const Design& design,
                                                const ResponseOptions& options) {
-  Key key(design);
+  const Key frame_key(design);
+  Key key = frame_key;
   key.add(options.support == ResponseOptions::Support::kFree ? 0.0 : 1.0);
   key.add(static_cast<double>(options.modes));
   key.add(options.free_damping_ratio);
@@ -86,9 +108,15 @@ const ResponseModel& ModeCache::response_model(const Design& design,
     return *response_;
   }
   response_.reset();
-  ResponseModel solved = sweetspot::response_model(design, options);
+  const std::string why = options.validate();
+  if (!why.empty()) throw std::invalid_argument("options." + why);
+  const FlexibleFrame& shared = frame(design, frame_key.bits());
+  bool exact_free = false;
+  ResponseModel solved = detail::response_model_on(design, shared, options, &exact_free);
   ++solves_;
   response_key_ = key.bits();
+  response_frame_key_ = frame_key.bits();
+  response_free_exact_ = exact_free && options.support == ResponseOptions::Support::kFree;
   return response_.emplace(std::move(solved));
 }
 

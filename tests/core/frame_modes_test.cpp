@@ -81,5 +81,49 @@ TEST_CASE("A modal evaluation carries the rigid one unchanged") {
   CHECK(modal.peak_wrist_force_N == rigid.peak_wrist_force_N);
 }
 
+TEST_CASE(
+    "An evaluation at collision fidelity has evaluate_modes' numbers, bit for bit, its hand-held "
+    "mesh the one a coarse estimate sizes") {
+  // The collision's free response model lends the modal outputs its exact
+  // fundamental (the first root of the same scan a one-mode solve makes), and
+  // the hand-held mesh is sized from it: the oracles are a one-mode solve and
+  // hand_held_beam_fundamental() sizing its own mesh.
+  Design racquet{Implement::from_specs({27.0 * 0.0254, 0.305, 0.325, 0.0320})};
+  racquet.stiffness.fundamental_free_Hz = 155.0;
+  Design taped = racquet;
+  taped.implement =
+      Implement::from_specs({27.0 * 0.0254, 0.305, 0.325, 0.0320}, {PointMass{0.6, 0.01}});
+  Design stiff = racquet;
+  stiff.stiffness.fundamental_free_Hz.reset();
+  stiff.stiffness.EI_N_m2 = 300.0;
+  Design beam = paper_beam();
+  for (Design* d : {&racquet, &taped, &stiff, &beam}) {
+    d->impact_from_butt_m = d->implement.length_m() - 0.16;
+    d->strings = StringBed{};
+    d->cor_given = false;
+    const Evaluation e = evaluate(*d, Fidelity::kCollision);
+    const ModalOutputs alone = evaluate_modes(*d);
+    REQUIRE(e.modal);
+    CHECK(e.modal->fundamental_free_Hz == alone.fundamental_free_Hz);
+    CHECK(e.modal->node_free_from_butt_m == alone.node_free_from_butt_m);
+    CHECK(e.modal->fundamental_hand_Hz == alone.fundamental_hand_Hz);
+    CHECK(e.modal->hand_damping_ratio == alone.hand_damping_ratio);
+    CHECK(e.modal->node_hand_from_butt_m == alone.node_hand_from_butt_m);
+    CHECK(e.modal->hand_elements == alone.hand_elements);
+
+    const FlexibleFrame frame = flexible_frame(*d);
+    ModeOptions options = frame.options;
+    options.method = ModeOptions::Method::kFiniteElement;
+    options.modes = 3;
+    const ModalResult held =
+        hand_held_beam_fundamental(frame.sections, frame.point_masses, hand_coupling(*d), options);
+    REQUIRE(held.modes.size() == 1);
+    CHECK(held.elements_used == alone.hand_elements);
+    CHECK(held.modes[0].frequency_Hz == alone.fundamental_hand_Hz);
+    CHECK(held.modes[0].damping_ratio == alone.hand_damping_ratio);
+    CHECK(held.modes[0].nodes_from_butt_m.back() == *alone.node_hand_from_butt_m);
+  }
+}
+
 }  // namespace
 }  // namespace sweetspot

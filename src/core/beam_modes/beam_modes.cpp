@@ -133,7 +133,8 @@ namespace {
 // hand_held_modes(), or with `beam_fundamental_only` the first beam mode alone.
 ModalResult solve_hand_held(const std::vector<Section>& sections,
                             const std::vector<PointMass>& point_masses, const HandCoupling& hand,
-                            const ModeOptions& options, bool beam_fundamental_only) {
+                            const ModeOptions& options, bool beam_fundamental_only,
+                            std::optional<double> free_omega1 = std::nullopt) {
   const double length = validated_length(sections, true);
   detail::validate_point_masses(point_masses, length);
   validate_options(options, sections.size());
@@ -146,7 +147,7 @@ ModalResult solve_hand_held(const std::vector<Section>& sections,
   result.method = ModeOptions::Method::kFiniteElement;
   result.theory = options.theory;
   const Segmentation seg = hand_segmentation(sections, point_masses, hand, options);
-  const std::vector<int> counts = element_counts(seg, options);
+  const std::vector<int> counts = element_counts(seg, options, free_omega1);
   const Mesh mesh = build_mesh(seg, counts, options);
   result.elements_used = static_cast<int>(mesh.elements.size());  // after merge_tiny_elements
   const Assembled a = assemble(mesh, &hand);
@@ -154,7 +155,7 @@ ModalResult solve_hand_held(const std::vector<Section>& sections,
   std::optional<DampedSpectrum> spectrum;
   std::string how;
   if (options.damped_solver == ModeOptions::DampedSolver::kRefined) {
-    const Mesh coarse = coarse_mesh(seg, options);
+    const Mesh coarse = coarse_mesh(seg, options, true);
     std::string why = "mesh no finer than the coarse one";
     if (coarse.elements.size() < mesh.elements.size()) {
       spectrum =
@@ -180,7 +181,7 @@ ModalResult solve_hand_held(const std::vector<Section>& sections,
     if (beam == result.modes.end()) {
       // The coarse mesh called a mode the beam's that the fine one gives
       // to the hand: ask the full solve, which shapes every mode.
-      ModalResult full = solve_hand_held(sections, point_masses, hand, options, false);
+      ModalResult full = solve_hand_held(sections, point_masses, hand, options, false, free_omega1);
       const auto found = std::find_if(full.modes.begin(), full.modes.end(), [](const Mode& m) {
         return m.hand_energy_fraction < kHandModeEnergyShare;
       });
@@ -216,6 +217,14 @@ ModalResult hand_held_beam_fundamental(const std::vector<Section>& sections,
                                        const std::vector<PointMass>& point_masses,
                                        const HandCoupling& hand, const ModeOptions& options) {
   return solve_hand_held(sections, point_masses, hand, options, true);
+}
+
+ModalResult beam_detail::hand_held_beam_fundamental(const std::vector<Section>& sections,
+                                                    const std::vector<PointMass>& point_masses,
+                                                    const HandCoupling& hand,
+                                                    const ModeOptions& options,
+                                                    double free_omega1_rad_s) {
+  return solve_hand_held(sections, point_masses, hand, options, true, free_omega1_rad_s);
 }
 
 HandCoupling calibrated_hand() {

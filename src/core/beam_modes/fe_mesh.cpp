@@ -273,8 +273,8 @@ FlexibleMatrices flexible_matrices(const Mesh& mesh, const Assembled& a, const H
   return {reduce(a.K), reduce(a.M)};
 }
 
-std::vector<int> counts_for(const Segmentation& seg, double per_phase_weight) {
-  const bool group = seg.groupable && seg.segments.size() > kMaxFollowedSegments;
+std::vector<int> counts_for(const Segmentation& seg, double per_phase_weight, bool share_short) {
+  const bool group = seg.groupable && (share_short || seg.segments.size() > kMaxFollowedSegments);
   std::vector<int> counts;
   counts.reserve(seg.segments.size());
   double open = 0.0;                           // elements asked for by the open run, < 1
@@ -313,16 +313,30 @@ double total_phase_weight(const Segmentation& seg) {
   return sum;
 }
 
-std::vector<int> element_counts(const Segmentation& seg, const ModeOptions& options) {
+std::vector<int> element_counts(const Segmentation& seg, const ModeOptions& options,
+                                std::optional<double> free_omega1) {
   const double weight = total_phase_weight(seg);
   if (options.elements > 0) return counts_for(seg, options.elements / weight);
-  // Coarse estimate: ~2 elements per radian of phase at the first mode.
-  ModeOptions coarse = options;
-  const std::vector<int> coarse_counts = counts_for(seg, 2.0 * 4.73 / weight);
-  const Mesh mesh = build_mesh(seg, coarse_counts, coarse);
-  const double omega1 = std::sqrt(std::max(lowest_free_omega2(mesh), 0.0));
   const double beta_h = std::pow(kHermiteErrorConstant * kToleranceSafety * options.rel_tol, 0.25);
-  std::vector<int> counts = counts_for(seg, std::sqrt(omega1) / beta_h);
+  std::vector<int> counts;
+  // Each segment's count grows with omega1 (below kMaxFollowedSegments
+  // segments): equal counts at both ends of the band around the known
+  // fundamental are the counts of every estimate inside it.
+  const bool followed = !(seg.groupable && seg.segments.size() > kMaxFollowedSegments);
+  if (free_omega1 && followed && options.theory == ModeOptions::Theory::kEulerBernoulli) {
+    const std::vector<int> low =
+        counts_for(seg, std::sqrt(*free_omega1 * (1.0 - kKnownFundamentalBand)) / beta_h);
+    if (low == counts_for(seg, std::sqrt(*free_omega1 * (1.0 + kKnownFundamentalBand)) / beta_h))
+      counts = low;
+  }
+  if (counts.empty()) {
+    // Coarse estimate: ~2 elements per radian of phase at the first mode.
+    ModeOptions coarse = options;
+    const std::vector<int> coarse_counts = counts_for(seg, 2.0 * 4.73 / weight);
+    const Mesh mesh = build_mesh(seg, coarse_counts, coarse);
+    const double omega1 = std::sqrt(std::max(lowest_free_omega2(mesh), 0.0));
+    counts = counts_for(seg, std::sqrt(omega1) / beta_h);
+  }
   int total = 0;
   for (int c : counts) total += c;
   if (total > kMaxAutoElements) {
@@ -344,10 +358,17 @@ int total_elements(const std::vector<int>& counts) {
   return total;
 }
 
-Mesh coarse_mesh(const Segmentation& seg, const ModeOptions& options) {
-  return build_mesh(
-      seg, counts_for(seg, (options.modes + 0.5) * kPi / (kCoarseBetaH * total_phase_weight(seg))),
-      options);
+Mesh coarse_mesh(const Segmentation& seg, const ModeOptions& options, bool share_short) {
+  const double per_phase = (options.modes + 0.5) * kPi / (kCoarseBetaH * total_phase_weight(seg));
+  std::vector<int> counts = counts_for(seg, per_phase);
+  // One element per segment at least: a frame of many short sections (the 24
+  // fitted ones) makes that "coarse" mesh several times the sizing, and its
+  // dense solve most of the hand-held modes' time.
+  if (share_short &&
+      total_elements(counts) > kCoarseFollowedShare * per_phase * total_phase_weight(seg)) {
+    counts = counts_for(seg, per_phase, true);
+  }
+  return build_mesh(seg, counts, options);
 }
 
 VectorXcd interpolate_dofs(const Mesh& coarse, const VectorXcd& q, const Mesh& fine,

@@ -6,6 +6,7 @@
 
 #include <Eigen/Dense>
 #include <complex>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -239,20 +240,35 @@ inline constexpr std::size_t kMaxFollowedSegments = 64;
 // that the next segment with count 1 closes). So elements follow the sizing,
 // not the sections: 10 000 short sections make a few dozen elements, where
 // one element each made a dense problem of 20 000 DOFs.
-std::vector<int> counts_for(const Segmentation& seg, double per_phase_weight);
+// `share_short`: runs of short segments share elements whatever their number.
+std::vector<int> counts_for(const Segmentation& seg, double per_phase_weight,
+                            bool share_short = false);
 
 double total_phase_weight(const Segmentation& seg);
 
 // Elements per segment: explicit total, or sized so the f1 error is about
 // rel_tol from the h^4 convergence of the cubic element, (beta h)^4 / 1440,
 // with beta from a coarse first estimate of f1.
-std::vector<int> element_counts(const Segmentation& seg, const ModeOptions& options);
+// `free_omega1`, when known (the exact free fundamental of the same beam
+// [rad/s]), takes the place of the coarse estimate wherever every estimate
+// within kKnownFundamentalBand of it gives the same counts: the estimate, two
+// elements per radian, lies within ~1e-4 of the exact value (h^4 error
+// (beta h)^4 / 1440 <= 5e-5 at beta h <= 0.5), so the counts, and the mesh, are
+// the ones it gives.
+inline constexpr double kKnownFundamentalBand = 1e-3;
+std::vector<int> element_counts(const Segmentation& seg, const ModeOptions& options,
+                                std::optional<double> free_omega1 = std::nullopt);
 
 int total_elements(const std::vector<int>& counts);
 
 // The coarse mesh on which the lowest `modes` are located before refinement:
 // kCoarseBetaH radians of phase per element at mode modes + 1/2.
-Mesh coarse_mesh(const Segmentation& seg, const ModeOptions& options);
+// With `share_short` (the hand-held modes), a mesh that one element per
+// segment would make more than kCoarseFollowedShare times the sizing lets runs
+// of short segments share elements (counts_for), so the coarse solve stays
+// coarse on a frame of many sections.
+inline constexpr double kCoarseFollowedShare = 2.0;
+Mesh coarse_mesh(const Segmentation& seg, const ModeOptions& options, bool share_short = false);
 
 // Coarse DOFs carried to the nodes of `fine` through the coarse elements'
 // interpolation (w and theta of the cubic), hand DOFs as they are.

@@ -64,4 +64,12 @@ std::optional<DampedSpectrum> refined_damped_spectrum(const Mesh& mesh, const As
                                                       const Mesh& coarse, std::string* why,
                                                       bool beam_fundamental_only = false);
 
+// sweetspot::hand_held_beam_fundamental() of a beam whose free fundamental
+// (Euler-Bernoulli, exact) is known, `free_omega1_rad_s`: the mesh is sized
+// from it (element_counts) instead of a coarse estimate, the same mesh.
+ModalResult hand_held_beam_fundamental(const std::vector<Section>& sections,
+                                       const std::vector<PointMass>& point_masses,
+                                       const HandCoupling& hand, const ModeOptions& options,
+                                       double free_omega1_rad_s);
+
 }  // namespace sweetspot::beam_detail

@@ -20,17 +20,17 @@ double validated_length(const std::vector<Section>& sections, bool need_mass) {
   double length = 0.0;
   for (std::size_t i = 0; i < sections.size(); ++i) {
     const Section& s = sections[i];
-    detail::require_positive(detail::indexed("sections", i, "length_m"), s.length_m, "m");
+    detail::require_positive(detail::Element{"sections", i, "length_m"}, s.length_m, "m");
     if (need_mass) {
-      detail::require_positive(detail::indexed("sections", i, "mass_kg"), s.mass_kg, "kg");
+      detail::require_positive(detail::Element{"sections", i, "mass_kg"}, s.mass_kg, "kg");
     } else {
-      detail::require_at_least(detail::indexed("sections", i, "mass_kg"), s.mass_kg, 0.0, "kg");
+      detail::require_at_least(detail::Element{"sections", i, "mass_kg"}, s.mass_kg, 0.0, "kg");
     }
     if (!s.EI_N_m2) {
       throw FieldError(detail::indexed("sections", i, "EI_N_m2"),
                        "must be given for the bending modes, got none");
     }
-    detail::require_positive(detail::indexed("sections", i, "EI_N_m2"), *s.EI_N_m2, "N m^2");
+    detail::require_positive(detail::Element{"sections", i, "EI_N_m2"}, *s.EI_N_m2, "N m^2");
     length += s.length_m;
   }
   return length;

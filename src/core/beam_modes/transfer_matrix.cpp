@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "core/beam_modes/free_fe.hpp"
 #include "core/beam_modes/shapes.hpp"
@@ -46,6 +47,15 @@ class TransferModel {
     }
     mu_bar_ = mass / L_;
     if (phase_per_root_omega_ == 0.0) phase_per_root_omega_ = phase_weight(mu_bar_, EI0_, L_);
+    // What matrix() needs of each segment that does not depend on omega.
+    for (const Segment& s : seg.segments) {
+      Fixed f;
+      f.r = s.EI_N_m2 / EI0_;
+      f.a = s.length_m / L_;
+      f.a2 = f.a * f.a;
+      f.a3 = f.a2 * f.a;
+      fixed_.push_back(f);
+    }
   }
 
   // omega [rad/s] for a total phase lambda = sum beta_i l_i.
@@ -60,12 +70,13 @@ class TransferModel {
     using State = std::array<double, 4>;
     State s1{1, 0, 0, 0}, s2{0, 1, 0, 0};
     const double w2 = omega * omega;
-    for (const Segment& s : seg_.segments) {
+    for (std::size_t i = 0; i < seg_.segments.size(); ++i) {
+      const Segment& s = seg_.segments[i];
       const double jump = s.mass_at_start_kg * w2 * L_ * L_ * L_ / EI0_;
       s1[3] += jump * s1[0];
       s2[3] += jump * s2[0];
       double m[4][4];
-      matrix(s, w2, m);
+      matrix(s, fixed_[i], w2, m);
       s1 = apply(m, s1);
       s2 = apply(m, s2);
     }
@@ -102,7 +113,8 @@ class TransferModel {
     }
     State s{c1, c2, 0, 0};
     std::vector<ShapePiece> pieces;
-    for (const Segment& seg : seg_.segments) {
+    for (std::size_t i = 0; i < seg_.segments.size(); ++i) {
+      const Segment& seg = seg_.segments[i];
       s[3] += seg.mass_at_start_kg * w2 * L_ * L_ * L_ / EI0_ * s[0];
       const double r = seg.EI_N_m2 / EI0_;
       ShapePiece p;
@@ -112,20 +124,46 @@ class TransferModel {
       p.derivatives = {s[0], s[1] / L_, s[2] / (r * L_ * L_), s[3] / (r * L_ * L_ * L_)};
       pieces.push_back(p);
       double m[4][4];
-      matrix(seg, w2, m);
+      matrix(seg, fixed_[i], w2, m);
       s = apply(m, s);
     }
     return pieces;
   }
 
  private:
-  void matrix(const Segment& s, double w2, double m[4][4]) const {
-    const double r = s.EI_N_m2 / EI0_;
+  // The segment's numbers that do not depend on omega.
+  struct Fixed {
+    double r = 1.0, a = 0.0, a2 = 0.0, a3 = 0.0;
+  };
+
+  void matrix(const Segment& s, const Fixed& f, double w2, double m[4][4]) const {
+    const double r = f.r;
     const double P = s.mu_kg_m * w2 * L_ * L_ * L_ * L_ / s.EI_N_m2;
-    const double a = s.length_m / L_;
-    const double a2 = a * a, a3 = a2 * a;
+    const double a = f.a;
+    const double a2 = f.a2, a3 = f.a3;
     const Krylov k = krylov(std::sqrt(std::sqrt(P)) * a);
     const double T = a * k.t1, U = a2 * k.u2, V = a3 * k.v3;
+    if (r == 1.0) {
+      // The stiffest segment (every one on a frame of one EI): the entries
+      // below without their factors of 1, the same numbers.
+      m[0][0] = k.s;
+      m[0][1] = T;
+      m[0][2] = U;
+      m[0][3] = V;
+      m[1][0] = P * V;
+      m[1][1] = k.s;
+      m[1][2] = T;
+      m[1][3] = U;
+      m[2][0] = P * U;
+      m[2][1] = P * V;
+      m[2][2] = k.s;
+      m[2][3] = T;
+      m[3][0] = P * T;
+      m[3][1] = P * U;
+      m[3][2] = P * V;
+      m[3][3] = k.s;
+      return;
+    }
     m[0][0] = k.s;
     m[0][1] = T;
     m[0][2] = U / r;
@@ -153,6 +191,7 @@ class TransferModel {
   }
 
   const Segmentation& seg_;
+  std::vector<Fixed> fixed_;
   double L_ = 0.0;
   double EI0_ = 0.0;
   double mu_bar_ = 0.0;
