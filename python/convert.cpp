@@ -1,0 +1,165 @@
+#include "convert.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <string_view>
+
+#include "io/input_error.hpp"
+
+namespace py = pybind11;
+
+namespace sweetspot::python {
+namespace {
+
+// A JSON pointer's reference token: '~' and '/' escaped (RFC 6901).
+std::string token(std::string_view key) {
+  std::string out;
+  for (const char c : key) {
+    if (c == '~')
+      out += "~0";
+    else if (c == '/')
+      out += "~1";
+    else
+      out += c;
+  }
+  return out;
+}
+
+std::string type_name(py::handle value) {
+  return py::str(py::type::handle_of(value).attr("__name__")).cast<std::string>();
+}
+
+io::Json to_json(py::handle value, const std::string& source, const std::string& pointer,
+                 int depth) {
+  if (depth > io::kMaxJsonDepth) {
+    throw io::InputError(source, pointer,
+                         fmt::format("nested deeper than {} levels", io::kMaxJsonDepth));
+  }
+  if (value.is_none()) return nullptr;
+  if (PyBool_Check(value.ptr())) return value.ptr() == Py_True;
+  if (PyLong_Check(value.ptr())) {
+    int overflow = 0;
+    const long long n = PyLong_AsLongLongAndOverflow(value.ptr(), &overflow);
+    if (overflow == 0) return static_cast<std::int64_t>(n);
+    const unsigned long long u = PyLong_AsUnsignedLongLong(value.ptr());
+    if (PyErr_Occurred()) {
+      PyErr_Clear();
+      throw io::InputError(source, pointer,
+                           "expected a number a JSON document can hold, got an integer of " +
+                               std::to_string(py::int_(value.attr("bit_length")()).cast<long>()) +
+                               " bits");
+    }
+    return static_cast<std::uint64_t>(u);
+  }
+  if (PyFloat_Check(value.ptr())) {
+    const double x = PyFloat_AsDouble(value.ptr());
+    if (!std::isfinite(x)) {
+      throw io::InputError(source, pointer,
+                           "expected a finite number, got " + py::repr(value).cast<std::string>());
+    }
+    return x;
+  }
+  if (PyUnicode_Check(value.ptr())) return value.cast<std::string>();
+  if (PyDict_Check(value.ptr())) {
+    io::Json object = io::Json::object();
+    for (const auto& [key, item] : py::reinterpret_borrow<py::dict>(value)) {
+      if (!PyUnicode_Check(key.ptr())) {
+        throw io::InputError(source, pointer,
+                             "expected keys that are str, got the " + type_name(key) + " " +
+                                 py::repr(key).cast<std::string>());
+      }
+      const std::string name = key.cast<std::string>();
+      object[name] = to_json(item, source, pointer + "/" + token(name), depth + 1);
+    }
+    return object;
+  }
+  if (PyList_Check(value.ptr()) || PyTuple_Check(value.ptr())) {
+    io::Json array = io::Json::array();
+    std::size_t i = 0;
+    for (const py::handle item : value) {
+      array.push_back(to_json(item, source, pointer + "/" + std::to_string(i++), depth + 1));
+    }
+    return array;
+  }
+  // NumPy's scalars: an integer type has __index__, a floating one __float__.
+  if (py::hasattr(value, "__index__"))
+    return to_json(py::reinterpret_borrow<py::object>(value).attr("__index__")(), source, pointer,
+                   depth);
+  if (py::hasattr(value, "__float__") && !py::hasattr(value, "__len__")) {
+    PyObject* number = PyNumber_Float(value.ptr());
+    if (!number) throw py::error_already_set();
+    return to_json(py::reinterpret_steal<py::object>(number), source, pointer, depth);
+  }
+  throw io::InputError(source, pointer,
+                       "expected a JSON value (dict, list, str, int, float, bool or None), got a " +
+                           type_name(value));
+}
+
+}  // namespace
+
+Document read_document(py::handle value) {
+  Document document;
+  if (PyDict_Check(value.ptr())) {
+    document.source = "<dict>";
+    document.json = to_json(value, document.source, "", 1);
+    return document;
+  }
+  if (PyUnicode_Check(value.ptr())) {
+    const std::string text = value.cast<std::string>();
+    const std::size_t first = text.find_first_not_of(" \t\r\n");
+    if (first != std::string::npos && text[first] == '{') {
+      document.source = "<JSON text>";
+      document.json = io::parse_json(text, document.source);
+      return document;
+    }
+  }
+  if (PyUnicode_Check(value.ptr()) || py::hasattr(value, "__fspath__")) {
+    const std::string path = py::module_::import("os").attr("fspath")(value).cast<std::string>();
+    document.source = io::input_name(path);
+    document.json = io::read_json_file(path);
+    document.folder = std::filesystem::path(path).parent_path().string();
+    return document;
+  }
+  throw py::type_error("expected a design as a dict, a JSON text or a path, got a " +
+                       type_name(value));
+}
+
+py::object to_python(const io::Json& value) {
+  switch (value.type()) {
+    case io::Json::value_t::null:
+      return py::none();
+    case io::Json::value_t::boolean:
+      return py::bool_(value.get<bool>());
+    case io::Json::value_t::number_integer:
+      return py::int_(value.get<std::int64_t>());
+    case io::Json::value_t::number_unsigned:
+      return py::int_(value.get<std::uint64_t>());
+    case io::Json::value_t::number_float:
+      return py::float_(value.get<double>());
+    case io::Json::value_t::string: {
+      const std::string& text = value.get_ref<const std::string&>();
+      PyObject* decoded =
+          PyUnicode_DecodeUTF8(text.data(), static_cast<Py_ssize_t>(text.size()), "replace");
+      if (!decoded) throw py::error_already_set();
+      return py::reinterpret_steal<py::object>(decoded);
+    }
+    case io::Json::value_t::array: {
+      py::list list(value.size());
+      std::size_t i = 0;
+      for (const io::Json& item : value) list[i++] = to_python(item);
+      return list;
+    }
+    case io::Json::value_t::object: {
+      py::dict dict;
+      for (const auto& [key, item] : value.items()) dict[py::str(key)] = to_python(item);
+      return dict;
+    }
+    default:
+      return py::none();  // binary and discarded values: never in an evaluation's JSON
+  }
+}
+
+}  // namespace sweetspot::python

@@ -1,0 +1,530 @@
+// `import sweetspot`: the library in Python (docs/python.md). Every function
+// reads its design as `sweetspot` reads a design file and answers with the
+// numbers the command line prints, as Python values and NumPy arrays; the
+// physics runs without the GIL.
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "convert.hpp"
+#include "errors.hpp"
+#include "evaluate_many.hpp"
+#include "io/design_reader.hpp"
+#include "io/format.hpp"
+#include "io/input_error.hpp"
+#include "io/outputs.hpp"
+#include "io/parallel.hpp"
+#include "reports/modes_report.hpp"
+#include "reports/optimization_report.hpp"
+#include "studies/catalogue_header.hpp"
+#include "studies/optimization.hpp"
+#include "studies/string_bed_map.hpp"
+#include "studies/study.hpp"
+#include "sweetspot/beam_modes.hpp"
+#include "sweetspot/evaluate.hpp"
+
+namespace py = pybind11;
+
+namespace sweetspot::python {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// The checks the command line's options make, with their words.
+std::string checked_fidelity(const std::optional<std::string>& fidelity) {
+  if (!fidelity) return "";
+  if (*fidelity == "auto" || parse_fidelity(*fidelity)) return *fidelity;
+  throw py::value_error(
+      "fidelity: expected rigid, modal, response, collision or auto (or None: the design's "
+      "own), got " +
+      io::one_line(*fidelity));
+}
+
+double checked_tolerance(double tol) {
+  if (!(tol >= kMinRelTol && tol <= kMaxRelTol)) {
+    throw py::value_error("tol: must be in [" + io::exact(kMinRelTol) + ", " +
+                          io::exact(kMaxRelTol) + "], got " + io::exact(tol));
+  }
+  return tol;
+}
+
+int checked_threads(const std::optional<int>& threads) {
+  if (!threads) return io::all_cores();
+  if (*threads < 1 || *threads > 1024)
+    throw py::value_error("threads: must be in [1, 1024], got " + std::to_string(*threads));
+  return *threads;
+}
+
+py::array_t<double> array_of(const std::vector<double>& values) {
+  py::array_t<double> out(static_cast<py::ssize_t>(values.size()));
+  std::copy(values.begin(), values.end(), out.mutable_data());
+  return out;
+}
+
+py::object optional_float(const std::optional<double>& value) {
+  return value ? py::object(py::float_(*value)) : py::object(py::none());
+}
+
+io::DesignFile read_design_of(py::handle design) {
+  const Document document = read_document(design);
+  return io::read_design(document.json, document.source);
+}
+
+// ------------------------------------------------------------ evaluate
+
+py::object evaluate_py(py::handle design, const std::optional<std::string>& fidelity, double tol) {
+  const std::string name = checked_fidelity(fidelity);
+  checked_tolerance(tol);
+  const Document document = read_document(design);
+  io::Json json;
+  {
+    py::gil_scoped_release release;
+    const io::DesignFile file = io::read_design(document.json, document.source);
+    json = io::evaluation_json(file, io::evaluate_design_file(file, name, tol));
+  }
+  return to_python(json);
+}
+
+// ------------------------------------------------------------ evaluate_many
+
+py::dict evaluate_many_py(py::handle base, py::handle columns,
+                          const std::optional<std::string>& fidelity,
+                          const std::optional<int>& threads, double tol) {
+  ManyOptions options;
+  options.fidelity = checked_fidelity(fidelity);
+  options.modal_tolerance = checked_tolerance(tol);
+  options.threads = checked_threads(threads);
+  const Document document = read_document(base);
+  // The base is checked once, as `--base` is: a design on its own.
+  if (!document.json.is_object() || !document.json.contains("implement")) {
+    throw io::InputError(document.source, "/implement",
+                         "missing: the base design needs an implement");
+  }
+  {
+    py::gil_scoped_release release;
+    io::evaluate_design_file(io::read_design(document.json, document.source), "", tol);
+  }
+  // The columns: a dict or anything with items() (a pandas DataFrame), each
+  // value an array of numbers, read in place when it is float64.
+  if (!py::hasattr(columns, "items"))
+    throw py::type_error("columns: expected a dict (or a DataFrame) of dotted names to arrays");
+  std::vector<py::array_t<double>> arrays;
+  std::vector<Column> cols;
+  std::optional<std::size_t> rows;
+  for (const py::handle item : columns.attr("items")()) {
+    const py::tuple pair = py::reinterpret_borrow<py::tuple>(item);
+    if (!PyUnicode_Check(pair[0].ptr()))
+      throw py::type_error("columns: expected str keys, the dotted names of design fields");
+    const std::string field = pair[0].cast<std::string>();
+    py::array_t<double> array;
+    try {
+      array = py::array_t<double, py::array::forcecast>::ensure(pair[1]);
+    } catch (const py::error_already_set&) {
+      array = {};
+    }
+    if (!array) {
+      PyErr_Clear();
+      throw io::InputError(
+          "columns", "",
+          "column " + studies::shown(field) + ": expected an array of numbers, got a " +
+              py::str(py::type::handle_of(pair[1]).attr("__name__")).cast<std::string>());
+    }
+    if (array.ndim() > 1) {
+      throw io::InputError("columns", "",
+                           "column " + studies::shown(field) + ": expected one dimension, got " +
+                               std::to_string(array.ndim()));
+    }
+    Column column{field, array.data(), 0};
+    if (array.ndim() == 1) {
+      if (array.strides(0) % static_cast<py::ssize_t>(sizeof(double)) != 0)
+        array = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(array);
+      column.data = array.data();
+      column.stride = array.strides(0) / static_cast<py::ssize_t>(sizeof(double));
+      const auto n = static_cast<std::size_t>(array.shape(0));
+      if (rows && *rows != n) {
+        throw io::InputError("columns", "",
+                             "column " + studies::shown(field) + ": " + std::to_string(n) +
+                                 " rows, expected " + std::to_string(*rows) +
+                                 " as the columns before it");
+      }
+      rows = n;
+    }
+    arrays.push_back(std::move(array));
+    cols.push_back(std::move(column));
+  }
+  const std::size_t n = rows.value_or(1);
+  const std::span<const io::OutputSpec> specs = io::output_specs();
+  std::vector<py::array_t<double>> outputs;
+  std::vector<double*> pointers;
+  for (std::size_t k = 0; k < specs.size(); ++k) {
+    outputs.emplace_back(static_cast<py::ssize_t>(n));
+    pointers.push_back(outputs.back().mutable_data());
+  }
+  std::vector<std::string> errors;
+  {
+    py::gil_scoped_release release;
+    evaluate_columns(document.json, cols, n, options, pointers, errors);
+  }
+  py::dict result;
+  for (std::size_t k = 0; k < specs.size(); ++k)
+    result[py::str(std::string(specs[k].name))] = outputs[k];
+  py::array_t<bool> ok(static_cast<py::ssize_t>(n));
+  py::array error(py::dtype("O"), std::vector<py::ssize_t>{static_cast<py::ssize_t>(n)});
+  for (std::size_t i = 0; i < n; ++i) {
+    ok.mutable_data()[i] = errors[i].empty();
+    PyObject* text = PyUnicode_DecodeUTF8(errors[i].data(),
+                                          static_cast<Py_ssize_t>(errors[i].size()), "replace");
+    if (!text) throw py::error_already_set();
+    PyObject** slot = static_cast<PyObject**>(error.mutable_data()) + i;
+    Py_XDECREF(*slot);
+    *slot = text;
+  }
+  result["ok"] = ok;
+  result["error"] = error;
+  return result;
+}
+
+// ------------------------------------------------------------ modes, collide, map
+
+py::array_t<double> shapes_of(const ModalResult& result) {
+  const auto modes = static_cast<py::ssize_t>(result.shape_w.size());
+  const auto points = static_cast<py::ssize_t>(result.shape_x_m.size());
+  py::array_t<double> out({modes, points});
+  for (py::ssize_t k = 0; k < modes; ++k) {
+    for (py::ssize_t i = 0; i < points; ++i) {
+      const auto& row = result.shape_w[static_cast<std::size_t>(k)];
+      out.mutable_at(k, i) =
+          static_cast<std::size_t>(i) < row.size() ? row[static_cast<std::size_t>(i)] : kNaN;
+    }
+  }
+  return out;
+}
+
+py::object modes_py(py::handle design, int count, double tol, const std::string& method) {
+  if (count < 1 || count > kMaxExactModes) {
+    throw py::value_error("count: must be in [1, " + std::to_string(kMaxExactModes) + "], got " +
+                          std::to_string(count));
+  }
+  checked_tolerance(tol);
+  if (method != "exact" && method != "fe")
+    throw py::value_error("method: expected exact or fe, got " + io::one_line(method));
+  const io::DesignFile file = read_design_of(design);
+  std::optional<reports::ModesData> data;
+  std::string text;
+  {
+    py::gil_scoped_release release;
+    data.emplace(reports::compute_modes(
+        file, count, tol,
+        method == "fe" ? ModeOptions::Method::kFiniteElement : ModeOptions::Method::kExact));
+    text = reports::modes_report(*data, io::Format::kJson);
+  }
+  py::dict result(to_python(io::parse_json(text, "modes")));
+  result["free_x_m"] = array_of(data->free.shape_x_m);
+  result["free_shapes"] = shapes_of(data->free);
+  result["hand_held_x_m"] = array_of(data->held.shape_x_m);
+  result["hand_held_shapes"] = shapes_of(data->held);
+  return result;
+}
+
+py::dict collide_py(py::handle design, double tol) {
+  checked_tolerance(tol);
+  const io::DesignFile file = read_design_of(design);
+  std::optional<Evaluation> e;
+  {
+    py::gil_scoped_release release;
+    e = io::evaluate_design_file(file, "collision", tol);
+  }
+  const CollisionResult& r = e->details.value().collision.value();
+  py::dict out;
+  out["separated"] = r.separated;
+  out["contacts"] = r.contacts;
+  out["contact_time_s"] = r.contact_time_s;
+  out["in_contact_s"] = r.in_contact_s;
+  out["peak_force_N"] = r.peak_force_N;
+  out["peak_ball_compression_m"] = r.peak_ball_compression_m;
+  out["peak_string_deflection_m"] = r.peak_string_deflection_m;
+  out["impulse_N_s"] = r.impulse_N_s;
+  out["ball_velocity_after_m_s"] = r.ball_velocity_after_m_s;
+  out["frame_velocity_after_m_s"] = r.frame_velocity_after_m_s;
+  out["implement_momentum_N_s"] = r.implement_momentum_N_s;
+  out["apparent_cor"] = r.apparent_cor;
+  out["mode_energy_J"] = array_of(r.mode_energy_J);
+  out["string_bed_energy_J"] = r.string_bed_energy_J;
+  out["ball_in_J"] = r.ball_in_J;
+  out["ball_out_J"] = r.ball_out_J;
+  out["implement_rigid_J"] = r.implement_rigid_J;
+  out["vibration_J"] = r.vibration_J;
+  out["modal_damping_loss_J"] = r.modal_damping_loss_J;
+  out["ball_loss_J"] = r.ball_loss_J;
+  out["strings_loss_J"] = r.strings_loss_J;
+  out["step_s"] = r.step_s;
+  out["steps"] = r.steps;
+  out["step_error"] = r.step_error;
+  out["time_s"] = array_of(r.time_s);
+  out["force_N"] = array_of(r.force_N);
+  out["evaluation"] = to_python(io::evaluation_json(file, *e));
+  return out;
+}
+
+py::dict string_bed_map_py(py::handle design, int columns, int rows,
+                           const std::optional<std::string>& fidelity,
+                           const std::optional<int>& threads) {
+  const std::string name = checked_fidelity(fidelity);
+  const io::DesignFile file = read_design_of(design);
+  studies::StringBedMapOptions options;
+  options.columns = columns;
+  options.rows = rows;
+  options.threads = checked_threads(threads);
+  studies::StringBedMap map;
+  {
+    py::gil_scoped_release release;
+    try {
+      // As `sweetspot map` takes it: the response model's feel is the modal one.
+      const std::string wanted = name.empty() ? file.fidelity : name;
+      options.fidelity = resolve_fidelity(wanted == "response" ? "modal" : wanted, file.design);
+      if (options.fidelity == Fidelity::kResponse) options.fidelity = Fidelity::kModal;
+      map = studies::string_bed_map(file.design, options);
+    } catch (const std::invalid_argument& e) {
+      io::rethrow_in(file, e);
+    }
+  }
+  const std::vector<py::ssize_t> shape{map.rows, map.columns};
+  py::array_t<double> x(shape), y(shape), mass(shape), cor(shape), wrist(shape), twist(shape),
+      feel(shape);
+  py::array_t<bool> on_bed(shape);
+  for (std::size_t k = 0; k < map.points.size(); ++k) {
+    const studies::StringBedMapPoint& p = map.points[k];
+    x.mutable_data()[k] = p.from_butt_m;
+    y.mutable_data()[k] = p.off_axis_m;
+    on_bed.mutable_data()[k] = p.on_bed;
+    mass.mutable_data()[k] = p.on_bed ? p.effective_mass_kg : kNaN;
+    cor.mutable_data()[k] = p.on_bed ? p.apparent_cor : kNaN;
+    wrist.mutable_data()[k] = p.on_bed ? p.peak_wrist_force_N : kNaN;
+    twist.mutable_data()[k] = p.on_bed ? p.peak_twist_torque_N_m : kNaN;
+    feel.mutable_data()[k] = p.on_bed ? p.vibration_energy_J.value_or(kNaN) : kNaN;
+  }
+  py::dict out;
+  out["from_butt_m"] = x;
+  out["off_axis_m"] = y;
+  out["on_bed"] = on_bed;
+  out["effective_mass_kg"] = mass;
+  out["apparent_cor"] = cor;
+  out["peak_wrist_force_N"] = wrist;
+  out["peak_twist_torque_N_m"] = twist;
+  out["vibration_energy_J"] = feel;
+  py::dict bed;
+  bed["center_from_butt_m"] = map.bed.center_from_butt_m;
+  bed["semi_length_m"] = map.bed.semi_length_m;
+  bed["semi_width_m"] = map.bed.semi_width_m;
+  out["bed"] = bed;
+  out["polar_inertia_kg_m2"] = map.polar_inertia_kg_m2;
+  out["polar_inertia_estimated"] = map.polar_inertia_estimated;
+  out["cop_hand_from_butt_m"] = optional_float(map.cop_hand_from_butt_m);
+  out["node_free_from_butt_m"] = optional_float(map.node_free_from_butt_m);
+  out["fidelity"] = std::string(to_string(map.fidelity));
+  return out;
+}
+
+// ------------------------------------------------------------ optimize
+
+py::dict optimize_py(py::handle study_value, const std::optional<int>& threads) {
+  const Document document = read_document(study_value);
+  studies::Study study = studies::read_study(document.json, document.source, document.folder);
+  study.options.threads = checked_threads(threads);
+  std::optional<studies::OptimizationResult> result;
+  std::string report;
+  {
+    py::gil_scoped_release release;
+    result.emplace(studies::run_optimization(study));
+    report = reports::optimization_report(study, *result, io::Format::kJson, false);
+  }
+  const studies::OptimizationResult& r = *result;
+  py::dict out;
+  out["name"] = study.name;
+  out["outcome"] = r.outcome == studies::Outcome::kOptimum      ? "optimum"
+                   : r.outcome == studies::Outcome::kInfeasible ? "infeasible"
+                                                                : "no_value";
+  py::list variables;
+  for (const studies::StudyVariable& v : study.variables) variables.append(v.pointer);
+  out["variables"] = variables;
+  out["start_x"] = array_of(r.start_x);
+  out["x"] = array_of(r.summary.x);
+  out["objective"] = r.summary.objective;
+  out["start_objective"] = optional_float(r.start_objective);
+  py::list constraints;
+  for (const studies::ConstraintReport& c : r.constraints) {
+    py::dict d;
+    d["name"] = c.name;
+    d["unit"] = c.unit;
+    d["value"] = optional_float(c.value);
+    d["limit"] = c.limit;
+    d["tolerance"] = c.tolerance;
+    d["violation"] = c.violation;
+    d["satisfied"] = c.satisfied;
+    d["active"] = c.active;
+    constraints.append(d);
+  }
+  out["constraints"] = constraints;
+  out["feasible"] = r.summary.feasible;
+  out["evaluations"] = r.summary.evaluations;
+  out["seconds"] = r.summary.seconds;
+  out["algorithm"] = r.summary.algorithm;
+  out["termination"] = r.summary.termination_text();
+  out["history"] = array_of(r.summary.history);
+  out["violation_history"] = array_of(r.summary.violation_history);
+  out["best_design"] = to_python(r.best_document);
+  out["best"] = r.best_outputs ? to_python(io::evaluation_json(r.best, *r.best_outputs))
+                               : py::object(py::none());
+  out["start"] = r.start_outputs ? to_python(io::evaluation_json(r.start, *r.start_outputs))
+                                 : py::object(py::none());
+  out["inconsistency"] = r.inconsistency;
+  out["report"] = to_python(io::parse_json(report, "report"));
+  return out;
+}
+
+py::list outputs_py() {
+  py::list list;
+  for (const io::OutputSpec& o : io::output_specs()) {
+    py::dict d;
+    d["name"] = std::string(o.name);
+    d["unit"] = std::string(o.unit);
+    d["description"] = std::string(o.description);
+    d["when_absent"] = std::string(o.when_absent);
+    d["needs_modes"] = o.needs_modes;
+    d["needs_response"] = o.needs_response;
+    list.append(d);
+  }
+  return list;
+}
+
+}  // namespace
+}  // namespace sweetspot::python
+
+PYBIND11_MODULE(sweetspot, m) {
+  using namespace sweetspot::python;
+  m.doc() =
+      "sweetspot: where a ball should hit a racquet, bat or any hand-held implement, and what\n"
+      "the hand feels when it does not (R. Cross, Am. J. Phys. 72, 622 (2004)).\n\n"
+      "A design is a dict, a JSON text or the path of a design file, in the units its keys\n"
+      "name (docs/design-files.md); every function reads it as `sweetspot evaluate` reads a\n"
+      "file and answers in SI units, the unit at the end of each name (peak_wrist_force_N).\n"
+      "Bad input raises InputError (a ValueError) with the command line's words; a design the\n"
+      "model refuses raises ModelRefusal. See docs/python.md.";
+  m.attr("__version__") = SWEETSPOT_VERSION;
+  register_errors(m);
+
+  m.def("evaluate", &evaluate_py, py::arg("design"), py::arg("fidelity") = py::none(),
+        py::arg("tol") = 1e-6,
+        R"(Every output of one design: the dict `sweetspot evaluate --format json` prints.
+
+design: a dict, a JSON text (a str starting with '{') or the path of a design file.
+fidelity: 'rigid', 'modal', 'response', 'collision' or 'auto' (the cheapest that answers
+    the design); None (default): the design's own "fidelity", as the command line without
+    --fidelity.
+tol: the hand-held modes' relative frequency error, in [1e-8, 0.1] (--tol).
+
+Returns {'name', 'inputs', 'outputs', 'notes', ...}: outputs in SI units named by their
+unit (peak_wrist_force_N in N, cop_hand_from_tip_m in m, swingweight_kg_m2 in kg m^2),
+None where the design's fidelity gives no value (notes say why); the same keys and the
+same doubles, bit for bit, as the command line.
+
+Raises InputError at the JSON path of a bad value, ModelRefusal (exit status 3 on the
+command line) when the model cannot answer.)");
+
+  m.def("evaluate_many", &evaluate_many_py, py::arg("base"), py::arg("columns"),
+        py::arg("fidelity") = py::none(), py::arg("threads") = py::none(), py::arg("tol") = 1e-6,
+        R"(Many designs at once: a base design and columns of numbers, as `sweetspot evaluate
+--batch CATALOGUE.csv --base BASE.json` evaluates a catalogue.
+
+base: a design (dict, JSON text or path) giving every row's defaults; it must be a design
+    on its own (an implement, every value valid), as --base.
+columns: a dict (or a pandas DataFrame) whose keys are the dotted names of a catalogue's
+    header ('implement.mass_kg', 'impact.from_tip_m', 'strings.tension_lb': the suffix is
+    the unit of the values) and whose values are 1-D arrays of numbers of one length (a
+    scalar stands for every row). float64 arrays are read in place, any stride; others
+    are converted once.
+fidelity: as evaluate(); None: the base's own.
+threads: threads the rows are shared among (--threads); None (default): every core. The
+    GIL is released while the rows are evaluated.
+tol: as evaluate().
+
+Returns a dict: for each output of evaluate() (outputs()) a float64 array, one value per
+row, in its SI unit (NaN where the output is None or the row failed); 'ok', a bool array;
+'error', an object array holding each failed row's message ('row 7: /implement/mass_kg:
+must be in ..., got ...', the command line's words) and '' for the others. A bad row never
+raises. Raises InputError naming 'columns' for a name that is no design field (or is given
+twice or in two units), arrays of different lengths, and for the base.)");
+
+  m.def("modes", &modes_py, py::arg("design"), py::arg("count") = 3, py::arg("tol") = 1e-6,
+        py::arg("method") = "exact",
+        R"(The frame's vibration modes, free and held in the hand: `sweetspot modes --format json`.
+
+design: a design with the frame's stiffness (frame.EI_N_m2, frame.RA, ...).
+count: flexible modes, in [1, 6] (--modes).
+tol: the finite elements' relative frequency error, in [1e-8, 0.1] (--tol).
+method: 'exact' (transfer matrices) or 'fe' for the free modes (--method).
+
+Returns the command line's dict ('free' and 'hand_held': lists of modes with frequency_Hz,
+nodes from the butt and the tip in m, ...) and the mode shapes: 'free_x_m' (points along
+the implement from the butt, m), 'free_shapes' (modes x points, max |w| = 1), and
+'hand_held_x_m', 'hand_held_shapes'.)");
+
+  m.def("collide", &collide_py, py::arg("design"), py::arg("tol") = 1e-6,
+        R"(The solved collision of ball, strings and frame (fidelity 'collision').
+
+design: a design with a string tension and the frame's stiffness, and no COR.
+tol: the modes' relative frequency error, in [1e-8, 0.1].
+
+Returns a dict: contact_time_s (s), peak_force_N (N), apparent_cor, impulse_N_s (N s),
+ball_velocity_after_m_s (m/s, < 0 rebounding), the energy ledger in J (ball_in_J,
+ball_out_J, implement_rigid_J, vibration_J, ball_loss_J, strings_loss_J, ...),
+mode_energy_J (J, one per mode), the force history 'time_s' and 'force_N' (arrays), and
+'evaluation', evaluate(design, 'collision').)");
+
+  m.def("string_bed_map", &string_bed_map_py, py::arg("design"), py::arg("columns") = 50,
+        py::arg("rows") = 50, py::arg("fidelity") = py::none(), py::arg("threads") = 1,
+        R"(Power, shock and feel over the string bed: `sweetspot map`.
+
+design: a design whose polar inertia is known (a twistweight or a head).
+columns, rows: grid points along the long axis and across it, each in [2, 1000].
+fidelity: 'rigid' (power and shock), 'modal' (also the vibration energy), 'collision', or
+    None: the design's own (as `sweetspot map` without --fidelity).
+threads: threads the grid is shared among (the map is the same whatever their number).
+
+Returns 2-D arrays (rows x columns, x fastest): from_butt_m and off_axis_m (m, > 0 towards
+3 o'clock), on_bed (bool), effective_mass_kg (kg), apparent_cor, peak_wrist_force_N (N),
+peak_twist_torque_N_m (N m), vibration_energy_J (J; NaN off the bed or where the model gives
+none); the ellipse 'bed' (m), polar_inertia_kg_m2, cop_hand_from_butt_m and
+node_free_from_butt_m (m, or None), and the fidelity used.)");
+
+  m.def("optimize", &optimize_py, py::arg("study"), py::arg("threads") = py::none(),
+        R"(Runs a study's optimisation: `sweetspot optimize STUDY.json`.
+
+study: a study as a dict, JSON text or path (docs/studies.md); a relative "design" path
+    is resolved from the study file's folder (from the working folder for a dict).
+threads: threads for independent evaluations (--threads); None: every core. The answer is
+    the same whatever their number.
+
+Returns a dict: 'outcome' ('optimum', 'infeasible' or 'no_value'), 'variables' (their JSON
+pointers), 'x' and 'start_x' (arrays, in each variable's unit), 'objective' and
+'start_objective', 'constraints' (a dict each: name, unit, value, limit, tolerance,
+violation, satisfied, active), 'history' and 'violation_history' (the best objective and
+its violation after each evaluation, arrays), 'evaluations', 'seconds', 'termination',
+'best_design' (the design file of the answer, as a dict evaluate() takes), 'best' and
+'start' (their evaluate() dicts), and 'report' (`sweetspot optimize --format json`).)");
+
+  m.def("outputs", &outputs_py,
+        R"(Every output of evaluate(), in report order: a dict each with its name, SI unit
+('' when dimensionless), a one-line description, why it can be None, and whether it needs
+the modes or the response model.)");
+}

@@ -1,0 +1,185 @@
+"""sweetspot.evaluate_many: row by row what evaluate() gives, at every fidelity,
+and what `sweetspot evaluate --batch` writes for the same catalogue."""
+
+import copy
+import csv
+import io
+import json
+import math
+
+import numpy as np
+import pytest
+import sweetspot
+from conftest import ROOT, run_cli
+
+# Base design, fidelity, rows and each column's range (some rows outside the
+# design's valid range, so that failed rows are compared too).
+CASES = {
+    "rigid": ("designs/table1/row1.json", 40, {
+        "implement.length_m": (0.55, 0.75),
+        "implement.mass_kg": (-0.02, 0.4),
+        "implement.head_to_handle_mass_ratio": (0.5, 1.2),
+        "impact.from_tip_m": (0.0, 0.3),
+        "hand.mass_kg": (0.3, 0.6),
+        "ball.speed_m_s": (20.0, 60.0),
+    }),
+    "modal": ("designs/racquets/tour-100.json", 12, {
+        "implement.mass_g": (280.0, 340.0),
+        "implement.swingweight_kg_cm2": (290.0, 340.0),
+        "frame.fundamental_free_Hz": (120.0, 180.0),
+        "impact.from_tip_m": (0.05, 0.25),
+    }),
+    "response": ("designs/racquets/tour-100.json", 12, {
+        "implement.mass_g": (280.0, 340.0),
+        "frame.fundamental_free_Hz": (120.0, 180.0),
+        "impact.from_tip_m": (0.05, 0.25),
+    }),
+    "collision": ("designs/racquets/tour-100-strung.json", 6, {
+        "strings.tension_N": (200.0, 280.0),
+        "impact.from_tip_m": (0.1, 0.22),
+    }),
+}
+
+
+def columns_of(case, seed):
+    _, rows, ranges = CASES[case]
+    rng = np.random.default_rng(seed)
+    return {field: rng.uniform(lo, hi, rows) for field, (lo, hi) in ranges.items()}
+
+
+def base_of(case):
+    return json.loads((ROOT / CASES[case][0]).read_text())
+
+
+def document_at(base, columns, i):
+    """The row as a design file: the base with each column's value at its key."""
+    document = copy.deepcopy(base)
+    for field, values in columns.items():
+        *objects, key = field.split(".")
+        node = document
+        for name in objects:
+            node = node.setdefault(name, {})
+        node[key] = float(values[i])
+    return document
+
+
+def same(a, b):
+    """Bit for bit: the same double, or NaN where evaluate() gives None."""
+    if b is None:
+        return math.isnan(a)
+    return a == b or (math.isnan(a) and math.isnan(b))
+
+
+def detail_of(message):
+    """A message without its source: 'row 3: /implement/mass_kg: ...' -> '/implement/mass_kg: ...'."""
+    return message.split(": ", 1)[1]
+
+
+@pytest.mark.parametrize("case", list(CASES))
+def test_rows_equal_evaluate(case):
+    base, columns = base_of(case), columns_of(case, seed=len(case))
+    many = sweetspot.evaluate_many(base, columns, fidelity=case, threads=2)
+    names = [o["name"] for o in sweetspot.outputs()]
+    rows = len(next(iter(columns.values())))
+    failed = 0
+    for i in range(rows):
+        try:
+            outputs = sweetspot.evaluate(document_at(base, columns, i), fidelity=case)["outputs"]
+        except (sweetspot.InputError, sweetspot.ModelRefusal) as e:
+            failed += 1
+            assert not many["ok"][i]
+            assert detail_of(many["error"][i]) == detail_of(str(e))
+            assert many["error"][i].startswith(f"row {i}: {e.path}")
+            assert all(math.isnan(many[name][i]) for name in names)
+            continue
+        assert many["ok"][i] and many["error"][i] == "", many["error"][i]
+        for name in names:
+            assert same(many[name][i], outputs[name]), (i, name, many[name][i], outputs[name])
+    if case == "rigid":
+        assert 0 < failed < rows  # bad rows and good rows both compared
+
+
+@pytest.mark.parametrize("case", ["rigid", "modal", "collision"])
+def test_rows_equal_the_command_lines_batch(case, tmp_path):
+    base, columns = base_of(case), columns_of(case, seed=7)
+    (tmp_path / "base.json").write_text(json.dumps(base))
+    rows = len(next(iter(columns.values())))
+    with open(tmp_path / "rows.csv", "w", newline="") as f:
+        writer = csv.writer(f)
+        writer.writerow(columns)
+        for i in range(rows):
+            writer.writerow([repr(float(v[i])) for v in columns.values()])
+    done = run_cli("evaluate", "--batch", tmp_path / "rows.csv", "--base", tmp_path / "base.json",
+                   "--fidelity", case, "--format", "csv", "--threads", "1", check=False)
+    assert done.returncode in (0, 1), done.stderr
+    many = sweetspot.evaluate_many(tmp_path / "base.json", columns, fidelity=case, threads=1)
+    table = list(csv.DictReader(io.StringIO(done.stdout)))
+    assert len(table) == rows
+    for i, row in enumerate(table):
+        assert int(row["line"]) == i + 2
+        if row["error"]:
+            assert detail_of(many["error"][i]) == detail_of(row["error"])
+            continue
+        assert many["ok"][i], many["error"][i]
+        for o in sweetspot.outputs():
+            cell = row[o["name"]]
+            assert same(many[o["name"]][i], float(cell) if cell else None), (i, o["name"])
+
+
+def test_threads_and_layouts_give_the_same_rows():
+    base, columns = base_of("rigid"), columns_of("rigid", seed=3)
+    one = sweetspot.evaluate_many(base, columns, threads=1)
+    # Strided views, float32 and Python lists are read as the same numbers.
+    strided = {k: np.repeat(v, 2)[::2] for k, v in columns.items()}
+    assert not next(iter(strided.values())).flags["C_CONTIGUOUS"]
+    listed = {k: [float(x) for x in v] for k, v in columns.items()}
+    for other in (sweetspot.evaluate_many(base, columns, threads=3),
+                  sweetspot.evaluate_many(base, strided, threads=2),
+                  sweetspot.evaluate_many(base, listed)):
+        for name, values in one.items():
+            if values.dtype == float:
+                assert np.array_equal(values, other[name], equal_nan=True), name
+            else:
+                assert (values == other[name]).all(), name
+
+
+def test_a_scalar_column_stands_for_every_row():
+    base = base_of("rigid")
+    many = sweetspot.evaluate_many(base, {"impact.from_tip_m": np.array([0.05, 0.1]),
+                                          "hand.mass_kg": 0.5})
+    assert many["peak_wrist_force_N"].shape == (2,)
+    assert many["peak_wrist_force_N"][0] == sweetspot.evaluate(base)["outputs"]["peak_wrist_force_N"]
+
+
+def test_a_non_finite_cell_is_a_failed_row():
+    many = sweetspot.evaluate_many(base_of("rigid"),
+                                   {"implement.mass_kg": np.array([0.25, np.nan, np.inf])})
+    assert list(many["ok"]) == [True, False, False]
+    assert many["error"][1] == "row 1: /implement/mass_kg: expected a finite number, got nan"
+    assert math.isnan(many["peak_wrist_force_N"][2])
+
+
+class Frame:
+    """What evaluate_many reads of a pandas DataFrame (not installed here):
+    items() giving each column's name and a Series, an object with __array__."""
+
+    class Series:
+        def __init__(self, values):
+            self.values = values
+
+        def __array__(self, dtype=None):
+            return np.asarray(self.values, dtype=dtype)
+
+    def __init__(self, columns):
+        self.columns = columns
+
+    def items(self):
+        return ((name, Frame.Series(values)) for name, values in self.columns.items())
+
+
+def test_a_frame_like_pandas_is_read_by_its_columns():
+    base, columns = base_of("rigid"), columns_of("rigid", seed=5)
+    a = sweetspot.evaluate_many(base, columns)
+    b = sweetspot.evaluate_many(base, Frame(columns))
+    assert np.array_equal(a["peak_wrist_force_N"], b["peak_wrist_force_N"], equal_nan=True)
+    assert list(a["error"]) == list(b["error"])

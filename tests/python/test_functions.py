@@ -1,0 +1,95 @@
+"""modes, collide, string_bed_map and optimize against the command line and the
+model's own identities."""
+
+import csv
+import io
+import json
+
+import numpy as np
+import pytest
+import sweetspot
+from conftest import ROOT, cli_json, run_cli
+
+TOUR = str(ROOT / "designs/racquets/tour-100.json")
+STRUNG = str(ROOT / "designs/racquets/tour-100-strung.json")
+MAPPED = {"implement": {"length_in": 27, "mass_g": 318, "balance_cm": 32.5,
+                        "swingweight_kg_cm2": 325, "headsize_sq_in": 100},
+          "frame": {"RA": 66}, "strings": {"tension_lb": 52}}
+
+
+@pytest.mark.parametrize("count,method", [(3, "exact"), (2, "fe")])
+def test_modes_are_the_command_lines(count, method):
+    got = sweetspot.modes(TOUR, count=count, method=method)
+    expected = cli_json("modes", TOUR, "--format", "json", "--modes", count, "--method", method)
+    assert {k: got[k] for k in expected} == expected
+    shapes = got["free_shapes"]
+    assert shapes.shape == (len(expected["free"]), got["free_x_m"].size)
+    # Each mode's nodes are where its sampled shape changes sign; w(L) > 0.
+    x = got["free_x_m"]
+    for k, mode in enumerate(expected["free"]):
+        w = shapes[k]
+        assert w[-1] > 0
+        changes = np.flatnonzero(np.sign(w[1:]) != np.sign(w[:-1]))
+        assert len(changes) == len(mode["nodes"])
+        for i, node in zip(changes, mode["nodes"]):
+            assert x[i] <= node["from_butt_m"] <= x[i + 1]
+
+
+def test_collide_closes_its_ledger():
+    c = sweetspot.collide(STRUNG)
+    assert c["evaluation"] == sweetspot.evaluate(STRUNG, fidelity="collision")
+    outputs = c["evaluation"]["outputs"]
+    assert c["contact_time_s"] == outputs["contact_time_s"]
+    # The energy ledger: ball in = ball out + implement + vibration + losses.
+    total = (c["ball_out_J"] + c["implement_rigid_J"] + c["vibration_J"] + c["ball_loss_J"]
+             + c["strings_loss_J"])
+    assert abs(total - c["ball_in_J"]) < 1e-9 * c["ball_in_J"]
+    # The impulse is the force history's integral (trapezoids on the integrator's steps).
+    t, f = c["time_s"], c["force_N"]
+    assert t.size == f.size > 10
+    integral = float(np.sum(np.diff(t) * (f[1:] + f[:-1]) / 2))
+    assert abs(integral - c["impulse_N_s"]) < 1e-2 * c["impulse_N_s"]
+    assert abs(f.max() - c["peak_force_N"]) <= 1e-2 * c["peak_force_N"]
+
+
+def test_string_bed_map_is_the_command_lines(tmp_path):
+    file = tmp_path / "d.json"
+    file.write_text(json.dumps(MAPPED))
+    m = sweetspot.string_bed_map(MAPPED, columns=6, rows=5, fidelity="modal", threads=2)
+    done = run_cli("map", file, "--columns", 6, "--rows", 5, "--fidelity", "modal", "-q")
+    table = list(csv.DictReader(io.StringIO(done.stdout)))
+    on = m["on_bed"]
+    assert m["from_butt_m"].shape == (5, 6) and len(table) == on.sum()
+    keys = ["effective_mass_kg", "apparent_cor", "peak_wrist_force_N", "peak_twist_torque_N_m",
+            "vibration_energy_J"]
+    for row, (j, i) in zip(table, zip(*np.nonzero(on))):
+        assert float(row["from_butt_m"]) == m["from_butt_m"][j, i]
+        assert float(row["off_axis_m"]) == m["off_axis_m"][j, i]
+        for key in keys:
+            assert float(row[key]) == m[key][j, i], key
+    assert np.isnan(m["peak_wrist_force_N"][~on]).all()
+    # The map's rigid numbers are evaluate()'s at the same point.
+    j, i = np.argwhere(on)[len(table) // 2]
+    design = json.loads(json.dumps(MAPPED))
+    design["impact"] = {"from_butt_m": float(m["from_butt_m"][j, i]),
+                        "off_axis_m": float(m["off_axis_m"][j, i])}
+    one = sweetspot.evaluate(design, fidelity="rigid")["outputs"]
+    assert one["peak_wrist_force_N"] == pytest.approx(m["peak_wrist_force_N"][j, i], rel=1e-12)
+
+
+def test_optimize_answers_with_a_design_evaluate_reads():
+    study = ROOT / "designs/studies/7-lead-tape-for-power.json"
+    r = sweetspot.optimize(str(study), threads=1)
+    expected = cli_json("optimize", study, "--format", "json", "--threads", "1")
+    assert r["outcome"] == "optimum" and r["inconsistency"] == ""
+    assert r["best_design"] == expected["best_design"]
+    assert r["report"]["best_design"] == expected["best_design"]
+    # The answer is a design file: evaluated again, it gives the best outputs.
+    again = sweetspot.evaluate(r["best_design"], fidelity="collision")
+    assert again["outputs"] == r["best"]["outputs"]
+    assert r["variables"] == ["/implement/point_masses/0/from_butt_m",
+                              "/implement/point_masses/0/mass_kg"]
+    assert r["x"].shape == (2,) and r["history"].size == r["evaluations"]
+    swingweight = [c for c in r["constraints"] if c["name"].startswith("swingweight")][0]
+    assert swingweight["satisfied"] and swingweight["value"] <= 335 + swingweight["tolerance"]
+    assert r["best"]["outputs"]["rebound_speed_m_s"] >= r["start"]["outputs"]["rebound_speed_m_s"]
