@@ -8,25 +8,12 @@
 #include <string_view>
 
 #include "io/input_error.hpp"
+#include "io/json_reader.hpp"
 
 namespace py = pybind11;
 
 namespace sweetspot::python {
 namespace {
-
-// A JSON pointer's reference token: '~' and '/' escaped (RFC 6901).
-std::string token(std::string_view key) {
-  std::string out;
-  for (const char c : key) {
-    if (c == '~')
-      out += "~0";
-    else if (c == '/')
-      out += "~1";
-    else
-      out += c;
-  }
-  return out;
-}
 
 std::string type_name(py::handle value) {
   return py::str(py::type::handle_of(value).attr("__name__")).cast<std::string>();
@@ -72,7 +59,8 @@ io::Json to_json(py::handle value, const std::string& source, const std::string&
                                  py::repr(key).cast<std::string>());
       }
       const std::string name = key.cast<std::string>();
-      object[name] = to_json(item, source, pointer + "/" + token(name), depth + 1);
+      object[name] =
+          to_json(item, source, pointer + "/" + io::escape_pointer_token(name), depth + 1);
     }
     return object;
   }

@@ -121,8 +121,10 @@ class Rows {
       const Fidelity fidelity = resolve_fidelity(
           options_.fidelity.empty() ? std::string_view(base_fidelity_) : options_.fidelity,
           *design);
-      write(row, evaluate_validated(*design, fidelity, options_.modal_tolerance,
-                                    studies::thread_mode_cache()));
+      write(row, evaluate(*design, fidelity,
+                          {.rel_tol = options_.modal_tolerance,
+                           .modes = &studies::thread_mode_cache(),
+                           .validated = true}));
       return true;
     } catch (const std::exception&) {
       return false;  // the JSON path says why
@@ -140,8 +142,9 @@ class Rows {
         const Fidelity fidelity = resolve_fidelity(
             options_.fidelity.empty() ? std::string_view(design.fidelity) : options_.fidelity,
             design.design);
-        write(row, evaluate(design.design, fidelity, options_.modal_tolerance,
-                            studies::thread_mode_cache()));
+        write(row, evaluate(design.design, fidelity,
+                            {.rel_tol = options_.modal_tolerance,
+                             .modes = &studies::thread_mode_cache()}));
       } catch (const std::invalid_argument& e) {
         io::rethrow_in(io::read_design(document, where), e);  // with the key map
       }

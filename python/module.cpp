@@ -27,6 +27,7 @@
 #include "reports/modes_report.hpp"
 #include "reports/optimization_report.hpp"
 #include "studies/catalogue_header.hpp"
+#include "studies/modes.hpp"
 #include "studies/optimization.hpp"
 #include "studies/string_bed_map.hpp"
 #include "studies/study.hpp"
@@ -219,11 +220,11 @@ py::object modes_py(py::handle design, int count, double tol, const std::string&
   if (method != "exact" && method != "fe")
     throw py::value_error("method: expected exact or fe, got " + io::one_line(method));
   const io::DesignFile file = read_design_of(design);
-  std::optional<reports::ModesData> data;
+  std::optional<studies::ModesData> data;
   std::string text;
   {
     py::gil_scoped_release release;
-    data.emplace(reports::compute_modes(
+    data.emplace(studies::compute_modes(
         file, count, tol,
         method == "fe" ? ModeOptions::Method::kFiniteElement : ModeOptions::Method::kExact));
     text = reports::modes_report(*data, io::Format::kJson);

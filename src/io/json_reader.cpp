@@ -19,19 +19,6 @@
 namespace sweetspot::io {
 namespace {
 
-std::string escape_pointer_token(std::string_view token) {
-  std::string out;
-  for (const char c : token) {
-    if (c == '~')
-      out += "~0";
-    else if (c == '/')
-      out += "~1";
-    else
-      out += c;
-  }
-  return out;
-}
-
 // Builds the document while parsing, so that duplicate keys and depth are
 // seen with the exact JSON pointer where they occur.
 class StrictBuilder : public nlohmann::json_sax<Json> {
@@ -145,6 +132,19 @@ class StrictBuilder : public nlohmann::json_sax<Json> {
 };
 
 }  // namespace
+
+std::string escape_pointer_token(std::string_view token) {
+  std::string out;
+  for (const char c : token) {
+    if (c == '~')
+      out += "~0";
+    else if (c == '/')
+      out += "~1";
+    else
+      out += c;
+  }
+  return out;
+}
 
 Json parse_json(std::string_view text, const std::string& source) {
   if (text.find_first_not_of(" \t\r\n") == std::string_view::npos) {

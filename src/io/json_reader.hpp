@@ -103,6 +103,9 @@ std::optional<UnitScale> unit_scale(std::string_view key, std::string_view base,
 // "from_tip_m" -> from_butt_m, ...). Empty for a key of no known quantity.
 std::vector<std::string> alternative_spellings(std::string_view key);
 
+// A JSON pointer's reference token: '~' and '/' escaped (RFC 6901).
+std::string escape_pointer_token(std::string_view token);
+
 // Sets document[pointer] = value, first removing the alternative spellings of
 // the same quantity beside it, so that an override never contradicts a default.
 void override_field(Json& document, const std::string& pointer, Json value);

@@ -21,6 +21,16 @@ DesignFile read(const char* text) {
   return read_design(parse_json(text, "test.json"), "test.json");
 }
 
+// The JSON pointer reading `text` fails at, "(no error)" when it reads.
+std::string pointer_of(const char* text) {
+  try {
+    read(text);
+  } catch (const InputError& e) {
+    return e.pointer();
+  }
+  return "(no error)";
+}
+
 TEST_CASE("Industry units are converted to SI by their key suffix") {
   const DesignFile d = read(R"({
     "implement": {"length_in": 27, "mass_g": 300, "balance_cm": 32, "swingweight_kg_cm2": 320},
@@ -145,14 +155,6 @@ TEST_CASE("A round profile is read in people's units and gives the uniform rod's
 }
 
 TEST_CASE("A profile's errors name the key the file used") {
-  const auto pointer_of = [](const char* text) {
-    try {
-      read(text);
-    } catch (const InputError& e) {
-      return e.pointer();
-    }
-    return std::string("(no error)");
-  };
   CHECK(pointer_of(R"({"implement": {"profile": [{"from_butt_cm": 0, "diameter_cm": 5},
         {"from_butt_cm": 40, "diameter_cm": 5}, {"from_butt_cm": 30, "diameter_cm": 6}],
         "density_kg_m3": 600, "youngs_modulus_GPa": 10}})") == "/implement/profile/2/from_butt_cm");
@@ -178,14 +180,6 @@ TEST_CASE("A profile's errors name the key the file used") {
 }
 
 TEST_CASE("JSON errors name the pointer where they are") {
-  const auto pointer_of = [](const char* text) {
-    try {
-      read(text);
-    } catch (const InputError& e) {
-      return e.pointer();
-    }
-    return std::string("(no error)");
-  };
   CHECK(pointer_of(R"({"implement": {"sections": [{"length_m": 0.7, "mass_kg": 0.3,
                       "mass_kg": 0.2}]}})") == "/implement/sections/0/mass_kg");
   CHECK(pointer_of(R"({"implement": {"sections": [{"length_m": 0.7, "mass_kg": 0.3},

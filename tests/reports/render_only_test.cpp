@@ -43,13 +43,12 @@ const std::vector<std::string>& banned_headers() {
 const std::vector<std::string>& banned_names() {
   static const std::vector<std::string> names{
       // The core.
-      "evaluate", "evaluate_validated", "evaluate_unchecked", "evaluate_rigid_outcome",
-      "rigid_case", "rigid_outcomes", "ImpactSweep", "DesignCollision", "collide", "ModeCache",
-      "free_modes", "hand_held_modes", "flexible_frame", "hand_held_fundamental", "response_model",
-      "impact_response", "with_fundamental", "derive_cor", "fundamental_for_cor",
-      "tension_impact_duration", "tension_for_duration", "find_root", "effective_mass",
-      "velocity_ratio", "free_conjugate_from_butt", "hand_held_rotation_axis_from_butt",
-      "hand_held_system",
+      "evaluate", "evaluate_unchecked", "evaluate_rigid_outcome", "rigid_case", "rigid_outcomes",
+      "ImpactSweep", "DesignCollision", "collide", "ModeCache", "free_modes", "hand_held_modes",
+      "flexible_frame", "hand_held_fundamental", "response_model", "impact_response",
+      "with_fundamental", "derive_cor", "fundamental_for_cor", "tension_impact_duration",
+      "tension_for_duration", "find_root", "effective_mass", "velocity_ratio",
+      "free_conjugate_from_butt", "hand_held_rotation_axis_from_butt", "hand_held_system",
       // The optimiser.
       "minimize",
       // io's door to evaluate.
