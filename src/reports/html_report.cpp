@@ -401,6 +401,58 @@ std::string racquet_side_svg(const io::DesignFile& file, const Evaluation& e) {
   return svg + "</svg>\n";
 }
 
+// An implement that is not a racquet (the paper's beam, a bat) from the
+// side, to scale along its length: its outline from its sections. With the
+// profile's density, each section is as wide as the solid circle of its mass
+// per length (the profile's own diameter); without it, the widths follow the
+// square root of the mass per length, the widest kBeamDepth_cm.
+std::string implement_side_svg(const io::DesignFile& file, const Evaluation& e,
+                               std::optional<double> density_kg_m3) {
+  const Implement& implement = file.design.implement;
+  const double L = implement.length_m() * 100.0;
+  double widest_mu = 0.0;
+  for (const Section& s : implement.sections())
+    widest_mu = std::max(widest_mu, s.mass_kg / s.length_m);
+  const auto width_cm = [&](const Section& s) {
+    const double mu = s.mass_kg / s.length_m;
+    if (density_kg_m3) return 100.0 * std::sqrt(4.0 * mu / (M_PI * *density_kg_m3));
+    return widest_mu > 0.0 ? kBeamDepth_cm * std::sqrt(mu / widest_mu) : kBeamDepth_cm;
+  };
+  double half = 0.0;
+  for (const Section& s : implement.sections()) half = std::max(half, width_cm(s) / 2);
+  std::string outline;  // the top edge tip to butt, then the bottom edge back
+  std::string lower;
+  double from_butt = L;
+  const std::vector<Section>& sections = implement.sections();
+  for (auto s = sections.rbegin(); s != sections.rend(); ++s) {
+    const double x0 = L - from_butt, x1 = x0 + s->length_m * 100.0, w = width_cm(*s) / 2;
+    outline +=
+        fmt::format("{}{} {} L{} {} ", outline.empty() ? "M" : "L", n(x0), n(-w), n(x1), n(-w));
+    lower = fmt::format("L{} {} L{} {} ", n(x1), n(w), n(x0), n(w)) + lower;
+    from_butt -= s->length_m * 100.0;
+  }
+  std::vector<Mark> ms = marks(file, e, 0.0);
+  tape_marks(file, ms);
+  const double impact = L - file.design.impact_from_butt_m * 100.0;
+  ms.push_back({impact, "impact", ""});
+  const double top = -half - kBall_cm - 12.0;
+  const double bottom = half + 9.0;
+  std::string svg = fmt::format(
+      "<svg class=\"drawing\" viewBox=\"-2 {} {} {}\" role=\"img\" aria-labelledby=\"side-title\" "
+      "xmlns=\"http://www.w3.org/2000/svg\"><title id=\"side-title\">{} from the side, to "
+      "scale</title>\n<path class=\"shaft\" d=\"{}{}Z\"/>\n",
+      n(top), n(L + 4), n(bottom - top), html_escape(file.name), outline, lower);
+  svg += hand_and_tape(file, half, true);
+  svg += fmt::format(
+      "<circle class=\"ball\" cx=\"{}\" cy=\"{}\" r=\"{}\"><title>the ball at the impact</title>"
+      "</circle>\n",
+      n(impact), n(-half - kBall_cm / 2), n(kBall_cm / 2));
+  for (const Mark& m : marks(file, e, 0.0)) svg += m.symbol + "\n";
+  svg += labels(ms, 0.0, top + 1.8);
+  svg += ruler(L, half + 3.0);
+  return svg + "</svg>\n";
+}
+
 std::string racquets_to_scale_html(const std::vector<DrawnRacquet>& racquets,
                                    const std::string& id) {
   double longest_cm = 0.0;
@@ -516,6 +568,29 @@ std::string positions_table_html(const io::DesignFile& file, const Evaluation& e
 // behind the drawing.
 std::string racquet_html(const io::DesignFile& file, const Evaluation& e,
                          const io::Json& document) {
+  if (!studies::is_racquet(file) && file.design.implement.has_mass_distribution()) {
+    // The profile's density, when the file gives one, draws its true diameters.
+    std::optional<double> density;
+    if (document.is_object() && document.contains("implement") &&
+        document["implement"].is_object() && document["implement"].contains("density_kg_m3") &&
+        document["implement"]["density_kg_m3"].is_number())
+      density = document["implement"]["density_kg_m3"].get<double>();
+    std::string html = "<section id=\"racquet\"><h2>The implement, to scale</h2>\n";
+    html += "<figure class=\"drawing-figure\">" + implement_side_svg(file, e, density) +
+            fmt::format(
+                "<figcaption>From the side, the ball arriving from above. {}</figcaption>"
+                "</figure>\n",
+                density ? "The outline is the profile's diameter along its length."
+                        : "Each section's width follows the square root of its mass per "
+                          "length (its diameter, were it round and of one material); the "
+                          "widths are a sketch, the positions are computed.");
+    html += positions_table_html(file, e);
+    return html + fmt::format(
+                      "<p>Length {} cm, mass {:.0f} g, inertia about the axis 10 cm from the butt "
+                      "{:.0f} kg·cm².</p>\n</section>\n",
+                      html_cm(file.design.implement.length_m()), e.mass_kg * 1000.0,
+                      e.swingweight_kg_m2 * 1e4);
+  }
   const double head_area = drawn_head_area_m2(file, document);
   const bool head_given = file.design.strings || head_area != kDefaultHeadArea_m2;
   std::string html = "<section id=\"racquet\"><h2>The racquet, to scale</h2>\n";

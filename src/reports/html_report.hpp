@@ -6,6 +6,7 @@
 // studies::design_page() (studies/design_page.hpp) and only drawn here; the
 // command line writes it (`sweetspot report DESIGN.json --html FILE`).
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -31,6 +32,12 @@ double drawn_head_area_m2(const io::DesignFile& design, const io::Json& document
 std::string racquet_top_svg(const io::DesignFile& design, const Evaluation& evaluation,
                             double head_area_m2, const std::string& id = "top");
 std::string racquet_side_svg(const io::DesignFile& design, const Evaluation& evaluation);
+// An implement that is not a racquet (a beam, a bat) from the side: its
+// sections' outline, each as wide as the solid circle of its mass per length
+// at `density_kg_m3` (a profile's own diameters), or, without it, widths
+// following the square root of the mass per length.
+std::string implement_side_svg(const io::DesignFile& design, const Evaluation& evaluation,
+                               std::optional<double> density_kg_m3);
 
 // A racquet to draw beside others: its file, its evaluation (both outlive
 // the call) and a caption (markup).
