@@ -372,9 +372,14 @@ std::string racquet_top_svg(const io::DesignFile& file, const Evaluation& e, dou
   return svg + "</svg>\n";
 }
 
-std::string racquet_side_svg(const io::DesignFile& file, const Evaluation& e) {
+namespace {
+
+// A drawing from the side, to scale: `body` (the implement's outline,
+// `half` cm either side of the axis), the hand, the tape, the ball arriving
+// on the face (from above in this view), the marks and the ruler.
+std::string side_view_svg(const io::DesignFile& file, const Evaluation& e, double half,
+                          const std::string& title_html, const std::string& body) {
   const double L = file.design.implement.length_m() * 100.0;
-  const double half = kBeamDepth_cm / 2;
   std::vector<Mark> ms = marks(file, e, 0.0);
   tape_marks(file, ms);
   const double impact = L - file.design.impact_from_butt_m * 100.0;
@@ -383,14 +388,11 @@ std::string racquet_side_svg(const io::DesignFile& file, const Evaluation& e) {
   const double bottom = half + 9.0;
   std::string svg = fmt::format(
       "<svg class=\"drawing\" viewBox=\"-2 {} {} {}\" role=\"img\" aria-labelledby=\"side-title\" "
-      "xmlns=\"http://www.w3.org/2000/svg\"><title id=\"side-title\">The racquet from the side, "
+      "xmlns=\"http://www.w3.org/2000/svg\"><title id=\"side-title\">{} from the side, "
       "to scale</title>\n",
-      n(top), n(L + 4), n(bottom - top));
-  svg += fmt::format(
-      "<rect class=\"shaft\" x=\"0\" y=\"{}\" width=\"{}\" height=\"{}\" rx=\"0.8\"/>\n", n(-half),
-      n(L), n(kBeamDepth_cm));
+      n(top), n(L + 4), n(bottom - top), title_html);
+  svg += body;
   svg += hand_and_tape(file, half, true);
-  // The ball arrives on the strings' face (from above in this view).
   svg += fmt::format(
       "<circle class=\"ball\" cx=\"{}\" cy=\"{}\" r=\"{}\"><title>the ball at the impact</title>"
       "</circle>\n",
@@ -399,6 +401,17 @@ std::string racquet_side_svg(const io::DesignFile& file, const Evaluation& e) {
   svg += labels(ms, 0.0, top + 1.8);
   svg += ruler(L, half + 3.0);
   return svg + "</svg>\n";
+}
+
+}  // namespace
+
+std::string racquet_side_svg(const io::DesignFile& file, const Evaluation& e) {
+  const double L = file.design.implement.length_m() * 100.0;
+  return side_view_svg(
+      file, e, kBeamDepth_cm / 2, "The racquet",
+      fmt::format(
+          "<rect class=\"shaft\" x=\"0\" y=\"{}\" width=\"{}\" height=\"{}\" rx=\"0.8\"/>\n",
+          n(-kBeamDepth_cm / 2), n(L), n(kBeamDepth_cm)));
 }
 
 // An implement that is not a racquet (the paper's beam, a bat) from the
@@ -431,26 +444,8 @@ std::string implement_side_svg(const io::DesignFile& file, const Evaluation& e,
     lower = fmt::format("L{} {} L{} {} ", n(x1), n(w), n(x0), n(w)) + lower;
     from_butt -= s->length_m * 100.0;
   }
-  std::vector<Mark> ms = marks(file, e, 0.0);
-  tape_marks(file, ms);
-  const double impact = L - file.design.impact_from_butt_m * 100.0;
-  ms.push_back({impact, "impact", ""});
-  const double top = -half - kBall_cm - 12.0;
-  const double bottom = half + 9.0;
-  std::string svg = fmt::format(
-      "<svg class=\"drawing\" viewBox=\"-2 {} {} {}\" role=\"img\" aria-labelledby=\"side-title\" "
-      "xmlns=\"http://www.w3.org/2000/svg\"><title id=\"side-title\">{} from the side, to "
-      "scale</title>\n<path class=\"shaft\" d=\"{}{}Z\"/>\n",
-      n(top), n(L + 4), n(bottom - top), html_escape(file.name), outline, lower);
-  svg += hand_and_tape(file, half, true);
-  svg += fmt::format(
-      "<circle class=\"ball\" cx=\"{}\" cy=\"{}\" r=\"{}\"><title>the ball at the impact</title>"
-      "</circle>\n",
-      n(impact), n(-half - kBall_cm / 2), n(kBall_cm / 2));
-  for (const Mark& m : marks(file, e, 0.0)) svg += m.symbol + "\n";
-  svg += labels(ms, 0.0, top + 1.8);
-  svg += ruler(L, half + 3.0);
-  return svg + "</svg>\n";
+  return side_view_svg(file, e, half, html_escape(file.name),
+                       fmt::format("<path class=\"shaft\" d=\"{}{}Z\"/>\n", outline, lower));
 }
 
 std::string racquets_to_scale_html(const std::vector<DrawnRacquet>& racquets,
