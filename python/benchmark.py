@@ -5,8 +5,10 @@
 Rigid designs in the paper's parametrisation (Table I's row 1 with the length,
 mass, head/handle mass ratio and impact point varied), evaluated on one thread
 by `sweetspot evaluate --batch` from a CSV file and by sweetspot.evaluate_many
-from NumPy arrays; then `import sweetspot` in a fresh interpreter and one
-evaluate(dict). Prints rows per second and the ratio."""
+from NumPy arrays; then a million of them asking for the paper's outputs, by
+evaluate_many's column-wise path and by NumPy's own vectorised implementation
+of the same model (numpy_model.py), side by side; then `import sweetspot` in a
+fresh interpreter and one evaluate(dict). Prints rows per second and the ratios."""
 
 import csv
 import json
@@ -19,6 +21,9 @@ import time
 
 import numpy as np
 import sweetspot
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+import numpy_model  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 CLI = os.environ.get("SWEETSPOT_CLI", str(ROOT / "build" / "sweetspot"))
@@ -62,6 +67,27 @@ def main():
     threads = os.cpu_count() or 1
     wide = best_of(3, lambda: sweetspot.evaluate_many(BASE, columns, threads=threads))
     print(f"  sweetspot.evaluate_many, {threads} threads          {wide:7.3f} s  {rows / wide:10.0f} rows/s")
+
+    million = 1_000_000
+    rng = np.random.default_rng(2004)
+    paper = {
+        "implement.length_m": rng.uniform(0.6, 0.75, million),
+        "implement.mass_kg": rng.uniform(0.2, 0.4, million),
+        "implement.head_to_handle_mass_ratio": rng.uniform(0.6, 1.2, million),
+        "impact.from_tip_m": rng.uniform(0.0, 0.3, million),
+    }
+    wanted = ["effective_mass_kg", "apparent_cor", "peak_impact_force_N", "wrist_force_ratio",
+              "peak_wrist_force_N"]
+    arrays = [paper[k] for k in paper]
+    columnwise = best_of(7, lambda: sweetspot.evaluate_many(BASE, paper, threads=1,
+                                                            outputs=wanted))
+    numpy = best_of(7, lambda: numpy_model.paper_rigid(*arrays))
+    result = sweetspot.evaluate_many(BASE, paper, threads=1, outputs=wanted)
+    assert result["ok"].all()
+    print(f"{million} rigid rows, the paper's five outputs, one core (best of 7):")
+    print(f"  NumPy, vectorised (numpy_model.py)              {1e3 * numpy:7.1f} ms")
+    print(f"  sweetspot.evaluate_many(outputs=...)            {1e3 * columnwise:7.1f} ms"
+          f"  ({numpy / columnwise:.1f}x NumPy)")
 
     code = "import time; t = time.perf_counter(); import sweetspot; print(time.perf_counter() - t)"
     imports = [float(subprocess.run([sys.executable, "-c", code], check=True, capture_output=True,

@@ -8,6 +8,7 @@
 #include <exception>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <stdexcept>
 
@@ -18,6 +19,7 @@
 #include "io/parallel.hpp"
 #include "studies/catalogue_header.hpp"
 #include "studies/design_binding.hpp"
+#include "studies/rigid_columns.hpp"
 #include "studies/thread_mode_cache.hpp"
 #include "sweetspot/evaluate.hpp"
 
@@ -37,7 +39,7 @@ std::string row_name(std::size_t row) { return fmt::format("row {}", row); }
 class Rows {
  public:
   Rows(const io::Json& base, std::span<const Column> columns, const ManyOptions& options,
-       std::span<double* const> outputs, std::vector<std::string>& errors)
+       std::span<double* const> outputs, RowErrors& errors)
       : base_(base),
         columns_(columns),
         options_(options),
@@ -46,6 +48,11 @@ class Rows {
         pointers_(column_pointers(columns)),
         bad_column_(columns.size() + 1) {
     for (const std::string& pointer : pointers_) overrides_.emplace_back(pointer);
+    wanted_ = options.outputs;
+    if (wanted_.empty()) {
+      for (std::size_t k = 0; k < io::output_specs().size(); ++k) wanted_.push_back(k);
+    }
+    for (const Column& column : columns) views_.push_back({column.data, column.stride});
     const auto fidelity = base.find("fidelity");
     base_fidelity_ = fidelity != base.end() && fidelity->is_string() ? fidelity->get<std::string>()
                                                                      : std::string("auto");
@@ -61,6 +68,7 @@ class Rows {
             io::describe_design(document, row_name(row)), pointers_);
         if (!compiled) return;  // a column no binding sets
         compiled_ = std::make_unique<const studies::CompiledDesign>(std::move(*compiled));
+        compile_columns();
         return;
       } catch (const std::exception&) {
         // Not this row: try the next one.
@@ -69,6 +77,23 @@ class Rows {
   }
 
   void run(std::size_t from, std::size_t to) {
+    if (rigid_) {
+      // The kernel's blocks, then the rows it leaves, one by one.
+      constexpr std::size_t kChunk = 4096;
+      std::vector<unsigned char> answered(kChunk);
+      for (std::size_t begin = from; begin < to; begin += kChunk) {
+        const std::size_t end = std::min(to, begin + kChunk);
+        rigid_->run(views_, begin, end, rigid_wanted_, outputs_, answered);
+        for (std::size_t row = begin; row < end; ++row) {
+          if (!answered[row - begin]) run_rows(row, row + 1);
+        }
+      }
+      return;
+    }
+    run_rows(from, to);
+  }
+
+  void run_rows(std::size_t from, std::size_t to) {
     std::optional<studies::BoundDesign> bound;
     if (compiled_) bound.emplace(*compiled_);
     std::vector<double> values(columns_.size());
@@ -166,13 +191,36 @@ class Rows {
 
   void write(std::size_t row, const Evaluation& evaluation) const {
     const std::span<const io::OutputSpec> specs = io::output_specs();
-    for (std::size_t k = 0; k < specs.size(); ++k)
-      outputs_[k][row] = specs[k].value(evaluation).value_or(kNaN);
+    for (std::size_t k = 0; k < wanted_.size(); ++k)
+      outputs_[k][row] = specs[wanted_[k]].value(evaluation).value_or(kNaN);
+  }
+
+  // The column-wise path, where the rows are rigid evaluations of a paper
+  // racquet and every output wanted is one it answers.
+  void compile_columns() {
+    const Fidelity fidelity =
+        resolve_fidelity(options_.fidelity.empty() ? std::string_view(base_fidelity_)
+                                                   : std::string_view(options_.fidelity),
+                         compiled_->description().design);
+    if (fidelity != Fidelity::kRigid) return;
+    const std::span<const io::OutputSpec> specs = io::output_specs();
+    const std::span<const std::string_view> answers = studies::rigid_column_outputs();
+    std::vector<std::size_t> wanted;
+    for (const std::size_t k : wanted_) {
+      const auto at = std::find(answers.begin(), answers.end(), specs[k].name);
+      if (at == answers.end()) return;
+      wanted.push_back(static_cast<std::size_t>(at - answers.begin()));
+    }
+    auto rigid = studies::RigidColumns::compile(*compiled_);
+    if (!rigid) return;
+    rigid_ = std::make_unique<const studies::RigidColumns>(*rigid);
+    rigid_wanted_ = std::move(wanted);
   }
 
   void fail(std::size_t row, std::string message) const {
     for (double* output : outputs_) output[row] = kNaN;
-    errors_[row] = io::one_line(message);
+    const std::lock_guard<std::mutex> lock(errors_mutex_);
+    errors_.emplace_back(row, io::one_line(message));
   }
 
   void note_bad_column(std::size_t j, const std::string& detail) const {
@@ -187,11 +235,16 @@ class Rows {
   std::span<const Column> columns_;
   const ManyOptions& options_;
   std::span<double* const> outputs_;
-  std::vector<std::string>& errors_;
+  RowErrors& errors_;
+  mutable std::mutex errors_mutex_;
   std::vector<std::string> pointers_;
   std::vector<io::FieldOverride> overrides_;
   std::string base_fidelity_;
   std::unique_ptr<const studies::CompiledDesign> compiled_;
+  std::vector<std::size_t> wanted_;  // indices into io::output_specs(), one per output
+  std::vector<studies::ColumnView> views_;
+  std::unique_ptr<const studies::RigidColumns> rigid_;
+  std::vector<std::size_t> rigid_wanted_;  // indices into studies::rigid_column_outputs()
   // The column at fault (none: columns.size() + 1; being written: + 2).
   mutable std::atomic<std::size_t> bad_column_;
   mutable std::string bad_column_detail_;
@@ -222,8 +275,8 @@ std::vector<std::string> column_pointers(std::span<const Column> columns) {
 
 void evaluate_columns(const io::Json& base, std::span<const Column> columns, std::size_t rows,
                       const ManyOptions& options, std::span<double* const> outputs,
-                      std::vector<std::string>& errors) {
-  errors.assign(rows, std::string());
+                      RowErrors& errors) {
+  errors.clear();
   Rows evaluator(base, columns, options, outputs, errors);
   evaluator.compile(rows);
   io::for_blocks(rows, options.threads,

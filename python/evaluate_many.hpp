@@ -13,6 +13,7 @@
 #include <cstddef>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "io/json_reader.hpp"
@@ -29,19 +30,26 @@ struct ManyOptions {
   std::string fidelity;  // rigid, modal, response, collision or auto; empty: the base's own
   double modal_tolerance = 1e-6;
   int threads = 1;
+  // The outputs wanted, as indices into io::output_specs(); empty: every one.
+  std::vector<std::size_t> outputs;
 };
 
 // The columns checked as a catalogue's header, with the pointer each sets.
 // Throws InputError naming "columns".
 std::vector<std::string> column_pointers(std::span<const Column> columns);
 
-// Evaluates `rows` rows; outputs[k][i] is output k of io::output_specs() at
-// row i (NaN when null or the row failed), errors[i] the row's message ("" when
-// it evaluated). Throws InputError naming "columns" for a column no design
+// The rows that failed, each with its message, in no particular order.
+using RowErrors = std::vector<std::pair<std::size_t, std::string>>;
+
+// Evaluates `rows` rows; outputs[k][i] is the k-th output wanted (of
+// io::output_specs(), every one when options.outputs is empty) at row i (NaN
+// when null or the row failed); errors holds each failed row with its message. Rigid rows of a design in the paper's parametrisation whose
+// outputs are all among studies::rigid_column_outputs() go through the
+// column-wise kernel (studies/rigid_columns.hpp), a block at a time. Throws InputError naming "columns" for a column no design
 // has (a field of another form of the implement, a number where the base
 // holds an object).
 void evaluate_columns(const io::Json& base, std::span<const Column> columns, std::size_t rows,
                       const ManyOptions& options, std::span<double* const> outputs,
-                      std::vector<std::string>& errors);
+                      RowErrors& errors);
 
 }  // namespace sweetspot::python

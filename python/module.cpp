@@ -100,11 +100,31 @@ py::object evaluate_py(py::handle design, const std::optional<std::string>& fide
 
 py::dict evaluate_many_py(py::handle base, py::handle columns,
                           const std::optional<std::string>& fidelity,
-                          const std::optional<int>& threads, double tol) {
+                          const std::optional<int>& threads, double tol,
+                          const std::optional<std::vector<std::string>>& wanted) {
   ManyOptions options;
   options.fidelity = checked_fidelity(fidelity);
   options.modal_tolerance = checked_tolerance(tol);
   options.threads = checked_threads(threads);
+  const std::span<const io::OutputSpec> specs = io::output_specs();
+  if (wanted) {
+    if (wanted->empty()) throw io::InputError("outputs", "", "expected at least one output name");
+    for (const std::string& name : *wanted) {
+      const auto at = std::find_if(specs.begin(), specs.end(),
+                                   [&](const io::OutputSpec& s) { return s.name == name; });
+      if (at == specs.end()) {
+        throw io::InputError("outputs", "",
+                             "unknown output " + studies::shown(name) +
+                                 ": expected a name of sweetspot.outputs()");
+      }
+      const auto k = static_cast<std::size_t>(at - specs.begin());
+      if (std::find(options.outputs.begin(), options.outputs.end(), k) != options.outputs.end())
+        throw io::InputError("outputs", "", "output " + studies::shown(name) + " given twice");
+      options.outputs.push_back(k);
+    }
+  } else {
+    for (std::size_t k = 0; k < specs.size(); ++k) options.outputs.push_back(k);
+  }
   const Document document = read_document(base);
   // The base is checked once, as `--base` is: a design on its own.
   if (!document.json.is_object() || !document.json.contains("implement")) {
@@ -164,31 +184,36 @@ py::dict evaluate_many_py(py::handle base, py::handle columns,
     cols.push_back(std::move(column));
   }
   const std::size_t n = rows.value_or(1);
-  const std::span<const io::OutputSpec> specs = io::output_specs();
   std::vector<py::array_t<double>> outputs;
   std::vector<double*> pointers;
-  for (std::size_t k = 0; k < specs.size(); ++k) {
+  for (std::size_t k = 0; k < options.outputs.size(); ++k) {
     outputs.emplace_back(static_cast<py::ssize_t>(n));
     pointers.push_back(outputs.back().mutable_data());
   }
-  std::vector<std::string> errors;
+  RowErrors errors;
   {
     py::gil_scoped_release release;
     evaluate_columns(document.json, cols, n, options, pointers, errors);
   }
   py::dict result;
-  for (std::size_t k = 0; k < specs.size(); ++k)
-    result[py::str(std::string(specs[k].name))] = outputs[k];
+  for (std::size_t k = 0; k < options.outputs.size(); ++k)
+    result[py::str(std::string(specs[options.outputs[k]].name))] = outputs[k];
   py::array_t<bool> ok(static_cast<py::ssize_t>(n));
+  std::fill_n(ok.mutable_data(), n, true);
   py::array error(py::dtype("O"), std::vector<py::ssize_t>{static_cast<py::ssize_t>(n)});
+  PyObject** slots = static_cast<PyObject**>(error.mutable_data());
+  const py::str empty("");  // one object for every row that evaluated
   for (std::size_t i = 0; i < n; ++i) {
-    ok.mutable_data()[i] = errors[i].empty();
-    PyObject* text = PyUnicode_DecodeUTF8(errors[i].data(),
-                                          static_cast<Py_ssize_t>(errors[i].size()), "replace");
+    Py_XDECREF(slots[i]);
+    slots[i] = empty.inc_ref().ptr();
+  }
+  for (const auto& [row, message] : errors) {
+    PyObject* text = PyUnicode_DecodeUTF8(message.data(), static_cast<Py_ssize_t>(message.size()),
+                                          "replace");
     if (!text) throw py::error_already_set();
-    PyObject** slot = static_cast<PyObject**>(error.mutable_data()) + i;
-    Py_XDECREF(*slot);
-    *slot = text;
+    ok.mutable_data()[row] = false;
+    Py_XDECREF(slots[row]);
+    slots[row] = text;
   }
   result["ok"] = ok;
   result["error"] = error;
@@ -444,6 +469,7 @@ command line) when the model cannot answer.)");
 
   m.def("evaluate_many", &evaluate_many_py, py::arg("base"), py::arg("columns"),
         py::arg("fidelity") = py::none(), py::arg("threads") = py::none(), py::arg("tol") = 1e-6,
+        py::arg("outputs") = py::none(),
         R"(Many designs at once: a base design and columns of numbers, as `sweetspot evaluate
 --batch CATALOGUE.csv --base BASE.json` evaluates a catalogue.
 
@@ -458,8 +484,13 @@ fidelity: as evaluate(); None: the base's own.
 threads: threads the rows are shared among (--threads); None (default): every core. The
     GIL is released while the rows are evaluated.
 tol: as evaluate().
+outputs: the names of the outputs wanted (of outputs()); None (default): every one. Rigid
+    rows of a design in the paper's parametrisation (length, mass, head-to-handle ratio)
+    asking only for effective_mass_kg, apparent_cor, rebound_speed_m_s, impulse_N_s,
+    peak_impact_force_N, wrist_force_ratio, peak_wrist_force_N, cor or impact_duration_s
+    are evaluated column-wise, a block of rows at a time (the same numbers, bit for bit).
 
-Returns a dict: for each output of evaluate() (outputs()) a float64 array, one value per
+Returns a dict: for each output wanted (every output of evaluate(), outputs(), by default) a float64 array, one value per
 row, in its SI unit (NaN where the output is None or the row failed); 'ok', a bool array;
 'error', an object array holding each failed row's message ('row 7: /implement/mass_kg:
 must be in ..., got ...', the command line's words) and '' for the others. A bad row never

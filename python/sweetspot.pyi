@@ -1,6 +1,6 @@
 # Type stubs of the sweetspot module (python/module.cpp); docs/python.md.
 import os
-from typing import Any, Mapping, Optional, Union
+from typing import Any, Mapping, Optional, Sequence, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -35,6 +35,7 @@ def evaluate_many(
     fidelity: Fidelity = None,
     threads: Optional[int] = None,
     tol: float = 1e-6,
+    outputs: Optional[Sequence[str]] = None,
 ) -> dict[str, npt.NDArray[Any]]:
     """Rows of designs from columns keyed by dotted field names; one float64 array per output,
     'ok' (bool) and 'error' (object, '' for a row that evaluated)."""

@@ -8,6 +8,8 @@
 // path is DesignCollision (collision.hpp), the modes' ModeCache
 // (mode_cache.hpp). Use evaluate() unless a profile says otherwise.
 
+#include <span>
+
 #include "sweetspot/design.hpp"
 #include "sweetspot/evaluate.hpp"
 #include "sweetspot/mass_properties.hpp"
@@ -58,5 +60,28 @@ class ImpactSweep {
   MassProperties system_;
   Evaluation base_;
 };
+
+// ------------------------------------------------------------ column-wise
+// Cross (2004) Table I racquets (Implement::paper_racquet, no point masses),
+// each held in the hand and hit on the long axis, as one array per input:
+// the rigid model of a million designs in the paper's parametrisation at the
+// speed of rigid_outcomes(). Every span has the same length.
+struct PaperRigidCases {
+  std::span<const double> length_m, mass_kg, head_to_handle_mass_ratio;
+  std::span<const double> hand_mass_kg, hand_center_from_butt_m, forearm_equivalent_mass_kg;
+  std::span<const double> ball_mass_kg, ball_speed_m_s, cor, impact_duration_s;
+  std::span<const double> impact_from_butt_m;
+};
+
+// For each case i, answered[i] = 1 and the outcomes, bit for bit those of
+// evaluate(design, Fidelity::kRigid) for the design with these numbers
+// (effective_mass_kg ... peak_wrist_force_N, and cop_hand_from_butt_m), where
+// the case lies inside the ranges validate() accepts, its results are finite
+// and they keep the rigid model's laws (invariants.hpp); else answered[i] = 0
+// and its outcomes are unspecified: evaluate() says why, or answers a case
+// at the edge of its range that this leaves to it. Throws
+// std::invalid_argument naming the first span of another length. No allocation.
+void paper_rigid_outcomes(const PaperRigidCases& cases, const RigidOutcomes& out,
+                          std::span<unsigned char> answered);
 
 }  // namespace sweetspot

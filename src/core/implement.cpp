@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "core/check.hpp"
+#include "core/rigid_kernel.hpp"
 #include "sweetspot/errors.hpp"
 
 namespace sweetspot {
@@ -40,7 +41,7 @@ MassProperties section_mass_properties(const std::vector<Section>& sections) {
                                kMaxEI_N_m2, "N m^2");
     }
     mass += s.mass_kg;
-    first_moment += s.mass_kg * (x_start + 0.5 * s.length_m);
+    first_moment += kernel::section_first_moment(s.mass_kg, x_start, s.length_m);
     x_start += s.length_m;
   }
   if (!(mass > 0.0)) {
@@ -54,7 +55,7 @@ MassProperties section_mass_properties(const std::vector<Section>& sections) {
   x_start = 0.0;
   for (const Section& s : sections) {
     const double arm = x_start + 0.5 * s.length_m - com;
-    I_cm += s.mass_kg * (s.length_m * s.length_m / 12.0 + arm * arm);
+    I_cm += kernel::section_inertia(s.mass_kg, s.length_m, arm);
     x_start += s.length_m;
   }
   if (!(I_cm >= std::numeric_limits<double>::min())) {

@@ -1,9 +1,15 @@
 #include "sweetspot/kernels.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
+#include <stdexcept>
+#include <string>
 
 #include "core/check.hpp"
 #include "core/kernels_detail.hpp"
+#include "core/rigid_kernel.hpp"
 #include "sweetspot/errors.hpp"
 #include "sweetspot/head_geometry.hpp"
 #include "sweetspot/invariants.hpp"
@@ -181,6 +187,170 @@ Evaluation ImpactSweep::at(double impact_from_butt_m, double off_axis_m) const {
               e);
   check_invariants(e, design_);
   return e;
+}
+
+}  // namespace sweetspot
+
+namespace sweetspot {
+namespace {
+
+// value in [min, max], false for NaN: the test of detail::require_in_range.
+// The tests below combine with & rather than &&, so that the loops over a
+// block have no branches and are vectorised.
+inline bool within(double value, double min, double max) {
+  return (value >= min) & (value <= max);
+}
+
+inline bool finite(double value) { return std::abs(value) <= std::numeric_limits<double>::max(); }
+
+// The rigid model's laws (the tests broken_invariant() in invariants.cpp
+// makes of a rigid evaluation), each multiplied through by its positive
+// denominator and with half the tolerance, so that a case passing here passes
+// there whatever the rounding of the division it leaves out.
+inline bool keeps_laws(double m, double v1, double cor, double M_eff, double e_A, double J,
+                       double F0, double T) {
+  const double ball_in = 0.5 * m * v1 * v1;
+  const double half_tol_J = 0.5 * kInvariantRoundOff * ball_in;
+  const double rebound = e_A * v1;
+  const double ball_out = 0.5 * m * rebound * rebound;
+  return (M_eff > 0.0) &
+         (e_A * (M_eff + m) >= -m - 0.5 * kInvariantRoundOff * (M_eff + m)) &
+         (e_A <= cor + 0.5 * kInvariantRoundOff) & (J > 0.0) & (T > 0.0) & (F0 > 0.0) &
+         (ball_out <= ball_in + half_tol_J) &
+         (0.5 * J * J <= (ball_in - ball_out + half_tol_J) * M_eff);
+}
+
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+#define SWEETSPOT_AVX2_CLONE __attribute__((target_clones("avx2", "default")))
+#else
+#define SWEETSPOT_AVX2_CLONE
+#endif
+
+// The bodies of n paper racquets (kernel::paper_racquet_body()).
+SWEETSPOT_AVX2_CLONE
+void paper_bodies(std::size_t n, const double* __restrict L, const double* __restrict M,
+                  const double* __restrict r, double* __restrict mass, double* __restrict com,
+                  double* __restrict inertia) {
+  for (std::size_t i = 0; i < n; ++i) {
+    const kernel::System body = kernel::paper_racquet_body(L[i], M[i], r[i]);
+    mass[i] = body.mass_kg;
+    com[i] = body.com_from_butt_m;
+    inertia[i] = body.I_cm_kg_m2;
+  }
+}
+
+struct CaseInputs {
+  const double *L, *M, *r, *hand_m, *hand_x, *Me, *ball_m, *ball_v, *cor, *T, *x;
+};
+struct CaseOutputs {
+  const double *m_eff, *e_A, *J, *F0, *cop, *ratio, *F_w;
+};
+
+// 1 where case i is one evaluate() answers with these numbers (see
+// paper_rigid_outcomes()), 0 where it leaves it to evaluate().
+SWEETSPOT_AVX2_CLONE
+void answerable(std::size_t n, CaseInputs in, const double* __restrict mass,
+                const double* __restrict com, const double* __restrict inertia, CaseOutputs out,
+                std::uint32_t* __restrict ok) {
+  for (std::size_t i = 0; i < n; ++i) {
+    const double L = in.L[i];
+    // Inside validate()'s ranges and paper_racquet()'s, with margins where a
+    // bound is on a derived number (an inertia that must not underflow).
+    const bool inputs =
+        within(L, 1e-3, kMaxLength_m) & within(in.M[i], kMinImplementMass_kg, kMaxMass_kg) &
+        within(in.r[i], 1e-6, 1e6) & within(mass[i], kMinImplementMass_kg, kMaxMass_kg) &
+        within(in.hand_m[i], 0.0, kMaxMass_kg) & within(in.hand_x[i], 0.0, L) &
+        within(in.Me[i], 0.0, kMaxForearmMass_kg) &
+        within(in.ball_m[i], kMinBallMass_kg, kMaxMass_kg) &
+        within(in.ball_v[i], kMinSpeed_m_s, kMaxSpeed_m_s) & within(in.cor[i], 0.0, 1.0) &
+        within(in.T[i], kMinDuration_s, kMaxDuration_s) & within(in.x[i], 0.0, L);
+    // evaluate_settled_valid()'s finite results (the system's inertia through
+    // the centre of percussion, which divides by it), the inertia a normal
+    // number as section_mass_properties() requires.
+    const double arm = kSwingweightAxisFromButt_m - com[i];
+    const double swingweight = inertia[i] + mass[i] * arm * arm;  // inertia_about()
+    const bool results = finite(mass[i]) & finite(swingweight) & finite(out.m_eff[i]) &
+                         finite(out.e_A[i]) & finite(out.J[i]) & finite(out.F0[i]) &
+                         finite(out.cop[i]) & finite(out.ratio[i]) & finite(out.F_w[i]) &
+                         (inertia[i] >= std::numeric_limits<double>::min()) & finite(inertia[i]);
+    ok[i] = inputs & results &
+            keeps_laws(in.ball_m[i], in.ball_v[i], in.cor[i], out.m_eff[i], out.e_A[i], out.J[i],
+                       out.F0[i], in.T[i]);
+  }
+}
+
+#undef SWEETSPOT_AVX2_CLONE
+
+}  // namespace
+
+void paper_rigid_outcomes(const PaperRigidCases& in, const RigidOutcomes& out,
+                          std::span<unsigned char> answered) {
+  const std::size_t n = in.length_m.size();
+  const auto check = [n](std::size_t size, const char* name) {
+    if (size != n) {
+      throw std::invalid_argument(std::string("paper_rigid_outcomes: ") + name + " has " +
+                                  std::to_string(size) + " elements, length_m " +
+                                  std::to_string(n));
+    }
+  };
+  check(in.mass_kg.size(), "mass_kg");
+  check(in.head_to_handle_mass_ratio.size(), "head_to_handle_mass_ratio");
+  check(in.hand_mass_kg.size(), "hand_mass_kg");
+  check(in.hand_center_from_butt_m.size(), "hand_center_from_butt_m");
+  check(in.forearm_equivalent_mass_kg.size(), "forearm_equivalent_mass_kg");
+  check(in.ball_mass_kg.size(), "ball_mass_kg");
+  check(in.ball_speed_m_s.size(), "ball_speed_m_s");
+  check(in.cor.size(), "cor");
+  check(in.impact_duration_s.size(), "impact_duration_s");
+  check(in.impact_from_butt_m.size(), "impact_from_butt_m");
+  check(out.effective_mass_kg.size(), "effective_mass_kg");
+  check(out.apparent_cor.size(), "apparent_cor");
+  check(out.impulse_N_s.size(), "impulse_N_s");
+  check(out.peak_impact_force_N.size(), "peak_impact_force_N");
+  check(out.cop_hand_from_butt_m.size(), "cop_hand_from_butt_m");
+  check(out.wrist_force_ratio.size(), "wrist_force_ratio");
+  check(out.peak_wrist_force_N.size(), "peak_wrist_force_N");
+  check(answered.size(), "answered");
+  // A block at a time: the bodies into arrays, the cases' outcomes by
+  // rigid_outcomes() (its vectorised loop), then the checks.
+  constexpr std::size_t kBlock = 256;
+  double mass[kBlock], com[kBlock], inertia[kBlock];
+  std::uint32_t ok[kBlock];
+  for (std::size_t begin = 0; begin < n; begin += kBlock) {
+    const std::size_t count = std::min(kBlock, n - begin);
+    const auto part = [begin, count](std::span<const double> s) { return s.subspan(begin, count); };
+    const auto part_out = [begin, count](std::span<double> s) { return s.subspan(begin, count); };
+    const CaseInputs c{in.length_m.data() + begin,
+                       in.mass_kg.data() + begin,
+                       in.head_to_handle_mass_ratio.data() + begin,
+                       in.hand_mass_kg.data() + begin,
+                       in.hand_center_from_butt_m.data() + begin,
+                       in.forearm_equivalent_mass_kg.data() + begin,
+                       in.ball_mass_kg.data() + begin,
+                       in.ball_speed_m_s.data() + begin,
+                       in.cor.data() + begin,
+                       in.impact_duration_s.data() + begin,
+                       in.impact_from_butt_m.data() + begin};
+    paper_bodies(count, c.L, c.M, c.r, mass, com, inertia);
+    rigid_outcomes(
+        RigidCases{std::span<const double>(mass, count), std::span<const double>(com, count),
+                   std::span<const double>(inertia, count), part(in.hand_center_from_butt_m),
+                   part(in.hand_mass_kg), part(in.forearm_equivalent_mass_kg),
+                   part(in.ball_mass_kg), part(in.ball_speed_m_s), part(in.cor),
+                   part(in.impact_duration_s), part(in.impact_from_butt_m)},
+        RigidOutcomes{part_out(out.effective_mass_kg), part_out(out.apparent_cor),
+                      part_out(out.impulse_N_s), part_out(out.peak_impact_force_N),
+                      part_out(out.cop_hand_from_butt_m), part_out(out.wrist_force_ratio),
+                      part_out(out.peak_wrist_force_N)});
+    answerable(count, c, mass, com, inertia,
+               CaseOutputs{out.effective_mass_kg.data() + begin, out.apparent_cor.data() + begin,
+                           out.impulse_N_s.data() + begin, out.peak_impact_force_N.data() + begin,
+                           out.cop_hand_from_butt_m.data() + begin,
+                           out.wrist_force_ratio.data() + begin,
+                           out.peak_wrist_force_N.data() + begin},
+               ok);
+    for (std::size_t i = 0; i < count; ++i) answered[begin + i] = static_cast<unsigned char>(ok[i]);
+  }
 }
 
 }  // namespace sweetspot

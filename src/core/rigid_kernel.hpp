@@ -29,6 +29,30 @@ inline System with_point_mass(double M, double c, double I, double x_m, double m
   return System{none ? M : total, none ? c : com, none ? I : inertia};
 }
 
+// A uniform section of mass m and length l starting x0 from the butt: its
+// first moment about the butt, and its inertia about a point `arm` from its
+// middle. section_mass_properties() sums these over the sections in order.
+inline double section_first_moment(double m, double x0, double l) { return m * (x0 + 0.5 * l); }
+inline double section_inertia(double m, double l, double arm) {
+  return m * (l * l / 12.0 + arm * arm);
+}
+
+// Cross (2004) Table I racquet (Implement::paper_racquet without point
+// masses): two uniform halves of length L/2, head M r / (1 + r) beyond the
+// handle M / (1 + r); the sums section_mass_properties() makes, in its order.
+inline System paper_racquet_body(double L, double M, double r) {
+  const double h = 0.5 * L;
+  const double handle = M / (1.0 + r);
+  const double head = M * r / (1.0 + r);
+  const double mass = (0.0 + handle) + head;
+  const double first = (0.0 + section_first_moment(handle, 0.0, h)) +
+                       section_first_moment(head, 0.0 + h, h);
+  const double com = first / mass;
+  const double inertia = (0.0 + section_inertia(handle, h, (0.0 + 0.5 * h) - com)) +
+                         section_inertia(head, h, ((0.0 + h) + 0.5 * h) - com);
+  return System{mass, com, inertia};
+}
+
 // Cross (2004) Eq. (17): M_eff = M / (1 + M b^2 / I_cm), b = x - x_cm; M at the centre of mass.
 inline double effective_mass(double M, double c, double I, double x) {
   const double b = x - c;

@@ -30,6 +30,8 @@ struct FieldBinding {
   void (*set)(io::DesignDescription&, std::size_t index, double si) = nullptr;
   std::size_t index = 0;
   bool implement = false;  // the implement is rebuilt when the value changes
+  // The field of the design's field table the pointer sets (object, stem).
+  std::string_view object, stem;
 };
 
 // The binding of `pointer` in a design read as `description`, or std::nullopt

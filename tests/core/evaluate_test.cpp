@@ -7,7 +7,9 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <optional>
+#include <random>
 #include <vector>
 
 #include "sweetspot/collision.hpp"
@@ -503,6 +505,77 @@ TEST_CASE("An evaluation records the fidelity that answered it") {
   CHECK(solved.fidelity == Fidelity::kCollision);
   CHECK((solved.details && solved.details->collision));
   CHECK(evaluate(d, resolve_fidelity("auto", d)).fidelity == Fidelity::kCollision);
+}
+
+}  // namespace sweetspot
+
+namespace sweetspot {
+
+TEST_CASE("Paper racquets column-wise: every case answered is evaluate()'s, bit for bit") {
+  // The oracle is evaluate() of the design built as the reader builds it
+  // (Implement::paper_racquet): a case the column-wise kernel answers must be
+  // one evaluate() answers with the same numbers; a case evaluate() refuses
+  // must be left to it. Random cases in and well beyond the model's range,
+  // with the values the checks turn on (0, the bounds, NaN, infinities).
+  std::mt19937_64 random(2004);
+  const auto pick = [&](std::initializer_list<double> specials, double lo, double hi) {
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    if (u(random) < 0.15) {
+      std::uniform_int_distribution<std::size_t> k(0, specials.size() - 1);
+      return *(specials.begin() + k(random));
+    }
+    return lo + (hi - lo) * u(random);
+  };
+  const double inf = std::numeric_limits<double>::infinity();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  constexpr std::size_t n = 20000;
+  std::vector<std::vector<double>> in(11, std::vector<double>(n));
+  for (std::size_t i = 0; i < n; ++i) {
+    const double L = pick({0.0, -0.7, 1e-3, 100.0, 101.0, nan, inf}, 0.2, 1.2);
+    in[0][i] = L;
+    in[1][i] = pick({0.0, 1e-3, 9e-4, 1e6, 2e6, -0.3, nan}, 0.05, 1.5);
+    in[2][i] = pick({0.0, 1e-6, 1e-7, 1e6, 1e7, -1.0, inf}, 0.1, 3.0);
+    in[3][i] = pick({0.0, -0.1, 1e6, 2e6, nan}, 0.0, 1.0);
+    in[4][i] = pick({0.0, -0.01, L, 2.0 * L, nan}, 0.0, 0.2);
+    in[5][i] = pick({0.0, -1.0, 1e12, 2e12, nan}, 0.0, 2.0);
+    in[6][i] = pick({1e-4, 5e-5, 1e6, 0.0, nan}, 0.03, 0.2);
+    in[7][i] = pick({1e-3, 1e-4, 1e4, 2e4, 0.0, inf}, 5.0, 70.0);
+    in[8][i] = pick({0.0, 1.0, 1.0000001, -0.1, nan}, 0.3, 1.0);
+    in[9][i] = pick({1e-9, 1e-10, 10.0, 11.0, 0.0, nan}, 0.002, 0.008);
+    in[10][i] = pick({0.0, L, -1e-9, L * 1.01, nan}, 0.0, L);
+  }
+  std::vector<std::vector<double>> out(7, std::vector<double>(n));
+  std::vector<unsigned char> answered(n);
+  paper_rigid_outcomes(
+      PaperRigidCases{in[0], in[1], in[2], in[3], in[4], in[5], in[6], in[7], in[8], in[9], in[10]},
+      RigidOutcomes{out[0], out[1], out[2], out[3], out[4], out[5], out[6]}, answered);
+  std::size_t answers = 0, refusals = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    INFO("case " << i << ": L " << in[0][i] << ", M " << in[1][i] << ", r " << in[2][i]);
+    std::optional<Evaluation> e;
+    try {
+      e = evaluate(Design{Implement::paper_racquet(in[0][i], in[1][i], in[2][i]), in[8][i],
+                          in[9][i], Hand{in[3][i], in[4][i]}, in[5][i], Ball{in[6][i], in[7][i]},
+                          in[10][i]});
+    } catch (const std::exception& error) {
+      ++refusals;
+      INFO("evaluate() refuses it: " << error.what());
+      CHECK(!answered[i]);
+    }
+    if (!answered[i]) continue;
+    ++answers;
+    REQUIRE(e);
+    CHECK(out[0][i] == e->effective_mass_kg);
+    CHECK(out[1][i] == e->apparent_cor);
+    CHECK(out[2][i] == e->impulse_N_s);
+    CHECK(out[3][i] == e->peak_impact_force_N);
+    CHECK(out[4][i] == e->cop_hand_from_butt_m.value());
+    CHECK(out[5][i] == e->wrist_force_ratio);
+    CHECK(out[6][i] == e->peak_wrist_force_N);
+  }
+  // Both kinds of case are drawn often enough for the test to mean something.
+  CHECK(answers > n / 10);
+  CHECK(refusals > n / 10);
 }
 
 }  // namespace sweetspot

@@ -183,3 +183,92 @@ def test_a_frame_like_pandas_is_read_by_its_columns():
     b = sweetspot.evaluate_many(base, Frame(columns))
     assert np.array_equal(a["peak_wrist_force_N"], b["peak_wrist_force_N"], equal_nan=True)
     assert list(a["error"]) == list(b["error"])
+
+
+# ------------------------------------------------- the column-wise path
+
+PAPER_OUTPUTS = ["effective_mass_kg", "apparent_cor", "rebound_speed_m_s", "impulse_N_s",
+                 "peak_impact_force_N", "wrist_force_ratio", "peak_wrist_force_N", "cor",
+                 "impact_duration_s"]
+
+
+def paper_columns(rows, seed, hostile=False):
+    rng = np.random.default_rng(seed)
+    columns = {
+        "implement.length_m": rng.uniform(0.3, 1.0, rows),
+        "implement.mass_g": rng.uniform(100.0, 500.0, rows),
+        "implement.head_to_handle_mass_ratio": rng.uniform(0.3, 2.0, rows),
+        "hand.mass_kg": rng.uniform(0.0, 0.8, rows),
+        "forearm.equivalent_mass_kg": rng.uniform(0.0, 1.0, rows),
+        "ball.speed_km_h": rng.uniform(20.0, 250.0, rows),
+        "frame.cor": rng.uniform(0.5, 1.0, rows),
+        "strings.impact_duration_ms": rng.uniform(2.0, 8.0, rows),
+        "impact.from_tip_m": rng.uniform(0.0, 0.3, rows),
+    }
+    if hostile:  # every few rows a value the design file refuses, or its bounds
+        for values, bad in ((columns["implement.length_m"], [0.0, -0.7, np.nan, 101.0]),
+                            (columns["frame.cor"], [1.0, 0.0, 1.01, np.inf]),
+                            (columns["impact.from_tip_m"], [0.0, -1e-9, 2.0, np.nan]),
+                            (columns["hand.mass_kg"], [0.0, -0.1, 2e6, np.nan])):
+            picks = rng.choice(rows, rows // 10, replace=False)
+            values[picks] = rng.choice(bad, picks.size)
+    return columns
+
+
+@pytest.mark.parametrize("hostile", [False, True])
+def test_columnwise_equals_every_output_path(hostile):
+    """The paper's outputs alone (the column-wise path) equal, bit for bit and error for
+    error, the same rows evaluated with every output (one design at a time)."""
+    base = ROOT / "designs" / "table1" / "row1.json"
+    columns = paper_columns(3000, 7, hostile)
+    fast = sweetspot.evaluate_many(base, columns, threads=2, outputs=PAPER_OUTPUTS)
+    full = sweetspot.evaluate_many(base, columns, threads=1)
+    assert sorted(fast) == sorted(PAPER_OUTPUTS + ["ok", "error"])
+    assert np.array_equal(fast["ok"], full["ok"])
+    assert list(fast["error"]) == list(full["error"])
+    for name in PAPER_OUTPUTS:
+        assert np.array_equal(fast[name], full[name], equal_nan=True), name
+    assert fast["ok"].sum() > (2000 if hostile else 2999)
+    if hostile:
+        assert not fast["ok"].all()
+
+
+def test_columnwise_against_numpy_closed_forms():
+    """The module against the paper's equations written in NumPy (python/numpy_model.py):
+    the same model to round-off."""
+    import sys
+    sys.path.insert(0, str(ROOT / "python"))
+    import numpy_model
+    rng = np.random.default_rng(2004)
+    n = 20000
+    L, M = rng.uniform(0.6, 0.75, n), rng.uniform(0.2, 0.4, n)
+    r, tip = rng.uniform(0.6, 1.2, n), rng.uniform(0.0, 0.3, n)
+    columns = {"implement.length_m": L, "implement.mass_kg": M,
+               "implement.head_to_handle_mass_ratio": r, "impact.from_tip_m": tip}
+    wanted = ["effective_mass_kg", "apparent_cor", "peak_impact_force_N", "wrist_force_ratio",
+              "peak_wrist_force_N"]
+    got = sweetspot.evaluate_many(ROOT / "designs" / "table1" / "row1.json", columns,
+                                  outputs=wanted)
+    assert got["ok"].all()
+    expected = numpy_model.paper_rigid(L, M, r, tip)
+    scale = {"effective_mass_kg": 0.4, "apparent_cor": 1.0, "peak_impact_force_N": 1000.0,
+             "wrist_force_ratio": 1.0, "peak_wrist_force_N": 1000.0}
+    for name in wanted:
+        np.testing.assert_allclose(got[name], expected[name], rtol=1e-12,
+                                   atol=1e-12 * scale[name], err_msg=name)
+
+
+def test_outputs_argument_is_checked():
+    base = ROOT / "designs" / "table1" / "row1.json"
+    columns = {"implement.mass_kg": np.array([0.25, 0.3])}
+    with pytest.raises(sweetspot.InputError, match='unknown output "speed"'):
+        sweetspot.evaluate_many(base, columns, outputs=["speed"])
+    with pytest.raises(sweetspot.InputError, match="given twice"):
+        sweetspot.evaluate_many(base, columns, outputs=["apparent_cor", "apparent_cor"])
+    with pytest.raises(sweetspot.InputError, match="at least one"):
+        sweetspot.evaluate_many(base, columns, outputs=[])
+    # Outputs the column-wise path does not answer take the design path, same numbers.
+    some = sweetspot.evaluate_many(base, columns, outputs=["swingweight_kg_cm2", "apparent_cor"])
+    every = sweetspot.evaluate_many(base, columns)
+    assert np.array_equal(some["swingweight_kg_cm2"], every["swingweight_kg_cm2"])
+    assert np.array_equal(some["apparent_cor"], every["apparent_cor"])
