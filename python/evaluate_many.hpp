@@ -43,11 +43,11 @@ using RowErrors = std::vector<std::pair<std::size_t, std::string>>;
 
 // Evaluates `rows` rows; outputs[k][i] is the k-th output wanted (of
 // io::output_specs(), every one when options.outputs is empty) at row i (NaN
-// when null or the row failed); errors holds each failed row with its message. Rigid rows of a design in the paper's parametrisation whose
-// outputs are all among studies::rigid_column_outputs() go through the
-// column-wise kernel (studies/rigid_columns.hpp), a block at a time. Throws InputError naming "columns" for a column no design
-// has (a field of another form of the implement, a number where the base
-// holds an object).
+// when null or the row failed); errors holds each failed row with its message. Rigid rows of a
+// design in the paper's parametrisation whose outputs are all among studies::rigid_column_outputs()
+// go through the column-wise kernel (studies/rigid_columns.hpp), a block at a time. Throws
+// InputError naming "columns" for a column no design has (a field of another form of the implement,
+// a number where the base holds an object).
 void evaluate_columns(const io::Json& base, std::span<const Column> columns, std::size_t rows,
                       const ManyOptions& options, std::span<double* const> outputs,
                       RowErrors& errors);

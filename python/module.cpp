@@ -113,9 +113,9 @@ py::dict evaluate_many_py(py::handle base, py::handle columns,
       const auto at = std::find_if(specs.begin(), specs.end(),
                                    [&](const io::OutputSpec& s) { return s.name == name; });
       if (at == specs.end()) {
-        throw io::InputError("outputs", "",
-                             "unknown output " + studies::shown(name) +
-                                 ": expected a name of sweetspot.outputs()");
+        throw io::InputError(
+            "outputs", "",
+            "unknown output " + studies::shown(name) + ": expected a name of sweetspot.outputs()");
       }
       const auto k = static_cast<std::size_t>(at - specs.begin());
       if (std::find(options.outputs.begin(), options.outputs.end(), k) != options.outputs.end())
@@ -208,8 +208,8 @@ py::dict evaluate_many_py(py::handle base, py::handle columns,
     slots[i] = empty.inc_ref().ptr();
   }
   for (const auto& [row, message] : errors) {
-    PyObject* text = PyUnicode_DecodeUTF8(message.data(), static_cast<Py_ssize_t>(message.size()),
-                                          "replace");
+    PyObject* text =
+        PyUnicode_DecodeUTF8(message.data(), static_cast<Py_ssize_t>(message.size()), "replace");
     if (!text) throw py::error_already_set();
     ok.mutable_data()[row] = false;
     Py_XDECREF(slots[row]);

@@ -197,9 +197,7 @@ namespace {
 // value in [min, max], false for NaN: the test of detail::require_in_range.
 // The tests below combine with & rather than &&, so that the loops over a
 // block have no branches and are vectorised.
-inline bool within(double value, double min, double max) {
-  return (value >= min) & (value <= max);
-}
+inline bool within(double value, double min, double max) { return (value >= min) & (value <= max); }
 
 inline bool finite(double value) { return std::abs(value) <= std::numeric_limits<double>::max(); }
 
@@ -213,8 +211,7 @@ inline bool keeps_laws(double m, double v1, double cor, double M_eff, double e_A
   const double half_tol_J = 0.5 * kInvariantRoundOff * ball_in;
   const double rebound = e_A * v1;
   const double ball_out = 0.5 * m * rebound * rebound;
-  return (M_eff > 0.0) &
-         (e_A * (M_eff + m) >= -m - 0.5 * kInvariantRoundOff * (M_eff + m)) &
+  return (M_eff > 0.0) & (e_A * (M_eff + m) >= -m - 0.5 * kInvariantRoundOff * (M_eff + m)) &
          (e_A <= cor + 0.5 * kInvariantRoundOff) & (J > 0.0) & (T > 0.0) & (F0 > 0.0) &
          (ball_out <= ball_in + half_tol_J) &
          (0.5 * J * J <= (ball_in - ball_out + half_tol_J) * M_eff);
@@ -342,13 +339,13 @@ void paper_rigid_outcomes(const PaperRigidCases& in, const RigidOutcomes& out,
                       part_out(out.impulse_N_s), part_out(out.peak_impact_force_N),
                       part_out(out.cop_hand_from_butt_m), part_out(out.wrist_force_ratio),
                       part_out(out.peak_wrist_force_N)});
-    answerable(count, c, mass, com, inertia,
-               CaseOutputs{out.effective_mass_kg.data() + begin, out.apparent_cor.data() + begin,
-                           out.impulse_N_s.data() + begin, out.peak_impact_force_N.data() + begin,
-                           out.cop_hand_from_butt_m.data() + begin,
-                           out.wrist_force_ratio.data() + begin,
-                           out.peak_wrist_force_N.data() + begin},
-               ok);
+    answerable(
+        count, c, mass, com, inertia,
+        CaseOutputs{out.effective_mass_kg.data() + begin, out.apparent_cor.data() + begin,
+                    out.impulse_N_s.data() + begin, out.peak_impact_force_N.data() + begin,
+                    out.cop_hand_from_butt_m.data() + begin, out.wrist_force_ratio.data() + begin,
+                    out.peak_wrist_force_N.data() + begin},
+        ok);
     for (std::size_t i = 0; i < count; ++i) answered[begin + i] = static_cast<unsigned char>(ok[i]);
   }
 }

@@ -45,8 +45,8 @@ inline System paper_racquet_body(double L, double M, double r) {
   const double handle = M / (1.0 + r);
   const double head = M * r / (1.0 + r);
   const double mass = (0.0 + handle) + head;
-  const double first = (0.0 + section_first_moment(handle, 0.0, h)) +
-                       section_first_moment(head, 0.0 + h, h);
+  const double first =
+      (0.0 + section_first_moment(handle, 0.0, h)) + section_first_moment(head, 0.0 + h, h);
   const double com = first / mass;
   const double inertia = (0.0 + section_inertia(handle, h, (0.0 + 0.5 * h) - com)) +
                          section_inertia(head, h, ((0.0 + h) + 0.5 * h) - com);

@@ -254,8 +254,8 @@ std::optional<FieldBinding> bind_field(const io::DesignDescription& d, std::stri
     if (s.object != spelling->field->object || s.stem != spelling->field->stem) continue;
     if (!s.key.empty() && s.key != key) continue;
     if (!s.available(d, at)) return std::nullopt;
-    return FieldBinding{std::string(pointer), spelling->scale, s.set,
-                        at,  s.implement, spelling->field->object, spelling->field->stem};
+    return FieldBinding{std::string(pointer),    spelling->scale,      s.set, at, s.implement,
+                        spelling->field->object, spelling->field->stem};
   }
   return std::nullopt;
 }

@@ -12,9 +12,9 @@ namespace {
 using Form = io::ImplementDescription::Form;
 
 constexpr std::array<std::string_view, 9> kOutputs = {
-    "effective_mass_kg",  "apparent_cor",      "rebound_speed_m_s",
-    "impulse_N_s",        "peak_impact_force_N", "wrist_force_ratio",
-    "peak_wrist_force_N", "cor",               "impact_duration_s"};
+    "effective_mass_kg",   "apparent_cor",      "rebound_speed_m_s",  "impulse_N_s",
+    "peak_impact_force_N", "wrist_force_ratio", "peak_wrist_force_N", "cor",
+    "impact_duration_s"};
 
 // The role of the field (object, stem) in a paper racquet's rigid case; -1: none.
 int role_of(std::string_view object, std::string_view stem) {
@@ -22,11 +22,15 @@ int role_of(std::string_view object, std::string_view stem) {
     std::string_view object, stem;
   };
   static constexpr Row kRows[] = {
-      {"implement", "length"},          {"implement", "mass"},
+      {"implement", "length"},
+      {"implement", "mass"},
       {"implement", "head_to_handle_mass_ratio"},
-      {"hand", "mass"},                 {"hand", "center_from_butt"},
-      {"forearm", "equivalent_mass"},   {"ball", "mass"},
-      {"ball", "speed"},                {"frame", "cor"},
+      {"hand", "mass"},
+      {"hand", "center_from_butt"},
+      {"forearm", "equivalent_mass"},
+      {"ball", "mass"},
+      {"ball", "speed"},
+      {"frame", "cor"},
       {"strings", "impact_duration"},
   };
   for (std::size_t k = 0; k < std::size(kRows); ++k) {
@@ -44,8 +48,8 @@ std::optional<RigidColumns> RigidColumns::compile(const CompiledDesign& compiled
   const io::DesignDescription& d = compiled.description();
   const Design& design = d.design;
   if (d.implement.form != Form::kHeadToHandleRatio || !d.implement.point_masses.empty() ||
-      design.strings || design.cor_rigid || design.impact_off_axis_m != 0.0 ||
-      d.head_area_m2 || d.impact_place == io::ImpactPlace::kCentreOfStrings) {
+      design.strings || design.cor_rigid || design.impact_off_axis_m != 0.0 || d.head_area_m2 ||
+      d.impact_place == io::ImpactPlace::kCentreOfStrings) {
     return std::nullopt;
   }
   RigidColumns columns;
@@ -128,12 +132,19 @@ void RigidColumns::run(std::span<const ColumnView> columns, std::size_t from, st
     };
     const auto out = [&](std::size_t slot) { return std::span<double>(kernel_out[slot], n); };
     unsigned char* ok = answered.data() + (begin - from);
-    paper_rigid_outcomes(
-        PaperRigidCases{in(Role::kLength), in(Role::kMass), in(Role::kRatio), in(Role::kHandMass),
-                        in(Role::kHandCenter), in(Role::kForearm), in(Role::kBallMass),
-                        in(Role::kBallSpeed), in(Role::kCor), in(Role::kDuration), {x, n}},
-        RigidOutcomes{out(0), out(1), out(2), out(3), out(4), out(5), out(6)},
-        std::span<unsigned char>(ok, n));
+    paper_rigid_outcomes(PaperRigidCases{in(Role::kLength),
+                                         in(Role::kMass),
+                                         in(Role::kRatio),
+                                         in(Role::kHandMass),
+                                         in(Role::kHandCenter),
+                                         in(Role::kForearm),
+                                         in(Role::kBallMass),
+                                         in(Role::kBallSpeed),
+                                         in(Role::kCor),
+                                         in(Role::kDuration),
+                                         {x, n}},
+                         RigidOutcomes{out(0), out(1), out(2), out(3), out(4), out(5), out(6)},
+                         std::span<unsigned char>(ok, n));
     // The reader refuses an impact given off the implement, whatever x is.
     if (impact_from_tip_) {
       for (std::size_t i = 0; i < n; ++i)

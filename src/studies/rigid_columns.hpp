@@ -63,10 +63,10 @@ class RigidColumns {
   static constexpr std::size_t kRoles = 11;
   RigidColumns() = default;
 
-  double base_[kRoles] = {};      // the design's value of each role, in SI
-  int column_[kRoles] = {};       // the column that sets it, -1: the base's
-  io::UnitScale scale_[kRoles];   // its key's conversion to SI
-  bool impact_from_tip_ = true;   // the impact value is from the tip (else the butt)
+  double base_[kRoles] = {};     // the design's value of each role, in SI
+  int column_[kRoles] = {};      // the column that sets it, -1: the base's
+  io::UnitScale scale_[kRoles];  // its key's conversion to SI
+  bool impact_from_tip_ = true;  // the impact value is from the tip (else the butt)
 };
 
 }  // namespace sweetspot::studies
