@@ -99,4 +99,16 @@ inline std::vector<double> number_list(const std::string& option, const std::str
   }
 }
 
+// `--set FIELD=VALUE`, repeatable, one item per occurrence: a field of the
+// design set as a catalogue's column would (studies/design_settings.hpp).
+inline CLI::Option* add_set_option(CLI::App* command, std::vector<std::string>& settings) {
+  return command
+      ->add_option("--set", settings,
+                   "Set a design field for this run, as a catalogue's column names it, in any "
+                   "unit the design file accepts (repeatable): --set impact.off_axis_cm=3 "
+                   "--set strings.tension_lb=48")
+      ->expected(1)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+}
+
 }  // namespace sweetspot::cli

@@ -17,6 +17,7 @@ namespace sweetspot::cli {
 struct EvaluateCommand {
   CLI::App* command = nullptr;
   std::string design_path;
+  std::vector<std::string> settings;  // --set FIELD=VALUE, repeatable
   std::string batch_path;
   std::string batch_base;
   std::string batch_map;   // --map: a JSON file, or COLUMN=field,... inline
@@ -37,6 +38,7 @@ struct EvaluateCommand {
 struct CompareCommand {
   CLI::App* command = nullptr;
   std::vector<std::string> design_paths;
+  std::vector<std::string> settings;  // --set FIELD=VALUE, repeatable
   std::string fidelity = "auto";
   double tolerance = 1e-6;
   OutputOptions out;
@@ -70,7 +72,8 @@ struct ReportCommand {
   CLI::App* command = nullptr;
   std::string designs = "designs";
   std::string out_dir = "reports";
-  std::string design;  // `report DESIGN.json --html FILE`: one design's page
+  std::string design;                 // `report DESIGN.json --html FILE`: one design's page
+  std::vector<std::string> settings;  // --set FIELD=VALUE, repeatable
   std::string html;
 
   void add_to(CLI::App& app);
@@ -105,6 +108,7 @@ struct SweepCommand {
 struct ModesCommand {
   CLI::App* command = nullptr;
   std::string design_path;
+  std::vector<std::string> settings;  // --set FIELD=VALUE, repeatable
   int modes = 3;
   double tolerance = 1e-6;
   std::string method = "exact";
@@ -118,6 +122,7 @@ struct ModesCommand {
 struct MapCommand {
   CLI::App* command = nullptr;
   std::string design_path;
+  std::vector<std::string> settings;  // --set FIELD=VALUE, repeatable
   std::string fidelity = "auto";
   int columns = 50;
   int rows = 50;
@@ -133,6 +138,7 @@ struct MapCommand {
 struct ResponseCommand {
   CLI::App* command = nullptr;
   std::string design_path;
+  std::vector<std::string> settings;  // --set FIELD=VALUE, repeatable
   std::vector<double> at{0.02, 0.16};
   std::vector<double> impacts;
   bool held = false;

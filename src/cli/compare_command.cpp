@@ -9,8 +9,10 @@
 #include "io/atomic_file.hpp"
 #include "io/design_reader.hpp"
 #include "io/input_error.hpp"
+#include "io/json_reader.hpp"
 #include "reports/comparison.hpp"
 #include "studies/comparison.hpp"
+#include "studies/design_settings.hpp"
 
 namespace sweetspot::cli {
 
@@ -22,9 +24,11 @@ void CompareCommand::add_to(CLI::App& app) {
       "words");
   command
       ->add_option("designs", design_paths,
-                   "Two or more design files (JSON; - for standard input, once)")
+                   "Two or more design files (JSON; - for standard input, once), or one with "
+                   "--set: the design against itself with the settings")
       ->required()
-      ->expected(2, 64);
+      ->expected(1, 64);
+  add_set_option(command, settings);
   command
       ->add_option("--fidelity", fidelity,
                    "rigid, modal, response, collision or auto (each file's own, else the "
@@ -56,14 +60,32 @@ int CompareCommand::run() const {
         "--format: with --html, only with --output FILE (standard output then says only what "
         "was written)");
   }
+  if (design_paths.size() == 1 && settings.empty()) {
+    throw CLI::ValidationError(
+        "designs: give two or more design files, or one with --set FIELD=VALUE to compare it "
+        "with its variant");
+  }
   OutputPlan plan;
   for (const std::string& path : design_paths) plan.read(path);
   if (html.empty() || !out.output.empty()) out.plan(plan);
   if (!html.empty()) plan.write("--html", html);
   std::vector<reports::ComparedDesign> designs;
   const std::string level = command->count("--fidelity") ? fidelity : std::string();
-  for (const std::string& path : design_paths) {
-    designs.push_back(studies::compare_one(io::load_design(path), level, tolerance, !html.empty()));
+  // One design with settings is compared with its variant; several all take the settings.
+  const std::vector<studies::Setting> set = studies::parse_settings(settings);
+  if (design_paths.size() == 1) {
+    // Read once: standard input cannot be read twice.
+    const io::Json document = io::read_json_file(design_paths[0]);
+    const std::string file = io::input_name(design_paths[0]);
+    for (const std::vector<studies::Setting>& settings_of :
+         {std::vector<studies::Setting>(), set}) {
+      designs.push_back(studies::compare_one(studies::read_design(document, file, settings_of),
+                                             level, tolerance, !html.empty()));
+    }
+  }
+  for (std::size_t k = 0; design_paths.size() > 1 && k < design_paths.size(); ++k) {
+    designs.push_back(studies::compare_one(studies::load_design(design_paths[k], set), level,
+                                           tolerance, !html.empty()));
   }
   io::OutputSet outputs;
   if (html.empty() || !out.output.empty())

@@ -21,6 +21,7 @@
 #include "io/parallel.hpp"
 #include "reports/summary.hpp"
 #include "studies/batch.hpp"
+#include "studies/design_settings.hpp"
 #include "studies/sweet_spots.hpp"
 
 namespace sweetspot::cli {
@@ -118,6 +119,7 @@ void EvaluateCommand::add_to(CLI::App& app) {
   command = app.add_subcommand("evaluate", "Every quantity of the paper for one design");
   threads = io::all_cores();
   command->add_option("design", design_path, "Design file (JSON)");
+  add_set_option(command, settings);
   command->add_option(
       "--batch", batch_path,
       "Evaluate a catalogue instead (- for standard input): JSON Lines (.jsonl, one design "
@@ -186,6 +188,11 @@ int EvaluateCommand::run() const {
   }
   if (!batch_path.empty()) {
     if (!design_path.empty()) throw CLI::ValidationError("give a design file or --batch, not both");
+    if (!settings.empty()) {
+      throw CLI::ValidationError(
+          "--set: not with --batch (a catalogue sets a field with a column, or every row's "
+          "with --base FILE)");
+    }
     // Said, not ignored: a catalogue is written in SI only.
     if (command->count("--format") && out.parsed() == io::Format::kMarkdown) {
       throw CLI::ValidationError(
@@ -209,7 +216,8 @@ int EvaluateCommand::run() const {
   plan.read(design_path);
   out.plan(plan);
   // A design without an impact has the default of its kind (the reader's).
-  const io::DesignFile design = io::load_design(design_path);
+  const io::DesignFile design =
+      studies::load_design(design_path, studies::parse_settings(settings));
   // The command line's --fidelity wins over the file's "fidelity".
   const Evaluation result = io::evaluate_design_file(
       design, command->count("--fidelity") ? fidelity : std::string(), tolerance);

@@ -13,6 +13,7 @@
 #include "io/design_reader.hpp"
 #include "reports/modes_report.hpp"
 #include "reports/response_report.hpp"
+#include "studies/design_settings.hpp"
 #include "studies/modes.hpp"
 #include "studies/response.hpp"
 
@@ -41,6 +42,7 @@ void ModesCommand::add_to(CLI::App& app) {
       "modes", "Vibration modes free and hand-held: frequencies, damping, nodes, shapes (csv)");
   command->add_option("design", design_path, "Design file (JSON) with the frame's stiffness")
       ->required();
+  add_set_option(command, settings);
   command->add_option("--modes,-n", modes, "How many flexible modes")
       ->check(whole_in(1, kMaxExactModes))
       ->capture_default_str();
@@ -60,7 +62,8 @@ int ModesCommand::run() const {
   plan.read(design_path);
   out.plan(plan);
   if (!plot.empty()) plan.write("--plot", plot);
-  const io::DesignFile design = io::load_design(design_path);
+  const io::DesignFile design =
+      studies::load_design(design_path, studies::parse_settings(settings));
   const auto data = studies::compute_modes(
       design, modes, tolerance,
       method == "fe" ? ModeOptions::Method::kFiniteElement : ModeOptions::Method::kExact);
@@ -81,6 +84,7 @@ void ResponseCommand::add_to(CLI::App& app) {
       "Velocity of points of the implement after the impact: rigid (dc) and vibration (ac) parts");
   command->add_option("design", design_path, "Design file (JSON) with the frame's stiffness")
       ->required();
+  add_set_option(command, settings);
   // Lists are split here rather than by CLI11, which would drop an empty
   // item ("0.1,,0.2") or read "" as 0, the butt: both are refused.
   command
@@ -108,7 +112,8 @@ void ResponseCommand::add_to(CLI::App& app) {
 }
 
 int ResponseCommand::run() const {
-  const io::DesignFile design = io::load_design(design_path);
+  const io::DesignFile design =
+      studies::load_design(design_path, studies::parse_settings(settings));
   // Points are the command line's, checked and named as such.
   const double length_m = design.design.implement.length_m();
   for (const auto& [option, list] : {std::pair{"--at", &at}, std::pair{"--impacts", &impacts}}) {

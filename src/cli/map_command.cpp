@@ -11,6 +11,7 @@
 #include "io/parallel.hpp"
 #include "io/plot.hpp"
 #include "reports/string_bed_map_report.hpp"
+#include "studies/design_settings.hpp"
 #include "studies/string_bed_map.hpp"
 
 namespace sweetspot::cli {
@@ -24,6 +25,7 @@ void MapCommand::add_to(CLI::App& app) {
       ->add_option("design", design_path,
                    "Design file (JSON) with implement headsize_sq_in (or twistweight_kg_cm2)")
       ->required();
+  add_set_option(command, settings);
   command
       ->add_option("--fidelity", fidelity,
                    "rigid: power and shock; modal or response: also feel (needs the frame's "
@@ -64,7 +66,8 @@ int MapCommand::run() const {
          {reports::MapQuantity::kPower, reports::MapQuantity::kShock, reports::MapQuantity::kFeel})
       plan.write("--plot", plot_file(plot, "-" + reports::map_quantity_name(quantity)));
   }
-  const io::DesignFile design = io::load_design(design_path);
+  const io::DesignFile design =
+      studies::load_design(design_path, studies::parse_settings(settings));
   studies::StringBedMapOptions options;
   options.columns = columns;
   options.rows = rows;

@@ -6,6 +6,7 @@
 #include <string>
 #include <system_error>
 
+#include "cli/checks.hpp"
 #include "cli/commands.hpp"
 #include "cli/reports_folder.hpp"
 #include "io/atomic_file.hpp"
@@ -15,6 +16,7 @@
 #include "reports/paper_reports.hpp"
 #include "reports/summary.hpp"
 #include "studies/design_page.hpp"
+#include "studies/design_settings.hpp"
 #include "studies/paper.hpp"
 
 namespace sweetspot::cli {
@@ -90,6 +92,7 @@ void ReportCommand::add_to(CLI::App& app) {
   add_output_folder_option(command, "--out", out_dir, "Folder to write")->capture_default_str();
   command->add_option("design", design,
                       "A design file: write its report as one HTML page (with --html) instead");
+  add_set_option(command, settings);
   add_output_option(command, "--html", html,
                     "With a design: the self-contained HTML page to write (a phone or a "
                     "desktop browser opens it; no network needed)");
@@ -125,8 +128,10 @@ int ReportCommand::run() const {
   OutputPlan plan;
   plan.read(design);
   plan.write("--html", html);
-  const io::DesignFile file = io::load_design(design);
-  const io::Json document = io::read_json_file(design);
+  const std::vector<studies::Setting> set = studies::parse_settings(settings);
+  const io::DesignFile file = studies::load_design(design, set);
+  io::Json document = io::read_json_file(design);
+  studies::apply_settings(document, set);
   io::write_file_atomically(
       html, reports::design_html_report(file, document, studies::design_page(file)));
   say_written(html);

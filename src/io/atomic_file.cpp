@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <limits.h>
+#include <pthread.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -31,6 +32,29 @@ struct TemporarySlot {
 static_assert(std::atomic<int>::is_always_lock_free);
 TemporarySlot g_temporaries[kTemporarySlots];
 
+// Every signal whose default action ends the process and that can be caught.
+constexpr int kEnding[] = {SIGINT,  SIGTERM, SIGHUP,    SIGQUIT, SIGALRM, SIGUSR1, SIGUSR2,
+                           SIGXCPU, SIGPIPE, SIGVTALRM, SIGPROF, SIGPOLL, SIGPWR,  SIGSTKFLT};
+
+// kEnding blocked in this thread for its lifetime: a temporary made and
+// listed under it is listed before any handler can look (the signal waits, or
+// another thread takes it and waits for the listing, below).
+class EndingSignalsBlocked {
+ public:
+  EndingSignalsBlocked() {
+    sigset_t blocked;
+    sigemptyset(&blocked);
+    for (const int signal_number : kEnding) sigaddset(&blocked, signal_number);
+    ::pthread_sigmask(SIG_BLOCK, &blocked, &previous_);
+  }
+  ~EndingSignalsBlocked() { ::pthread_sigmask(SIG_SETMASK, &previous_, nullptr); }
+  EndingSignalsBlocked(const EndingSignalsBlocked&) = delete;
+  EndingSignalsBlocked& operator=(const EndingSignalsBlocked&) = delete;
+
+ private:
+  sigset_t previous_;
+};
+
 int register_temporary(const std::string& path) {
   if (path.size() >= PATH_MAX) return -1;
   for (int i = 0; i < kTemporarySlots; ++i) {
@@ -49,6 +73,10 @@ void unregister_temporary(int slot) {
 
 extern "C" void remove_temporaries_and_reraise(int signal_number) {
   for (TemporarySlot& slot : g_temporaries) {
+    // A slot being listed by another thread (signals blocked there) is live
+    // within a few instructions; the wait is bounded all the same.
+    for (long spins = 0; slot.state.load() == 1 && spins < 100'000'000; ++spins) {
+    }
     if (slot.state.load() == 2) ::unlink(slot.path.data());
   }
   // The handler was reset to the default action on entry (SA_RESETHAND) and
@@ -163,10 +191,19 @@ TemporaryFile::TemporaryFile(const std::string& directory, std::string_view name
   while (cut > 0 && cut < name.size() && (static_cast<unsigned char>(name[cut]) & 0xC0) == 0x80)
     --cut;
   std::string pattern = directory + "/." + std::string(name.substr(0, cut)) + ".XXXXXX";
-  fd_ = ::mkostemp(pattern.data(), O_CLOEXEC);
-  if (fd_ < 0) throw WriteError(for_path, errno_text(errno));
-  path_ = pattern;
-  slot_ = register_temporary(path_);
+  int error = 0;
+  {
+    // Made and listed with the ending signals held off: a signal between the
+    // two would end the run with the temporary left behind.
+    const EndingSignalsBlocked held;
+    fd_ = ::mkostemp(pattern.data(), O_CLOEXEC);
+    error = errno;
+    if (fd_ >= 0) {
+      path_ = pattern;
+      slot_ = register_temporary(path_);
+    }
+  }
+  if (fd_ < 0) throw WriteError(for_path, errno_text(error));
 }
 
 TemporaryFile::~TemporaryFile() {
@@ -342,8 +379,6 @@ void remove_temporaries_on_signals() {
   // Every signal whose default action ends the process and that can be
   // caught. The faults come last and are taken only when nobody (a
   // sanitizer, a debugger's preload) handles them already.
-  constexpr int kEnding[] = {SIGINT,  SIGTERM, SIGHUP,    SIGQUIT, SIGALRM, SIGUSR1, SIGUSR2,
-                             SIGXCPU, SIGPIPE, SIGVTALRM, SIGPROF, SIGPOLL, SIGPWR,  SIGSTKFLT};
   constexpr int kFaults[] = {SIGABRT, SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGSYS, SIGTRAP};
   const auto install = [](int signal_number, bool only_default) {
     struct sigaction current {};

@@ -108,7 +108,6 @@ Header read_header(std::string_view line, const std::string& where, const Column
     }
     target_of.emplace(column, field);
   }
-  std::map<std::string, std::size_t> column_of;  // pointer -> index in header.design
   for (std::size_t k = 0; k < header.names.size(); ++k) {
     const std::string& name = header.names[k];
     const auto target = target_of.find(name);
@@ -135,20 +134,28 @@ Header read_header(std::string_view line, const std::string& where, const Column
       }
       throw io::InputError(where, "", label + ": " + problem);
     }
-    const std::string pointer = field_to_pointer(field);
     // A field no design has is the header's fault, refused once whatever the cells hold.
-    if (const std::string unknown = io::design_path_problem(pointer); !unknown.empty())
+    if (const std::string unknown = io::design_path_problem(field_to_pointer(field));
+        !unknown.empty())
       throw io::InputError(where, "", label + ": " + unknown);
-    const auto [same, inserted] = column_of.emplace(pointer, header.design.size());
-    if (!inserted) {
-      throw io::InputError(where, "",
-                           fmt::format("{}: repeats {} (each field may be given once)", label,
-                                       header.design[same->second].label));
-    }
     header.design.push_back(DesignColumn{k, field, std::move(label)});
   }
+  check_fields_together(header.design, where);
+  return header;
+}
+
+void check_fields_together(const std::vector<DesignColumn>& fields, const std::string& where) {
+  std::map<std::string, std::size_t> column_of;  // pointer -> index in fields
+  for (std::size_t j = 0; j < fields.size(); ++j) {
+    const auto [same, inserted] = column_of.emplace(field_to_pointer(fields[j].field), j);
+    if (!inserted) {
+      throw io::InputError(where, "",
+                           fmt::format("{}: repeats {} (each field may be given once)",
+                                       fields[j].label, fields[same->second].label));
+    }
+  }
   for (const auto& [pointer, j] : column_of) {
-    const std::string& label = header.design[j].label;
+    const std::string& label = fields[j].label;
     const std::size_t slash = pointer.rfind('/');
     const std::string parent = pointer.substr(0, slash);
     for (std::size_t at = parent.size(); at > 0; at = parent.rfind('/', at - 1)) {
@@ -156,7 +163,7 @@ Header read_header(std::string_view line, const std::string& where, const Column
       if (outer != column_of.end()) {
         throw io::InputError(where, "",
                              fmt::format("{}: lies inside {} (give the field or what it holds)",
-                                         label, header.design[outer->second].label));
+                                         label, fields[outer->second].label));
       }
       if (at == 0) break;
     }
@@ -165,11 +172,15 @@ Header read_header(std::string_view line, const std::string& where, const Column
       if (contradicted != column_of.end() && contradicted->second < j) {
         throw io::InputError(where, "",
                              fmt::format("{}: contradicts {}: give the quantity once, in one unit",
-                                         label, header.design[contradicted->second].label));
+                                         label, fields[contradicted->second].label));
       }
     }
   }
-  return header;
+}
+
+std::string design_field_problem(std::string_view field) {
+  if (std::string problem = field_problem(field); !problem.empty()) return problem;
+  return io::design_path_problem(field_to_pointer(std::string(field)));
 }
 
 std::string field_to_pointer(const std::string& field) {

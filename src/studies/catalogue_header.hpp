@@ -42,6 +42,15 @@ struct Header {
 Header read_header(std::string_view line, const std::string& where, const ColumnMap& map,
                    const std::string& map_source);
 
+// Fields given together (a header's columns, the command line's --set
+// items), each a design field: none given twice, in two units or forms, or
+// inside another. Throws InputError naming `where` and the fields' labels.
+void check_fields_together(const std::vector<DesignColumn>& fields, const std::string& where);
+
+// Why the dotted path `field` ("implement.mass_g") names no field of a
+// design, "" when it may name one.
+std::string design_field_problem(std::string_view field);
+
 // Columns that hold text, not numbers.
 bool is_text_field(std::string_view field);
 

@@ -1323,4 +1323,95 @@ TEST_CASE("table1 outside the repository names the option that points at its des
   CHECK(run.err.find("--dir") != std::string::npos);
 }
 
+// --set is the file with the value written in it: the same racquet to every
+// command, checked the same way, refused the same way.
+TEST_CASE("evaluate --set gives the numbers of the file that holds the value") {
+  const Sandbox box;
+  const std::string racquet =
+      R"({"name": "Club", "implement": {"length_in": 27, "mass_g": 318, "balance_cm": 32.5,
+          "swingweight_kg_cm2": 325, "headsize_sq_in": 100}, "frame": {"RA": 66},
+          "strings": {"tension_lb": 52}})";
+  const fs::path base = box.file("racquet.json", racquet);
+  nlohmann::json edited = nlohmann::json::parse(racquet);
+  edited["strings"]["tension_lb"] = 48;
+  edited["impact"]["off_axis_cm"] = 3;
+  edited["implement"].erase("mass_g");  // the other spelling of the mass, replaced
+  edited["implement"]["mass_kg"] = 0.33;
+  const fs::path file = box.file("edited.json", edited.dump());
+  const Run set = box.run("evaluate \"" + base.string() +
+                          "\" --set strings.tension_lb=48 --set impact.off_axis_cm=3 "
+                          "--set implement.mass_kg=0.33 --format json");
+  const Run held = box.run("evaluate \"" + file.string() + "\" --format json");
+  REQUIRE(set.status == 0);
+  REQUIRE(held.status == 0);
+  const nlohmann::json a = nlohmann::json::parse(set.out);
+  const nlohmann::json b = nlohmann::json::parse(held.out);
+  CHECK(a.at("outputs") == b.at("outputs"));
+  CHECK(a.at("outputs").at("mass_kg").get<double>() == 0.33);
+  CHECK(a.at("name") ==
+        "Club (strings.tension_lb=48, impact.off_axis_cm=3, implement.mass_kg=0.33)");
+
+  // A value out of range is refused as the file's would be, naming --set.
+  edited["impact"]["off_axis_cm"] = 99;
+  const fs::path far = box.file("far.json", edited.dump());
+  const Run set_far = box.run("evaluate \"" + base.string() + "\" --set impact.off_axis_cm=99");
+  const Run held_far = box.run("evaluate \"" + far.string() + "\"");
+  CHECK(set_far.status == 2);
+  CHECK(held_far.status == 2);
+  const std::string detail = held_far.err.substr(held_far.err.find(": /impact/off_axis_cm"));
+  CHECK(set_far.err == "sweetspot: " + base.string() + " --set impact.off_axis_cm=99" + detail);
+  CHECK(set_far.out.empty());
+}
+
+TEST_CASE(
+    "evaluate --set items are checked as a catalogue's header is, before any design is read") {
+  const Sandbox box;
+  const fs::path design = box.file("d.json", with_implement(""));
+  const std::string at = "evaluate \"" + design.string() + "\" ";
+  const std::pair<const char*, const char*> cases[] = {
+      {"--set impact.off_axis_cm", "expected FIELD=VALUE"},
+      {"--set impact.offaxis_cm=3", "unknown key"},
+      {"--set hand.mass_kg=abc", "expected a number"},
+      {"--set hand.mass_kg=nan", "expected a finite number"},
+      {"--set hand.mass_kg=0.4 --set hand.mass_g=400", "contradicts"},
+      {"--set hand.mass_kg=0.4 --set hand.mass_kg=0.5", "repeats"},
+      {"--set hand=1 --set hand.mass_kg=0.4", "lies inside"},
+      {"--set 0.mass_kg=1", "a path starts with a part of the design"},
+  };
+  for (const auto& [arguments, expected] : cases) {
+    INFO(arguments);
+    const Run run = box.run(at + arguments);
+    CHECK(run.status == 2);
+    CHECK(run.err.starts_with("sweetspot: --set: "));
+    CHECK(run.err.find(expected) != std::string::npos);
+    CHECK(std::count(run.err.begin(), run.err.end(), '\n') == 1);
+  }
+  const Run batch = box.run("evaluate --batch x.csv --set hand.mass_kg=0.4");
+  CHECK(batch.status == 2);
+  CHECK(batch.err.find("--set: not with --batch") != std::string::npos);
+}
+
+TEST_CASE("compare A --set compares a design with its own variant; with two, both take it") {
+  const Sandbox box;
+  const fs::path a = box.file("a.json", with_implement(R"("name": "A")"));
+  const fs::path b = box.file("b.json", with_implement(R"("name": "B", "hand": {"mass_kg": 0.4})"));
+  const Run one = box.run("compare \"" + a.string() + "\" --set hand.mass_kg=0.4 --format json");
+  REQUIRE(one.status == 0);
+  const nlohmann::json pair = nlohmann::json::parse(one.out);
+  const Run two = box.run("compare \"" + a.string() + "\" \"" + b.string() +
+                          "\" --set impact.from_tip_cm=10 --format json");
+  REQUIRE(two.status == 0);
+  CHECK(one.out.find("\"A (hand.mass_kg=0.4)\"") != std::string::npos);
+  CHECK(two.out.find("\"A (impact.from_tip_cm=10)\"") != std::string::npos);
+  CHECK(two.out.find("\"B (impact.from_tip_cm=10)\"") != std::string::npos);
+  // The variant is the second file's racquet with A's name: the same numbers.
+  const Run files = box.run("compare \"" + a.string() + "\" \"" + b.string() + "\" --format json");
+  REQUIRE(files.status == 0);
+  const nlohmann::json by_files = nlohmann::json::parse(files.out);
+  CHECK(pair.at("designs").at(1).at("values") == by_files.at("designs").at(1).at("values"));
+  CHECK(pair.at("designs").at(0).at("values") == by_files.at("designs").at(0).at("values"));
+  const Run none = box.run("compare \"" + a.string() + "\"");
+  CHECK(none.status == 2);
+}
+
 }  // namespace
