@@ -10,6 +10,7 @@
 
 #include "cli/checks.hpp"
 #include "cli/commands.hpp"
+#include "io/atomic_file.hpp"
 #include "io/design_reader.hpp"
 #include "io/input_error.hpp"
 #include "io/json_reader.hpp"
@@ -151,6 +152,7 @@ int TuneCommand::run() const {
   for (const std::string& path : design_paths) designs.push_back(read(path));
   const double strip_kg = strip_g * 1e-3;
   io::OutputSet outputs;
+  std::vector<std::pair<std::string, std::string>> folder_files;  // --output-dir's, made with it
   std::vector<reports::TunedRacquet> tuned;
   bool all_exact = true;
   std::string rule;
@@ -201,11 +203,14 @@ int TuneCommand::run() const {
         plan.write("--output-dir", written, true);
       }
       tuned.push_back(evaluate_tuned(designs[i], r, document, r.exact ? written : "", tolerance));
-      if (r.exact && !written.empty()) outputs.write(written, document.dump(2) + "\n");
+      if (r.exact && !written.empty()) folder_files.emplace_back(written, document.dump(2) + "\n");
     }
   }
   // The files first: the report says what was written only once it is.
-  if (all_exact) outputs.commit();
+  if (all_exact) {
+    outputs.commit();
+    if (!folder_files.empty()) io::write_files_atomically(folder_files);
+  }
   std::cout << reports::tune_report(tuned, strip_kg, *io::parse_format(format), rule);
   std::cout.flush();
   if (!all_exact) {

@@ -426,6 +426,10 @@ LeadSolution solve_lead(const std::vector<std::vector<double>>& A_rows,
       answer = m;
     }
   });
+  // Round-off left on a place without lead (1e-17 kg) is no lead.
+  for (Eigen::Index j = 0; j < answer.size(); ++j) {
+    if (answer(j) < 1e-12 * (1.0 + answer.lpNorm<Eigen::Infinity>())) answer(j) = 0.0;
+  }
   LeadSolution out;
   out.m.assign(answer.data(), answer.data() + answer.size());
   out.scaled_residual = (A * answer - b).norm();
