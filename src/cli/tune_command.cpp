@@ -164,8 +164,8 @@ int TuneCommand::run() const {
       if (!targets.balance_from_butt_m) targets.balance_from_butt_m = other.balance_from_butt_m;
       if (!targets.swingweight_kg_m2) targets.swingweight_kg_m2 = other.swingweight_kg_m2;
     }
-    const studies::TuneResult result = as_option_error(
-        "--places", [&] { return studies::tune(designs[0].file, targets, lead_places); });
+    // (its complaints name their option)
+    const studies::TuneResult result = studies::tune(designs[0].file, targets, lead_places);
     const io::Json document = studies::tuned_document(designs[0].document, result);
     all_exact = result.exact;
     const std::string written = result.exact && output != "-" ? output : "";
@@ -179,8 +179,7 @@ int TuneCommand::run() const {
   } else {
     std::vector<io::DesignFile> files;
     for (const ReadDesign& d : designs) files.push_back(d.file);
-    const studies::MatchResult result =
-        as_option_error("--places", [&] { return studies::match(files, lead_places); });
+    const studies::MatchResult result = studies::match(files, lead_places);
     rule =
         "Common specs: the mass, balance and swingweight that every racquet reaches with the "
         "least lead in all (lead only adds mass, so that is the least common mass).";

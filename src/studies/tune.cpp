@@ -345,7 +345,7 @@ std::vector<TargetMiss> explain_misses(const TuneResult& r, const std::vector<Pl
     }
     misses.push_back({"balance", reason});
   }
-  if (!misses.empty()) {
+  if (misses.size() >= 2) {
     bool each_alone = true;
     for (const TargetMiss& miss : misses) {
       each_alone = each_alone && miss.reason.find(" asked, ") != std::string::npos;
