@@ -300,7 +300,31 @@ std::vector<TargetMiss> explain_misses(const TuneResult& r, const std::vector<Pl
                                   : fmt::format("{} asked, {} reached", grams(*t.mass_kg),
                                                 grams(r.reached.mass_kg))});
   }
-  if (missed(t.swingweight_kg_m2, r.reached.swingweight_kg_m2, kInertiaTolerance_kg_m2)) {
+  // A mass and a balance fix the lead's mass dM and its centre xl; wherever
+  // it sits it adds at least dM (xl - 0.10 m)^2 to the swingweight (the
+  // parallel-axis theorem, its own inertia about its centre >= 0).
+  bool swingweight_said = false;
+  if (t.mass_kg && t.balance_from_butt_m && t.swingweight_kg_m2 && *t.mass_kg > r.before.mass_kg &&
+      *t.swingweight_kg_m2 >= r.before.swingweight_kg_m2) {
+    const double dM = *t.mass_kg - r.before.mass_kg;
+    const double xl =
+        (*t.mass_kg * *t.balance_from_butt_m - r.before.mass_kg * r.before.balance_from_butt_m) /
+        dM;
+    const double least_sw =
+        dM * (xl - kSwingweightAxisFromButt_m) * (xl - kSwingweightAxisFromButt_m);
+    if (*t.swingweight_kg_m2 < r.before.swingweight_kg_m2 + least_sw - kInertiaTolerance_kg_m2) {
+      swingweight_said = true;
+      misses.push_back(
+          {"swingweight",
+           fmt::format("the mass and balance asked for need {} of lead centred {} from the "
+                       "butt, which adds at least {} to the swingweight wherever it sits: "
+                       "with that mass and balance the swingweight cannot be below {}",
+                       grams(dM), centimetres(xl), kg_cm2(least_sw),
+                       kg_cm2(r.before.swingweight_kg_m2 + least_sw))});
+    }
+  }
+  if (!swingweight_said &&
+      missed(t.swingweight_kg_m2, r.reached.swingweight_kg_m2, kInertiaTolerance_kg_m2)) {
     misses.push_back(
         {"swingweight",
          *t.swingweight_kg_m2 < r.before.swingweight_kg_m2
