@@ -48,6 +48,23 @@ struct CompareCommand {
   int run() const;
 };
 
+struct TuneCommand {
+  CLI::App* command = nullptr;
+  std::vector<std::string> design_paths;
+  std::string target;  // --target mass_g=330,balance_cm=32,...
+  std::string like;    // --like OTHER.json: its specs are the targets
+  std::string places;  // --places 12,3/9,handle
+  bool match = false;  // --match A B ...: common specs
+  double strip_g = 1.0;
+  double tolerance = 1e-6;
+  std::string format = "md";
+  std::string output;      // -o FILE: the tuned design
+  std::string output_dir;  // --output-dir DIR: with --match, each tuned design
+
+  void add_to(CLI::App& app);
+  int run() const;
+};
+
 struct Table1Command {
   CLI::App* command = nullptr;
   std::string dir = "designs/table1";

@@ -31,6 +31,7 @@ int main(int argc, char** argv) {
 
   EvaluateCommand evaluate;
   CompareCommand compare;
+  TuneCommand tune;
   Table1Command table1;
   FigureCommand figure;
   ReportCommand report;
@@ -42,6 +43,7 @@ int main(int argc, char** argv) {
   BenchCommand bench;
   evaluate.add_to(app);
   compare.add_to(app);
+  tune.add_to(app);
   table1.add_to(app);
   figure.add_to(app);
   report.add_to(app);
@@ -141,6 +143,8 @@ int main(int argc, char** argv) {
       status = evaluate.run();
     else if (*compare.command)
       status = compare.run();
+    else if (*tune.command)
+      status = tune.run();
     else if (*table1.command)
       status = table1.run();
     else if (*figure.command)

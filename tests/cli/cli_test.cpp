@@ -1415,3 +1415,115 @@ TEST_CASE("compare A --set compares a design with its own variant; with two, bot
 }
 
 }  // namespace
+
+namespace {
+
+constexpr const char* kClubRacquet = R"({
+  "name": "Club racquet",
+  "implement": { "length_in": 27, "mass_g": 318, "balance_cm": 32.5, "swingweight_kg_cm2": 325,
+                 "headsize_sq_in": 100 },
+  "frame": { "RA": 66 },
+  "strings": { "tension_lb": 52 }
+})";
+
+}  // namespace
+
+TEST_CASE("tune as the README writes it: -o writes a design evaluate reads, at the targets") {
+  const Sandbox box;
+  const fs::path design = box.file("racquet.json", kClubRacquet);
+  const fs::path tuned = box.path("tuned.json");
+  const Run run = box.run("tune \"" + design.string() +
+                          "\" --target mass_g=330,balance_cm=32,swingweight_kg_cm2=330 --places "
+                          "12,3/9,handle -o \"" +
+                          tuned.string() + "\"");
+  INFO(run.err);
+  REQUIRE(run.status == 0);
+  CHECK(run.out.find("The targets are reached") != std::string::npos);
+  CHECK(run.out.find("| 3 and 9 o'clock |") != std::string::npos);
+  const Run evaluated = box.run("evaluate \"" + tuned.string() + "\" --format json");
+  REQUIRE(evaluated.status == 0);
+  const nlohmann::json outputs = nlohmann::json::parse(evaluated.out)["outputs"];
+  // Reached to 1 mg, 0.01 mm and 0.001 kg cm^2 (tune's own bar).
+  CHECK(outputs["mass_kg"].get<double>() == Approx(0.330).margin(1e-6));
+  CHECK(outputs["balance_from_butt_m"].get<double>() == Approx(0.32).margin(1e-5));
+  CHECK(outputs["swingweight_kg_cm2"].get<double>() == Approx(330.0).margin(1e-3));
+}
+
+TEST_CASE("tune --format json gives the lead per place, the specs before and reached") {
+  const Sandbox box;
+  const fs::path design = box.file("racquet.json", kClubRacquet);
+  const Run run = box.run("tune \"" + design.string() +
+                          "\" --target mass_g=330,balance_cm=32,swingweight_kg_cm2=330 --places "
+                          "12,3/9,handle --format json --strip-g 0.5");
+  REQUIRE(run.status == 0);
+  const nlohmann::json j = nlohmann::json::parse(run.out);
+  for (const char* key : {"lead", "reached", "before", "targets", "added_g", "strip_g", "effect",
+                          "reachable", "why", "differences"}) {
+    INFO(key);
+    CHECK(j.contains(key));
+  }
+  REQUIRE(j["lead"].size() == 3);
+  CHECK(j["lead"][1]["place"] == "3/9");
+  CHECK(j["lead"][1]["pieces"].size() == 2);
+  double added = 0.0;
+  for (const auto& lead : j["lead"]) {
+    added += lead["mass_g"].get<double>();
+    CHECK(lead["strips"].get<double>() == Approx(lead["mass_g"].get<double>() / 0.5));
+  }
+  CHECK(added == Approx(j["added_g"].get<double>()));
+  CHECK(j["reached"]["mass_g"].get<double>() == Approx(330.0).margin(1e-3));
+  CHECK(j["before"]["swingweight_kg_cm2"].get<double>() == Approx(325.0));
+  CHECK(j["reachable"] == true);
+  CHECK(j["effect"].contains("recoil_weight_kg_cm2"));
+}
+
+TEST_CASE("tune to targets lead cannot reach says why, exits 3 and writes nothing") {
+  const Sandbox box;
+  const fs::path design = box.file("racquet.json", kClubRacquet);
+  const fs::path tuned = box.path("tuned.json");
+  const Run run =
+      box.run("tune \"" + design.string() + "\" --target mass_g=300 --places 12,handle -o \"" +
+              tuned.string() + "\"");
+  CHECK(run.status == 3);
+  CHECK(run.out.find("lead only adds mass") != std::string::npos);
+  CHECK(run.err.find("cannot be reached") != std::string::npos);
+  CHECK_FALSE(fs::exists(tuned));
+}
+
+TEST_CASE("tune --match writes each tuned racquet at common specs into --output-dir") {
+  const Sandbox box;
+  const fs::path a = box.file("a.json", kClubRacquet);
+  std::string heavier = kClubRacquet;
+  heavier.replace(heavier.find("\"mass_g\": 318"), 13, "\"mass_g\": 324");
+  const fs::path b = box.file("b.json", heavier);
+  const fs::path dir = box.path("matched");
+  const Run run = box.run("tune --match \"" + a.string() + "\" \"" + b.string() +
+                          "\" --places 12,3/9,handle --output-dir \"" + dir.string() + "\"");
+  INFO(run.err);
+  REQUIRE(run.status == 0);
+  std::vector<nlohmann::json> specs;
+  for (const char* name : {"a-tuned.json", "b-tuned.json"}) {
+    const Run evaluated = box.run("evaluate \"" + (dir / name).string() + "\" --format json");
+    REQUIRE(evaluated.status == 0);
+    specs.push_back(nlohmann::json::parse(evaluated.out)["outputs"]);
+  }
+  for (const char* key : {"mass_kg", "balance_from_butt_m", "swingweight_kg_cm2"}) {
+    INFO(key);
+    CHECK(specs[0][key].get<double>() == Approx(specs[1][key].get<double>()).epsilon(1e-7));
+  }
+  CHECK(specs[0]["mass_kg"].get<double>() >= 0.324 - 1e-9);
+}
+
+TEST_CASE("tune --match never writes a tuned racquet over one of its inputs") {
+  const Sandbox box;
+  fs::create_directories(box.path("d"));
+  const fs::path a = box.file("a.json", kClubRacquet);
+  const fs::path b = box.file("d/a-tuned.json", kClubRacquet);
+  const std::string before = slurp(b);
+  const Run run =
+      box.run("tune --match \"" + a.string() + "\" \"" + b.string() +
+              "\" --places 12,3/9,handle --output-dir \"" + box.path("d").string() + "\"");
+  CHECK(run.status == 2);
+  CHECK(run.err.find("is the input") != std::string::npos);
+  CHECK(slurp(b) == before);
+}

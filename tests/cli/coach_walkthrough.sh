@@ -34,6 +34,9 @@ expect compared.csv "name,source,mass_kg"
 # The page opens with the same answer.
 expect racquet.html "Held in the hand, this racquet has two sweet spots"
 expect racquet-out.json '"cop_hand_from_tip_cm"'
+# tune: the lead at each place, and the tuned racquet written as a design file.
+expect out.txt "| under the grip (9 cm from the butt) |"
+expect racquet-tuned.json '"name": "Club racquet (tuned)"'
 # What the README quotes of the output is what the program prints: each
 # quoted passage ("> ..."), cut at its ellipses, appears in the output.
 flat=$(tr '\n' ' ' <out.txt | tr -s ' ')

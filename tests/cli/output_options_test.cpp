@@ -207,6 +207,23 @@ const std::vector<Mode> kModes = {
      {"--output", "--plot"},
      {{"--plot", "-power"}},
      "--output"},
+    {"tune",
+     "tune t.json --target mass_g=330 --places 12,handle",
+     {{"t.json", ""}},
+     {"t.json"},
+     {"--output"},
+     {},
+     ""},
+    {"tune",
+     "tune --match t.json u.json --places 12,3/9,handle",
+     {{"t.json", ""}, {"u.json", ""}},
+     // (its inputs are files, which a folder option refuses as not a folder:
+     // tests/hostile/tune.tsv; a file it would write onto an input is refused
+     // by the output plan, tests/cli/cli_test.cpp)
+     {},
+     {"--output-dir"},
+     {},
+     ""},
     {"bench",
      "bench speed --repeats 1 --designs ds",
      {{"ds", "designs"}},
@@ -244,6 +261,10 @@ class Case {
         std::ofstream(to) << kSweep;
       } else if (file == "t.json") {
         std::ofstream(to) << kMapDesign;
+      } else if (file == "u.json") {  // a second racquet, 10 g heavier
+        std::string heavier = kMapDesign;
+        heavier.replace(heavier.find("305"), 3, "315");
+        std::ofstream(to) << heavier;
       } else {
         fs::copy(kSource + "/" + source, to, fs::copy_options::recursive);
       }
@@ -288,6 +309,11 @@ void require_refused(const Case& c, const std::string& arguments, const std::str
   CHECK(std::count(run.err.begin(), run.err.end(), '\n') == 1);
   CHECK(run.err.find(words) != std::string::npos);
   CHECK(c.snapshot() == before);
+}
+
+// An output option that names a folder to fill.
+bool folder_option(const std::string& option) {
+  return option == "--out" || option == "--output-dir";
 }
 
 bool setpriv_works() {
@@ -366,7 +392,7 @@ TEST_CASE("An output this user may not write is refused and kept, and root write
     for (const std::string& option : mode.options) {
       const Case c(mode, "read-only");
       fs::permissions(c.path(""), fs::perms::all);  // the folder is anyone's: only the file is not
-      const bool folder = option == "--out";
+      const bool folder = folder_option(option);
       const std::string name = folder ? "ro" : "ro.out";
       if (folder) {
         fs::create_directory(c.path("ro"));
@@ -401,7 +427,7 @@ TEST_CASE(
     for (const std::string& option : mode.options) {
       const Case c(mode, "dash");
       require_refused(c, mode.arguments + " " + option + " ''", option + ": an empty value");
-      if (option == "--out") {
+      if (folder_option(option)) {
         require_refused(c, mode.arguments + " " + option + " -", "names a folder");
         continue;
       }
