@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -602,6 +603,7 @@ struct ArmClause {
   std::string text;
   int points = 0;  // -1: the first design is kinder by it, +1: the second, 0: no difference
   bool known = true;
+  std::string why;  // when not known
 };
 
 ArmClause arm_clause(const std::string& what, const std::string& detail, const char* unit,
@@ -612,9 +614,13 @@ ArmClause arm_clause(const std::string& what, const std::string& detail, const c
     clause.known = false;
     const bool neither = !a.value && !b.value;
     const std::string& why = !a.value ? a.unknown_why : b.unknown_why;
-    clause.text = fmt::format(
-        "{} is not known for {} ({})", what,
-        neither ? std::string("either") : (!a.value ? da.design.name : db.design.name), why);
+    clause.text =
+        fmt::format("{} is not known for {}", what,
+                    neither ? std::string("either") : (!a.value ? da.design.name : db.design.name));
+    clause.why = (neither && a.unknown_why != b.unknown_why)
+                     ? fmt::format("{}: {}; {}: {}", da.design.name, a.unknown_why, db.design.name,
+                                   b.unknown_why)
+                     : why;
     return clause;
   }
   const double before = *a.value * factor, after = *b.value * factor;
@@ -649,20 +655,32 @@ std::vector<std::string> arm_sentences(const ComparedDesign& a, const ComparedDe
       {"the twist", arm_clause("the twist", "mean peak torque about the long axis", "N·m", 1.0,
                                la.peak_twist_torque_N_m, lb.peak_twist_torque_N_m, a, b)},
   };
-  std::vector<std::string> parts, for_a, for_b, unknown;
+  std::vector<std::string> parts, for_a, for_b, unknown, reasons;
   for (const auto& [name, clause] : clauses) {
     parts.push_back(clause.text);
+    if (!clause.known && std::find(reasons.begin(), reasons.end(), clause.why) == reasons.end())
+      reasons.push_back(clause.why);
     if (!clause.known) unknown.emplace_back(name);
     if (clause.points > 0) for_b.emplace_back(name);
     if (clause.points < 0) for_a.emplace_back(name);
   }
-  const std::string where = la.around_centre_of_strings && lb.around_centre_of_strings
-                                ? "around the centre of the strings"
-                                : "around the impact asked about";
+  const std::string where =
+      la.around_centre_of_strings && lb.around_centre_of_strings
+          ? "around the centre of the strings"
+      : !la.around_centre_of_strings && !lb.around_centre_of_strings
+          ? "around the impact asked about"
+          : "around the centre of the strings (without strings, the impact asked about)";
   std::vector<std::string> out;
-  out.push_back(fmt::format("On the arm, over {} hits {} ({} apart along and across the axis): {}.",
-                            la.spread.size() == 9 ? "nine" : std::to_string(la.spread.size()),
-                            where, cm_text(studies::kArmSpreadStep_m), joined(parts)));
+  const bool grid = la.spread.size() == 9 && lb.spread.size() == 9;
+  out.push_back(fmt::format(
+      "On the arm, over {} hits {} ({} apart along {}): {}.", grid ? "nine" : "the", where,
+      cm_text(studies::kArmSpreadStep_m),
+      grid ? "and across the axis" : "the axis, and across it where it can twist", joined(parts)));
+  if (!reasons.empty()) {
+    std::string why;
+    for (const std::string& r : reasons) why += (why.empty() ? "" : "; ") + r;
+    out.push_back("Not known: " + why + ".");
+  }
   const std::string of_known = unknown.empty() ? "" : " of those known";
   if (!for_a.empty() && !for_b.empty()) {
     out.push_back(fmt::format(

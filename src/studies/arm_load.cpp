@@ -89,13 +89,21 @@ ArmLoad arm_load(const io::DesignFile& design, const Evaluation& asked, double a
   ArmLoad load;
   load.around_centre_of_strings = centre_of_strings_from_tip_m.has_value();
   const double centre = centre_of_strings_from_tip_m.value_or(asked_from_tip_m);
-  for (const double along : {-kArmSpreadStep_m, 0.0, kArmSpreadStep_m})
+  // Without a polar inertia (no twistweight, no head) a hit off the axis has
+  // no answer: the three hits along it, and the twist not known.
+  const bool twists = asked.polar_inertia_kg_m2.has_value();
+  for (const double along : {-kArmSpreadStep_m, 0.0, kArmSpreadStep_m}) {
+    if (!twists) {
+      load.spread.push_back({centre + along, 0.0});
+      continue;
+    }
     for (const double across : {-kArmSpreadStep_m, 0.0, kArmSpreadStep_m})
       load.spread.push_back({centre + along, across});
+  }
 
   const std::string_view fidelity = to_string(fidelity_of(asked));
   double wrist = 0.0, twist = 0.0, weighted = 0.0, velocity = 0.0;
-  bool twist_known = true;  // the polar inertia: a twistweight or a head
+  bool twist_known = twists;  // the polar inertia: a twistweight or a head
   std::string refused;
   std::vector<HandVibration> vibrations;
   for (const SpreadPoint& p : load.spread) {

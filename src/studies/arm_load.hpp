@@ -52,8 +52,9 @@ HandVibration hand_vibration(const ResponseModel& model, double hand_from_butt_m
 
 // Where a player hits: a stated spread of nine points around the centre of
 // the strings (a racquet; else the impact asked about), a 3 x 3 grid
-// kArmSpreadStep_m apart along the long axis and across it. A stated
-// assumption, not a measured distribution.
+// kArmSpreadStep_m apart along the long axis and across it (the three along
+// the axis alone for an implement without a polar inertia, which cannot be
+// hit off the axis). A stated assumption, not a measured distribution.
 inline constexpr double kArmSpreadStep_m = 0.03;
 struct SpreadPoint {
   double from_tip_m = 0.0;
