@@ -217,13 +217,15 @@ std::string off_axis_text(const ComparedDesign& c) {
   return fmt::format("{} off the axis toward {} o'clock", cm_text(std::fabs(y)), y > 0 ? 3 : 9);
 }
 
+std::string along_text(const ComparedDesign& c) {
+  return on_centre(c) ? fmt::format("at the centre of the strings ({} from the tip)",
+                                    cm_text(c.spots.asked.from_tip_m))
+                      : fmt::format("{} from the tip", cm_text(c.spots.asked.from_tip_m));
+}
+
 std::string where_hit(const ComparedDesign& c) {
   const std::string off = off_axis_text(c);
-  const std::string along = on_centre(c)
-                                ? fmt::format("at the centre of the strings ({} from the tip)",
-                                              cm_text(c.spots.asked.from_tip_m))
-                                : fmt::format("{} from the tip", cm_text(c.spots.asked.from_tip_m));
-  return off.empty() ? along : along + ", " + off;
+  return off.empty() ? along_text(c) : along_text(c) + ", " + off;
 }
 
 bool off_axis(const ComparedDesign& c) { return !off_axis_text(c).empty(); }
@@ -232,6 +234,12 @@ bool off_axis(const ComparedDesign& c) { return !off_axis_text(c).empty(); }
 // own when they differ, told as its default when neither file gives one.
 std::string impact_words(const ComparedDesign& a, const ComparedDesign& b) {
   if (where_hit(a) == where_hit(b)) return "a hit " + where_hit(a);
+  if (along_text(a) == along_text(b)) {  // the same place along the axis, not across it
+    const auto across = [](const ComparedDesign& c) {
+      return off_axis(c) ? off_axis_text(c) : std::string("on the axis");
+    };
+    return fmt::format("a hit {}, {} and {}", along_text(a), across(a), across(b));
+  }
   const bool defaults = a.spots.asked_provenance != "given" && b.spots.asked_provenance != "given";
   if (defaults && on_centre(a) && on_centre(b) && !off_axis(a) && !off_axis(b)) {
     return fmt::format(
@@ -995,7 +1003,7 @@ std::string comparison_html(const std::vector<ComparedDesign>& designs) {
       "<section id=\"racquets\"><h2>The racquets, to one scale</h2>\n<p>Each from above, tip "
       "on the left: the balance point (triangle), the hand-held COP (red dot), the node (blue "
       "diamond, when the frame's stiffness is known), the lead (orange) and the ball at the "
-      "impact.</p>\n";
+      "impact (off the axis where the hit is, 3 o'clock up).</p>\n";
   std::vector<reports::DrawnRacquet> drawn;
   for (const ComparedDesign& c : designs)
     drawn.push_back({&c.design, &c.spots.asked.evaluation, reports::html_escape(c.design.name)});
