@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -24,6 +25,8 @@ constexpr double kNewtonsPerPound = io::kPoundForce_N;
 constexpr double kPositionThreshold_m = 0.005;
 constexpr double kForceThreshold = 0.02;  // relative
 constexpr double kCorThreshold = 0.01;
+// A factor of the arm's load that changes by less is "about the same".
+constexpr double kArmThreshold = 0.02;  // relative
 
 // One line of the side-by-side table: a number of a compared design in SI.
 struct Row {
@@ -79,6 +82,51 @@ const std::vector<Row>& rows() {
        [](const ComparedDesign& c) -> std::optional<double> {
          return c.spots.asked.evaluation.apparent_cor;
        }},
+      {"impact off the axis (toward 3 o'clock when > 0)", "impact_off_axis_m", "m",
+       [](const ComparedDesign& c) -> std::optional<double> {
+         // As evaluate's outputs: known where the polar inertia is.
+         if (!c.spots.asked.evaluation.polar_inertia_kg_m2) return std::nullopt;
+         return c.spots.asked.evaluation.impact_off_axis_m;
+       }},
+      {"contact time at the impact", "impact_duration_s", "s",
+       [](const ComparedDesign& c) -> std::optional<double> {
+         return c.spots.asked.evaluation.impact_duration_s;
+       }},
+      {"peak twist torque at the impact (about the long axis)", "peak_twist_torque_N_m", "N m",
+       [](const ComparedDesign& c) -> std::optional<double> {
+         if (!c.spots.asked.evaluation.polar_inertia_kg_m2) return std::nullopt;
+         return c.spots.asked.evaluation.peak_twist_torque_N_m;
+       }},
+      {"vibration at the hand after the impact (W_h-weighted acceleration)",
+       "hand_vibration_weighted_m_s2", "m/s^2",
+       [](const ComparedDesign& c) -> std::optional<double> {
+         if (!c.asked_vibration) return std::nullopt;
+         return c.asked_vibration->weighted_acceleration_m_s2;
+       }},
+      {"vibration at the hand after the impact (velocity amplitude)", "hand_vibration_velocity_m_s",
+       "m/s",
+       [](const ComparedDesign& c) -> std::optional<double> {
+         if (!c.asked_vibration) return std::nullopt;
+         return c.asked_vibration->velocity_m_s;
+       }},
+      {"frequency of the vibration at the hand", "hand_vibration_frequency_Hz", "Hz",
+       [](const ComparedDesign& c) -> std::optional<double> {
+         if (!c.asked_vibration) return std::nullopt;
+         return c.asked_vibration->frequency_Hz;
+       }},
+      // Shot speed off a swinging racquet (shot_speed_m_s) is to join here.
+      {"arm, nine hits: mean peak wrist force (the shock)", "arm_peak_wrist_force_N", "N",
+       [](const ComparedDesign& c) { return c.arm.peak_wrist_force_N.value; }},
+      {"arm, nine hits: mean W_h-weighted vibration at the hand",
+       "arm_hand_vibration_weighted_m_s2", "m/s^2",
+       [](const ComparedDesign& c) { return c.arm.hand_weighted_acceleration_m_s2.value; }},
+      {"arm, nine hits: mean vibration velocity at the hand", "arm_hand_vibration_velocity_m_s",
+       "m/s", [](const ComparedDesign& c) { return c.arm.hand_velocity_m_s.value; }},
+      {"arm, nine hits: frequency of the most vibration at the hand",
+       "arm_hand_vibration_frequency_Hz", "Hz",
+       [](const ComparedDesign& c) { return c.arm.hand_frequency_Hz.value; }},
+      {"arm, nine hits: mean peak twist torque (the twist)", "arm_peak_twist_torque_N_m", "N m",
+       [](const ComparedDesign& c) { return c.arm.peak_twist_torque_N_m.value; }},
       {"peak wrist force at the node", "peak_wrist_force_at_node_N", "N",
        [](const ComparedDesign& c) -> std::optional<double> {
          if (!c.spots.node_hand) return std::nullopt;
@@ -109,21 +157,98 @@ std::optional<std::string> moved(std::optional<double> before, std::optional<dou
                      toward(*after - *before), cm_text(*before), cm_text(*after));
 }
 
+// `value` to `digits` significant figures in fixed notation ("274", "0.95").
+std::string to_figures(double value, int digits) {
+  if (value == 0.0 || !std::isfinite(value)) return "0";
+  const int exponent = static_cast<int>(std::floor(std::log10(std::fabs(value))));
+  const double scale = std::pow(10.0, exponent - digits + 1);
+  const double rounded = std::round(value / scale) * scale;
+  return fmt::format("{:.{}f}", rounded == 0.0 ? 0.0 : rounded, std::max(0, digits - 1 - exponent));
+}
+
+}  // namespace
+
+std::string change_sentence(double before, double after, double threshold, std::string_view unit) {
+  const std::string with_unit = unit.empty() ? "" : " " + std::string(unit);
+  if (before == 0.0 && after != 0.0) {
+    return fmt::format("goes from 0{} to {}{}", with_unit, to_figures(after, 2), with_unit);
+  }
+  const double scale = std::fabs(before) > 0.0 ? std::fabs(before) : 1.0;
+  const double percent = 100.0 * (after - before) / scale;
+  const bool same = std::fabs(after - before) / scale < threshold || std::lround(percent) == 0;
+  // Two significant figures (what the model can claim), more only as it
+  // takes for the printed pair to differ and to show the percentage stated;
+  // about the same, a third figure at most to tell them apart.
+  const auto shows = [&](int d) {
+    const std::string a = to_figures(before, d), b = to_figures(after, d);
+    if (same) return a != b || d >= 3 || before == after;
+    if (a == b) return false;
+    const double pa = std::stod(a), pb = std::stod(b);
+    const double shown = 100.0 * (pb - pa) / (std::fabs(pa) > 0.0 ? std::fabs(pa) : 1.0);
+    return std::lround(std::fabs(shown)) == std::lround(std::fabs(percent));
+  };
+  int digits = 2;
+  while (digits < 6 && !shows(digits)) ++digits;
+  const std::string pair = fmt::format("({}{} → {}{})", to_figures(before, digits), with_unit,
+                                       to_figures(after, digits), with_unit);
+  if (same) return "is about the same " + pair;
+  return fmt::format("{} by {} % {}", percent < 0 ? "falls" : "rises",
+                     std::lround(std::fabs(percent)), pair);
+}
+
+namespace {
+
 // "falls by 7 % (250 N → 230 N)", or std::nullopt below the threshold.
 std::optional<std::string> force_change(double before, double after) {
   const double scale = std::max(std::fabs(before), 1.0);
   if (std::fabs(after - before) / scale < kForceThreshold) return std::nullopt;
-  const double percent = 100.0 * (after - before) / scale;
-  return fmt::format("{} by {:.0f} % ({} → {})", percent < 0 ? "falls" : "rises",
-                     std::fabs(percent), newton_text(before), newton_text(after));
+  return change_sentence(before, after, kForceThreshold, "N");
+}
+
+bool on_centre(const ComparedDesign& c) {
+  return c.spots.centre_of_strings &&
+         cm_text(c.spots.centre_of_strings->from_tip_m) == cm_text(c.spots.asked.from_tip_m);
+}
+
+// "3 cm off the axis toward 3 o'clock", or "" for a hit on the axis.
+std::string off_axis_text(const ComparedDesign& c) {
+  const double y = c.spots.asked.evaluation.impact_off_axis_m;
+  if (cm_text(std::fabs(y)) == "0 cm") return "";
+  return fmt::format("{} off the axis toward {} o'clock", cm_text(std::fabs(y)), y > 0 ? 3 : 9);
+}
+
+std::string along_text(const ComparedDesign& c) {
+  return on_centre(c) ? fmt::format("at the centre of the strings ({} from the tip)",
+                                    cm_text(c.spots.asked.from_tip_m))
+                      : fmt::format("{} from the tip", cm_text(c.spots.asked.from_tip_m));
 }
 
 std::string where_hit(const ComparedDesign& c) {
-  const bool centre = c.spots.centre_of_strings && cm_text(c.spots.centre_of_strings->from_tip_m) ==
-                                                       cm_text(c.spots.asked.from_tip_m);
-  return centre ? fmt::format("at the centre of the strings ({} from the tip)",
-                              cm_text(c.spots.asked.from_tip_m))
-                : fmt::format("{} from the tip", cm_text(c.spots.asked.from_tip_m));
+  const std::string off = off_axis_text(c);
+  return off.empty() ? along_text(c) : along_text(c) + ", " + off;
+}
+
+bool off_axis(const ComparedDesign& c) { return !off_axis_text(c).empty(); }
+
+// "a hit at the centre of the strings (18 cm from the tip)", each design's
+// own when they differ, told as its default when neither file gives one.
+std::string impact_words(const ComparedDesign& a, const ComparedDesign& b) {
+  if (where_hit(a) == where_hit(b)) return "a hit " + where_hit(a);
+  if (along_text(a) == along_text(b)) {  // the same place along the axis, not across it
+    const auto across = [](const ComparedDesign& c) {
+      return off_axis(c) ? off_axis_text(c) : std::string("on the axis");
+    };
+    return fmt::format("a hit {}, {} and {}", along_text(a), across(a), across(b));
+  }
+  const bool defaults = a.spots.asked_provenance != "given" && b.spots.asked_provenance != "given";
+  if (defaults && on_centre(a) && on_centre(b) && !off_axis(a) && !off_axis(b)) {
+    return fmt::format(
+        "a hit at each one's own default point, the centre of its strings ({} and {} from the "
+        "tip)",
+        cm_text(a.spots.asked.from_tip_m), cm_text(b.spots.asked.from_tip_m));
+  }
+  return fmt::format("a hit at the impact each {} ({} and {})",
+                     defaults ? "is given by default" : "asks about", where_hit(a), where_hit(b));
 }
 
 // The inputs that differ, in a player's words, and which differences of the
@@ -146,7 +271,19 @@ PlayerWords input_changes(const ComparedDesign& a, const ComparedDesign& b) {
   if (pb.size() > pa.size() && std::equal(pa.begin(), pa.end(), pb.begin(), [](auto& x, auto& y) {
         return x.mass_kg == y.mass_kg && x.from_butt_m == y.from_butt_m;
       })) {
+    const auto hour = [&](std::size_t k) {
+      return k < b.clock_hours.size() ? b.clock_hours[k] : std::nullopt;
+    };
     for (std::size_t k = pa.size(); k < pb.size(); ++k) {
+      // A pair of equal pieces on the hoop, one each side ("at 3 and 9 o'clock").
+      if (k + 1 < pb.size() && hour(k) && hour(k + 1) && pb[k].mass_kg == pb[k + 1].mass_kg &&
+          *hour(k) + *hour(k + 1) == 12) {
+        changes.push_back(fmt::format("{:.3g} g of added mass at {} and {} o'clock ({:.3g} g each)",
+                                      2.0 * pb[k].mass_kg * 1000, std::min(*hour(k), *hour(k + 1)),
+                                      std::max(*hour(k), *hour(k + 1)), pb[k].mass_kg * 1000));
+        ++k;
+        continue;
+      }
       changes.push_back(fmt::format("{:.3g} g of added mass {} from the tip", pb[k].mass_kg * 1000,
                                     cm_text(eb.length_m - pb[k].from_butt_m)));
     }
@@ -467,6 +604,115 @@ std::string inputs_sentence(const ComparedDesign& a, const ComparedDesign& b) {
 
 }  // namespace
 
+namespace {
+
+// One factor of the arm's load as a sentence's clause, and which way it points.
+struct ArmClause {
+  std::string text;
+  int points = 0;  // -1: the first design is kinder by it, +1: the second, 0: no difference
+  bool known = true;
+  std::string why;  // when not known
+};
+
+ArmClause arm_clause(const std::string& what, const std::string& detail, const char* unit,
+                     double factor, const studies::ArmFactor& a, const studies::ArmFactor& b,
+                     const ComparedDesign& da, const ComparedDesign& db) {
+  ArmClause clause;
+  if (!a.value || !b.value) {
+    clause.known = false;
+    const bool neither = !a.value && !b.value;
+    const std::string& why = !a.value ? a.unknown_why : b.unknown_why;
+    clause.text =
+        fmt::format("{} is not known for {}", what,
+                    neither ? std::string("either") : (!a.value ? da.design.name : db.design.name));
+    clause.why = (neither && a.unknown_why != b.unknown_why)
+                     ? fmt::format("{}: {}; {}: {}", da.design.name, a.unknown_why, db.design.name,
+                                   b.unknown_why)
+                     : why;
+    return clause;
+  }
+  const double before = *a.value * factor, after = *b.value * factor;
+  const double scale = std::fabs(before) > 0.0 ? std::fabs(before) : 1.0;
+  const bool differs =
+      std::fabs(after - before) / scale >= kArmThreshold && std::fabs(after - before) > 0.0;
+  clause.points = !differs ? 0 : after < before ? 1 : -1;
+  clause.text =
+      fmt::format("{} ({}) {}", what, detail, change_sentence(before, after, kArmThreshold, unit));
+  return clause;
+}
+
+// What the two designs do to the arm over the spread of hits: each factor's
+// number and the way it points, then the verdict (docs/model.md, "The arm").
+std::vector<std::string> arm_sentences(const ComparedDesign& a, const ComparedDesign& b) {
+  const studies::ArmLoad& la = a.arm;
+  const studies::ArmLoad& lb = b.arm;
+  std::string frequency;
+  if (la.hand_frequency_Hz.value && lb.hand_frequency_Hz.value) {
+    const std::string fa = fmt::format("{:.0f} Hz", *la.hand_frequency_Hz.value);
+    const std::string fb = fmt::format("{:.0f} Hz", *lb.hand_frequency_Hz.value);
+    frequency =
+        fa == fb ? ", mostly at " + fa : fmt::format(", mostly at {} instead of {}", fb, fa);
+  }
+  const std::vector<std::pair<const char*, ArmClause>> clauses{
+      {"the shock", arm_clause("the shock at the wrist", "mean peak wrist force", "N", 1.0,
+                               la.peak_wrist_force_N, lb.peak_wrist_force_N, a, b)},
+      {"the vibration",
+       arm_clause("the vibration at the hand",
+                  "mean weighted acceleration, ISO 5349-1's W_h" + frequency, "m/s²", 1.0,
+                  la.hand_weighted_acceleration_m_s2, lb.hand_weighted_acceleration_m_s2, a, b)},
+      {"the twist", arm_clause("the twist", "mean peak torque about the long axis", "N·m", 1.0,
+                               la.peak_twist_torque_N_m, lb.peak_twist_torque_N_m, a, b)},
+  };
+  std::vector<std::string> parts, for_a, for_b, unknown, reasons;
+  for (const auto& [name, clause] : clauses) {
+    parts.push_back(clause.text);
+    if (!clause.known && std::find(reasons.begin(), reasons.end(), clause.why) == reasons.end())
+      reasons.push_back(clause.why);
+    if (!clause.known) unknown.emplace_back(name);
+    if (clause.points > 0) for_b.emplace_back(name);
+    if (clause.points < 0) for_a.emplace_back(name);
+  }
+  const std::string where =
+      la.around_centre_of_strings && lb.around_centre_of_strings
+          ? "around the centre of the strings"
+      : !la.around_centre_of_strings && !lb.around_centre_of_strings
+          ? "around the impact asked about"
+          : "around the centre of the strings (without strings, the impact asked about)";
+  std::vector<std::string> out;
+  const bool grid = la.spread.size() == 9 && lb.spread.size() == 9;
+  out.push_back(fmt::format(
+      "On the arm, over {} hits {} ({} apart along {}): {}.", grid ? "nine" : "the", where,
+      cm_text(studies::kArmSpreadStep_m),
+      grid ? "and across the axis" : "the axis, and across it where it can twist", joined(parts)));
+  if (!reasons.empty()) {
+    std::string why;
+    for (const std::string& r : reasons) why += (why.empty() ? "" : "; ") + r;
+    out.push_back("Not known: " + why + ".");
+  }
+  const std::string of_known = unknown.empty() ? "" : " of those known";
+  if (!for_a.empty() && !for_b.empty()) {
+    out.push_back(fmt::format(
+        "The factors disagree: {} {} to {}, {} to {}; the model weighs none against another.",
+        joined(for_b), for_b.size() == 1 ? "points" : "point", b.design.name, joined(for_a),
+        a.design.name));
+  } else if (!for_a.empty() || !for_b.empty()) {
+    const bool second = !for_b.empty();
+    const auto& agree = second ? for_b : for_a;
+    const ComparedDesign& kinder = second ? b : a;
+    out.push_back(
+        fmt::format("For the arm, {} is the kinder: {} {} to it and no factor{} the other way.",
+                    kinder.design.name, joined(agree), agree.size() == 1 ? "points" : "point",
+                    of_known + " points"));
+  } else {
+    out.push_back(
+        fmt::format("Neither is kinder to the arm: no factor{} changes by {:.0f} % or more.",
+                    of_known, 100.0 * kArmThreshold));
+  }
+  return out;
+}
+
+}  // namespace
+
 std::vector<std::string> differences(const ComparedDesign& a, const ComparedDesign& b) {
   std::vector<std::string> sentences;
   sentences.push_back(
@@ -477,16 +723,30 @@ std::vector<std::string> differences(const ComparedDesign& a, const ComparedDesi
   if (const auto m = moved(node_of(a), node_of(b))) effects.push_back("the node " + *m);
   const Evaluation& ea = a.spots.asked.evaluation;
   const Evaluation& eb = b.spots.asked.evaluation;
-  const bool same_impact = cm_text(a.spots.asked.from_tip_m) == cm_text(b.spots.asked.from_tip_m);
-  const std::string impact = same_impact
-                                 ? "a hit " + where_hit(a)
-                                 : fmt::format("a hit at the impact each asks about ({} and {})",
-                                               where_hit(a), where_hit(b));
+  const std::string impact = impact_words(a, b);
   if (const auto f = force_change(ea.peak_wrist_force_N, eb.peak_wrist_force_N))
     effects.push_back("the wrist force of " + impact + " " + *f);
   if (std::fabs(eb.apparent_cor - ea.apparent_cor) >= kCorThreshold)
     effects.push_back(fmt::format("its rebound goes from {} to {} of the ball's speed",
                                   ratio_text(ea.apparent_cor), ratio_text(eb.apparent_cor)));
+  // Shot speed off a swinging racquet joins here when the evaluation gives it.
+  if (std::fabs(eb.impact_duration_s - ea.impact_duration_s) >=
+      kForceThreshold * std::fabs(ea.impact_duration_s))
+    effects.push_back("its contact time " + change_sentence(ea.impact_duration_s * 1e3,
+                                                            eb.impact_duration_s * 1e3,
+                                                            kForceThreshold, "ms"));
+  if (a.asked_vibration && b.asked_vibration) {
+    const double va = a.asked_vibration->weighted_acceleration_m_s2;
+    const double vb = b.asked_vibration->weighted_acceleration_m_s2;
+    if (std::fabs(vb - va) >= kArmThreshold * std::fabs(va))
+      effects.push_back("the vibration it leaves at the hand (weighted acceleration) " +
+                        change_sentence(va, vb, kArmThreshold, "m/s²"));
+  }
+  if (off_axis(a) || off_axis(b)) {
+    effects.push_back(fmt::format(
+        "the twist of {} (peak torque about the long axis) {}", impact,
+        change_sentence(ea.peak_twist_torque_N_m, eb.peak_twist_torque_N_m, kArmThreshold, "N·m")));
+  }
   if (a.spots.node_hand && b.spots.node_hand) {
     if (const auto f = force_change(a.spots.node_hand->evaluation.peak_wrist_force_N,
                                     b.spots.node_hand->evaluation.peak_wrist_force_N))
@@ -494,19 +754,15 @@ std::vector<std::string> differences(const ComparedDesign& a, const ComparedDesi
   }
   if (effects.empty()) {
     sentences.push_back(
-        "No difference that matters: the sweet spots move less than 0.5 cm, the wrist force "
-        "changes less than 2 % and the rebound less than 0.01.");
+        "No difference that matters at the impact: the sweet spots move less than 0.5 cm, the "
+        "wrist force, the contact time and the vibration at the hand change less than 2 % and "
+        "the rebound less than 0.01.");
   } else {
     std::string first = joined(effects);
     first[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(first[0])));
     sentences.push_back(first + ".");
-    const auto f = force_change(ea.peak_wrist_force_N, eb.peak_wrist_force_N);
-    if (f) {
-      sentences.push_back(fmt::format(
-          "For a sore elbow, {} is the kinder of the two for {}.",
-          eb.peak_wrist_force_N < ea.peak_wrist_force_N ? b.design.name : a.design.name, impact));
-    }
   }
+  for (std::string& s : arm_sentences(a, b)) sentences.push_back(std::move(s));
   return sentences;
 }
 
@@ -527,6 +783,22 @@ std::string comparison_report(const std::vector<ComparedDesign>& designs, io::Fo
         values[row.key] = v ? io::Json(*v) : io::Json(nullptr);
       }
       d["sweet_spots"] = sweet_spot_sentences(c.design, c.spots);
+      io::Json& arm = d["arm"];
+      arm["spread"] = io::Json::array();
+      for (const studies::SpreadPoint& p : c.arm.spread)
+        arm["spread"].push_back({{"from_tip_m", p.from_tip_m}, {"off_axis_m", p.off_axis_m}});
+      arm["around"] =
+          c.arm.around_centre_of_strings ? "the centre of the strings" : "the impact asked about";
+      const std::pair<const char*, const studies::ArmFactor*> factors[] = {
+          {"peak_wrist_force_N", &c.arm.peak_wrist_force_N},
+          {"hand_vibration_weighted_m_s2", &c.arm.hand_weighted_acceleration_m_s2},
+          {"hand_vibration_velocity_m_s", &c.arm.hand_velocity_m_s},
+          {"hand_vibration_frequency_Hz", &c.arm.hand_frequency_Hz},
+          {"peak_twist_torque_N_m", &c.arm.peak_twist_torque_N_m}};
+      for (const auto& [key, factor] : factors) {
+        arm[key] = factor->value ? io::Json(*factor->value) : io::Json(nullptr);
+        if (!factor->value) arm["unknown"][key] = factor->unknown_why;
+      }
       j["designs"].push_back(d);
     }
     j["differences"] = io::Json::array();
@@ -731,7 +1003,7 @@ std::string comparison_html(const std::vector<ComparedDesign>& designs) {
       "<section id=\"racquets\"><h2>The racquets, to one scale</h2>\n<p>Each from above, tip "
       "on the left: the balance point (triangle), the hand-held COP (red dot), the node (blue "
       "diamond, when the frame's stiffness is known), the lead (orange) and the ball at the "
-      "impact.</p>\n";
+      "impact (off the axis where the hit is, 3 o'clock up).</p>\n";
   std::vector<reports::DrawnRacquet> drawn;
   for (const ComparedDesign& c : designs)
     drawn.push_back({&c.design, &c.spots.asked.evaluation, reports::html_escape(c.design.name)});

@@ -5,6 +5,7 @@
 // and what changes from the first to each of the others stated in words.
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "io/design_reader.hpp"
@@ -26,6 +27,13 @@ using studies::ComparedDesign;
 // the impact asked about and at the sweet spots. "No difference that matters"
 // when nothing passes those thresholds.
 std::vector<std::string> differences(const ComparedDesign& before, const ComparedDesign& after);
+
+// "falls by 7 % (250 N → 230 N)", "rises by 2 % (275 N → 280 N)", or "is about
+// the same (0.95 N·m → 0.95 N·m)" when the change is below `threshold`
+// (relative) or rounds to 0 %: the two values to two significant figures, more
+// where that takes for the printed pair to differ and to show the percentage
+// stated.
+std::string change_sentence(double before, double after, double threshold, std::string_view unit);
 
 // The comparison in `format`: Markdown (a table in people's units, then the
 // differences in words), JSON ({"designs": [...], "differences": [...]}, SI)

@@ -362,10 +362,16 @@ std::string racquet_top_svg(const io::DesignFile& file, const Evaluation& e, dou
       "<ellipse class=\"frame\" cx=\"{0}\" cy=\"0\" rx=\"{3}\" ry=\"{4}\"/>\n",
       n(head_cx), n(a / 2), n(b / 2), n(a / 2 + kRim_cm / 2), n(b / 2 + kRim_cm / 2));
   svg += hand_and_tape(file, half, false);
+  // Off the axis towards 3 o'clock is up in this view (the face seen with the
+  // tip on the left); a hit on the axis is drawn and titled as before.
+  const double off_cm = file.design.impact_off_axis_m * 100.0;
   svg += fmt::format(
-      "<circle class=\"ball\" cx=\"{}\" cy=\"0\" r=\"{}\"><title>the ball at the impact, {} cm "
-      "from the tip</title></circle>\n",
-      n(impact), n(kBall_cm / 2), n(impact));
+      "<circle class=\"ball\" cx=\"{}\" cy=\"{}\" r=\"{}\"><title>the ball at the impact, {} cm "
+      "from the tip{}</title></circle>\n",
+      n(impact), n(off_cm == 0.0 ? 0.0 : -off_cm), n(kBall_cm / 2), n(impact),
+      off_cm == 0.0 ? std::string()
+                    : fmt::format(", {} cm off the axis toward {} o'clock", n(std::fabs(off_cm)),
+                                  off_cm > 0 ? 3 : 9));
   for (const Mark& m : marks(file, e, 0.0)) svg += m.symbol + "\n";
   svg += labels(ms, 0.0, top + 1.8);
   svg += ruler(L, half + 1.5);

@@ -163,5 +163,85 @@ TEST_CASE("compare compares the designs as read, not the files' text") {
         "15.99999999999999 cm.");
 }
 
+TEST_CASE("a change's two values are printed so that they differ and show the percentage") {
+  // Two figures would say 280 N -> 280 N for a 2 % fall: a third figure tells them apart.
+  CHECK(change_sentence(283.0, 277.3, 0.02, "N") == "falls by 2 % (283 N → 277 N)");
+  // Two figures suffice where they differ and show the percentage.
+  CHECK(change_sentence(250.0, 230.0, 0.02, "N") == "falls by 8 % (250 N → 230 N)");
+  // Two figures that differ but overstate it (280 -> 270 is 3.6 %): a third.
+  CHECK(change_sentence(280.4, 274.6, 0.02, "N") == "falls by 2 % (280 N → 275 N)");
+  CHECK(change_sentence(0.95, 0.99, 0.02, "N·m") == "rises by 4 % (0.95 N·m → 0.99 N·m)");
+  // Below the threshold, or rounding to 0 %: about the same, the pair still apart.
+  CHECK(change_sentence(100.0, 101.0, 0.02, "N") == "is about the same (100 N → 101 N)");
+  CHECK(change_sentence(238.45, 238.45, 0.02, "N") == "is about the same (240 N → 240 N)");
+  CHECK(change_sentence(0.0, 43.01, 0.02, "N·m") == "goes from 0 N·m to 43 N·m");
+  CHECK(change_sentence(280.0, 280.1, 0.0, "N") == "is about the same (280 N → 280 N)");
+}
+
+// The differences of kBase against a variant, as one paragraph, at `fidelity`.
+std::string paragraph(const io::Json& b, const char* fidelity = "rigid") {
+  const io::Json a = io::Json::parse(kBase);
+  const auto at = [&](const io::Json& d) {
+    return studies::compare_one(io::read_design(d, d["name"].get<std::string>() + ".json"),
+                                fidelity, 1e-6);
+  };
+  std::string text;
+  for (const std::string& s : differences(at(a), at(b))) text += s + " ";
+  return text;
+}
+
+TEST_CASE("compare says a pair of pieces on the hoop is at 3 and 9 o'clock") {
+  io::Json b = io::Json::parse(kBase);
+  b["name"] = "B";
+  b["implement"]["point_masses"].push_back(io::Json::parse(R"({"clock": [3, 9], "mass_g": 5})"));
+  const std::string text = paragraph(b);
+  INFO(text);
+  CHECK(text.find("10 g of added mass at 3 and 9 o'clock (5 g each)") != std::string::npos);
+}
+
+TEST_CASE("compare says an off-axis hit is off the axis, with its twist") {
+  const std::string text = paragraph(with("/impact/off_axis_cm", 3));
+  INFO(text);
+  // From none to F0 x 3 cm.
+  CHECK(text.find("the twist of a hit 16 cm from the tip, on the axis and 3 cm off the axis "
+                  "toward 3 o'clock (peak torque about the long axis) goes from 0 N·m to ") !=
+        std::string::npos);
+}
+
+TEST_CASE("compare tells two racquets hit at their own default points as such") {
+  io::Json a = io::Json::parse(kBase);
+  a.erase("impact");
+  io::Json b = a;
+  b["name"] = "B";
+  b["implement"]["headsize_sq_in"] = 115;
+  const auto at = [&](const io::Json& d) {
+    return studies::compare_one(io::read_design(d, d["name"].get<std::string>() + ".json"), "rigid",
+                                1e-6);
+  };
+  std::string text;
+  for (const std::string& s : differences(at(a), at(b))) text += s + " ";
+  INFO(text);
+  CHECK(text.find("at each one's own default point, the centre of its strings (") !=
+        std::string::npos);
+}
+
+TEST_CASE("compare's arm verdict names each factor's number and which way it points") {
+  // A softer frame at the modal fidelity: the rigid body's numbers do not
+  // change, the vibration at the hand grows (tests/studies/arm_load_test.cpp).
+  const std::string text = paragraph(with("/frame/fundamental_free_Hz", 125), "modal");
+  INFO(text);
+  CHECK(text.find("On the arm, over nine hits around the centre of the strings (3 cm apart") !=
+        std::string::npos);
+  CHECK(text.find("the shock at the wrist (mean peak wrist force) is about the same (") !=
+        std::string::npos);
+  CHECK(text.find("mostly at 125 Hz instead of 155 Hz) rises by") != std::string::npos);
+  CHECK(text.find("For the arm, A is the kinder: the vibration points to it") != std::string::npos);
+  // A rigid comparison: the vibration is not known, and said so.
+  const std::string rigid = paragraph(with("/ball/speed_m_s", 40));
+  INFO(rigid);
+  CHECK(rigid.find("the vibration at the hand is not known for either") != std::string::npos);
+  CHECK(rigid.find("Not known: the rigid model has no vibration.") != std::string::npos);
+  CHECK(rigid.find("no factor of those known") != std::string::npos);
+}
 }  // namespace
 }  // namespace sweetspot::reports
