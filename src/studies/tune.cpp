@@ -25,8 +25,9 @@ constexpr double kInertiaTolerance_kg_m2 = 1e-7;
 constexpr double kMassUnit_kg = 1e-3;
 constexpr double kBalanceUnit_m = 1e-3;
 constexpr double kInertiaUnit_kg_m2 = 1e-4;
-// The support search tries at most this many sets of columns.
-constexpr std::size_t kMaxSupports = 2'000'000;
+// The support search tries at most this many sets of columns (four racquets
+// with four places each, 450 000 sets, take a few seconds).
+constexpr std::size_t kMaxSupports = 600'000;
 
 std::vector<std::string_view> split(std::string_view text, char separator) {
   std::vector<std::string_view> items;

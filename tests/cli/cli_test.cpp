@@ -1527,3 +1527,22 @@ TEST_CASE("tune --match never writes a tuned racquet over one of its inputs") {
   CHECK(run.err.find("is the input") != std::string::npos);
   CHECK(slurp(b) == before);
 }
+
+TEST_CASE("tune --like reaches another racquet's specs: its own copy with 10 g at 12") {
+  // Three places, three specs: the only lead that gives the copy's mass,
+  // balance and swingweight is its 10 g at 12.
+  const Sandbox box;
+  const fs::path design = box.file("racquet.json", kClubRacquet);
+  std::string leaded = kClubRacquet;
+  leaded.replace(leaded.find("\"headsize_sq_in\": 100"), 21,
+                 "\"headsize_sq_in\": 100, \"point_masses\": [{\"clock\": 12, \"mass_g\": 10}]");
+  const fs::path other = box.file("other.json", leaded);
+  const Run run = box.run("tune \"" + design.string() + "\" --like \"" + other.string() +
+                          "\" --places 12,3/9,handle --format json");
+  INFO(run.err);
+  REQUIRE(run.status == 0);
+  const nlohmann::json j = nlohmann::json::parse(run.out);
+  CHECK(j["lead"][0]["mass_g"].get<double>() == Approx(10.0).margin(1e-3));
+  CHECK(j["added_g"].get<double>() == Approx(10.0).margin(1e-3));
+  CHECK(j["targets"]["mass_g"].get<double>() == Approx(328.0));
+}
