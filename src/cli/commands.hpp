@@ -51,10 +51,11 @@ struct CompareCommand {
 struct TuneCommand {
   CLI::App* command = nullptr;
   std::vector<std::string> design_paths;
-  std::string target;  // --target mass_g=330,balance_cm=32,...
-  std::string like;    // --like OTHER.json: its specs are the targets
-  std::string places;  // --places 12,3/9,handle
-  bool match = false;  // --match A B ...: common specs
+  std::vector<std::string> settings;  // --set FIELD=VALUE, repeatable
+  std::string target;                 // --target mass_g=330,balance_cm=32,...
+  std::string like;                   // --like OTHER.json: its specs are the targets
+  std::string places;                 // --places 12,3/9,handle
+  bool match = false;                 // --match A B ...: common specs
   double strip_g = 1.0;
   double tolerance = 1e-6;
   std::string format = "md";

@@ -16,6 +16,7 @@
 #include "io/json_reader.hpp"
 #include "reports/tune_report.hpp"
 #include "studies/comparison.hpp"
+#include "studies/design_settings.hpp"
 #include "studies/tune.hpp"
 
 namespace sweetspot::cli {
@@ -27,9 +28,11 @@ struct ReadDesign {
   io::DesignFile file;
 };
 
-ReadDesign read(const std::string& path) {
+// With --set, the document is the variant's: the tuned file holds the settings too.
+ReadDesign read(const std::string& path, const std::vector<studies::Setting>& settings) {
   io::Json document = io::read_json_file(path);
-  io::DesignFile file = io::read_design(document, io::input_name(path));
+  io::DesignFile file = studies::read_design(document, io::input_name(path), settings);
+  studies::apply_settings(document, settings);
   return {std::move(document), std::move(file)};
 }
 
@@ -70,6 +73,7 @@ void TuneCommand::add_to(CLI::App& app) {
                    "more")
       ->required()
       ->expected(1, 64);
+  add_set_option(command, settings);
   command->add_option("--target", target,
                       "The specs to reach, NAME=VALUE separated by commas: mass_g (or mass_kg), "
                       "balance_cm (or balance_from_butt_m, from the butt), swingweight_kg_cm2, "
@@ -149,7 +153,8 @@ int TuneCommand::run() const {
   if (!output_dir.empty()) plan.write_folder("--output-dir", output_dir);
 
   std::vector<ReadDesign> designs;
-  for (const std::string& path : design_paths) designs.push_back(read(path));
+  const std::vector<studies::Setting> settings_of = studies::parse_settings(settings);
+  for (const std::string& path : design_paths) designs.push_back(read(path, settings_of));
   const double strip_kg = strip_g * 1e-3;
   io::OutputSet outputs;
   std::vector<std::pair<std::string, std::string>> folder_files;  // --output-dir's, made with it
