@@ -31,6 +31,7 @@
 #include "studies/optimization.hpp"
 #include "studies/string_bed_map.hpp"
 #include "studies/study.hpp"
+#include "studies/sweet_spots.hpp"
 #include "sweetspot/beam_modes.hpp"
 #include "sweetspot/evaluate.hpp"
 
@@ -91,7 +92,8 @@ py::object evaluate_py(py::handle design, const std::optional<std::string>& fide
   {
     py::gil_scoped_release release;
     const io::DesignFile file = io::read_design(document.json, document.source);
-    json = io::evaluation_json(file, io::evaluate_design_file(file, name, tol));
+    json = io::evaluation_json(
+        file, studies::with_power_point(file, io::evaluate_design_file(file, name, tol), tol));
   }
   return to_python(json);
 }
@@ -268,7 +270,7 @@ py::dict collide_py(py::handle design, double tol) {
   std::optional<Evaluation> e;
   {
     py::gil_scoped_release release;
-    e = io::evaluate_design_file(file, "collision", tol);
+    e = studies::with_power_point(file, io::evaluate_design_file(file, "collision", tol), tol);
   }
   const CollisionResult& r = e->details.value().collision.value();
   py::dict out;

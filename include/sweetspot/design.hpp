@@ -10,6 +10,7 @@
 #include "sweetspot/head_geometry.hpp"
 #include "sweetspot/implement.hpp"
 #include "sweetspot/string_bed.hpp"
+#include "sweetspot/swing.hpp"
 
 namespace sweetspot {
 
@@ -129,6 +130,12 @@ struct Design {
   double impact_off_axis_m = 0.0;
   std::optional<double> twistweight_kg_m2{};
   std::optional<HeadShape> head{};
+  // The racquet swung at the ball (swing.hpp). When given, ball.speed_m_s is
+  // the incoming ball's speed over the ground and the collision is solved in
+  // the frame moving with the impact point, at the relative speed v_in + V;
+  // when absent, the impact is the laboratory's (the racquet at rest) and the
+  // shot speed is the one kTypicalGroundstroke would give.
+  std::optional<Swing> swing{};
 };
 
 // The polar inertia of the implement about its long axis [kg m^2]: the

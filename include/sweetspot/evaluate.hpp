@@ -71,6 +71,22 @@ struct Evaluation {
   // through (see docs/model.md, "Twist").
   double peak_twist_torque_N_m = 0.0;
 
+  // The shot off a swinging racquet (swing.hpp): the swing used (the design's,
+  // scaled to its swingweight when asked, or kTypicalGroundstroke when the
+  // design gives none: swing_assumed), the racquet's speed V at the impact
+  // point, the incoming ball's speed v_in (ball.speed_m_s) and the outgoing
+  // ball's, e_A v_in + (1 + e_A) V.
+  Swing swing = kTypicalGroundstroke;
+  bool swing_assumed = true;
+  double racquet_speed_m_s = 0.0;
+  double incoming_speed_m_s = 0.0;
+  double shot_speed_m_s = 0.0;
+  // Where along the string bed the shot is fastest (power_point_on_axis() in
+  // the studies, set by the commands that answer one design): from the butt
+  // [m] and the shot speed there [m/s]; absent when not searched.
+  std::optional<double> power_point_from_butt_m;
+  std::optional<double> power_point_shot_speed_m_s;
+
   // The flexible frame, when evaluated with Fidelity::kModal or kResponse.
   std::optional<ModalOutputs> modal;
 

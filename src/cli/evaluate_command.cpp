@@ -219,12 +219,18 @@ int EvaluateCommand::run() const {
   const io::DesignFile design =
       studies::load_design(design_path, studies::parse_settings(settings));
   // The command line's --fidelity wins over the file's "fidelity".
-  const Evaluation result = io::evaluate_design_file(
+  Evaluation result = io::evaluate_design_file(
       design, command->count("--fidelity") ? fidelity : std::string(), tolerance);
   std::string answer;
   if (out.parsed() == io::Format::kMarkdown) {
-    answer =
-        reports::sweet_spot_paragraph(design, studies::find_sweet_spots(design, result, tolerance));
+    const studies::SweetSpots spots = studies::find_sweet_spots(design, result, tolerance);
+    answer = reports::sweet_spot_paragraph(design, spots);
+    if (spots.power_point) {
+      result.power_point_from_butt_m = result.length_m - spots.power_point->from_tip_m;
+      result.power_point_shot_speed_m_s = spots.power_point->evaluation.shot_speed_m_s;
+    }
+  } else {
+    result = studies::with_power_point(design, std::move(result), tolerance);
   }
   io::OutputSet outputs;
   out.emit(io::evaluation_report(design, result, out.parsed(), answer, units == "people"), outputs);

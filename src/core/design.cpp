@@ -30,8 +30,16 @@ void validate(const Design& d) {
                      "must be >= " + detail::format_number(kMinImplementMass_kg) + " kg, got " +
                          detail::format_number(d.implement.mass_properties().mass_kg) + " kg");
   }
-  detail::require_positive("ball/speed_m_s", d.ball.speed_m_s, "m/s");
-  detail::require_in_range("ball/speed_m_s", d.ball.speed_m_s, kMinSpeed_m_s, kMaxSpeed_m_s, "m/s");
+  if (d.swing) {
+    // The incoming ball's speed over the ground: 0 for a serve; the racquet's
+    // own speed at the impact makes the relative speed (checked by evaluate()).
+    validate(*d.swing);
+    detail::require_in_range("ball/speed_m_s", d.ball.speed_m_s, 0.0, kMaxSpeed_m_s, "m/s");
+  } else {
+    detail::require_positive("ball/speed_m_s", d.ball.speed_m_s, "m/s");
+    detail::require_in_range("ball/speed_m_s", d.ball.speed_m_s, kMinSpeed_m_s, kMaxSpeed_m_s,
+                             "m/s");
+  }
   detail::require_in_range("impact/from_butt_m", d.impact_from_butt_m, 0.0, L, "m");
   detail::require_positive("hand/grip_length_m", d.hand.grip_length_m, "m");
   detail::require_in_range("hand/grip_stiffness_N_m2", d.hand.grip_stiffness_N_m2, 0.0,

@@ -13,6 +13,7 @@
 #include "sweetspot/kernels.hpp"
 #include "sweetspot/mode_cache.hpp"
 #include "sweetspot/rigid_impact.hpp"
+#include "sweetspot/swing.hpp"
 
 namespace sweetspot {
 namespace {
@@ -140,7 +141,11 @@ Fidelity needed_fidelity(const Design& design) {
   return has_stiffness(design) ? Fidelity::kModal : Fidelity::kRigid;
 }
 
-Evaluation evaluate(const Design& design, Fidelity fidelity, const EvaluationOptions& options) {
+namespace {
+
+// The evaluation at `fidelity` of a design without a swing.
+Evaluation evaluate_at_rest(const Design& design, Fidelity fidelity,
+                            const EvaluationOptions& options) {
   if (fidelity == Fidelity::kRigid) return evaluate_rigid(design, options);
   ModeCache local;
   ModeCache& cache = options.modes ? *options.modes : local;
@@ -155,6 +160,44 @@ Evaluation evaluate(const Design& design, Fidelity fidelity, const EvaluationOpt
       break;
   }
   return evaluate_rigid(design, options);
+}
+
+}  // namespace
+
+Evaluation evaluate(const Design& design, Fidelity fidelity, const EvaluationOptions& options) {
+  if (!design.swing) {
+    // The laboratory's impact; the shot the assumed groundstroke would give.
+    Evaluation e = evaluate_at_rest(design, fidelity, options);
+    e.incoming_speed_m_s = design.ball.speed_m_s;
+    e.racquet_speed_m_s = racquet_speed_m_s(e.swing, e.impact_from_butt_m);
+    e.shot_speed_m_s = shot_speed_m_s(e.apparent_cor, e.incoming_speed_m_s, e.racquet_speed_m_s);
+    return e;
+  }
+  // The racquet is free during the contact: the collision in the frame moving
+  // with the impact point is the one of a ball arriving at v_in + V onto the
+  // racquet at rest (swing.hpp).
+  validate(design);
+  const Swing swing =
+      scaled_to_swingweight(*design.swing, swingweight_kg_m2(design.implement.mass_properties()));
+  const double V = racquet_speed_m_s(swing, design.impact_from_butt_m);
+  Design in_play = design;
+  in_play.swing.reset();
+  in_play.ball.speed_m_s = design.ball.speed_m_s + V;
+  if (!(in_play.ball.speed_m_s >= kMinSpeed_m_s)) {
+    throw FieldError("swing/angular_speed_rad_s",
+                     "the ball and the racquet meet at " +
+                         detail::format_number(in_play.ball.speed_m_s) +
+                         " m/s, below the model's least speed of " +
+                         detail::format_number(kMinSpeed_m_s) + " m/s");
+  }
+  Evaluation e = evaluate_at_rest(
+      in_play, fidelity, {.rel_tol = options.rel_tol, .modes = options.modes, .validated = false});
+  e.swing = swing;
+  e.swing_assumed = false;
+  e.incoming_speed_m_s = design.ball.speed_m_s;
+  e.racquet_speed_m_s = V;
+  e.shot_speed_m_s = shot_speed_m_s(e.apparent_cor, e.incoming_speed_m_s, V);
+  return e;
 }
 
 std::string_view to_string(Fidelity fidelity) {

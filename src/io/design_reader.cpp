@@ -22,7 +22,7 @@ namespace {
 // The parts of a design file; the physics core names an input by its
 // canonical SI path below one of them ("hand/grip_length_m").
 constexpr std::string_view kDesignParts[] = {"implement", "frame", "strings", "hand",
-                                             "forearm",   "ball",  "impact"};
+                                             "forearm",   "ball",  "impact",  "swing"};
 
 bool is_design_path(std::string_view name) {
   const std::string_view part = name.substr(0, name.find('/'));
@@ -85,7 +85,8 @@ bool is_design_path(std::string_view name) {
     // "frame.modes/0/phi", "impact_from_butt_m", "ball_stiffness_N_m"): the
     // part is the input named.
     const std::string part = core_name.substr(0, core_name.find_first_of("./_"));
-    for (const char* top : {"implement", "frame", "strings", "hand", "forearm", "ball", "impact"}) {
+    for (const char* top :
+         {"implement", "frame", "strings", "hand", "forearm", "ball", "impact", "swing"}) {
       if (part == top) throw InputError(source, "/" + part, core_name + ": " + detail);
     }
   }
@@ -692,6 +693,77 @@ void read_ball(ObjectReader& top, Reading& in) {
   ball.reader().finish(design_keys("ball"));
 }
 
+// /swing: the racquet swung at the ball (swing.hpp); absent, none is given.
+// Its speed is an angular speed (rad/s or rpm) or the racquet's speed at the
+// impact point (m/s, km/h, mph), about a pivot beyond the butt; a reference
+// swingweight scales it to the design's (Cross & Bower 2006).
+void read_swing(ObjectReader& top, Reading& in) {
+  if (!top.child("swing")) return;
+  Part swing(top, "swing", in.keys, in.provenance);
+  ObjectReader& r = swing.reader();
+  const auto rad_s = r.number("angular_speed_rad_s");
+  const auto rpm = r.number("angular_speed_rpm");
+  const auto at_impact = r.quantity("speed_at_impact", Dimension::kSpeed);
+  if (int{rad_s.has_value()} + int{rpm.has_value()} + int{at_impact.has_value()} != 1) {
+    r.fail("",
+           "give the swing's speed once: angular_speed_rad_s, angular_speed_rpm or "
+           "speed_at_impact_m_s (or _km_h, _mph)");
+  }
+  const auto pivot = r.quantity("pivot_beyond_butt", Dimension::kLength);
+  if (!pivot) {
+    r.fail("",
+           "needs pivot_beyond_butt_m (or _cm, _in): how far beyond the butt the swing's pivot "
+           "is (the wrist about 0.05 m, the shoulder about 0.6 m)");
+  }
+  const std::string pivot_key = r.one_of(spellings("pivot_beyond_butt", Dimension::kLength));
+  if (!(*pivot >= 0.0 && *pivot <= kMaxPivotBeyondButt_m)) {
+    r.fail(pivot_key, "must be in [0, " + brief(Json(kMaxPivotBeyondButt_m)) + "] m, got " +
+                          brief(Json(*pivot)) + " m");
+  }
+  Swing s;
+  s.pivot_beyond_butt_m = *pivot;
+  constexpr double kRadPerRev = 2.0 * 3.141592653589793;
+  if (rad_s) {
+    s.angular_speed_rad_s = *rad_s;
+  } else if (rpm) {
+    s.angular_speed_rad_s = *rpm * kRadPerRev / 60.0;
+    r.record("angular_speed_rad_s", "angular_speed_rpm");
+  } else {
+    const std::string key = r.one_of(spellings("speed_at_impact", Dimension::kSpeed));
+    const double arm = *pivot + in.design.impact_from_butt_m;
+    if (!(*at_impact > 0.0 && *at_impact <= kMaxSpeed_m_s)) {
+      r.fail(key, "must be in (0, " + brief(Json(kMaxSpeed_m_s)) + "] m/s, got " +
+                      brief(Json(*at_impact)) + " m/s");
+    }
+    if (!(arm > 0.0)) {
+      r.fail(key,
+             "the impact is at the pivot (pivot_beyond_butt 0 and the impact at the butt): give "
+             "angular_speed_rad_s");
+    }
+    s.angular_speed_rad_s = *at_impact / arm;
+    r.record("angular_speed_rad_s", key);
+  }
+  if (!(s.angular_speed_rad_s > 0.0 && s.angular_speed_rad_s <= kMaxAngularSpeed_rad_s)) {
+    const std::string key = rad_s ? "angular_speed_rad_s" : rpm ? "angular_speed_rpm" : "";
+    const double given = rad_s ? *rad_s : rpm ? *rpm : s.angular_speed_rad_s;
+    r.fail(key.empty() ? r.one_of(spellings("speed_at_impact", Dimension::kSpeed)) : key,
+           "the swing's angular speed must be in (0, " + brief(Json(kMaxAngularSpeed_rad_s)) +
+               "] rad/s (" + brief(Json(kMaxAngularSpeed_rad_s * 60.0 / kRadPerRev)) +
+               " rpm), got " + brief(Json(given)) +
+               (rad_s ? " rad/s"
+                : rpm ? " rpm"
+                      : " m/s"));
+  }
+  s.reference_swingweight_kg_m2 = r.quantity("reference_swingweight", Dimension::kInertia);
+  if (s.reference_swingweight_kg_m2 && !(*s.reference_swingweight_kg_m2 > 0.0)) {
+    r.fail(r.one_of(spellings("reference_swingweight", Dimension::kInertia)),
+           "must be > 0 (the swingweight of the racquet the swing was measured with), got " +
+               brief(Json(*s.reference_swingweight_kg_m2)));
+  }
+  r.finish(design_keys("swing"));
+  in.design.swing = s;
+}
+
 // Where the ball hits, as the file gives it (or the default of its kind).
 struct ImpactRead {
   ImpactPlace place = ImpactPlace::kFromTip;
@@ -834,6 +906,7 @@ DesignFile read_design_impl(const Json& document, const std::string& source, boo
   const std::optional<double> forearm_mass_kg = read_forearm(top, in);
   read_ball(top, in);
   const ImpactRead impact = read_impact(top, in, L, implement.form);
+  read_swing(top, in);
   Json reference = read_reference(top, source);
   top.finish(design_keys(""));
 
@@ -994,6 +1067,13 @@ Json design_to_json(const DesignFile& file) {
   Json& impact = j[si_key("", "impact")] = Json::object();
   put(impact, "impact", "from_butt", d.impact_from_butt_m);
   if (d.impact_off_axis_m != 0.0) put(impact, "impact", "off_axis", d.impact_off_axis_m);
+  if (d.swing) {
+    Json& swing = j[si_key("", "swing")] = Json::object();
+    put(swing, "swing", "angular_speed", d.swing->angular_speed_rad_s);
+    put(swing, "swing", "pivot_beyond_butt", d.swing->pivot_beyond_butt_m);
+    if (d.swing->reference_swingweight_kg_m2)
+      put(swing, "swing", "reference_swingweight", *d.swing->reference_swingweight_kg_m2);
+  }
   return j;
 }
 

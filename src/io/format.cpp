@@ -560,6 +560,15 @@ Json evaluation_json(const DesignFile& file, const Evaluation& e) {
     outputs[std::string(output.name)] = value ? Json(*value) : Json(nullptr);
     if (!value) notes[std::string(output.name)] = output.when_absent;
   }
+  // The power point: searched along the string bed for one design (evaluate),
+  // so not an output of every row (studies::with_power_point()).
+  if (e.power_point_from_butt_m && e.power_point_shot_speed_m_s) {
+    const double v = *e.power_point_shot_speed_m_s;
+    j["power_point"] = {{"from_tip_m", e.length_m - *e.power_point_from_butt_m},
+                        {"shot_speed_m_s", v},
+                        {"shot_speed_km_h", v * 3.6},
+                        {"shot_speed_mph", v * 3600.0 / 1609.344}};
+  }
   const Evaluation::Details details = e.details.value_or(Evaluation::Details{});
   if (details.collision) {
     const CollisionResult& c = *details.collision;

@@ -6,6 +6,11 @@ namespace sweetspot::io {
 namespace {
 
 constexpr double kCm2PerM2 = 1e4;
+constexpr double kKmHPerMS = 3.6;
+constexpr double kMphPerMS = 3600.0 / 1609.344;
+// Standard gravity [m/s^2] (the customisers' MgR/I uses g = 9.81).
+constexpr double kStandardGravity_m_s2 = 9.80665;
+
 constexpr std::string_view kAxisAtInfinity =
     "at infinity: the impact is through the centre of mass, so the body translates without "
     "rotating";
@@ -153,6 +158,38 @@ const std::array kOutputs{
                "collision",
                &collision<&CollisionResult::peak_string_deflection_m>, kNeedsCollision, false, true,
                true},
+    // The shot off a swinging racquet (swing.hpp; Brody; Cross 1999).
+    OutputSpec{"racquet_speed_m_s", "m/s",
+               "racquet speed at the impact point, omega (pivot + from butt): the design's swing, "
+               "or the assumed groundstroke",
+               [](const Evaluation& e) -> std::optional<double> { return e.racquet_speed_m_s; },
+               ""},
+    OutputSpec{"shot_speed_m_s", "m/s",
+               "outgoing ball speed off the swinging racquet, e_A v_in + (1 + e_A) V",
+               [](const Evaluation& e) -> std::optional<double> { return e.shot_speed_m_s; }, ""},
+    OutputSpec{
+        "shot_speed_km_h", "km/h", "the same in km/h",
+        [](const Evaluation& e) -> std::optional<double> { return e.shot_speed_m_s * kKmHPerMS; },
+        ""},
+    OutputSpec{
+        "shot_speed_mph", "mph", "the same in mph",
+        [](const Evaluation& e) -> std::optional<double> { return e.shot_speed_m_s * kMphPerMS; },
+        ""},
+    // The customisers' numbers (docs/model.md, "Customisers' numbers").
+    OutputSpec{"maneuverability_index_s2", "1/s^2",
+               "MgR/I: mass x g x balance over the inertia about the butt (a pendulum hung at the "
+               "butt)",
+               [](const Evaluation& e) -> std::optional<double> {
+                 const double R = e.balance_from_butt_m;
+                 return e.mass_kg * kStandardGravity_m_s2 * R / (e.I_cm_kg_m2 + e.mass_kg * R * R);
+               },
+               ""},
+    OutputSpec{"polarization", "",
+               "I_cm / (M L^2 / 12): the inertia about the centre of mass over a uniform rod's",
+               [](const Evaluation& e) -> std::optional<double> {
+                 return e.I_cm_kg_m2 / (e.mass_kg * e.length_m * e.length_m / 12.0);
+               },
+               ""},
     OutputSpec{"system_mass_kg", "kg", "implement plus hand, M",
                [](const Evaluation& e) -> std::optional<double> { return e.system_mass_kg; }, ""},
     OutputSpec{

@@ -349,7 +349,8 @@ constexpr UnitSuffix kUnitSuffixes[] = {
     {"_in", "in", 1.0},       {"_kg", "kg", 1.0},     {"_oz", "oz", 1.0},
     {"_lb", "lb", 1.0},       {"_Hz", "Hz", 1.0},     {"_ms", "ms", 1.0},
     {"_g", "g", 1.0},         {"_m", "cm", 100.0},    {"_N", "N", 1.0},
-    {"_J", "J", 1.0},         {"_s", "ms", 1000.0},
+    {"_J", "J", 1.0},         {"_s", "ms", 1000.0},   {"_km_h", "km/h", 1.0},
+    {"_mph", "mph", 1.0},     {"_s2", "1/s²", 1.0},
 };
 
 bool ends_with(std::string_view text, std::string_view end) {

@@ -94,6 +94,37 @@ std::vector<std::string> sweet_spot_sentences(const io::DesignFile& design,
                     spots.best_rebound->evaluation.rebound_speed_m_s,
                     cm_text(spots.best_rebound->from_tip_m), feel(spots.best_rebound->evaluation)));
   }
+  // 3b. The shot off the swinging racquet (swing.hpp), at its power point.
+  if (spots.power_point) {
+    const Evaluation& power = spots.power_point->evaluation;
+    const std::string swing =
+        asked.swing_assumed
+            ? std::string(
+                  "an assumed groundstroke (no swing given: 15.4 m/s 50 cm from the butt, "
+                  "turning about a pivot 60 cm beyond it; Kwon et al. 2017)")
+            : fmt::format("its swing ({:.3g} rad/s about a pivot {} beyond the butt)",
+                          asked.swing.angular_speed_rad_s,
+                          cm_text(asked.swing.pivot_beyond_butt_m));
+    std::string than_rebound;
+    if (spots.best_rebound) {
+      const double gap = spots.best_rebound->from_tip_m - spots.power_point->from_tip_m;
+      than_rebound = cm_text(std::fabs(gap)) == "0 cm"
+                         ? std::string(
+                               ", where the ball also rebounds fastest off the racquet "
+                               "at rest")
+                         : fmt::format(
+                               ", {} {} the tip than the best rebound off the racquet "
+                               "at rest",
+                               cm_text(std::fabs(gap)), gap > 0.0 ? "nearer" : "farther from");
+    }
+    sentences.push_back(fmt::format(
+        "Swung as {} at a ball coming at {:.3g} m/s, the shot is fastest, {:.0f} km/h ({:.0f} "
+        "mph), {} from the tip (the power point){}; from the impact asked about it leaves at "
+        "{:.0f} km/h.",
+        swing, asked.incoming_speed_m_s, power.shot_speed_m_s * 3.6,
+        power.shot_speed_m_s * 3600.0 / 1609.344, cm_text(spots.power_point->from_tip_m),
+        than_rebound, asked.shot_speed_m_s * 3.6));
+  }
   // 4. The centre of the strings and the impact asked about.
   const bool asked_is_centre =
       spots.centre_of_strings &&

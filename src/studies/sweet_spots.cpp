@@ -5,6 +5,7 @@
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "io/input_error.hpp"
 #include "io/json_reader.hpp"
@@ -30,42 +31,79 @@ std::optional<double> on_implement_from_tip(const Evaluation& e, std::optional<d
   return e.length_m - *from_butt;
 }
 
-}  // namespace
-
-std::optional<SpotOutcome> best_rebound_on_axis(const io::DesignFile& design, double rel_tol,
-                                                double tolerance_m) {
-  if (!(tolerance_m > 0.0)) {
-    throw std::invalid_argument("tolerance_m: must be > 0 m, got " + std::to_string(tolerance_m));
-  }
-  if (!design.design.strings || !has_stiffness(design.design) || design.design.cor_rigid)
-    return std::nullopt;
+// The string bed's long axis [m from the tip]: from one hoop width below the
+// tip to the throat end of the ellipse.
+std::pair<double, double> string_bed_axis(const io::DesignFile& design) {
   const double length = design.design.implement.length_m();
   const HeadShape head = head_shape_of(design);
   const double semi_length = std::sqrt(head.area_m2 * head.aspect_ratio / std::numbers::pi);
-  double lo = std::min(head.hoop_width_m, length);  // from the tip
-  double hi = std::min(head.hoop_width_m + 2.0 * semi_length, length);
-  auto cor_at = [&](double from_tip) {
-    return evaluate_at(design, from_tip, "collision", rel_tol).apparent_cor;
-  };
-  // Golden-section search for the largest apparent COR: each step keeps the
-  // part of [lo, hi] that holds the maximum of a unimodal function and
-  // shrinks it by 1/phi, reusing one interior point.
+  return {std::min(head.hoop_width_m, length),
+          std::min(head.hoop_width_m + 2.0 * semi_length, length)};
+}
+
+// Golden-section search for the largest value of `f` over [lo, hi] [m from
+// the tip]: each step keeps the part that holds the maximum of a unimodal
+// function and shrinks it by 1/phi, reusing one interior point; the midpoint
+// of the last bracket, at most `tolerance_m` wide.
+template <class F>
+double golden_section_max(F&& f, double lo, double hi, double tolerance_m) {
   const double inv_phi = (std::sqrt(5.0) - 1.0) / 2.0;
   double x1 = hi - inv_phi * (hi - lo), x2 = lo + inv_phi * (hi - lo);
-  double f1 = cor_at(x1), f2 = cor_at(x2);
+  double f1 = f(x1), f2 = f(x2);
   while (hi - lo > tolerance_m) {
     if (f1 >= f2) {
       hi = x2, x2 = x1, f2 = f1;
       x1 = hi - inv_phi * (hi - lo);
-      f1 = cor_at(x1);
+      f1 = f(x1);
     } else {
       lo = x1, x1 = x2, f1 = f2;
       x2 = lo + inv_phi * (hi - lo);
-      f2 = cor_at(x2);
+      f2 = f(x2);
     }
   }
-  const double best = 0.5 * (lo + hi);
+  return 0.5 * (lo + hi);
+}
+
+void require_tolerance(double tolerance_m) {
+  if (!(tolerance_m > 0.0)) {
+    throw std::invalid_argument("tolerance_m: must be > 0 m, got " + std::to_string(tolerance_m));
+  }
+}
+
+}  // namespace
+
+std::optional<SpotOutcome> best_rebound_on_axis(const io::DesignFile& design, double rel_tol,
+                                                double tolerance_m) {
+  require_tolerance(tolerance_m);
+  if (!design.design.strings || !has_stiffness(design.design) || design.design.cor_rigid)
+    return std::nullopt;
+  const auto [lo, hi] = string_bed_axis(design);
+  auto cor_at = [&](double from_tip) {
+    return evaluate_at(design, from_tip, "collision", rel_tol).apparent_cor;
+  };
+  const double best = golden_section_max(cor_at, lo, hi, tolerance_m);
   return SpotOutcome{best, evaluate_at(design, best, "collision", rel_tol)};
+}
+
+std::optional<SpotOutcome> power_point_on_axis(const io::DesignFile& design,
+                                               std::string_view fidelity, double rel_tol,
+                                               double tolerance_m) {
+  require_tolerance(tolerance_m);
+  if (!is_racquet(design)) return std::nullopt;
+  const auto [lo, hi] = string_bed_axis(design);
+  auto shot_at = [&](double from_tip) {
+    return evaluate_at(design, from_tip, fidelity, rel_tol).shot_speed_m_s;
+  };
+  const double best = golden_section_max(shot_at, lo, hi, tolerance_m);
+  return SpotOutcome{best, evaluate_at(design, best, fidelity, rel_tol)};
+}
+
+Evaluation with_power_point(const io::DesignFile& design, Evaluation evaluation, double rel_tol) {
+  if (const auto power = power_point_on_axis(design, to_string(fidelity_of(evaluation)), rel_tol)) {
+    evaluation.power_point_from_butt_m = evaluation.length_m - power->from_tip_m;
+    evaluation.power_point_shot_speed_m_s = power->evaluation.shot_speed_m_s;
+  }
+  return evaluation;
 }
 
 bool is_racquet(const io::DesignFile& design) {
@@ -117,6 +155,7 @@ SweetSpots find_sweet_spots(const io::DesignFile& design, const Evaluation& aske
   }
   if (fidelity_of(asked) == Fidelity::kCollision)
     spots.best_rebound = best_rebound_on_axis(design, rel_tol, kBestReboundTolerance_m);
+  spots.power_point = power_point_on_axis(design, fidelity, rel_tol, kBestReboundTolerance_m);
   if (is_racquet(design)) {
     const double centre = centre_of_strings_from_tip_m(design);
     spots.centre_of_strings = at(centre, "centre of the strings");

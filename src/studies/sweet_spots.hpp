@@ -48,6 +48,10 @@ struct SweetSpots {
   // fastest (the "power point", best_rebound_on_axis()), evaluated by the
   // solved collision; set when `asked` is at the collision fidelity.
   std::optional<SpotOutcome> best_rebound;
+  // The point on the long axis of the string bed where the shot off the
+  // swinging racquet is fastest (power_point_on_axis()), at the asked
+  // fidelity; set for a racquet with a head.
+  std::optional<SpotOutcome> power_point;
   // The centre of the strings, for a racquet (centre_of_strings_from_tip_m).
   std::optional<SpotOutcome> centre_of_strings;
   // The impact the design asks about (its own, or the default).
@@ -102,6 +106,24 @@ inline constexpr double kBestReboundTolerance_m = 0.005;
 // stiffness, no cor_rigid). Throws like io::evaluate_design_file.
 std::optional<SpotOutcome> best_rebound_on_axis(const io::DesignFile& design, double rel_tol,
                                                 double tolerance_m = kBestReboundTolerance_m);
+
+// The impact point on the long axis of the string bed (the range of
+// best_rebound_on_axis()) where the shot off the swinging racquet, e_A v_in +
+// (1 + e_A) V (swing.hpp: the design's swing or the assumed groundstroke), is
+// fastest: the power point, at `fidelity` ("rigid", ..., "collision"; empty:
+// the file's), found by golden-section search to `tolerance_m` as
+// best_rebound_on_axis() is. Its racquet speed V grows towards the tip while
+// e_A falls there, so it lies tip-side of the best rebound; the rigid model
+// with a given COR has its best rebound at the centre of mass. std::nullopt
+// for a design without a racquet head (is_racquet()). Throws like
+// io::evaluate_design_file.
+std::optional<SpotOutcome> power_point_on_axis(const io::DesignFile& design,
+                                               std::string_view fidelity, double rel_tol,
+                                               double tolerance_m = kBestReboundTolerance_m);
+
+// `evaluation` with its power point (power_point_from_butt_m and the shot
+// speed there) from power_point_on_axis(), when the design has a head.
+Evaluation with_power_point(const io::DesignFile& design, Evaluation evaluation, double rel_tol);
 
 // Evaluates `design` at its sweet spots at the fidelity of `asked` (the
 // design's own evaluation), the hand-held modes to `rel_tol`. Throws like

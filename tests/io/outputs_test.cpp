@@ -41,3 +41,35 @@ TEST_CASE("Outputs that need the modes are absent from a rigid evaluation, the r
 
 }  // namespace
 }  // namespace sweetspot::io
+
+namespace sweetspot::io {
+namespace {
+
+TEST_CASE("MgR/I and polarization: closed forms on a uniform rod and on the paper's racquet") {
+  // A uniform rod (equal halves): I_cm = M L^2 / 12, so polarization = 1; R =
+  // L / 2, the inertia about the butt M L^2 / 3, MgR/I = 3 g / (2 L).
+  const double L = 0.70, M = 0.30, g = 9.80665;
+  const Evaluation rod = evaluate(Design{Implement::paper_racquet(L, M, 1.0)});
+  CHECK(find_output("polarization")->value(rod).value() == Approx(1.0).epsilon(1e-12));
+  CHECK(find_output("maneuverability_index_s2")->value(rod).value() ==
+        Approx(1.5 * g / L).epsilon(1e-12));
+  // The paper's racquet, head 0.8 of the handle: two halves of M/1.8 and
+  // 0.8 M/1.8 centred at L/4 and 3L/4.
+  const double m1 = 0.8 * M / 1.8, m2 = M / 1.8;  // head, handle
+  const double x_cm = (m2 * L / 4 + m1 * 3 * L / 4) / M;
+  const double I_butt = m2 * L * L / 12 + m1 * (L * L / 48 + 9 * L * L / 16);
+  const double I_cm = I_butt - M * x_cm * x_cm;
+  const Evaluation racquet = evaluate(Design{Implement::paper_racquet(L, M, 0.8)});
+  CHECK(find_output("maneuverability_index_s2")->value(racquet).value() ==
+        Approx(M * g * x_cm / I_butt).epsilon(1e-12));
+  CHECK(find_output("polarization")->value(racquet).value() ==
+        Approx(I_cm / (M * L * L / 12)).epsilon(1e-12));
+  // People's units of the shot speed.
+  CHECK(find_output("shot_speed_km_h")->value(racquet).value() ==
+        Approx(3.6 * racquet.shot_speed_m_s).epsilon(1e-12));
+  CHECK(find_output("shot_speed_mph")->value(racquet).value() ==
+        Approx(racquet.shot_speed_m_s / 0.44704).epsilon(1e-12));
+}
+
+}  // namespace
+}  // namespace sweetspot::io
