@@ -316,8 +316,9 @@ TEST_CASE("The COR along the strings peaks at the fundamental's node") {
 }
 
 TEST_CASE("Lower string tension returns the ball slightly faster, the contact lasts 4-6 ms") {
-  // Bower & Cross, J. Sports Sci. 23, 765-771 (2005), in play: about 108 km/h at
-  // 180 N against 105 km/h at 280 N, a 2.9 % faster ball at the lower tension.
+  // Bower & Cross, J. Sports Sci. 23, 765-771 (2005), in play: 108.1 km/h at
+  // 180 N against 105.3 km/h at 280 N, a 2.7 % faster shot at the lower tension
+  // (the in-play comparison is tests/studies/swing_test.cpp).
   // The solved model's sign must agree; its size depends on the string bed's
   // moving mass and loss (issue 12: 0-6 % over 1-8 g): checked in (0, 8 %).
   const ResponseModel racquet = tour_100_model();
