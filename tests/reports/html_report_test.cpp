@@ -269,3 +269,35 @@ TEST_CASE(
 
 }  // namespace
 }  // namespace sweetspot::reports
+
+namespace sweetspot::reports {
+namespace {
+
+TEST_CASE("The every-number table gives each output in people's units, as evaluate does") {
+  // The README's promise: g, cm, kg·cm², ms, never kg, m, kg·m² or s; the
+  // value through the same table `evaluate --units people` reads.
+  const io::DesignFile file = io::load_design(SWEETSPOT_SOURCE_DIR
+                                              "/designs/racquets/"
+                                              "tour-100-strung.json");
+  const studies::DesignPage computed = studies::design_page(file);
+  const std::string page = reports::design_html_report(
+      file, io::read_json_file(SWEETSPOT_SOURCE_DIR "/designs/racquets/tour-100-strung.json"),
+      computed);
+  for (const io::OutputSpec& o : io::output_specs()) {
+    INFO(o.name);
+    const std::size_t row = page.find(fmt::format("<tr id=\"out-{}\">", o.name));
+    REQUIRE(row != std::string::npos);
+    const std::string cells = page.substr(row, page.find("</tr>", row) - row);
+    const io::PeopleUnit unit = io::people_unit(o.unit);
+    CHECK(cells.find(fmt::format("</td><td>{}</td><td><code>", html_escape(unit.unit))) !=
+          std::string::npos);
+    for (const char* si : {"kg", "kg·m²", "m", "s"})
+      CHECK(cells.find(fmt::format("</td><td>{}</td>", si)) == std::string::npos);
+    if (const auto v = o.value(computed.evaluation))
+      CHECK(cells.find(fmt::format("<td class=\"num\">{}</td>",
+                                   io::significant(*v * unit.factor, 4))) != std::string::npos);
+  }
+}
+
+}  // namespace
+}  // namespace sweetspot::reports
