@@ -39,10 +39,10 @@ std::optional<SpotOutcome> best_rebound_on_axis(const io::DesignFile& design, do
   }
   if (!design.design.strings || !has_stiffness(design.design) || design.design.cor_rigid)
     return std::nullopt;
-  const double length = design.design.implement.length_m();
   const HeadShape head = head_shape_of(design);
   const double semi_length = std::sqrt(head.area_m2 * head.aspect_ratio / std::numbers::pi);
-  double lo = std::min(head.hoop_width_m, length);  // from the tip
+  const double length = design.design.implement.length_m();
+  double lo = std::min(head.hoop_width_m, length);  // from the tip (frame_curves.hpp's hit_span())
   double hi = std::min(head.hoop_width_m + 2.0 * semi_length, length);
   auto cor_at = [&](double from_tip) {
     return evaluate_at(design, from_tip, "collision", rel_tol).apparent_cor;
