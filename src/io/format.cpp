@@ -366,6 +366,7 @@ PeopleUnit people_unit(std::string_view si_unit) {
   if (si_unit == "s") return {"ms", 1000.0, "_ms"};
   if (si_unit == "m/s") return {"m/s", 1.0, ""};
   if (si_unit == "N s") return {"N·s", 1.0, ""};
+  if (si_unit == "N m") return {"N·m", 1.0, ""};
   return {si_unit, 1.0, ""};
 }
 

@@ -400,14 +400,18 @@ std::string plot_color(std::size_t i) {
 }
 
 AxisQuantity output_axis(const OutputSpec& output) {
+  // The words from the name, its unit suffix dropped; the unit and the factor
+  // from the output's SI unit through people_unit(), the one table of people's
+  // units (g, cm, kg·cm², ms) that `evaluate --units people` also reads.
   std::string_view name = output.name;
   for (const UnitSuffix& u : kUnitSuffixes) {
     if (has_suffix(name, u.suffix)) {
       name.remove_suffix(u.suffix.size());
-      return with_unit(words(name), u.unit, u.factor);
+      break;
     }
   }
-  return with_unit(words(name), "", 1.0);
+  const PeopleUnit people = people_unit(output.unit);
+  return with_unit(words(name), people.unit, people.factor);
 }
 
 AxisQuantity pointer_axis(std::string_view pointer) {

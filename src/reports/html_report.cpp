@@ -617,7 +617,7 @@ struct FramePlots {
 };
 
 FramePlots frame_plots(const io::DesignFile& file, const Evaluation& e,
-                       const std::vector<studies::FramePoint>& curve) {
+                       const std::vector<studies::FramePoint>& curve, studies::AxisSpan span) {
   const Design& d = file.design;
   const double L = d.implement.length_m();
   io::PlotSeries wrist{"wrist force / string force, |F_w / F|", {}, {}, "lines lw 2.5"};
@@ -629,23 +629,30 @@ FramePlots frame_plots(const io::DesignFile& file, const Evaluation& e,
     cor.x.push_back(p.from_tip_m * 100.0);
     cor.y.push_back(p.apparent_cor);
   }
+  // The lines that fall where the curves run (a COP in the throat is off the strings).
   std::vector<std::pair<double, std::string>> lines;
-  if (e.cop_hand_from_butt_m) lines.push_back({(L - *e.cop_hand_from_butt_m) * 100.0, "COP"});
-  if (e.modal && e.modal->node_hand_from_butt_m)
-    lines.push_back({(L - *e.modal->node_hand_from_butt_m) * 100.0, "node"});
-  lines.push_back({(L - d.impact_from_butt_m) * 100.0, "impact"});
-  FramePlots plots{io::Plot{"What the wrist feels, for a hit along the frame",
+  const auto line = [&](double from_butt_m, const char* what) {
+    const double from_tip = L - from_butt_m;
+    if (from_tip >= span.from_tip_m && from_tip <= span.to_tip_m)
+      lines.push_back({from_tip * 100.0, what});
+  };
+  if (e.cop_hand_from_butt_m) line(*e.cop_hand_from_butt_m, "COP");
+  if (e.modal && e.modal->node_hand_from_butt_m) line(*e.modal->node_hand_from_butt_m, "node");
+  line(d.impact_from_butt_m, "impact");
+  const char* along = span.string_bed ? "for a hit along the strings" : "for a hit along the frame";
+  const std::pair range{span.from_tip_m * 100.0, span.to_tip_m * 100.0};
+  FramePlots plots{io::Plot{fmt::format("What the wrist feels, {}", along),
                             "impact point from the tip (cm)",
                             "wrist force over the force on the strings",
-                            std::pair{0.0, L * 100.0},
+                            range,
                             std::nullopt,
                             {wrist},
                             {},
                             lines},
-                   io::Plot{"How the ball comes back, for a hit along the frame",
+                   io::Plot{fmt::format("How the ball comes back, {}", along),
                             "impact point from the tip (cm)",
                             "apparent COR (rebound over incoming speed)",
-                            std::pair{0.0, L * 100.0},
+                            range,
                             std::nullopt,
                             {cor},
                             {},
@@ -658,8 +665,14 @@ FramePlots frame_plots(const io::DesignFile& file, const Evaluation& e,
 // The curves along the frame (`svgs`: the wrist's plot wide and narrow, then
 // the COR's) and the numbers behind them.
 std::string frame_html(const Evaluation& e, const std::vector<studies::FramePoint>& curve,
-                       std::span<const io::RenderedSvg> svgs) {
-  std::string html = "<section id=\"frame\"><h2>Along the frame</h2>\n";
+                       studies::AxisSpan span, std::span<const io::RenderedSvg> svgs) {
+  std::string html = fmt::format(
+      "<section id=\"frame\"><h2>Along the {}</h2>\n{}", span.string_bed ? "strings" : "frame",
+      span.string_bed
+          ? fmt::format("<p>For a hit on the long axis of the string bed, {} to {} cm from the "
+                        "tip, where a ball can land.</p>\n",
+                        html_cm(span.from_tip_m), html_cm(span.to_tip_m))
+          : std::string());
   html +=
       html_figure(svgs[0], svgs[1], "plot-wrist",
                   "The share of the force on the strings that reaches the wrist (Cross 2004, Eq. "
@@ -753,13 +766,13 @@ std::string design_html_report(const io::DesignFile& file, const io::Json& docum
   html += racquet_html(file, e, document);
   // Every plot of the page drawn by one gnuplot: the two curves, each wide
   // and narrow, then the maps over the string bed.
-  const FramePlots frame = frame_plots(file, e, page.curve);
+  const FramePlots frame = frame_plots(file, e, page.curve, page.span);
   std::vector<io::SvgPlot> plots = figure_svg_plots(frame.wrist, "plot-wrist");
   for (io::SvgPlot& p : figure_svg_plots(frame.cor, "plot-cor")) plots.push_back(std::move(p));
   for (io::SvgPlot& p : map_svg_plots(page.maps, file.design.implement.length_m()))
     plots.push_back(std::move(p));
   const std::vector<io::RenderedSvg> svgs = io::render_svgs(plots);
-  html += frame_html(e, page.curve, std::span(svgs).first(4));
+  html += frame_html(e, page.curve, page.span, std::span(svgs).first(4));
   html += maps_html(file, page.maps, std::span(svgs).subspan(4));
   html += outputs_html(e);
   html += inputs_html(file, document, e);

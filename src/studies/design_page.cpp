@@ -31,7 +31,9 @@ PageMaps page_maps(const io::DesignFile& file, Fidelity fidelity) {
 DesignPage design_page(const io::DesignFile& file) {
   DesignPage page;
   page.evaluation = io::evaluate_design_file(file, "", kPageRelTol);
-  page.curve = frame_curves(file.design, kFrameCurveStep_m, frame_curve_fidelity(page.evaluation));
+  page.span = hit_span(file);
+  page.curve = frame_curves(file.design, kFrameCurveStep_m, frame_curve_fidelity(page.evaluation),
+                            page.span);
   page.spots = find_sweet_spots(file, page.evaluation, kPageRelTol);
   page.maps = page_maps(file, fidelity_of(page.evaluation));
   return page;

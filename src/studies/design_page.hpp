@@ -40,7 +40,9 @@ struct DesignPage {
   Evaluation evaluation;
   // Its sweet spots at that fidelity (find_sweet_spots()).
   SweetSpots spots;
-  // Along the frame every kFrameCurveStep_m, at frame_curve_fidelity().
+  // Where the curves run: a racquet's string bed, else the whole implement.
+  AxisSpan span;
+  // Over `span` every kFrameCurveStep_m, at frame_curve_fidelity().
   std::vector<FramePoint> curve;
   // Over the string bed: the rigid model, the modal one (kModal and
   // kResponse answers) or the solved collision, as the answer is.

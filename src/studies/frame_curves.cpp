@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <optional>
 #include <stdexcept>
 
 #include "io/format.hpp"
+#include "studies/sweet_spots.hpp"
 #include "sweetspot/collision.hpp"
 #include "sweetspot/rigid_impact.hpp"
 
@@ -25,15 +27,33 @@ Fidelity frame_curve_fidelity(const Evaluation& evaluation) {
   return fidelity_of(evaluation) == Fidelity::kCollision ? Fidelity::kCollision : Fidelity::kRigid;
 }
 
+AxisSpan hit_span(const io::DesignFile& file) {
+  const double L = file.design.implement.length_m();
+  if (!is_racquet(file)) return {0.0, L, false};
+  const HeadShape head = head_shape_of(file);
+  const double semi_length = std::sqrt(head.area_m2 * head.aspect_ratio / std::numbers::pi);
+  return {std::min(head.hoop_width_m, L), std::min(head.hoop_width_m + 2.0 * semi_length, L), true};
+}
+
 std::vector<FramePoint> frame_curves(const Design& design, double step_m, Fidelity fidelity) {
+  return frame_curves(design, step_m, fidelity, {0.0, design.implement.length_m(), false});
+}
+
+std::vector<FramePoint> frame_curves(const Design& design, double step_m, Fidelity fidelity,
+                                     AxisSpan span) {
   if (!(step_m > 0)) throw std::invalid_argument("step_m: must be > 0 m, got " + io::exact(step_m));
   const double L = design.implement.length_m();
+  const double lo = std::clamp(span.from_tip_m, 0.0, L), hi = std::clamp(span.to_tip_m, lo, L);
   std::optional<DesignCollision> collision;
   if (fidelity == Fidelity::kCollision) collision.emplace(design);
+  // The span's ends and every step of the grid between them.
+  std::vector<double> at{lo};
+  for (auto i = static_cast<long>(std::floor(lo / step_m + 1e-9)) + 1;
+       static_cast<double>(i) * step_m < hi - 1e-9; ++i)
+    at.push_back(static_cast<double>(i) * step_m);
+  if (hi > lo) at.push_back(hi);
   std::vector<FramePoint> points;
-  const auto steps = static_cast<std::size_t>(std::ceil(L / step_m - 1e-9));
-  for (std::size_t i = 0; i <= steps; ++i) {
-    const double d = std::min(L, static_cast<double>(i) * step_m);
+  for (const double d : at) {
     const Evaluation e = evaluate_at(design, L - d);
     if (!collision) {
       points.push_back({d, e.wrist_force_ratio, e.apparent_cor, e.peak_wrist_force_N});

@@ -6,6 +6,7 @@
 
 #include <vector>
 
+#include "io/design_reader.hpp"
 #include "sweetspot/design.hpp"
 #include "sweetspot/evaluate.hpp"
 
@@ -30,6 +31,22 @@ inline constexpr double kFrameCurveStep_m = 0.01;
 // a point whose collision cannot be solved (a contact time out of range near
 // the butt) is left out. Any other fidelity: the rigid model at the design's
 // COR. Throws std::invalid_argument for a step <= 0, or as DesignCollision.
+// A stretch of the long axis [m from the tip], from_tip_m <= to_tip_m.
+struct AxisSpan {
+  double from_tip_m = 0.0;
+  double to_tip_m = 0.0;
+  bool string_bed = false;  // the stretch is a racquet's string bed
+};
+
+// Where a ball can hit along the long axis: a racquet's string bed (from one
+// hoop width below the tip to the throat end of its ellipse, the stretch the
+// best rebound is searched over), else the whole implement.
+AxisSpan hit_span(const io::DesignFile& file);
+
+// frame_curves() over `span` only: the points of the step grid inside it and
+// both its ends, so a curve reaches the edges of the head.
+std::vector<FramePoint> frame_curves(const Design& design, double step_m, Fidelity fidelity,
+                                     AxisSpan span);
 std::vector<FramePoint> frame_curves(const Design& design, double step_m,
                                      Fidelity fidelity = Fidelity::kRigid);
 

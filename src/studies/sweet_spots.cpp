@@ -9,6 +9,7 @@
 
 #include "io/input_error.hpp"
 #include "io/json_reader.hpp"
+#include "studies/frame_curves.hpp"
 #include "sweetspot/frame_modes.hpp"
 
 namespace sweetspot::studies {
@@ -31,14 +32,10 @@ std::optional<double> on_implement_from_tip(const Evaluation& e, std::optional<d
   return e.length_m - *from_butt;
 }
 
-// The string bed's long axis [m from the tip]: from one hoop width below the
-// tip to the throat end of the ellipse.
+// The string bed's long axis [m from the tip] (hit_span(), as the curves are drawn over).
 std::pair<double, double> string_bed_axis(const io::DesignFile& design) {
-  const double length = design.design.implement.length_m();
-  const HeadShape head = head_shape_of(design);
-  const double semi_length = std::sqrt(head.area_m2 * head.aspect_ratio / std::numbers::pi);
-  return {std::min(head.hoop_width_m, length),
-          std::min(head.hoop_width_m + 2.0 * semi_length, length)};
+  const AxisSpan span = hit_span(design);
+  return {span.from_tip_m, span.to_tip_m};
 }
 
 // Golden-section search for the largest value of `f` over [lo, hi] [m from

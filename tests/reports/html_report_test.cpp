@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdio>
@@ -15,6 +16,7 @@
 #include "studies/design_page.hpp"
 #include "studies/optimization.hpp"
 #include "studies/study.hpp"
+#include "studies/sweet_spots.hpp"
 #include "sweetspot/evaluate.hpp"
 #include "sweetspot/rigid_impact.hpp"
 
@@ -265,6 +267,72 @@ TEST_CASE(
         std::string::npos);
   // The best design as a file, escaped.
   CHECK(page.find("<pre id=\"best-design\">") != std::string::npos);
+}
+
+}  // namespace
+}  // namespace sweetspot::reports
+
+namespace sweetspot::reports {
+namespace {
+
+TEST_CASE("The every-number table gives each output in people's units, as evaluate does") {
+  // The README's promise: g, cm, kg·cm², ms, never kg, m, kg·m² or s; the
+  // value through the same table `evaluate --units people` reads.
+  const io::DesignFile file = io::load_design(SWEETSPOT_SOURCE_DIR
+                                              "/designs/racquets/"
+                                              "tour-100-strung.json");
+  const studies::DesignPage computed = studies::design_page(file);
+  const std::string page = reports::design_html_report(
+      file, io::read_json_file(SWEETSPOT_SOURCE_DIR "/designs/racquets/tour-100-strung.json"),
+      computed);
+  for (const io::OutputSpec& o : io::output_specs()) {
+    INFO(o.name);
+    const std::size_t row = page.find(fmt::format("<tr id=\"out-{}\">", o.name));
+    REQUIRE(row != std::string::npos);
+    const std::string cells = page.substr(row, page.find("</tr>", row) - row);
+    const io::PeopleUnit unit = io::people_unit(o.unit);
+    CHECK(cells.find(fmt::format("</td><td>{}</td><td><code>", html_escape(unit.unit))) !=
+          std::string::npos);
+    for (const char* si : {"kg", "kg·m²", "m", "s"})
+      CHECK(cells.find(fmt::format("</td><td>{}</td>", si)) == std::string::npos);
+    if (const auto v = o.value(computed.evaluation))
+      CHECK(cells.find(fmt::format("<td class=\"num\">{}</td>",
+                                   io::significant(*v * unit.factor, 4))) != std::string::npos);
+  }
+}
+
+}  // namespace
+}  // namespace sweetspot::reports
+
+namespace sweetspot::reports {
+namespace {
+
+TEST_CASE(
+    "A racquet's curves run over its string bed, and the caption's highest rebound is there") {
+  // The coach's racquet peaked at the throat (52 cm from the tip) when the
+  // curve ran the whole length; the answer's best rebound is on the strings.
+  const io::DesignFile file =
+      io::load_design(SWEETSPOT_SOURCE_DIR "/designs/racquets/tour-100-strung.json");
+  const studies::DesignPage computed = studies::design_page(file);
+  REQUIRE(computed.span.string_bed);
+  const HeadShape head = studies::head_shape_of(file);
+  const double bed_length = 2.0 * std::sqrt(head.area_m2 * head.aspect_ratio / M_PI);
+  CHECK(computed.span.from_tip_m == head.hoop_width_m);
+  CHECK(computed.span.to_tip_m == Approx(head.hoop_width_m + bed_length));
+  REQUIRE(!computed.curve.empty());
+  CHECK(computed.curve.front().from_tip_m == computed.span.from_tip_m);
+  CHECK(computed.curve.back().from_tip_m == computed.span.to_tip_m);
+  const auto most = std::max_element(
+      computed.curve.begin(), computed.curve.end(),
+      [](const auto& a, const auto& b) { return a.apparent_cor < b.apparent_cor; });
+  REQUIRE(computed.spots.best_rebound);
+  // The curve's 1 cm grid against the golden-section search's 0.5 cm.
+  CHECK(std::abs(most->from_tip_m - computed.spots.best_rebound->from_tip_m) <= 0.01);
+  const std::string page = reports::design_html_report(
+      file, io::read_json_file(SWEETSPOT_SOURCE_DIR "/designs/racquets/tour-100-strung.json"),
+      computed);
+  CHECK(page.find(fmt::format("highest {} cm from the tip", html_cm(most->from_tip_m))) !=
+        std::string::npos);
 }
 
 }  // namespace
