@@ -13,6 +13,7 @@
 
 #include <array>
 #include <cerrno>
+#include <cmath>
 #include <csignal>
 #include <cstring>
 #include <optional>
@@ -308,15 +309,38 @@ std::string plot_commands(const Plot& plot) {
     const PlotSeries& series = plot.series[i];
     s += fmt::format("$series{} << EOD\n", i);
     bool broken = true;
+    const bool log_y = series.right_axis ? plot.log_y2 : plot.log_y;
+    // A line that leaves the y range runs to its edge (and comes back from
+    // it), interpolated linearly, rather than stopping at its last point inside.
+    const auto edge_between = [&](std::size_t inside, std::size_t outside) {
+      const double y0 = *series.y[inside], y1 = *series.y[outside];
+      const double edge = y1 > y0 ? plot.y_range->second : plot.y_range->first;
+      const double t = (edge - y0) / (y1 - y0);
+      return fmt::format("{} {}\n", series.x[inside] + t * (series.x[outside] - series.x[inside]),
+                         edge);
+    };
+    const auto clippable = [&](std::size_t k) {
+      return !series.right_axis && !log_y && !plot.log_x && plot.y_range && series.y[k] &&
+             std::isfinite(*series.y[k]);
+    };
+    // The step from k to k + 1 goes the way of the step before it (or after
+    // it): a jump the other way is a pole crossed, not a line to draw on.
+    const auto same_trend = [&](std::size_t a, std::size_t b, std::size_t c) {
+      if (!clippable(a) || !clippable(b) || !clippable(c)) return false;
+      return (*series.y[b] - *series.y[a]) * (*series.y[c] - *series.y[b]) > 0;
+    };
     for (std::size_t k = 0; k < series.x.size(); ++k) {
       const auto& y = series.y[k];
-      const bool log_y = series.right_axis ? plot.log_y2 : plot.log_y;
       const bool off_log = (log_y && y && *y <= 0) || (plot.log_x && series.x[k] <= 0);
       if (!y || (!series.right_axis && !on_plot(plot, *y)) || off_log) {
+        if (!broken && k >= 2 && same_trend(k - 2, k - 1, k)) s += edge_between(k - 1, k);
         if (!broken) s += "\n";
         broken = true;
         continue;
       }
+      if (broken && k > 0 && k + 1 < series.x.size() && same_trend(k - 1, k, k + 1) &&
+          !on_plot(plot, *series.y[k - 1]))
+        s += edge_between(k, k - 1);
       s += fmt::format("{} {}\n", series.x[k], *y);
       broken = false;
     }

@@ -119,8 +119,10 @@ Figure figure5(const io::DesignFile& beam, const studies::Figure5Data& data) {
     const double x = L - d;
     const std::optional<double>& ratio = data.v2_over_v16[i];
     figure.csv += fmt::format("{},{},{}\n", io::exact(d), io::exact(x), optional_csv(ratio));
-    curve.x.push_back(d * 100.0);
-    curve.y.push_back(ratio);
+  }
+  for (std::size_t i = 0; i < data.curve_d_m.size(); ++i) {
+    curve.x.push_back(data.curve_d_m[i] * 100.0);
+    curve.y.push_back(data.curve_ratio[i]);
   }
   const std::optional<double>&zero = data.zero_from_butt_m, &pole = data.pole_from_butt_m;
   figure.plot =

@@ -69,6 +69,29 @@ Figure5Data figure5_data(const io::DesignFile& beam) {
     data.v2_over_v16.push_back(velocity_ratio(body, data.length_m - d, kDisk2_m, kDisk16_m));
   data.zero_from_butt_m = free_conjugate_from_butt(body, kDisk2_m);
   data.pole_from_butt_m = free_conjugate_from_butt(body, kDisk16_m);
+  std::vector<std::pair<double, std::optional<double>>> curve;
+  for (std::size_t i = 0; i < data.d_m.size(); ++i)
+    curve.emplace_back(data.d_m[i], data.v2_over_v16[i]);
+  if (data.pole_from_butt_m) {
+    const double pole_d = data.length_m - *data.pole_from_butt_m;
+    for (const double side : {-1.0, 1.0}) {
+      // Halving the distance to the pole: the ratio grows as 1 / distance.
+      for (double gap = kFigureStep_m; gap > 1e-9; gap /= 2) {
+        const double d = pole_d + side * gap;
+        if (d < 0 || d > data.length_m) continue;
+        const auto ratio = velocity_ratio(body, data.length_m - d, kDisk2_m, kDisk16_m);
+        curve.emplace_back(d, ratio);
+        if (ratio && std::abs(*ratio) > kFigure5Reach) break;
+      }
+    }
+    curve.emplace_back(pole_d, std::nullopt);
+  }
+  std::sort(curve.begin(), curve.end(),
+            [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (const auto& [d, ratio] : curve) {
+    data.curve_d_m.push_back(d);
+    data.curve_ratio.push_back(ratio);
+  }
   return data;
 }
 

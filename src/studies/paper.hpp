@@ -39,7 +39,13 @@ struct Figure5Data {
   // The impacts that leave the 2 cm point at rest (its COP) and the 16 cm one
   // (the ratio's pole), from the butt.
   std::optional<double> zero_from_butt_m, pole_from_butt_m;
+  // The curve to draw: the grid and, on each side of the pole, points nearing
+  // it until |v2/v16| passes kFigure5Reach, with a gap at the pole itself, so
+  // that both branches run off the plot's range instead of stopping short.
+  std::vector<double> curve_d_m;
+  std::vector<std::optional<double>> curve_ratio;
 };
+inline constexpr double kFigure5Reach = 8.0;
 Figure5Data figure5_data(const io::DesignFile& beam);
 
 // Where the free and hand-held rotation axes of Fig. 11 coincide.

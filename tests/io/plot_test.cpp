@@ -1,6 +1,7 @@
 #include "io/plot.hpp"
 
 #include <fcntl.h>
+#include <fmt/format.h>
 #include <poll.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -356,11 +357,12 @@ TEST_CASE("Every output's axis shows its own unit, in people's units, and the fa
   // The unit a person reads for each SI unit the outputs table uses, with the
   // factor from SI: what the name's suffix says must be what the value is.
   const std::map<std::string_view, std::pair<std::string_view, double>> kShown{
-      {"", {"", 1.0}},          {"m", {"cm", 100.0}},        {"s", {"ms", 1000.0}},
-      {"kg", {"g", 1000.0}},    {"kg m^2", {"kg·cm²", 1e4}}, {"kg cm^2", {"kg·cm²", 1.0}},
-      {"N", {"N", 1.0}},        {"N s", {"N·s", 1.0}},       {"N m", {"N·m", 1.0}},
-      {"J", {"J", 1.0}},        {"Hz", {"Hz", 1.0}},         {"m/s", {"m/s", 1.0}},
-      {"rad/s", {"rad/s", 1.0}}};
+      {"", {"", 1.0}},           {"m", {"cm", 100.0}},        {"s", {"ms", 1000.0}},
+      {"kg", {"g", 1000.0}},     {"kg m^2", {"kg·cm²", 1e4}}, {"kg cm^2", {"kg·cm²", 1.0}},
+      {"N", {"N", 1.0}},         {"N s", {"N·s", 1.0}},       {"N m", {"N·m", 1.0}},
+      {"J", {"J", 1.0}},         {"Hz", {"Hz", 1.0}},         {"m/s", {"m/s", 1.0}},
+      {"rad/s", {"rad/s", 1.0}}, {"km/h", {"km/h", 1.0}},     {"mph", {"mph", 1.0}},
+      {"1/s^2", {"1/s²", 1.0}}};
   for (const OutputSpec& o : output_specs()) {
     INFO(o.name << " in " << o.unit);
     const auto shown = kShown.find(o.unit);
@@ -371,6 +373,22 @@ TEST_CASE("Every output's axis shows its own unit, in people's units, and the fa
     // The words carry no unit of their own ("twist rate", not "twist rate rad").
     CHECK(axis.name.find(" rad") == std::string::npos);
   }
+}
+
+TEST_CASE("A line that leaves the y range runs to its edge; a jump across a pole is not drawn") {
+  Plot plot = two_points("edges");
+  plot.y_range = std::pair{-4.0, 4.0};
+  // Rising through the top edge between x = 2 (y = 2) and x = 3 (y = 10): it reaches 4 at 2.25,
+  // and comes back down through it between x = 4 (y = 12) and x = 5 (y = 0) at 4 + 8/12.
+  plot.series = {PlotSeries{"rise", {0, 1, 2, 3, 4, 5, 6}, {0.0, 1.0, 2.0, 10.0, 12.0, 0.0, -1.0}}};
+  const std::string rise = gnuplot_script(plot, "");
+  CHECK(rise.find("1 1\n2 2\n2.25 4\n\n") != std::string::npos);
+  CHECK(rise.find(fmt::format("{} 4\n5 0\n", 4.0 + 8.0 / 12.0)) != std::string::npos);
+  // A pole: rising to 3, then -50 on its far side: no line drawn down to the bottom edge.
+  plot.series = {PlotSeries{"pole", {0, 1, 2, 3, 4}, {1.0, 2.0, 3.0, -50.0, -3.0}}};
+  const std::string pole = gnuplot_script(plot, "");
+  CHECK(pole.find("-4\n") == std::string::npos);
+  CHECK(pole.find("2 3\n\n") != std::string::npos);
 }
 
 }  // namespace
