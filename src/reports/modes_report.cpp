@@ -103,9 +103,9 @@ std::string modes_report(const studies::ModesData& data, io::Format format) {
 io::Plot modes_plot(const studies::ModesData& data) {
   const double L = data.design.design.implement.length_m();
   io::Plot plot{fmt::format("Mode shapes: {}", data.design.name),
-                "position from the tip (m)",
+                "position from the tip (cm)",
                 "displacement w (normalised, max |w| = 1)",
-                std::pair{0.0, L},
+                std::pair{0.0, 100 * L},
                 std::pair{-1.1, 1.1},
                 {},
                 {},
@@ -123,7 +123,7 @@ io::Plot modes_plot(const studies::ModesData& data) {
                        {},
                        fmt::format("lines lw 2 {}", dash)};
       for (std::size_t i = 0; i < result.shape_x_m.size(); ++i) {
-        s.x.push_back(L - result.shape_x_m[i]);
+        s.x.push_back(100 * (L - result.shape_x_m[i]));
         s.y.push_back(result.shape_w[k][i]);
       }
       plot.series.push_back(std::move(s));
@@ -132,12 +132,12 @@ io::Plot modes_plot(const studies::ModesData& data) {
   add(data.free, "free", "dt 1", false);
   add(data.held, "hand-held", "dt 2", true);
   if (data.rigid.cop_free_from_butt_m)
-    plot.vertical_lines.push_back({L - *data.rigid.cop_free_from_butt_m, "COP free"});
+    plot.vertical_lines.push_back({100 * (L - *data.rigid.cop_free_from_butt_m), "COP free"});
   if (data.rigid.cop_hand_from_butt_m)
-    plot.vertical_lines.push_back({L - *data.rigid.cop_hand_from_butt_m, "COP hand-held"});
+    plot.vertical_lines.push_back({100 * (L - *data.rigid.cop_hand_from_butt_m), "COP hand-held"});
   if (!data.free.modes.empty() && !data.free.modes[0].nodes_from_butt_m.empty()) {
     plot.vertical_lines.push_back(
-        {L - data.free.modes[0].nodes_from_butt_m.back(), "node (free f1)"});
+        {100 * (L - data.free.modes[0].nodes_from_butt_m.back()), "node (free f1)"});
   }
   return plot;
 }
