@@ -76,6 +76,15 @@ std::vector<io::Plot> response_plots(const studies::ResponseData& data) {
         s.y.push_back(r.points[k].dc_m_s[i] + r.points[k].ac_m_s[i] + offset);
       }
       plot.series.push_back(std::move(s));
+      // The rigid body's (dc) part dashed in the same colour: the vibration's
+      // (ac) part is the solid line's swing about it, as Cross draws the two.
+      io::PlotSeries dc{j == 0 ? "dc part (dashed)" : "", {}, {}, "lines lw 1 dt 2"};
+      dc.color = io::plot_color(j);
+      for (std::size_t i = 0; i < r.time_s.size(); ++i) {
+        dc.x.push_back(r.time_s[i] * 1e3);
+        dc.y.push_back(r.points[k].dc_m_s[i] + offset);
+      }
+      plot.series.push_back(std::move(dc));
     }
     for (std::size_t j = 0; j < data.responses.size() && shift > 0; ++j) {
       const double offset = -shift * static_cast<double>(j);
