@@ -367,6 +367,7 @@ PeopleUnit people_unit(std::string_view si_unit) {
   if (si_unit == "m/s") return {"m/s", 1.0, ""};
   if (si_unit == "N s") return {"N·s", 1.0, ""};
   if (si_unit == "N m") return {"N·m", 1.0, ""};
+  if (si_unit == "1/s^2") return {"1/s²", 1.0, ""};
   return {si_unit, 1.0, ""};
 }
 
