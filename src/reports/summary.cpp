@@ -8,14 +8,16 @@ namespace sweetspot::reports {
 namespace {
 
 // "the wrist feels a jolt of 470 N and the ball comes back at 0.42 of its speed"; the
-// first time with "(apparent COR)".
-std::string feel(const Evaluation& e, bool first = false) {
+// first time with "(apparent COR)". Off a swinging racquet, the speed is the one the
+// ball and the strings meet at (the racquet is free during the contact: swing.hpp).
+std::string feel(const Evaluation& e, bool first = false, bool swinging = false) {
   const std::string wrist =
       e.peak_wrist_force_N == 0.0 || newton_text(e.peak_wrist_force_N) == "0 N"
           ? std::string("the wrist feels no jolt")
           : "the wrist feels a jolt of " + newton_text(e.peak_wrist_force_N);
-  return fmt::format("{} and the ball comes back at {} of its speed{}", wrist,
-                     ratio_text(e.apparent_cor), first ? " (the apparent COR)" : "");
+  return fmt::format("{} and the ball comes back at {} of {}{}", wrist, ratio_text(e.apparent_cor),
+                     swinging ? "the speed it meets the strings at" : "its speed",
+                     first ? " (the apparent COR)" : "");
 }
 
 }  // namespace
@@ -78,21 +80,30 @@ std::vector<std::string> sweet_spot_sentences(const io::DesignFile& design,
     sentences.push_back(fmt::format("The model cannot answer a hit at the {}, {} from the tip: {}.",
                                     spot.what, cm_text(spot.from_tip_m), spot.why));
   // 2. What the arm and the ball feel at each.
+  const bool swinging = design.design.swing.has_value();
   const std::string speed = fmt::format("{:.3g} m/s", design.design.ball.speed_m_s);
   if (spots.cop_hand) {
-    sentences.push_back(fmt::format("For a ball at {}, at the centre of percussion {}.", speed,
-                                    feel(spots.cop_hand->evaluation, true)));
+    const Evaluation& cop = spots.cop_hand->evaluation;
+    const std::string ball =
+        swinging ? fmt::format(
+                       "a ball coming at {} onto the swinging racquet (they meet at {:.3g} "
+                       "m/s there)",
+                       speed, cop.incoming_speed_m_s + cop.racquet_speed_m_s)
+                 : "a ball at " + speed;
+    sentences.push_back(
+        fmt::format("For {}, at the centre of percussion {}.", ball, feel(cop, true, swinging)));
   }
   if (spots.node_hand) {
-    sentences.push_back(
-        fmt::format("At the node {}.", feel(spots.node_hand->evaluation, !spots.cop_hand)));
+    sentences.push_back(fmt::format("At the node {}.",
+                                    feel(spots.node_hand->evaluation, !spots.cop_hand, swinging)));
   }
   // 3. The point of best rebound (the collision fidelity) slots in here.
   if (spots.best_rebound) {
-    sentences.push_back(
-        fmt::format("The ball comes back fastest, at {:.2g} m/s, {} from the tip, where {}.",
-                    spots.best_rebound->evaluation.rebound_speed_m_s,
-                    cm_text(spots.best_rebound->from_tip_m), feel(spots.best_rebound->evaluation)));
+    sentences.push_back(fmt::format(
+        "The ball comes back fastest{}, at {:.2g} m/s, {} from the tip, where {}.",
+        swinging ? " relative to the racquet" : "",
+        spots.best_rebound->evaluation.rebound_speed_m_s, cm_text(spots.best_rebound->from_tip_m),
+        feel(spots.best_rebound->evaluation, false, swinging)));
   }
   // 3b. The shot off the swinging racquet (swing.hpp), at its power point.
   if (spots.power_point) {
@@ -132,7 +143,7 @@ std::vector<std::string> sweet_spot_sentences(const io::DesignFile& design,
   if (spots.centre_of_strings && !asked_is_centre) {
     sentences.push_back(fmt::format("At the centre of the strings, about {} from the tip, {}.",
                                     cm_text(spots.centre_of_strings->from_tip_m),
-                                    feel(spots.centre_of_strings->evaluation)));
+                                    feel(spots.centre_of_strings->evaluation, false, swinging)));
   }
   const std::string where =
       spots.asked_provenance == "given" ? fmt::format("At the impact asked about, {} from the tip,",
@@ -146,7 +157,7 @@ std::vector<std::string> sweet_spot_sentences(const io::DesignFile& design,
                 "At {} from the tip (no impact was given: {}; the tables below are for "
                 "this one),",
                 cm_text(spots.asked.from_tip_m), spots.asked_provenance);
-  sentences.push_back(fmt::format("{} {}.", where, feel(asked)));
+  sentences.push_back(fmt::format("{} {}.", where, feel(asked, false, swinging)));
   sentences.push_back(
       "Positions are rounded to 0.5 cm and forces to two figures: the hand's place and the "
       "arm's mass are assumed, not measured.");

@@ -2,6 +2,7 @@
 
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <string>
 
@@ -170,6 +171,30 @@ TEST_CASE(
   CHECK(found - spots.node_hand->from_tip_m < a);
   CHECK_THROWS_WITH(studies::best_rebound_on_axis(design, 1e-6, 0.0),
                     Catch::Contains("tolerance_m"));
+}
+
+}  // namespace sweetspot::reports
+
+namespace sweetspot::reports {
+
+TEST_CASE("Off a swinging racquet the answer gives the speed ball and strings meet at") {
+  // A serve: the ball at rest, the racquet swung at 14 rad/s about a pivot 60 cm beyond the
+  // butt. The COP's meeting speed is the racquet's there, omega (pivot + x_cop).
+  const io::DesignFile design = design_from(R"({
+    "implement": {"length_in": 27, "mass_g": 318, "balance_cm": 32.5, "swingweight_kg_cm2": 325},
+    "frame": {"fundamental_free_Hz": 150}, "strings": {"tension_lb": 52},
+    "swing": {"angular_speed_rad_s": 14, "pivot_beyond_butt_cm": 60}, "ball": {"speed_m_s": 0}})");
+  const auto spots = studies::find_sweet_spots(design, evaluate(design.design), 1e-6);
+  const std::string text = sweet_spot_paragraph(design, spots);
+  INFO(text);
+  REQUIRE(spots.cop_hand);
+  const double meet = 14 * (0.60 + (0.6858 - spots.cop_hand->from_tip_m));
+  char expected[64];
+  std::snprintf(expected, sizeof expected, "(they meet at %.3g m/s there)", meet);
+  CHECK(contains(text, expected));
+  CHECK(contains(text, "of the speed it meets the strings at"));
+  CHECK_FALSE(contains(text, "of its speed"));
+  CHECK_FALSE(contains(text, "For a ball at 0 m/s"));
 }
 
 }  // namespace sweetspot::reports
