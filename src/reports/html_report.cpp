@@ -150,6 +150,18 @@ std::string hand_and_tape(const io::DesignFile& file, double half_height, bool p
   for (const PointMass& p : d.implement.point_masses()) {
     if (!(p.mass_kg > 0.0)) continue;  // a place for lead with none there (a study's start)
     const double x = L - p.from_butt_m * 100.0;
+    const double off_cm = p.off_axis_m * 100.0;
+    if (!profile && off_cm != 0.0) {
+      // Seen face on, lead on the hoop at 3 or 9 o'clock is a patch where it
+      // sits (3 o'clock up, as the ball is drawn), not a strip across the head.
+      svg += fmt::format(
+          "<rect class=\"tape\" x=\"{}\" y=\"{}\" width=\"1.6\" height=\"1.2\"><title>lead, "
+          "{:.0f} g, {} cm from the tip, {} cm off the axis toward {} o'clock</title></rect>\n",
+          n(std::clamp(x - 0.8, 0.0, L - 1.6)), n(-off_cm - 0.6), p.mass_kg * 1000.0,
+          html_cm(d.implement.length_m() - p.from_butt_m), n(std::fabs(off_cm)),
+          off_cm > 0 ? 3 : 9);
+      continue;
+    }
     svg += fmt::format(
         "<rect class=\"tape\" x=\"{}\" y=\"{}\" width=\"1.6\" height=\"{}\"><title>lead, {:.0f} g, "
         "{} cm from the tip</title></rect>\n",
@@ -161,10 +173,21 @@ std::string hand_and_tape(const io::DesignFile& file, double half_height, bool p
 
 void tape_marks(const io::DesignFile& file, std::vector<Mark>& ms) {
   const double L = file.design.implement.length_m();
-  for (const PointMass& p : file.design.implement.point_masses()) {
+  // A pair at one place along the axis (3 and 9 o'clock) is one mark: "lead 2 × 5 g".
+  const auto& masses = file.design.implement.point_masses();
+  for (std::size_t k = 0; k < masses.size(); ++k) {
+    const PointMass& p = masses[k];
     if (!(p.mass_kg > 0.0)) continue;
-    ms.push_back(
-        {(L - p.from_butt_m) * 100.0, fmt::format("lead {:.0f} g", p.mass_kg * 1000.0), ""});
+    if (k > 0 && masses[k - 1].from_butt_m == p.from_butt_m && masses[k - 1].mass_kg == p.mass_kg &&
+        masses[k - 1].off_axis_m == -p.off_axis_m && p.off_axis_m != 0.0)
+      continue;
+    const bool pair = k + 1 < masses.size() && masses[k + 1].from_butt_m == p.from_butt_m &&
+                      masses[k + 1].mass_kg == p.mass_kg &&
+                      masses[k + 1].off_axis_m == -p.off_axis_m && p.off_axis_m != 0.0;
+    ms.push_back({(L - p.from_butt_m) * 100.0,
+                  pair ? fmt::format("lead 2 × {:.0f} g", p.mass_kg * 1000.0)
+                       : fmt::format("lead {:.0f} g", p.mass_kg * 1000.0),
+                  ""});
   }
 }
 

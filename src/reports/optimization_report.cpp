@@ -335,6 +335,49 @@ std::pair<std::string, std::string> words_and_unit(const io::AxisQuantity& axis)
   return {axis.label.substr(0, open), axis.label.substr(open + 2, axis.label.size() - open - 3)};
 }
 
+// Where the design file puts the point mass a variable's path sets the mass
+// of ("/implement/point_masses/1/mass_g"), in words ("at 3 and 9 o'clock",
+// "5 cm from the tip"); "" when the path sets its place, or is not a lead's.
+std::string lead_place(const io::Json& design, const std::string& pointer) {
+  constexpr std::string_view kLead = "/implement/point_masses/";
+  if (!pointer.starts_with(kLead)) return "";
+  const std::size_t slash = pointer.find('/', kLead.size());
+  if (slash == std::string::npos) return "";
+  const std::string key = pointer.substr(slash + 1);
+  if (key.starts_with("from_") || key.starts_with("clock") || key.starts_with("off_axis"))
+    return "";
+  const io::Json::json_pointer entry_at(pointer.substr(0, slash));
+  if (!design.contains(entry_at) || !design.at(entry_at).is_object()) return "";
+  const io::Json& entry = design.at(entry_at);
+  const auto hour = [](const io::Json& h) {
+    return h.is_number() ? io::significant(h.get<double>(), 3) : std::string();
+  };
+  if (const auto clock = entry.find("clock"); clock != entry.end()) {
+    if (clock->is_string()) {
+      const std::string place = clock->get<std::string>();
+      return place == "throat" ? "at the throat" : place == "handle" ? "at the handle" : "";
+    }
+    if (clock->is_number()) return "at " + hour(*clock) + " o'clock";
+    if (clock->is_array() && !clock->empty()) {
+      std::string hours;
+      for (std::size_t k = 0; k < clock->size(); ++k)
+        hours += (k == 0 ? "" : k + 1 == clock->size() ? " and " : ", ") + hour((*clock)[k]);
+      return "at " + hours + " o'clock" + (clock->size() > 1 ? ", each" : "");
+    }
+    return "";
+  }
+  for (const auto& [name, value] : entry.items()) {
+    if (!value.is_number()) continue;
+    for (const std::string_view end : {"from_tip", "from_butt"}) {
+      if (!name.starts_with(end)) continue;
+      const std::string_view unit = io::unit_of_key(name);
+      return fmt::format("{} {} from the {}", io::significant(value.get<double>(), 4), unit,
+                         end == "from_tip" ? "tip" : "butt");
+    }
+  }
+  return "";
+}
+
 std::string variables_html(const studies::Study& study, const studies::OptimizationResult& r) {
   std::string html =
       "<div class=\"table-wrap\"><table id=\"variables\" class=\"side-by-side\"><thead><tr>"
@@ -344,7 +387,9 @@ std::string variables_html(const studies::Study& study, const studies::Optimizat
   for (std::size_t i = 0; i < study.variables.size(); ++i) {
     const studies::StudyVariable& v = study.variables[i];
     const io::AxisQuantity axis = io::pointer_axis(v.pointer);
-    const auto [words, unit] = words_and_unit(axis);
+    auto [words, unit] = words_and_unit(axis);
+    if (const std::string place = lead_place(study.design_document, v.pointer); !place.empty())
+      words += ", " + place;
     const auto cell = [&](double x) {
       return fmt::format("<td class=\"num\">{}<span class=\"si\">{}</span></td>",
                          io::significant(x * axis.factor, 4), io::significant(x, 6));
