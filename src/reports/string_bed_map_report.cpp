@@ -175,8 +175,9 @@ std::string string_bed_heat_map_svg_script(const studies::StringBedMap& map, Map
              "set terminal svg size {},{} dynamic enhanced font 'DejaVu Sans,12' background "
              "'#ffffff'\n"
              // The svg terminal's text is measured smaller than drawn: room
-             // below for the axis label and the key under it.
-             "set bmargin 8\n",
+             // below for the axis label and the key under it, and on the right
+             // for the colour bar's tics and its label, which ran off the edge.
+             "set bmargin 8\nset rmargin 14\n",
              width, height) +
          heat_map_commands(map, quantity, length_m, design_name);
 }
