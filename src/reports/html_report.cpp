@@ -696,10 +696,19 @@ std::string frame_html(const Evaluation& e, const std::vector<studies::FramePoin
                         "tip, where a ball can land.</p>\n",
                         html_cm(span.from_tip_m), html_cm(span.to_tip_m))
           : std::string());
-  html +=
-      html_figure(svgs[0], svgs[1], "plot-wrist",
-                  "The share of the force on the strings that reaches the wrist (Cross 2004, Eq. "
-                  "11), rigid model: zero at the hand-held COP.");
+  // Zero at the hand-held COP: said where the curve shows it, else where it lies.
+  std::string zero = "no hand-held COP on the implement, so never zero";
+  if (e.cop_hand_from_butt_m) {
+    const double cop_from_tip = e.length_m - *e.cop_hand_from_butt_m;
+    zero = cop_from_tip >= span.from_tip_m && cop_from_tip <= span.to_tip_m
+               ? fmt::format("zero at the hand-held COP, {} cm from the tip", html_cm(cop_from_tip))
+               : fmt::format("zero only at the hand-held COP, {} cm from the tip, off the {}",
+                             html_cm(cop_from_tip), span.string_bed ? "strings" : "frame");
+  }
+  html += html_figure(svgs[0], svgs[1], "plot-wrist",
+                      "The share of the force on the strings that reaches the wrist (Cross 2004, "
+                      "Eq. 11), rigid model: " +
+                          zero + ".");
   const auto most = std::max_element(
       curve.begin(), curve.end(), [](const studies::FramePoint& a, const studies::FramePoint& b) {
         return a.apparent_cor < b.apparent_cor;
