@@ -1426,6 +1426,29 @@ constexpr const char* kClubRacquet = R"({
   "strings": { "tension_lb": 52 }
 })";
 
+TEST_CASE("evaluate's power point: no shot from a point on the string bed's axis beats it") {
+  const Sandbox box;
+  const fs::path design =
+      box.file("r.json", R"({"implement": {"length_in": 27, "mass_g": 318, "balance_cm": 32.5,
+                   "swingweight_kg_cm2": 325, "headsize_sq_in": 100}, "frame": {"RA": 66},
+                   "strings": {"tension_lb": 52}})");
+  const Run run = box.run("evaluate \"" + design.string() + "\" --format json");
+  REQUIRE(run.status == 0);
+  const nlohmann::json j = nlohmann::json::parse(run.out);
+  const nlohmann::json& power = j.at("power_point");
+  const double best = power.at("shot_speed_m_s").get<double>();
+  CHECK(power.at("shot_speed_km_h").get<double>() == Approx(best * 3.6));
+  CHECK(power.at("from_tip_m").get<double>() > 0.0);
+  for (const double from_tip_cm : {8.0, 14.0, 20.0, 26.0}) {
+    const Run at = box.run("evaluate \"" + design.string() + "\" --set impact.from_tip_cm=" +
+                           std::to_string(from_tip_cm) + " --format json");
+    REQUIRE(at.status == 0);
+    INFO(from_tip_cm);
+    CHECK(nlohmann::json::parse(at.out).at("outputs").at("shot_speed_m_s").get<double>() <=
+          best * (1 + 1e-9));
+  }
+}
+
 }  // namespace
 
 TEST_CASE("tune as the README writes it: -o writes a design evaluate reads, at the targets") {
