@@ -135,6 +135,14 @@ std::vector<std::string> sweet_spot_sentences(const io::DesignFile& design,
         swing, asked.incoming_speed_m_s, power.shot_speed_m_s * 3.6,
         power.shot_speed_m_s * 3600.0 / 1609.344, cm_text(spots.power_point->from_tip_m),
         than_rebound, asked.shot_speed_m_s * 3.6));
+    if (power.fidelity != Fidelity::kCollision) {
+      // A COR given for the frame is the same at every point: the rebound does not fall
+      // towards the tip as a string bed's does, so the power point sits near the balance.
+      sentences.push_back(
+          "That power point takes the frame's COR as the same at every point; the solved "
+          "collision of ball, strings and frame (a string tension and a stiffness, no COR) "
+          "places it on the strings, nearer the tip than the best rebound.");
+    }
   }
   // 4. The centre of the strings and the impact asked about.
   const bool asked_is_centre =

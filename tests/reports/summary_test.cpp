@@ -198,3 +198,27 @@ TEST_CASE("Off a swinging racquet the answer gives the speed ball and strings me
 }
 
 }  // namespace sweetspot::reports
+
+namespace sweetspot::reports {
+
+TEST_CASE("A power point found with a given COR says the COR was taken the same everywhere") {
+  // A COR given for the frame (modal): e_A peaks near the balance, and so does the shot.
+  const io::DesignFile given = design_from(R"({
+    "implement": {"length_in": 27, "mass_g": 305, "balance_cm": 32.5, "swingweight_kg_cm2": 320},
+    "frame": {"cor": 0.8, "fundamental_free_Hz": 155}})");
+  const std::string modal = sweet_spot_paragraph(
+      given, studies::find_sweet_spots(given, evaluate(given.design, Fidelity::kModal), 1e-6));
+  INFO(modal);
+  CHECK(contains(modal, "the power point"));
+  CHECK(contains(modal, "takes the frame's COR as the same at every point"));
+  // The solved collision (a tension and a stiffness, no COR): no such caveat.
+  const io::DesignFile solved = design_from(kSpecSheet);
+  const std::string collision = sweet_spot_paragraph(
+      solved,
+      studies::find_sweet_spots(solved, evaluate(solved.design, Fidelity::kCollision), 1e-6));
+  INFO(collision);
+  CHECK(contains(collision, "the power point"));
+  CHECK_FALSE(contains(collision, "takes the frame's COR as the same"));
+}
+
+}  // namespace sweetspot::reports
