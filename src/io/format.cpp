@@ -568,8 +568,8 @@ Json evaluation_json(const DesignFile& file, const Evaluation& e) {
     const double v = *e.power_point_shot_speed_m_s;
     j["power_point"] = {{"from_tip_m", e.length_m - *e.power_point_from_butt_m},
                         {"shot_speed_m_s", v},
-                        {"shot_speed_km_h", v * 3.6},
-                        {"shot_speed_mph", v * 3600.0 / 1609.344}};
+                        {"shot_speed_km_h", v * kKmHPerMS},
+                        {"shot_speed_mph", v * kMphPerMS}};
   }
   const Evaluation::Details details = e.details.value_or(Evaluation::Details{});
   if (details.collision) {

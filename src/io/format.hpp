@@ -58,6 +58,10 @@ bool csv_plain(std::string_view text);
 // html_escape for text, render_svg for gnuplot's SVG).
 std::string xml_chars(std::string_view text);
 
+// A speed as people read it: km/h and mph per m/s (a mile is 1609.344 m).
+inline constexpr double kKmHPerMS = 3.6;
+inline constexpr double kMphPerMS = 3600.0 / 1609.344;
+
 // An output's unit as people read it: cm for m, g for kg, kg·cm² for kg m²,
 // ms for s; the others as they are. value_SI * factor is the value in `unit`.
 struct PeopleUnit {

@@ -2,13 +2,13 @@
 
 #include <array>
 
+#include "io/format.hpp"
+
 namespace sweetspot::io {
 namespace {
 
 constexpr double kCm2PerM2 = 1e4;
-constexpr double kKmHPerMS = 3.6;
-constexpr double kMphPerMS = 3600.0 / 1609.344;
-// Standard gravity [m/s^2] (the customisers' MgR/I uses g = 9.81).
+// Standard gravity [m/s^2], the g of the customisers' MgR/I.
 constexpr double kStandardGravity_m_s2 = 9.80665;
 
 constexpr std::string_view kAxisAtInfinity =

@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include "io/format.hpp"
+
 namespace sweetspot::reports {
 namespace {
 
@@ -132,9 +134,9 @@ std::vector<std::string> sweet_spot_sentences(const io::DesignFile& design,
         "Swung as {} at a ball coming at {:.3g} m/s, the shot is fastest, {:.0f} km/h ({:.0f} "
         "mph), {} from the tip (the power point){}; from the impact asked about it leaves at "
         "{:.0f} km/h.",
-        swing, asked.incoming_speed_m_s, power.shot_speed_m_s * 3.6,
-        power.shot_speed_m_s * 3600.0 / 1609.344, cm_text(spots.power_point->from_tip_m),
-        than_rebound, asked.shot_speed_m_s * 3.6));
+        swing, asked.incoming_speed_m_s, power.shot_speed_m_s * io::kKmHPerMS,
+        power.shot_speed_m_s * io::kMphPerMS, cm_text(spots.power_point->from_tip_m), than_rebound,
+        asked.shot_speed_m_s * io::kKmHPerMS));
     if (power.fidelity != Fidelity::kCollision) {
       // A COR given for the frame is the same at every point: the rebound does not fall
       // towards the tip as a string bed's does, so the power point sits near the balance.
