@@ -77,6 +77,12 @@ const Range kForearm{1e-6, 1e12, true, 0.0, 1e12, 0.3, 1.0};
 // ball: mass in (0, 1e6] kg, speed in (0, kMaxSpeed_m_s = 1e4] m/s.
 const Range kBallMass{1e-6, 1e6, true, kTiny, 1e6, 0.05, 0.16};
 const Range kBallSpeed{1e-6, 1e4, true, kTiny, 1e4, 5.0, 60.0};
+// swing.hpp: angular speed in (0, kMaxAngularSpeed_rad_s = 100] rad/s, pivot
+// in [0, kMaxPivotBeyondButt_m = 3] m beyond the butt, the speed at the impact
+// in (0, kMaxSpeed_m_s = 1e4] m/s.
+const Range kAngularSpeed{1e-3, 100.0, true, kTiny, 100.0, 5.0, 40.0};
+const Range kPivot{0.0, 3.0, false, 0.0, 3.0, 0.2, 1.0};
+const Range kSwingSpeed{1e-3, 1e4, true, kTiny, 1e4, 5.0, 40.0};
 // BallContactLaw::validate(): k in (0, 1e15], n in [1, 3], b in [0, 1e12], p in [0, 3].
 const Range kContactStiffness{1.0, 1e15, true, kTiny, 1e15, 1e5, 1e6};
 const Range kContactExponent{1.0, 3.0, false, 1.0, 3.0, 1.2, 1.8};
@@ -384,6 +390,17 @@ DrawnDesign draw_design(Rng& rng, const std::string& fidelity, double typical_sh
   }
   if (!ball.empty()) doc["ball"] = ball;
 
+  // A swing (swing.hpp), the ball's speed above then the incoming one (0 allowed).
+  if (draw.chance(0.15)) {
+    Json swing = Json::object();
+    if (rng.chance(0.5))
+      swing["angular_speed_rad_s"] = draw(kAngularSpeed);
+    else
+      put(rng, swing, "speed_at_impact", kSpeed, draw(kSwingSpeed));
+    put(rng, swing, "pivot_beyond_butt", kLength, draw(kPivot));
+    doc["swing"] = swing;
+  }
+
   Json impact = Json::object();
   const double impact_kind = rng.unit();
   if (impact_kind < 0.7) {
@@ -544,6 +561,10 @@ std::optional<Truth> read_truth(const Json& document) {
   const Json& ball = part(document, "ball");
   t.ball_mass_kg = si(ball, "mass", kMass).value_or(0.057);
   t.ball_speed_m_s = si(ball, "speed", kSpeed).value_or(50.0);
+  const Json& swing = part(document, "swing");
+  t.swing_angular_speed_rad_s = number(swing, "angular_speed_rad_s");
+  t.swing_speed_at_impact_m_s = si(swing, "speed_at_impact", kSpeed);
+  t.swing_pivot_beyond_butt_m = si(swing, "pivot_beyond_butt", kLength).value_or(0.0);
   const Json& contact = part(ball, "contact");
   t.ball_stiffness = number(contact, "stiffness").value_or(sweetspot::kTennisBallLaw.stiffness);
   t.ball_exponent = number(contact, "exponent").value_or(sweetspot::kTennisBallLaw.exponent);

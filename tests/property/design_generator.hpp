@@ -97,6 +97,18 @@ struct Truth {
   std::optional<HeadShape> head;
   std::optional<double> twistweight_kg_m2;
   double ball_mass_kg = 0.057, ball_speed_m_s = 50.0;
+  // A swing (swing.hpp): the racquet's speed at the impact, given or omega (pivot + x).
+  std::optional<double> swing_angular_speed_rad_s, swing_speed_at_impact_m_s;
+  double swing_pivot_beyond_butt_m = 0.0;
+  // The speed ball and strings meet at, for an impact `from_butt_m` from the butt: the
+  // collision off a swinging racquet is the one onto a racquet at rest at this speed.
+  double meeting_speed_m_s(double from_butt_m) const {
+    if (swing_speed_at_impact_m_s) return ball_speed_m_s + *swing_speed_at_impact_m_s;
+    if (swing_angular_speed_rad_s)
+      return ball_speed_m_s +
+             *swing_angular_speed_rad_s * (swing_pivot_beyond_butt_m + from_butt_m);
+    return ball_speed_m_s;
+  }
   // The ball's elastic law k x^n (ball.contact; absent: the calibrated tennis ball's).
   double ball_stiffness = 0.0, ball_exponent = 0.0;
   std::optional<double> impact_from_butt_m;  // absent: the code's default

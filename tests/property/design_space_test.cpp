@@ -369,7 +369,8 @@ std::vector<Finding> judge_answer(const Json& document, const Evaluation& e,
            "the key table of docs/design-files.md does not give it");
     return std::move(j).findings();
   }
-  const double m = truth->ball_mass_kg, v = truth->ball_speed_m_s;
+  // Off a swinging racquet the ledger is the collision at the meeting speed.
+  const double m = truth->ball_mass_kg, v = truth->meeting_speed_m_s(e.impact_from_butt_m);
   const double ball_in = 0.5 * m * v * v;
   const double energy_tol = kEnergyRoundOff * ball_in;
 
