@@ -96,6 +96,11 @@ struct Evaluation {
   bool cor_derived = false;
   double impact_duration_s = 0.0;
   bool impact_duration_derived = false;
+  // The string bed, when the design gives one (string_bed.hpp): the mains'
+  // tension in the bed [N], the bed's stiffness [N/m] and its ring [Hz].
+  std::optional<double> string_bed_tension_N;
+  std::optional<double> string_bed_stiffness_N_m;
+  std::optional<double> string_bed_ring_Hz;
   // Energy the frame keeps as vibration after the impact (free implement),
   // Fidelity::kResponse only [J], and its share of the ball's kinetic energy.
   std::optional<double> vibration_energy_J;

@@ -66,6 +66,19 @@ struct TuneCommand {
   int run() const;
 };
 
+struct StringCommand {
+  CLI::App* command = nullptr;
+  std::string design_path;
+  std::vector<std::string> settings;  // --set FIELD=VALUE, repeatable
+  std::string like;                   // --like OTHER.json: its bed is the target
+  std::string keep = "stiffness";     // what the customer keeps
+  std::string target;                 // --target stiffness_lb_in=180
+  std::string format = "md";
+
+  void add_to(CLI::App& app);
+  int run() const;
+};
+
 struct Table1Command {
   CLI::App* command = nullptr;
   std::string dir = "designs/table1";

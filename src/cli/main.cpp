@@ -32,6 +32,7 @@ int main(int argc, char** argv) {
   EvaluateCommand evaluate;
   CompareCommand compare;
   TuneCommand tune;
+  StringCommand string;
   Table1Command table1;
   FigureCommand figure;
   ReportCommand report;
@@ -44,6 +45,7 @@ int main(int argc, char** argv) {
   evaluate.add_to(app);
   compare.add_to(app);
   tune.add_to(app);
+  string.add_to(app);
   table1.add_to(app);
   figure.add_to(app);
   report.add_to(app);
@@ -145,6 +147,8 @@ int main(int argc, char** argv) {
       status = compare.run();
     else if (*tune.command)
       status = tune.run();
+    else if (*string.command)
+      status = string.run();
     else if (*table1.command)
       status = table1.run();
     else if (*figure.command)

@@ -15,11 +15,13 @@
 #include "reports/optimization_report.hpp"
 #include "reports/paper_reports.hpp"
 #include "reports/response_report.hpp"
+#include "reports/string_report.hpp"
 #include "reports/tension_report.hpp"
 #include "studies/modes.hpp"
 #include "studies/optimization.hpp"
 #include "studies/paper.hpp"
 #include "studies/response.hpp"
+#include "studies/string_ticket.hpp"
 #include "studies/study.hpp"
 #include "studies/sweep.hpp"
 #include "studies/tension_study.hpp"
@@ -124,6 +126,50 @@ void write_study_reports(const std::string& designs_dir, const reports::ReportWr
   }
 }
 
+// The string beds of every shipped design that has one, and for the
+// stringer's tickets (designs/strings/) the tension on each that keeps every
+// other's stiffness.
+void write_string_reports(const std::string& designs_dir, const reports::ReportWriter& write,
+                          std::vector<reports::ReportEntry>& entries) {
+  std::vector<reports::ShippedBed> beds;
+  std::vector<std::pair<std::string, io::DesignFile>> tickets;
+  std::vector<fs::path> files;
+  for (const char* folder : {"racquets", "strings"}) {
+    const fs::path dir = fs::path(designs_dir) / folder;
+    if (!fs::exists(dir)) continue;
+    for (const auto& entry : fs::directory_iterator(dir))
+      if (entry.path().extension() == ".json") files.push_back(entry.path());
+  }
+  std::sort(files.begin(), files.end());
+  for (const fs::path& path : files) {
+    io::DesignFile file = io::load_design(path.string());
+    if (!file.design.strings) continue;
+    const std::string relative = fs::relative(path, designs_dir).generic_string();
+    beds.push_back({relative, file.name, studies::read_bed(file.design)});
+    if (relative.starts_with("strings/")) tickets.emplace_back(relative, std::move(file));
+  }
+  if (beds.empty()) return;
+  std::vector<reports::ShippedMatch> matches;
+  for (const auto& [name, file] : tickets) {
+    for (const auto& [like_name, like] : tickets) {
+      if (name == like_name) continue;
+      matches.push_back({name, like_name,
+                         studies::tension_for(file.design, studies::BedQuantity::kStiffness,
+                                              studies::read_bed(like.design).stiffness_N_m)});
+    }
+  }
+  write.text("string-beds.md", reports::string_beds_report(beds, matches, io::Format::kMarkdown));
+  write.text("string-beds.csv", reports::string_beds_report(beds, matches, io::Format::kCsv));
+  std::string says =
+      fmt::format("The string beds of the {} shipped designs that have one", beds.size());
+  if (!matches.empty()) {
+    const studies::TensionAnswer& t = matches.front().answer;
+    says += fmt::format(": {} keeps the stiffness of {} at {} lb", matches.front().file,
+                        matches.front().like_file, io::significant(t.rounded_pull_lb, 4));
+  }
+  entries.push_back({"[string-beds.md](string-beds.md), [.csv](string-beds.csv)", says + "."});
+}
+
 }  // namespace
 
 void write_reports(const std::string& designs_dir, const std::string& out_dir, std::ostream& log,
@@ -163,6 +209,7 @@ void write_reports(const std::string& designs_dir, const std::string& out_dir, s
     entries.push_back(std::move(entry));
 
   write_study_reports(designs_dir, write, entries);
+  write_string_reports(designs_dir, write, entries);
 
   std::string index =
       "# sweetspot reports\n\n"

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/check.hpp"
+#include "core/kernels_detail.hpp"
 #include "sweetspot/collision.hpp"
 #include "sweetspot/errors.hpp"
 #include "sweetspot/frame_modes.hpp"
@@ -135,6 +136,7 @@ Evaluation evaluate_collision(const Design& design, double rel_tol, ModeCache& c
   e.cor_derived = true;
   e.impact_duration_s = r.contact_time_s;
   e.impact_duration_derived = true;
+  put_string_bed(design, e);
   e.apparent_cor = r.apparent_cor;
   e.rebound_speed_m_s = r.apparent_cor * design.ball.speed_m_s;
   e.impulse_N_s = r.impulse_N_s;

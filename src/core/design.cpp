@@ -53,6 +53,14 @@ void validate(const Design& d) {
     }
     detail::require_in_range("strings/tension_N", d.strings->tension_N, kMinTension_N,
                              kMaxTension_N, "N");
+    detail::require_in_range("strings/crosses/tension_N", d.strings->cross_tension_N(),
+                             kMinTension_N, kMaxTension_N, "N");
+    detail::require_in_range("strings/mains/linear_density_kg_m",
+                             d.strings->main_linear_density_kg_m, kMinStringLinearDensity_kg_m,
+                             kMaxStringLinearDensity_kg_m, "kg/m");
+    detail::require_in_range("strings/crosses/linear_density_kg_m",
+                             d.strings->cross_linear_density_kg_m, kMinStringLinearDensity_kg_m,
+                             kMaxStringLinearDensity_kg_m, "kg/m");
   }
   if (const std::string why = d.ball_contact.validate(); !why.empty()) {
     throw std::invalid_argument("ball/contact/" + why);

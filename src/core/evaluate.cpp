@@ -57,6 +57,7 @@ Evaluation rigid_part(const Design& design, const Design& resolved, Fidelity fid
   Evaluation e = evaluate_settled(resolved);
   e.fidelity = fidelity;
   e.impact_duration_derived = design.strings.has_value();
+  put_string_bed(design, e);
   return e;
 }
 

@@ -50,6 +50,13 @@ double settled_duration(const Design& design) {
   return duration_s;
 }
 
+void put_string_bed(const Design& design, Evaluation& e) {
+  if (!design.strings) return;
+  e.string_bed_tension_N = design.strings->tension_N;
+  e.string_bed_stiffness_N_m = string_bed_stiffness(*design.strings);
+  e.string_bed_ring_Hz = string_bed_ring_frequency(*design.strings);
+}
+
 namespace {
 
 // The parts of the rigid evaluation that do not depend on the impact point.

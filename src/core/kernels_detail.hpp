@@ -3,6 +3,7 @@
 // What evaluate() and the loop paths (kernels.hpp) share. Private to the core.
 
 #include "sweetspot/design.hpp"
+#include "sweetspot/evaluate.hpp"
 
 namespace sweetspot {
 
@@ -17,5 +18,9 @@ bool all_finite(double mass_kg, double I_cm_kg_m2, double swingweight_kg_m2,
 // depends on M_eff only, Eq. 17, not on the COR). Throws FieldError naming
 // strings/tension_N when the derived duration is out of range.
 double settled_duration(const Design& design);
+
+// The string bed's outputs of `design` (its tension, stiffness and ring) into
+// `e`; nothing without a string bed.
+void put_string_bed(const Design& design, Evaluation& e);
 
 }  // namespace sweetspot

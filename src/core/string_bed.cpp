@@ -20,12 +20,44 @@ void require_valid(const StringBed& bed) {
   if (!why.empty()) throw std::invalid_argument("bed." + why);
 }
 
-// d ln(R / r0) / (2 pi): the string bed's compliance times the tension [m].
+// d ln(R / r0) / (2 pi sqrt(T_c / T_m)): the string bed's compliance times the
+// mains' tension [m]; sqrt(N_m N_c) = T_m sqrt(T_c / T_m) / d.
 double compliance_tension_factor(const StringBed& bed) {
-  return std::log(bed.head_radius_m / bed.contact_radius_m) / (2.0 * kPi) * bed.string_spacing_m;
+  return std::log(bed.head_radius_m / bed.contact_radius_m) /
+         (2.0 * kPi * std::sqrt(bed.cross_tension_ratio)) * bed.string_spacing_m;
+}
+
+// (N_m + N_c) / (sigma A) / T_m: the squared ring frequency over the mains'
+// tension, times 4 [1 / (kg m)].
+double ring_per_tension(const StringBed& bed) {
+  const double d_m = bed.main_spacing_m(), d_c = bed.cross_spacing_m();
+  const double per_tension = 1.0 / d_m + bed.cross_tension_ratio / d_c;  // (N_m + N_c) / T_m
+  const double sigma = bed.main_linear_density_kg_m / d_m + bed.cross_linear_density_kg_m / d_c;
+  const double area = kPi * bed.head_radius_m * bed.head_radius_m;
+  return per_tension / (sigma * area);
 }
 
 }  // namespace
+
+double string_material_density_kg_m3(StringMaterial material) {
+  switch (material) {
+    case StringMaterial::kNaturalGut:
+      return 1300.0;
+    case StringMaterial::kNylon:
+    case StringMaterial::kMultifilament:
+      return 1140.0;
+    case StringMaterial::kPolyester:
+      return 1380.0;
+    case StringMaterial::kKevlar:
+      return 1440.0;
+  }
+  return 1140.0;
+}
+
+double string_linear_density(StringMaterial material, double diameter_m) {
+  detail::require_positive("diameter_m", diameter_m, "m");
+  return string_material_density_kg_m3(material) * kPi * diameter_m * diameter_m / 4.0;
+}
 
 double reduced_mass(double ball_mass_kg, double effective_mass_kg) {
   detail::require_positive("ball_mass_kg", ball_mass_kg, "kg");
@@ -46,7 +78,54 @@ std::string StringBed::validate() const {
                "> contact_radius_m (" + detail::format_number(contact_radius_m) + " m)",
                head_radius_m);
   }
+  if (!(tension_loss >= 0.0 && tension_loss <= kMaxTensionLoss)) {
+    return bad("tension_loss", "in [0, " + detail::format_number(kMaxTensionLoss) + "]",
+               tension_loss);
+  }
+  if (!(std::isfinite(cross_tension_ratio) && cross_tension_ratio > 0.0)) {
+    return bad("cross_tension_ratio", "> 0", cross_tension_ratio);
+  }
+  if (!(std::isfinite(cross_spacing_ratio) && cross_spacing_ratio > 0.0)) {
+    return bad("cross_spacing_ratio", "> 0", cross_spacing_ratio);
+  }
+  if (!(std::isfinite(main_linear_density_kg_m) && main_linear_density_kg_m > 0.0)) {
+    return bad("main_linear_density_kg_m", "> 0 kg/m", main_linear_density_kg_m);
+  }
+  if (!(std::isfinite(cross_linear_density_kg_m) && cross_linear_density_kg_m > 0.0)) {
+    return bad("cross_linear_density_kg_m", "> 0 kg/m", cross_linear_density_kg_m);
+  }
   return {};
+}
+
+double StringBed::main_spacing_m() const {
+  return string_spacing_m / std::sqrt(cross_spacing_ratio);
+}
+double StringBed::cross_spacing_m() const {
+  return string_spacing_m * std::sqrt(cross_spacing_ratio);
+}
+
+double string_bed_ring_frequency(const StringBed& bed) {
+  require_valid(bed);
+  return 0.5 * std::sqrt(bed.tension_N * ring_per_tension(bed));
+}
+
+double string_bed_strings_mass(const StringBed& bed) {
+  require_valid(bed);
+  const double sigma = bed.main_linear_density_kg_m / bed.main_spacing_m() +
+                       bed.cross_linear_density_kg_m / bed.cross_spacing_m();
+  return sigma * kPi * bed.head_radius_m * bed.head_radius_m;
+}
+
+double tension_for_stiffness(const StringBed& bed, double stiffness_N_m) {
+  require_valid(bed);
+  detail::require_positive("stiffness_N_m", stiffness_N_m, "N/m");
+  return stiffness_N_m * compliance_tension_factor(bed);
+}
+
+double tension_for_ring(const StringBed& bed, double frequency_Hz) {
+  require_valid(bed);
+  detail::require_positive("frequency_Hz", frequency_Hz, "Hz");
+  return 4.0 * frequency_Hz * frequency_Hz / ring_per_tension(bed);
 }
 
 double string_bed_stiffness(const StringBed& bed) {

@@ -120,6 +120,10 @@ struct DesignDescription {
   double impact_m = kPaperImpactFromTip_m;  // from the tip or from the butt (not kCentreOfStrings)
   bool impact_given = true;                 // false: the default of default_impact()
   std::optional<double> head_area_m2;       // strings/head_size_*: sets the string bed's radius
+  // The bed came from a stringer's ticket (a pattern, mains and crosses, a
+  // material, a loss, a measurement): its tension and spacing, and the head
+  // its pattern spans, are the reader's to derive, not a binding's to set.
+  bool string_ticket = false;
 };
 
 // The implement the description gives. Throws std::invalid_argument (the

@@ -4,17 +4,21 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <iterator>
 #include <optional>
 #include <stdexcept>
+#include <tuple>
 #include <utility>
 
 #include "io/design_fields.hpp"
+#include "io/format.hpp"
 #include "io/input_error.hpp"
 #include "io/outputs.hpp"
 #include "sweetspot/errors.hpp"
 #include "sweetspot/head_geometry.hpp"
 #include "sweetspot/rigid_impact.hpp"
+#include "sweetspot/string_bed.hpp"
 
 namespace sweetspot::io {
 namespace {
@@ -528,7 +532,10 @@ struct Reading {
   std::map<std::string, std::string>* provenance;
   const Design& defaults;
   Design& design;
-  void note(const char* input, const char* how) const {
+  // The string bed came from a stringer's ticket (a pattern, families, a loss,
+  // a measurement), which the bindings of catalogues and studies leave to this reader.
+  bool string_ticket = false;
+  void note(const std::string& input, const std::string& how) const {
     if (provenance) (*provenance)[input] = how;
   }
 };
@@ -577,8 +584,156 @@ void read_frame(ObjectReader& top, Reading& in) {
   }
 }
 
-// /strings: the impact duration, or the string bed that derives it; the
-// string bed's size when given (its area in SI, returned).
+// A string of the ticket (docs/design-files.md, "A stringer's ticket"): its
+// material by name, its gauge in mm or the trade's number.
+StringMaterial read_material(ObjectReader& r, StringMaterial fallback) {
+  const auto name = r.string("material");
+  if (!name) return fallback;
+  static constexpr std::pair<std::string_view, StringMaterial> kNames[] = {
+      {"natural_gut", StringMaterial::kNaturalGut},
+      {"nylon", StringMaterial::kNylon},
+      {"multifilament", StringMaterial::kMultifilament},
+      {"polyester", StringMaterial::kPolyester},
+      {"kevlar", StringMaterial::kKevlar}};
+  for (const auto& [known, material] : kNames)
+    if (*name == known) return material;
+  r.fail("material", "expected one of natural_gut, nylon, multifilament, polyester, kevlar, got " +
+                         brief(Json(*name)));
+}
+
+// The trade's gauges and the middle of each one's diameter range [m] (the
+// USRSA's gauge chart: 15 is 1.41-1.49 mm, 15L 1.34-1.40, 16 1.26-1.33, 16L
+// 1.22-1.28, 17 1.16-1.24, 18 1.06-1.16, 19 1.00-1.06).
+std::optional<double> read_gauge(ObjectReader& r, std::optional<double> fallback) {
+  static constexpr std::pair<std::string_view, double> kGauges[] = {
+      {"15", 1.45e-3}, {"15L", 1.37e-3}, {"16", 1.295e-3}, {"16L", 1.25e-3},
+      {"17", 1.20e-3}, {"18", 1.11e-3},  {"19", 1.03e-3}};
+  const std::string key = r.one_of({"gauge_mm", "gauge"});
+  if (key.empty()) return fallback;
+  double gauge_m = 0.0;
+  if (key == "gauge_mm") {
+    gauge_m = *r.number("gauge_mm") * 1e-3;
+  } else {
+    const Json* given = r.child("gauge");
+    std::string trade = given->is_number_integer() ? std::to_string(given->get<long long>())
+                        : given->is_string()       ? given->get<std::string>()
+                                                   : std::string();
+    bool found = false;
+    for (const auto& [name, diameter] : kGauges) {
+      if (trade == name) {
+        gauge_m = diameter;
+        found = true;
+      }
+    }
+    if (!found) {
+      r.fail("gauge", "expected a trade gauge (15, 15L, 16, 16L, 17, 18, 19) or gauge_mm, got " +
+                          brief(*given));
+    }
+  }
+  if (!(gauge_m >= kMinGauge_m && gauge_m <= kMaxGauge_m)) {
+    r.fail(key, "must be in [" + brief(Json(kMinGauge_m * 1e3)) + ", " +
+                    brief(Json(kMaxGauge_m * 1e3)) + "] mm, got " + brief(Json(gauge_m * 1e3)) +
+                    " mm");
+  }
+  r.record("gauge_m", key);
+  return gauge_m;
+}
+
+// What a family of strings (mains or crosses, or both at /strings) says.
+struct StringFamilyRead {
+  std::optional<double> pull_tension_N;
+  std::optional<double> spacing_m;
+  StringMaterial material = StringMaterial::kNylon;
+  std::optional<double> gauge_m;
+  std::optional<double> linear_density_kg_m;
+  bool described = false;  // a material, gauge or linear density given here or above
+  std::string pointer;     // of the object that gave it
+};
+
+StringFamilyRead read_family(ObjectReader& r, const StringFamilyRead& inherited, bool is_family) {
+  StringFamilyRead f = inherited;
+  f.pointer = r.pointer();
+  if (is_family) {
+    f.pull_tension_N = r.quantity("tension", Dimension::kForce);
+    f.spacing_m = r.quantity("spacing", Dimension::kLength);
+    if (f.pull_tension_N && inherited.pull_tension_N) {
+      r.fail(r.one_of(spellings("tension", Dimension::kForce)),
+             "contradicts " + inherited.pointer +
+                 "/tension: give one tension for both families there, or one in each of mains "
+                 "and crosses");
+    }
+    if (f.pull_tension_N && !(*f.pull_tension_N > 0.0)) {
+      const std::string key = r.one_of(spellings("tension", Dimension::kForce));
+      r.fail(key, "must be > 0, got " + brief(Json(*r.number(key))));
+    }
+    if (f.spacing_m && !(*f.spacing_m > 0.0)) {
+      const std::string key = r.one_of(spellings("spacing", Dimension::kLength));
+      r.fail(key, "must be > 0, got " + brief(Json(*r.number(key))));
+    }
+    if (!f.pull_tension_N) f.pull_tension_N = inherited.pull_tension_N;
+  }
+  // A string's description is given once: for both families at /strings, or in each.
+  const std::pair<const char*, bool> kStems[] = {
+      {"material", r.has("material")},
+      {"gauge", !r.one_of({"gauge_mm", "gauge"}).empty()},
+      {"linear_density",
+       !r.one_of(spellings("linear_density", Dimension::kLinearDensity)).empty()}};
+  for (const auto& [stem, here] : kStems) {
+    if (is_family && here && inherited.described) {
+      r.fail(stem == std::string_view("material") ? std::string(stem)
+             : stem == std::string_view("gauge")
+                 ? r.one_of({"gauge_mm", "gauge"})
+                 : r.one_of(spellings(stem, Dimension::kLinearDensity)),
+             "contradicts " + inherited.pointer +
+                 ": describe the string once, for both families there or in each of mains and "
+                 "crosses");
+    }
+    if (here) f.described = true;
+  }
+  f.material = read_material(r, inherited.material);
+  f.gauge_m = read_gauge(r, inherited.gauge_m);
+  if (const auto mu = r.quantity("linear_density", Dimension::kLinearDensity)) {
+    if (!(*mu >= kMinStringLinearDensity_kg_m && *mu <= kMaxStringLinearDensity_kg_m)) {
+      r.fail(r.one_of(spellings("linear_density", Dimension::kLinearDensity)),
+             "must be in [" + brief(Json(kMinStringLinearDensity_kg_m * 1e3)) + ", " +
+                 brief(Json(kMaxStringLinearDensity_kg_m * 1e3)) + "] g/m, got " +
+                 brief(Json(*mu * 1e3)) + " g/m");
+    }
+    f.linear_density_kg_m = mu;
+  }
+  return f;
+}
+
+double linear_density_of(const StringFamilyRead& f) {
+  if (f.linear_density_kg_m) return *f.linear_density_kg_m;
+  return string_linear_density(f.material, f.gauge_m.value_or(1.30e-3));
+}
+
+// "16x19" (or "16X19", "16×19"): the mains and the crosses.
+std::pair<int, int> read_pattern(ObjectReader& r) {
+  const std::string text = *r.string("pattern");
+  std::string normal;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text.compare(i, 2, "\u00d7") == 0) {
+      normal += 'x';
+      ++i;
+    } else {
+      normal += text[i] == 'X' ? 'x' : text[i];
+    }
+  }
+  int mains = 0, crosses = 0;
+  char tail = 0;
+  if (std::sscanf(normal.c_str(), "%dx%d%c", &mains, &crosses, &tail) != 2 || mains < 4 ||
+      mains > 40 || crosses < 4 || crosses > 40) {
+    r.fail("pattern",
+           "expected mains x crosses, each 4-40, such as \"16x19\", got " + brief(Json(text)));
+  }
+  return {mains, crosses};
+}
+
+// /strings: the impact duration, or the string bed that derives it (a plain
+// tension, or a stringer's ticket); the string bed's size when given (its
+// area in SI, returned).
 std::optional<double> read_strings(ObjectReader& top, Reading& in, const ImplementRead& implement) {
   std::optional<double> head_area_m2;
   Part strings(top, "strings", in.keys, in.provenance);
@@ -586,35 +741,177 @@ std::optional<double> read_strings(ObjectReader& top, Reading& in, const Impleme
                                             "impact_duration_s", in.defaults.impact_duration_s);
   {
     ObjectReader& r = strings.reader();
-    if (const auto tension = r.quantity("tension", Dimension::kForce)) {
+    StringFamilyRead both = read_family(r, StringFamilyRead{}, false);
+    both.pull_tension_N = r.quantity("tension", Dimension::kForce);
+    if (both.pull_tension_N && !(*both.pull_tension_N > 0.0)) {
+      const std::string key = r.one_of(spellings("tension", Dimension::kForce));
+      r.fail(key, "must be > 0, got " + brief(Json(*r.number(key))));
+    }
+    const Json* mains_json = r.child("mains");
+    const Json* crosses_json = r.child("crosses");
+    if (static_cast<bool>(mains_json) != static_cast<bool>(crosses_json)) {
+      r.fail(mains_json ? "mains" : "crosses",
+             "needs its partner: give both mains and crosses (or neither, for one string)");
+    }
+    StringFamilyRead mains = both, crosses = both;
+    if (mains_json) {
+      ObjectReader m(*mains_json, r.pointer_of("mains"), "strings/mains", in.source, in.keys);
+      m.check_known(design_keys("strings/mains"));
+      mains = read_family(m, both, true);
+      m.finish(design_keys("strings/mains"));
+      ObjectReader c(*crosses_json, r.pointer_of("crosses"), "strings/crosses", in.source, in.keys);
+      c.check_known(design_keys("strings/crosses"));
+      crosses = read_family(c, both, true);
+      c.finish(design_keys("strings/crosses"));
+      if (static_cast<bool>(mains.pull_tension_N) != static_cast<bool>(crosses.pull_tension_N)) {
+        (mains.pull_tension_N ? c : m)
+            .fail("", "missing tension_lb (or tension_kg, tension_N): the other family has one");
+      }
+      if (static_cast<bool>(mains.spacing_m) != static_cast<bool>(crosses.spacing_m)) {
+        (mains.spacing_m ? c : m)
+            .fail("", "missing spacing_mm (or spacing_m): the other family has one");
+      }
+    }
+    const auto measured_ring = r.quantity("measured_ring", Dimension::kFrequency);
+    const auto measured_stiffness = r.quantity("measured_stiffness", Dimension::kSpringRate);
+    if (measured_ring && measured_stiffness) {
+      r.fail(r.one_of(spellings("measured_stiffness", Dimension::kSpringRate)),
+             "contradicts /strings/measured_ring_Hz: calibrate to one measurement");
+    }
+    for (const auto& [value, stem, dimension] :
+         {std::tuple{measured_ring, "measured_ring", Dimension::kFrequency},
+          std::tuple{measured_stiffness, "measured_stiffness", Dimension::kSpringRate}}) {
+      if (value && !(*value > 0.0))
+        r.fail(r.one_of(spellings(stem, dimension)), "must be > 0, got " + brief(Json(*value)));
+    }
+    const double loss = r.number("tension_loss").value_or(0.0);
+    if (!(loss >= 0.0 && loss <= kMaxTensionLoss)) {
+      r.fail("tension_loss", "must be in [0, " + brief(Json(kMaxTensionLoss)) +
+                                 "] (the share of the pull the bed loses), got " +
+                                 brief(Json(loss)));
+    }
+    const bool has_bed = mains.pull_tension_N || measured_ring || measured_stiffness;
+    in.string_ticket = mains_json || measured_ring || measured_stiffness || r.has("pattern") ||
+                       loss != 0.0 || both.described;
+    if (has_bed) {
       if (r.has("impact_duration_s") || r.has("impact_duration_ms")) {
-        r.fail(r.one_of(spellings("tension", Dimension::kForce)),
+        const std::string tension_key = r.one_of(spellings("tension", Dimension::kForce));
+        const std::string measured_key =
+            r.one_of(measured_ring ? spellings("measured_ring", Dimension::kFrequency)
+                                   : spellings("measured_stiffness", Dimension::kSpringRate));
+        r.fail(!tension_key.empty() ? tension_key
+               : mains_json         ? "mains"
+                                    : measured_key,
                "contradicts the impact duration: give the duration, or the tension to derive it");
       }
       StringBed bed;
-      bed.tension_N = *tension;
-      bed.string_spacing_m =
-          r.quantity("string_spacing", Dimension::kLength).value_or(bed.string_spacing_m);
       const std::string head = r.one_of(keys_of("strings", {"head_size"}));
+      // The head: the implement's, strings.head_size, else the default bed's.
+      double area_m2 = in.design.head ? in.design.head->area_m2
+                                      : 3.141592653589793 * bed.head_radius_m * bed.head_radius_m;
+      double aspect = in.design.head ? in.design.head->aspect_ratio : kDefaultHeadAspectRatio;
       if (!head.empty()) {
         const double given = *r.number(head);
-        const double area_m2 = find_spelling("strings", head)->scale.to_si(given);
+        area_m2 = find_spelling("strings", head)->scale.to_si(given);
         if (!(area_m2 > 0)) r.fail(head, "must be > 0, got " + brief(Json(*r.number(head))));
         if (in.design.head && !same_head_area(area_m2, in.design.head->area_m2)) {
           r.fail(head, "contradicts /implement/" + implement.head.key +
                            ": one head, one size: give it once, as implement." +
                            implement.head.key + " (the string bed's size is the head's)");
         }
-        bed.head_radius_m = head_radius_from_area(area_m2);
         head_area_m2 = area_m2;
         r.record("head_radius_m", head);
-      } else if (in.design.head) {
-        bed.head_radius_m = head_radius_from_area(in.design.head->area_m2);  // the head's strings
       }
+      if (in.design.head || !head.empty()) bed.head_radius_m = head_radius_from_area(area_m2);
+      // The spacing: the pattern over the head, each family's, or one for both.
+      const auto spacing = r.quantity("string_spacing", Dimension::kLength);
+      const bool pattern = r.has("pattern");
+      if (pattern + static_cast<bool>(spacing) + static_cast<bool>(mains.spacing_m) > 1) {
+        r.fail(pattern ? "pattern" : r.one_of(spellings("string_spacing", Dimension::kLength)),
+               "gives the spacing twice: give the pattern, string_spacing, or each family's "
+               "spacing");
+      }
+      if (spacing && !(*spacing > 0.0)) {
+        const std::string key = r.one_of(spellings("string_spacing", Dimension::kLength));
+        r.fail(key, "must be > 0, got " + brief(Json(*r.number(key))));
+      }
+      double main_spacing = spacing.value_or(bed.string_spacing_m);
+      double cross_spacing = main_spacing;
+      if (pattern) {
+        // Mains run along the head, spaced across its width; crosses across it.
+        const auto [n_mains, n_crosses] = read_pattern(r);
+        const double width = 2.0 * std::sqrt(area_m2 / (3.141592653589793 * aspect));
+        main_spacing = width / n_mains;
+        cross_spacing = width * aspect / n_crosses;
+        r.record("string_spacing_m", "pattern");
+      } else if (mains.spacing_m) {
+        main_spacing = *mains.spacing_m;
+        cross_spacing = *crosses.spacing_m;
+        if (!(main_spacing > 0.0 && cross_spacing > 0.0)) {
+          r.fail("mains", "spacing must be > 0, got " + brief(Json(main_spacing)) + " and " +
+                              brief(Json(cross_spacing)) + " m");
+        }
+      }
+      bed.string_spacing_m = std::sqrt(main_spacing * cross_spacing);
+      bed.cross_spacing_ratio = cross_spacing / main_spacing;
+      bed.main_linear_density_kg_m = linear_density_of(mains);
+      bed.cross_linear_density_kg_m = linear_density_of(crosses);
       bed.contact_radius_m =
           r.quantity("contact_radius", Dimension::kLength).value_or(bed.contact_radius_m);
+      // The tension in the bed: the pull less its loss, or solved from a measurement.
+      bed.tension_N = mains.pull_tension_N.value_or(StringBed{}.tension_N) * (1.0 - loss);
+      if (mains.pull_tension_N)
+        bed.cross_tension_ratio = *crosses.pull_tension_N / *mains.pull_tension_N;
+      if (!(bed.tension_N > 0.0 && std::isfinite(bed.cross_tension_ratio) &&
+            bed.cross_tension_ratio > 0.0)) {
+        r.fail(mains_json ? "mains" : r.one_of(spellings("tension", Dimension::kForce)),
+               "the tension must be > 0, got " + brief(Json(bed.tension_N)) + " N");
+      }
+      // The mains' tension is the bed's: a complaint about it names the mains' key.
+      if (in.keys && mains_json && in.keys->count("strings/mains/tension_N"))
+        (*in.keys)["strings/tension_N"] = in.keys->at("strings/mains/tension_N");
+      std::string how =
+          loss > 0.0 ? "the pull less its tension_loss of " + significant(loss * 100.0, 4) + " %"
+                     : "the whole pull, tension_loss 0";
+      if (measured_ring || measured_stiffness) {
+        const bool ring = measured_ring.has_value();
+        const double measured = ring ? *measured_ring : *measured_stiffness;
+        const std::string key =
+            r.one_of(ring ? spellings("measured_ring", Dimension::kFrequency)
+                          : spellings("measured_stiffness", Dimension::kSpringRate));
+        std::string predicted;
+        if (mains.pull_tension_N) {
+          const double model = ring ? string_bed_ring_frequency(bed) : string_bed_stiffness(bed);
+          const double off = (model / measured - 1.0) * 100.0;
+          predicted = "; the ticket (" + how + ") predicted " + significant(model, 4) +
+                      (ring ? " Hz" : " N/m") + ", " + significant(std::fabs(off), 3) + " % " +
+                      (off >= 0.0 ? "above" : "below") + " it";
+        }
+        try {
+          bed.tension_N =
+              ring ? tension_for_ring(bed, measured) : tension_for_stiffness(bed, measured);
+        } catch (const std::invalid_argument& e) {
+          r.fail(key, e.what());
+        }
+        r.record("tension_N", key);  // a tension out of range is the measurement's
+        how = "solved from the measured " + std::string(ring ? "ring " : "stiffness ") +
+              significant(measured, 4) + (ring ? " Hz" : " N/m") + predicted;
+      }
+      bed.tension_loss = loss;
       in.design.strings = bed;
       in.note("strings/impact_duration_s", "derived from the string tension");
+      in.note("strings/tension_N", how);
+    } else {
+      for (const char* key : {"pattern", "tension_loss", "material", "gauge", "gauge_mm"}) {
+        if (r.has(key))
+          r.fail(key, "describes a string bed: give its tension (strings.tension_lb)");
+      }
+      if (!both.linear_density_kg_m) {
+        // nothing: no bed
+      } else {
+        r.fail(r.one_of(spellings("linear_density", Dimension::kLinearDensity)),
+               "describes a string bed: give its tension (strings.tension_lb)");
+      }
     }
     // The solved collision's string bed: its moving mass and loss.
     in.design.string_bed_mass_kg =
@@ -919,7 +1216,8 @@ DesignFile read_design_impl(const Json& document, const std::string& source, boo
   if (described) {
     described->emplace(DesignDescription{std::move(implement_described), design,
                                          forearm_mass_kg.has_value(), forearm_mass_kg.value_or(0.0),
-                                         impact.place, impact.m, impact.given, head_area_m2});
+                                         impact.place, impact.m, impact.given, head_area_m2,
+                                         in.string_ticket});
   }
   return DesignFile{source,
                     name,
@@ -1031,8 +1329,26 @@ Json design_to_json(const DesignFile& file) {
   }
   Json& strings = j[si_key("", "strings")] = Json::object();
   if (d.strings) {
-    put(strings, "strings", "tension", d.strings->tension_N);
-    put(strings, "strings", "string_spacing", d.strings->string_spacing_m);
+    const StringBed& bed = *d.strings;
+    if (bed.cross_tension_ratio == 1.0 && bed.cross_spacing_ratio == 1.0 &&
+        bed.cross_linear_density_kg_m == bed.main_linear_density_kg_m) {
+      put(strings, "strings", "tension", bed.tension_N);
+      put(strings, "strings", "string_spacing", bed.string_spacing_m);
+      if (bed.main_linear_density_kg_m != kDefaultStringLinearDensity_kg_m)
+        put(strings, "strings", "linear_density", bed.main_linear_density_kg_m);
+    } else {
+      // A hybrid or a pattern: each family as the bed holds it.
+      for (const auto& [family, tension, spacing, density] :
+           {std::tuple{"mains", bed.tension_N, bed.main_spacing_m(), bed.main_linear_density_kg_m},
+            std::tuple{"crosses", bed.cross_tension_N(), bed.cross_spacing_m(),
+                       bed.cross_linear_density_kg_m}}) {
+        const std::string object = std::string("strings/") + family;
+        Json& f = strings[family] = Json::object();
+        put(f, object, "tension", tension);
+        put(f, object, "spacing", spacing);
+        put(f, object, "linear_density", density);
+      }
+    }
     put(strings, "strings", "head_size",
         3.141592653589793 * d.strings->head_radius_m * d.strings->head_radius_m * 1e4);
     put(strings, "strings", "contact_radius", d.strings->contact_radius_m);

@@ -400,6 +400,10 @@ std::string_view unit_of_key(std::string_view key) {
       {"_kg_m2", "kg·m²"},
       {"_N_s_m2", "N·s/m²"},
       {"_N_m2", "N/m²"},
+      {"_N_m", "N/m"},
+      {"_lb_in", "lb/in"},
+      {"_g_m", "g/m"},
+      {"_kg_m", "kg/m"},
       {"_N_s", "N·s"},
       {"_in2", "sq in"},
       {"_sq_in", "sq in"},
@@ -480,8 +484,22 @@ std::string inputs_markdown(const DesignFile& file, const Evaluation& e) {
       people_text(std::fabs(points_head_light)),
       points_head_light >= 0 ? "head-light" : "head-heavy", people_text(e.swingweight_kg_m2 * 1e4));
   if (d.strings) {
-    md += fmt::format("String tension {} N ({} lb).\n", people_text(d.strings->tension_N),
-                      people_text(d.strings->tension_N / kPoundForce_N));
+    const StringBed& bed = *d.strings;
+    const std::string pull =
+        bed.cross_tension_ratio == 1.0
+            ? people_text(bed.pull_tension_N() / kPoundForce_N) + " lb"
+            : people_text(bed.pull_tension_N() / kPoundForce_N) + " lb mains, " +
+                  people_text(bed.pull_tension_N() * bed.cross_tension_ratio / kPoundForce_N) +
+                  " lb crosses";
+    if (bed.tension_loss > 0.0) {
+      md += fmt::format(
+          "String tension {} on the machine; the bed holds {} % less ({} N in each "
+          "main).\n",
+          pull, people_text(bed.tension_loss * 100.0), people_text(bed.tension_N));
+    } else {
+      md +=
+          fmt::format("String tension {} ({} N in each main).\n", pull, people_text(bed.tension_N));
+    }
   }
   return md;
 }

@@ -291,10 +291,13 @@ const std::vector<Unit>& units(Dimension dimension) {
   static const std::vector<Unit> time{{"_s", 1.0}, {"_ms", 0.001, -3}};
   static const std::vector<Unit> speed{{"_m_s", 1.0}, {"_km_h", 1.0 / 3.6}, {"_mph", 0.44704}};
   static const std::vector<Unit> inertia{{"_kg_m2", 1.0}, {"_kg_cm2", 1e-4, -4}};
-  static const std::vector<Unit> force{{"_N", 1.0}, {"_lb", kPoundForce_N}, {"_kg", 9.80665}};
+  static const std::vector<Unit> force{
+      {"_N", 1.0}, {"_lb", kPoundForce_N}, {"_kg", kKilogramForce_N}};
   static const std::vector<Unit> stiffness{{"_N_m2", 1.0}};
   static const std::vector<Unit> damping{{"_N_s_m2", 1.0}};
   static const std::vector<Unit> frequency{{"_Hz", 1.0}};
+  static const std::vector<Unit> linear_density{{"_kg_m", 1.0}, {"_g_m", 0.001, -3}};
+  static const std::vector<Unit> spring_rate{{"_N_m", 1.0}, {"_lb_in", kPoundForce_N / kInch_m}};
   switch (dimension) {
     case Dimension::kLength:
       return length;
@@ -314,6 +317,10 @@ const std::vector<Unit>& units(Dimension dimension) {
       return damping;
     case Dimension::kFrequency:
       return frequency;
+    case Dimension::kLinearDensity:
+      return linear_density;
+    case Dimension::kSpringRate:
+      return spring_rate;
   }
   return length;
 }
@@ -388,19 +395,15 @@ std::vector<std::string> alternative_spellings(std::string_view key) {
       {"cor", "cor_rigid"},              // the frame's COR, or the one it is derived from
       {"impact_duration", "tension"},    // the strings' duration, or the tension it is derived from
   };
-  constexpr Dimension kDimensions[] = {
-      Dimension::kLength,    Dimension::kMass,    Dimension::kTime,
-      Dimension::kSpeed,     Dimension::kInertia, Dimension::kForce,
-      Dimension::kStiffness, Dimension::kDamping, Dimension::kFrequency};
   std::vector<std::string> out;
   const auto add_all_units = [&](std::string_view base) {
-    for (const Dimension d : kDimensions) {
+    for (const Dimension d : kAllDimensions) {
       for (const std::string& k : spellings(base, d)) {
         if (k != key && std::find(out.begin(), out.end(), k) == out.end()) out.push_back(k);
       }
     }
   };
-  for (const Dimension d : kDimensions) {
+  for (const Dimension d : kAllDimensions) {
     for (const Unit& unit : units(d)) {
       if (key.size() <= unit.suffix.size() || !key.ends_with(unit.suffix)) continue;
       const std::string base(key.substr(0, key.size() - unit.suffix.size()));
@@ -489,15 +492,12 @@ constexpr std::string_view kOtherSuffixes[] = {"_sq_in", "_in2", "_cm2", "_pts_h
 
 // `key` without its unit suffix (the longest that leaves a stem), "" when it has none.
 std::string_view stem_of(std::string_view key) {
-  constexpr Dimension kAll[] = {Dimension::kLength,    Dimension::kMass,    Dimension::kTime,
-                                Dimension::kSpeed,     Dimension::kInertia, Dimension::kForce,
-                                Dimension::kStiffness, Dimension::kDamping, Dimension::kFrequency};
   std::size_t longest = 0;
   const auto consider = [&](std::string_view suffix) {
     if (key.size() > suffix.size() && key.ends_with(suffix) && suffix.size() > longest)
       longest = suffix.size();
   };
-  for (const Dimension d : kAll) {
+  for (const Dimension d : kAllDimensions) {
     for (const Unit& unit : units(d)) consider(unit.suffix);
   }
   for (const std::string_view suffix : kOtherSuffixes) consider(suffix);

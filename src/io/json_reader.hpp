@@ -23,6 +23,7 @@ using Json = nlohmann::json;
 inline constexpr double kInch_m = 0.0254;
 inline constexpr double kSquareInch_m2 = kInch_m * kInch_m;
 inline constexpr double kPoundForce_N = 4.4482216152605;
+inline constexpr double kKilogramForce_N = 9.80665;  // standard gravity times 1 kg
 
 inline constexpr int kMaxJsonDepth = 64;
 
@@ -69,8 +70,16 @@ enum class Dimension {
   kForce,
   kStiffness,
   kDamping,
-  kFrequency
+  kFrequency,
+  kLinearDensity,  // a string's mass per length
+  kSpringRate      // a force per displacement (a string bed's stiffness)
 };
+
+// Every Dimension, for the loops that try each.
+inline constexpr Dimension kAllDimensions[] = {
+    Dimension::kLength,    Dimension::kMass,          Dimension::kTime,      Dimension::kSpeed,
+    Dimension::kInertia,   Dimension::kForce,         Dimension::kStiffness, Dimension::kDamping,
+    Dimension::kFrequency, Dimension::kLinearDensity, Dimension::kSpringRate};
 
 // Every key that spells `base` in a unit of `dimension` ("mass" -> mass_kg, mass_g).
 std::vector<std::string> spellings(std::string_view base, Dimension dimension);

@@ -3,6 +3,7 @@
 #include <array>
 
 #include "io/format.hpp"
+#include "io/json_reader.hpp"
 
 namespace sweetspot::io {
 namespace {
@@ -28,6 +29,11 @@ constexpr std::string_view kNeedsResponse =
 constexpr std::string_view kNeedsCollision =
     "needs the solved collision: give the string tension and the frame's stiffness and evaluate "
     "with --fidelity collision (or auto without frame cor)";
+
+constexpr std::string_view kNeedsStrings =
+    "needs a string bed: give strings.tension (or a stringer's ticket: pattern, mains, crosses)";
+// lbf per inch in N/m.
+constexpr double kLbInPerNM = 0.0254 / kPoundForce_N;
 
 std::optional<double> from_tip(const Evaluation& e, const std::optional<double>& from_butt) {
   if (!from_butt) return std::nullopt;
@@ -86,6 +92,24 @@ const std::array kOutputs{
     OutputSpec{
         "impact_duration_s", "s", "impact duration T used (given, or derived from the tension)",
         [](const Evaluation& e) -> std::optional<double> { return e.impact_duration_s; }, ""},
+    // The string bed (string_bed.hpp), when the design gives one.
+    OutputSpec{"string_bed_tension_N", "N",
+               "tension of each main in the bed (the pull less strings.tension_loss; the crosses "
+               "in proportion)",
+               [](const Evaluation& e) { return e.string_bed_tension_N; }, kNeedsStrings},
+    OutputSpec{"string_bed_stiffness_N_m", "N/m",
+               "string bed's stiffness at its centre, 2 pi sqrt(N_m N_c) / ln(R / r0) (the "
+               "membrane; not an RDC or ERT reading)",
+               [](const Evaluation& e) { return e.string_bed_stiffness_N_m; }, kNeedsStrings},
+    OutputSpec{"string_bed_stiffness_lb_in", "lb/in", "the same in lb/in",
+               [](const Evaluation& e) -> std::optional<double> {
+                 if (!e.string_bed_stiffness_N_m) return std::nullopt;
+                 return *e.string_bed_stiffness_N_m * kLbInPerNM;
+               },
+               kNeedsStrings},
+    OutputSpec{"string_bed_ring_Hz", "Hz",
+               "string bed's ring (its membrane's fundamental, what tap-tone apps hear)",
+               [](const Evaluation& e) { return e.string_bed_ring_Hz; }, kNeedsStrings},
     OutputSpec{"effective_mass_kg", "kg", "effective mass at the impact point, M_eff (Eq. 17)",
                [](const Evaluation& e) -> std::optional<double> { return e.effective_mass_kg; },
                ""},

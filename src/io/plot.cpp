@@ -367,14 +367,14 @@ struct UnitSuffix {
 // Longest first where one suffix ends another ("_rad_s" before "_s", "_N_m"
 // before "_m").
 constexpr UnitSuffix kUnitSuffixes[] = {
-    {"_rad_s", "rad/s", 1.0}, {"_N_m", "N·m", 1.0},   {"_kg_cm2", "kg·cm²", 1.0},
-    {"_kg_m2", "kg·m²", 1.0}, {"_N_m2", "N·m²", 1.0}, {"_N_s", "N·s", 1.0},
-    {"_m_s", "m/s", 1.0},     {"_cm", "cm", 1.0},     {"_mm", "mm", 1.0},
-    {"_in", "in", 1.0},       {"_kg", "kg", 1.0},     {"_oz", "oz", 1.0},
-    {"_lb", "lb", 1.0},       {"_Hz", "Hz", 1.0},     {"_ms", "ms", 1.0},
-    {"_g", "g", 1.0},         {"_m", "cm", 100.0},    {"_N", "N", 1.0},
-    {"_J", "J", 1.0},         {"_s", "ms", 1000.0},   {"_km_h", "km/h", 1.0},
-    {"_mph", "mph", 1.0},     {"_s2", "1/s²", 1.0},
+    {"_rad_s", "rad/s", 1.0},   {"_lb_in", "lb/in", 1.0}, {"_N_m", "N·m", 1.0},
+    {"_kg_cm2", "kg·cm²", 1.0}, {"_kg_m2", "kg·m²", 1.0}, {"_N_m2", "N·m²", 1.0},
+    {"_N_s", "N·s", 1.0},       {"_m_s", "m/s", 1.0},     {"_cm", "cm", 1.0},
+    {"_mm", "mm", 1.0},         {"_in", "in", 1.0},       {"_kg", "kg", 1.0},
+    {"_oz", "oz", 1.0},         {"_lb", "lb", 1.0},       {"_Hz", "Hz", 1.0},
+    {"_ms", "ms", 1.0},         {"_g", "g", 1.0},         {"_m", "cm", 100.0},
+    {"_N", "N", 1.0},           {"_J", "J", 1.0},         {"_s", "ms", 1000.0},
+    {"_km_h", "km/h", 1.0},     {"_mph", "mph", 1.0},     {"_s2", "1/s²", 1.0},
 };
 
 bool ends_with(std::string_view text, std::string_view end) {

@@ -37,7 +37,7 @@ bool ratio_or_specs(const D& d, std::size_t) {
   return d.implement.form == Form::kHeadToHandleRatio || d.implement.form == Form::kSpecs;
 }
 bool specs(const D& d, std::size_t) { return d.implement.form == Form::kSpecs; }
-bool has_head(const D& d, std::size_t) { return d.implement.head.has_value(); }
+bool has_head(const D& d, std::size_t) { return d.implement.head.has_value() && !d.string_ticket; }
 bool has_section(const D& d, std::size_t k) {
   return d.implement.form == Form::kSections && k < d.implement.sections.size();
 }
@@ -48,7 +48,9 @@ bool has_station(const D& d, std::size_t k) {
 const io::PointMassDescription* entry(const D& d, std::size_t k) {
   return k < d.implement.point_masses.size() ? &d.implement.point_masses[k] : nullptr;
 }
-bool has_strings(const D& d, std::size_t) { return d.design.strings.has_value(); }
+bool has_strings(const D& d, std::size_t) {
+  return d.design.strings.has_value() && !d.string_ticket;
+}
 bool has_cross_section(const D& d, std::size_t) {
   return d.design.stiffness.shear_modulus_Pa.has_value();
 }
@@ -165,7 +167,7 @@ const std::vector<FieldSetter>& field_setters() {
       {"strings", "contact_radius", "", has_strings,
        [](D& x, std::size_t, double v) { x.design.strings->contact_radius_m = v; }},
       {"strings", "head_size", "",
-       [](const D& d, std::size_t) { return d.design.strings && d.head_area_m2; },
+       [](const D& d, std::size_t) { return has_strings(d, 0) && d.head_area_m2; },
        [](D& x, std::size_t, double v) { x.head_area_m2 = v; }},
       {"hand", "mass", "", always, [](D& x, std::size_t, double v) { x.design.hand.mass_kg = v; }},
       {"hand", "center_from_butt", "", always,

@@ -81,10 +81,7 @@ bool respell_in_unit(io::Json& design, const io::Json::json_pointer& pointer) {
   io::Json& parent = design.at(pointer.parent_pointer());
   if (!parent.is_object()) return false;
   const std::string key = pointer.back();
-  for (const io::Dimension dimension :
-       {io::Dimension::kLength, io::Dimension::kMass, io::Dimension::kTime, io::Dimension::kSpeed,
-        io::Dimension::kInertia, io::Dimension::kForce, io::Dimension::kStiffness,
-        io::Dimension::kDamping, io::Dimension::kFrequency}) {
+  for (const io::Dimension dimension : io::kAllDimensions) {
     for (const std::string& spelling : io::spellings("", dimension)) {
       if (key.size() <= spelling.size() || !key.ends_with(spelling)) continue;
       const std::string base = key.substr(0, key.size() - spelling.size());

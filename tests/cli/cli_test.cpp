@@ -1569,3 +1569,78 @@ TEST_CASE("tune --like reaches another racquet's specs: its own copy with 10 g a
   CHECK(j["added_g"].get<double>() == Approx(10.0).margin(1e-3));
   CHECK(j["targets"]["mass_g"].get<double>() == Approx(328.0));
 }
+
+namespace {
+
+std::string full_precision(double value) {
+  std::ostringstream text;
+  text.precision(17);
+  text << value;
+  return text.str();
+}
+
+constexpr const char* kTicket = R"({
+  "name": "Tour 100 hybrid",
+  "implement": { "length_in": 27, "mass_g": 305, "balance_cm": 32.5, "swingweight_kg_cm2": 320,
+                 "headsize_sq_in": 100 },
+  "strings": { "pattern": "16x19",
+    "mains": { "material": "polyester", "gauge_mm": 1.25, "tension_lb": 52 },
+    "crosses": { "material": "multifilament", "gauge": "16", "tension_lb": 54 } }
+})";
+
+TEST_CASE(
+    "string --like --format json gives the tension on the new frame, in lb and kg, that "
+    "evaluate confirms") {
+  const Sandbox box;
+  const fs::path old_frame = box.file("old.json", kTicket);
+  std::string dense = kTicket;
+  dense.replace(dense.find("16x19"), 5, "18x20");
+  dense.replace(dense.find("\"headsize_sq_in\": 100"), 21, "\"headsize_sq_in\": 97");
+  const fs::path new_frame = box.file("new.json", dense);
+  const Run run = box.run("string \"" + new_frame.string() + "\" --like \"" + old_frame.string() +
+                          "\" --format json");
+  REQUIRE(run.status == 0);
+  const nlohmann::json j = nlohmann::json::parse(run.out);
+  const double lb = j["tension_lb"].get<double>();
+  CHECK(j["tension_kg"].get<double>() == Approx(lb * 4.4482216152605 / 9.80665).margin(0.05));
+  CHECK(std::fmod(lb * 2.0, 1.0) == 0.0);  // the machine's half pound
+  // The denser pattern on the smaller head is stiffer: less tension keeps the bed.
+  CHECK(lb < 52.0);
+  // evaluate at the exact tension: the new bed's stiffness is the old one's.
+  const Run old_eval = box.run("evaluate \"" + old_frame.string() + "\" --format json");
+  const double exact = j["exact_tension_lb"].get<double>();
+  const double crosses = exact * 54.0 / 52.0;
+  const Run new_eval =
+      box.run("evaluate \"" + new_frame.string() +
+              "\" --set strings.mains.tension_lb=" + full_precision(exact) +
+              " --set strings.crosses.tension_lb=" + full_precision(crosses) + " --format json");
+  REQUIRE(old_eval.status == 0);
+  REQUIRE(new_eval.status == 0);
+  const auto stiffness = [](const Run& r) {
+    return nlohmann::json::parse(r.out)["outputs"]["string_bed_stiffness_N_m"].get<double>();
+  };
+  CHECK(stiffness(new_eval) == Approx(stiffness(old_eval)).epsilon(1e-9));
+}
+
+TEST_CASE(
+    "string refuses a design without strings (exit 2) and says when no tension reaches "
+    "the target (exit 3)") {
+  const Sandbox box;
+  const fs::path bare = box.file("bare.json", kClubRacquet);
+  std::string no_strings = kClubRacquet;
+  no_strings.erase(no_strings.find(",\n  \"strings\""));
+  no_strings += "\n}";
+  const fs::path none = box.file("none.json", no_strings);
+  const Run refused = box.run("string \"" + none.string() + "\"");
+  CHECK(refused.status == 2);
+  CHECK(one_line(refused));
+  CHECK(refused.err.find("/strings") != std::string::npos);
+  const Run far = box.run("string \"" + bare.string() + "\" --target dwell_ms=0.1");
+  CHECK(far.status == 3);
+  CHECK(far.out.find("No tension") != std::string::npos);
+  const Run bad = box.run("string \"" + bare.string() + "\" --target weight=3");
+  CHECK(bad.status == 2);
+  CHECK(one_line(bad));
+}
+
+}  // namespace

@@ -138,6 +138,113 @@ TEST_CASE("Table I's 4 ms falls at about 156 N and 6 ms at about 45 N, 5 cm from
   CHECK(*tension_for_duration(bed, 0.006, kBallMass, M) == Approx(45.3).margin(0.5));
 }
 
+// The deflection of a square membrane (side a, tension per length N, rim
+// fixed) under a point force F at its centre, averaged over the circle of
+// radius r0 about it, from the double sine series of the membrane equation:
+//   w(x, y) = 4 F / (N a^2) sum_{m,n odd} s_m s_n sin(m pi x/a) sin(n pi y/a)
+//             / ((m pi/a)^2 + (n pi/a)^2),  s_m = sin(m pi / 2).
+double square_membrane_mean_deflection(double a, double N, double F, double r0, int terms) {
+  constexpr int kAngles = 16;  // the circle's mean of a smooth periodic function
+  double sum = 0.0;
+  for (int k = 0; k < kAngles; ++k) {
+    const double phi = 2.0 * kPi * (k + 0.5) / kAngles;
+    const double x = a / 2 + r0 * std::cos(phi), y = a / 2 + r0 * std::sin(phi);
+    double w = 0.0;
+    for (int m = 1; m <= terms; m += 2) {
+      const double sm = ((m / 2) % 2 == 0 ? 1.0 : -1.0) * std::sin(m * kPi * x / a);
+      for (int n = 1; n <= terms; n += 2) {
+        const double sn = ((n / 2) % 2 == 0 ? 1.0 : -1.0) * std::sin(n * kPi * y / a);
+        w += sm * sn / ((m * m + n * n) * kPi * kPi / (a * a));
+      }
+    }
+    sum += 4.0 * F / (N * a * a) * w;
+  }
+  return sum / kAngles;
+}
+
+TEST_CASE(
+    "A square membrane's stiffness lies between the model's equal-area circle and the inscribed "
+    "circle's, as the Fourier series gives it") {
+  // The membrane's deflection at r0 is F ln(r_c / r0) / (2 pi N), r_c the
+  // square's conformal radius at its centre, which lies between its inradius
+  // a/2 and its equal-area radius a/sqrt(pi) (the area theorem): the model's
+  // equal-area formula is the lower bound of the exact stiffness.
+  const double a = 0.254, r0 = 0.03, T = 250.0, d = 0.0165, N = T / d;
+  StringBed bed;
+  bed.tension_N = T;
+  bed.string_spacing_m = d;
+  bed.head_radius_m = a / std::sqrt(kPi);
+  bed.contact_radius_m = r0;
+  const double exact = 1.0 / square_membrane_mean_deflection(a, N, 1.0, r0, 801);
+  const double model = string_bed_stiffness(bed);
+  CHECK(exact >= model);
+  CHECK(exact <= 2.0 * kPi * N / std::log(a / 2.0 / r0));
+  // The conformal radius the series implies, over the side.
+  const double r_c = r0 * std::exp(2.0 * kPi * N / exact);
+  CHECK(r_c / a > 0.5);
+  CHECK(r_c / a < 1.0 / std::sqrt(kPi));
+}
+
+TEST_CASE("A square membrane rings at sqrt(T / mu) / (2 a), and a hybrid at its separated mode") {
+  // The (1,1) mode of N_m w_xx + N_c w_yy = sigma w_tt on a square of side a:
+  // (2 pi f)^2 sigma = (N_m + N_c) (pi / a)^2. Equal families: Cross's
+  // f = sqrt(T / (4 m L)), m = mu L, L = a.
+  const double a = 0.254;
+  StringBed bed;
+  bed.head_radius_m = a / std::sqrt(kPi);
+  CHECK(string_bed_ring_frequency(bed) ==
+        Approx(std::sqrt(bed.tension_N / bed.main_linear_density_kg_m) / (2.0 * a))
+            .epsilon(kRoundOff));
+  bed.cross_tension_ratio = 1.1;
+  bed.cross_spacing_ratio = 1.2;
+  bed.cross_linear_density_kg_m = 1.8e-3;
+  const double d_m = bed.string_spacing_m / std::sqrt(1.2),
+               d_c = bed.string_spacing_m * std::sqrt(1.2);
+  const double N_m = bed.tension_N / d_m, N_c = 1.1 * bed.tension_N / d_c;
+  const double sigma = bed.main_linear_density_kg_m / d_m + 1.8e-3 / d_c;
+  CHECK(string_bed_ring_frequency(bed) ==
+        Approx(std::sqrt((N_m + N_c) * kPi * kPi / (a * a) / sigma) / (2.0 * kPi))
+            .epsilon(kRoundOff));
+  // And the stiffness is the one of tension sqrt(N_m N_c) (the scaled Laplace equation).
+  StringBed plain = bed;
+  plain.cross_tension_ratio = 1.0;
+  plain.tension_N = std::sqrt(N_m * N_c) * bed.string_spacing_m;
+  CHECK(string_bed_stiffness(bed) == Approx(string_bed_stiffness(plain)).epsilon(kRoundOff));
+}
+
+TEST_CASE("A hybrid with equal mains and crosses is the plain bed, to the bit") {
+  StringBed plain;
+  StringBed hybrid;
+  hybrid.cross_tension_ratio = 1.0;
+  hybrid.cross_spacing_ratio = 1.0;
+  hybrid.cross_linear_density_kg_m = hybrid.main_linear_density_kg_m;
+  CHECK(string_bed_stiffness(hybrid) == string_bed_stiffness(plain));
+  CHECK(string_bed_ring_frequency(hybrid) == string_bed_ring_frequency(plain));
+  CHECK(string_bed_strings_mass(hybrid) == string_bed_strings_mass(plain));
+}
+
+TEST_CASE("The tension for a stiffness or a ring, put back, gives it to round-off") {
+  StringBed bed;
+  bed.cross_tension_ratio = 54.0 / 52.0;
+  bed.cross_spacing_ratio = 1.3;
+  bed.cross_linear_density_kg_m = 1.6e-3;
+  for (const double T : {60.0, 231.3, 900.0}) {
+    StringBed at = bed;
+    at.tension_N = T;
+    CHECK(tension_for_stiffness(bed, string_bed_stiffness(at)) == Approx(T).epsilon(kRoundOff));
+    CHECK(tension_for_ring(bed, string_bed_ring_frequency(at)) == Approx(T).epsilon(kRoundOff));
+  }
+}
+
+TEST_CASE("A 1.30 mm nylon string weighs 1.51 g/m; a string's mass grows as its gauge squared") {
+  CHECK(string_linear_density(StringMaterial::kNylon, 1.30e-3) ==
+        Approx(kDefaultStringLinearDensity_kg_m).epsilon(kRoundOff));
+  CHECK(kDefaultStringLinearDensity_kg_m == Approx(1.5132e-3).epsilon(1e-4));
+  CHECK(string_linear_density(StringMaterial::kPolyester, 1.25e-3) /
+            string_linear_density(StringMaterial::kPolyester, 1.30e-3) ==
+        Approx(1.25 * 1.25 / (1.30 * 1.30)).epsilon(kRoundOff));
+}
+
 TEST_CASE("Bad string beds and masses are refused with the field's name") {
   StringBed bed;
   bed.tension_N = -1.0;
@@ -150,6 +257,17 @@ TEST_CASE("Bad string beds and masses are refused with the field's name") {
   CHECK_THROWS_WITH(tension_for_duration(StringBed{}, 0.0, 0.057, 0.07),
                     Catch::Contains("duration_s"));
   CHECK_THROWS_WITH(series_stiffness(4e4, 0.0), Catch::Contains("string_bed_stiffness_N_m"));
+  bed = StringBed{};
+  bed.cross_tension_ratio = 0.0;
+  CHECK_THROWS_WITH(string_bed_ring_frequency(bed), Catch::Contains("bed.cross_tension_ratio"));
+  bed = StringBed{};
+  bed.main_linear_density_kg_m = std::nan("");
+  CHECK_THROWS_WITH(string_bed_ring_frequency(bed),
+                    Catch::Contains("bed.main_linear_density_kg_m"));
+  bed = StringBed{};
+  bed.tension_loss = 0.9;
+  CHECK_THROWS_WITH(string_bed_stiffness(bed), Catch::Contains("bed.tension_loss"));
+  CHECK_THROWS_WITH(tension_for_ring(StringBed{}, -1.0), Catch::Contains("frequency_Hz"));
 }
 
 }  // namespace

@@ -362,7 +362,7 @@ TEST_CASE("Every output's axis shows its own unit, in people's units, and the fa
       {"N", {"N", 1.0}},         {"N s", {"N·s", 1.0}},       {"N m", {"N·m", 1.0}},
       {"J", {"J", 1.0}},         {"Hz", {"Hz", 1.0}},         {"m/s", {"m/s", 1.0}},
       {"rad/s", {"rad/s", 1.0}}, {"km/h", {"km/h", 1.0}},     {"mph", {"mph", 1.0}},
-      {"1/s^2", {"1/s²", 1.0}}};
+      {"1/s^2", {"1/s²", 1.0}},  {"N/m", {"N/m", 1.0}},       {"lb/in", {"lb/in", 1.0}}};
   for (const OutputSpec& o : output_specs()) {
     INFO(o.name << " in " << o.unit);
     const auto shown = kShown.find(o.unit);
