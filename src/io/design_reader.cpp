@@ -608,10 +608,12 @@ std::optional<double> read_gauge(ObjectReader& r, std::optional<double> fallback
   static constexpr std::pair<std::string_view, double> kGauges[] = {
       {"15", 1.45e-3}, {"15L", 1.37e-3}, {"16", 1.295e-3}, {"16L", 1.25e-3},
       {"17", 1.20e-3}, {"18", 1.11e-3},  {"19", 1.03e-3}};
-  const std::string key = r.one_of({"gauge_mm", "gauge"});
+  const std::string key = r.one_of({"gauge_m", "gauge_mm", "gauge"});
   if (key.empty()) return fallback;
   double gauge_m = 0.0;
-  if (key == "gauge_mm") {
+  if (key == "gauge_m") {
+    gauge_m = *r.number("gauge_m");
+  } else if (key == "gauge_mm") {
     gauge_m = *r.number("gauge_mm") * 1e-3;
   } else {
     const Json* given = r.child("gauge");

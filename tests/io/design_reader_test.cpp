@@ -588,8 +588,10 @@ TEST_CASE("Each field's default in the table is the reader's and the schema's") 
     const std::string name = std::string(field.object) + "/" + std::string(field.si_key);
     const Json* properties = schema_properties(schema, std::string(field.object));
     REQUIRE(properties);
-    const Json& property = (*properties)[std::string(field.si_key)];
     INFO(name);
+    const auto found = properties->find(std::string(field.si_key));
+    REQUIRE(found != properties->end());
+    const Json& property = *found;
     CHECK((property.contains("default") && property["default"].is_number()) ==
           field.default_si.has_value());
     if (!field.default_si) continue;
