@@ -3,8 +3,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
-#include <cstdio>
 #include <iterator>
 #include <optional>
 #include <stdexcept>
@@ -711,7 +711,7 @@ double linear_density_of(const StringFamilyRead& f) {
   return string_linear_density(f.material, f.gauge_m.value_or(1.30e-3));
 }
 
-// "16x19" (or "16X19", "16×19"): the mains and the crosses.
+// "16x19" (or "16X19", "16×19", "16 x 19"): the mains and the crosses.
 std::pair<int, int> read_pattern(ObjectReader& r) {
   const std::string text = *r.string("pattern");
   std::string normal;
@@ -719,14 +719,20 @@ std::pair<int, int> read_pattern(ObjectReader& r) {
     if (text.compare(i, 2, "\u00d7") == 0) {
       normal += 'x';
       ++i;
-    } else {
+    } else if (text[i] != ' ') {
       normal += text[i] == 'X' ? 'x' : text[i];
     }
   }
+  // Digits only (no sign, no overflow): std::from_chars, then 'x', then the end.
   int mains = 0, crosses = 0;
-  char tail = 0;
-  if (std::sscanf(normal.c_str(), "%dx%d%c", &mains, &crosses, &tail) != 2 || mains < 4 ||
-      mains > 40 || crosses < 4 || crosses > 40) {
+  const char* const end = normal.data() + normal.size();
+  const auto [after_mains, mains_error] = std::from_chars(normal.data(), end, mains);
+  bool read = mains_error == std::errc() && after_mains != end && *after_mains == 'x';
+  if (read) {
+    const auto [after_crosses, crosses_error] = std::from_chars(after_mains + 1, end, crosses);
+    read = crosses_error == std::errc() && after_crosses == end;
+  }
+  if (!read || mains < 4 || mains > 40 || crosses < 4 || crosses > 40) {
     r.fail("pattern",
            "expected mains x crosses, each 4-40, such as \"16x19\", got " + brief(Json(text)));
   }

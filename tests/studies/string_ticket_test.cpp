@@ -10,6 +10,7 @@
 #include <string>
 
 #include "io/design_reader.hpp"
+#include "io/input_error.hpp"
 #include "io/outputs.hpp"
 #include "sweetspot/evaluate.hpp"
 #include "sweetspot/string_bed.hpp"
@@ -41,6 +42,24 @@ TEST_CASE("A ticket with equal mains and crosses evaluates as the plain bed, to 
   for (const io::OutputSpec& spec : io::output_specs()) {
     INFO(spec.name);
     CHECK(spec.value(a) == spec.value(b));
+  }
+}
+
+TEST_CASE("A pattern is read as a stringer writes it: x, X or the sign, spaces around it") {
+  const io::DesignFile f = read(R"({"tension_lb": 52, "pattern": "16x19"})");
+  for (const char* spelling : {"16X19", "16 x 19", "16\u00d719", " 16 \u00d7 19 "}) {
+    INFO(spelling);
+    const io::DesignFile g =
+        read(std::string(R"({"tension_lb": 52, "pattern": ")") + spelling + "\"}");
+    CHECK(bed(g).main_spacing_m() == bed(f).main_spacing_m());
+    CHECK(bed(g).cross_spacing_m() == bed(f).cross_spacing_m());
+  }
+  // Digits only: no sign, and a count too large for an int is refused, not wrapped.
+  for (const char* refused : {"+16x19", "-16x19", "16x", "x19", "16x19x2", "16.0x19",
+                              "99999999999999999999x19", "16x4294967315"}) {
+    INFO(refused);
+    CHECK_THROWS_AS(read(std::string(R"({"tension_lb": 52, "pattern": ")") + refused + "\"}"),
+                    io::InputError);
   }
 }
 
