@@ -70,6 +70,36 @@ struct TimoshenkoSection {
 TimoshenkoSection rectangular_timoshenko_section(double shear_modulus_Pa, double width_m,
                                                  double thickness_m);
 
+// The cross-section a Timoshenko beam is made of: a solid rectangle of
+// `width_m` bending across its `thickness_m`, a solid circle of `diameter_m`,
+// or a tube of that outer diameter and `wall_m` (0 < wall <= diameter / 2; a
+// wall of half the diameter is the solid circle), of Poisson's ratio
+// `poisson_ratio` in [0, 0.5].
+struct CrossSection {
+  enum class Shape { kRectangle, kCircle, kHollowCircle };
+  Shape shape = Shape::kRectangle;
+  double width_m = 0.0;      // rectangle
+  double thickness_m = 0.0;  // rectangle, in the direction of bending
+  double diameter_m = 0.0;   // circle and tube: the outer diameter
+  double wall_m = 0.0;       // tube
+  double poisson_ratio = 0.0;
+};
+
+// The shear coefficient kappa of a cross-section, Cowper (1966), "The shear
+// coefficient in Timoshenko's beam theory", J. Appl. Mech. 33, 335, Table 1:
+//   rectangle    10 (1 + nu) / (12 + 11 nu)            (5/6 at nu = 0)
+//   circle        6 (1 + nu) / (7 + 6 nu)              (6/7 at nu = 0)
+//   tube, m = r_inner / r_outer:
+//     6 (1 + nu) (1 + m^2)^2 / ((7 + 6 nu) (1 + m^2)^2 + (20 + 12 nu) m^2),
+//   the circle at m = 0 and the thin tube's 2 (1 + nu) / (4 + 3 nu) as m -> 1.
+// Throws std::invalid_argument for a section no shape above describes.
+double shear_coefficient(const CrossSection& section);
+
+// kappa G A and r = sqrt(I / A) of the section: A = w t and r = t / sqrt(12)
+// for the rectangle, A = pi (R^2 - r_i^2) and r = sqrt(R^2 + r_i^2) / 2 for
+// the circle (r_i = 0) and the tube. Throws std::invalid_argument as above.
+TimoshenkoSection timoshenko_section(double shear_modulus_Pa, const CrossSection& section);
+
 struct ModeOptions {
   enum class Method { kExact, kFiniteElement };
   enum class Theory { kEulerBernoulli, kTimoshenko };

@@ -37,6 +37,8 @@ inline constexpr double kMaxGripStiffness_N_m2 = 1e12;
 inline constexpr double kMaxGripDamping_N_s_m2 = 1e8;
 // A cross-section's size; its shear modulus (steel: 8e10 Pa).
 inline constexpr double kMaxShearModulus_Pa = 1e13;
+// Poisson's ratio of an isotropic solid's cross-section: [0, 0.5] (0.5 incompressible).
+inline constexpr double kMaxPoissonRatio = 0.5;
 inline constexpr double kMinDuration_s = 1e-9;
 inline constexpr double kMaxDuration_s = 10.0;
 
@@ -86,11 +88,11 @@ struct FrameStiffness {
   // the rating) is derived from it and the frame's mass (frame_specs.hpp),
   // and one scale for every EI solved from that; point masses then lower it.
   std::optional<double> RA;
-  // Timoshenko theory (shear and rotary inertia) when given: a solid
-  // rectangle of this shear modulus and size for every section.
+  // Timoshenko theory (shear and rotary inertia) when given: every section
+  // of this shear modulus and cross-section (a rectangle, a circle or a tube,
+  // its shear coefficient Cowper's for the shape).
   std::optional<double> shear_modulus_Pa;
-  double width_m = 0.0;      // [m], > 0 with shear_modulus_Pa
-  double thickness_m = 0.0;  // [m], > 0 with shear_modulus_Pa, the bending direction
+  CrossSection cross_section;  // its sizes > 0 with shear_modulus_Pa
 };
 
 struct Ball {

@@ -89,11 +89,28 @@ void validate(const Design& d) {
     detail::require_positive("frame/cross_section/shear_modulus_Pa", *k.shear_modulus_Pa, "Pa");
     detail::require_in_range("frame/cross_section/shear_modulus_Pa", *k.shear_modulus_Pa, 0.0,
                              kMaxShearModulus_Pa, "Pa");
-    detail::require_positive("frame/cross_section/width_m", k.width_m, "m");
-    detail::require_in_range("frame/cross_section/width_m", k.width_m, 0.0, kMaxLength_m, "m");
-    detail::require_positive("frame/cross_section/thickness_m", k.thickness_m, "m");
-    detail::require_in_range("frame/cross_section/thickness_m", k.thickness_m, 0.0, kMaxLength_m,
-                             "m");
+    const CrossSection& c = k.cross_section;
+    const auto size = [](const char* name, double value) {
+      detail::require_positive(name, value, "m");
+      detail::require_in_range(name, value, 0.0, kMaxLength_m, "m");
+    };
+    if (c.shape == CrossSection::Shape::kRectangle) {
+      size("frame/cross_section/width_m", c.width_m);
+      size("frame/cross_section/thickness_m", c.thickness_m);
+    } else {
+      size("frame/cross_section/diameter_m", c.diameter_m);
+    }
+    if (c.shape == CrossSection::Shape::kHollowCircle) {
+      size("frame/cross_section/wall_m", c.wall_m);
+      if (!(c.wall_m <= 0.5 * c.diameter_m)) {
+        throw FieldError("frame/cross_section/wall_m",
+                         "must be at most half the diameter, " +
+                             detail::format_number(0.5 * c.diameter_m) + " m, got " +
+                             detail::format_number(c.wall_m) + " m");
+      }
+    }
+    detail::require_in_range("frame/cross_section/poisson_ratio", c.poisson_ratio, 0.0,
+                             kMaxPoissonRatio, "");
   }
   detail::require_in_range("impact/off_axis_m", d.impact_off_axis_m, -L, L, "m");
   std::optional<HeadEllipse> outline;  // the head to the hoop's outer edge

@@ -75,15 +75,15 @@ FlexibleFrame flexible_frame(const Design& design) {
                        ? implement.sections()
                        : fitted_sections(implement.length_m(), implement.frame_mass_properties());
   if (stiffness.shear_modulus_Pa) {
-    const TimoshenkoSection t = rectangular_timoshenko_section(
-        *stiffness.shear_modulus_Pa, stiffness.width_m, stiffness.thickness_m);
+    const TimoshenkoSection t =
+        timoshenko_section(*stiffness.shear_modulus_Pa, stiffness.cross_section);
     frame.options.method = ModeOptions::Method::kFiniteElement;
     frame.options.theory = ModeOptions::Theory::kTimoshenko;
-    // kappa G w t can underflow to 0 (or overflow) for inputs each inside
+    // kappa G A can underflow to 0 (or overflow) for inputs each inside
     // its range: the cross-section is then no beam's, named as the input.
     if (!(t.shear_stiffness_N > 0.0 && std::isfinite(t.shear_stiffness_N))) {
       throw FieldError("frame/cross_section",
-                       "the shear stiffness kappa G w t must be > 0 and finite, got " +
+                       "the shear stiffness kappa G A must be > 0 and finite, got " +
                            detail::format_number(t.shear_stiffness_N) + " N");
     }
     frame.options.timoshenko.assign(frame.sections.size(), t);
@@ -130,7 +130,7 @@ FlexibleFrame flexible_frame(const Design& design) {
       const double shear_parameter = 12.0 * (*s.EI_N_m2 / kGA) / L / L;
       if (!(shear_parameter <= kMaxShearParameter)) {
         throw FieldError("frame/cross_section",
-                         "the shear parameter 12 EI/(kappa G w t L^2) must be at most " +
+                         "the shear parameter 12 EI/(kappa G A L^2) must be at most " +
                              detail::format_number(kMaxShearParameter) +
                              " (a beam in bending), got " + detail::format_number(shear_parameter));
       }

@@ -40,8 +40,12 @@ class Key {
     add(k.fundamental_free_Hz);
     add(k.RA);
     add(k.shear_modulus_Pa);
-    add(k.width_m);
-    add(k.thickness_m);
+    add(static_cast<double>(k.cross_section.shape));
+    add(k.cross_section.width_m);
+    add(k.cross_section.thickness_m);
+    add(k.cross_section.diameter_m);
+    add(k.cross_section.wall_m);
+    add(k.cross_section.poisson_ratio);
     const Hand& h = d.hand;
     add(h.mass_kg);
     add(h.center_from_butt_m);

@@ -540,6 +540,54 @@ struct Reading {
   }
 };
 
+// /frame/cross_section: the shape and its sizes (Cowper's shear coefficient
+// for the shape, beam_modes.hpp), each size the shape's own.
+CrossSection read_cross_section(ObjectReader& c) {
+  using Shape = CrossSection::Shape;
+  static constexpr std::pair<std::string_view, Shape> kShapes[] = {
+      {"rectangle", Shape::kRectangle},
+      {"circle", Shape::kCircle},
+      {"hollow_circle", Shape::kHollowCircle}};
+  CrossSection section;
+  if (const auto name = c.string("shape")) {
+    const auto* found = std::find_if(std::begin(kShapes), std::end(kShapes),
+                                     [&](const auto& k) { return k.first == *name; });
+    if (found == std::end(kShapes))
+      c.fail("shape", "expected rectangle, circle or hollow_circle, got " + brief(Json(*name)));
+    section.shape = found->second;
+  }
+  const auto width = c.quantity("width", Dimension::kLength);
+  const auto thickness = c.quantity("thickness", Dimension::kLength);
+  const auto diameter = c.quantity("diameter", Dimension::kLength);
+  const auto wall = c.quantity("wall", Dimension::kLength);
+  const auto refuse = [&](std::string_view stem, Dimension dimension, const char* why) {
+    c.fail(c.one_of(spellings(stem, dimension)), why);
+  };
+  if (section.shape == Shape::kRectangle) {
+    if (!width || !thickness)
+      c.fail("", "a rectangle needs width_m and thickness_m (for Timoshenko theory)");
+    if (diameter) refuse("diameter", Dimension::kLength, "is a circle's: give shape circle");
+    if (wall) refuse("wall", Dimension::kLength, "is a tube's: give shape hollow_circle");
+    section.width_m = *width;
+    section.thickness_m = *thickness;
+  } else {
+    const char* shape = section.shape == Shape::kCircle ? "a circle" : "a tube";
+    if (width) refuse("width", Dimension::kLength, "is a rectangle's: a circle has a diameter");
+    if (thickness)
+      refuse("thickness", Dimension::kLength, "is a rectangle's: a circle has a diameter");
+    if (!diameter) c.fail("", std::string(shape) + " needs diameter_m (its outer diameter)");
+    section.diameter_m = *diameter;
+    if (section.shape == Shape::kHollowCircle) {
+      if (!wall) c.fail("", "a tube needs wall_m (its wall's thickness)");
+      section.wall_m = *wall;
+    } else if (wall) {
+      refuse("wall", Dimension::kLength, "is a tube's: give shape hollow_circle");
+    }
+  }
+  section.poisson_ratio = c.number("poisson_ratio").value_or(0.0);
+  return section;
+}
+
 // /frame: the COR (given or derived) and the stiffness in one of its forms.
 void read_frame(ObjectReader& top, Reading& in) {
   Part frame(top, "frame", in.keys, in.provenance);
@@ -571,13 +619,9 @@ void read_frame(ObjectReader& top, Reading& in) {
       ObjectReader c(*section, "/frame/cross_section", "frame/cross_section", in.source, in.keys);
       c.check_known(design_keys("frame/cross_section"));
       in.design.stiffness.shear_modulus_Pa = c.number("shear_modulus_Pa");
-      const auto width = c.quantity("width", Dimension::kLength);
-      const auto thickness = c.quantity("thickness", Dimension::kLength);
-      if (!in.design.stiffness.shear_modulus_Pa || !width || !thickness) {
-        c.fail("", "give shear_modulus_Pa, width_m and thickness_m (for Timoshenko theory)");
-      }
-      in.design.stiffness.width_m = *width;
-      in.design.stiffness.thickness_m = *thickness;
+      if (!in.design.stiffness.shear_modulus_Pa)
+        c.fail("", "give shear_modulus_Pa and the section's size (for Timoshenko theory)");
+      in.design.stiffness.cross_section = read_cross_section(c);
       c.finish(design_keys("frame/cross_section"));
     }
     r.finish(design_keys("frame"));
@@ -1332,8 +1376,19 @@ Json design_to_json(const DesignFile& file) {
   if (d.stiffness.shear_modulus_Pa) {
     Json& section = frame[si_key("frame", "cross_section")] = Json::object();
     put(section, "frame/cross_section", "shear_modulus_Pa", *d.stiffness.shear_modulus_Pa);
-    put(section, "frame/cross_section", "width", d.stiffness.width_m);
-    put(section, "frame/cross_section", "thickness", d.stiffness.thickness_m);
+    const CrossSection& c = d.stiffness.cross_section;
+    if (c.shape == CrossSection::Shape::kRectangle) {
+      put(section, "frame/cross_section", "width", c.width_m);
+      put(section, "frame/cross_section", "thickness", c.thickness_m);
+    } else {
+      section[si_key("frame/cross_section", "shape")] =
+          c.shape == CrossSection::Shape::kCircle ? "circle" : "hollow_circle";
+      put(section, "frame/cross_section", "diameter", c.diameter_m);
+      if (c.shape == CrossSection::Shape::kHollowCircle)
+        put(section, "frame/cross_section", "wall", c.wall_m);
+    }
+    if (c.poisson_ratio != 0.0)
+      put(section, "frame/cross_section", "poisson_ratio", c.poisson_ratio);
   }
   Json& strings = j[si_key("", "strings")] = Json::object();
   if (d.strings) {

@@ -54,6 +54,11 @@ bool has_strings(const D& d, std::size_t) {
 bool has_cross_section(const D& d, std::size_t) {
   return d.design.stiffness.shear_modulus_Pa.has_value();
 }
+// A size of the section's own shape: a rectangle's width, a circle's diameter.
+template <CrossSection::Shape... Shapes>
+bool has_section_of(const D& d, std::size_t k) {
+  return has_cross_section(d, k) && ((d.design.stiffness.cross_section.shape == Shapes) || ...);
+}
 
 // The impact given from the tip or from the butt: settable when the file
 // gives it that way, or gives none (the pointer then places it).
@@ -154,10 +159,17 @@ const std::vector<FieldSetter>& field_setters() {
        [](D& x, std::size_t, double v) { x.design.stiffness.RA = v; }},
       {"frame/cross_section", "shear_modulus_Pa", "", has_cross_section,
        [](D& x, std::size_t, double v) { x.design.stiffness.shear_modulus_Pa = v; }},
-      {"frame/cross_section", "width", "", has_cross_section,
-       [](D& x, std::size_t, double v) { x.design.stiffness.width_m = v; }},
-      {"frame/cross_section", "thickness", "", has_cross_section,
-       [](D& x, std::size_t, double v) { x.design.stiffness.thickness_m = v; }},
+      {"frame/cross_section", "width", "", has_section_of<CrossSection::Shape::kRectangle>,
+       [](D& x, std::size_t, double v) { x.design.stiffness.cross_section.width_m = v; }},
+      {"frame/cross_section", "thickness", "", has_section_of<CrossSection::Shape::kRectangle>,
+       [](D& x, std::size_t, double v) { x.design.stiffness.cross_section.thickness_m = v; }},
+      {"frame/cross_section", "diameter", "",
+       has_section_of<CrossSection::Shape::kCircle, CrossSection::Shape::kHollowCircle>,
+       [](D& x, std::size_t, double v) { x.design.stiffness.cross_section.diameter_m = v; }},
+      {"frame/cross_section", "wall", "", has_section_of<CrossSection::Shape::kHollowCircle>,
+       [](D& x, std::size_t, double v) { x.design.stiffness.cross_section.wall_m = v; }},
+      {"frame/cross_section", "poisson_ratio", "", has_cross_section,
+       [](D& x, std::size_t, double v) { x.design.stiffness.cross_section.poisson_ratio = v; }},
       {"strings", "impact_duration", "", [](const D& d, std::size_t) { return !d.design.strings; },
        [](D& x, std::size_t, double v) { x.design.impact_duration_s = v; }},
       {"strings", "tension", "", has_strings,

@@ -25,6 +25,7 @@ constexpr double kFreeFreeNode = 0.22416;
 // The roots above carry 8 digits: ~1e-8 relative, so (beta L)^2 ~2e-8.
 constexpr double kClosedFormDigits = 3e-8;
 constexpr double kNodeDigits = 5e-6;    // the node fraction carries 5 digits
+constexpr double kRoundOff = 1e-14;     // a closed form evaluated twice
 constexpr double kExactTol = 1e-9;      // exact solver vs an exact closed form
 constexpr double kDefaultFeTol = 1e-6;  // ModeOptions::rel_tol default
 constexpr double kSubMicrometre_m = 1e-7;
@@ -282,6 +283,64 @@ TEST_CASE("Timoshenko theory with wood's shear modulus moves modes 2 and 3 towar
     WARN("mode " << k + 1 << ": Euler-Bernoulli " << eb.modes[k].frequency_Hz << " Hz, Timoshenko "
                  << r.modes[k].frequency_Hz << " Hz, measured " << measured << " Hz");
   }
+}
+
+// Cowper (1966), J. Appl. Mech. 33, 335, Table 1, at nu = 0 and nu = 0.3: the
+// rectangle's 5/6 (the value the paper's beam has used), the circle's 6/7, and
+// the thin-walled tube's 1/2 (Timoshenko's value for a thin ring) as the wall
+// goes to nothing; the tube with its bore closed is the circle to the bit.
+TEST_CASE("Each section shape has Cowper's shear coefficient") {
+  using Shape = CrossSection::Shape;
+  const CrossSection rectangle{.width_m = 0.04, .thickness_m = 0.019};
+  const CrossSection circle{.shape = Shape::kCircle, .diameter_m = 0.06};
+  CHECK(shear_coefficient(rectangle) == kRectangularShearCoefficient);
+  CHECK(shear_coefficient(circle) == 6.0 / 7.0);
+  CrossSection r3 = rectangle, c3 = circle;
+  r3.poisson_ratio = c3.poisson_ratio = 0.3;
+  CHECK(shear_coefficient(r3) == Approx(13.0 / 15.3).epsilon(kRoundOff));
+  CHECK(shear_coefficient(c3) == Approx(7.8 / 8.8).epsilon(kRoundOff));
+  const CrossSection solid_tube{.shape = Shape::kHollowCircle, .diameter_m = 0.06, .wall_m = 0.03};
+  CHECK(shear_coefficient(solid_tube) == shear_coefficient(circle));
+  for (const double nu : {0.0, 0.3, 0.5}) {
+    const CrossSection thin{
+        .shape = Shape::kHollowCircle, .diameter_m = 0.06, .wall_m = 1e-7, .poisson_ratio = nu};
+    CHECK(shear_coefficient(thin) == Approx(2.0 * (1.0 + nu) / (4.0 + 3.0 * nu)).epsilon(1e-5));
+  }
+  // Between the two, the coefficient falls as the wall thins (Cowper's Fig. 3).
+  double previous = shear_coefficient(circle);
+  for (double wall = 0.029; wall > 0.001; wall -= 0.002) {
+    const double kappa = shear_coefficient(
+        CrossSection{.shape = Shape::kHollowCircle, .diameter_m = 0.06, .wall_m = wall});
+    CHECK(kappa < previous);
+    previous = kappa;
+  }
+  CHECK_THROWS_AS(shear_coefficient(CrossSection{
+                      .shape = Shape::kHollowCircle, .diameter_m = 0.06, .wall_m = 0.031}),
+                  std::invalid_argument);
+  CHECK_THROWS_AS(shear_coefficient(CrossSection{.shape = Shape::kCircle}), std::invalid_argument);
+  CHECK_THROWS_AS(
+      shear_coefficient(CrossSection{.width_m = 0.04, .thickness_m = 0.019, .poisson_ratio = 0.6}),
+      std::invalid_argument);
+}
+
+// A = pi (R^2 - r^2) and I = pi (R^4 - r^4) / 4 about a diameter: the radius of
+// gyration sqrt(I / A), and kappa G A, for a tube, a circle and a rectangle.
+TEST_CASE("A section's shear stiffness and radius of gyration are those of its area and inertia") {
+  using Shape = CrossSection::Shape;
+  const double G = 4e9, R = 0.03, r = 0.022;
+  const CrossSection tube{.shape = Shape::kHollowCircle, .diameter_m = 2 * R, .wall_m = R - r};
+  const TimoshenkoSection t = timoshenko_section(G, tube);
+  const double area = kPi * (R * R - r * r), inertia = kPi * (R * R * R * R - r * r * r * r) / 4;
+  CHECK(t.radius_of_gyration_m == Approx(std::sqrt(inertia / area)).epsilon(kRoundOff));
+  CHECK(t.shear_stiffness_N == Approx(shear_coefficient(tube) * G * area).epsilon(kRoundOff));
+  const TimoshenkoSection c = timoshenko_section(G, {.shape = Shape::kCircle, .diameter_m = 2 * R});
+  CHECK(c.radius_of_gyration_m == Approx(R / 2).epsilon(kRoundOff));
+  CHECK(c.shear_stiffness_N == Approx(6.0 / 7.0 * G * kPi * R * R).epsilon(kRoundOff));
+  // The rectangle through the shape is the rectangle of before, to the bit.
+  const TimoshenkoSection a = rectangular_timoshenko_section(G, 0.04, 0.019);
+  const TimoshenkoSection b = timoshenko_section(G, {.width_m = 0.04, .thickness_m = 0.019});
+  CHECK(a.shear_stiffness_N == b.shear_stiffness_N);
+  CHECK(a.radius_of_gyration_m == b.radius_of_gyration_m);
 }
 
 TEST_CASE("Timoshenko elements reduce to Euler-Bernoulli as the shear stiffness grows") {

@@ -554,6 +554,9 @@ TEST_CASE("Each field's default in the table is the reader's and the schema's") 
       "head_to_handle_mass_ratio": 0.8, "point_masses": [{"from_butt_m": 0.1, "mass_g": 1}]}})");
   const DesignFile strung = read(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25,
       "head_to_handle_mass_ratio": 0.8, "headsize_cm2": 600}, "strings": {"tension_N": 250}})");
+  const DesignFile round = read(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25,
+      "head_to_handle_mass_ratio": 0.8}, "frame": {"EI_N_m2": 300, "cross_section":
+      {"shear_modulus_Pa": 1e9, "shape": "circle", "diameter_mm": 64}}})");
   const Design& a = plain.design;
   const Design& b = strung.design;
   REQUIRE(b.strings);
@@ -581,7 +584,8 @@ TEST_CASE("Each field's default in the table is the reader's and the schema's") 
       {"ball/contact/exponent", a.ball_contact.exponent},
       {"ball/contact/damping", a.ball_contact.damping},
       {"ball/contact/damping_exponent", a.ball_contact.damping_exponent},
-      {"impact/off_axis_m", a.impact_off_axis_m}};
+      {"impact/off_axis_m", a.impact_off_axis_m},
+      {"frame/cross_section/poisson_ratio", round.design.stiffness.cross_section.poisson_ratio}};
   const Json schema = parse_json(source_file("schema/design.schema.json"), "design.schema.json");
   std::size_t numbers = 0;
   for (const DesignField& field : design_fields()) {

@@ -51,7 +51,7 @@ const Range kEI{1e-3, 1e12, true, kTiny, 1e12, 50.0, 1000.0};
 const Range kFundamental{1e-2, 1e6, true, kTiny, kHuge, 100.0, 250.0};
 // frame_specs.hpp: RA in [kMinRA, kMaxRA] = [50, 80].
 const Range kRA{50.0, 80.0, false, 50.0, 80.0, 55.0, 75.0};
-// cross_section: G in (0, 1e13] Pa, width and thickness in (0, 100] m.
+// cross_section: G in (0, 1e13] Pa, width, thickness and diameter in (0, 100] m.
 const Range kShearModulus{1e3, 1e13, true, kTiny, 1e13, 1e9, 3e10};
 const Range kSectionSize{1e-5, 100.0, true, kTiny, 100.0, 0.008, 0.03};
 // frame.cor, frame.cor_rigid in [0, 1].
@@ -329,8 +329,23 @@ DrawnDesign draw_design(Rng& rng, const std::string& fidelity, double typical_sh
     if (draw.chance(0.12)) {
       Json section;
       section["shear_modulus_Pa"] = draw(kShearModulus);
-      put(rng, section, "width", kLength, draw(kSectionSize));
-      put(rng, section, "thickness", kLength, draw(kSectionSize));
+      // A rectangle (the default, or named), a circle or a tube (its wall up
+      // to half the diameter), of a Poisson's ratio in [0, 0.5] or none.
+      const double shape = rng.unit();
+      if (shape < 0.5) {
+        if (draw.chance(0.3)) section["shape"] = "rectangle";
+        put(rng, section, "width", kLength, draw(kSectionSize));
+        put(rng, section, "thickness", kLength, draw(kSectionSize));
+      } else {
+        const double diameter = put(rng, section, "diameter", kLength, draw(kSectionSize));
+        if (shape < 0.75) {
+          section["shape"] = "circle";
+        } else {
+          section["shape"] = "hollow_circle";
+          put(rng, section, "wall", kLength, 0.5 * diameter * (0.01 + 0.98 * rng.unit()));
+        }
+      }
+      if (draw.chance(0.5)) section["poisson_ratio"] = 0.5 * rng.unit();
       frame["cross_section"] = section;
     }
   }

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -32,11 +33,61 @@ using detail::format_number;
 
 TimoshenkoSection rectangular_timoshenko_section(double shear_modulus_Pa, double width_m,
                                                  double thickness_m) {
+  return timoshenko_section(shear_modulus_Pa,
+                            CrossSection{.width_m = width_m, .thickness_m = thickness_m});
+}
+
+namespace {
+
+// The tube's radius ratio m = r_inner / r_outer in [0, 1), 0 for a solid circle.
+double radius_ratio(const CrossSection& section) {
+  if (section.shape == CrossSection::Shape::kCircle) return 0.0;
+  const double outer = 0.5 * section.diameter_m;
+  return (outer - section.wall_m) / outer;
+}
+
+void check_section(const CrossSection& section) {
+  if (!(section.poisson_ratio >= 0.0 && section.poisson_ratio <= 0.5)) {
+    throw std::invalid_argument("poisson_ratio: must be in [0, 0.5], got " +
+                                format_number(section.poisson_ratio));
+  }
+  if (section.shape == CrossSection::Shape::kRectangle) {
+    detail::require_positive("width_m", section.width_m, "m");
+    detail::require_positive("thickness_m", section.thickness_m, "m");
+    return;
+  }
+  detail::require_positive("diameter_m", section.diameter_m, "m");
+  if (section.shape == CrossSection::Shape::kHollowCircle &&
+      !(section.wall_m > 0.0 && section.wall_m <= 0.5 * section.diameter_m)) {
+    throw std::invalid_argument(
+        "wall_m: must be in (0, diameter / 2 = " + format_number(0.5 * section.diameter_m) +
+        "] m, got " + format_number(section.wall_m));
+  }
+}
+
+}  // namespace
+
+double shear_coefficient(const CrossSection& section) {
+  check_section(section);
+  const double nu = section.poisson_ratio;
+  if (section.shape == CrossSection::Shape::kRectangle)
+    return 10.0 * (1.0 + nu) / (12.0 + 11.0 * nu);
+  const double m = radius_ratio(section);
+  const double c = (1.0 + m * m) * (1.0 + m * m);
+  return 6.0 * (1.0 + nu) * c / ((7.0 + 6.0 * nu) * c + (20.0 + 12.0 * nu) * m * m);
+}
+
+TimoshenkoSection timoshenko_section(double shear_modulus_Pa, const CrossSection& section) {
   detail::require_positive("shear_modulus_Pa", shear_modulus_Pa, "Pa");
-  detail::require_positive("width_m", width_m, "m");
-  detail::require_positive("thickness_m", thickness_m, "m");
-  return {kRectangularShearCoefficient * shear_modulus_Pa * width_m * thickness_m,
-          thickness_m / std::sqrt(12.0)};
+  const double kappa = shear_coefficient(section);
+  if (section.shape == CrossSection::Shape::kRectangle) {
+    return {kappa * shear_modulus_Pa * section.width_m * section.thickness_m,
+            section.thickness_m / std::sqrt(12.0)};
+  }
+  const double outer = 0.5 * section.diameter_m;
+  const double inner = radius_ratio(section) * outer;
+  const double area = std::numbers::pi * (outer - inner) * (outer + inner);
+  return {kappa * shear_modulus_Pa * area, 0.5 * std::sqrt(outer * outer + inner * inner)};
 }
 
 std::string ModeOptions::validate() const {
