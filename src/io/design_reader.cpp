@@ -571,11 +571,11 @@ CrossSection read_cross_section(ObjectReader& c) {
     section.width_m = *width;
     section.thickness_m = *thickness;
   } else {
-    const char* shape = section.shape == Shape::kCircle ? "a circle" : "a tube";
-    if (width) refuse("width", Dimension::kLength, "is a rectangle's: a circle has a diameter");
-    if (thickness)
-      refuse("thickness", Dimension::kLength, "is a rectangle's: a circle has a diameter");
-    if (!diameter) c.fail("", std::string(shape) + " needs diameter_m (its outer diameter)");
+    const std::string shape = section.shape == Shape::kCircle ? "a circle" : "a tube";
+    const std::string rectangle_size = "is a rectangle's: " + shape + " has a diameter";
+    if (width) refuse("width", Dimension::kLength, rectangle_size.c_str());
+    if (thickness) refuse("thickness", Dimension::kLength, rectangle_size.c_str());
+    if (!diameter) c.fail("", shape + " needs diameter_m (its outer diameter)");
     section.diameter_m = *diameter;
     if (section.shape == Shape::kHollowCircle) {
       if (!wall) c.fail("", "a tube needs wall_m (its wall's thickness)");
