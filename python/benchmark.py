@@ -81,6 +81,11 @@ def main():
     arrays = [paper[k] for k in paper]
     columnwise = best_of(7, lambda: sweetspot.evaluate_many(BASE, paper, threads=1,
                                                             outputs=wanted))
+    out = {name: np.empty(million) for name in wanted}
+    reused = best_of(7, lambda: sweetspot.evaluate_many(BASE, paper, threads=1, outputs=wanted,
+                                                        out=out))
+    both = best_of(7, lambda: sweetspot.evaluate_many(BASE, paper, threads=threads,
+                                                      outputs=wanted, out=out))
     numpy = best_of(7, lambda: numpy_model.paper_rigid(*arrays))
     result = sweetspot.evaluate_many(BASE, paper, threads=1, outputs=wanted)
     assert result["ok"].all()
@@ -88,6 +93,10 @@ def main():
     print(f"  NumPy, vectorised (numpy_model.py)              {1e3 * numpy:7.1f} ms")
     print(f"  sweetspot.evaluate_many(outputs=...)            {1e3 * columnwise:7.1f} ms"
           f"  ({numpy / columnwise:.1f}x NumPy)")
+    print(f"  the same into out= arrays kept between calls    {1e3 * reused:7.1f} ms"
+          f"  ({numpy / reused:.1f}x NumPy)")
+    print(f"  the same on {threads} threads                         {1e3 * both:7.1f} ms"
+          f"  ({numpy / both:.1f}x NumPy on one)")
 
     code = "import time; t = time.perf_counter(); import sweetspot; print(time.perf_counter() - t)"
     imports = [float(subprocess.run([sys.executable, "-c", code], check=True, capture_output=True,

@@ -100,10 +100,69 @@ py::object evaluate_py(py::handle design, const std::optional<std::string>& fide
 
 // ------------------------------------------------------------ evaluate_many
 
+// The caller's array for output `name` of n rows, if `out` holds one: a
+// writable, contiguous float64 array of n elements, or InputError naming it.
+std::optional<py::array_t<double>> out_array(const std::optional<py::dict>& out,
+                                             std::string_view name, std::size_t n) {
+  if (!out) return std::nullopt;
+  const py::str key{std::string(name)};
+  if (!out->contains(key)) return std::nullopt;
+  const py::handle given = (*out)[key];
+  const std::string where = "out[" + studies::shown(name) + "]";
+  if (!py::isinstance<py::array>(given))
+    throw io::InputError("out", "", where + ": expected a NumPy array of float64");
+  const auto array = py::reinterpret_borrow<py::array>(given);
+  if (!array.dtype().is(py::dtype::of<double>()) || array.ndim() != 1 ||
+      !(array.flags() & py::array::c_style) || !array.writeable()) {
+    throw io::InputError("out", "",
+                         where + ": expected a writable, contiguous 1-D array of float64, got " +
+                             py::str(array.dtype()).cast<std::string>() + " of " +
+                             std::to_string(array.ndim()) + " dimension(s)");
+  }
+  if (static_cast<std::size_t>(array.shape(0)) != n) {
+    throw io::InputError("out", "",
+                         where + ": " + std::to_string(array.shape(0)) + " elements, expected " +
+                             std::to_string(n) + " as the columns' rows");
+  }
+  return py::reinterpret_borrow<py::array_t<double>>(array);
+}
+
+// The rows' error column, read-only: each failed row's message, '' for the
+// others. Without a failed row it is one '' seen by every row (no memory per row).
+py::array error_column(std::size_t n, const RowErrors& errors) {
+  const py::str empty("");
+  if (errors.empty()) {
+    py::array one(py::dtype("O"), std::vector<py::ssize_t>{1});
+    PyObject** slot = static_cast<PyObject**>(one.mutable_data());
+    Py_XDECREF(slot[0]);
+    slot[0] = empty.inc_ref().ptr();
+    py::array every(py::dtype("O"), std::vector<py::ssize_t>{static_cast<py::ssize_t>(n)},
+                    std::vector<py::ssize_t>{0}, one.data(), one);
+    every.attr("setflags")(py::arg("write") = false);
+    return every;
+  }
+  py::array error(py::dtype("O"), std::vector<py::ssize_t>{static_cast<py::ssize_t>(n)});
+  PyObject** slots = static_cast<PyObject**>(error.mutable_data());
+  for (std::size_t i = 0; i < n; ++i) {
+    Py_XDECREF(slots[i]);
+    slots[i] = empty.inc_ref().ptr();
+  }
+  for (const auto& [row, message] : errors) {
+    PyObject* text =
+        PyUnicode_DecodeUTF8(message.data(), static_cast<Py_ssize_t>(message.size()), "replace");
+    if (!text) throw py::error_already_set();
+    Py_XDECREF(slots[row]);
+    slots[row] = text;
+  }
+  error.attr("setflags")(py::arg("write") = false);
+  return error;
+}
+
 py::dict evaluate_many_py(py::handle base, py::handle columns,
                           const std::optional<std::string>& fidelity,
                           const std::optional<int>& threads, double tol,
-                          const std::optional<std::vector<std::string>>& wanted) {
+                          const std::optional<std::vector<std::string>>& wanted,
+                          const std::optional<py::dict>& out) {
   ManyOptions options;
   options.fidelity = checked_fidelity(fidelity);
   options.modal_tolerance = checked_tolerance(tol);
@@ -189,8 +248,44 @@ py::dict evaluate_many_py(py::handle base, py::handle columns,
   std::vector<py::array_t<double>> outputs;
   std::vector<double*> pointers;
   for (std::size_t k = 0; k < options.outputs.size(); ++k) {
-    outputs.emplace_back(static_cast<py::ssize_t>(n));
+    auto given = out_array(out, specs[options.outputs[k]].name, n);
+    outputs.push_back(given ? std::move(*given) : py::array_t<double>(static_cast<py::ssize_t>(n)));
     pointers.push_back(outputs.back().mutable_data());
+  }
+  if (out) {
+    for (const auto& [key, value] : *out) {
+      const std::string name = py::str(key).cast<std::string>();
+      const bool asked = std::any_of(options.outputs.begin(), options.outputs.end(),
+                                     [&](std::size_t k) { return specs[k].name == name; });
+      if (!asked) {
+        throw io::InputError(
+            "out", "",
+            "out[" + studies::shown(name) + "]: not an output asked for (outputs= or outputs())");
+      }
+    }
+    // An output written over another, or over a column still to be read, is refused.
+    const auto bytes = [](const double* data, std::ptrdiff_t stride, std::size_t count) {
+      const double* last = data + static_cast<std::ptrdiff_t>(count ? count - 1 : 0) * stride;
+      return std::pair{std::min(data, last), std::max(data, last) + 1};
+    };
+    const auto overlap = [](std::pair<const double*, const double*> a,
+                            std::pair<const double*, const double*> b) {
+      return std::less<>()(a.first, b.second) && std::less<>()(b.first, a.second);
+    };
+    for (std::size_t a = 0; a < pointers.size(); ++a) {
+      const auto range = bytes(pointers[a], 1, n);
+      const std::string name = "out[" + studies::shown(specs[options.outputs[a]].name) + "]";
+      for (std::size_t b = a + 1; b < pointers.size(); ++b) {
+        if (overlap(range, bytes(pointers[b], 1, n)))
+          throw io::InputError("out", "", name + ": shares memory with another output");
+      }
+      for (const Column& column : cols) {
+        if (overlap(range, bytes(column.data, column.stride, n))) {
+          throw io::InputError(
+              "out", "", name + ": shares memory with the column " + studies::shown(column.field));
+        }
+      }
+    }
   }
   RowErrors errors;
   {
@@ -202,23 +297,9 @@ py::dict evaluate_many_py(py::handle base, py::handle columns,
     result[py::str(std::string(specs[options.outputs[k]].name))] = outputs[k];
   py::array_t<bool> ok(static_cast<py::ssize_t>(n));
   std::fill_n(ok.mutable_data(), n, true);
-  py::array error(py::dtype("O"), std::vector<py::ssize_t>{static_cast<py::ssize_t>(n)});
-  PyObject** slots = static_cast<PyObject**>(error.mutable_data());
-  const py::str empty("");  // one object for every row that evaluated
-  for (std::size_t i = 0; i < n; ++i) {
-    Py_XDECREF(slots[i]);
-    slots[i] = empty.inc_ref().ptr();
-  }
-  for (const auto& [row, message] : errors) {
-    PyObject* text =
-        PyUnicode_DecodeUTF8(message.data(), static_cast<Py_ssize_t>(message.size()), "replace");
-    if (!text) throw py::error_already_set();
-    ok.mutable_data()[row] = false;
-    Py_XDECREF(slots[row]);
-    slots[row] = text;
-  }
+  for (const auto& error : errors) ok.mutable_data()[error.first] = false;
   result["ok"] = ok;
-  result["error"] = error;
+  result["error"] = error_column(n, errors);
   return result;
 }
 
@@ -471,7 +552,7 @@ command line) when the model cannot answer.)");
 
   m.def("evaluate_many", &evaluate_many_py, py::arg("base"), py::arg("columns"),
         py::arg("fidelity") = py::none(), py::arg("threads") = py::none(), py::arg("tol") = 1e-6,
-        py::arg("outputs") = py::none(),
+        py::arg("outputs") = py::none(), py::arg("out") = py::none(),
         R"(Many designs at once: a base design and columns of numbers, as `sweetspot evaluate
 --batch CATALOGUE.csv --base BASE.json` evaluates a catalogue.
 
@@ -491,11 +572,15 @@ outputs: the names of the outputs wanted (of outputs()); None (default): every o
     asking only for effective_mass_kg, apparent_cor, rebound_speed_m_s, impulse_N_s,
     peak_impact_force_N, wrist_force_ratio, peak_wrist_force_N, cor or impact_duration_s
     are evaluated column-wise, a block of rows at a time (the same numbers, bit for bit).
+out: a dict of output names to arrays the outputs are written into (writable, contiguous
+    float64, one element per row, sharing no memory with a column or each other), as
+    NumPy's out=: a loop over many calls reuses its arrays instead of fresh memory.
 
-Returns a dict: for each output wanted (every output of evaluate(), outputs(), by default) a float64 array, one value per
-row, in its SI unit (NaN where the output is None or the row failed); 'ok', a bool array;
-'error', an object array holding each failed row's message ('row 7: /implement/mass_kg:
-must be in ..., got ...', the command line's words) and '' for the others. A bad row never
+Returns a dict: for each output wanted (every output of evaluate(), outputs(), by default)
+a float64 array, one value per row, in its SI unit (NaN where the output is None or the
+row failed), the array of `out` where given; 'ok', a bool array; 'error', a read-only object
+array holding each failed row's message ('row 7: /implement/mass_kg: must be in ..., got
+...', the command line's words) and '' for the others. A bad row never
 raises. Raises InputError naming 'columns' for a name that is no design field (or is given
 twice or in two units), arrays of different lengths, and for the base.)");
 

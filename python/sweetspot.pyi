@@ -36,9 +36,11 @@ def evaluate_many(
     threads: Optional[int] = None,
     tol: float = 1e-6,
     outputs: Optional[Sequence[str]] = None,
+    out: Optional[Mapping[str, npt.NDArray[np.float64]]] = None,
 ) -> dict[str, npt.NDArray[Any]]:
-    """Rows of designs from columns keyed by dotted field names; one float64 array per output,
-    'ok' (bool) and 'error' (object, '' for a row that evaluated)."""
+    """Rows of designs from columns keyed by dotted field names; one float64 array per output
+    (written into out's array where given), 'ok' (bool) and 'error' (read-only object array,
+    '' for a row that evaluated)."""
 
 def modes(design: Design, count: int = 3, tol: float = 1e-6, method: str = "exact") -> dict[str, Any]:
     """The vibration modes free and hand-held (`sweetspot modes --format json`) and their shapes."""

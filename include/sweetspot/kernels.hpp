@@ -65,7 +65,10 @@ class ImpactSweep {
 // Cross (2004) Table I racquets (Implement::paper_racquet, no point masses),
 // each held in the hand and hit on the long axis, as one array per input:
 // the rigid model of a million designs in the paper's parametrisation at the
-// speed of rigid_outcomes(). Every span has the same length.
+// speed of rigid_outcomes(). The racquet's spans (length, mass, ratio) and
+// the impact point's have one element per case; each setting (the hand, the
+// forearm, the ball, the COR, the duration) one per case or one for every
+// case. With every setting given once, they are checked once, not per case.
 struct PaperRigidCases {
   std::span<const double> length_m, mass_kg, head_to_handle_mass_ratio;
   std::span<const double> hand_mass_kg, hand_center_from_butt_m, forearm_equivalent_mass_kg;
@@ -80,7 +83,8 @@ struct PaperRigidCases {
 // and they keep the rigid model's laws (invariants.hpp); else answered[i] = 0
 // and its outcomes are unspecified: evaluate() says why, or answers a case
 // at the edge of its range that this leaves to it. Throws
-// std::invalid_argument naming the first span of another length. No allocation.
+// std::invalid_argument naming the first span of another length (a setting's
+// may also be 1). No allocation.
 void paper_rigid_outcomes(const PaperRigidCases& cases, const RigidOutcomes& out,
                           std::span<unsigned char> answered);
 

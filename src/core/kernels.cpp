@@ -230,6 +230,101 @@ inline bool keeps_laws(double m, double v1, double cor, double M_eff, double e_A
 #define SWEETSPOT_AVX2_CLONE
 #endif
 
+// A case's inputs: the racquet's (length, mass, ratio) and the impact point
+// one per case; the settings (hand, forearm, ball, COR, duration) one per
+// case or, kUniform, one for every case (element 0).
+struct CaseInputs {
+  const double *L, *M, *r, *x;
+  const double *hand_m, *hand_x, *Me, *ball_m, *ball_v, *cor, *T;
+};
+struct CaseOutputs {
+  double *m_eff, *e_A, *J, *F0, *cop, *ratio, *F_w;
+};
+
+// The settings inside validate()'s ranges (the hand's place, which depends on
+// the length, is each case's own).
+inline bool settings_in_range(double hand_m, double Me, double ball_m, double ball_v, double cor,
+                              double T) {
+  return within(hand_m, 0.0, kMaxMass_kg) & within(Me, 0.0, kMaxForearmMass_kg) &
+         within(ball_m, kMinBallMass_kg, kMaxMass_kg) &
+         within(ball_v, kMinSpeed_m_s, kMaxSpeed_m_s) & within(cor, 0.0, 1.0) &
+         within(T, kMinDuration_s, kMaxDuration_s);
+}
+
+// n cases with settings for every case, each as evaluate() computes it: the body
+// (kernel::paper_racquet_body(), kept for the checks), the hand-held system,
+// and Eqs. (11), (13), (15)-(17) in rigid_outcome()'s order. Its selections
+// are if-converted (this file is compiled without trapping math, which lets a
+// division be computed on the side not taken; the values are IEEE's either
+// way) and the loop vectorised.
+[[gnu::always_inline]] inline void cases_body(
+    std::size_t n, const double* __restrict L, const double* __restrict M,
+    const double* __restrict r, const double* __restrict x, double hand_m, double hand_x, double Me,
+    double ball_m, double ball_v, double cor, double T, double* __restrict m_eff,
+    double* __restrict e_A, double* __restrict J, double* __restrict F0, double* __restrict cop,
+    double* __restrict ratio, double* __restrict F_w, double* __restrict mass,
+    double* __restrict com, double* __restrict inertia) {
+  for (std::size_t i = 0; i < n; ++i) {
+    const kernel::System body = kernel::paper_racquet_body(L[i], M[i], r[i]);
+    const kernel::System s = kernel::with_point_mass(body.mass_kg, body.com_from_butt_m,
+                                                     body.I_cm_kg_m2, hand_x, hand_m);
+    const double effective =
+        kernel::effective_mass(body.mass_kg, body.com_from_butt_m, body.I_cm_kg_m2, x[i]);
+    const double apparent = kernel::apparent_cor(cor, effective, ball_m);
+    const double impulse = kernel::ball_impulse(ball_m, ball_v, apparent);
+    const double peak = kernel::half_sine_peak_force(impulse, T);
+    const double wrist =
+        kernel::wrist_force_ratio(s.mass_kg, s.com_from_butt_m, s.I_cm_kg_m2, Me, x[i]);
+    m_eff[i] = effective;
+    e_A[i] = apparent;
+    J[i] = impulse;
+    F0[i] = peak;
+    cop[i] = kernel::hand_held_cop_from_butt(s.mass_kg, s.com_from_butt_m, s.I_cm_kg_m2, 0.0);
+    ratio[i] = wrist;
+    F_w[i] = peak_wrist_force(wrist, peak);
+    mass[i] = body.mass_kg;
+    com[i] = body.com_from_butt_m;
+    inertia[i] = body.I_cm_kg_m2;
+  }
+}
+
+// 1 where case i is one evaluate() answers with these numbers (see
+// paper_rigid_outcomes()), 0 where it leaves it to evaluate(). Uniform
+// settings are checked once by the caller, not here.
+template <bool kUniform>
+[[gnu::always_inline]] inline void answerable_body(std::size_t n, CaseInputs in,
+                                                   const double* __restrict mass,
+                                                   const double* __restrict com,
+                                                   const double* __restrict inertia,
+                                                   CaseOutputs out, std::uint32_t* __restrict ok) {
+  for (std::size_t i = 0; i < n; ++i) {
+    const double L = in.L[i];
+    const double ball_m = (kUniform ? in.ball_m[0] : in.ball_m[i]);
+    const double ball_v = (kUniform ? in.ball_v[0] : in.ball_v[i]);
+    const double cor = (kUniform ? in.cor[0] : in.cor[i]);
+    const double T = (kUniform ? in.T[0] : in.T[i]);
+    // Inside validate()'s ranges and paper_racquet()'s, with margins where a
+    // bound is on a derived number (an inertia that must not underflow).
+    const bool settings =
+        kUniform || settings_in_range(in.hand_m[i], in.Me[i], ball_m, ball_v, cor, T);
+    const bool inputs =
+        within(L, 1e-3, kMaxLength_m) & within(in.M[i], kMinImplementMass_kg, kMaxMass_kg) &
+        within(in.r[i], 1e-6, 1e6) & within(mass[i], kMinImplementMass_kg, kMaxMass_kg) &
+        within((kUniform ? in.hand_x[0] : in.hand_x[i]), 0.0, L) & within(in.x[i], 0.0, L);
+    // evaluate_settled_valid()'s finite results (the system's inertia through
+    // the centre of percussion, which divides by it), the inertia a normal
+    // number as section_mass_properties() requires.
+    const double arm = kSwingweightAxisFromButt_m - com[i];
+    const double swingweight = inertia[i] + mass[i] * arm * arm;  // inertia_about()
+    const bool results = finite(mass[i]) & finite(swingweight) & finite(out.m_eff[i]) &
+                         finite(out.e_A[i]) & finite(out.J[i]) & finite(out.F0[i]) &
+                         finite(out.cop[i]) & finite(out.ratio[i]) & finite(out.F_w[i]) &
+                         (inertia[i] >= std::numeric_limits<double>::min()) & finite(inertia[i]);
+    ok[i] = settings & inputs & results &
+            keeps_laws(ball_m, ball_v, cor, out.m_eff[i], out.e_A[i], out.J[i], out.F0[i], T);
+  }
+}
+
 // The bodies of n paper racquets (kernel::paper_racquet_body()).
 SWEETSPOT_AVX2_CLONE
 void paper_bodies(std::size_t n, const double* __restrict L, const double* __restrict M,
@@ -243,44 +338,37 @@ void paper_bodies(std::size_t n, const double* __restrict L, const double* __res
   }
 }
 
-struct CaseInputs {
-  const double *L, *M, *r, *hand_m, *hand_x, *Me, *ball_m, *ball_v, *cor, *T, *x;
-};
-struct CaseOutputs {
-  const double *m_eff, *e_A, *J, *F0, *cop, *ratio, *F_w;
-};
-
-// 1 where case i is one evaluate() answers with these numbers (see
-// paper_rigid_outcomes()), 0 where it leaves it to evaluate().
+// cases_body() with a setting per case, in two loops (GCC vectorises each, not their fusion):
+// the bodies, then rigid_outcomes().
+void cases_each(std::size_t n, CaseInputs in, CaseOutputs out, double* __restrict mass,
+                double* __restrict com, double* __restrict inertia) {
+  paper_bodies(n, in.L, in.M, in.r, mass, com, inertia);
+  const auto span = [n](const double* values) { return std::span<const double>(values, n); };
+  const auto into = [n](double* values) { return std::span<double>(values, n); };
+  rigid_outcomes(RigidCases{span(mass), span(com), span(inertia), span(in.hand_x), span(in.hand_m),
+                            span(in.Me), span(in.ball_m), span(in.ball_v), span(in.cor), span(in.T),
+                            span(in.x)},
+                 RigidOutcomes{into(out.m_eff), into(out.e_A), into(out.J), into(out.F0),
+                               into(out.cop), into(out.ratio), into(out.F_w)});
+}
 SWEETSPOT_AVX2_CLONE
-void answerable(std::size_t n, CaseInputs in, const double* __restrict mass,
-                const double* __restrict com, const double* __restrict inertia, CaseOutputs out,
-                std::uint32_t* __restrict ok) {
-  for (std::size_t i = 0; i < n; ++i) {
-    const double L = in.L[i];
-    // Inside validate()'s ranges and paper_racquet()'s, with margins where a
-    // bound is on a derived number (an inertia that must not underflow).
-    const bool inputs =
-        within(L, 1e-3, kMaxLength_m) & within(in.M[i], kMinImplementMass_kg, kMaxMass_kg) &
-        within(in.r[i], 1e-6, 1e6) & within(mass[i], kMinImplementMass_kg, kMaxMass_kg) &
-        within(in.hand_m[i], 0.0, kMaxMass_kg) & within(in.hand_x[i], 0.0, L) &
-        within(in.Me[i], 0.0, kMaxForearmMass_kg) &
-        within(in.ball_m[i], kMinBallMass_kg, kMaxMass_kg) &
-        within(in.ball_v[i], kMinSpeed_m_s, kMaxSpeed_m_s) & within(in.cor[i], 0.0, 1.0) &
-        within(in.T[i], kMinDuration_s, kMaxDuration_s) & within(in.x[i], 0.0, L);
-    // evaluate_settled_valid()'s finite results (the system's inertia through
-    // the centre of percussion, which divides by it), the inertia a normal
-    // number as section_mass_properties() requires.
-    const double arm = kSwingweightAxisFromButt_m - com[i];
-    const double swingweight = inertia[i] + mass[i] * arm * arm;  // inertia_about()
-    const bool results = finite(mass[i]) & finite(swingweight) & finite(out.m_eff[i]) &
-                         finite(out.e_A[i]) & finite(out.J[i]) & finite(out.F0[i]) &
-                         finite(out.cop[i]) & finite(out.ratio[i]) & finite(out.F_w[i]) &
-                         (inertia[i] >= std::numeric_limits<double>::min()) & finite(inertia[i]);
-    ok[i] = inputs & results &
-            keeps_laws(in.ball_m[i], in.ball_v[i], in.cor[i], out.m_eff[i], out.e_A[i], out.J[i],
-                       out.F0[i], in.T[i]);
-  }
+void cases_uniform(std::size_t n, CaseInputs in, CaseOutputs out, double* __restrict mass,
+                   double* __restrict com, double* __restrict inertia) {
+  cases_body(n, in.L, in.M, in.r, in.x, in.hand_m[0], in.hand_x[0], in.Me[0], in.ball_m[0],
+             in.ball_v[0], in.cor[0], in.T[0], out.m_eff, out.e_A, out.J, out.F0, out.cop,
+             out.ratio, out.F_w, mass, com, inertia);
+}
+SWEETSPOT_AVX2_CLONE
+void answerable_each(std::size_t n, CaseInputs in, const double* __restrict mass,
+                     const double* __restrict com, const double* __restrict inertia,
+                     CaseOutputs out, std::uint32_t* __restrict ok) {
+  answerable_body<false>(n, in, mass, com, inertia, out, ok);
+}
+SWEETSPOT_AVX2_CLONE
+void answerable_uniform(std::size_t n, CaseInputs in, const double* __restrict mass,
+                        const double* __restrict com, const double* __restrict inertia,
+                        CaseOutputs out, std::uint32_t* __restrict ok) {
+  answerable_body<true>(n, in, mass, com, inertia, out, ok);
 }
 
 #undef SWEETSPOT_AVX2_CLONE
@@ -297,15 +385,28 @@ void paper_rigid_outcomes(const PaperRigidCases& in, const RigidOutcomes& out,
                                   std::to_string(n));
     }
   };
+  const std::span<const double> settings[] = {
+      in.hand_mass_kg,     in.hand_center_from_butt_m, in.forearm_equivalent_mass_kg,
+      in.ball_mass_kg,     in.ball_speed_m_s,          in.cor,
+      in.impact_duration_s};
+  const bool uniform = std::all_of(std::begin(settings), std::end(settings),
+                                   [](std::span<const double> s) { return s.size() == 1; });
+  const auto check_setting = [&](std::span<const double> s, const char* name) {
+    if (s.size() != n && s.size() != 1) {
+      throw std::invalid_argument(std::string("paper_rigid_outcomes: ") + name + " has " +
+                                  std::to_string(s.size()) +
+                                  " elements, expected 1 or length_m's " + std::to_string(n));
+    }
+  };
   check(in.mass_kg.size(), "mass_kg");
   check(in.head_to_handle_mass_ratio.size(), "head_to_handle_mass_ratio");
-  check(in.hand_mass_kg.size(), "hand_mass_kg");
-  check(in.hand_center_from_butt_m.size(), "hand_center_from_butt_m");
-  check(in.forearm_equivalent_mass_kg.size(), "forearm_equivalent_mass_kg");
-  check(in.ball_mass_kg.size(), "ball_mass_kg");
-  check(in.ball_speed_m_s.size(), "ball_speed_m_s");
-  check(in.cor.size(), "cor");
-  check(in.impact_duration_s.size(), "impact_duration_s");
+  check_setting(in.hand_mass_kg, "hand_mass_kg");
+  check_setting(in.hand_center_from_butt_m, "hand_center_from_butt_m");
+  check_setting(in.forearm_equivalent_mass_kg, "forearm_equivalent_mass_kg");
+  check_setting(in.ball_mass_kg, "ball_mass_kg");
+  check_setting(in.ball_speed_m_s, "ball_speed_m_s");
+  check_setting(in.cor, "cor");
+  check_setting(in.impact_duration_s, "impact_duration_s");
   check(in.impact_from_butt_m.size(), "impact_from_butt_m");
   check(out.effective_mass_kg.size(), "effective_mass_kg");
   check(out.apparent_cor.size(), "apparent_cor");
@@ -315,44 +416,54 @@ void paper_rigid_outcomes(const PaperRigidCases& in, const RigidOutcomes& out,
   check(out.wrist_force_ratio.size(), "wrist_force_ratio");
   check(out.peak_wrist_force_N.size(), "peak_wrist_force_N");
   check(answered.size(), "answered");
-  // A block at a time: the bodies into arrays, the cases' outcomes by
-  // rigid_outcomes() (its vectorised loop), then the checks.
+  if (uniform &&
+      !settings_in_range(in.hand_mass_kg[0], in.forearm_equivalent_mass_kg[0], in.ball_mass_kg[0],
+                         in.ball_speed_m_s[0], in.cor[0], in.impact_duration_s[0])) {
+    std::fill(answered.begin(), answered.end(), static_cast<unsigned char>(0));
+    return;
+  }
+  // A block at a time: the cases' outcomes and bodies, then the checks. A
+  // setting given once where others are given per case is spread over the block.
   constexpr std::size_t kBlock = 256;
   double mass[kBlock], com[kBlock], inertia[kBlock];
+  double spread[std::size(settings)][kBlock];
   std::uint32_t ok[kBlock];
   for (std::size_t begin = 0; begin < n; begin += kBlock) {
     const std::size_t count = std::min(kBlock, n - begin);
-    const auto part = [begin, count](std::span<const double> s) { return s.subspan(begin, count); };
-    const auto part_out = [begin, count](std::span<double> s) { return s.subspan(begin, count); };
+    const double* each[std::size(settings)];
+    for (std::size_t k = 0; k < std::size(settings); ++k) {
+      if (uniform) {
+        each[k] = settings[k].data();
+      } else if (settings[k].size() == 1) {
+        std::fill(spread[k], spread[k] + count, settings[k][0]);
+        each[k] = spread[k];
+      } else {
+        each[k] = settings[k].data() + begin;
+      }
+    }
     const CaseInputs c{in.length_m.data() + begin,
                        in.mass_kg.data() + begin,
                        in.head_to_handle_mass_ratio.data() + begin,
-                       in.hand_mass_kg.data() + begin,
-                       in.hand_center_from_butt_m.data() + begin,
-                       in.forearm_equivalent_mass_kg.data() + begin,
-                       in.ball_mass_kg.data() + begin,
-                       in.ball_speed_m_s.data() + begin,
-                       in.cor.data() + begin,
-                       in.impact_duration_s.data() + begin,
-                       in.impact_from_butt_m.data() + begin};
-    paper_bodies(count, c.L, c.M, c.r, mass, com, inertia);
-    rigid_outcomes(
-        RigidCases{std::span<const double>(mass, count), std::span<const double>(com, count),
-                   std::span<const double>(inertia, count), part(in.hand_center_from_butt_m),
-                   part(in.hand_mass_kg), part(in.forearm_equivalent_mass_kg),
-                   part(in.ball_mass_kg), part(in.ball_speed_m_s), part(in.cor),
-                   part(in.impact_duration_s), part(in.impact_from_butt_m)},
-        RigidOutcomes{part_out(out.effective_mass_kg), part_out(out.apparent_cor),
-                      part_out(out.impulse_N_s), part_out(out.peak_impact_force_N),
-                      part_out(out.cop_hand_from_butt_m), part_out(out.wrist_force_ratio),
-                      part_out(out.peak_wrist_force_N)});
-    answerable(
-        count, c, mass, com, inertia,
-        CaseOutputs{out.effective_mass_kg.data() + begin, out.apparent_cor.data() + begin,
-                    out.impulse_N_s.data() + begin, out.peak_impact_force_N.data() + begin,
-                    out.cop_hand_from_butt_m.data() + begin, out.wrist_force_ratio.data() + begin,
-                    out.peak_wrist_force_N.data() + begin},
-        ok);
+                       in.impact_from_butt_m.data() + begin,
+                       each[0],
+                       each[1],
+                       each[2],
+                       each[3],
+                       each[4],
+                       each[5],
+                       each[6]};
+    const CaseOutputs o{
+        out.effective_mass_kg.data() + begin,    out.apparent_cor.data() + begin,
+        out.impulse_N_s.data() + begin,          out.peak_impact_force_N.data() + begin,
+        out.cop_hand_from_butt_m.data() + begin, out.wrist_force_ratio.data() + begin,
+        out.peak_wrist_force_N.data() + begin};
+    if (uniform) {
+      cases_uniform(count, c, o, mass, com, inertia);
+      answerable_uniform(count, c, mass, com, inertia, o, ok);
+    } else {
+      cases_each(count, c, o, mass, com, inertia);
+      answerable_each(count, c, mass, com, inertia, o, ok);
+    }
     for (std::size_t i = 0; i < count; ++i) answered[begin + i] = static_cast<unsigned char>(ok[i]);
   }
 }

@@ -127,8 +127,15 @@ void RigidColumns::run(std::span<const ColumnView> columns, std::size_t from, st
     for (std::size_t k = 0; k < wanted.size(); ++k) {
       if (const int slot = kKernelSlot[wanted[k]]; slot >= 0) kernel_out[slot] = outputs[k] + begin;
     }
+    // A setting no column varies (none, or a scalar's) is one value for every
+    // row, checked once.
     const auto in = [&](Role r) {
-      return std::span<const double>(values[static_cast<std::size_t>(r)], n);
+      const auto role = static_cast<std::size_t>(r);
+      const bool constant =
+          column_[role] < 0 || columns[static_cast<std::size_t>(column_[role])].stride == 0;
+      const bool once = constant && r != Role::kLength && r != Role::kMass && r != Role::kRatio &&
+                        r != Role::kImpact;
+      return std::span<const double>(values[role], once ? 1 : n);
     };
     const auto out = [&](std::size_t slot) { return std::span<double>(kernel_out[slot], n); };
     unsigned char* ok = answered.data() + (begin - from);
@@ -147,8 +154,13 @@ void RigidColumns::run(std::span<const ColumnView> columns, std::size_t from, st
                          std::span<unsigned char>(ok, n));
     // The reader refuses an impact given off the implement, whatever x is.
     if (impact_from_tip_) {
-      for (std::size_t i = 0; i < n; ++i)
-        ok[i] &= static_cast<unsigned char>((impact[i] >= 0.0) & (impact[i] <= L[i]));
+      const double* __restrict from_tip = impact;
+      const double* __restrict length = L;
+      unsigned char* __restrict answered_here = ok;  // a char may alias the columns otherwise
+      for (std::size_t i = 0; i < n; ++i) {
+        answered_here[i] = static_cast<unsigned char>(
+            answered_here[i] & ((from_tip[i] >= 0.0) & (from_tip[i] <= length[i])));
+      }
     }
     const double* speed = values[static_cast<std::size_t>(Role::kBallSpeed)];
     for (std::size_t k = 0; k < wanted.size(); ++k) {

@@ -3,6 +3,7 @@
 #include "sweetspot/evaluate.hpp"
 
 #include <array>
+#include <bit>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdint>
@@ -576,6 +577,81 @@ TEST_CASE("Paper racquets column-wise: every case answered is evaluate()'s, bit 
   // Both kinds of case are drawn often enough for the test to mean something.
   CHECK(answers > n / 10);
   CHECK(refusals > n / 10);
+}
+
+TEST_CASE("paper_rigid_outcomes: a setting given once is that setting in every case, bit for bit") {
+  std::mt19937_64 random(1861);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  constexpr std::size_t n = 3001;  // not a whole number of blocks
+  std::vector<double> L(n), M(n), r(n), x(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    L[i] = 0.3 + 0.9 * u(random);
+    M[i] = i % 97 == 0 ? -0.3 : 0.05 + 1.4 * u(random);  // some cases refused
+    r[i] = 0.1 + 2.9 * u(random);
+    x[i] = i % 89 == 0 ? 1.01 * L[i] : L[i] * u(random);
+  }
+  // hand mass, hand place, forearm, ball mass, ball speed, COR, duration: the
+  // paper's, then each out of its range once (every case left to evaluate()).
+  const std::vector<std::array<double, 7>> settings = {
+      {0.3, 0.07, 0.5, 0.057, 50.0, 0.8, 0.004},       {0.0, 0.0, 0.0, 0.16, 5.0, 1.0, 0.001},
+      {-0.1, 0.07, 0.5, 0.057, 50.0, 0.8, 0.004},      {0.3, 0.07, 2e12, 0.057, 50.0, 0.8, 0.004},
+      {0.3, 0.07, 0.5, 0.0, 50.0, 0.8, 0.004},         {0.3, 0.07, 0.5, 0.057, 2e4, 0.8, 0.004},
+      {0.3, 0.07, 0.5, 0.057, 50.0, 1.0000001, 0.004}, {0.3, 0.07, 0.5, 0.057, 50.0, 0.8, 0.0}};
+  for (const auto& s : settings) {
+    INFO("settings " << s[0] << ' ' << s[1] << ' ' << s[2] << ' ' << s[3] << ' ' << s[4] << ' '
+                     << s[5] << ' ' << s[6]);
+    std::vector<std::vector<double>> each(7);
+    std::vector<std::vector<double>> once(7);
+    for (std::size_t k = 0; k < 7; ++k) {
+      each[k].assign(n, s[k]);
+      once[k].assign(1, s[k]);
+    }
+    const auto run = [&](const std::vector<std::vector<double>>& given,
+                         std::vector<std::vector<double>>& out, std::vector<unsigned char>& ok) {
+      out.assign(7, std::vector<double>(n));
+      ok.assign(n, 2);
+      paper_rigid_outcomes(PaperRigidCases{L, M, r, given[0], given[1], given[2], given[3],
+                                           given[4], given[5], given[6], x},
+                           RigidOutcomes{out[0], out[1], out[2], out[3], out[4], out[5], out[6]},
+                           ok);
+    };
+    std::vector<std::vector<double>> by_case, by_once, by_mixed;
+    std::vector<unsigned char> ok_case, ok_once, ok_mixed;
+    run(each, by_case, ok_case);
+    run(once, by_once, ok_once);
+    std::vector<std::vector<double>> mixed = once;
+    mixed[4] = each[4];  // the ball's speed per case, the rest once
+    run(mixed, by_mixed, ok_mixed);
+    CHECK(ok_once == ok_case);
+    CHECK(ok_mixed == ok_case);
+    std::size_t answered = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!ok_case[i]) continue;
+      ++answered;
+      for (std::size_t k = 0; k < 7; ++k) {
+        INFO("case " << i << ", output " << k);
+        CHECK(std::bit_cast<std::uint64_t>(by_once[k][i]) ==
+              std::bit_cast<std::uint64_t>(by_case[k][i]));
+        CHECK(std::bit_cast<std::uint64_t>(by_mixed[k][i]) ==
+              std::bit_cast<std::uint64_t>(by_case[k][i]));
+      }
+    }
+    const bool valid =
+        s[0] >= 0.0 && s[2] < 1e12 && s[3] > 0.0 && s[4] < 1e4 && s[5] <= 1.0 && s[6] > 0.0;
+    if (valid) {
+      CHECK(answered > n / 2);
+      CHECK(answered < n);  // the cases drawn to be refused are
+    } else {
+      CHECK(answered == 0);
+    }
+  }
+  // A setting's span holds one value or one per case.
+  std::vector<double> two(2, 0.3), one(1, 0.3), out(n);
+  std::vector<unsigned char> ok(n);
+  CHECK_THROWS_AS(
+      paper_rigid_outcomes(PaperRigidCases{L, M, r, two, one, one, one, one, one, one, x},
+                           RigidOutcomes{out, out, out, out, out, out, out}, ok),
+      std::invalid_argument);
 }
 
 }  // namespace sweetspot

@@ -272,3 +272,87 @@ def test_outputs_argument_is_checked():
     every = sweetspot.evaluate_many(base, columns)
     assert np.array_equal(some["swingweight_kg_cm2"], every["swingweight_kg_cm2"])
     assert np.array_equal(some["apparent_cor"], every["apparent_cor"])
+
+
+@pytest.mark.parametrize("hostile", [False, True])
+def test_columnwise_with_the_settings_of_the_base(hostile):
+    """Only the racquet and the impact point varied (the settings the base's, checked once
+    for every row): the column-wise path equals every output's, error for error."""
+    base = ROOT / "designs" / "table1" / "row1.json"
+    every = paper_columns(3000, 11, hostile)
+    columns = {k: every[k] for k in ("implement.length_m", "implement.mass_g",
+                                     "implement.head_to_handle_mass_ratio", "impact.from_tip_m")}
+    fast = sweetspot.evaluate_many(base, columns, threads=1, outputs=PAPER_OUTPUTS)
+    full = sweetspot.evaluate_many(base, columns, threads=1)
+    assert np.array_equal(fast["ok"], full["ok"])
+    assert list(fast["error"]) == list(full["error"])
+    for name in PAPER_OUTPUTS:
+        assert np.array_equal(fast[name], full[name], equal_nan=True), name
+    assert fast["ok"].sum() > (2000 if hostile else 2999)
+
+
+def test_out_arrays_are_written_and_returned():
+    """out= takes the caller's arrays: the same numbers as fresh ones, in those arrays."""
+    base = ROOT / "designs" / "table1" / "row1.json"
+    columns = paper_columns(1000, 5, hostile=True)
+    fresh = sweetspot.evaluate_many(base, columns, outputs=PAPER_OUTPUTS)
+    out = {name: np.full(1000, 7.0) for name in PAPER_OUTPUTS[:2]}
+    given = sweetspot.evaluate_many(base, columns, outputs=PAPER_OUTPUTS, out=out)
+    for name in PAPER_OUTPUTS:
+        assert np.array_equal(given[name], fresh[name], equal_nan=True), name
+    for name, array in out.items():
+        assert given[name] is array
+    assert list(given["error"]) == list(fresh["error"])
+
+
+def test_out_arrays_refused_with_the_reason():
+    base = ROOT / "designs" / "table1" / "row1.json"
+    columns = paper_columns(10, 5)
+    name = PAPER_OUTPUTS[0]
+    for bad, words in ((np.zeros(10, dtype=np.float32), "float64"),
+                       (np.zeros(20)[::2], "contiguous"),
+                       (np.zeros(9), "9 elements, expected 10"),
+                       ([0.0] * 10, "NumPy array"),
+                       (columns["implement.length_m"], "shares memory with the column")):
+        with pytest.raises(sweetspot.InputError, match=words):
+            sweetspot.evaluate_many(base, columns, outputs=PAPER_OUTPUTS, out={name: bad})
+    frozen = np.zeros(10)
+    frozen.setflags(write=False)
+    with pytest.raises(sweetspot.InputError, match="writable"):
+        sweetspot.evaluate_many(base, columns, outputs=PAPER_OUTPUTS, out={name: frozen})
+    shared = np.zeros(10)
+    with pytest.raises(sweetspot.InputError, match="shares memory with another output"):
+        sweetspot.evaluate_many(base, columns, outputs=PAPER_OUTPUTS[:2],
+                                out={PAPER_OUTPUTS[0]: shared, PAPER_OUTPUTS[1]: shared})
+    with pytest.raises(sweetspot.InputError, match="not an output asked for"):
+        sweetspot.evaluate_many(base, columns, outputs=PAPER_OUTPUTS[:1],
+                                out={"cor": np.zeros(10)})
+
+
+def test_error_column_is_read_only():
+    base = ROOT / "designs" / "table1" / "row1.json"
+    for hostile in (False, True):
+        got = sweetspot.evaluate_many(base, paper_columns(50, 3, hostile), outputs=PAPER_OUTPUTS)
+        assert got["error"].shape == (50,)
+        assert not got["error"].flags.writeable
+        assert all(isinstance(e, str) for e in got["error"])
+        assert [e == "" for e in got["error"]] == list(got["ok"])
+
+
+def test_columnwise_with_a_scalar_setting():
+    """A scalar column (one ball speed for every row) is the same as that speed in an array."""
+    base = ROOT / "designs" / "table1" / "row1.json"
+    columns = paper_columns(700, 13, hostile=True)
+    racquet = {k: columns[k] for k in ("implement.length_m", "implement.mass_g",
+                                       "implement.head_to_handle_mass_ratio",
+                                       "impact.from_tip_m")}
+    for speed in (30.0, 0.0, 2e4):  # in range, and refused for every row
+        scalar = sweetspot.evaluate_many(base, {**racquet, "ball.speed_m_s": speed},
+                                         outputs=PAPER_OUTPUTS)
+        array = sweetspot.evaluate_many(base, {**racquet, "ball.speed_m_s": np.full(700, speed)},
+                                        outputs=PAPER_OUTPUTS)
+        assert np.array_equal(scalar["ok"], array["ok"])
+        assert list(scalar["error"]) == list(array["error"])
+        for name in PAPER_OUTPUTS:
+            assert np.array_equal(scalar[name], array[name], equal_nan=True), name
+        assert scalar["ok"].any() == (speed == 30.0)
