@@ -205,6 +205,27 @@ struct ModalResult {
 ModalResult free_modes(const std::vector<Section>& sections,
                        const std::vector<PointMass>& point_masses, const ModeOptions& options = {});
 
+// A support of the beam, as the laboratory holds an implement: clamped over
+// a stretch (a vice on the handle; a head clamped for the string-bed drop
+// test), w = w' = 0 there, or pinned at a point (a bat on the standards'
+// pivot 6 in from the knob), w = 0 there and free to turn.
+struct BeamSupport {
+  enum class Kind { kClamped, kPinned };
+  Kind kind = Kind::kClamped;
+  double from_m = 0.0;  // from the butt: the clamp's start, or the pivot
+  double to_m = 0.0;    // the clamp's end (>= from_m; a point clamp when equal); ignored pinned
+};
+
+// Modes of the beam on its support by finite elements (options.method must be
+// kFiniteElement): the DOFs the support fixes removed and, pinned, the rigid
+// turn about the pivot deflated, so every mode reported is flexible. Nodes
+// are the interior zeros of w outside a clamp (a pivot is one). Throws
+// std::invalid_argument as free_modes(), or for a support off the beam or a
+// clamp ending before it starts.
+ModalResult supported_modes(const std::vector<Section>& sections,
+                            const std::vector<PointMass>& point_masses, const BeamSupport& support,
+                            const ModeOptions& options);
+
 // The hand as a rigid body (Cross 2004 Sec. IV: "gripped firmly by one hand"),
 // joined to the handle over [grip_start_m, grip_start_m + grip_length_m] by a
 // distributed transverse spring k and dashpot c acting on the relative

@@ -824,3 +824,130 @@ TEST_CASE("A Timoshenko fundamental above the shear beam's bound is refused, not
 }
 
 }  // namespace sweetspot
+
+// ------------------------------------------------------------------ supports
+
+namespace sweetspot {
+namespace {
+
+// Root of g near z by Newton (the closed-form equations of the supported
+// uniform beam, solved here independently of the finite elements).
+template <class G, class DG>
+double newton(G g, DG dg, double z) {
+  for (int i = 0; i < 60; ++i) z -= g(z) / dg(z);
+  return z;
+}
+// Clamped-free: cos z cosh z = -1.
+double clamped_free_root(double guess) {
+  return newton([](double z) { return std::cos(z) * std::cosh(z) + 1.0; },
+                [](double z) { return -std::sin(z) * std::cosh(z) + std::cos(z) * std::sinh(z); },
+                guess);
+}
+// Pinned-free: tan z = tanh z, written sin z cosh z - cos z sinh z = 0.
+double pinned_free_root(double guess) {
+  return newton([](double z) { return std::sin(z) * std::cosh(z) - std::cos(z) * std::sinh(z); },
+                [](double z) { return 2.0 * std::sin(z) * std::sinh(z); }, guess);
+}
+
+// Fine enough that the cubic elements' error, (beta h)^4 / 1440, is ~1e-9 at
+// the third mode: the tolerance below is the closed form's, not the mesh's.
+constexpr int kSupportElements = 240;
+constexpr double kSupportTol = 1e-7;
+
+ModeOptions supported_fe(int modes = 3) {
+  ModeOptions o = fe(modes);
+  o.elements = kSupportElements;
+  return o;
+}
+
+}  // namespace
+
+TEST_CASE("A beam clamped at one end has the cantilever's frequencies, cos z cosh z = -1") {
+  const double L = 0.7, m = 0.35, EI = 250.0;
+  const double guesses[3] = {1.875, 4.694, 7.855};
+  for (const double at : {0.0, L}) {  // the butt in a vice, or the tip (the same by symmetry)
+    INFO("clamped at " << at << " m");
+    const ModalResult r =
+        supported_modes({{L, m, EI}}, {}, {BeamSupport::Kind::kClamped, at, at}, supported_fe());
+    REQUIRE(r.modes.size() == 3);
+    for (int k = 0; k < 3; ++k) {
+      const double f = f_closed_form(clamped_free_root(guesses[k]), L, EI, m / L);
+      CHECK(r.modes[k].frequency_Hz == Approx(f).epsilon(kSupportTol));
+      CHECK(r.modes[k].nodes_from_butt_m.size() == static_cast<std::size_t>(k));
+    }
+  }
+}
+
+TEST_CASE("A clamp over a stretch leaves a cantilever of the rest of the beam") {
+  const double L = 0.7, a = 0.12, m = 0.35, EI = 250.0;
+  const ModalResult r =
+      supported_modes({{L, m, EI}}, {}, {BeamSupport::Kind::kClamped, 0.0, a}, supported_fe(2));
+  REQUIRE(r.modes.size() == 2);
+  CHECK(r.modes[0].frequency_Hz ==
+        Approx(f_closed_form(clamped_free_root(1.875), L - a, EI, m / L)).epsilon(kSupportTol));
+  CHECK(r.modes[1].frequency_Hz ==
+        Approx(f_closed_form(clamped_free_root(4.694), L - a, EI, m / L)).epsilon(kSupportTol));
+  // No node is reported inside the clamp, where w is zero throughout.
+  for (const double x : r.modes[1].nodes_from_butt_m) CHECK(x > a);
+  CHECK(std::abs(mode_shape_at(r.modes[0], 0.5 * a)) == 0.0);
+}
+
+TEST_CASE("A beam pinned at its end has tan z = tanh z and its node where the shape says") {
+  const double L = 0.8, m = 0.4, EI = 300.0;
+  const ModalResult r =
+      supported_modes({{L, m, EI}}, {}, {BeamSupport::Kind::kPinned, 0.0, 0.0}, supported_fe());
+  REQUIRE(r.modes.size() == 3);
+  const double guesses[3] = {3.927, 7.069, 10.21};
+  for (int k = 0; k < 3; ++k) {
+    const double f = f_closed_form(pinned_free_root(guesses[k]), L, EI, m / L);
+    CHECK(r.modes[k].frequency_Hz == Approx(f).epsilon(kSupportTol));
+  }
+  // The first mode's shape sin(b x) + (sin z / sinh z) sinh(b x), b = z / L:
+  // its one interior zero, found by bisection on the closed form.
+  const double z = pinned_free_root(3.927), b = z / L, c = std::sin(z) / std::sinh(z);
+  const auto w = [&](double x) { return std::sin(b * x) + c * std::sinh(b * x); };
+  double lo = 0.3 * L, hi = 0.95 * L;
+  REQUIRE(w(lo) * w(hi) < 0.0);
+  for (int i = 0; i < 200; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (w(lo) * w(mid) <= 0.0 ? hi : lo) = mid;
+  }
+  REQUIRE(r.modes[0].nodes_from_butt_m.size() == 1);
+  CHECK(r.modes[0].nodes_from_butt_m[0] == Approx(lo).margin(kSubMicrometre_m));
+}
+
+TEST_CASE("A pivot is a node, and at a free mode's node it leaves that mode as it was") {
+  const double L = 0.7, m = 0.35, EI = 250.0;
+  const ModalResult free = free_modes({{L, m, EI}}, {}, exact(2));
+  // At the middle: the free beam's antisymmetric second mode does not move
+  // there, so it is a mode of the pinned beam too; the pivot is a node of each mode.
+  const ModalResult middle = supported_modes(
+      {{L, m, EI}}, {}, {BeamSupport::Kind::kPinned, 0.5 * L, 0.0}, supported_fe(2));
+  REQUIRE(middle.modes.size() == 2);
+  bool found = false;
+  for (const Mode& mode : middle.modes) {
+    found = found || mode.frequency_Hz == Approx(free.modes[1].frequency_Hz).epsilon(kSupportTol);
+    CHECK(std::abs(mode_shape_at(mode, 0.5 * L)) < 1e-12);
+    CHECK(std::any_of(mode.nodes_from_butt_m.begin(), mode.nodes_from_butt_m.end(),
+                      [&](double x) { return std::abs(x - 0.5 * L) < kSubMicrometre_m; }));
+  }
+  CHECK(found);
+  // At the fundamental's node (the sweet spot of a bat on a pivot).
+  const double node = free.modes[0].nodes_from_butt_m[0];
+  const ModalResult at_node =
+      supported_modes({{L, m, EI}}, {}, {BeamSupport::Kind::kPinned, node, 0.0}, supported_fe(1));
+  CHECK(at_node.modes[0].frequency_Hz == Approx(free.modes[0].frequency_Hz).epsilon(kSupportTol));
+}
+
+TEST_CASE(
+    "A support off the beam, a clamp ending before it starts, or the exact method are refused") {
+  const std::vector<Section> beam{{0.7, 0.35, 250.0}};
+  CHECK_THROWS_WITH(supported_modes(beam, {}, {BeamSupport::Kind::kPinned, 0.8, 0.0}, fe()),
+                    Catch::Contains("support.pivot_m") && Catch::Contains("0.8"));
+  CHECK_THROWS_WITH(supported_modes(beam, {}, {BeamSupport::Kind::kClamped, 0.3, 0.1}, fe()),
+                    Catch::Contains("support.to_m") && Catch::Contains("0.1"));
+  CHECK_THROWS_WITH(supported_modes(beam, {}, {BeamSupport::Kind::kClamped, 0.0, 0.0}, exact()),
+                    Catch::Contains("options.method"));
+}
+
+}  // namespace sweetspot
