@@ -1391,7 +1391,7 @@ TEST_CASE(
   CHECK(batch.err.find("--set: not with --batch") != std::string::npos);
 }
 
-TEST_CASE("compare A --set compares a design with its own variant; with two, both take it") {
+TEST_CASE("compare A --set compares a design with its own variant, with two, both take it") {
   const Sandbox box;
   const fs::path a = box.file("a.json", with_implement(R"("name": "A")"));
   const fs::path b = box.file("b.json", with_implement(R"("name": "B", "hand": {"mass_kg": 0.4})"));

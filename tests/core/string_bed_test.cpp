@@ -236,7 +236,7 @@ TEST_CASE("The tension for a stiffness or a ring, put back, gives it to round-of
   }
 }
 
-TEST_CASE("A 1.30 mm nylon string weighs 1.51 g/m; a string's mass grows as its gauge squared") {
+TEST_CASE("A 1.30 mm nylon string weighs 1.51 g/m, a string's mass grows as its gauge squared") {
   CHECK(string_linear_density(StringMaterial::kNylon, 1.30e-3) ==
         Approx(kDefaultStringLinearDensity_kg_m).epsilon(kRoundOff));
   CHECK(kDefaultStringLinearDensity_kg_m == Approx(1.5132e-3).epsilon(1e-4));

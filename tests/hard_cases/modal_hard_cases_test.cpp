@@ -210,7 +210,7 @@ TEST_CASE("Held in the hand, 2000 elements keep f1 within round-off of the conve
 }
 
 TEST_CASE(
-    "The default mesh stops refining at rel_tol 1e-8; tighter tolerances and bigger meshes are "
+    "The default mesh stops refining at rel_tol 1e-8, tighter tolerances and bigger meshes are "
     "refused") {
   // Where refinement stops: elements are sized so that (beta h)^4 / 1440 =
   // rel_tol / 2, and ModeOptions::validate() floors rel_tol at 1e-8 (there

@@ -444,7 +444,7 @@ TEST_CASE(
   CHECK(paper.provenance.at("impact/from_butt_m") == "default (5 cm from the tip)");
 }
 
-TEST_CASE("The implement's head size is the string bed's; a second, different one is refused") {
+TEST_CASE("The implement's head size is the string bed's, a second, different one is refused") {
   const auto collision = [](int sq_in) {
     const std::string text = R"({"implement": {"length_in": 27, "mass_g": 318, "balance_cm": 32.5,
         "swingweight_kg_cm2": 325, "headsize_sq_in": )" +

@@ -62,7 +62,7 @@ TEST_CASE("Clock positions: 12 alone, a 3-and-9 pair of pieces, the throat and t
         Approx(2 * 0.002 * r * r).epsilon(kRoundOff));
 }
 
-TEST_CASE("A measured twistweight is the polar inertia; an impact off the axis is read in cm") {
+TEST_CASE("A measured twistweight is the polar inertia, an impact off the axis is read in cm") {
   const DesignFile d = read(R"(, "twistweight_kg_cm2": 14.5)",
                             R"(, "impact": {"from_tip_cm": 17, "off_axis_cm": -4})");
   CHECK(*d.design.twistweight_kg_m2 == Approx(14.5e-4).epsilon(kRoundOff));

@@ -43,7 +43,7 @@ TEST_CASE("significant() keeps the digits asked for and never prints -0") {
 }
 
 TEST_CASE(
-    "A Markdown cell shows a pipe as the divides sign, never an escape; a CSV field is "
+    "A Markdown cell shows a pipe as the divides sign, never an escape, a CSV field is "
     "quoted only when it must be") {
   CHECK(md_cell("|F_w / F|") == "\u2223F_w / F\u2223");
   CHECK(csv_field("plain") == "plain");

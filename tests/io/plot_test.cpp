@@ -202,7 +202,9 @@ TEST_CASE("A plot as inline SVG: no XML prologue, its ids prefixed so two plots 
   CHECK(svg->find("<script") == std::string::npos);
 }
 
-TEST_CASE("An '&' in a title or a key is &amp; in the SVG, and entities stay as they are") {
+TEST_CASE(
+    "An '&' in a title or a key is escaped as an entity in the SVG, and entities stay as they "
+    "are") {
   Plot plot = two_points("Smith & Sons <pro>");
   plot.series[0].title = "lead & tape";
   std::string why;
@@ -375,7 +377,7 @@ TEST_CASE("Every output's axis shows its own unit, in people's units, and the fa
   }
 }
 
-TEST_CASE("A line that leaves the y range runs to its edge; a jump across a pole is not drawn") {
+TEST_CASE("A line that leaves the y range runs to its edge, a jump across a pole is not drawn") {
   Plot plot = two_points("edges");
   plot.y_range = std::pair{-4.0, 4.0};
   // Rising through the top edge between x = 2 (y = 2) and x = 3 (y = 10): it reaches 4 at 2.25,

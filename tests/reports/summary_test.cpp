@@ -67,7 +67,7 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "A racquet without an impact is hit at the centre of its strings; the paper's designs "
+    "A racquet without an impact is hit at the centre of its strings, the paper's designs "
     "keep 5 cm from the tip") {
   const io::DesignFile racquet = (design_from(kSpecSheet));
   CHECK(racquet.design.implement.length_m() - racquet.design.impact_from_butt_m ==

@@ -134,7 +134,7 @@ TEST_CASE("A byte-order mark opening a catalogue is not part of its first column
 }
 
 TEST_CASE(
-    "CSV fields are RFC 4180: quoted commas, doubled quotes and line breaks; a row keeps its first "
+    "CSV fields are RFC 4180: quoted commas, doubled quotes and line breaks, a row keeps its first "
     "line") {
   const Outcome out =
       run("name,implement.mass_kg\n\"A, \"\"tour\"\"\",0.25\n\"two\r\nlines\",\"0.3\"\nC,0.35\n");
@@ -509,7 +509,7 @@ std::vector<double> sorted_values(const Outcome& out, const std::string& output)
   return values;
 }
 
-TEST_CASE("Sorted rows come in the output's order, failed rows last; --top keeps the first N") {
+TEST_CASE("Sorted rows come in the output's order, failed rows last, --top keeps the first N") {
   std::string table = "name,implement.mass_g,impact.from_tip_cm\n";
   for (int i = 0; i < 60; ++i)
     table += "r" + std::to_string(i) + "," + std::to_string(250 + (i * 37) % 120) + "," +

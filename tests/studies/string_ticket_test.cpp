@@ -78,7 +78,7 @@ TEST_CASE("The pattern spaces the mains across the head's width and the crosses 
         Approx(string_bed_ring_frequency(bed(f))).epsilon(kRoundOff));
 }
 
-TEST_CASE("The bed holds the pull less its tension loss; a hybrid keeps its crosses' share") {
+TEST_CASE("The bed holds the pull less its tension loss, a hybrid keeps its crosses' share") {
   const io::DesignFile f = read(R"({"tension_loss": 0.3, "pattern": "16x19",
       "mains": {"material": "polyester", "gauge_mm": 1.25, "tension_lb": 52},
       "crosses": {"material": "multifilament", "gauge": "16", "tension_lb": 54}})");
