@@ -266,22 +266,18 @@ inline bool settings_in_range(double hand_m, double Me, double ball_m, double ba
     double* __restrict com, double* __restrict inertia) {
   for (std::size_t i = 0; i < n; ++i) {
     const kernel::System body = kernel::paper_racquet_body(L[i], M[i], r[i]);
-    const kernel::System s = kernel::with_point_mass(body.mass_kg, body.com_from_butt_m,
-                                                     body.I_cm_kg_m2, hand_x, hand_m);
-    const double effective =
-        kernel::effective_mass(body.mass_kg, body.com_from_butt_m, body.I_cm_kg_m2, x[i]);
-    const double apparent = kernel::apparent_cor(cor, effective, ball_m);
-    const double impulse = kernel::ball_impulse(ball_m, ball_v, apparent);
-    const double peak = kernel::half_sine_peak_force(impulse, T);
-    const double wrist =
-        kernel::wrist_force_ratio(s.mass_kg, s.com_from_butt_m, s.I_cm_kg_m2, Me, x[i]);
-    m_eff[i] = effective;
-    e_A[i] = apparent;
-    J[i] = impulse;
-    F0[i] = peak;
-    cop[i] = kernel::hand_held_cop_from_butt(s.mass_kg, s.com_from_butt_m, s.I_cm_kg_m2, 0.0);
-    ratio[i] = wrist;
-    F_w[i] = peak_wrist_force(wrist, peak);
+    const kernel::System held = kernel::with_point_mass(body.mass_kg, body.com_from_butt_m,
+                                                        body.I_cm_kg_m2, hand_x, hand_m);
+    const RigidOutcome o =
+        kernel::rigid_outcome<false>(body.mass_kg, body.com_from_butt_m, body.I_cm_kg_m2, held,
+                                     x[i], 0.0, Me, ball_m, ball_v, cor, T);
+    m_eff[i] = o.effective_mass_kg;
+    e_A[i] = o.apparent_cor;
+    J[i] = o.impulse_N_s;
+    F0[i] = o.peak_impact_force_N;
+    cop[i] = o.cop_hand_from_butt_m;
+    ratio[i] = o.wrist_force_ratio;
+    F_w[i] = o.peak_wrist_force_N;
     mass[i] = body.mass_kg;
     com[i] = body.com_from_butt_m;
     inertia[i] = body.I_cm_kg_m2;

@@ -127,17 +127,12 @@ RigidOutcome rigid_outcome(const RigidCase& c) {
 }
 
 RigidOutcome rigid_outcome(const RigidCase& c, const MassProperties& system) {
-  RigidOutcome o;
-  o.effective_mass_kg = kernel::twisted_effective_mass(effective_mass(c.body, c.impact_from_butt_m),
-                                                       c.impact_twist_per_kg);
-  o.apparent_cor = apparent_cor(c.cor, o.effective_mass_kg, c.ball_mass_kg);
-  o.impulse_N_s = ball_impulse(c.ball_mass_kg, c.ball_speed_m_s, o.apparent_cor);
-  o.peak_impact_force_N = half_sine_peak_force(o.impulse_N_s, c.impact_duration_s);
-  o.cop_hand_from_butt_m = hand_held_cop_from_butt(system).value_or(0.0);  // h > 0 in a valid case
-  o.wrist_force_ratio =
-      wrist_force_ratio(system, c.forearm_equivalent_mass_kg, c.impact_from_butt_m);
-  o.peak_wrist_force_N = peak_wrist_force(o.wrist_force_ratio, o.peak_impact_force_N);
-  return o;
+  detail::require_positive("impact_duration_s", c.impact_duration_s, "s");  // Eq. (15)
+  return kernel::rigid_outcome<true>(
+      c.body.mass_kg, c.body.com_from_butt_m, c.body.I_cm_kg_m2,
+      kernel::System{system.mass_kg, system.com_from_butt_m, system.I_cm_kg_m2},
+      c.impact_from_butt_m, c.impact_twist_per_kg, c.forearm_equivalent_mass_kg, c.ball_mass_kg,
+      c.ball_speed_m_s, c.cor, c.impact_duration_s);
 }
 
 namespace {
@@ -145,9 +140,7 @@ namespace {
 // One loop over arrays, every special case selected rather than branched on
 // (kernel::), so the compiler vectorises it; on x86-64 GCC also builds an AVX2
 // copy, picked at load time on a processor that has it. No FMA: the results
-// are those of the scalar functions, bit for bit. Without a twist (kTwist
-// false) its division is left out: M_eff / (1 + M_eff * 0) is M_eff exactly
-// for the finite M_eff of a valid case.
+// are those of the scalar functions, bit for bit (kernel::rigid_outcome()).
 // No AVX-512 copy: one built with -ffp-contract=off (without it GCC fuses
 // multiply-adds there and the results differ) gave the same results but was
 // no faster on an AMD EPYC with AVX-512: the loop's time goes to its eight
@@ -162,21 +155,17 @@ template <bool kTwist>
     double* __restrict J, double* __restrict F0, double* __restrict cop, double* __restrict ratio,
     double* __restrict F_w) {
   for (std::size_t i = 0; i < n; ++i) {
-    const kernel::System s = kernel::with_point_mass(M[i], c[i], I[i], hand_x[i], hand_m[i]);
-    const double axis = kernel::effective_mass(M[i], c[i], I[i], x[i]);
-    const double effective = kTwist ? kernel::twisted_effective_mass(axis, twist[i]) : axis;
-    const double apparent = kernel::apparent_cor(cor[i], effective, ball_m[i]);
-    const double impulse = kernel::ball_impulse(ball_m[i], ball_v[i], apparent);
-    const double peak = kernel::half_sine_peak_force(impulse, T[i]);
-    const double r =
-        kernel::wrist_force_ratio(s.mass_kg, s.com_from_butt_m, s.I_cm_kg_m2, Me[i], x[i]);
-    m_eff[i] = effective;
-    e_A[i] = apparent;
-    J[i] = impulse;
-    F0[i] = peak;
-    cop[i] = kernel::hand_held_cop_from_butt(s.mass_kg, s.com_from_butt_m, s.I_cm_kg_m2, 0.0);
-    ratio[i] = r;
-    F_w[i] = peak_wrist_force(r, peak);
+    const kernel::System held = kernel::with_point_mass(M[i], c[i], I[i], hand_x[i], hand_m[i]);
+    const RigidOutcome o =
+        kernel::rigid_outcome<kTwist>(M[i], c[i], I[i], held, x[i], kTwist ? twist[i] : 0.0, Me[i],
+                                      ball_m[i], ball_v[i], cor[i], T[i]);
+    m_eff[i] = o.effective_mass_kg;
+    e_A[i] = o.apparent_cor;
+    J[i] = o.impulse_N_s;
+    F0[i] = o.peak_impact_force_N;
+    cop[i] = o.cop_hand_from_butt_m;
+    ratio[i] = o.wrist_force_ratio;
+    F_w[i] = o.peak_wrist_force_N;
   }
 }
 

@@ -11,6 +11,8 @@
 #include <cstdint>
 #include <numbers>
 
+#include "sweetspot/rigid_impact.hpp"
+
 namespace sweetspot::kernel {
 
 // Implement plus a point mass m at x_m (Cross 2004 Eq. 14 and the parallel-axis
@@ -105,6 +107,32 @@ inline double wrist_force_ratio(double M, double h, double I, double Me, double 
                                                  (std::bit_cast<std::uint64_t>(general) & ~wrist));
   const double ratio = numerator / denominator;
   return Me == 0.0 ? 0.0 : ratio;
+}
+
+// One impact at x of the rigid model on a body (M, c, I) that is `held`
+// (the body with the hand, Eq. 14): Eqs. (17), (16), the impulse, (15), (13)
+// and (11), unchecked; the only place their order is written. rigid_outcome()
+// and the loops over many cases call it. Without a twist (kTwist false) its
+// division is left out: M_eff / (1 + M_eff * 0) is M_eff exactly for a finite
+// M_eff, so either gives the same bits there.
+template <bool kTwist>
+[[gnu::always_inline]] inline RigidOutcome rigid_outcome(double M, double c, double I,
+                                                         const System& held, double x,
+                                                         double twist_per_kg, double Me,
+                                                         double ball_m, double ball_v, double cor,
+                                                         double T) {
+  const double axis = effective_mass(M, c, I, x);
+  RigidOutcome o;
+  o.effective_mass_kg = kTwist ? twisted_effective_mass(axis, twist_per_kg) : axis;
+  o.apparent_cor = apparent_cor(cor, o.effective_mass_kg, ball_m);
+  o.impulse_N_s = ball_impulse(ball_m, ball_v, o.apparent_cor);
+  o.peak_impact_force_N = half_sine_peak_force(o.impulse_N_s, T);
+  o.cop_hand_from_butt_m =
+      hand_held_cop_from_butt(held.mass_kg, held.com_from_butt_m, held.I_cm_kg_m2, 0.0);
+  o.wrist_force_ratio =
+      wrist_force_ratio(held.mass_kg, held.com_from_butt_m, held.I_cm_kg_m2, Me, x);
+  o.peak_wrist_force_N = peak_wrist_force(o.wrist_force_ratio, o.peak_impact_force_N);
+  return o;
 }
 
 }  // namespace sweetspot::kernel
