@@ -183,12 +183,19 @@ inline constexpr int kCollisionModes = 6;
 // (rigid_impact.hpp); the flexible modes stay the bending modes (torsional
 // modes are not modelled). Nothing is added on the axis, so y = 0 is the
 // in-plane collision to the bit.
+// The design's support (Design::support) decides the frame: free, the free
+// modes and M_eff; hand, the hand-held modes (hand_held_response_model()) and
+// M_eff of implement and hand; handle clamped over the hand's grip, the
+// clamped modes and no rigid motion; pivoted, the pinned modes and 1/M_eff =
+// (x - p)^2 / I_p; head clamped, the strings on an immovable frame; a rigid
+// surface, the ball alone on an immovable plate (no strings, no implement).
 class DesignCollision {
  public:
   // Validates the design (validate()) and throws std::invalid_argument naming
   // the design's path: a given COR (frame/cor, Design::cor_given), a derived
   // one (frame/cor_rigid), no string tension (strings/tension_N) or no
-  // stiffness (frame/EI_N_m2).
+  // stiffness (frame/EI_N_m2) where the support needs them, an impact off the
+  // long axis on a rig that would twist (impact/off_axis_m).
   explicit DesignCollision(const Design& design, double rel_tol = 1e-6);
   // The same, with the free modes from `cache` (mode_cache.hpp).
   DesignCollision(const Design& design, double rel_tol, ModeCache& cache);
@@ -212,8 +219,9 @@ class DesignCollision {
  private:
   void init(double rel_tol, ModeCache& cache);
   Design design_;
-  ResponseModel model_;
-  StringBedDynamics bed_;
+  ResponseModel model_;                   // no modes for an immovable frame
+  bool immovable_ = false;                // head clamped or a rigid surface: rigid_frame()
+  std::optional<StringBedDynamics> bed_;  // none on a rigid surface
   std::optional<double> polar_inertia_kg_m2_;
 };
 

@@ -4,6 +4,7 @@
 // Defaults are the conditions of Cross (2004) Table I, top row.
 
 #include <optional>
+#include <string_view>
 
 #include "sweetspot/ball_contact.hpp"
 #include "sweetspot/beam_modes.hpp"
@@ -101,6 +102,33 @@ struct Ball {
       50.0;  // incident speed relative to the impact point [m/s], in [kMinSpeed_m_s, kMaxSpeed_m_s]
 };
 
+// What holds the implement when the ball hits it (docs/model.md, "Supports").
+// A player: kFree (the default, the paper's racquet: the hand a point mass
+// for Eqs. 8-14, the solved collision on the free frame, Cross 2004 Sec. VI)
+// or kHand (the same, the solved collision on the frame held by the hand's
+// grip, hand_held_response_model()). A laboratory's rig, which only the
+// solved collision answers and where nothing of the player applies:
+//  * kHeadClamped: the head held rigid, the ball on the strings of an
+//    immovable frame (the string-bed drop test);
+//  * kHandleClamped: the handle in a vice over the hand's grip, w = w' = 0
+//    there (Brody's clamped-handle measurements);
+//  * kPivot: free to turn about a pivot pivot_from_butt_m from the butt
+//    (the bat standards' pivot 6 in from the knob);
+//  * kRigidSurface: no implement, the ball onto a rigid plate (its own COR,
+//    contact time, compression and force history).
+struct Support {
+  enum class Kind { kFree, kHand, kHeadClamped, kHandleClamped, kPivot, kRigidSurface };
+  Kind kind = Kind::kFree;
+  double pivot_from_butt_m = 0.0;  // kPivot: [m], in [0, L]
+};
+
+// True for a laboratory's rig (no player).
+inline bool is_rig(const Support& support) { return support.kind >= Support::Kind::kHeadClamped; }
+
+// The design file's name of a support: "free", "hand", "head_clamped",
+// "handle_clamped", "pivot" (written {"pivot_from_butt_m": ...}), "rigid_surface".
+std::string_view to_string(Support::Kind kind);
+
 struct Design {
   Implement implement;
   double cor = 0.8;                  // frame COR e at the impact point, in [0, 1]
@@ -138,6 +166,7 @@ struct Design {
   // when absent, the impact is the laboratory's (the racquet at rest) and the
   // shot speed is the one kTypicalGroundstroke would give.
   std::optional<Swing> swing{};
+  Support support{};  // free unless a rig is given
 };
 
 // The polar inertia of the implement about its long axis [kg m^2]: the

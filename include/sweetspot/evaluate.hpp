@@ -114,6 +114,11 @@ struct Evaluation {
     std::optional<CollisionResult> collision;
   };
   std::optional<Details> details;
+  // What held the implement (the design's): on a rig (is_rig()) nothing of
+  // the player is computed (the hand, the forearm, the swing, the centres of
+  // percussion), an immovable impact point has an infinite effective mass,
+  // and a rigid surface has no implement; the outputs say so (absent).
+  Support support{};
 };
 
 // How much model an evaluation uses: the rigid body of the paper alone; also
@@ -210,5 +215,11 @@ struct EvaluationOptions {
 // this for many evaluations of one design are in kernels.hpp.
 Evaluation evaluate(const Design& design, Fidelity fidelity = Fidelity::kRigid,
                     const EvaluationOptions& options = {});
+
+// Throws FieldError naming "support" when the design is on a rig (is_rig()),
+// which only the solved collision answers: `what` names what was asked (the
+// rigid model, a sweep, ...). Every path that answers a racquet in play
+// without evaluate() calls it first.
+void require_player(const Design& design, std::string_view what);
 
 }  // namespace sweetspot

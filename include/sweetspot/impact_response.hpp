@@ -118,6 +118,9 @@ struct ResponseModel {
   std::vector<ResponseMode> modes;  // ascending frequency
   double length_m = 0.0;
   bool hand_held = false;
+  // On a rig (supported_modes()): clamped, the rigid body does not move;
+  // pinned, it only turns about the pivot. The modes are the supported ones.
+  std::optional<BeamSupport> rig;
 };
 
 // The free implement (Sec. III) from its free modes (free_modes with the same
@@ -146,9 +149,10 @@ ResponseModel hand_held_response_model(const std::vector<Section>& sections,
 ResponseModel with_fundamental(const ResponseModel& model, double f1_Hz);
 
 struct ResponseOptions {
-  enum class Support { kFree, kHandHeld };
+  enum class Support { kFree, kHandHeld, kRig };
   Support support = Support::kFree;
-  int modes = 6;  // flexible modes (hand-held: including the hand's), in [1, kMaxModes]
+  BeamSupport rig{};  // kRig: the clamp or the pivot (supported_modes(), finite elements)
+  int modes = 6;      // flexible modes (hand-held: including the hand's), in [1, kMaxModes]
   double free_damping_ratio = 0.0;  // z of every free mode, in [0, 1)
   double rel_tol =
       1e-6;  // FE (hand-held, Timoshenko): relative error of f1, in [kMinRelTol, kMaxRelTol]

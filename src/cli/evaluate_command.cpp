@@ -222,7 +222,10 @@ int EvaluateCommand::run() const {
   Evaluation result = io::evaluate_design_file(
       design, command->count("--fidelity") ? fidelity : std::string(), tolerance);
   std::string answer;
-  if (out.parsed() == io::Format::kMarkdown) {
+  if (is_rig(result.support)) {
+    // No sweet spots and no power point on a rig: they are the player's.
+    if (out.parsed() == io::Format::kMarkdown) answer = reports::rig_paragraph(design, result);
+  } else if (out.parsed() == io::Format::kMarkdown) {
     const studies::SweetSpots spots = studies::find_sweet_spots(design, result, tolerance);
     answer = reports::sweet_spot_paragraph(design, spots);
     if (spots.power_point) {

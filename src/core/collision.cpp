@@ -46,7 +46,18 @@ FrameAtImpact frame_at_impact(const ResponseModel& model, double impact_from_but
                                                detail::format_number(impact_from_butt_m));
   }
   FrameAtImpact frame;
-  frame.inverse_effective_mass_per_kg = 1.0 / effective_mass(model.rigid_body, impact_from_butt_m);
+  if (!model.rig) {
+    frame.inverse_effective_mass_per_kg =
+        1.0 / effective_mass(model.rigid_body, impact_from_butt_m);  // Eq. (17)
+  } else if (model.rig->kind == BeamSupport::Kind::kPinned) {
+    // Turning about the pivot p only: 1 / M_eff = (x - p)^2 / I_p, I_p by the
+    // parallel-axis theorem (0 at the pivot: the impact does not move it).
+    const MassProperties& body = model.rigid_body;
+    const double arm = body.com_from_butt_m - model.rig->from_m;
+    const double I_p = body.I_cm_kg_m2 + body.mass_kg * arm * arm;
+    const double d = impact_from_butt_m - model.rig->from_m;
+    frame.inverse_effective_mass_per_kg = d * d / I_p;
+  }  // clamped: the rigid body does not move (inverse 0)
   const std::size_t count =
       modes < 0 ? model.modes.size() : std::min<std::size_t>(model.modes.size(), modes);
   for (std::size_t k = 0; k < count; ++k) {

@@ -42,11 +42,18 @@ void DesignCollision::init(double rel_tol, ModeCache& cache) {
                          detail::format_number(design.cor));
   }
   validate(design);
+  const Support::Kind support = design.support.kind;
+  immovable_ = support == Support::Kind::kHeadClamped || support == Support::Kind::kRigidSurface;
+  if (support == Support::Kind::kRigidSurface) return;  // the ball alone on a plate
   if (!design.strings) {
     throw FieldError("strings/tension_N",
                      "the solved collision needs the string tension (the string bed's "
                      "stiffness), not a given impact duration");
   }
+  bed_ = string_bed_dynamics(*design.strings, design.string_bed_mass_kg,
+                             design.string_bed_damping_ratio);
+  polar_inertia_kg_m2_ = polar_inertia_kg_m2(design);
+  if (immovable_) return;  // the strings on a frame that does not move
   if (!has_stiffness(design)) {
     throw FieldError("frame/EI_N_m2",
                      "the solved collision needs the frame's stiffness (EI_N_m2, RA or "
@@ -55,14 +62,40 @@ void DesignCollision::init(double rel_tol, ModeCache& cache) {
   ResponseOptions options;
   options.modes = kCollisionModes;
   options.rel_tol = rel_tol;
-  model_ = cache.response_model(design, options);
-  bed_ = string_bed_dynamics(*design.strings, design.string_bed_mass_kg,
-                             design.string_bed_damping_ratio);
-  polar_inertia_kg_m2_ = polar_inertia_kg_m2(design);
+  if (support == Support::Kind::kHand) {
+    options.support = ResponseOptions::Support::kHandHeld;
+  } else if (support == Support::Kind::kHandleClamped) {
+    // The vice's jaws where the hand would hold the handle.
+    options.support = ResponseOptions::Support::kRig;
+    const double half = 0.5 * design.hand.grip_length_m;
+    options.rig = {BeamSupport::Kind::kClamped, design.hand.center_from_butt_m - half,
+                   design.hand.center_from_butt_m + half};
+  } else if (support == Support::Kind::kPivot) {
+    options.support = ResponseOptions::Support::kRig;
+    options.rig = {BeamSupport::Kind::kPinned, design.support.pivot_from_butt_m,
+                   design.support.pivot_from_butt_m};
+  }
+  try {
+    model_ = cache.response_model(design, options);
+  } catch (const std::invalid_argument& error) {
+    if (support != Support::Kind::kHandleClamped) throw;
+    throw FieldError("hand/grip_length_m",
+                     "the vice holds the handle where the hand would (hand center_from_butt and "
+                     "grip_length): " +
+                         std::string(error.what()));
+  }
 }
 
 FrameAtImpact DesignCollision::frame_at(double from_butt_m, double off_axis_m) const {
+  if (immovable_) return rigid_frame();  // an off-axis impact moves it no more
   FrameAtImpact frame = frame_at_impact(model_, from_butt_m);
+  if (off_axis_m != 0.0 && is_rig(design_.support)) {
+    throw FieldError("impact/off_axis_m",
+                     "an impact off the long axis would twist the implement in its " +
+                         std::string(to_string(design_.support.kind)) +
+                         " support, which the model does not hold: give 0, got " +
+                         detail::format_number(off_axis_m) + " m");
+  }
   if (off_axis_m != 0.0) {
     if (!polar_inertia_kg_m2_) {
       throw FieldError("impact/off_axis_m",
@@ -81,7 +114,7 @@ CollisionResult DesignCollision::at(double from_butt_m, double off_axis_m,
   const FrameAtImpact frame = frame_at(from_butt_m, off_axis_m);
   CollisionResult r = collide(frame, bed_, design.ball.mass_kg, design.ball_contact,
                               design.ball.speed_m_s, options);
-  const double f1 = model_.modes.empty() ? 0.0 : model_.modes.front().mode.frequency_Hz;
+  const double f1 = model_.modes.empty() ? 155.0 : model_.modes.front().mode.frequency_Hz;
   const auto refuse = [&](const Suspect& blame, const std::string& why) {
     throw ModelRefusal(blame.field, blame.value,
                        "the solved collision cannot answer this design (" + why + "); " +
@@ -106,16 +139,84 @@ CollisionResult DesignCollision::at(double from_butt_m, double off_axis_m,
                detail::format_number(kMinDuration_s) + ", " +
                detail::format_number(kMaxDuration_s) + "] s");
   }
-  const double M_eff = 1.0 / frame.inverse_effective_mass_per_kg;
+  const double M_eff = 1.0 / frame.inverse_effective_mass_per_kg;  // inf: immovable
   if (const std::string why =
-          broken_invariant(r, design.ball.mass_kg, M_eff, design.string_bed_mass_kg);
+          broken_invariant(r, design.ball.mass_kg, M_eff, bed_ ? design.string_bed_mass_kg : 0.0);
       !why.empty()) {
     refuse(collision_suspect(design, f1), why);
   }
   return r;
 }
 
+namespace {
+
+// A rig's evaluation (is_rig()): the solved collision on the rig, the
+// implement's mass properties beside it (none on a rigid surface), nothing of
+// the player (Evaluation::support).
+Evaluation evaluate_rig(const Design& design, double rel_tol, ModeCache& cache) {
+  const DesignCollision collision(design, rel_tol, cache);
+  CollisionOptions collision_options;
+  collision_options.record_history = true;
+  CollisionResult r =
+      collision.at(design.impact_from_butt_m, design.impact_off_axis_m, collision_options);
+  const double inverse_mass =
+      collision.frame_at(design.impact_from_butt_m, design.impact_off_axis_m)
+          .inverse_effective_mass_per_kg;
+  // Eq. (16) inverted where the impact point moves; e = e_A where it cannot.
+  const double cor = inverse_mass > 0.0 ? cor_from_apparent(r.apparent_cor, design.ball.mass_kg,
+                                                            1.0 / inverse_mass)
+                                        : r.apparent_cor;
+  // The implement's numbers from the rigid model of the same implement free,
+  // at the solved COR and contact time; then everything of the impact is the
+  // rig's and nothing of the player is kept.
+  Design free = design;
+  free.support = {};
+  free.strings.reset();
+  free.impact_off_axis_m = 0.0;
+  free.cor = std::clamp(cor, 0.0, 1.0);
+  free.impact_duration_s = r.contact_time_s;
+  Evaluation e = evaluate(free, Fidelity::kRigid, {.rel_tol = rel_tol, .modes = &cache});
+  const Evaluation player{};
+  e.cop_free_from_butt_m = player.cop_free_from_butt_m;
+  e.rotation_axis_free_from_butt_m = player.rotation_axis_free_from_butt_m;
+  e.system_mass_kg = player.system_mass_kg;
+  e.system_com_from_butt_m = player.system_com_from_butt_m;
+  e.system_I_cm_kg_m2 = player.system_I_cm_kg_m2;
+  e.cop_hand_from_butt_m = player.cop_hand_from_butt_m;
+  e.rotation_axis_hand_from_butt_m = player.rotation_axis_hand_from_butt_m;
+  e.wrist_force_ratio = player.wrist_force_ratio;
+  e.peak_wrist_force_N = player.peak_wrist_force_N;
+  e.impact_off_axis_m = design.impact_off_axis_m;
+  e.twist_rate_rad_s = player.twist_rate_rad_s;
+  e.peak_twist_torque_N_m = player.peak_twist_torque_N_m;
+  e.fidelity = Fidelity::kCollision;
+  e.support = design.support;
+  e.effective_mass_kg = inverse_mass > 0.0 ? 1.0 / inverse_mass : INFINITY;
+  e.cor = cor;
+  e.cor_derived = true;
+  e.impact_duration_s = r.contact_time_s;
+  e.impact_duration_derived = true;
+  put_string_bed(design, e);
+  e.apparent_cor = r.apparent_cor;
+  e.rebound_speed_m_s = r.apparent_cor * design.ball.speed_m_s;
+  e.impulse_N_s = r.impulse_N_s;
+  e.peak_impact_force_N = r.peak_force_N;
+  e.vibration_energy_J = r.vibration_J;
+  e.vibration_share = r.vibration_J / r.ball_in_J;
+  e.details.emplace();
+  for (std::size_t k = 0; k < r.mode_energy_J.size(); ++k) {
+    e.details->vibration_modes.emplace_back(collision.model().modes[k].mode.frequency_Hz,
+                                            r.mode_energy_J[k]);
+  }
+  e.details->collision = std::move(r);
+  check_invariants(e, design);
+  return e;
+}
+
+}  // namespace
+
 Evaluation evaluate_collision(const Design& design, double rel_tol, ModeCache& cache) {
+  if (is_rig(design.support)) return evaluate_rig(design, rel_tol, cache);
   const DesignCollision collision(design, rel_tol, cache);
   CollisionOptions collision_options;
   collision_options.record_history = true;
@@ -142,6 +243,10 @@ Evaluation evaluate_collision(const Design& design, double rel_tol, ModeCache& c
   e.impulse_N_s = r.impulse_N_s;
   e.peak_impact_force_N = r.peak_force_N;
   e.peak_wrist_force_N = peak_wrist_force(e.wrist_force_ratio, r.peak_force_N);
+  e.support = design.support;
+  // Held in the hand, the impact moves implement and hand (the rigid model's
+  // M_eff is the implement's alone, Eq. 17).
+  if (design.support.kind == Support::Kind::kHand) e.effective_mass_kg = M_eff;
   if (const double y = design.impact_off_axis_m; y != 0.0) {
     // The twist of the solved impulse and force (evaluate()'s formulas).
     e.twist_rate_rad_s = r.impulse_N_s * y / *e.polar_inertia_kg_m2;

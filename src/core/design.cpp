@@ -12,6 +12,24 @@
 
 namespace sweetspot {
 
+std::string_view to_string(Support::Kind kind) {
+  switch (kind) {
+    case Support::Kind::kFree:
+      return "free";
+    case Support::Kind::kHand:
+      return "hand";
+    case Support::Kind::kHeadClamped:
+      return "head_clamped";
+    case Support::Kind::kHandleClamped:
+      return "handle_clamped";
+    case Support::Kind::kPivot:
+      return "pivot";
+    case Support::Kind::kRigidSurface:
+      return "rigid_surface";
+  }
+  return "free";
+}
+
 void validate(const Design& d) {
   const double L = d.implement.length_m();
   detail::require_in_range("frame/cor", d.cor, 0.0, 1.0, "");
@@ -41,6 +59,14 @@ void validate(const Design& d) {
                              "m/s");
   }
   detail::require_in_range("impact/from_butt_m", d.impact_from_butt_m, 0.0, L, "m");
+  if (d.support.kind == Support::Kind::kPivot) {
+    detail::require_in_range("support/pivot_from_butt_m", d.support.pivot_from_butt_m, 0.0, L, "m");
+  }
+  if (is_rig(d.support) && d.swing) {
+    throw FieldError("swing", "a rig holds the implement still (support " +
+                                  std::string(to_string(d.support.kind)) +
+                                  "): give no swing, or support free or hand");
+  }
   detail::require_positive("hand/grip_length_m", d.hand.grip_length_m, "m");
   detail::require_in_range("hand/grip_stiffness_N_m2", d.hand.grip_stiffness_N_m2, 0.0,
                            kMaxGripStiffness_N_m2, "N/m^2");

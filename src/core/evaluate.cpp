@@ -136,6 +136,7 @@ Evaluation evaluate_response(const Design& design, double rel_tol, ModeCache& ca
 }  // namespace
 
 Fidelity needed_fidelity(const Design& design) {
+  if (is_rig(design.support)) return Fidelity::kCollision;
   if (design.strings && !design.cor_given && !design.cor_rigid && has_stiffness(design))
     return Fidelity::kCollision;
   if (design.cor_rigid) return Fidelity::kResponse;
@@ -165,7 +166,19 @@ Evaluation evaluate_at_rest(const Design& design, Fidelity fidelity,
 
 }  // namespace
 
+void require_player(const Design& design, std::string_view what) {
+  if (!is_rig(design.support)) return;
+  throw FieldError("support", "a rig (" + std::string(to_string(design.support.kind)) +
+                                  ") is answered by the solved collision alone, not " +
+                                  std::string(what) +
+                                  ": evaluate it with fidelity collision or auto, or give "
+                                  "support free or hand");
+}
+
 Evaluation evaluate(const Design& design, Fidelity fidelity, const EvaluationOptions& options) {
+  if (fidelity != Fidelity::kCollision) {
+    require_player(design, "the " + std::string(to_string(fidelity)) + " model");
+  }
   if (!design.swing) {
     // The laboratory's impact; the shot the assumed groundstroke would give.
     Evaluation e = evaluate_at_rest(design, fidelity, options);

@@ -403,6 +403,15 @@ ResponseModel detail::response_model_on(const Design& design, const FlexibleFram
     return free_response_model(frame.sections, frame.point_masses, free,
                                options.free_damping_ratio);
   }
+  if (options.support == ResponseOptions::Support::kRig) {
+    mode_options.method = ModeOptions::Method::kFiniteElement;
+    const ModalResult held =
+        supported_modes(frame.sections, frame.point_masses, options.rig, mode_options);
+    ResponseModel model =
+        free_response_model(frame.sections, frame.point_masses, held, options.free_damping_ratio);
+    model.rig = options.rig;
+    return model;
+  }
   if (!(design.hand.mass_kg > 0.0)) {
     throw FieldError("hand/mass_kg", "the hand-held response needs a hand, got " +
                                          detail::format_number(design.hand.mass_kg) + " kg");

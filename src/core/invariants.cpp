@@ -30,7 +30,9 @@ std::string first_not_finite(const Evaluation& e) {
       {"the mass", e.mass_kg},
       {"the recoil weight", e.I_cm_kg_m2},
       {"the swingweight", e.swingweight_kg_m2},
-      {"the effective mass", e.effective_mass_kg},
+      // Infinite where a rig holds the impact point still (Evaluation::support).
+      {"the effective mass",
+       is_rig(e.support) && e.effective_mass_kg == INFINITY ? 0.0 : e.effective_mass_kg},
       {"the apparent COR", e.apparent_cor},
       {"the rebound speed", e.rebound_speed_m_s},
       {"the impulse", e.impulse_N_s},
@@ -101,7 +103,9 @@ std::string broken_invariant(const CollisionResult& r, double m, double M_eff, d
     return "the contact lasts " + number(r.contact_time_s) + " s, not > 0";
   // The rigid-body bounds (Cross 2004 Eq. 16 at e = 0 and at e = 1; the string
   // bed's mass moves with the frame, so the upper bound uses M_eff + m_s).
-  const double low = -m / (M_eff + m), M_up = M_eff + m_s, high = (M_up - m) / (M_up + m);
+  // An immovable frame (M_eff infinite): -0 <= e_A <= 1.
+  const double low = -m / (M_eff + m), M_up = M_eff + m_s;
+  const double high = std::isinf(M_up) ? 1.0 : (M_up - m) / (M_up + m);
   if (!(r.apparent_cor >= low - kInvariantRoundOff))
     return "the apparent COR " + number(r.apparent_cor) + " is below " + number(low) +
            ", the ball stuck to the frame (Eq. 16 with e = 0)";

@@ -149,7 +149,7 @@ Evaluation evaluate_unchecked(const Design& d) {
 }
 
 bool evaluate_rigid_outcome(const Design& d, Evaluation& e) {
-  if (d.cor_rigid || d.strings || d.impact_off_axis_m != 0.0) return false;
+  if (d.cor_rigid || d.strings || d.impact_off_axis_m != 0.0 || is_rig(d.support)) return false;
   const MassProperties& body = d.implement.mass_properties();
   const MassProperties system = hand_held_system(d);
   // The case impact_part() builds: on the axis, the twist is 0 whatever the polar inertia.
@@ -164,6 +164,7 @@ bool evaluate_rigid_outcome(const Design& d, Evaluation& e) {
 }
 
 RigidCase rigid_case(const Design& design) {
+  require_player(design, "the rigid model");
   if (design.cor_rigid) {
     throw FieldError("frame/cor_rigid",
                      "a COR derived from the frame's vibration needs the response model, not a "
@@ -176,6 +177,7 @@ RigidCase rigid_case(const Design& design) {
 
 ImpactSweep::ImpactSweep(const Design& design)
     : design_(design), system_(hand_held_system(design)) {
+  require_player(design, "the rigid model at many impacts");
   if (design.cor_rigid || design.strings) {
     throw FieldError("frame/cor_rigid",
                      "ImpactSweep evaluates the rigid model with a given COR and duration");

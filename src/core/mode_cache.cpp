@@ -103,7 +103,12 @@ const ResponseModel& ModeCache::response_model(const Design& design,
                                                const ResponseOptions& options) {
   const Key frame_key(design);
   Key key = frame_key;
-  key.add(options.support == ResponseOptions::Support::kFree ? 0.0 : 1.0);
+  key.add(static_cast<double>(static_cast<int>(options.support)));
+  if (options.support == ResponseOptions::Support::kRig) {
+    key.add(static_cast<double>(static_cast<int>(options.rig.kind)));
+    key.add(options.rig.from_m);
+    key.add(options.rig.to_m);
+  }
   key.add(static_cast<double>(options.modes));
   key.add(options.free_damping_ratio);
   key.add(options.rel_tol);

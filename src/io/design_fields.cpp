@@ -21,7 +21,7 @@ const std::vector<DesignField>& design_fields() {
       {"", "name", {}, {}, "name", "the file name", "", ""},
       {"", "description", {}, {}, "description", "", "", ""},
       {"", "fidelity", {}, {}, "fidelity", "auto", "rigid, modal, response, collision, auto", ""},
-      {"", "implement", {}, {}, "implement", "required", "", ""},
+      {"", "implement", {}, {}, "implement", "required (none on support rigid_surface)", "", ""},
       {"", "frame", {}, {}, "frame", "", "", ""},
       {"", "strings", {}, {}, "strings", "", "", ""},
       {"", "hand", {}, {}, "hand", "", "", ""},
@@ -30,6 +30,14 @@ const std::vector<DesignField>& design_fields() {
       {"", "impact", {}, {}, "impact", "", "", ""},
       {"", "reference", {}, {}, "reference", "", "", ""},
       {"", "swing", {}, {}, "swing", "none: the shot of an assumed groundstroke", "", ""},
+      {"",
+       "support",
+       {},
+       {},
+       "support",
+       "free",
+       "free, hand, head_clamped, handle_clamped, rigid_surface, or a pivot {pivot_from_butt}",
+       ""},
       // The implement: the paper's racquet, sections or a spec sheet.
       {"implement", "length", D::kLength, {}, "length_m", "", "(0, kMaxLength_m]", ""},
       {"implement", "mass", D::kMass, {}, "mass_kg", "", "(0, kMaxMass_kg]", ""},
@@ -476,6 +484,8 @@ const std::vector<DesignField>& design_fields() {
        "none: the swing as given",
        "> 0",
        "angular_speed or speed_at_impact"},
+      // What holds the implement when it is not a name (design.hpp, Support).
+      {"support", "pivot_from_butt", D::kLength, {}, "pivot_from_butt_m", "required", "[0, L]", ""},
   };
   return kFields;
 }

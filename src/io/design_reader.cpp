@@ -25,8 +25,8 @@ namespace {
 
 // The parts of a design file; the physics core names an input by its
 // canonical SI path below one of them ("hand/grip_length_m").
-constexpr std::string_view kDesignParts[] = {"implement", "frame", "strings", "hand",
-                                             "forearm",   "ball",  "impact",  "swing"};
+constexpr std::string_view kDesignParts[] = {"implement", "frame",  "strings", "hand",   "forearm",
+                                             "ball",      "impact", "swing",   "support"};
 
 bool is_design_path(std::string_view name) {
   const std::string_view part = name.substr(0, name.find('/'));
@@ -89,8 +89,8 @@ bool is_design_path(std::string_view name) {
     // "frame.modes/0/phi", "impact_from_butt_m", "ball_stiffness_N_m"): the
     // part is the input named.
     const std::string part = core_name.substr(0, core_name.find_first_of("./_"));
-    for (const char* top :
-         {"implement", "frame", "strings", "hand", "forearm", "ball", "impact", "swing"}) {
+    for (const char* top : {"implement", "frame", "strings", "hand", "forearm", "ball", "impact",
+                            "swing", "support"}) {
       if (part == top) throw InputError(source, "/" + part, core_name + ": " + detail);
     }
   }
@@ -352,9 +352,20 @@ struct ImplementRead {
 ImplementRead read_implement(const Json& document, const std::string& source, KeyMap* keys,
                              ImplementDescription* described) {
   const auto it = document.find("implement");
-  if (it == document.end())
-    throw InputError(source, "/implement", "missing: every design needs an implement");
-  ObjectReader r(*it, "/implement", "implement", source, keys);
+  // A ball onto a rigid plate needs no implement: the Table I racquet stands
+  // in for it, and no output of it is given (Evaluation::support).
+  static const Json kStandIn = {
+      {"length_m", 0.7}, {"mass_kg", 0.25}, {"head_to_handle_mass_ratio", 0.8}};
+  const auto support = document.find("support");
+  const bool plate = support != document.end() && support->is_string() &&
+                     support->get<std::string>() == "rigid_surface";
+  if (it == document.end() && !plate)
+    throw InputError(source, "/implement",
+                     "missing: every design needs an implement (but one on support "
+                     "\"rigid_surface\")");
+  const Json& given = it == document.end() ? kStandIn : *it;
+  if (it == document.end()) keys = nullptr;  // not the file's: no key of it to name
+  ObjectReader r(given, "/implement", "implement", source, keys);
   r.check_known(design_keys("implement"));
   const std::vector<PointMassSpec> point_specs = read_point_masses(r, source, keys);
   const HeadRead head = read_head(r);
@@ -1113,6 +1124,48 @@ void read_swing(ObjectReader& top, Reading& in) {
   in.design.swing = s;
 }
 
+// /support: what holds the implement (Design::support), by name, or a pivot
+// as {"pivot_from_butt_m" (or _cm, _mm, _in): ...}; absent, free.
+constexpr std::pair<std::string_view, Support::Kind> kSupportNames[] = {
+    {"free", Support::Kind::kFree},
+    {"hand", Support::Kind::kHand},
+    {"head_clamped", Support::Kind::kHeadClamped},
+    {"handle_clamped", Support::Kind::kHandleClamped},
+    {"rigid_surface", Support::Kind::kRigidSurface}};
+constexpr std::string_view kSupportExpected =
+    "expected \"free\", \"hand\", \"head_clamped\", \"handle_clamped\", \"rigid_surface\" "
+    "or {\"pivot_from_butt_cm\": ...}";
+
+void read_support(ObjectReader& top, Reading& in) {
+  const Json* given = top.child("support");
+  if (!given) return;
+  Support support;
+  if (given->is_string()) {
+    const std::string name = given->get<std::string>();
+    const auto* found = std::find_if(std::begin(kSupportNames), std::end(kSupportNames),
+                                     [&](const auto& named) { return named.first == name; });
+    if (found == std::end(kSupportNames)) {
+      top.fail("support", name == "pivot"
+                              ? "a pivot needs its place: give {\"pivot_from_butt_cm\": ...}"
+                              : std::string(kSupportExpected) + ", got " + brief(*given));
+    }
+    support.kind = found->second;
+  } else if (given->is_object()) {
+    Part part(top, "support", in.keys, in.provenance);
+    ObjectReader& r = part.reader();
+    const auto pivot = r.quantity("pivot_from_butt", Dimension::kLength);
+    if (!pivot) {
+      r.fail("", "a pivot needs its place: pivot_from_butt_m (or _cm, _mm, _in) from the butt");
+    }
+    r.finish(design_keys("support"));
+    support.kind = Support::Kind::kPivot;
+    support.pivot_from_butt_m = *pivot;
+  } else {
+    top.fail("support", std::string(kSupportExpected) + ", got " + brief(*given));
+  }
+  in.design.support = support;
+}
+
 // Where the ball hits, as the file gives it (or the default of its kind).
 struct ImpactRead {
   ImpactPlace place = ImpactPlace::kFromTip;
@@ -1256,6 +1309,7 @@ DesignFile read_design_impl(const Json& document, const std::string& source, boo
   read_ball(top, in);
   const ImpactRead impact = read_impact(top, in, L, implement.form);
   read_swing(top, in);
+  read_support(top, in);
   Json reference = read_reference(top, source);
   top.finish(design_keys(""));
 
@@ -1452,6 +1506,12 @@ Json design_to_json(const DesignFile& file) {
     put(swing, "swing", "pivot_beyond_butt", d.swing->pivot_beyond_butt_m);
     if (d.swing->reference_swingweight_kg_m2)
       put(swing, "swing", "reference_swingweight", *d.swing->reference_swingweight_kg_m2);
+  }
+  if (d.support.kind == Support::Kind::kPivot) {
+    Json& support = j[si_key("", "support")] = Json::object();
+    put(support, "support", "pivot_from_butt", d.support.pivot_from_butt_m);
+  } else if (d.support.kind != Support::Kind::kFree) {
+    j[si_key("", "support")] = std::string(to_string(d.support.kind));
   }
   return j;
 }

@@ -461,19 +461,31 @@ std::string inputs_markdown(const DesignFile& file, const Evaluation& e) {
                        unit.unit.empty() ? "" : " ", unit.unit,
                        md_cell(solved.empty() ? it->second : std::string(solved)));
   };
+  // On a rig nothing of the player is used (the vice sits where the hand
+  // would), on a rigid surface no implement.
+  const bool plate = e.support.kind == Support::Kind::kRigidSurface;
+  const bool player = !is_rig(e.support);
   std::string rest;
-  rest += line("impact/from_butt_m", "impact from the tip", e.length_m - d.impact_from_butt_m, "m");
+  if (!plate) {
+    rest +=
+        line("impact/from_butt_m", "impact from the tip", e.length_m - d.impact_from_butt_m, "m");
+  }
   rest += line("strings/impact_duration_s", "impact duration", e.impact_duration_s, "s");
   rest += line("frame/cor", "frame COR", e.cor, "");
-  rest += line("hand/mass_kg", "hand mass", d.hand.mass_kg, "kg");
-  rest +=
-      line("hand/center_from_butt_m", "hand centre from the butt", d.hand.center_from_butt_m, "m");
-  rest += line("forearm/equivalent_mass_kg", "forearm equivalent mass",
-               d.forearm_equivalent_mass_kg, "kg");
+  if (player) rest += line("hand/mass_kg", "hand mass", d.hand.mass_kg, "kg");
+  if (player || e.support.kind == Support::Kind::kHandleClamped) {
+    rest += line("hand/center_from_butt_m", "hand centre from the butt", d.hand.center_from_butt_m,
+                 "m");
+  }
+  if (player) {
+    rest += line("forearm/equivalent_mass_kg", "forearm equivalent mass",
+                 d.forearm_equivalent_mass_kg, "kg");
+  }
   rest += line("ball/mass_kg", "ball mass", d.ball.mass_kg, "kg");
   rest += line("ball/speed_m_s", "ball speed", d.ball.speed_m_s, "m/s");
   if (!rest.empty())
     md += "\nDefaulted or derived (defaults are Cross (2004) Table I, top row):\n\n" + rest;
+  if (plate) return md + "\nNo implement: the ball meets a rigid plate.\n";
   // The implement in a spec sheet's words.
   const double points_head_light = (0.5 * e.length_m - e.balance_from_butt_m) / kPointHeadLight_m;
   md += fmt::format(
@@ -578,7 +590,7 @@ Json evaluation_json(const DesignFile& file, const Evaluation& e) {
   for (const OutputSpec& output : output_specs()) {
     const auto value = output.value(e);
     outputs[std::string(output.name)] = value ? Json(*value) : Json(nullptr);
-    if (!value) notes[std::string(output.name)] = output.when_absent;
+    if (!value) notes[std::string(output.name)] = output.absent_because(e);
   }
   // The power point: searched along the string bed for one design (evaluate),
   // so not an output of every row (studies::with_power_point()).
@@ -654,9 +666,11 @@ std::string evaluation_report(const DesignFile& file, const Evaluation& e, Forma
   if (!answer.empty()) md += terminal_text(answer) + "\n\n";
   md += fmt::format(
       "{} of Cross (2004); source `{}`.{}\n\n",
-      e.vibration_energy_J ? "Rigid-body model, vibration modes and impact response"
-      : e.modal            ? "Rigid-body model and vibration modes"
-                           : "Rigid-body model",
+      is_rig(e.support) ? "The solved collision on a rig (support " +
+                              std::string(to_string(e.support.kind)) + "), beyond the model"
+      : e.vibration_energy_J ? "Rigid-body model, vibration modes and impact response"
+      : e.modal              ? "Rigid-body model and vibration modes"
+                             : "Rigid-body model",
       md_cell(file.source),
       e.modal && e.modal->mass_distribution_fitted
           ? " The mass distribution for the modes was fitted to the specs (quadratic density)."
@@ -664,22 +678,29 @@ std::string evaluation_report(const DesignFile& file, const Evaluation& e, Forma
   md += "| quantity | value | unit | output (SI in JSON and CSV) |\n|---|---:|---|---|\n";
   for (const OutputSpec& output : output_specs()) {
     if (output.needs_modes && !output.value(e)) continue;
+    // A rig's table holds what the rig gives (the rest is the player's).
+    if (is_rig(e.support) && !given_on_rig(output.name, e.support.kind)) continue;
     const auto value = output.value(e);
     const PeopleUnit unit = people_unit(output.unit);
-    md += fmt::format(
-        "| {} | {} | {} | `{}` |\n",
-        md_cell(value ? std::string(output.description)
-                      : std::string(output.description) + "; " + std::string(output.when_absent)),
-        value ? people_text(*value * unit.factor) : std::string("—"), unit.unit, output.name);
+    md += fmt::format("| {} | {} | {} | `{}` |\n",
+                      md_cell(value ? std::string(output.description)
+                                    : std::string(output.description) + "; " +
+                                          std::string(output.absent_because(e))),
+                      value ? people_text(*value * unit.factor) : std::string("—"), unit.unit,
+                      output.name);
   }
-  if (!e.modal) {
+  if (!e.modal && !is_rig(e.support)) {
     md += "\nVibration modes: not evaluated (rigid fidelity; they need the frame's stiffness).\n";
   }
   const Evaluation::Details details = e.details.value_or(Evaluation::Details{});
   if (!details.vibration_modes.empty()) {
-    md +=
-        "\nEnergy each mode of the free frame keeps after the impact:\n\n| mode | frequency (Hz) | "
-        "energy (J) |\n|---:|---:|---:|\n";
+    md += fmt::format(
+        "\nEnergy each mode of the {} frame keeps after the impact:\n\n| mode | frequency (Hz) | "
+        "energy (J) |\n|---:|---:|---:|\n",
+        e.support.kind == Support::Kind::kHandleClamped ? "clamped"
+        : e.support.kind == Support::Kind::kPivot       ? "pivoted"
+        : e.support.kind == Support::Kind::kHand        ? "hand-held"
+                                                        : "free");
     for (std::size_t k = 0; k < details.vibration_modes.size(); ++k) {
       md += fmt::format("| {} | {:.1f} | {} |\n", k + 1, details.vibration_modes[k].first,
                         significant(details.vibration_modes[k].second, 4));

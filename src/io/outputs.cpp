@@ -1,6 +1,8 @@
 #include "io/outputs.hpp"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 
 #include "io/format.hpp"
 #include "io/json_reader.hpp"
@@ -258,7 +260,67 @@ const std::array kOutputs{
                kNoPolarInertia, true},
 };
 
+// On a rig: every output but the player's and the free or hand-held frame's
+// modes (the rig's own are the collision's vibration modes). On a rigid
+// surface only the ball's: there is no implement.
+constexpr std::string_view kPlayerOutputs[] = {"wrist_force_ratio",
+                                               "peak_wrist_force_N",
+                                               "cop_free_from_tip_m",
+                                               "cop_hand_from_tip_m",
+                                               "rotation_axis_free_from_butt_m",
+                                               "rotation_axis_hand_from_butt_m",
+                                               "cop_node_gap_m",
+                                               "racquet_speed_m_s",
+                                               "shot_speed_m_s",
+                                               "shot_speed_km_h",
+                                               "shot_speed_mph",
+                                               "system_mass_kg",
+                                               "system_I_cm_kg_m2",
+                                               "twist_rate_rad_s",
+                                               "peak_twist_torque_N_m",
+                                               "fundamental_hand_Hz",
+                                               "hand_damping_ratio",
+                                               "node_hand_from_tip_m",
+                                               "fundamental_free_Hz",
+                                               "node_free_from_tip_m"};
+constexpr std::string_view kBallOutputs[] = {"cor",
+                                             "impact_duration_s",
+                                             "apparent_cor",
+                                             "rebound_speed_m_s",
+                                             "impulse_N_s",
+                                             "peak_impact_force_N",
+                                             "vibration_energy_J",
+                                             "vibration_share",
+                                             "contact_time_s",
+                                             "peak_ball_compression_m",
+                                             "effective_mass_kg"};
+
 }  // namespace
+
+std::span<const std::string_view> player_outputs() { return kPlayerOutputs; }
+std::span<const std::string_view> ball_outputs() { return kBallOutputs; }
+
+bool given_on_rig(std::string_view name, Support::Kind kind) {
+  if (std::ranges::find(kPlayerOutputs, name) != std::end(kPlayerOutputs)) return false;
+  if (kind != Support::Kind::kRigidSurface) return true;
+  return std::ranges::find(kBallOutputs, name) != std::end(kBallOutputs);
+}
+
+std::optional<double> OutputSpec::value(const Evaluation& e) const {
+  if (!is_rig(e.support)) [[likely]]
+    return compute(e);
+  if (!given_on_rig(name, e.support.kind)) return std::nullopt;
+  const std::optional<double> v = compute(e);
+  if (v && std::isinf(*v)) return std::nullopt;  // the effective mass of a point held still
+  return v;
+}
+
+std::string_view OutputSpec::absent_because(const Evaluation& e) const {
+  if (!is_rig(e.support)) return when_absent;
+  if (!given_on_rig(name, e.support.kind)) return kAbsentOnRig;
+  if (const std::optional<double> v = compute(e); v && std::isinf(*v)) return kHeldStill;
+  return when_absent;
+}
 
 std::span<const OutputSpec> output_specs() { return kOutputs; }
 

@@ -24,6 +24,24 @@ std::string feel(const Evaluation& e, bool first = false, bool swinging = false)
 
 }  // namespace
 
+std::string rig_paragraph(const io::DesignFile& design, const Evaluation& e) {
+  const Support::Kind kind = e.support.kind;
+  const std::string where =
+      kind == Support::Kind::kRigidSurface  ? "On a rigid surface"
+      : kind == Support::Kind::kHeadClamped ? "On the strings of the head-clamped frame"
+      : kind == Support::Kind::kHandleClamped
+          ? "With the handle clamped"
+          : "On the pivot " + cm_text(design.design.support.pivot_from_butt_m) + " from the butt";
+  const double squeeze_mm =
+      e.details && e.details->collision ? e.details->collision->peak_ball_compression_m * 1e3 : 0.0;
+  return fmt::format(
+      "{}, the ball comes back at {} of its {:.3g} m/s (the apparent COR) after {:.2f} ms of "
+      "contact; the force peaks at {} and the ball squeezes {:.1f} mm. A rig holds the "
+      "implement still: nothing of a player (wrist force, sweet spots, the shot) is given.",
+      where, ratio_text(e.apparent_cor), design.design.ball.speed_m_s, e.impact_duration_s * 1e3,
+      newton_text(e.peak_impact_force_N), squeeze_mm);
+}
+
 std::string cm_text(double metres) {
   const double half_cm = std::round(metres * 200.0) / 2.0;
   if (half_cm == std::floor(half_cm)) return fmt::format("{:.0f} cm", half_cm == 0 ? 0.0 : half_cm);

@@ -26,6 +26,11 @@ std::vector<std::string> sweet_spot_sentences(const io::DesignFile& design,
 // The sentences as one Markdown paragraph (no trailing newline).
 std::string sweet_spot_paragraph(const io::DesignFile& design, const studies::SweetSpots& spots);
 
+// A rig's answer in words (Evaluation::support): what comes back, how long
+// the contact lasts, the peak force and the ball's squeeze; no sweet spots
+// (they are the player's). No trailing newline.
+std::string rig_paragraph(const io::DesignFile& design, const Evaluation& evaluation);
+
 // Rounding shared by the sentences and `compare`: a position in cm to 0.5 cm
 // ("30.5 cm"), a force to two significant figures ("470 N"), a ratio to two
 // decimals ("0.42").

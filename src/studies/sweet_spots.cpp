@@ -96,6 +96,7 @@ std::optional<SpotOutcome> power_point_on_axis(const io::DesignFile& design,
 }
 
 Evaluation with_power_point(const io::DesignFile& design, Evaluation evaluation, double rel_tol) {
+  if (is_rig(evaluation.support)) return evaluation;  // the shot is a player's
   if (const auto power = power_point_on_axis(design, to_string(fidelity_of(evaluation)), rel_tol)) {
     evaluation.power_point_from_butt_m = evaluation.length_m - power->from_tip_m;
     evaluation.power_point_shot_speed_m_s = power->evaluation.shot_speed_m_s;

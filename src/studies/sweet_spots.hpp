@@ -122,7 +122,8 @@ std::optional<SpotOutcome> power_point_on_axis(const io::DesignFile& design,
                                                double tolerance_m = kBestReboundTolerance_m);
 
 // `evaluation` with its power point (power_point_from_butt_m and the shot
-// speed there) from power_point_on_axis(), when the design has a head.
+// speed there) from power_point_on_axis(), when the design has a head and
+// is held by a player (a rig has no shot: the evaluation as it is).
 Evaluation with_power_point(const io::DesignFile& design, Evaluation evaluation, double rel_tol);
 
 // Evaluates `design` at its sweet spots at the fidelity of `asked` (the

@@ -517,7 +517,7 @@ TEST_CASE("The schema accepts exactly the keys of the field table, every spellin
     if (std::find(objects.begin(), objects.end(), field.object) == objects.end())
       objects.emplace_back(field.object);
   }
-  CHECK(objects.size() == 16);
+  CHECK(objects.size() == 17);
   for (const std::string& object : objects) {
     INFO("object '" << object << "'");
     const Json* properties = schema_properties(schema, object);
@@ -654,6 +654,57 @@ TEST_CASE("design_to_json writes only the field table's SI keys, and they read b
     const DesignFile again = read_design(written, "again.json");
     CHECK(design_to_json(again) == written);
   }
+}
+
+}  // namespace sweetspot::io
+
+namespace sweetspot::io {
+
+TEST_CASE("A support is read by name or as a pivot, written back, and refused with its path") {
+  const auto support_of = [](const std::string& value) {
+    const std::string text = R"({"implement": {"length_m": 0.7, "mass_kg": 0.25,
+        "head_to_handle_mass_ratio": 0.8}, "support": )" +
+                             value + "}";
+    return read(text.c_str()).design.support;
+  };
+  CHECK(support_of(R"("free")").kind == Support::Kind::kFree);
+  CHECK(support_of(R"("hand")").kind == Support::Kind::kHand);
+  CHECK(support_of(R"("head_clamped")").kind == Support::Kind::kHeadClamped);
+  CHECK(support_of(R"("handle_clamped")").kind == Support::Kind::kHandleClamped);
+  CHECK(support_of(R"("rigid_surface")").kind == Support::Kind::kRigidSurface);
+  const Support pivot = support_of(R"({"pivot_from_butt_cm": 15.24})");
+  CHECK(pivot.kind == Support::Kind::kPivot);
+  CHECK(pivot.pivot_from_butt_m == 0.1524);
+  CHECK(read(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25,
+      "head_to_handle_mass_ratio": 0.8}})")
+            .design.support.kind == Support::Kind::kFree);
+  // Written back as read.
+  for (const char* value : {R"("hand")", R"("rigid_surface")", R"({"pivot_from_butt_m": 0.2})"}) {
+    INFO(value);
+    const std::string text = R"({"implement": {"length_m": 0.7, "mass_kg": 0.25,
+        "head_to_handle_mass_ratio": 0.8}, "support": )" +
+                             std::string(value) + "}";
+    const DesignFile once = read(text.c_str());
+    const DesignFile twice = read_design(design_to_json(once), "again.json");
+    CHECK(twice.design.support.kind == once.design.support.kind);
+    CHECK(twice.design.support.pivot_from_butt_m == once.design.support.pivot_from_butt_m);
+  }
+  // A plate needs no implement.
+  CHECK(read(R"({"support": "rigid_surface", "ball": {"speed_m_s": 7.06}})").design.support.kind ==
+        Support::Kind::kRigidSurface);
+  CHECK(has(error_of(R"({"support": "head_clamped"})"), "/implement: missing"));
+  const std::string racquet = R"({"implement": {"length_m": 0.7, "mass_kg": 0.25,
+      "head_to_handle_mass_ratio": 0.8}, "support": )";
+  const auto error = [&](const std::string& value) {
+    return error_of((racquet + value + "}").c_str());
+  };
+  CHECK(has(error(R"("pivot")"), "/support: a pivot needs its place"));
+  CHECK(has(error(R"("vice")"), "/support: expected \"free\""));
+  CHECK(has(error("3"), "/support: expected"));
+  CHECK(has(error("{}"), "/support: a pivot needs its place"));
+  CHECK(has(error(R"({"pivot_from_butt_cm": 15, "at": 1})"), "/support/at"));
+  CHECK(has(error(R"({"pivot_from_butt_cm": 90})"), "/support/pivot_from_butt_cm"));
+  CHECK(has(error(R"({"pivot_from_butt_cm": "nan"})"), "/support/pivot_from_butt_cm"));
 }
 
 }  // namespace sweetspot::io

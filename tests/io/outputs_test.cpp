@@ -15,7 +15,7 @@ TEST_CASE("Output names are unique, found by name, and carry their SI unit in th
     CHECK(names.insert(output.name).second);
     CHECK(find_output(output.name) == &output);
     CHECK_FALSE(output.description.empty());
-    REQUIRE(output.value != nullptr);
+    REQUIRE(output.compute != nullptr);
     // "_N" names are in N, "_m" in m, "_Hz" in Hz: the unit is the name's suffix.
     if (!output.unit.empty() && output.unit.find(' ') == std::string_view::npos &&
         output.unit.find('/') == std::string_view::npos) {
@@ -24,6 +24,33 @@ TEST_CASE("Output names are unique, found by name, and carry their SI unit in th
     }
   }
   CHECK(find_output("no_such_output") == nullptr);
+}
+
+TEST_CASE("On a rig the player's outputs are absent, on a rigid surface all but the ball's") {
+  for (const std::string_view name : player_outputs()) CHECK(find_output(name));
+  for (const std::string_view name : ball_outputs()) CHECK(find_output(name));
+  Design d{Implement::from_specs({0.6858, 0.305, 0.325, 0.0320})};
+  d.stiffness.fundamental_free_Hz = 155.0;
+  d.strings.emplace();
+  d.strings->tension_N = 250.0;
+  d.cor_given = false;
+  d.impact_from_butt_m = 0.5;
+  for (const Support::Kind kind : {Support::Kind::kHeadClamped, Support::Kind::kRigidSurface}) {
+    d.support.kind = kind;
+    const Evaluation e = evaluate(d, Fidelity::kCollision);
+    INFO(to_string(kind));
+    for (const OutputSpec& output : output_specs()) {
+      INFO(output.name);
+      const bool given = given_on_rig(output.name, kind);
+      if (!given) CHECK_FALSE(output.value(e).has_value());
+    }
+    // Held still, the impact point's effective mass is infinite: not given.
+    CHECK_FALSE(find_output("effective_mass_kg")->value(e).has_value());
+    CHECK_FALSE(find_output("peak_wrist_force_N")->value(e).has_value());
+    CHECK(find_output("apparent_cor")->value(e).has_value());
+    CHECK(find_output("peak_ball_compression_m")->value(e).has_value());
+    CHECK(find_output("mass_kg")->value(e).has_value() == (kind == Support::Kind::kHeadClamped));
+  }
 }
 
 TEST_CASE("Outputs that need the modes are absent from a rigid evaluation, the rest present") {
