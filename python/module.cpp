@@ -342,6 +342,10 @@ py::object modes_py(py::handle design, int count, double tol, const std::string&
   result["free_shapes"] = shapes_of(data->free);
   result["hand_held_x_m"] = array_of(data->held.shape_x_m);
   result["hand_held_shapes"] = shapes_of(data->held);
+  if (!data->rig.modes.empty()) {
+    result["on_rig_x_m"] = array_of(data->rig.shape_x_m);
+    result["on_rig_shapes"] = shapes_of(data->rig);
+  }
   return result;
 }
 
@@ -596,7 +600,9 @@ method: 'exact' (transfer matrices) or 'fe' for the free modes (--method).
 Returns the command line's dict ('free' and 'hand_held': lists of modes with frequency_Hz,
 nodes from the butt and the tip in m, ...) and the mode shapes: 'free_x_m' (points along
 the implement from the butt, m), 'free_shapes' (modes x points, max |w| = 1), and
-'hand_held_x_m', 'hand_held_shapes'.)");
+'hand_held_x_m', 'hand_held_shapes'. On a rig that lets the frame vibrate (support
+'handle_clamped' or a pivot) also 'support', 'on_rig' (its modes), 'on_rig_x_m' and
+'on_rig_shapes', and no hand-held modes.)");
 
   m.def("collide", &collide_py, py::arg("design"), py::arg("tol") = 1e-6,
         R"(The solved collision of ball, strings and frame (fidelity 'collision').

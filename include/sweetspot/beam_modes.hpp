@@ -219,7 +219,9 @@ struct BeamSupport {
 // Modes of the beam on its support by finite elements (options.method must be
 // kFiniteElement): the DOFs the support fixes removed and, pinned, the rigid
 // turn about the pivot deflated, so every mode reported is flexible. Nodes
-// are the interior zeros of w outside a clamp (a pivot is one). Throws
+// are the interior zeros of w outside a clamp (a pivot is one), none on a
+// stretch beyond the clamp that moves less than a thousandth of the mode's
+// largest displacement (a stub behind a vice, still to round-off). Throws
 // std::invalid_argument as free_modes(), or for a support off the beam or a
 // clamp ending before it starts.
 ModalResult supported_modes(const std::vector<Section>& sections,

@@ -46,6 +46,13 @@ FlexibleFrame flexible_frame(const Design& design);
 // std::invalid_argument naming "hand/grip_length_m" when the grip leaves the implement.
 HandCoupling hand_coupling(const Design& design);
 
+// The beam's support for supported_modes() of a design on a rig that lets
+// the frame vibrate: handle clamped, a clamp over the hand's grip (centre
+// hand.center_from_butt_m, length hand.grip_length_m); a pivot, pinned there.
+// std::nullopt for every other support (free, hand, and the head clamped or
+// a rigid surface, where nothing vibrates).
+std::optional<BeamSupport> beam_support(const Design& design);
+
 // What the modes add to an evaluation.
 struct ModalOutputs {
   double fundamental_free_Hz = 0.0;

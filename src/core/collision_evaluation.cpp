@@ -64,16 +64,9 @@ void DesignCollision::init(double rel_tol, ModeCache& cache) {
   options.rel_tol = rel_tol;
   if (support == Support::Kind::kHand) {
     options.support = ResponseOptions::Support::kHandHeld;
-  } else if (support == Support::Kind::kHandleClamped) {
-    // The vice's jaws where the hand would hold the handle.
-    options.support = ResponseOptions::Support::kRig;
-    const double half = 0.5 * design.hand.grip_length_m;
-    options.rig = {BeamSupport::Kind::kClamped, design.hand.center_from_butt_m - half,
-                   design.hand.center_from_butt_m + half};
-  } else if (support == Support::Kind::kPivot) {
-    options.support = ResponseOptions::Support::kRig;
-    options.rig = {BeamSupport::Kind::kPinned, design.support.pivot_from_butt_m,
-                   design.support.pivot_from_butt_m};
+  } else if (const std::optional<BeamSupport> rig = beam_support(design)) {
+    options.support = ResponseOptions::Support::kRig;  // the vice or the pivot
+    options.rig = *rig;
   }
   try {
     model_ = cache.response_model(design, options);

@@ -139,6 +139,21 @@ FlexibleFrame flexible_frame(const Design& design) {
   return frame;
 }
 
+std::optional<BeamSupport> beam_support(const Design& design) {
+  switch (design.support.kind) {
+    case Support::Kind::kHandleClamped: {
+      const double half = 0.5 * design.hand.grip_length_m;
+      return BeamSupport{BeamSupport::Kind::kClamped, design.hand.center_from_butt_m - half,
+                         design.hand.center_from_butt_m + half};
+    }
+    case Support::Kind::kPivot:
+      return BeamSupport{BeamSupport::Kind::kPinned, design.support.pivot_from_butt_m,
+                         design.support.pivot_from_butt_m};
+    default:
+      return std::nullopt;
+  }
+}
+
 HandCoupling hand_coupling(const Design& design) {
   const Hand& hand = design.hand;
   detail::require_positive("hand/grip_length_m", hand.grip_length_m, "m");

@@ -26,6 +26,25 @@ io::Json mode_json(const Mode& mode, double length_m, bool held) {
   return j;
 }
 
+// "handle clamped (2-12 cm from the butt)", "on a pivot 15.24 cm from the butt".
+std::string rig_words(const studies::ModesData& data) {
+  const Support& support = data.design.design.support;
+  if (support.kind == Support::Kind::kPivot)
+    return fmt::format("on a pivot {:.2f} cm from the butt", 100 * support.pivot_from_butt_m);
+  const Hand& hand = data.design.design.hand;
+  return fmt::format("handle clamped ({:.1f}-{:.1f} cm from the butt)",
+                     100 * (hand.center_from_butt_m - 0.5 * hand.grip_length_m),
+                     100 * (hand.center_from_butt_m + 0.5 * hand.grip_length_m));
+}
+
+std::string capitalised(std::string text) {
+  if (!text.empty() && text[0] >= 'a' && text[0] <= 'z') text[0] = static_cast<char>(text[0] - 32);
+  return text;
+}
+
+// The centres of percussion are a player's: shown unless on a rig.
+bool shows_cops(const studies::ModesData& data) { return !is_rig(data.design.design.support); }
+
 }  // namespace
 
 std::string modes_report(const studies::ModesData& data, io::Format format) {
@@ -36,11 +55,14 @@ std::string modes_report(const studies::ModesData& data, io::Format format) {
       csv += fmt::format(",free_mode_{}", k + 1);
     for (std::size_t k = 0; k < data.held.shape_w.size(); ++k)
       csv += fmt::format(",hand_mode_{}", k + 1);
+    for (std::size_t k = 0; k < data.rig.shape_w.size(); ++k)
+      csv += fmt::format(",rig_mode_{}", k + 1);
     csv += "\n";
     for (std::size_t i = 0; i < data.free.shape_x_m.size(); ++i) {
       csv += io::exact(data.free.shape_x_m[i]);
       for (const auto& w : data.free.shape_w) csv += "," + io::exact(w[i]);
       for (const auto& w : data.held.shape_w) csv += "," + io::exact(i < w.size() ? w[i] : 0.0);
+      for (const auto& w : data.rig.shape_w) csv += "," + io::exact(i < w.size() ? w[i] : 0.0);
       csv += "\n";
     }
     return csv;
@@ -56,6 +78,12 @@ std::string modes_report(const studies::ModesData& data, io::Format format) {
     j["free_method"] =
         data.free.method == ModeOptions::Method::kExact ? "exact" : "finite elements";
     j["hand_held_elements"] = data.held.elements_used;
+    if (is_rig(data.design.design.support)) {
+      j["support"] = to_string(data.design.design.support.kind);
+      j["on_rig"] = io::Json::array();
+      for (const Mode& m : data.rig.modes) j["on_rig"].push_back(mode_json(m, L, false));
+      j["on_rig_elements"] = data.rig.elements_used;
+    }
     return j.dump(2, ' ', false, io::Json::error_handler_t::replace) + "\n";
   }
   std::string md = fmt::format("# Vibration modes: {}\n\n", io::md_cell(data.design.name));
@@ -91,7 +119,20 @@ std::string modes_report(const studies::ModesData& data, io::Format format) {
         "the "
         "first mode with a small share is the frame's fundamental.\n";
   }
-  if (data.rigid.cop_free_from_butt_m && data.rigid.cop_hand_from_butt_m) {
+  if (!data.rig.modes.empty()) {
+    md += fmt::format(
+        "\n## {} (finite elements, {} elements)\n\n| mode | frequency (Hz) | nodes from the tip "
+        "(m) |\n|---:|---:|---|\n",
+        capitalised(rig_words(data)), data.rig.elements_used);
+    for (std::size_t k = 0; k < data.rig.modes.size(); ++k) {
+      md += fmt::format("| {} | {:.2f} | {} |\n", k + 1, data.rig.modes[k].frequency_Hz,
+                        nodes_text(data.rig.modes[k], L));
+    }
+    md += data.design.design.support.kind == Support::Kind::kPivot
+              ? "\nThe pivot is a node of every mode (w = 0 there, free to turn).\n"
+              : "\nThe clamp holds w = w' = 0 over its length; no node is reported inside it.\n";
+  }
+  if (shows_cops(data) && data.rigid.cop_free_from_butt_m && data.rigid.cop_hand_from_butt_m) {
     md += fmt::format(
         "\nCentres of percussion from the tip: free (axis at the butt) {:.4f} m, hand-held {:.4f} "
         "m.\n",
@@ -131,9 +172,11 @@ io::Plot modes_plot(const studies::ModesData& data) {
   };
   add(data.free, "free", "dt 1", false);
   add(data.held, "hand-held", "dt 2", true);
-  if (data.rigid.cop_free_from_butt_m)
+  add(data.rig, data.design.design.support.kind == Support::Kind::kPivot ? "pivoted" : "clamped",
+      "dt 2", false);
+  if (shows_cops(data) && data.rigid.cop_free_from_butt_m)
     plot.vertical_lines.push_back({100 * (L - *data.rigid.cop_free_from_butt_m), "COP free"});
-  if (data.rigid.cop_hand_from_butt_m)
+  if (shows_cops(data) && data.rigid.cop_hand_from_butt_m)
     plot.vertical_lines.push_back({100 * (L - *data.rigid.cop_hand_from_butt_m), "COP hand-held"});
   if (!data.free.modes.empty() && !data.free.modes[0].nodes_from_butt_m.empty()) {
     plot.vertical_lines.push_back(

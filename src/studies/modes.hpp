@@ -1,8 +1,9 @@
 #pragma once
 
 // `sweetspot modes`, its numbers: the first vibration modes of a design, free
-// and held in the hand, with their nodes and shapes, and the rigid model's
-// centres of percussion beside them. reports/modes_report.hpp writes them.
+// and held in the hand (or on its rig: the handle clamped, a pivot), with
+// their nodes and shapes, and the rigid model's centres of percussion beside
+// them (a player's only). reports/modes_report.hpp writes them.
 
 #include <optional>
 
@@ -19,7 +20,10 @@ struct ModesData {
   io::DesignFile design;
   Evaluation rigid;
   ModalResult free;
-  ModalResult held;  // empty without a hand
+  ModalResult held;  // empty without a hand, or on a rig
+  // On a rig that lets the frame vibrate (handle clamped, a pivot): its modes
+  // (supported_modes(), finite elements); empty otherwise.
+  ModalResult rig;
   // The hand-held fundamental among `held` (hand_held_fundamental(): the
   // first mode the frame, not the hand, carries); absent without one.
   std::optional<Mode> held_fundamental;

@@ -892,6 +892,20 @@ TEST_CASE("A clamp over a stretch leaves a cantilever of the rest of the beam") 
   CHECK(std::abs(mode_shape_at(r.modes[0], 0.5 * a)) == 0.0);
 }
 
+TEST_CASE("A stub behind a clamp stays still: the cantilever of the rest, no node on the stub") {
+  // Clamped over [s, s + a] with a stub of s behind: w = w' = 0 at the
+  // clamp's near end leaves the stub nothing to move it but round-off.
+  const double L = 0.7, s = 0.02, a = 0.10, m = 0.35, EI = 250.0;
+  const ModalResult r =
+      supported_modes({{L, m, EI}}, {}, {BeamSupport::Kind::kClamped, s, s + a}, supported_fe(2));
+  REQUIRE(r.modes.size() == 2);
+  CHECK(r.modes[0].frequency_Hz ==
+        Approx(f_closed_form(clamped_free_root(1.875), L - s - a, EI, m / L)).epsilon(kSupportTol));
+  CHECK(r.modes[0].nodes_from_butt_m.empty());
+  REQUIRE(r.modes[1].nodes_from_butt_m.size() == 1);
+  CHECK(r.modes[1].nodes_from_butt_m[0] > s + a);
+}
+
 TEST_CASE("A beam pinned at its end has tan z = tanh z and its node where the shape says") {
   const double L = 0.8, m = 0.4, EI = 300.0;
   const ModalResult r =

@@ -35,6 +35,19 @@ def test_modes_are_the_command_lines(count, method):
             assert x[i] <= node["from_butt_m"] <= x[i + 1]
 
 
+def test_modes_on_a_rig_are_the_command_lines():
+    pivot = str(ROOT / "designs/lab/pivot-6in.json")
+    got = sweetspot.modes(pivot, count=3)
+    expected = cli_json("modes", pivot, "--format", "json", "--modes", 3)
+    assert {k: got[k] for k in expected} == expected
+    assert expected["support"] == "pivot" and len(expected["on_rig"]) == 3
+    assert expected["hand_held"] == []
+    assert got["on_rig_shapes"].shape == (3, got["on_rig_x_m"].size)
+    # The pivot is a node of every mode.
+    for mode in expected["on_rig"]:
+        assert any(abs(n["from_butt_m"] - 0.1524) < 1e-9 for n in mode["nodes"])
+
+
 def test_collide_closes_its_ledger():
     c = sweetspot.collide(STRUNG)
     assert c["evaluation"] == sweetspot.evaluate(STRUNG, fidelity="collision")

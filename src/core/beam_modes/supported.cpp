@@ -20,6 +20,9 @@ using beam_detail::VectorXd;
 
 // Nodes closer than this share of the length to a support's end are on it.
 constexpr double kOnSupport = 1e-9;
+// A stretch outside a clamp that moves less than this share of the mode's
+// largest displacement is held still with it: no node is reported there.
+constexpr double kStillShare = 1e-3;
 
 }  // namespace
 
@@ -107,8 +110,20 @@ ModalResult supported_modes(const std::vector<Section>& sections,
     const VectorXd q = B * (b / std::sqrt(b.dot(Mr * b)));
     Mode mode = fe_mode(mesh, q, 1.0 / std::sqrt(es.eigenvalues()(j))).first;
     if (clamped) {
-      std::erase_if(mode.nodes_from_butt_m,
-                    [&](double x) { return x >= from - tol && x <= to + tol; });
+      // No node inside the clamp, nor on a stretch beyond it that barely
+      // moves (a stub of handle behind the vice: its zeros are round-off).
+      double largest = 0.0, before = 0.0, after = 0.0;
+      for (std::size_t i = 0; i < mesh.nodes_m.size(); ++i) {
+        const double w = std::abs(q(static_cast<int>(2 * i)));
+        largest = std::max(largest, w);
+        if (mesh.nodes_m[i] < from - tol) before = std::max(before, w);
+        if (mesh.nodes_m[i] > to + tol) after = std::max(after, w);
+      }
+      const double still = kStillShare * largest;
+      std::erase_if(mode.nodes_from_butt_m, [&](double x) {
+        return (x >= from - tol && x <= to + tol) || (x < from && before < still) ||
+               (x > to && after < still);
+      });
     }
     result.modes.push_back(std::move(mode));
   }
