@@ -906,6 +906,30 @@ TEST_CASE("A stub behind a clamp stays still: the cantilever of the rest, no nod
   CHECK(r.modes[1].nodes_from_butt_m[0] > s + a);
 }
 
+TEST_CASE(
+    "A pivot a hair from a section's end keeps its node: the merge of tiny elements spares it") {
+  // Two sections meeting 25 um beyond the pivot: the 25 um element beside it
+  // used to be merged away with the pivot's node.
+  const double end = 0.200025, L = 0.6858;
+  const std::vector<Section> sections{{end, 0.11, 200.0}, {L - end, 0.2, 200.0}};
+  ModeOptions options;
+  options.method = ModeOptions::Method::kFiniteElement;
+  options.modes = 2;
+  options.shape_samples = 0;
+  const ModalResult near =
+      supported_modes(sections, {}, {BeamSupport::Kind::kPinned, 0.2, 0.2}, options);
+  const ModalResult at =
+      supported_modes(sections, {}, {BeamSupport::Kind::kPinned, end, end}, options);
+  REQUIRE(near.modes.size() == 2);
+  for (const Mode& mode : near.modes) {
+    CHECK(std::any_of(mode.nodes_from_butt_m.begin(), mode.nodes_from_butt_m.end(),
+                      [](double x) { return std::abs(x - 0.2) < 1e-12; }));
+  }
+  // 25 um of 0.69 m moves the frequencies by about that share, not more.
+  for (int k = 0; k < 2; ++k)
+    CHECK(near.modes[k].frequency_Hz == Approx(at.modes[k].frequency_Hz).epsilon(1e-3));
+}
+
 TEST_CASE("A beam pinned at its end has tan z = tanh z and its node where the shape says") {
   const double L = 0.8, m = 0.4, EI = 300.0;
   const ModalResult r =

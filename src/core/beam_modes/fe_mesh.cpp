@@ -49,13 +49,22 @@ double merge_error(const Element& a, const Element& b, double length_m) {
   return (hi / lo - 1.0) * std::min(a.h, b.h) / length_m;
 }
 
-void merge_tiny_elements(Mesh& mesh) {
+void merge_tiny_elements(Mesh& mesh, const std::vector<double>& keep_nodes) {
   std::vector<double> phases;  // of each element, kept in step with the merges
   for (const Element& e : mesh.elements) phases.push_back(phase(e));
+  // A node on a support stays a node: an element whose merges would remove
+  // one is left as it is (`stays`).
+  const double on_node = 1e-12 * mesh.length_m;
+  const auto kept = [&](double x) {
+    return std::any_of(keep_nodes.begin(), keep_nodes.end(),
+                       [&](double k) { return std::abs(x - k) <= on_node; });
+  };
+  std::vector<bool> stays(mesh.elements.size(), false);
   while (mesh.elements.size() > 1) {
     std::size_t tiny = 0;
     double worst = kMergeRatio;
     for (std::size_t e = 0; e < mesh.elements.size(); ++e) {
+      if (stays[e]) continue;
       double neighbour = 0.0;
       if (e > 0) neighbour = std::max(neighbour, phases[e - 1]);
       if (e + 1 < mesh.elements.size()) neighbour = std::max(neighbour, phases[e + 1]);
@@ -68,12 +77,21 @@ void merge_tiny_elements(Mesh& mesh) {
     if (!(worst < kMergeRatio)) return;
     // Into the neighbour that misstates the stiffness least, else the longer in phase.
     const std::size_t last = mesh.elements.size() - 1;
+    // Into the left removes the tiny element's first node, into the right its last.
+    const bool blocked_left = tiny > 0 && kept(mesh.nodes_m[tiny]);
+    const bool blocked_right = tiny < last && kept(mesh.nodes_m[tiny + 1]);
     const double error_left =
-        tiny > 0 ? merge_error(mesh.elements[tiny - 1], mesh.elements[tiny], mesh.length_m)
-                 : std::numeric_limits<double>::infinity();
+        tiny > 0 && !blocked_left
+            ? merge_error(mesh.elements[tiny - 1], mesh.elements[tiny], mesh.length_m)
+            : std::numeric_limits<double>::infinity();
     const double error_right =
-        tiny < last ? merge_error(mesh.elements[tiny], mesh.elements[tiny + 1], mesh.length_m)
-                    : std::numeric_limits<double>::infinity();
+        tiny < last && !blocked_right
+            ? merge_error(mesh.elements[tiny], mesh.elements[tiny + 1], mesh.length_m)
+            : std::numeric_limits<double>::infinity();
+    if (std::min(error_left, error_right) > kMergeTolerance && (blocked_left || blocked_right)) {
+      stays[tiny] = true;  // a short element beside the support, resolved as it is
+      continue;
+    }
     if (std::min(error_left, error_right) > kMergeTolerance) {
       const ElementPiece& p = mesh.elements[tiny].pieces.front();
       throw FieldError(
@@ -103,6 +121,7 @@ void merge_tiny_elements(Mesh& mesh) {
     phases.erase(phases.begin() + static_cast<std::ptrdiff_t>(left) + 1);
     mesh.elements[left] = std::move(merged);
     mesh.elements.erase(mesh.elements.begin() + static_cast<std::ptrdiff_t>(left) + 1);
+    stays.erase(stays.begin() + static_cast<std::ptrdiff_t>(left) + 1);
     mesh.nodes_m.erase(mesh.nodes_m.begin() + static_cast<std::ptrdiff_t>(left) + 1);
     mesh.nodal_mass_kg.erase(mesh.nodal_mass_kg.begin() + static_cast<std::ptrdiff_t>(left) + 1);
   }
@@ -110,8 +129,8 @@ void merge_tiny_elements(Mesh& mesh) {
 
 }  // namespace
 
-Mesh build_mesh(const Segmentation& seg, const std::vector<int>& counts,
-                const ModeOptions& options) {
+Mesh build_mesh(const Segmentation& seg, const std::vector<int>& counts, const ModeOptions& options,
+                const std::vector<double>& keep_nodes) {
   Mesh mesh;
   mesh.length_m = seg.length_m;
   mesh.nodes_m.push_back(0.0);
@@ -159,7 +178,7 @@ Mesh build_mesh(const Segmentation& seg, const std::vector<int>& counts,
     }
   }
   mesh.nodal_mass_kg.back() += seg.tip_mass_kg;
-  if (!timoshenko) merge_tiny_elements(mesh);
+  if (!timoshenko) merge_tiny_elements(mesh, keep_nodes);
   return mesh;
 }
 

@@ -197,9 +197,10 @@ struct Assembled {
   int beam_dofs = 0;
 };
 
-// The mesh of `counts` elements per segment (counts_for), tiny elements merged.
-Mesh build_mesh(const Segmentation& seg, const std::vector<int>& counts,
-                const ModeOptions& options);
+// The mesh of `counts` elements per segment (counts_for), tiny elements
+// merged, but never across a node at one of `keep_nodes` (a support's ends).
+Mesh build_mesh(const Segmentation& seg, const std::vector<int>& counts, const ModeOptions& options,
+                const std::vector<double>& keep_nodes = {});
 
 // K, M and C (grip dashpots) of the mesh, dense; the hand's two DOFs last.
 Assembled assemble(const Mesh& mesh, const HandCoupling* hand);

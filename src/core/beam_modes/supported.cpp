@@ -51,7 +51,7 @@ ModalResult supported_modes(const std::vector<Section>& sections,
          to);
   }
   const Segmentation seg = segment(sections, point_masses, {from, to}, timoshenko_of(options));
-  const Mesh mesh = build_mesh(seg, element_counts(seg, options), options);
+  const Mesh mesh = build_mesh(seg, element_counts(seg, options), options, {from, to});
   const Assembled a = assemble(mesh, nullptr);
   const int n = static_cast<int>(a.K.rows());
   // The DOFs the support leaves free: (w_i, theta_i) at node i.
