@@ -143,6 +143,32 @@ CollisionResult DesignCollision::at(double from_butt_m, double off_axis_m,
 
 namespace {
 
+// The solved collision `r` into `e`, with the COR `cor` it implies: the
+// contact, the ball's numbers, the vibration and the record.
+void put_collision(const Design& design, const DesignCollision& collision, double cor,
+                   CollisionResult r, Evaluation& e) {
+  e.fidelity = Fidelity::kCollision;
+  e.support = design.support;
+  e.cor = cor;
+  e.cor_derived = true;
+  e.impact_duration_s = r.contact_time_s;
+  e.impact_duration_derived = true;
+  put_string_bed(design, e);
+  e.apparent_cor = r.apparent_cor;
+  e.rebound_speed_m_s = r.apparent_cor * design.ball.speed_m_s;
+  e.impulse_N_s = r.impulse_N_s;
+  e.peak_impact_force_N = r.peak_force_N;
+  e.vibration_energy_J = r.vibration_J;
+  e.vibration_share = r.vibration_J / r.ball_in_J;
+  if (!e.details) e.details.emplace();
+  e.details->vibration_modes.clear();
+  for (std::size_t k = 0; k < r.mode_energy_J.size(); ++k) {
+    e.details->vibration_modes.emplace_back(collision.model().modes[k].mode.frequency_Hz,
+                                            r.mode_energy_J[k]);
+  }
+  e.details->collision = std::move(r);
+}
+
 // A rig's evaluation (is_rig()): the solved collision on the rig, the
 // implement's mass properties beside it (none on a rigid surface), nothing of
 // the player (Evaluation::support).
@@ -182,26 +208,8 @@ Evaluation evaluate_rig(const Design& design, double rel_tol, ModeCache& cache) 
   e.impact_off_axis_m = design.impact_off_axis_m;
   e.twist_rate_rad_s = player.twist_rate_rad_s;
   e.peak_twist_torque_N_m = player.peak_twist_torque_N_m;
-  e.fidelity = Fidelity::kCollision;
-  e.support = design.support;
   e.effective_mass_kg = inverse_mass > 0.0 ? 1.0 / inverse_mass : INFINITY;
-  e.cor = cor;
-  e.cor_derived = true;
-  e.impact_duration_s = r.contact_time_s;
-  e.impact_duration_derived = true;
-  put_string_bed(design, e);
-  e.apparent_cor = r.apparent_cor;
-  e.rebound_speed_m_s = r.apparent_cor * design.ball.speed_m_s;
-  e.impulse_N_s = r.impulse_N_s;
-  e.peak_impact_force_N = r.peak_force_N;
-  e.vibration_energy_J = r.vibration_J;
-  e.vibration_share = r.vibration_J / r.ball_in_J;
-  e.details.emplace();
-  for (std::size_t k = 0; k < r.mode_energy_J.size(); ++k) {
-    e.details->vibration_modes.emplace_back(collision.model().modes[k].mode.frequency_Hz,
-                                            r.mode_energy_J[k]);
-  }
-  e.details->collision = std::move(r);
+  put_collision(design, collision, cor, std::move(r), e);
   check_invariants(e, design);
   return e;
 }
@@ -225,35 +233,16 @@ Evaluation evaluate_collision(const Design& design, double rel_tol, ModeCache& c
   resolved.cor = std::clamp(cor, 0.0, 1.0);
   resolved.impact_duration_s = r.contact_time_s;
   Evaluation e = evaluate(resolved, Fidelity::kModal, {.rel_tol = rel_tol, .modes = &cache});
-  e.fidelity = Fidelity::kCollision;
-  e.cor = cor;
-  e.cor_derived = true;
-  e.impact_duration_s = r.contact_time_s;
-  e.impact_duration_derived = true;
-  put_string_bed(design, e);
-  e.apparent_cor = r.apparent_cor;
-  e.rebound_speed_m_s = r.apparent_cor * design.ball.speed_m_s;
-  e.impulse_N_s = r.impulse_N_s;
-  e.peak_impact_force_N = r.peak_force_N;
-  e.peak_wrist_force_N = peak_wrist_force(e.wrist_force_ratio, r.peak_force_N);
-  e.support = design.support;
+  put_collision(design, collision, cor, std::move(r), e);
+  e.peak_wrist_force_N = peak_wrist_force(e.wrist_force_ratio, e.peak_impact_force_N);
   // Held in the hand, the impact moves implement and hand (the rigid model's
   // M_eff is the implement's alone, Eq. 17).
   if (design.support.kind == Support::Kind::kHand) e.effective_mass_kg = M_eff;
   if (const double y = design.impact_off_axis_m; y != 0.0) {
     // The twist of the solved impulse and force (evaluate()'s formulas).
-    e.twist_rate_rad_s = r.impulse_N_s * y / *e.polar_inertia_kg_m2;
-    e.peak_twist_torque_N_m = r.peak_force_N * std::abs(y);
+    e.twist_rate_rad_s = e.impulse_N_s * y / *e.polar_inertia_kg_m2;
+    e.peak_twist_torque_N_m = e.peak_impact_force_N * std::abs(y);
   }
-  e.vibration_energy_J = r.vibration_J;
-  e.vibration_share = r.vibration_J / r.ball_in_J;
-  if (!e.details) e.details.emplace();
-  e.details->vibration_modes.clear();
-  for (std::size_t k = 0; k < r.mode_energy_J.size(); ++k) {
-    e.details->vibration_modes.emplace_back(collision.model().modes[k].mode.frequency_Hz,
-                                            r.mode_energy_J[k]);
-  }
-  e.details->collision = std::move(r);
   check_invariants(e, design);
   return e;
 }
