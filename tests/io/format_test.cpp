@@ -40,6 +40,13 @@ TEST_CASE("significant() keeps the digits asked for and never prints -0") {
   CHECK(significant(1117.4321) == "1117.43");
   CHECK(significant(1117.4321, 4) == "1117");
   CHECK(significant(-0.0) == "0");
+  // No exponent for an everyday size: rounded to its digits, written whole.
+  CHECK(significant(1510.3, 3) == "1510");
+  CHECK(significant(60884.2, 4) == "60880");
+  CHECK(significant(-60884.2, 4) == "-60880");
+  CHECK(significant(999.96, 3) == "1000");
+  CHECK(significant(2.5e6, 3) == "2.5e+06");
+  CHECK(significant(0.000123, 3) == "0.000123");
 }
 
 TEST_CASE(
