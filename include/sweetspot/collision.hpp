@@ -158,6 +158,39 @@ CollisionResult collide(const FrameAtImpact& frame, const std::optional<StringBe
                         double ball_mass_kg, const BallContactLaw& law, double speed_m_s,
                         const CollisionOptions& options = {});
 
+// ------------------------------------------------------------ the ball alone
+
+// The ITF's drop test: 100 in (2.54 m) onto a rigid surface, v = sqrt(2 g h)
+// with g = 9.81 m/s^2.
+inline constexpr double kDropTestSpeed_m_s = 7.059376743;
+
+// The ball's COR on a rigid surface at `speed_m_s` (collide() on rigid_frame()).
+double rigid_surface_cor(const BallContactLaw& law, double ball_mass_kg,
+                         double speed_m_s = kDropTestSpeed_m_s);
+
+// `law` with its loss set so that the ball's COR on a rigid surface at the
+// drop test's speed is `cor`, in [0, 1): for the power law its damping b, for
+// the hysteretic law its unloading offset (+infinity for cor = 0, a plastic
+// ball). Throws FieldError at "ball/cor_on_rigid_surface" when the law cannot
+// reach it (the power law's deadest ball at b = kMaxBallDamping; the
+// hysteretic law's liveliest at the smallest offset).
+BallContactLaw with_rigid_surface_cor(const BallContactLaw& law, double ball_mass_kg, double cor);
+
+// The ITF's slow compression test on the ball at rate 0 (no damping, the
+// hysteretic ball relaxed to its wall B_w): loaded to `force_N`, the forward
+// deformation; loaded on to `max_compression_m` and unloaded to `force_N`, the
+// return deformation; the loop's area, loading work less the work returned
+// to 0, which the ball loses in it [J]. The power law has no loop (forward =
+// return, area 0). Throws std::invalid_argument if the relaxed ball has no
+// stiffness or cannot reach the force.
+struct StaticLoop {
+  double forward_deformation_m = 0.0;
+  double return_deformation_m = 0.0;
+  double loop_energy_J = 0.0;
+};
+StaticLoop static_loop(const BallContactLaw& law, double force_N = kItfStaticForce_N,
+                       double max_compression_m = kItfStaticMaxCompression_m);
+
 // ------------------------------------------------------------ on the implement
 
 // The COR at the impact point that Cross (2004) Eq. (16) maps to an apparent

@@ -100,6 +100,10 @@ struct Ball {
   double mass_kg = 0.057;  // [kg], > 0 (a tennis ball)
   double speed_m_s =
       50.0;  // incident speed relative to the impact point [m/s], in [kMinSpeed_m_s, kMaxSpeed_m_s]
+  // The ball's COR on a rigid surface at the drop test's speed, in [0, 1):
+  // the contact law's loss is set to match it (with_rigid_surface_cor(),
+  // collision.hpp) where the collision is solved; none, the law as given.
+  std::optional<double> cor_on_rigid_surface;
 };
 
 // What holds the implement when the ball hits it (docs/model.md, "Supports").

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -18,8 +19,59 @@
 
 namespace sweetspot {
 
+const char* to_string(BallLawForm form) {
+  return form == BallLawForm::kHysteretic ? "hysteretic" : "power";
+}
+
+namespace {
+
+// The hysteretic law's problem, if any: each field in its range, each
+// unloading exponent at or above its backbone's (1, 2, 1), so that no branch
+// rises above its backbone (energy from nowhere).
+std::string hysteretic_problem(const HystereticBallLaw& h) {
+  using detail::format_number;
+  const auto finite_at_least = [](const char* name, double v, double lo, bool open) -> std::string {
+    if (std::isfinite(v) && (open ? v > lo : v >= lo)) return {};
+    return std::string("hysteretic.") + name + ": must be " + (open ? "> " : ">= ") +
+           format_number(lo) + ", got " + format_number(v);
+  };
+  for (const std::string& why :
+       {finite_at_least("shell_stiffness", h.shell_stiffness, 0.0, true),
+        finite_at_least("shell_compression", h.shell_compression, 0.0, true),
+        finite_at_least("stiffening", h.stiffening, 0.0, false),
+        finite_at_least("wall_stiffness", h.wall_stiffness, 0.0, false),
+        finite_at_least("damping", h.damping, 0.0, false)}) {
+    if (!why.empty()) return why;
+  }
+  if (h.shell_stiffness > kMaxBallStiffness || h.wall_stiffness > kMaxBallStiffness ||
+      h.stiffening > kMaxBallStiffness || h.damping > kMaxBallDamping)
+    return "hysteretic: a stiffness above " + format_number(kMaxBallStiffness) +
+           " or a damping above " + format_number(kMaxBallDamping);
+  if (std::isnan(h.unloading_offset) ||
+      h.unloading_offset == -std::numeric_limits<double>::infinity())
+    return "hysteretic.unloading_offset: must be a number or +infinity, got " +
+           format_number(h.unloading_offset);
+  const struct {
+    const char* name;
+    double q, lowest;
+  } exponents[] = {{"shell_unloading", h.shell_unloading, 1.0},
+                   {"stiffening_unloading", h.stiffening_unloading, 2.0},
+                   {"wall_unloading", h.wall_unloading, 1.0}};
+  for (const auto& e : exponents) {
+    if (!std::isfinite(e.q))
+      return std::string("hysteretic.") + e.name + ": must be finite, got " + format_number(e.q);
+    if (!(e.q >= e.lowest))
+      return std::string("hysteretic.") + e.name + ": must be >= " + format_number(e.lowest) +
+             " (unloading never above loading), got " + format_number(e.q);
+  }
+  return {};
+}
+
+}  // namespace
+
 std::string BallContactLaw::validate() const {
   using detail::format_number;
+  if (form == BallLawForm::kHysteretic) return hysteretic_problem(hysteretic);
   if (!(stiffness > 0.0 && stiffness <= kMaxBallStiffness))
     return "stiffness: must be in (0, " + format_number(kMaxBallStiffness) + "], got " +
            format_number(stiffness);
@@ -36,6 +88,8 @@ std::string BallContactLaw::validate() const {
 }
 
 double contact_elastic_energy(const BallContactLaw& law, double compression_m) {
+  if (law.form == BallLawForm::kHysteretic)
+    return collision_detail::HystereticLaw(law.hysteretic).energy(compression_m);
   return collision_detail::PowerLaw(law).energy(compression_m);
 }
 
@@ -78,6 +132,95 @@ std::string CollisionOptions::validate() const {
   return {};
 }
 
+double rigid_surface_cor(const BallContactLaw& law, double ball_mass_kg, double speed_m_s) {
+  return collide(rigid_frame(), std::nullopt, ball_mass_kg, law, speed_m_s).apparent_cor;
+}
+
+BallContactLaw with_rigid_surface_cor(const BallContactLaw& law, double ball_mass_kg, double cor) {
+  using detail::format_number;
+  constexpr const char* kField = "ball/cor_on_rigid_surface";
+  if (!(cor >= 0.0 && cor < 1.0))
+    throw FieldError(kField, "must be in [0, 1), got " + format_number(cor));
+  // The loss parameter p of the law, e(p) falling: bisection to 1e-10 in e.
+  BallContactLaw out = law;
+  double* loss = &out.damping;
+  double lo = 0.0, hi = kMaxBallDamping;
+  if (law.form == BallLawForm::kHysteretic) {
+    const HystereticBallLaw& h = law.hysteretic;
+    loss = &out.hysteretic.unloading_offset;
+    // Below -(the largest exponent's excess) every branch sits at its minimum.
+    lo = -std::max({h.shell_unloading - 1.0, h.stiffening_unloading - 2.0, h.wall_unloading - 1.0});
+    if (cor == 0.0) {
+      *loss = std::numeric_limits<double>::infinity();
+      return out;
+    }
+    hi = lo + 1.0;
+  }
+  const auto cor_at = [&](double p) {
+    *loss = p;
+    return rigid_surface_cor(out, ball_mass_kg);
+  };
+  const double liveliest = cor_at(lo);
+  if (cor > liveliest)
+    throw FieldError(kField, "must be at most " + format_number(liveliest) + " for the " +
+                                 to_string(law.form) + " law's ball, got " + format_number(cor));
+  if (law.form == BallLawForm::kHysteretic) {
+    while (cor_at(hi) > cor && hi < 1e6) hi = lo + 2.0 * (hi - lo);
+  } else if (cor_at(hi) > cor) {
+    throw FieldError(kField, "must be at least " + format_number(cor_at(hi)) +
+                                 " for the power law's ball (its damping at most " +
+                                 format_number(kMaxBallDamping) +
+                                 "; the hysteretic law's reaches 0), got " + format_number(cor));
+  }
+  // The power law's damping spans decades: bisect its logarithm above 1e-9 of the top.
+  const bool log_scale = law.form == BallLawForm::kPower;
+  if (log_scale) lo = kMaxBallDamping * 1e-12;
+  for (int i = 0; i < 200; ++i) {
+    const double mid = log_scale ? std::sqrt(lo * hi) : 0.5 * (lo + hi);
+    const double e = cor_at(mid);
+    if (std::abs(e - cor) <= 1e-10) break;
+    (e > cor ? lo : hi) = mid;
+    if (hi - lo <= 1e-15 * hi) break;
+  }
+  return out;
+}
+
+StaticLoop static_loop(const BallContactLaw& law, double force_N, double max_compression_m) {
+  detail::require_positive("force_N", force_N, "N");
+  detail::require_positive("max_compression_m", max_compression_m, "m");
+  if (const std::string why = law.validate(); !why.empty())
+    throw std::invalid_argument("law." + why);
+  StaticLoop loop;
+  if (law.form == BallLawForm::kPower) {
+    loop.forward_deformation_m = std::pow(force_N / law.stiffness, 1.0 / law.exponent);
+    loop.return_deformation_m = loop.forward_deformation_m;
+    return loop;
+  }
+  // The relaxed ball: its wall alone, no shell, no stiffening, no damping.
+  HystereticBallLaw relaxed = law.hysteretic;
+  relaxed.shell_stiffness = relaxed.stiffening = relaxed.damping = 0.0;
+  collision_detail::HystereticLaw ball(relaxed);
+  if (!(ball.backbone(max_compression_m) >= force_N))
+    throw std::invalid_argument("the relaxed ball reaches " +
+                                detail::format_number(ball.backbone(max_compression_m)) +
+                                " N at max_compression_m, short of force_N");
+  // The force where it crosses force_N on a branch (increasing in x): bisection.
+  const auto crossing = [&](double hi) {
+    double lo = 0.0;
+    for (int i = 0; i < 200 && hi - lo > 1e-15 * hi; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      (ball.force(mid) < force_N ? lo : hi) = mid;
+    }
+    return 0.5 * (lo + hi);
+  };
+  loop.forward_deformation_m = crossing(max_compression_m);
+  const double work_in = ball.backbone_work(max_compression_m);
+  ball.commit(max_compression_m);
+  loop.return_deformation_m = crossing(max_compression_m);
+  loop.loop_energy_J = work_in - ball.energy(max_compression_m);
+  return loop;
+}
+
 double cor_from_apparent(double apparent_cor, double ball_mass_kg, double effective_mass_kg) {
   detail::require_positive("ball_mass_kg", ball_mass_kg, "kg");
   detail::require_positive("effective_mass_kg", effective_mass_kg, "kg");
@@ -95,6 +238,7 @@ using collision_detail::Ball;
 using collision_detail::BallLaw;
 using collision_detail::Bed;
 using collision_detail::EnergyLedger;
+using collision_detail::HystereticLaw;
 using collision_detail::ModalState;
 using collision_detail::PowerLaw;
 using collision_detail::StepMesh;
@@ -269,9 +413,11 @@ bool gone_for_good(const Ball& ball, const Bed& bed, const ModalState& modes, do
 }
 
 // One run of the integrator (collision.hpp) at options' step, for any ball law.
+// `law` by value: a law with a memory (HystereticLaw) moves it on after each
+// step (commit()).
 template <BallLaw Law>
 CollisionResult integrate(const FrameAtImpact& frame,
-                          const std::optional<StringBedDynamics>& strings, double m, const Law& law,
+                          const std::optional<StringBedDynamics>& strings, double m, Law law,
                           double v1, const CollisionOptions& options) {
   const StepMesh mesh(frame, strings, m, law, v1, options);
   const double inv_M = frame.inverse_effective_mass_per_kg;
@@ -313,6 +459,7 @@ CollisionResult integrate(const FrameAtImpact& frame,
     const double rel = move_ball_and_bed(ball, bed, h, F, Fs, modal.w_dot_mid);
     if (bed.present) ledger.book_strings(bed.cs, h, rel);
     const double x_old = ball.x, x_new = ball.y - bed.s;
+    if constexpr (requires { law.commit(x_new); }) law.commit(x_new);
     const double u_new = law.energy(x_new);
     ledger.book_ball(F, x_new - x_old, u_new - ball.u_x);
     record_step(options, t, h, F, x_new, bed, start.w0 + h * modal.w_dot_mid, res);
@@ -338,11 +485,14 @@ CollisionResult integrate(const FrameAtImpact& frame,
   return res;
 }
 
-// One run at options' step of the calibrated form F = k x^n + b x^p x'.
+// One run at options' step of the law's form.
 CollisionResult run(const FrameAtImpact& frame, const std::optional<StringBedDynamics>& strings,
                     double ball_mass_kg, const BallContactLaw& law, double speed_m_s,
                     const CollisionOptions& options) {
   check_arguments(frame, strings, ball_mass_kg, law, speed_m_s, options);
+  if (law.form == BallLawForm::kHysteretic)
+    return integrate(frame, strings, ball_mass_kg, HystereticLaw(law.hysteretic), speed_m_s,
+                     options);
   return integrate(frame, strings, ball_mass_kg, PowerLaw(law), speed_m_s, options);
 }
 

@@ -42,6 +42,11 @@ void DesignCollision::init(double rel_tol, ModeCache& cache) {
                          detail::format_number(design.cor));
   }
   validate(design);
+  // A ball given by its COR on a rigid surface: the law's loss set to match it.
+  if (design.ball.cor_on_rigid_surface) {
+    design_.ball_contact = with_rigid_surface_cor(design.ball_contact, design.ball.mass_kg,
+                                                  *design.ball.cor_on_rigid_surface);
+  }
   const Support::Kind support = design.support.kind;
   immovable_ = support == Support::Kind::kHeadClamped || support == Support::Kind::kRigidSurface;
   if (support == Support::Kind::kRigidSurface) return;  // the ball alone on a plate

@@ -91,6 +91,12 @@ void validate(const Design& d) {
   if (const std::string why = d.ball_contact.validate(); !why.empty()) {
     throw std::invalid_argument("ball/contact/" + why);
   }
+  if (d.ball.cor_on_rigid_surface &&
+      !(*d.ball.cor_on_rigid_surface >= 0.0 && *d.ball.cor_on_rigid_surface < 1.0)) {
+    throw FieldError("ball/cor_on_rigid_surface",
+                     "must be in [0, 1) (0: a dead ball), got " +
+                         detail::format_number(*d.ball.cor_on_rigid_surface));
+  }
   detail::require_in_range("strings/bed_mass_kg", d.string_bed_mass_kg, kMinStringBedMass_kg,
                            kMaxStringBedMass_kg, "kg");
   if (!(d.string_bed_damping_ratio >= 0.0 && d.string_bed_damping_ratio < 1.0)) {

@@ -1038,16 +1038,31 @@ void read_ball(ObjectReader& top, Reading& in) {
   in.design.ball.mass_kg = ball.get("mass", Dimension::kMass, "mass_kg", in.defaults.ball.mass_kg);
   in.design.ball.speed_m_s =
       ball.get("speed", Dimension::kSpeed, "speed_m_s", in.defaults.ball.speed_m_s);
+  in.design.ball.cor_on_rigid_surface = ball.reader().number("cor_on_rigid_surface");
   if (const Json* contact = ball.reader().child("contact")) {
-    // The ball's contact law F = k x^n + b x^p x' (collision.hpp); the
-    // calibrated tennis ball for every coefficient not given.
+    // The ball's contact law (ball_contact.hpp): the power law F = k x^n +
+    // b x^p x', the calibrated tennis ball for every coefficient not given, or
+    // the hysteretic tennis ball by name.
     ObjectReader c(*contact, "/ball/contact", "ball/contact", in.source, in.keys);
     c.check_known(design_keys("ball/contact"));
-    in.design.ball_contact.stiffness = c.number("stiffness").value_or(kTennisBallLaw.stiffness);
-    in.design.ball_contact.exponent = c.number("exponent").value_or(kTennisBallLaw.exponent);
-    in.design.ball_contact.damping = c.number("damping").value_or(kTennisBallLaw.damping);
-    in.design.ball_contact.damping_exponent =
-        c.number("damping_exponent").value_or(kTennisBallLaw.damping_exponent);
+    const std::optional<std::string> law = c.string("law");
+    if (law && *law != "power" && *law != "hysteretic")
+      c.fail("law", "expected \"power\" or \"hysteretic\", got \"" + *law + "\"");
+    if (law == "hysteretic") {
+      for (const char* coefficient : {"stiffness", "exponent", "damping", "damping_exponent"}) {
+        if (c.has(coefficient))
+          c.fail(coefficient,
+                 "is a coefficient of the power law, not of the hysteretic ball "
+                 "(give \"law\": \"power\" or leave it out)");
+      }
+      in.design.ball_contact = kHystereticTennisBallLaw;
+    } else {
+      in.design.ball_contact.stiffness = c.number("stiffness").value_or(kTennisBallLaw.stiffness);
+      in.design.ball_contact.exponent = c.number("exponent").value_or(kTennisBallLaw.exponent);
+      in.design.ball_contact.damping = c.number("damping").value_or(kTennisBallLaw.damping);
+      in.design.ball_contact.damping_exponent =
+          c.number("damping_exponent").value_or(kTennisBallLaw.damping_exponent);
+    }
     c.finish(design_keys("ball/contact"));
   }
   ball.reader().finish(design_keys("ball"));
@@ -1487,10 +1502,14 @@ Json design_to_json(const DesignFile& file) {
   Json& ball = j[si_key("", "ball")] = Json::object();
   put(ball, "ball", "mass", d.ball.mass_kg);
   put(ball, "ball", "speed", d.ball.speed_m_s);
+  if (d.ball.cor_on_rigid_surface)
+    put(ball, "ball", "cor_on_rigid_surface", *d.ball.cor_on_rigid_surface);
   const BallContactLaw& c = d.ball_contact;
   const BallContactLaw& t = kTennisBallLaw;
-  if (c.stiffness != t.stiffness || c.exponent != t.exponent || c.damping != t.damping ||
-      c.damping_exponent != t.damping_exponent) {
+  if (c.form == BallLawForm::kHysteretic) {
+    ball[si_key("ball", "contact")] = Json{{"law", to_string(c.form)}};
+  } else if (c.stiffness != t.stiffness || c.exponent != t.exponent || c.damping != t.damping ||
+             c.damping_exponent != t.damping_exponent) {
     Json& contact = ball[si_key("ball", "contact")] = Json::object();
     put(contact, "ball/contact", "stiffness", c.stiffness);
     put(contact, "ball/contact", "exponent", c.exponent);

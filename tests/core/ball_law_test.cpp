@@ -7,8 +7,11 @@
 
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <limits>
+#include <string>
 
 #include "core/collision/contact_force.hpp"
+#include "sweetspot/collision.hpp"
 
 namespace sweetspot::collision_detail {
 namespace {
@@ -106,6 +109,122 @@ TEST_CASE("The solved step force is the root of F = Phi(a - c F)") {
       CHECK(F == Approx(phi).epsilon(1e-12).margin(1e-9));
     }
   }
+}
+
+// ------------------------------------------------------------ the hysteretic ball
+
+// The calibrated hysteretic ball, one with its every branch at its minimum
+// exponent, and a deader one.
+HystereticBallLaw hysteretic_with_offset(double offset) {
+  HystereticBallLaw h = kHystereticTennisBallLaw.hysteretic;
+  h.unloading_offset = offset;
+  return h;
+}
+const HystereticBallLaw kHystereticLaws[] = {kHystereticTennisBallLaw.hysteretic,
+                                             hysteretic_with_offset(-10.0),
+                                             hysteretic_with_offset(3.0)};
+
+TEST_CASE("The hysteretic ball's force is its energy's derivative on either side of its peak") {
+  for (const HystereticBallLaw& h : kHystereticLaws) {
+    HystereticLaw law(h);
+    // Loading from rest: the backbone, whose work is the energy.
+    for (const double x : {3e-4, 2e-3, 1.5e-2}) {
+      CHECK(law.force(x) == Approx(law.backbone(x)).epsilon(1e-14));
+      CHECK(law.energy(x) == Approx(law.backbone_work(x)).epsilon(1e-14));
+      CHECK(law.force(x) ==
+            Approx(central([&](double y) { return law.energy(y); }, x, 1e-6 * x)).epsilon(1e-7));
+    }
+    // After a peak of 8 mm: the unloading branch below it, elastic, and the
+    // backbone's work added beyond it; continuous at the peak.
+    law.commit(8e-3);
+    CHECK(law.peak() == 8e-3);
+    for (const double x : {5e-4, 3e-3, 7.5e-3, 9e-3}) {
+      const double e = 1e-6 * x;
+      CHECK(law.force(x) ==
+            Approx(central([&](double y) { return law.energy(y); }, x, e)).epsilon(1e-7));
+      CHECK(law.stiffness(x) ==
+            Approx(central([&](double y) { return law.force(y); }, x, e)).epsilon(1e-6));
+      CHECK(law.elastic_at(x).energy == law.energy(x));
+      CHECK(law.force(x) <= law.backbone(x) * (1.0 + 1e-15));  // never above loading
+    }
+    CHECK(law.force(8e-3) == Approx(law.backbone(8e-3)).epsilon(1e-14));
+    CHECK(law.energy(8e-3 * (1.0 - 1e-12)) == Approx(law.energy(8e-3)).epsilon(1e-9));
+    // A peak never falls in contact; off the surface the ball forgets it.
+    law.commit(4e-3);
+    CHECK(law.peak() == 8e-3);
+    law.commit(-1e-6);
+    CHECK(law.peak() == 0.0);
+    CHECK(law.energy(-1e-6) == 0.0);
+    CHECK(law.force(5e-3) == Approx(law.backbone(5e-3)).epsilon(1e-14));
+  }
+}
+
+TEST_CASE("The hysteretic ball's peak compression stores the kinetic energy on its backbone") {
+  const HystereticLaw law(kHystereticTennisBallLaw.hysteretic);
+  for (const double v : {1.0, 7.06, 50.0}) {
+    const double m = 0.057;
+    CHECK(law.backbone_work(law.peak_compression(m, v)) == Approx(0.5 * m * v * v).epsilon(1e-10));
+  }
+}
+
+TEST_CASE("Loaded and unloaded slowly, the hysteretic ball loses its loop's area, step by step") {
+  // Quasi-static steps of the discrete gradient (no rate: h -> infinity): the
+  // work sum F dx less the energy stored after each commit is the ledger's
+  // loss; over the ITF's loop to 1 in and back to 0 it is the loop's area.
+  for (const HystereticBallLaw& h : kHystereticLaws) {
+    HystereticLaw law(h);
+    double x = 0.0, u = 0.0, work = 0.0, lost = 0.0;
+    const auto step_to = [&](double x1) {
+      const StepForce s = step_force(law, x, u, x1, 0.0);
+      work += s.force * (x1 - x);
+      law.commit(x1);
+      const double u1 = law.energy(x1);
+      lost += s.force * (x1 - x) - (u1 - u);
+      x = x1;
+      u = u1;
+    };
+    const double top = kItfStaticMaxCompression_m;
+    for (int i = 1; i <= 400; ++i) step_to(top * i / 400.0);
+    const double loading_work = work;
+    CHECK(loading_work == Approx(law.backbone_work(top)).epsilon(1e-12));
+    for (int i = 399; i >= 0; --i) step_to(top * i / 400.0);
+    // Every step's loss is >= 0 and their sum is loading less unloading work.
+    CHECK(lost == Approx(work).epsilon(1e-12));
+    CHECK(lost > 0.0);
+    CHECK(lost < loading_work);
+  }
+}
+
+TEST_CASE("The ITF's slow test on the relaxed hysteretic ball: its loop and its area") {
+  const StaticLoop loop = static_loop(kHystereticTennisBallLaw);
+  // The calibration: the middles of the ITF's 5.6-7.4 mm and 8.0-10.8 mm.
+  CHECK(loop.forward_deformation_m == Approx(6.5e-3).epsilon(1e-12));
+  CHECK(loop.return_deformation_m == Approx(9.4e-3).epsilon(1e-12));
+  // The area of the wall's loop in closed form: k xm^2 / 2 - k xm^2 / (q + 1).
+  const HystereticBallLaw& h = kHystereticTennisBallLaw.hysteretic;
+  const double xm = kItfStaticMaxCompression_m, k = h.wall_stiffness, q = h.wall_unloading;
+  CHECK(loop.loop_energy_J == Approx(0.5 * k * xm * xm - k * xm * xm / (q + 1.0)).epsilon(1e-12));
+  // The power law has no loop: forward = return, (F / k)^(1/n).
+  const StaticLoop none = static_loop(kTennisBallLaw);
+  CHECK(none.forward_deformation_m == none.return_deformation_m);
+  CHECK(none.loop_energy_J == 0.0);
+  CHECK(none.forward_deformation_m ==
+        Approx(std::pow(kItfStaticForce_N / kTennisBallLaw.stiffness, 1.0 / 1.5)).epsilon(1e-14));
+}
+
+TEST_CASE("The hysteretic law refuses a branch above its backbone and a field out of range") {
+  BallContactLaw law = kHystereticTennisBallLaw;
+  CHECK(law.validate().empty());
+  law.hysteretic.stiffening_unloading = 1.9;
+  CHECK(law.validate().find("stiffening_unloading") != std::string::npos);
+  law = kHystereticTennisBallLaw;
+  law.hysteretic.shell_compression = 0.0;
+  CHECK(law.validate().find("shell_compression") != std::string::npos);
+  law = kHystereticTennisBallLaw;
+  law.hysteretic.unloading_offset = std::nan("");
+  CHECK(law.validate().find("unloading_offset") != std::string::npos);
+  law.hysteretic.unloading_offset = std::numeric_limits<double>::infinity();  // plastic
+  CHECK(law.validate().empty());
 }
 
 }  // namespace

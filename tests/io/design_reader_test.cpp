@@ -707,4 +707,30 @@ TEST_CASE("A support is read by name or as a pivot, written back, and refused wi
   CHECK(has(error(R"({"pivot_from_butt_cm": "nan"})"), "/support/pivot_from_butt_cm"));
 }
 
+TEST_CASE("A ball's law is read by name and its rigid-surface COR as given, both written back") {
+  const std::string racquet = R"({"implement": {"length_m": 0.7, "mass_kg": 0.25,
+      "head_to_handle_mass_ratio": 0.8}, "ball": )";
+  const auto ball = [&](const std::string& value) { return read((racquet + value + "}").c_str()); };
+  CHECK(ball("{}").design.ball_contact.form == BallLawForm::kPower);
+  CHECK(ball(R"({"contact": {"law": "power", "damping": 50}})").design.ball_contact.damping == 50);
+  const DesignFile hysteretic =
+      ball(R"({"contact": {"law": "hysteretic"}, "cor_on_rigid_surface": 0.3})");
+  CHECK(hysteretic.design.ball_contact.form == BallLawForm::kHysteretic);
+  CHECK(hysteretic.design.ball_contact.hysteretic.shell_stiffness ==
+        kHystereticTennisBallLaw.hysteretic.shell_stiffness);
+  CHECK(hysteretic.design.ball.cor_on_rigid_surface == 0.3);
+  const DesignFile twice = read_design(design_to_json(hysteretic), "again.json");
+  CHECK(twice.design.ball_contact.form == BallLawForm::kHysteretic);
+  CHECK(twice.design.ball.cor_on_rigid_surface == 0.3);
+  CHECK(!ball("{}").design.ball.cor_on_rigid_surface);
+  const auto error = [&](const std::string& value) {
+    return error_of((racquet + value + "}").c_str());
+  };
+  CHECK(has(error(R"({"contact": {"law": "maxwell"}})"), "/ball/contact/law: expected \"power\""));
+  CHECK(has(error(R"({"contact": {"law": "hysteretic", "damping": 5}})"),
+            "/ball/contact/damping: is a coefficient of the power law"));
+  CHECK(has(error(R"({"contact": {"law": 1}})"), "/ball/contact/law"));
+  CHECK(has(error(R"({"cor_on_rigid_surface": "high"})"), "/ball/cor_on_rigid_surface"));
+}
+
 }  // namespace sweetspot::io

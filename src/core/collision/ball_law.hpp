@@ -13,6 +13,7 @@
 // step's end compression x1. A new law is one more type that satisfies
 // BallLaw, built from its parameters where collide() builds PowerLaw.
 
+#include <algorithm>
 #include <cmath>
 #include <concepts>
 
@@ -100,5 +101,117 @@ class PowerLaw {
 };
 
 static_assert(BallLaw<PowerLaw>);
+
+// The hysteretic ball (HystereticBallLaw, ball_contact.hpp), a law with a
+// memory: the largest compression x_m of the contact so far, which the
+// integrator moves on after each step (commit()). Between commits the law is
+// the path the ball would take from x_m's branch: below x_m the unloading
+// branch, elastic with U(x) = sum B_i(x_m) x_m / (q_i + 1) (x / x_m)^(q_i + 1);
+// beyond x_m the loading backbone, whose work the energy continues
+// (U(x_m) + the backbones' work from x_m). So the discrete gradient's
+// (U(x1) - U(x0)) / dx is the work of the path's force, and once commit()
+// has moved x_m to x1 the stored energy U(x1) is less than that path's by the
+// loop's loss, which the ledger books as the ball's.
+class HystereticLaw {
+ public:
+  explicit HystereticLaw(const HystereticBallLaw& law)
+      : ks_(law.shell_stiffness),
+        xb_(law.shell_compression),
+        kp_(law.stiffening),
+        kw_(law.wall_stiffness),
+        qs_(std::max(law.shell_unloading + law.unloading_offset, 1.0)),
+        qp_(std::max(law.stiffening_unloading + law.unloading_offset, 2.0)),
+        qw_(std::max(law.wall_unloading + law.unloading_offset, 1.0)),
+        b_(law.damping) {}
+
+  // The backbones' force and work from 0 at x >= 0 on loading.
+  double backbone(double x) const { return ks_ * std::min(x, xb_) + kp_ * x * x + kw_ * x; }
+  double backbone_work(double x) const {
+    const double s = x <= xb_ ? 0.5 * ks_ * x * x : ks_ * xb_ * (x - 0.5 * xb_);
+    return s + kp_ * x * x * x / 3.0 + 0.5 * kw_ * x * x;
+  }
+
+  double energy(double x) const { return elastic_at(x).energy; }
+  double force(double x) const { return elastic_at(x).force; }
+  double stiffness(double x) const {
+    if (x <= 0.0) return 0.0;
+    if (x >= xm_) return (x < xb_ ? ks_ : 0.0) + 2.0 * kp_ * x + kw_;
+    const double r = x / xm_;
+    return (branch_slope(shell_at_peak_, qs_, r) + branch_slope(kp_ * xm_ * xm_, qp_, r) +
+            branch_slope(kw_ * xm_, qw_, r)) /
+           xm_;
+  }
+  ElasticAt elastic_at(double x) const {
+    if (x <= 0.0) return {0.0, 0.0};
+    if (x >= xm_) return {stored_at_peak_ + backbone_work(x) - work_at_peak_, backbone(x)};
+    const double r = x / xm_;
+    const double bp = kp_ * xm_ * xm_, bw = kw_ * xm_;
+    return {
+        xm_ * (branch_energy(shell_at_peak_, qs_, r) + branch_energy(bp, qp_, r) +
+               branch_energy(bw, qw_, r)),
+        branch_force(shell_at_peak_, qs_, r) + branch_force(bp, qp_, r) + branch_force(bw, qw_, r)};
+  }
+
+  // b sqrt(xm) dx / h, the power law's damping part with p = 1/2.
+  StepDamping step_damping(double xm, double dx, double inv_h) const {
+    if (!(b_ > 0.0 && xm > 0.0)) return {0.0, 0.0};
+    const double r = std::sqrt(xm);
+    return {b_ * r * dx * inv_h, b_ * inv_h * (r + 0.25 * dx / r)};
+  }
+
+  // The compression whose loading work is 1/2 m v^2 (bisection on the
+  // increasing work), and the backbone's secant there.
+  double peak_compression(double mass, double speed) const {
+    const double target = 0.5 * mass * speed * speed;
+    double hi = xb_;
+    while (backbone_work(hi) < target) hi *= 2.0;
+    double lo = 0.0;
+    for (int i = 0; i < 200 && hi - lo > 1e-12 * hi; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      (backbone_work(mid) < target ? lo : hi) = mid;
+    }
+    return hi;
+  }
+  double secant_stiffness(double x) const { return backbone(x) / x; }
+
+  // After a step ending at x: the branch's peak moves on; off the surface the
+  // ball forgets it.
+  void commit(double x) {
+    if (x <= 0.0) {
+      set_peak(0.0);
+    } else if (x > xm_) {
+      set_peak(x);
+    }
+  }
+  double peak() const { return xm_; }
+
+ private:
+  // One backbone B at x_m unloading as B (x/x_m)^q: its force, slope times
+  // x_m, and energy over x_m at r = x / x_m in (0, 1). q = infinity (a plastic
+  // ball) is 0 below x_m.
+  static double branch_force(double b, double q, double r) {
+    return std::isinf(q) ? 0.0 : b * power(r, q);
+  }
+  static double branch_slope(double b, double q, double r) {
+    return std::isinf(q) ? 0.0 : b * q * power(r, q - 1.0);
+  }
+  static double branch_energy(double b, double q, double r) {
+    return std::isinf(q) ? 0.0 : b * r * power(r, q) / (q + 1.0);
+  }
+  void set_peak(double x) {
+    xm_ = x;
+    shell_at_peak_ = ks_ * std::min(x, xb_);
+    work_at_peak_ = backbone_work(x);
+    stored_at_peak_ =
+        x > 0.0 ? x * (branch_energy(shell_at_peak_, qs_, 1.0) +
+                       branch_energy(kp_ * x * x, qp_, 1.0) + branch_energy(kw_ * x, qw_, 1.0))
+                : 0.0;
+  }
+
+  double ks_, xb_, kp_, kw_, qs_, qp_, qw_, b_;
+  double xm_ = 0.0, shell_at_peak_ = 0.0, work_at_peak_ = 0.0, stored_at_peak_ = 0.0;
+};
+
+static_assert(BallLaw<HystereticLaw>);
 
 }  // namespace sweetspot::collision_detail
