@@ -11,6 +11,7 @@
 
 #include "io/atomic_file.hpp"
 #include "io/input_error.hpp"
+#include "reports/fidelity_report.hpp"
 #include "reports/modes_report.hpp"
 #include "reports/optimization_report.hpp"
 #include "reports/paper_reports.hpp"
@@ -210,6 +211,9 @@ void write_reports(const std::string& designs_dir, const std::string& out_dir, s
 
   write_study_reports(designs_dir, write, entries);
   write_string_reports(designs_dir, write, entries);
+  for (reports::ReportEntry& entry :
+       reports::write_fidelity_report(studies::fidelity_rows(designs_dir), write))
+    entries.push_back(std::move(entry));
 
   std::string index =
       "# sweetspot reports\n\n"

@@ -2,8 +2,13 @@
 // numbers the paper prints.
 #include "studies/paper.hpp"
 
+#include <algorithm>
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <string>
+
+#include "io/outputs.hpp"
+#include "studies/fidelity.hpp"
 
 namespace sweetspot::studies {
 namespace {
@@ -32,6 +37,28 @@ TEST_CASE("The shipped Table I designs carry the printed values and reproduce th
     CHECK(row.evaluation.peak_impact_force_N == Approx(*row.paper_F0_N).margin(1.0));
     CHECK(row.evaluation.peak_wrist_force_N == Approx(*row.paper_Fw_N).margin(1.0));
   }
+}
+
+TEST_CASE("The fidelity rows are each shipped reference beside evaluate's value for its design") {
+  const std::string designs = std::string(SWEETSPOT_SOURCE_DIR) + "/designs";
+  const std::vector<FidelityRow> rows = fidelity_rows(designs);
+  REQUIRE(rows.size() >= 2u * kTableIRows);
+  for (const FidelityRow& r : rows) {
+    INFO(r.design << " " << r.output);
+    const io::DesignFile file = io::load_design(designs + "/" + r.design);
+    CHECK(r.published == file.reference[r.output].get<double>());
+    const Evaluation e = io::evaluate_design_file(file, "", 1e-6);
+    const std::optional<double> value = io::find_output(r.output)->value(e);
+    CHECK(r.model == value);
+    CHECK((!r.model || std::isfinite(*r.model)));
+  }
+  // Table I's printed wrist force of row 1 is a row, to the printed digit.
+  const auto row1 = std::find_if(rows.begin(), rows.end(), [](const FidelityRow& r) {
+    return r.design == "table1/row1.json" && r.output == "peak_wrist_force_N";
+  });
+  REQUIRE(row1 != rows.end());
+  CHECK(row1->published == 568.0);
+  CHECK(std::round(*row1->model) == 568.0);
 }
 
 }  // namespace
