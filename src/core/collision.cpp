@@ -175,13 +175,19 @@ BallContactLaw with_rigid_surface_cor(const BallContactLaw& law, double ball_mas
   // The power law's damping spans decades: bisect its logarithm above 1e-9 of the top.
   const bool log_scale = law.form == BallLawForm::kPower;
   if (log_scale) lo = kMaxBallDamping * 1e-12;
+  double e = liveliest;
   for (int i = 0; i < 200; ++i) {
     const double mid = log_scale ? std::sqrt(lo * hi) : 0.5 * (lo + hi);
-    const double e = cor_at(mid);
+    e = cor_at(mid);
     if (std::abs(e - cor) <= 1e-10) break;
     (e > cor ? lo : hi) = mid;
     if (hi - lo <= 1e-15 * hi) break;
   }
+  // A COR the loss cannot reach to 1e-6 (a ball all but dead, beyond the
+  // bracket) is refused rather than answered for another ball.
+  if (!(std::abs(e - cor) <= 1e-6))
+    throw FieldError(kField, "cannot be matched closer than " + format_number(e) + " by the " +
+                                 to_string(law.form) + " law's ball, got " + format_number(cor));
   return out;
 }
 

@@ -397,13 +397,30 @@ DrawnDesign draw_design(Rng& rng, const std::string& fidelity, double typical_sh
   if (draw.chance(0.6)) put(rng, ball, "speed", kSpeed, draw(kBallSpeed));
   if (draw.chance(collision ? 0.45 : 0.2)) {
     Json contact = Json::object();
-    if (draw.chance(0.7)) contact["stiffness"] = draw(kContactStiffness);
-    if (draw.chance(0.6)) contact["exponent"] = draw(kContactExponent);
-    if (draw.chance(0.6)) contact["damping"] = draw(kContactDamping);
-    if (draw.chance(0.6)) contact["damping_exponent"] = draw(kContactDampingExponent);
+    if (rng.chance(0.3)) {
+      contact["law"] = "hysteretic";  // by name, no coefficients
+    } else {
+      if (draw.chance(0.7)) contact["stiffness"] = draw(kContactStiffness);
+      if (draw.chance(0.6)) contact["exponent"] = draw(kContactExponent);
+      if (draw.chance(0.6)) contact["damping"] = draw(kContactDamping);
+      if (draw.chance(0.6)) contact["damping_exponent"] = draw(kContactDampingExponent);
+    }
     ball["contact"] = contact;
   }
+  // A ball by its COR on a rigid surface, [0, 1): each law reaches part of it.
+  if (draw.chance(collision ? 0.15 : 0.05)) ball["cor_on_rigid_surface"] = 0.95 * rng.unit();
   if (!ball.empty()) doc["ball"] = ball;
+
+  // What holds the implement (design.hpp Support): a player's or a rig's.
+  if (draw.chance(collision ? 0.2 : 0.08)) {
+    static const char* const kSupports[] = {"free", "hand", "head_clamped", "handle_clamped",
+                                            "rigid_surface"};
+    if (rng.chance(0.2)) {
+      doc["support"] = Json{{"pivot_from_butt_m", L * rng.unit()}};
+    } else {
+      doc["support"] = kSupports[static_cast<std::size_t>(rng.unit() * 4.999)];
+    }
+  }
 
   // A swing (swing.hpp), the ball's speed above then the incoming one (0 allowed).
   if (draw.chance(0.15)) {
@@ -583,6 +600,8 @@ std::optional<Truth> read_truth(const Json& document) {
   const Json& contact = part(ball, "contact");
   t.ball_stiffness = number(contact, "stiffness").value_or(sweetspot::kTennisBallLaw.stiffness);
   t.ball_exponent = number(contact, "exponent").value_or(sweetspot::kTennisBallLaw.exponent);
+  t.ball_hysteretic =
+      contact.is_object() && contact.contains("law") && contact["law"] == "hysteretic";
   const Json& impact = part(document, "impact");
   if (const auto from_tip = si(impact, "from_tip", kLength)) t.impact_from_butt_m = L - *from_tip;
   if (const auto from_butt = si(impact, "from_butt", kLength)) t.impact_from_butt_m = *from_butt;

@@ -111,6 +111,8 @@ struct Truth {
   }
   // The ball's elastic law k x^n (ball.contact; absent: the calibrated tennis ball's).
   double ball_stiffness = 0.0, ball_exponent = 0.0;
+  // ball.contact.law "hysteretic": its loading work (backbones of ball_contact.hpp) instead.
+  bool ball_hysteretic = false;
   std::optional<double> impact_from_butt_m;  // absent: the code's default
   double impact_off_axis_m = 0.0;
 };

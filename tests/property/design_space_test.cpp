@@ -62,6 +62,7 @@
 #include "io/outputs.hpp"
 #include "io/plot.hpp"
 #include "reports/summary.hpp"
+#include "sweetspot/ball_contact.hpp"
 #include "sweetspot/evaluate.hpp"
 #include "sweetspot/head_geometry.hpp"
 
@@ -340,7 +341,11 @@ std::vector<Finding> judge_answer(const Json& document, const Evaluation& e,
     if (const auto value = spec.value(e)) j.finite(std::string(spec.name), *value);
   }
   j.finite("cor", e.cor);
-  j.finite("effective_mass_kg", e.effective_mass_kg);
+  // A rig that holds the impact point still has an infinite effective mass
+  // (not an output there: outputs.hpp kHeldStill); every other is finite.
+  const bool rig = is_rig(e.support);
+  if (!(rig && e.effective_mass_kg == std::numeric_limits<double>::infinity()))
+    j.finite("effective_mass_kg", e.effective_mass_kg);
   if (e.vibration_energy_J) j.finite("vibration_energy_J", *e.vibration_energy_J);
   const auto* collision = e.details && e.details->collision ? &*e.details->collision : nullptr;
   if (e.details) {
@@ -390,7 +395,11 @@ std::vector<Finding> judge_answer(const Json& document, const Evaluation& e,
   }
 
   // The effective mass (Eq. 17) and the apparent COR (Eq. 16) against it.
-  const std::optional<EffectiveMass> eq17 = effective_mass_from_file(*truth, impact);
+  // On a rig the free body's Eq. (17) is not the rig's (a pivot's turn, a clamp's
+  // none), nor held in the hand (implement and hand as one body: not recomputed here).
+  const bool free_body = !rig && e.support.kind != sweetspot::Support::Kind::kHand;
+  const std::optional<EffectiveMass> eq17 =
+      free_body ? effective_mass_from_file(*truth, impact) : std::nullopt;
   if (bound_checked) *bound_checked = eq17.has_value();
   if (eq17 && e.effective_mass_kg != eq17->M_eff_kg &&
       !(std::abs(eq17->M_kg / e.effective_mass_kg - eq17->ratio) <= eq17->ratio_tol)) {
@@ -410,8 +419,9 @@ std::vector<Finding> judge_answer(const Json& document, const Evaluation& e,
                e.apparent_cor, bound, kCorRoundOff + bound_tol);
   }
   {
+    // Eq. (16), its limit e_A = e where the rig holds the impact point still.
     const double Mc = e.effective_mass_kg;
-    const double eq16 = (e.cor * Mc - m) / (Mc + m);
+    const double eq16 = std::isinf(Mc) ? e.cor : (e.cor * Mc - m) / (Mc + m);
     if (!(std::abs(e.apparent_cor - eq16) <= kCorRoundOff)) {
       j.fail("apparent COR is not Eq. (16) of the COR used",
              "apparent_cor = " + number(e.apparent_cor) + ", Eq. (16) of cor " + number(e.cor) +
@@ -474,15 +484,28 @@ std::vector<Finding> judge_answer(const Json& document, const Evaluation& e,
     if (!(c.impulse_N_s > 0.0))
       j.fail("impulse not > 0", "collision impulse_N_s = " + number(c.impulse_N_s));
     // At its peak compression the ball holds k x^(n+1) / (n+1) of elastic
-    // energy, never more than it brought (damping only takes energy away).
+    // energy, never more than it brought (damping only takes energy away);
+    // the hysteretic ball has taken its backbones' work to get there.
     const double x = c.peak_ball_compression_m;
     if (!(x > 0.0))
       j.fail("peak ball compression not > 0", "peak_ball_compression_m = " + number(x));
-    j.at_most("the ball's elastic energy at its peak compression above the ball-in energy",
-              "k x^(n+1)/(n+1) at peak_ball_compression_m " + number(x) + " m",
-              truth->ball_stiffness * std::pow(x, truth->ball_exponent + 1.0) /
-                  (truth->ball_exponent + 1.0),
-              ball_in, energy_tol);
+    if (truth->ball_hysteretic) {
+      const sweetspot::HystereticBallLaw& h = sweetspot::kHystereticTennisBallLaw.hysteretic;
+      const double ks = h.shell_stiffness, xb = h.shell_compression;
+      const double shell = x <= xb ? 0.5 * ks * x * x : ks * xb * (x - 0.5 * xb);
+      j.at_most(
+          "the hysteretic ball's loading work to its peak compression above the ball-in "
+          "energy",
+          "its backbones' work at peak_ball_compression_m " + number(x) + " m",
+          shell + h.stiffening * x * x * x / 3.0 + 0.5 * h.wall_stiffness * x * x, ball_in,
+          energy_tol);
+    } else {
+      j.at_most("the ball's elastic energy at its peak compression above the ball-in energy",
+                "k x^(n+1)/(n+1) at peak_ball_compression_m " + number(x) + " m",
+                truth->ball_stiffness * std::pow(x, truth->ball_exponent + 1.0) /
+                    (truth->ball_exponent + 1.0),
+                ball_in, energy_tol);
+    }
     j.at_least("string-bed deflection negative", "peak_string_deflection_m",
                c.peak_string_deflection_m, 0.0, 0.0);
   }
