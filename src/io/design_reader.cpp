@@ -1535,6 +1535,14 @@ Json design_to_json(const DesignFile& file) {
   return j;
 }
 
+void require_player_file(const DesignFile& file, std::string_view what) {
+  try {
+    require_player(file.design, what);
+  } catch (const std::invalid_argument& e) {
+    rethrow_in(file, e);
+  }
+}
+
 Evaluation evaluate_design_file(const DesignFile& file, std::string_view fidelity, double rel_tol) {
   try {
     const std::string_view name = fidelity.empty() ? std::string_view(file.fidelity) : fidelity;

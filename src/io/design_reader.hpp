@@ -60,6 +60,11 @@ DesignFile load_design(const std::string& path);
 // JSON pointer the file used (rethrow_in).
 Evaluation evaluate_design_file(const DesignFile& file, std::string_view fidelity, double rel_tol);
 
+// Refuses a rig (support head_clamped, handle_clamped, a pivot or a rigid
+// surface: is_rig()) for `what`, a player's question, as InputError at
+// /support naming the file (require_player(), evaluate.hpp).
+void require_player_file(const DesignFile& file, std::string_view what);
+
 // The design as a complete design file in SI units (what `evaluate` accepts).
 Json design_to_json(const DesignFile& design);
 

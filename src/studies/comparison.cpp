@@ -36,6 +36,7 @@ std::vector<std::optional<int>> clock_hours_of(const io::DesignFile& design) {
 ComparedDesign compare_one(io::DesignFile design, std::string_view fidelity, double rel_tol,
                            bool along_frame) {
   io::DesignFile placed = std::move(design);
+  require_player_file(placed, "a comparison for the player and the arm");
   const Evaluation asked = io::evaluate_design_file(placed, fidelity, rel_tol);
   SweetSpots spots = find_sweet_spots(placed, asked, rel_tol);
   std::vector<FramePoint> curve;

@@ -29,6 +29,7 @@ PageMaps page_maps(const io::DesignFile& file, Fidelity fidelity) {
 }
 
 DesignPage design_page(const io::DesignFile& file) {
+  require_player_file(file, "the design's page (its sweet spots, the wrist, the shot)");
   DesignPage page;
   page.evaluation = io::evaluate_design_file(file, "", kPageRelTol);
   page.span = hit_span(file);
