@@ -1048,6 +1048,7 @@ void read_ball(ObjectReader& top, Reading& in) {
     const std::optional<std::string> law = c.string("law");
     if (law && *law != "power" && *law != "hysteretic")
       c.fail("law", "expected \"power\" or \"hysteretic\", got \"" + *law + "\"");
+    if (law) c.record("law", "law");  // listed with the inputs as given
     if (law == "hysteretic") {
       for (const char* coefficient : {"stiffness", "exponent", "damping", "damping_exponent"}) {
         if (c.has(coefficient))
@@ -1165,6 +1166,7 @@ void read_support(ObjectReader& top, Reading& in) {
                               : std::string(kSupportExpected) + ", got " + brief(*given));
     }
     support.kind = found->second;
+    top.record("support", "support");  // listed with the inputs as given
   } else if (given->is_object()) {
     Part part(top, "support", in.keys, in.provenance);
     ObjectReader& r = part.reader();
