@@ -172,9 +172,9 @@ BallContactLaw with_rigid_surface_cor(const BallContactLaw& law, double ball_mas
                                  format_number(kMaxBallDamping) +
                                  "; the hysteretic law's reaches 0), got " + format_number(cor));
   }
-  // The power law's damping spans decades: bisect its logarithm above 1e-9 of the top.
+  // The power law's damping spans decades: bisect its logarithm from 1e-9 up.
   const bool log_scale = law.form == BallLawForm::kPower;
-  if (log_scale) lo = kMaxBallDamping * 1e-12;
+  if (log_scale) lo = kMaxBallDamping * 1e-21;
   double e = liveliest;
   for (int i = 0; i < 200; ++i) {
     const double mid = log_scale ? std::sqrt(lo * hi) : 0.5 * (lo + hi);
