@@ -248,6 +248,8 @@ class DesignCollision {
                      const CollisionOptions& options = {}) const;
 
   const ResponseModel& model() const { return model_; }
+  // The ball's law as solved (ball.cor_on_rigid_surface applied).
+  const BallContactLaw& ball_law() const { return design_.ball_contact; }
 
  private:
   void init(double rel_tol, ModeCache& cache);

@@ -103,7 +103,7 @@ struct Ball {
   // The ball's COR on a rigid surface at the drop test's speed, in [0, 1):
   // the contact law's loss is set to match it (with_rigid_surface_cor(),
   // collision.hpp) where the collision is solved; none, the law as given.
-  std::optional<double> cor_on_rigid_surface;
+  std::optional<double> cor_on_rigid_surface = std::nullopt;
 };
 
 // What holds the implement when the ball hits it (docs/model.md, "Supports").

@@ -119,6 +119,10 @@ struct Evaluation {
   // percussion), an immovable impact point has an infinite effective mass,
   // and a rigid surface has no implement; the outputs say so (absent).
   Support support{};
+  // A ball on a rigid surface (support rigid_surface): the ITF's slow test of
+  // the same ball, its forward and return deformation at 18 lbf
+  // (static_loop(), collision.hpp); none elsewhere.
+  std::optional<double> static_forward_deformation_m, static_return_deformation_m;
 };
 
 // How much model an evaluation uses: the rigid body of the paper alone; also

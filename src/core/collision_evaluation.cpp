@@ -214,6 +214,11 @@ Evaluation evaluate_rig(const Design& design, double rel_tol, ModeCache& cache) 
   e.twist_rate_rad_s = player.twist_rate_rad_s;
   e.peak_twist_torque_N_m = player.peak_twist_torque_N_m;
   e.effective_mass_kg = inverse_mass > 0.0 ? 1.0 / inverse_mass : INFINITY;
+  if (design.support.kind == Support::Kind::kRigidSurface) {
+    const StaticLoop loop = static_loop(collision.ball_law());
+    e.static_forward_deformation_m = loop.forward_deformation_m;
+    e.static_return_deformation_m = loop.return_deformation_m;
+  }
   put_collision(design, collision, cor, std::move(r), e);
   check_invariants(e, design);
   return e;

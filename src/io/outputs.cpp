@@ -32,6 +32,9 @@ constexpr std::string_view kNeedsCollision =
     "needs the solved collision: give the string tension and the frame's stiffness and evaluate "
     "with --fidelity collision (or auto without frame cor)";
 
+constexpr std::string_view kOnRigidSurface =
+    "the ball's own slow test: given for a ball on a rigid surface (support rigid_surface)";
+
 constexpr std::string_view kNeedsStrings =
     "needs a string bed: give strings.tension (or a stringer's ticket: pattern, mains, crosses)";
 // lbf per inch in N/m.
@@ -179,6 +182,14 @@ const std::array kOutputs{
                "largest compression of the ball in the solved collision (its law's x)",
                &collision<&CollisionResult::peak_ball_compression_m>, kNeedsCollision, false, true,
                true},
+    OutputSpec{"static_forward_deformation_m", "m",
+               "the ITF's slow test of the ball alone: its deformation loaded to 18 lbf (80 N)",
+               [](const Evaluation& e) { return e.static_forward_deformation_m; }, kOnRigidSurface,
+               false, true, true},
+    OutputSpec{"static_return_deformation_m", "m",
+               "the same, unloaded to 18 lbf after 1 in (25.4 mm) of compression",
+               [](const Evaluation& e) { return e.static_return_deformation_m; }, kOnRigidSurface,
+               false, true, true},
     OutputSpec{"peak_string_deflection_m", "m",
                "largest deflection of the string bed from the frame under the ball in the solved "
                "collision",
@@ -293,6 +304,8 @@ constexpr std::string_view kBallOutputs[] = {"cor",
                                              "vibration_share",
                                              "contact_time_s",
                                              "peak_ball_compression_m",
+                                             "static_forward_deformation_m",
+                                             "static_return_deformation_m",
                                              "effective_mass_kg"};
 
 }  // namespace

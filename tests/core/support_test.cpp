@@ -62,6 +62,21 @@ TEST_CASE("On a rigid surface the ball's own collision is the answer, bit for bi
   CHECK(std::isinf(e.effective_mass_kg));
   CHECK(e.peak_wrist_force_N == 0.0);
   CHECK(!e.cop_hand_from_butt_m);
+  // The ITF's slow test of the same ball beside its drop: static_loop()'s,
+  // for the law as given and for a law whose loss was solved to a COR.
+  const StaticLoop loop = static_loop(d.ball_contact);
+  CHECK(e.static_forward_deformation_m == loop.forward_deformation_m);
+  CHECK(e.static_return_deformation_m == loop.return_deformation_m);
+  Design dead = d;
+  dead.ball_contact = kHystereticTennisBallLaw;
+  dead.ball.cor_on_rigid_surface = 0.5;
+  const Evaluation d_e = evaluate(dead, needed_fidelity(dead));
+  const StaticLoop solved = static_loop(with_rigid_surface_cor(dead.ball_contact, 0.057, 0.5));
+  CHECK(d_e.static_return_deformation_m == solved.return_deformation_m);
+  CHECK(*d_e.static_return_deformation_m >
+        static_loop(kHystereticTennisBallLaw).return_deformation_m);  // deader: a wider loop
+  // Not a number of any other support.
+  CHECK(!evaluate(strung_racquet(), Fidelity::kCollision).static_forward_deformation_m);
 }
 
 TEST_CASE("Head clamped, the ball meets the strings of an immovable frame, bit for bit") {
