@@ -5,6 +5,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "core/check.hpp"
 #include "core/collision/ball_law.hpp"
@@ -15,6 +16,7 @@
 #include "core/collision/step_mesh.hpp"
 #include "sweetspot/errors.hpp"
 #include "sweetspot/rigid_impact.hpp"
+#include "sweetspot/roots.hpp"
 #include "sweetspot/string_bed.hpp"
 
 namespace sweetspot {
@@ -136,59 +138,89 @@ double rigid_surface_cor(const BallContactLaw& law, double ball_mass_kg, double 
   return collide(rigid_frame(), std::nullopt, ball_mass_kg, law, speed_m_s).apparent_cor;
 }
 
-BallContactLaw with_rigid_surface_cor(const BallContactLaw& law, double ball_mass_kg, double cor) {
+namespace {
+
+bool same_law(const BallContactLaw& a, const BallContactLaw& b) {
+  const HystereticBallLaw &h = a.hysteretic, &g = b.hysteretic;
+  return a.stiffness == b.stiffness && a.exponent == b.exponent && a.damping == b.damping &&
+         a.damping_exponent == b.damping_exponent && a.form == b.form &&
+         h.shell_stiffness == g.shell_stiffness && h.shell_compression == g.shell_compression &&
+         h.stiffening == g.stiffening && h.wall_stiffness == g.wall_stiffness &&
+         h.shell_unloading == g.shell_unloading &&
+         h.stiffening_unloading == g.stiffening_unloading && h.wall_unloading == g.wall_unloading &&
+         h.damping == g.damping && h.unloading_offset == g.unloading_offset;
+}
+
+BallContactLaw solve_rigid_surface_cor(const BallContactLaw& law, double ball_mass_kg, double cor) {
   using detail::format_number;
   constexpr const char* kField = "ball/cor_on_rigid_surface";
-  if (!(cor >= 0.0 && cor < 1.0))
-    throw FieldError(kField, "must be in [0, 1), got " + format_number(cor));
-  // The loss parameter p of the law, e(p) falling: bisection to 1e-10 in e.
+  // The loss parameter p of the law, e(p) falling: the power law's damping
+  // (its logarithm, from 1e-9 to the largest accepted), the hysteretic
+  // ball's unloading offset (from where every branch sits at its minimum).
   BallContactLaw out = law;
-  double* loss = &out.damping;
-  double lo = 0.0, hi = kMaxBallDamping;
-  if (law.form == BallLawForm::kHysteretic) {
-    const HystereticBallLaw& h = law.hysteretic;
-    loss = &out.hysteretic.unloading_offset;
-    // Below -(the largest exponent's excess) every branch sits at its minimum.
-    lo = -std::max({h.shell_unloading - 1.0, h.stiffening_unloading - 2.0, h.wall_unloading - 1.0});
-    if (cor == 0.0) {
-      *loss = std::numeric_limits<double>::infinity();
-      return out;
-    }
-    hi = lo + 1.0;
+  const bool power = law.form == BallLawForm::kPower;
+  double* loss = power ? &out.damping : &out.hysteretic.unloading_offset;
+  const HystereticBallLaw& h = law.hysteretic;
+  double lo = power ? std::log(kMaxBallDamping * 1e-21)
+                    : -std::max({h.shell_unloading - 1.0, h.stiffening_unloading - 2.0,
+                                 h.wall_unloading - 1.0});
+  if (!power && cor == 0.0) {
+    *loss = std::numeric_limits<double>::infinity();  // a plastic ball
+    return out;
   }
-  const auto cor_at = [&](double p) {
-    *loss = p;
-    return rigid_surface_cor(out, ball_mass_kg);
+  const auto excess = [&](double p) {
+    *loss = power ? std::exp(p) : p;
+    return rigid_surface_cor(out, ball_mass_kg) - cor;
   };
-  const double liveliest = cor_at(lo);
-  if (cor > liveliest)
-    throw FieldError(kField, "must be at most " + format_number(liveliest) + " for the " +
+  const double lively = excess(lo);
+  if (lively < 0.0) {
+    throw FieldError(kField, "must be at most " + format_number(lively + cor) + " for the " +
                                  to_string(law.form) + " law's ball, got " + format_number(cor));
-  if (law.form == BallLawForm::kHysteretic) {
-    while (cor_at(hi) > cor && hi < 1e6) hi = lo + 2.0 * (hi - lo);
-  } else if (cor_at(hi) > cor) {
-    throw FieldError(kField, "must be at least " + format_number(cor_at(hi)) +
-                                 " for the power law's ball (its damping at most " +
-                                 format_number(kMaxBallDamping) +
-                                 "; the hysteretic law's reaches 0), got " + format_number(cor));
   }
-  // The power law's damping spans decades: bisect its logarithm from 1e-9 up.
-  const bool log_scale = law.form == BallLawForm::kPower;
-  if (log_scale) lo = kMaxBallDamping * 1e-21;
-  double e = liveliest;
-  for (int i = 0; i < 200; ++i) {
-    const double mid = log_scale ? std::sqrt(lo * hi) : 0.5 * (lo + hi);
-    e = cor_at(mid);
-    if (std::abs(e - cor) <= 1e-10) break;
-    (e > cor ? lo : hi) = mid;
-    if (hi - lo <= 1e-15 * hi) break;
+  double hi = power ? std::log(kMaxBallDamping) : lo + 1.0;
+  double dead = excess(hi);
+  while (!power && dead > 0.0 && hi < 1e6) dead = excess(hi = lo + 2.0 * (hi - lo));
+  if (dead > 0.0) {
+    throw FieldError(kField,
+                     "must be at least " + format_number(dead + cor) + " for the " +
+                         to_string(law.form) + " law's ball" +
+                         (power ? " (its damping at most " + format_number(kMaxBallDamping) +
+                                      "; the hysteretic law's reaches 0)"
+                                : "") +
+                         ", got " + format_number(cor));
   }
-  // A COR the loss cannot reach to 1e-6 (a ball all but dead, beyond the
-  // bracket) is refused rather than answered for another ball.
-  if (!(std::abs(e - cor) <= 1e-6))
-    throw FieldError(kField, "cannot be matched closer than " + format_number(e) + " by the " +
-                                 to_string(law.form) + " law's ball, got " + format_number(cor));
+  const double p = brent_root(excess, lo, hi, lively, dead, 1e-12 * std::max(1.0, std::abs(hi)));
+  // A COR the loss cannot reach to 1e-6 is refused rather than answered for another ball.
+  if (const double miss = excess(p); !(std::abs(miss) <= 1e-6)) {
+    throw FieldError(kField, "cannot be matched closer than " + format_number(miss + cor) +
+                                 " by the " + to_string(law.form) + " law's ball, got " +
+                                 format_number(cor));
+  }
   return out;
+}
+
+}  // namespace
+
+BallContactLaw with_rigid_surface_cor(const BallContactLaw& law, double ball_mass_kg, double cor) {
+  if (!(cor >= 0.0 && cor < 1.0)) {
+    throw FieldError("ball/cor_on_rigid_surface",
+                     "must be in [0, 1), got " + detail::format_number(cor));
+  }
+  // Solved once per ball: a design's collision is set up again for every
+  // impact of a sweep, a catalogue's rows or the power point's search.
+  struct Solved {
+    BallContactLaw law;
+    double mass_kg, cor;
+    BallContactLaw answer;
+  };
+  thread_local std::vector<Solved> memo;
+  for (const Solved& s : memo) {
+    if (s.mass_kg == ball_mass_kg && s.cor == cor && same_law(s.law, law)) return s.answer;
+  }
+  const BallContactLaw answer = solve_rigid_surface_cor(law, ball_mass_kg, cor);
+  if (memo.size() >= 16) memo.erase(memo.begin());
+  memo.push_back({law, ball_mass_kg, cor, answer});
+  return answer;
 }
 
 StaticLoop static_loop(const BallContactLaw& law, double force_N, double max_compression_m) {
@@ -210,14 +242,10 @@ StaticLoop static_loop(const BallContactLaw& law, double force_N, double max_com
     throw std::invalid_argument("the relaxed ball reaches " +
                                 detail::format_number(ball.backbone(max_compression_m)) +
                                 " N at max_compression_m, short of force_N");
-  // The force where it crosses force_N on a branch (increasing in x): bisection.
+  // Where the branch in force (increasing in x) crosses force_N below `hi`.
   const auto crossing = [&](double hi) {
-    double lo = 0.0;
-    for (int i = 0; i < 200 && hi - lo > 1e-15 * hi; ++i) {
-      const double mid = 0.5 * (lo + hi);
-      (ball.force(mid) < force_N ? lo : hi) = mid;
-    }
-    return 0.5 * (lo + hi);
+    const auto excess = [&](double x) { return ball.force(x) - force_N; };
+    return brent_root(excess, 0.0, hi, -force_N, excess(hi), 1e-15 * hi);
   };
   loop.forward_deformation_m = crossing(max_compression_m);
   const double work_in = ball.backbone_work(max_compression_m);

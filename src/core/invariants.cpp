@@ -178,8 +178,9 @@ Suspect collision_suspect(const Design& d, double fundamental_free_Hz) {
                                                               : "frame/EI_N_m2";
   const Candidate candidates[] = {
       {"ball/contact/stiffness", d.ball_contact.stiffness, kTennisBallLaw.stiffness},
-      // A ball deader (or livelier) than the drop test's 0.745; a dead one (0) first.
-      {"ball/cor_on_rigid_surface", d.ball.cor_on_rigid_surface.value_or(0.745), 0.745},
+      // A ball deader (or livelier) than the calibrated one's; a dead one (0) first.
+      {"ball/cor_on_rigid_surface", d.ball.cor_on_rigid_surface.value_or(kTennisBallDropTestCor),
+       kTennisBallDropTestCor},
       {"strings/tension_N", d.strings ? d.strings->tension_N : 250.0, 250.0},
       {"strings/bed_mass_kg", d.string_bed_mass_kg, kStringBedMass_kg},
       {"ball/speed_m_s", d.ball.speed_m_s, 50.0},

@@ -107,6 +107,10 @@ double force_at(const CollisionResult& r, double t) {
   return f;
 }
 
+TEST_CASE("The drop test's speed is sqrt(2 g h) of the ITF's 100 in") {
+  CHECK(kDropTestSpeed_m_s == Approx(kDropSpeed).epsilon(1e-10));
+}
+
 TEST_CASE("The hysteretic ball meets its calibration on a rigid surface") {
   CollisionOptions o;
   o.record_history = true;

@@ -18,6 +18,7 @@
 #include <concepts>
 
 #include "sweetspot/ball_contact.hpp"
+#include "sweetspot/roots.hpp"
 
 namespace sweetspot::collision_detail {
 
@@ -67,8 +68,16 @@ inline double power(double x, double e) {
   return std::pow(x, e);
 }
 
+// The damping part b xm^p dx / h of a step, with its derivative in x1,
+// b / h (xm^p + p/2 xm^(p-1) dx) (xm moves by half of x1).
+inline StepDamping power_damping(double b, double p, double xm, double dx, double inv_h) {
+  if (!(b > 0.0 && xm > 0.0)) return {0.0, 0.0};
+  const double xp = power(xm, p);
+  return {b * xp * dx * inv_h, b * inv_h * (xp + (p > 0.0 ? 0.5 * p * xp / xm * dx : 0.0))};
+}
+
 // F = k x^n + b x^p x' (ball_contact.hpp): U = k x^(n+1) / (n+1), and the
-// damping part b xm^p dx / h with derivative b / h (xm^p + p/2 xm^(p-1) dx).
+// damping part power_damping().
 class PowerLaw {
  public:
   explicit PowerLaw(const BallContactLaw& law)
@@ -85,9 +94,7 @@ class PowerLaw {
   }
 
   StepDamping step_damping(double xm, double dx, double inv_h) const {
-    if (!(b_ > 0.0 && xm > 0.0)) return {0.0, 0.0};
-    const double xp = power(xm, p_);
-    return {b_ * xp * dx * inv_h, b_ * inv_h * (xp + (p_ > 0.0 ? 0.5 * p_ * xp / xm * dx : 0.0))};
+    return power_damping(b_, p_, xm, dx, inv_h);
   }
 
   double peak_compression(double mass, double speed) const {
@@ -154,23 +161,17 @@ class HystereticLaw {
 
   // b sqrt(xm) dx / h, the power law's damping part with p = 1/2.
   StepDamping step_damping(double xm, double dx, double inv_h) const {
-    if (!(b_ > 0.0 && xm > 0.0)) return {0.0, 0.0};
-    const double r = std::sqrt(xm);
-    return {b_ * r * dx * inv_h, b_ * inv_h * (r + 0.25 * dx / r)};
+    return power_damping(b_, 0.5, xm, dx, inv_h);
   }
 
-  // The compression whose loading work is 1/2 m v^2 (bisection on the
-  // increasing work), and the backbone's secant there.
+  // The compression whose loading work is 1/2 m v^2 (the work increases
+  // from 0), and the backbone's secant there.
   double peak_compression(double mass, double speed) const {
     const double target = 0.5 * mass * speed * speed;
+    const auto excess = [&](double x) { return backbone_work(x) - target; };
     double hi = xb_;
-    while (backbone_work(hi) < target) hi *= 2.0;
-    double lo = 0.0;
-    for (int i = 0; i < 200 && hi - lo > 1e-12 * hi; ++i) {
-      const double mid = 0.5 * (lo + hi);
-      (backbone_work(mid) < target ? lo : hi) = mid;
-    }
-    return hi;
+    while (excess(hi) < 0.0) hi *= 2.0;
+    return brent_root(excess, 0.0, hi, -target, excess(hi), 1e-12 * hi);
   }
   double secant_stiffness(double x) const { return backbone(x) / x; }
 
