@@ -37,11 +37,13 @@ std::vector<ReportEntry> write_fidelity_report(const std::vector<studies::Fideli
   double worst = 0.0;
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const studies::FidelityRow& r = rows[i];
-    const std::string model = r.model ? io::significant(*r.model, 4) : "—";
+    // People's units in the table (ms, mm, cm), SI in the CSV.
+    const io::PeopleUnit unit = io::people_unit(r.unit);
+    const std::string model = r.model ? io::significant(*r.model * unit.factor, 4) : "—";
     const std::string error = error_percent(r);
     md += fmt::format("| [{}](../designs/{}) | `{}` | {} | {} | {} | {} | {} | {} |\n", r.design,
-                      r.design, r.output, r.unit, io::significant(r.published, 4), model, error,
-                      r.fidelity, io::md_cell(r.source));
+                      r.design, r.output, unit.unit, io::significant(r.published * unit.factor, 4),
+                      model, error, r.fidelity, io::md_cell(r.source));
     csv += io::csv_field(r.design) + "," + r.output + "," + io::csv_field(r.unit) + "," +
            io::significant(r.published) + "," + (r.model ? io::significant(*r.model) : "") + "," +
            error + "," + r.fidelity + "," + io::csv_field(r.source) + "\n";
