@@ -258,6 +258,42 @@ inline constexpr double kCalibratedGripDamping_N_s_m2 = 1.30e3;
 // The calibrated hand: 0.5 kg, grip 0.02-0.12 m, k and c as above.
 HandCoupling calibrated_hand();
 
+// How tightly a player holds the handle: the paper's hand above, or one of the
+// three grips Savage measured on two strung racquets held by a player and hit
+// by a ball (N. J. Savage, "Vibration absorption in the tennis grip and the
+// effects on racquet dynamics", PhD thesis, RMIT University, 2006, Appendix 4,
+// Tables 17-18: the fundamental free 183.75 / 162.5 Hz; held light 170.25 /
+// 149, medium 165 / 146.25, tight 162.25 / 142.5 Hz; the half-power
+// bandwidth over the peak, 2 zeta, light 0.125 / 0.121, medium 0.127 / 0.130,
+// tight 0.150 / 0.156; five impacts each). Each grip's k and c are the least
+// squares fit (each residual over its published standard deviation) of
+// hand_held_modes() on two racquets of a typical strung racquet's specs (27
+// in, 305 g, balance 32.5 cm, swingweight 320 kg cm^2; the thesis's own
+// masses were not reached) with the measured free fundamentals, a 0.5 kg hand
+// over 0.02-0.12 m: every fitted frequency and 2 zeta within one standard
+// deviation (docs/model.md, "The grip"). Tighter is stiffer and more damped.
+enum class GripTightness { kPaper, kLight, kMedium, kTight };
+struct GripCoefficients {
+  double stiffness_N_m2 = 0.0;  // k [N/m per m of grip]
+  double damping_N_s_m2 = 0.0;  // c [N s/m per m of grip]
+};
+inline constexpr GripCoefficients kLightGrip{5.4e4, 3.05e3};
+inline constexpr GripCoefficients kMediumGrip{5.6e5, 4.8e3};
+inline constexpr GripCoefficients kTightGrip{2.1e6, 5.5e3};
+constexpr GripCoefficients grip_coefficients(GripTightness grip) {
+  switch (grip) {
+    case GripTightness::kLight:
+      return kLightGrip;
+    case GripTightness::kMedium:
+      return kMediumGrip;
+    case GripTightness::kTight:
+      return kTightGrip;
+    case GripTightness::kPaper:
+      break;
+  }
+  return {kCalibratedGripStiffness_N_m2, kCalibratedGripDamping_N_s_m2};
+}
+
 // Damped modes of the beam held in the hand: the first-order (state-space)
 // complex eigenproblem of M q'' + C q' + K q = 0 with the rigid-body motion
 // of beam plus hand deflated. Only oscillatory modes (Im s > 0) are reported,

@@ -986,6 +986,16 @@ std::optional<double> read_strings(ObjectReader& top, Reading& in, const Impleme
   return head_area_m2;
 }
 
+// A grip's tightness by its name in a design file.
+constexpr std::string_view kGripExpected = "expected \"paper\", \"light\", \"medium\" or \"tight\"";
+std::optional<GripTightness> grip_tightness(std::string_view name) {
+  if (name == "paper") return GripTightness::kPaper;
+  if (name == "light") return GripTightness::kLight;
+  if (name == "medium") return GripTightness::kMedium;
+  if (name == "tight") return GripTightness::kTight;
+  return std::nullopt;
+}
+
 // /hand: the paper's hand and its grip.
 void read_hand(ObjectReader& top, Reading& in) {
   Part hand(top, "hand", in.keys, in.provenance);
@@ -995,13 +1005,28 @@ void read_hand(ObjectReader& top, Reading& in) {
                in.defaults.hand.center_from_butt_m);
   in.design.hand.grip_length_m =
       hand.get("grip_length", Dimension::kLength, "grip_length_m", in.defaults.hand.grip_length_m);
-  in.design.hand.grip_stiffness_N_m2 =
-      hand.get("grip_stiffness", Dimension::kStiffness, "grip_stiffness_N_m2",
-               in.defaults.hand.grip_stiffness_N_m2);
+  // The grip by its tightness (beam_modes.hpp: the paper's hand, or Savage's
+  // light, medium and tight grips), or by its stiffness and damping.
+  ObjectReader& r = hand.reader();
+  const std::optional<std::string> grip = r.string("grip");
+  GripCoefficients fallback{in.defaults.hand.grip_stiffness_N_m2,
+                            in.defaults.hand.grip_damping_N_s_m2};
+  if (grip) {
+    const auto tightness = grip_tightness(*grip);
+    if (!tightness) r.fail("grip", std::string(kGripExpected) + ", got \"" + *grip + "\"");
+    for (const std::string& key : design_keys("hand")) {
+      if ((key.starts_with("grip_stiffness") || key.starts_with("grip_damping")) && r.has(key))
+        r.fail(key, "is set by the grip \"" + *grip +
+                        "\" given with it (give the grip or its stiffness and damping)");
+    }
+    r.record("grip", "grip");  // listed with the inputs as given
+    fallback = grip_coefficients(*tightness);
+  }
+  in.design.hand.grip_stiffness_N_m2 = hand.get("grip_stiffness", Dimension::kStiffness,
+                                                "grip_stiffness_N_m2", fallback.stiffness_N_m2);
   in.design.hand.grip_damping_N_s_m2 =
-      hand.get("grip_damping", Dimension::kDamping, "grip_damping_N_s_m2",
-               in.defaults.hand.grip_damping_N_s_m2);
-  hand.reader().finish(design_keys("hand"));
+      hand.get("grip_damping", Dimension::kDamping, "grip_damping_N_s_m2", fallback.damping_N_s_m2);
+  r.finish(design_keys("hand"));
 }
 
 // /forearm: its equivalent mass, or its mass (Eq. 7; returned when given).

@@ -67,7 +67,7 @@ bool is_text_field(std::string_view field) {
   // The stringer's words: a material, a pattern, a trade gauge ("16L"; a
   // gauge that is a number, 16, is read as one); a cross-section's shape; a
   // support by its name ("handle_clamped"; a pivot is support.pivot_from_butt_cm); a
-  // ball's law by its name ("hysteretic").
+  // ball's law by its name ("hysteretic"); a grip by its tightness ("tight").
   for (const std::string_view family : {"strings.", "strings.mains.", "strings.crosses."}) {
     if (!field.starts_with(family)) continue;
     const std::string_view stem = field.substr(family.size());
@@ -75,7 +75,7 @@ bool is_text_field(std::string_view field) {
   }
   return field == "name" || field == "description" || field == "fidelity" ||
          field == "reference.source" || field == "frame.cross_section.shape" ||
-         field == "support" || field == "ball.contact.law";
+         field == "support" || field == "ball.contact.law" || field == "hand.grip";
 }
 
 // The header, checked once: every column a design field (or, with a map,

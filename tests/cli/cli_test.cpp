@@ -85,8 +85,10 @@ TEST_CASE("Every class of bad design input exits 2 with one line naming file and
   const std::string deep = std::string(100, '[') + std::string(100, ']');
   const BadInput cases[] = {
       {"unknown key", with_implement(R"("colour": "red")"), "/colour", "unknown key"},
-      {"unknown nested key", with_implement(R"("hand": {"mass_kg": 0.5, "grip": "firm"})"),
-       "/hand/grip", "unknown key"},
+      {"unknown nested key", with_implement(R"("hand": {"mass_kg": 0.5, "glove": "leather"})"),
+       "/hand/glove", "unknown key"},
+      {"unknown grip", with_implement(R"("hand": {"mass_kg": 0.5, "grip": "firm"})"), "/hand/grip",
+       "expected \"paper\", \"light\", \"medium\" or \"tight\", got \"firm\""},
       {"missing implement", R"({"frame": {"cor": 0.8}})", "/implement", "missing"},
       {"missing mass", R"({"implement": {"length_m": 0.7, "head_to_handle_mass_ratio": 1}})",
        "/implement", "missing mass_kg"},

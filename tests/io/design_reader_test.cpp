@@ -733,4 +733,33 @@ TEST_CASE("A ball's law is read by name and its rigid-surface COR as given, both
   CHECK(has(error(R"({"cor_on_rigid_surface": "high"})"), "/ball/cor_on_rigid_surface"));
 }
 
+TEST_CASE("A grip is read by its tightness, which sets its stiffness and damping") {
+  const std::string racquet = R"({"implement": {"length_m": 0.7, "mass_kg": 0.25,
+      "head_to_handle_mass_ratio": 0.8}, "hand": )";
+  const auto hand = [&](const std::string& value) {
+    return read((racquet + value + "}").c_str()).design.hand;
+  };
+  CHECK(hand("{}").grip_stiffness_N_m2 == kCalibratedGripStiffness_N_m2);
+  CHECK(hand(R"({"grip": "paper"})").grip_damping_N_s_m2 == kCalibratedGripDamping_N_s_m2);
+  for (const auto& [name, grip] : {std::pair{"light", kLightGrip}, std::pair{"medium", kMediumGrip},
+                                   std::pair{"tight", kTightGrip}}) {
+    const Hand h = hand(std::string(R"({"grip": ")") + name + "\"}");
+    CHECK(h.grip_stiffness_N_m2 == grip.stiffness_N_m2);
+    CHECK(h.grip_damping_N_s_m2 == grip.damping_N_s_m2);
+  }
+  // Written back as the numbers it set, read again as the same hand.
+  const DesignFile tight = read((racquet + R"({"grip": "tight"}})").c_str());
+  CHECK(read_design(design_to_json(tight), "again.json").design.hand.grip_stiffness_N_m2 ==
+        kTightGrip.stiffness_N_m2);
+  const auto error = [&](const std::string& value) {
+    return error_of((racquet + value + "}").c_str());
+  };
+  CHECK(has(error(R"({"grip": "firm"})"), "/hand/grip: expected \"paper\", \"light\""));
+  CHECK(has(error(R"({"grip": 0.5})"), "/hand/grip: expected a string"));
+  CHECK(has(error(R"({"grip": "tight", "grip_stiffness_N_m2": 1e5})"),
+            "/hand/grip_stiffness_N_m2: is set by the grip \"tight\""));
+  CHECK(has(error(R"({"grip": "light", "grip_damping_N_s_m2": 10})"),
+            "/hand/grip_damping_N_s_m2: is set by the grip \"light\""));
+}
+
 }  // namespace sweetspot::io

@@ -379,8 +379,13 @@ DrawnDesign draw_design(Rng& rng, const std::string& fidelity, double typical_sh
     const Range grip{1e-6, L, true, kTiny, L, std::min(0.08, L), std::min(0.12, L)};
     put(rng, hand, "grip_length", kLength, draw(grip));
   }
-  if (draw.chance(0.25)) hand["grip_stiffness_N_m2"] = draw(kGripStiffness);
-  if (draw.chance(0.25)) hand["grip_damping_N_s_m2"] = draw(kGripDamping);
+  if (draw.chance(0.15)) {
+    // A grip by its tightness, which sets its stiffness and damping.
+    hand["grip"] = rng.pick(std::vector<std::string>{"paper", "light", "medium", "tight"});
+  } else {
+    if (draw.chance(0.25)) hand["grip_stiffness_N_m2"] = draw(kGripStiffness);
+    if (draw.chance(0.25)) hand["grip_damping_N_s_m2"] = draw(kGripDamping);
+  }
   if (!hand.empty()) doc["hand"] = hand;
 
   if (draw.chance(0.35)) {

@@ -61,5 +61,52 @@ TEST_CASE("The fidelity rows are each shipped reference beside evaluate's value 
   CHECK(std::round(*row1->model) == 568.0);
 }
 
+// Savage (2006), Appendix 4, Tables 17-18: the standard deviations of the
+// five impacts behind each average the design files reference (the hand-held
+// fundamental [Hz], the half-power bandwidth over the peak, 2 zeta).
+struct SavageGrip {
+  const char* design;
+  double sd_Hz;
+  double sd_two_zeta;
+};
+constexpr SavageGrip kSavageGrips[] = {
+    {"savage-racquet-a-light-grip.json", 1.629801, 0.027067},
+    {"savage-racquet-a-medium-grip.json", 1.976424, 0.007364},
+    {"savage-racquet-a-tight-grip.json", 1.629801, 0.020001},
+    {"savage-racquet-b-light-grip.json", 1.629801, 0.013336},
+    {"savage-racquet-b-medium-grip.json", 2.338536, 0.007161},
+    {"savage-racquet-b-tight-grip.json", 1.530931, 0.015726},
+};
+
+TEST_CASE("Savage's light, medium and tight grips on his two racquets, each within its scatter") {
+  const std::string lab = std::string(SWEETSPOT_SOURCE_DIR) + "/designs/lab/";
+  const auto output = [](const Evaluation& e, const char* name) {
+    const std::optional<double> value = io::find_output(name)->value(e);
+    REQUIRE(value);
+    return *value;
+  };
+  double held_Hz[std::size(kSavageGrips)];
+  double zeta[std::size(kSavageGrips)];
+  for (std::size_t k = 0; k < std::size(kSavageGrips); ++k) {
+    const SavageGrip& grip = kSavageGrips[k];
+    INFO(grip.design);
+    const io::DesignFile file = io::load_design(lab + grip.design);
+    const Evaluation e = io::evaluate_design_file(file, "", 1e-6);
+    held_Hz[k] = output(e, "fundamental_hand_Hz");
+    zeta[k] = output(e, "hand_damping_ratio");
+    CHECK(std::abs(held_Hz[k] - file.reference["fundamental_hand_Hz"].get<double>()) < grip.sd_Hz);
+    CHECK(std::abs(2.0 * zeta[k] - 2.0 * file.reference["hand_damping_ratio"].get<double>()) <
+          grip.sd_two_zeta);
+    // Held, the fundamental falls 7-12 % from the free racquet's.
+    CHECK(held_Hz[k] / output(e, "fundamental_free_Hz") < 0.93);
+  }
+  // On each racquet, tighter is lower and the tight grip damps more than the light one.
+  for (const std::size_t light : {0u, 3u}) {
+    CHECK(held_Hz[light] > held_Hz[light + 1]);
+    CHECK(held_Hz[light + 1] > held_Hz[light + 2]);
+    CHECK(zeta[light + 2] > zeta[light]);
+  }
+}
+
 }  // namespace
 }  // namespace sweetspot::studies
