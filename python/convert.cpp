@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <string_view>
 
+#include "io/evaluation_tree.hpp"
 #include "io/input_error.hpp"
 #include "io/json_reader.hpp"
 
@@ -86,7 +87,66 @@ io::Json to_json(py::handle value, const std::string& source, const std::string&
                            type_name(value));
 }
 
+py::str text_of(std::string_view text) {
+  PyObject* decoded =
+      PyUnicode_DecodeUTF8(text.data(), static_cast<Py_ssize_t>(text.size()), "replace");
+  if (!decoded) throw py::error_already_set();
+  return py::reinterpret_steal<py::str>(decoded);
+}
+
+// io::write_evaluation()'s node for a Python dict.
+class DictNode {
+ public:
+  explicit DictNode(py::dict dict) : dict_(std::move(dict)) {}
+  void number(std::string_view key, double value) { set(key, py::float_(value)); }
+  void integer(std::string_view key, std::int64_t value) { set(key, py::int_(value)); }
+  void text(std::string_view key, std::string_view value) { set(key, text_of(value)); }
+  void null(std::string_view key) { set(key, py::none()); }
+  void numbers(std::string_view key, const std::vector<double>& values) {
+    py::list list(values.size());
+    for (std::size_t i = 0; i < values.size(); ++i) list[i] = py::float_(values[i]);
+    set(key, list);
+  }
+  void json_number(std::string_view key, const io::Json& value) { set(key, to_python(value)); }
+  DictNode object(std::string_view key) {
+    py::dict child;
+    set(key, child);
+    return DictNode(std::move(child));
+  }
+  class List {
+   public:
+    explicit List(py::list list) : list_(std::move(list)) {}
+    DictNode object() {
+      py::dict child;
+      list_.append(child);
+      return DictNode(std::move(child));
+    }
+
+   private:
+    py::list list_;
+  };
+  List list(std::string_view key) {
+    py::list child;
+    set(key, child);
+    return List(std::move(child));
+  }
+
+ private:
+  void set(std::string_view key, const py::handle value) {
+    if (PyDict_SetItem(dict_.ptr(), text_of(key).ptr(), value.ptr()) != 0)
+      throw py::error_already_set();
+  }
+  py::dict dict_;
+};
+
 }  // namespace
+
+py::dict evaluation_dict(const io::DesignFile& file, const Evaluation& evaluation) {
+  py::dict root;
+  DictNode node(root);
+  io::write_evaluation(node, file, evaluation);
+  return root;
+}
 
 Document read_document(py::handle value) {
   Document document;

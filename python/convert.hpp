@@ -8,7 +8,9 @@
 
 #include <string>
 
+#include "io/design_reader.hpp"
 #include "io/json_reader.hpp"
+#include "sweetspot/evaluate.hpp"
 
 namespace sweetspot::python {
 
@@ -29,5 +31,10 @@ Document read_document(pybind11::handle value);
 // float (the same double), strings decoded as UTF-8 (an invalid byte as
 // U+FFFD, as the JSON writer replaces it), null as None.
 pybind11::object to_python(const io::Json& value);
+
+// The dict `sweetspot evaluate --format json` prints for an evaluation
+// (io::write_evaluation() into Python objects directly: the same keys and the
+// same doubles, with no JSON document between). Needs the GIL.
+pybind11::dict evaluation_dict(const io::DesignFile& file, const Evaluation& evaluation);
 
 }  // namespace sweetspot::python

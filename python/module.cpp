@@ -88,14 +88,15 @@ py::object evaluate_py(py::handle design, const std::optional<std::string>& fide
   const std::string name = checked_fidelity(fidelity);
   checked_tolerance(tol);
   const Document document = read_document(design);
-  io::Json json;
+  std::optional<io::DesignFile> file;
+  std::optional<Evaluation> evaluation;
   {
     py::gil_scoped_release release;
-    const io::DesignFile file = io::read_design(document.json, document.source);
-    json = io::evaluation_json(
-        file, studies::with_power_point(file, io::evaluate_design_file(file, name, tol), tol));
+    file.emplace(io::read_design(document.json, document.source));
+    evaluation.emplace(
+        studies::with_power_point(*file, io::evaluate_design_file(*file, name, tol), tol));
   }
-  return to_python(json);
+  return evaluation_dict(*file, *evaluation);
 }
 
 // ------------------------------------------------------------ evaluate_many
@@ -385,7 +386,7 @@ py::dict collide_py(py::handle design, double tol) {
   out["step_error"] = r.step_error;
   out["time_s"] = array_of(r.time_s);
   out["force_N"] = array_of(r.force_N);
-  out["evaluation"] = to_python(io::evaluation_json(file, *e));
+  out["evaluation"] = evaluation_dict(file, *e);
   return out;
 }
 
@@ -496,9 +497,9 @@ py::dict optimize_py(py::handle study_value, const std::optional<int>& threads) 
   out["history"] = array_of(r.summary.history);
   out["violation_history"] = array_of(r.summary.violation_history);
   out["best_design"] = to_python(r.best_document);
-  out["best"] = r.best_outputs ? to_python(io::evaluation_json(r.best, *r.best_outputs))
+  out["best"] = r.best_outputs ? py::object(evaluation_dict(r.best, *r.best_outputs))
                                : py::object(py::none());
-  out["start"] = r.start_outputs ? to_python(io::evaluation_json(r.start, *r.start_outputs))
+  out["start"] = r.start_outputs ? py::object(evaluation_dict(r.start, *r.start_outputs))
                                  : py::object(py::none());
   out["inconsistency"] = r.inconsistency;
   out["report"] = to_python(io::parse_json(report, "report"));

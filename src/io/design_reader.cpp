@@ -156,7 +156,9 @@ RoundProfile read_profile(ObjectReader& r, const std::string& source, KeyMap* ke
   const auto density = r.number("density_kg_m3");
   if (!density) r.fail("", "missing density_kg_m3 (the profile's material)");
   profile.density_kg_m3 = *density;
-  const std::string modulus_key = r.one_of(keys_of("implement", {"youngs_modulus"}));
+  static const std::vector<std::string> kYoungsModulusKeys =
+      keys_of("implement", {"youngs_modulus"});
+  const std::string modulus_key = r.one_of(kYoungsModulusKeys);
   if (modulus_key.empty()) {
     r.fail("",
            "missing youngs_modulus_Pa (or youngs_modulus_GPa), the profile's material "
@@ -297,7 +299,8 @@ struct HeadRead {
 
 HeadRead read_head(ObjectReader& r) {
   HeadRead out;
-  const std::string key = r.one_of(keys_of("implement", {"headsize"}));
+  static const std::vector<std::string> kHeadsizeKeys = keys_of("implement", {"headsize"});
+  const std::string key = r.one_of(kHeadsizeKeys);
   if (!key.empty()) {
     const double given = *r.number(key);
     HeadShape head;
@@ -388,7 +391,9 @@ ImplementRead read_implement(const Json& document, const std::string& source, Ke
   try {
     if (r.has("profile")) {
       const RoundProfile profile = read_profile(r, source, keys);
-      r.finish(with_head_keys({"profile", "density_kg_m3", "youngs_modulus", "point_masses"}));
+      static const std::vector<std::string> kKeys =
+          with_head_keys({"profile", "density_kg_m3", "youngs_modulus", "point_masses"});
+      r.finish(kKeys);
       const double length_m = profile.stations.back().from_butt_m;
       if (std::isfinite(length_m) && length_m > 0.0) place(length_m);
       if (described) {
@@ -411,7 +416,8 @@ ImplementRead read_implement(const Json& document, const std::string& source, Ke
                        "implement/sections/" + index, source, keys);
         sections.push_back(read_section(s));
       }
-      r.finish(with_head_keys({"sections", "point_masses"}));
+      static const std::vector<std::string> kKeys = with_head_keys({"sections", "point_masses"});
+      r.finish(kKeys);
       double total_length_m = 0.0;
       for (const Section& section : sections) total_length_m += section.length_m;
       if (std::isfinite(total_length_m) && total_length_m > 0.0) place(total_length_m);
@@ -429,7 +435,9 @@ ImplementRead read_implement(const Json& document, const std::string& source, Ke
     if (!mass) r.fail("", "missing mass_kg (or mass_g), or give sections");
     if (r.has("head_to_handle_mass_ratio")) {
       const double ratio = *r.number("head_to_handle_mass_ratio");
-      r.finish(with_head_keys({"length", "mass", "head_to_handle_mass_ratio", "point_masses"}));
+      static const std::vector<std::string> kKeys =
+          with_head_keys({"length", "mass", "head_to_handle_mass_ratio", "point_masses"});
+      r.finish(kKeys);
       place(*length);
       if (described) {
         *described = ImplementDescription{.form = ImplementDescription::Form::kHeadToHandleRatio,
@@ -444,7 +452,8 @@ ImplementRead read_implement(const Json& document, const std::string& source, Ke
       return {Implement::paper_racquet(*length, *mass, ratio, std::move(points)),
               "head_to_handle_mass_ratio", head};
     }
-    const std::string balance_key = r.one_of(keys_of("implement", {"balance"}));
+    static const std::vector<std::string> kBalanceKeys = keys_of("implement", {"balance"});
+    const std::string balance_key = r.one_of(kBalanceKeys);
     if (balance_key.empty()) {
       r.fail("",
              "missing the mass distribution: give head_to_handle_mass_ratio, sections, or "
@@ -465,7 +474,9 @@ ImplementRead read_implement(const Json& document, const std::string& source, Ke
     const auto swingweight = r.quantity("swingweight", Dimension::kInertia);
     if (!swingweight)
       r.fail("", "missing swingweight_kg_cm2 (with the balance it fixes the inertia)");
-    r.finish(with_head_keys({"length", "mass", "balance", "swingweight", "point_masses"}));
+    static const std::vector<std::string> kKeys =
+        with_head_keys({"length", "mass", "balance", "swingweight", "point_masses"});
+    r.finish(kKeys);
     place(*length);
     if (described) {
       *described = ImplementDescription{.form = ImplementDescription::Form::kSpecs,
@@ -868,7 +879,8 @@ std::optional<double> read_strings(ObjectReader& top, Reading& in, const Impleme
                "contradicts the impact duration: give the duration, or the tension to derive it");
       }
       StringBed bed;
-      const std::string head = r.one_of(keys_of("strings", {"head_size"}));
+      static const std::vector<std::string> kHeadSizeKeys = keys_of("strings", {"head_size"});
+      const std::string head = r.one_of(kHeadSizeKeys);
       // The head: the implement's, strings.head_size, else the default bed's.
       double area_m2 = in.design.head ? in.design.head->area_m2
                                       : 3.141592653589793 * bed.head_radius_m * bed.head_radius_m;

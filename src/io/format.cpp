@@ -11,6 +11,7 @@
 #include <string>
 #include <utility>
 
+#include "io/evaluation_tree.hpp"
 #include "io/json_reader.hpp"
 #include "io/outputs.hpp"
 
@@ -41,16 +42,6 @@ std::string exact(double value) {
 }
 
 namespace {
-
-// Where the solved collision replaced an input by what it found: the COR
-// (Eq. 16 inverted) and the impact duration (the contact time). Empty when
-// it did not.
-std::string_view solved_provenance(std::string_view name, const Evaluation& e) {
-  if (!(e.details && e.details->collision)) return {};
-  if (name == "frame/cor") return "derived from the solved collision (Eq. 16 inverted)";
-  if (name == "strings/impact_duration_s") return "the solved collision's contact time";
-  return {};
-}
 
 // "00" .. "99": two digits at a time.
 constexpr char kDigitPairs[] =
@@ -462,7 +453,7 @@ std::string inputs_markdown(const DesignFile& file, const Evaluation& e) {
     if (it == file.provenance.end() || it->second == "given" || it->second.starts_with("given"))
       return std::string();
     const PeopleUnit unit = people_unit(si_unit);
-    const std::string_view solved = solved_provenance(name, e);
+    const std::string_view solved = evaluation_tree_detail::solved_provenance(name, e);
     return fmt::format("- {}: {}{}{} ({})\n", what, people_text(si * unit.factor),
                        unit.unit.empty() ? "" : " ", unit.unit,
                        md_cell(solved.empty() ? it->second : std::string(solved)));
@@ -522,55 +513,22 @@ std::string inputs_markdown(const DesignFile& file, const Evaluation& e) {
   return md;
 }
 
-Json inputs_json(const DesignFile& file, const Evaluation& e) {
-  const Design& d = file.design;
-  const auto input = [&](const char* name, double value, const char* unit) {
-    const auto it = file.provenance.find(name);
-    return Json{{"value", value},
-                {"unit", unit},
-                {"provenance", it == file.provenance.end() ? "given" : it->second}};
-  };
-  Json inputs;
-  inputs["implement/form"] = file.implement_form;
-  inputs["frame/cor"] = input("frame/cor", e.cor, "");
-  inputs["strings/impact_duration_s"] =
-      input("strings/impact_duration_s", e.impact_duration_s, "s");
-  for (const char* name : {"frame/cor", "strings/impact_duration_s"}) {
-    if (const std::string_view solved = solved_provenance(name, e); !solved.empty())
-      inputs[name]["provenance"] = solved;
-  }
-  if (d.cor_rigid) inputs["frame/cor_rigid"] = input("frame/cor_rigid", *d.cor_rigid, "");
-  if (d.strings)
-    inputs["strings/tension_N"] = input("strings/tension_N", d.strings->tension_N, "N");
-  inputs["hand/mass_kg"] = input("hand/mass_kg", d.hand.mass_kg, "kg");
-  inputs["hand/center_from_butt_m"] =
-      input("hand/center_from_butt_m", d.hand.center_from_butt_m, "m");
-  inputs["forearm/equivalent_mass_kg"] =
-      input("forearm/equivalent_mass_kg", d.forearm_equivalent_mass_kg, "kg");
-  inputs["ball/mass_kg"] = input("ball/mass_kg", d.ball.mass_kg, "kg");
-  inputs["ball/speed_m_s"] = input("ball/speed_m_s", d.ball.speed_m_s, "m/s");
-  inputs["impact/from_butt_m"] = input("impact/from_butt_m", d.impact_from_butt_m, "m");
-  if (d.stiffness.RA) inputs["frame/RA"] = input("frame/RA", *d.stiffness.RA, "");
-  // An input the file gave in another unit is echoed as given too
-  // ("strings/tension_N" given as {"/strings/tension_lb": 52}).
-  for (auto& [name, value] : inputs.items()) {
-    const auto origin = file.keys.find(name);
-    if (!value.is_object() || origin == file.keys.end()) continue;
-    const std::string& pointer = origin->second.pointer;
-    if (pointer.substr(pointer.rfind('/') + 1) == name.substr(name.rfind('/') + 1)) continue;
-    const Json given = Json::parse(origin->second.given, nullptr, false);
-    if (given.is_number()) value["given"] = Json{{pointer, given}};
-  }
-  return inputs;
-}
-
 }  // namespace
 
-// Why a cheaper model would have done (empty when nothing to say): the modal
-// and response models on a frame whose free fundamental is above 1.5/T, which
-// a half-sine of duration T barely excites (Cross 2004, Sec. III); every mode
-// keeps at most 1/(x^2 - 1)^2 of its impulse-limit energy, x = 2 f1 T.
-static std::string fidelity_note(const Evaluation& e) {
+namespace evaluation_tree_detail {
+
+std::string_view solved_provenance(std::string_view name, const Evaluation& e) {
+  if (!(e.details && e.details->collision)) return {};
+  if (name == "frame/cor") return "derived from the solved collision (Eq. 16 inverted)";
+  if (name == "strings/impact_duration_s") return "the solved collision's contact time";
+  return {};
+}
+
+// The modal and response models on a frame whose free fundamental is above
+// 1.5/T, which a half-sine of duration T barely excites (Cross 2004, Sec.
+// III); every mode keeps at most 1/(x^2 - 1)^2 of its impulse-limit energy,
+// x = 2 f1 T.
+std::string fidelity_note(const Evaluation& e) {
   if (!e.modal || (e.fidelity != Fidelity::kModal && e.fidelity != Fidelity::kResponse)) return {};
   const double limit_Hz = 1.5 / e.impact_duration_s;
   const double f1 = e.modal->fundamental_free_Hz;
@@ -583,54 +541,62 @@ static std::string fidelity_note(const Evaluation& e) {
          " of its impulse-limit energy), so the rigid model answers this design";
 }
 
+std::optional<std::pair<std::string, Json>> given_elsewhere(const DesignFile& file,
+                                                            std::string_view name) {
+  const auto origin = file.keys.find(std::string(name));
+  if (origin == file.keys.end()) return std::nullopt;
+  const std::string& pointer = origin->second.pointer;
+  if (std::string_view(pointer).substr(pointer.rfind('/') + 1) == name.substr(name.rfind('/') + 1))
+    return std::nullopt;
+  Json given = Json::parse(origin->second.given, nullptr, false);
+  if (!given.is_number()) return std::nullopt;
+  return std::pair{pointer, std::move(given)};
+}
+
+}  // namespace evaluation_tree_detail
+
+namespace {
+
+// write_evaluation()'s node for a JSON document.
+class JsonNode {
+ public:
+  explicit JsonNode(Json& json) : json_(&json) {}
+  void number(std::string_view key, double value) { at(key) = value; }
+  void integer(std::string_view key, std::int64_t value) { at(key) = value; }
+  void text(std::string_view key, std::string_view value) { at(key) = value; }
+  void null(std::string_view key) { at(key) = nullptr; }
+  void numbers(std::string_view key, const std::vector<double>& values) { at(key) = values; }
+  void json_number(std::string_view key, const Json& value) { at(key) = value; }
+  JsonNode object(std::string_view key) {
+    Json& child = at(key);
+    child = Json::object();
+    return JsonNode(child);
+  }
+  class List {
+   public:
+    explicit List(Json& json) : json_(&json) {}
+    JsonNode object() { return JsonNode(json_->emplace_back(Json::object())); }
+
+   private:
+    Json* json_;
+  };
+  List list(std::string_view key) {
+    Json& child = at(key);
+    child = Json::array();
+    return List(child);
+  }
+
+ private:
+  Json& at(std::string_view key) { return (*json_)[std::string(key)]; }
+  Json* json_;
+};
+
+}  // namespace
+
 Json evaluation_json(const DesignFile& file, const Evaluation& e) {
-  Json j;
-  j["name"] = file.name;
-  j["fidelity"] = to_string(fidelity_of(e));
-  if (e.modal)
-    j["mass_distribution"] =
-        e.modal->mass_distribution_fitted ? "fitted to the specs (quadratic density)" : "given";
-  j["inputs"] = inputs_json(file, e);
-  Json& outputs = j["outputs"];
-  Json notes = Json::object();
-  for (const OutputSpec& output : output_specs()) {
-    const auto value = output.value(e);
-    outputs[std::string(output.name)] = value ? Json(*value) : Json(nullptr);
-    if (!value) notes[std::string(output.name)] = output.absent_because(e);
-  }
-  // The power point: searched along the string bed for one design (evaluate),
-  // so not an output of every row (studies::with_power_point()).
-  if (e.power_point_from_butt_m && e.power_point_shot_speed_m_s) {
-    const double v = *e.power_point_shot_speed_m_s;
-    j["power_point"] = {{"from_tip_m", e.length_m - *e.power_point_from_butt_m},
-                        {"shot_speed_m_s", v},
-                        {"shot_speed_km_h", v * kKmHPerMS},
-                        {"shot_speed_mph", v * kMphPerMS}};
-  }
-  const Evaluation::Details details = e.details.value_or(Evaluation::Details{});
-  if (details.collision) {
-    const CollisionResult& c = *details.collision;
-    outputs["energy_ledger"] = {{"ball_in_J", c.ball_in_J},
-                                {"ball_out_J", c.ball_out_J},
-                                {"implement_rigid_J", c.implement_rigid_J},
-                                {"vibration_J", c.vibration_J},
-                                {"ball_loss_J", c.ball_loss_J},
-                                {"strings_loss_J", c.strings_loss_J}};
-    j["collision"] = {{"contacts", c.contacts},
-                      {"peak_ball_compression_m", c.peak_ball_compression_m},
-                      {"peak_string_deflection_m", c.peak_string_deflection_m},
-                      {"string_bed_energy_J", c.string_bed_energy_J},
-                      {"time_s", c.time_s},
-                      {"force_N", c.force_N}};
-  }
-  if (const std::string note = fidelity_note(e); !note.empty()) notes["fidelity"] = note;
-  j["notes"] = notes;
-  if (!details.vibration_modes.empty()) {
-    j["vibration_modes"] = Json::array();
-    for (const auto& [frequency, energy] : details.vibration_modes) {
-      j["vibration_modes"].push_back({{"frequency_Hz", frequency}, {"energy_J", energy}});
-    }
-  }
+  Json j = Json::object();
+  JsonNode root(j);
+  write_evaluation(root, file, e);
   return j;
 }
 
@@ -712,7 +678,8 @@ std::string evaluation_report(const DesignFile& file, const Evaluation& e, Forma
                         significant(details.vibration_modes[k].second, 4));
     }
   }
-  if (const std::string note = fidelity_note(e); !note.empty()) md += "\nNote: " + note + ".\n";
+  if (const std::string note = evaluation_tree_detail::fidelity_note(e); !note.empty())
+    md += "\nNote: " + note + ".\n";
   md += inputs_markdown(file, e);
   return md;
 }

@@ -134,6 +134,7 @@ class StrictBuilder : public nlohmann::json_sax<Json> {
 }  // namespace
 
 std::string escape_pointer_token(std::string_view token) {
+  if (token.find_first_of("~/") == std::string_view::npos) return std::string(token);
   std::string out;
   for (const char c : token) {
     if (c == '~')
@@ -636,7 +637,9 @@ ObjectReader::ObjectReader(const Json& value, std::string pointer, std::string c
 bool ObjectReader::has(std::string_view key) const { return object_.contains(key); }
 
 std::string ObjectReader::pointer_of(std::string_view key) const {
-  return pointer_ + "/" + escape_pointer_token(key);
+  std::string pointer;
+  pointer.reserve(pointer_.size() + 1 + key.size());
+  return pointer.append(pointer_).append("/").append(escape_pointer_token(key));
 }
 
 void ObjectReader::fail(std::string_view key, const std::string& detail) const {
