@@ -3,6 +3,7 @@
 // numbers the command line prints, as Python values and NumPy arrays; the
 // physics runs without the GIL.
 
+#include <fmt/format.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -26,12 +27,14 @@
 #include "io/parallel.hpp"
 #include "reports/modes_report.hpp"
 #include "reports/optimization_report.hpp"
+#include "reports/tune_report.hpp"
 #include "studies/catalogue_header.hpp"
 #include "studies/modes.hpp"
 #include "studies/optimization.hpp"
 #include "studies/string_bed_map.hpp"
 #include "studies/study.hpp"
 #include "studies/sweet_spots.hpp"
+#include "studies/tune.hpp"
 #include "sweetspot/beam_modes.hpp"
 #include "sweetspot/evaluate.hpp"
 
@@ -521,6 +524,148 @@ py::list outputs_py() {
   return list;
 }
 
+// ------------------------------------------------------------ tune
+
+// A list given as a str ("12,3/9,handle") or as a sequence of str, as the
+// command line's comma-separated text.
+std::string comma_text(py::handle value, const char* name) {
+  if (PyUnicode_Check(value.ptr())) return value.cast<std::string>();
+  if (!py::isinstance<py::sequence>(value))
+    throw io::InputError(name, "", "expected a str or a list of str");
+  std::string text;
+  for (const py::handle item : value) {
+    if (!PyUnicode_Check(item.ptr()))
+      throw io::InputError(name, "", "expected a str or a list of str");
+    if (!text.empty()) text += ',';
+    text += item.cast<std::string>();
+  }
+  return text;
+}
+
+// The targets given as a dict ({"mass_g": 330}) or the command line's text.
+std::string target_text(py::handle value) {
+  if (!PyDict_Check(value.ptr())) return comma_text(value, "target");
+  std::string text;
+  for (const auto& [key, item] : py::reinterpret_borrow<py::dict>(value)) {
+    const bool number = (py::isinstance<py::float_>(item) || py::isinstance<py::int_>(item)) &&
+                        !PyBool_Check(item.ptr());
+    if (!PyUnicode_Check(key.ptr()) || !number) {
+      throw io::InputError("target", "",
+                           "expected a dict of a spec's name and a number, got the item " +
+                               py::repr(key).cast<std::string>() + ": " +
+                               py::repr(item).cast<std::string>());
+    }
+    if (!text.empty()) text += ',';
+    text += key.cast<std::string>() + "=" + fmt::format("{}", item.cast<double>());
+  }
+  return text;
+}
+
+// A study's complaint about an argument, as the command line words it for its option.
+template <typename F>
+auto as_input_error(const char* name, F f) {
+  try {
+    return f();
+  } catch (const std::invalid_argument& e) {
+    std::string detail = e.what();
+    for (const std::string prefix : {"--target: ", "--places: "}) {
+      if (detail.starts_with(prefix)) {
+        const std::string option = prefix.substr(2, prefix.size() - 4);
+        throw io::InputError(option, "", detail.substr(prefix.size()));
+      }
+    }
+    throw io::InputError(name, "", detail);
+  }
+}
+
+py::dict specs_dict(const studies::RacquetSpecs& specs) {
+  py::dict d;
+  d["mass_kg"] = specs.mass_kg;
+  d["balance_from_butt_m"] = specs.balance_from_butt_m;
+  d["swingweight_kg_m2"] = specs.swingweight_kg_m2;
+  d["twistweight_kg_m2"] = optional_float(specs.twistweight_kg_m2);
+  return d;
+}
+
+py::dict tune_py(py::handle design, py::handle target, py::handle places, py::handle like,
+                 double strip_g, double tol) {
+  checked_tolerance(tol);
+  if (!(strip_g >= 0.01 && strip_g <= 100.0))
+    throw io::InputError("strip_g", "",
+                         "must be in [0.01, 100] g, got " + fmt::format("{}", strip_g));
+  const Document document = read_document(design);
+  const io::DesignFile file = io::read_design(document.json, document.source);
+  const std::vector<studies::LeadPlace> lead_places = as_input_error(
+      "places", [&] { return studies::parse_lead_places(comma_text(places, "places")); });
+  studies::TuneTargets targets;
+  if (!target.is_none())
+    targets =
+        as_input_error("target", [&] { return studies::parse_tune_targets(target_text(target)); });
+  if (!like.is_none()) {
+    const studies::TuneTargets other =
+        studies::targets_from(studies::specs_of(read_design_of(like).design), false);
+    if (!targets.mass_kg) targets.mass_kg = other.mass_kg;
+    if (!targets.balance_from_butt_m) targets.balance_from_butt_m = other.balance_from_butt_m;
+    if (!targets.swingweight_kg_m2) targets.swingweight_kg_m2 = other.swingweight_kg_m2;
+  }
+  if (targets.empty())
+    throw io::InputError("target", "", "give the specs to reach (or like=another design)");
+  std::optional<studies::TuneResult> result;
+  io::Json tuned;
+  std::string report;
+  {
+    py::gil_scoped_release release;
+    result.emplace(
+        as_input_error("target", [&] { return studies::tune(file, targets, lead_places); }));
+    tuned = studies::tuned_document(document.json, *result);
+    studies::TuneEvaluations evaluations =
+        studies::evaluate_tune(file, tuned, file.source + " (tuned)", tol);
+    const reports::TunedRacquet racquet{*result, std::move(evaluations.before),
+                                        std::move(evaluations.after), ""};
+    report = reports::tune_report({racquet}, strip_g * 1e-3, io::Format::kJson);
+  }
+  const studies::TuneResult& r = *result;
+  py::dict out;
+  out["exact"] = r.exact;
+  out["added_kg"] = r.added_kg;
+  out["before"] = specs_dict(r.before);
+  out["reached"] = specs_dict(r.reached);
+  py::dict wanted;
+  wanted["mass_kg"] = optional_float(r.targets.mass_kg);
+  wanted["balance_from_butt_m"] = optional_float(r.targets.balance_from_butt_m);
+  wanted["swingweight_kg_m2"] = optional_float(r.targets.swingweight_kg_m2);
+  wanted["twistweight_kg_m2"] = optional_float(r.targets.twistweight_kg_m2);
+  out["targets"] = wanted;
+  py::list lead;
+  for (const studies::PlacedLead& placed : r.lead) {
+    py::dict d;
+    d["place"] = placed.place.label;
+    d["mass_kg"] = placed.mass_kg;
+    py::list pieces;
+    for (const PointMass& piece : placed.pieces) {
+      py::dict p;
+      p["from_butt_m"] = piece.from_butt_m;
+      p["off_axis_m"] = piece.off_axis_m;
+      p["mass_kg"] = piece.mass_kg;
+      pieces.append(p);
+    }
+    d["pieces"] = pieces;
+    lead.append(d);
+  }
+  out["lead"] = lead;
+  py::list misses;
+  for (const studies::TargetMiss& miss : r.misses) {
+    py::dict d;
+    d["spec"] = miss.spec;
+    d["reason"] = miss.reason;
+    misses.append(d);
+  }
+  out["misses"] = misses;
+  out["tuned_design"] = r.exact ? to_python(tuned) : py::object(py::none());
+  out["report"] = to_python(io::parse_json(report, "report"));
+  return out;
+}
+
 }  // namespace
 }  // namespace sweetspot::python
 
@@ -648,6 +793,33 @@ violation, satisfied, active), 'history' and 'violation_history' (the best objec
 its violation after each evaluation, arrays), 'evaluations', 'seconds', 'termination',
 'best_design' (the design file of the answer, as a dict evaluate() takes), 'best' and
 'start' (their evaluate() dicts), and 'report' (`sweetspot optimize --format json`).)");
+
+  m.def("tune", &tune_py, py::arg("design"), py::arg("target") = py::none(), py::arg("places"),
+        py::arg("like") = py::none(), py::arg("strip_g") = 1.0, py::arg("tol") = 1e-6,
+        R"(The least lead tape, and where, that brings a racquet to target specs: `sweetspot tune
+DESIGN --target ... --places ...`.
+
+design: a design as a dict, JSON text or path.
+target: the specs to reach, a dict of a design file's spelling and a number
+    ({"mass_g": 330, "balance_cm": 32, "swingweight_kg_cm2": 330}; twistweight_kg_cm2 too,
+    the balance in cm or m from the butt) or the command line's text
+    ("mass_g=330,balance_cm=32"); None: only those of `like`.
+places: where lead may go, a str ("12,3/9,handle") or a list of str: clock hours on the
+    hoop (a pair 3/9 takes half at each; the design needs its head size), throat, handle
+    (under the grip, 9 cm from the butt), butt (under the butt cap).
+like: another design whose mass, balance and swingweight to reach (target wins for the
+    specs it names).
+strip_g: the strip of tape the report counts the lead in, in [0.01, 100] g (1 g: about
+    10 cm of 1/4-inch tape).
+tol: as evaluate(), for the report's hand-held frequency.
+
+Returns a dict: 'exact' (every target reached), 'added_kg', 'before', 'reached' and
+'targets' (mass_kg, balance_from_butt_m, swingweight_kg_m2, twistweight_kg_m2; None where
+not known or not asked), 'lead' (one dict per place: place, mass_kg, pieces with
+from_butt_m, off_axis_m and mass_kg), 'misses' (spec and reason, when not exact),
+'tuned_design' (the design file with the lead as point masses, a dict evaluate() takes;
+None when not exact) and 'report' (`sweetspot tune --format json`). Lead only adds mass:
+a target below the racquet's own is reported as a miss, not an error.)");
 
   m.def("outputs", &outputs_py,
         R"(Every output of evaluate(), in report order: a dict each with its name, SI unit

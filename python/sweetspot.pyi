@@ -60,5 +60,17 @@ def string_bed_map(
 def optimize(study: Design, threads: Optional[int] = None) -> dict[str, Any]:
     """A study's optimisation: best design, objective, constraints, histories (NumPy arrays)."""
 
+def tune(
+    design: Design,
+    target: Union[Mapping[str, float], str, None] = None,
+    places: Union[str, Sequence[str]] = ...,
+    like: Optional[Design] = None,
+    strip_g: float = 1.0,
+    tol: float = 1e-6,
+) -> dict[str, Any]:
+    """The least lead, and where (places: clock hours, 3/9, throat, handle, butt), that reaches
+    target specs (mass_g, balance_cm, swingweight_kg_cm2, twistweight_kg_cm2): the lead per
+    place, the specs before and reached (SI), misses, the tuned design, the report."""
+
 def outputs() -> list[dict[str, Any]]:
     """Every output of evaluate(): name, SI unit, description, when it is None."""

@@ -53,10 +53,9 @@ reports::TunedRacquet evaluate_tuned(const ReadDesign& original, const studies::
                                      double tolerance) {
   const std::string name =
       written.empty() ? original.file.source + " (tuned)" : io::input_name(written);
-  reports::TunedRacquet t{result, studies::compare_one(original.file, "", tolerance),
-                          studies::compare_one(io::read_design(tuned, name), "", tolerance),
-                          written};
-  return t;
+  studies::TuneEvaluations evaluations =
+      studies::evaluate_tune(original.file, tuned, name, tolerance);
+  return {result, std::move(evaluations.before), std::move(evaluations.after), written};
 }
 
 }  // namespace

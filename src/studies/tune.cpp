@@ -642,4 +642,10 @@ MatchResult match(const std::vector<io::DesignFile>& designs,
   return out;
 }
 
+TuneEvaluations evaluate_tune(const io::DesignFile& original, const io::Json& tuned,
+                              const std::string& tuned_name, double rel_tol) {
+  return {compare_one(original, "", rel_tol),
+          compare_one(io::read_design(tuned, tuned_name), "", rel_tol)};
+}
+
 }  // namespace sweetspot::studies

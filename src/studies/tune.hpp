@@ -27,6 +27,7 @@
 
 #include "io/design_reader.hpp"
 #include "io/json_reader.hpp"
+#include "studies/comparison.hpp"
 
 namespace sweetspot::studies {
 
@@ -136,6 +137,15 @@ TuneResult tune(const io::DesignFile& design, const TuneTargets& targets,
 // {"clock": [3, 9]} with each piece's mass; the throat "throat"; the butt cap
 // "handle"; under the grip from_butt_cm) and " (tuned)" added to its name.
 io::Json tuned_document(const io::Json& document, const TuneResult& result);
+
+// The racquet before and after a tune, each evaluated at its file's own
+// fidelity (compare_one()): the tuned one read from `tuned` (its design file,
+// tuned_document()) under the name `tuned_name`.
+struct TuneEvaluations {
+  ComparedDesign before, after;
+};
+TuneEvaluations evaluate_tune(const io::DesignFile& original, const io::Json& tuned,
+                              const std::string& tuned_name, double rel_tol);
 
 // The least-lead solution of A m = b, m >= 0 (rows the equations, columns
 // the places), or of the nearest reachable b' = A m (least squares of the

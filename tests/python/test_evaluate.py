@@ -67,7 +67,7 @@ def test_help_names_units():
     assert "GIL" in sweetspot.evaluate_many.__doc__
     stub = (ROOT / "python" / "sweetspot.pyi").read_text()
     for name in ("evaluate", "evaluate_many", "modes", "collide", "string_bed_map", "optimize",
-                 "outputs", "InputError", "ModelRefusal"):
+                 "tune", "outputs", "InputError", "ModelRefusal"):
         assert hasattr(sweetspot, name)
         assert f"{name}" in stub
     assert run_cli("--version").returncode == 0

@@ -4,6 +4,7 @@ model's own identities."""
 import csv
 import io
 import json
+import math
 
 import numpy as np
 import pytest
@@ -106,3 +107,47 @@ def test_optimize_answers_with_a_design_evaluate_reads():
     swingweight = [c for c in r["constraints"] if c["name"].startswith("swingweight")][0]
     assert swingweight["satisfied"] and swingweight["value"] <= 335 + swingweight["tolerance"]
     assert r["best"]["outputs"]["rebound_speed_m_s"] >= r["start"]["outputs"]["rebound_speed_m_s"]
+
+
+def test_tune_is_the_command_lines_and_its_design_has_the_specs(tmp_path):
+    racquet = tmp_path / "racquet.json"
+    racquet.write_text(json.dumps({
+        "name": "Club racquet",
+        "implement": {"length_in": 27, "mass_g": 318, "balance_cm": 32.5,
+                      "swingweight_kg_cm2": 325, "headsize_sq_in": 100},
+        "frame": {"RA": 66}, "strings": {"tension_lb": 52}}))
+    target = "mass_g=330,balance_cm=32,swingweight_kg_cm2=330"
+    expected = cli_json("tune", racquet, "--target", target, "--places", "12,3/9,handle",
+                        "--format", "json")
+    r = sweetspot.tune(str(racquet), {"mass_g": 330, "balance_cm": 32, "swingweight_kg_cm2": 330},
+                       places=["12", "3/9", "handle"])
+    assert r["report"] == expected
+    assert sweetspot.tune(str(racquet), target, places="12,3/9,handle")["report"] == expected
+    assert r["exact"] and [lead["place"] for lead in r["lead"]] == ["12", "3/9", "handle"]
+    assert math.isclose(r["added_kg"], sum(lead["mass_kg"] for lead in r["lead"]), rel_tol=1e-12)
+    for lead in r["lead"]:
+        assert lead["mass_kg"] >= 0
+        assert math.isclose(sum(p["mass_kg"] for p in lead["pieces"]), lead["mass_kg"],
+                            rel_tol=1e-12)
+    # The tuned design file, evaluated, has the specs asked for.
+    outputs = sweetspot.evaluate(r["tuned_design"])["outputs"]
+    assert math.isclose(outputs["mass_kg"], 0.330, rel_tol=1e-9)
+    assert math.isclose(outputs["balance_from_butt_m"], 0.32, rel_tol=1e-9)
+    assert math.isclose(outputs["swingweight_kg_cm2"], 330, rel_tol=1e-9)
+    # Lead only adds mass: a lighter racquet is a miss with its reason, not an error.
+    lighter = sweetspot.tune(str(racquet), {"mass_g": 300}, places="12")
+    assert not lighter["exact"] and lighter["tuned_design"] is None
+    assert lighter["misses"][0]["spec"] == "mass"
+
+
+@pytest.mark.parametrize("kwargs, source, words", [
+    ({"target": {"mass_x": 3}, "places": "12"}, "target", 'unknown target "mass_x"'),
+    ({"target": {"mass_g": True}, "places": "12"}, "target", "a spec's name and a number"),
+    ({"target": {"mass_g": 330}, "places": "12,bogus"}, "places", '"bogus" is not a place'),
+    ({"target": None, "places": "12"}, "target", "give the specs to reach"),
+    ({"target": {"mass_g": 330}, "places": "12", "strip_g": 0}, "strip_g", "[0.01, 100]"),
+])
+def test_tune_refuses_with_the_command_lines_words(kwargs, source, words):
+    with pytest.raises(sweetspot.InputError) as error:
+        sweetspot.tune(str(ROOT / "designs/racquets/tour-100-strung.json"), **kwargs)
+    assert error.value.source == source and words in str(error.value)
