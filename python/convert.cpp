@@ -5,7 +5,9 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <string_view>
+#include <unordered_map>
 
 #include "io/evaluation_tree.hpp"
 #include "io/input_error.hpp"
@@ -94,13 +96,34 @@ py::str text_of(std::string_view text) {
   return py::reinterpret_steal<py::str>(decoded);
 }
 
+// The str of a text an evaluation's dict repeats from call to call (its keys,
+// units, provenances, notes), made once and shared: most of evaluate()'s
+// dict is these. Used with the GIL held, which guards the table; texts past
+// kSharedTextLength and entries past kSharedTexts are made each time.
+constexpr std::size_t kSharedTextLength = 256;
+constexpr std::size_t kSharedTexts = 4096;
+py::str shared_text(std::string_view text) {
+  if (text.size() > kSharedTextLength) return text_of(text);
+  // Never freed: the module's strs live as long as the interpreter.
+  struct Hash {
+    using is_transparent = void;
+    std::size_t operator()(std::string_view t) const { return std::hash<std::string_view>{}(t); }
+  };
+  static auto* table = new std::unordered_map<std::string, py::str, Hash, std::equal_to<>>();
+  const auto it = table->find(text);
+  if (it != table->end()) return it->second;
+  py::str made = text_of(text);
+  if (table->size() < kSharedTexts) table->emplace(std::string(text), made);
+  return made;
+}
+
 // io::write_evaluation()'s node for a Python dict.
 class DictNode {
  public:
   explicit DictNode(py::dict dict) : dict_(std::move(dict)) {}
   void number(std::string_view key, double value) { set(key, py::float_(value)); }
   void integer(std::string_view key, std::int64_t value) { set(key, py::int_(value)); }
-  void text(std::string_view key, std::string_view value) { set(key, text_of(value)); }
+  void text(std::string_view key, std::string_view value) { set(key, shared_text(value)); }
   void null(std::string_view key) { set(key, py::none()); }
   void numbers(std::string_view key, const std::vector<double>& values) {
     py::list list(values.size());
@@ -133,7 +156,7 @@ class DictNode {
 
  private:
   void set(std::string_view key, const py::handle value) {
-    if (PyDict_SetItem(dict_.ptr(), text_of(key).ptr(), value.ptr()) != 0)
+    if (PyDict_SetItem(dict_.ptr(), shared_text(key).ptr(), value.ptr()) != 0)
       throw py::error_already_set();
   }
   py::dict dict_;
