@@ -98,8 +98,10 @@ py::str text_of(std::string_view text) {
 
 // The str of a text an evaluation's dict repeats from call to call (its keys,
 // units, provenances, notes), made once and shared: most of evaluate()'s
-// dict is these. Used with the GIL held, which guards the table; texts past
-// kSharedTextLength and entries past kSharedTexts are made each time.
+// dict is these. Used with the GIL held, which guards the table (one per
+// process: the module runs in the main interpreter). A design's own texts
+// (its name) take entries too; past kSharedTexts entries, and for texts past
+// kSharedTextLength, each str is made anew: a cost, never another str.
 constexpr std::size_t kSharedTextLength = 256;
 constexpr std::size_t kSharedTexts = 4096;
 py::str shared_text(std::string_view text) {

@@ -526,18 +526,39 @@ py::list outputs_py() {
 
 // ------------------------------------------------------------ tune
 
-// A list given as a str ("12,3/9,handle") or as a sequence of str, as the
-// command line's comma-separated text.
+// A str argument's UTF-8, refused as `name` when it holds what UTF-8 cannot
+// (a lone surrogate) or is not a str.
+std::string utf8_argument(py::handle value, const char* name, const char* expected) {
+  Py_ssize_t size = 0;
+  const char* text =
+      PyUnicode_Check(value.ptr()) ? PyUnicode_AsUTF8AndSize(value.ptr(), &size) : nullptr;
+  if (!text) {
+    PyErr_Clear();
+    throw io::InputError(
+        name, "",
+        std::string("expected ") + expected + ", got " +
+            io::brief(io::Json(io::valid_utf8(py::repr(value).cast<std::string>()))));
+  }
+  return std::string(text, static_cast<std::size_t>(size));
+}
+
+// A list given as a str ("12,3/9,handle") or as a sequence of str, each one
+// item, as the command line's comma-separated text.
 std::string comma_text(py::handle value, const char* name) {
-  if (PyUnicode_Check(value.ptr())) return value.cast<std::string>();
+  if (PyUnicode_Check(value.ptr())) return utf8_argument(value, name, "a str or a list of str");
   if (!py::isinstance<py::sequence>(value))
-    throw io::InputError(name, "", "expected a str or a list of str");
+    throw io::InputError(
+        name, "",
+        "expected a str or a list of str, got a " +
+            py::str(py::type::handle_of(value).attr("__name__")).cast<std::string>());
   std::string text;
   for (const py::handle item : value) {
-    if (!PyUnicode_Check(item.ptr()))
-      throw io::InputError(name, "", "expected a str or a list of str");
+    const std::string one = utf8_argument(item, name, "a str or a list of str");
+    if (one.find(',') != std::string::npos)
+      throw io::InputError(name, "",
+                           "a list's item holds a comma, got " + io::brief(io::Json(one)));
     if (!text.empty()) text += ',';
-    text += item.cast<std::string>();
+    text += one;
   }
   return text;
 }
@@ -547,16 +568,25 @@ std::string target_text(py::handle value) {
   if (!PyDict_Check(value.ptr())) return comma_text(value, "target");
   std::string text;
   for (const auto& [key, item] : py::reinterpret_borrow<py::dict>(value)) {
-    const bool number = (py::isinstance<py::float_>(item) || py::isinstance<py::int_>(item)) &&
-                        !PyBool_Check(item.ptr());
-    if (!PyUnicode_Check(key.ptr()) || !number) {
+    const std::string name = utf8_argument(key, "target", "a dict of a spec's name and a number");
+    if (name.find_first_of(",=") != std::string::npos)
       throw io::InputError("target", "",
-                           "expected a dict of a spec's name and a number, got the item " +
-                               py::repr(key).cast<std::string>() + ": " +
-                               py::repr(item).cast<std::string>());
+                           "a spec's name holds ',' or '=', got " + io::brief(io::Json(name)));
+    // Any real number (NumPy's too), not a bool or a str.
+    PyObject* number = PyNumber_Check(item.ptr()) && !PyBool_Check(item.ptr())
+                           ? PyNumber_Float(item.ptr())
+                           : nullptr;
+    if (!number) {
+      PyErr_Clear();
+      throw io::InputError(
+          "target", "",
+          "expected a dict of a spec's name and a number, got " + name + ": " +
+              io::brief(io::Json(io::valid_utf8(py::repr(item).cast<std::string>()))));
     }
+    const double x = PyFloat_AsDouble(number);
+    Py_DECREF(number);
     if (!text.empty()) text += ',';
-    text += key.cast<std::string>() + "=" + fmt::format("{}", item.cast<double>());
+    text += name + "=" + fmt::format("{}", x);
   }
   return text;
 }
@@ -598,12 +628,20 @@ py::dict tune_py(py::handle design, py::handle target, py::handle places, py::ha
   const std::vector<studies::LeadPlace> lead_places = as_input_error(
       "places", [&] { return studies::parse_lead_places(comma_text(places, "places")); });
   studies::TuneTargets targets;
-  if (!target.is_none())
+  // An empty dict asks for nothing beyond `like`'s specs.
+  const bool no_target = target.is_none() || (PyDict_Check(target.ptr()) && py::len(target) == 0);
+  if (!no_target)
     targets =
         as_input_error("target", [&] { return studies::parse_tune_targets(target_text(target)); });
   if (!like.is_none()) {
+    std::optional<io::DesignFile> other_file;
+    try {
+      other_file.emplace(read_design_of(like));
+    } catch (const io::InputError& e) {
+      throw io::InputError("like " + e.source(), e.pointer(), e.detail());  // not the design's
+    }
     const studies::TuneTargets other =
-        studies::targets_from(studies::specs_of(read_design_of(like).design), false);
+        studies::targets_from(studies::specs_of(other_file->design), false);
     if (!targets.mass_kg) targets.mass_kg = other.mass_kg;
     if (!targets.balance_from_butt_m) targets.balance_from_butt_m = other.balance_from_butt_m;
     if (!targets.swingweight_kg_m2) targets.swingweight_kg_m2 = other.swingweight_kg_m2;
@@ -794,8 +832,9 @@ its violation after each evaluation, arrays), 'evaluations', 'seconds', 'termina
 'best_design' (the design file of the answer, as a dict evaluate() takes), 'best' and
 'start' (their evaluate() dicts), and 'report' (`sweetspot optimize --format json`).)");
 
-  m.def("tune", &tune_py, py::arg("design"), py::arg("target") = py::none(), py::arg("places"),
-        py::arg("like") = py::none(), py::arg("strip_g") = 1.0, py::arg("tol") = 1e-6,
+  m.def("tune", &tune_py, py::arg("design"), py::arg("target") = py::none(), py::kw_only(),
+        py::arg("places"), py::arg("like") = py::none(), py::arg("strip_g") = 1.0,
+        py::arg("tol") = 1e-6,
         R"(The least lead tape, and where, that brings a racquet to target specs: `sweetspot tune
 DESIGN --target ... --places ...`.
 

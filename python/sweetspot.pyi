@@ -63,7 +63,8 @@ def optimize(study: Design, threads: Optional[int] = None) -> dict[str, Any]:
 def tune(
     design: Design,
     target: Union[Mapping[str, float], str, None] = None,
-    places: Union[str, Sequence[str]] = ...,
+    *,
+    places: Union[str, Sequence[str]],
     like: Optional[Design] = None,
     strip_g: float = 1.0,
     tol: float = 1e-6,

@@ -382,7 +382,7 @@ const std::vector<DesignField>& design_fields() {
        {},
        "grip",
        "paper",
-       "paper, light, medium, tight (sets grip_stiffness and grip_damping)",
+       "paper, light, medium, tight (its grip_stiffness and grip_damping unless given)",
        ""},
       {"forearm",
        "equivalent_mass",

@@ -1018,19 +1018,14 @@ void read_hand(ObjectReader& top, Reading& in) {
   in.design.hand.grip_length_m =
       hand.get("grip_length", Dimension::kLength, "grip_length_m", in.defaults.hand.grip_length_m);
   // The grip by its tightness (beam_modes.hpp: the paper's hand, or Savage's
-  // light, medium and tight grips), or by its stiffness and damping.
+  // light, medium and tight grips): its stiffness and damping, either of which
+  // given beside it replaces the grip's own (a sweep of one over a named grip).
   ObjectReader& r = hand.reader();
-  const std::optional<std::string> grip = r.string("grip");
   GripCoefficients fallback{in.defaults.hand.grip_stiffness_N_m2,
                             in.defaults.hand.grip_damping_N_s_m2};
-  if (grip) {
+  if (const std::optional<std::string> grip = r.string("grip")) {
     const auto tightness = grip_tightness(*grip);
-    if (!tightness) r.fail("grip", std::string(kGripExpected) + ", got \"" + *grip + "\"");
-    for (const std::string& key : design_keys("hand")) {
-      if ((key.starts_with("grip_stiffness") || key.starts_with("grip_damping")) && r.has(key))
-        r.fail(key, "is set by the grip \"" + *grip +
-                        "\" given with it (give the grip or its stiffness and damping)");
-    }
+    if (!tightness) r.fail("grip", std::string(kGripExpected) + ", got " + brief(Json(*grip)));
     r.record("grip", "grip");  // listed with the inputs as given
     fallback = grip_coefficients(*tightness);
   }

@@ -733,7 +733,7 @@ TEST_CASE("A ball's law is read by name and its rigid-surface COR as given, both
   CHECK(has(error(R"({"cor_on_rigid_surface": "high"})"), "/ball/cor_on_rigid_surface"));
 }
 
-TEST_CASE("A grip is read by its tightness, which sets its stiffness and damping") {
+TEST_CASE("A grip is read by its tightness, its stiffness and damping unless they are given") {
   const std::string racquet = R"({"implement": {"length_m": 0.7, "mass_kg": 0.25,
       "head_to_handle_mass_ratio": 0.8}, "hand": )";
   const auto hand = [&](const std::string& value) {
@@ -756,10 +756,12 @@ TEST_CASE("A grip is read by its tightness, which sets its stiffness and damping
   };
   CHECK(has(error(R"({"grip": "firm"})"), "/hand/grip: expected \"paper\", \"light\""));
   CHECK(has(error(R"({"grip": 0.5})"), "/hand/grip: expected a string"));
-  CHECK(has(error(R"({"grip": "tight", "grip_stiffness_N_m2": 1e5})"),
-            "/hand/grip_stiffness_N_m2: is set by the grip \"tight\""));
-  CHECK(has(error(R"({"grip": "light", "grip_damping_N_s_m2": 10})"),
-            "/hand/grip_damping_N_s_m2: is set by the grip \"light\""));
+  // A stiffness or damping given beside the grip replaces that one of the grip's.
+  const Hand swept = hand(R"({"grip": "light", "grip_stiffness_N_m2": 1e5})");
+  CHECK(swept.grip_stiffness_N_m2 == 1e5);
+  CHECK(swept.grip_damping_N_s_m2 == kLightGrip.damping_N_s_m2);
+  CHECK(hand(R"({"grip": "tight", "grip_damping_N_s_m2": 10})").grip_stiffness_N_m2 ==
+        kTightGrip.stiffness_N_m2);
 }
 
 }  // namespace sweetspot::io

@@ -136,6 +136,8 @@ def test_tune_is_the_command_lines_and_its_design_has_the_specs(tmp_path):
     assert math.isclose(outputs["swingweight_kg_cm2"], 330, rel_tol=1e-9)
     # Lead only adds mass: a lighter racquet is a miss with its reason, not an error.
     lighter = sweetspot.tune(str(racquet), {"mass_g": 300}, places="12")
+    # NumPy's numbers are numbers.
+    assert sweetspot.tune(str(racquet), {"mass_g": np.int64(330)}, places="12")["exact"]
     assert not lighter["exact"] and lighter["tuned_design"] is None
     assert lighter["misses"][0]["spec"] == "mass"
 
@@ -145,6 +147,14 @@ def test_tune_is_the_command_lines_and_its_design_has_the_specs(tmp_path):
     ({"target": {"mass_g": True}, "places": "12"}, "target", "a spec's name and a number"),
     ({"target": {"mass_g": 330}, "places": "12,bogus"}, "places", '"bogus" is not a place'),
     ({"target": None, "places": "12"}, "target", "give the specs to reach"),
+    ({"target": {}, "places": "12"}, "target", "give the specs to reach"),
+    ({"target": {"mass_g=1,balance_cm": 33}, "places": "12"}, "target", "holds ',' or '='"),
+    ({"target": {"mass_g": 10**400}, "places": "12"}, "target", "a spec's name and a number"),
+    ({"target": {"mass_g": 330}, "places": ["12,3"]}, "places", "holds a comma"),
+    ({"target": {"mass_g": 330}, "places": "\ud800"}, "places", "expected a str"),
+    ({"target": {"mass_g": 330}, "places": None}, "places", "expected a str or a list of str"),
+    ({"target": {"mass_g": 330}, "places": "12", "like": '{"bad": 1}'}, "like <JSON text>",
+     "unknown key"),
     ({"target": {"mass_g": 330}, "places": "12", "strip_g": 0}, "strip_g", "[0.01, 100]"),
 ])
 def test_tune_refuses_with_the_command_lines_words(kwargs, source, words):
