@@ -162,11 +162,17 @@ Implement Implement::paper_racquet(double length_m, double mass_kg,
                                     " kg (its moment of inertia underflows)");
   }
   // M1 / M2 = ratio and M1 + M2 = M  =>  M2 = M / (1 + ratio).
-  const double handle_kg = mass_kg / (1.0 + head_to_handle_mass_ratio);
-  const double head_kg = mass_kg * head_to_handle_mass_ratio / (1.0 + head_to_handle_mass_ratio);
-  return from_sections(
-      {Section{0.5 * length_m, handle_kg, {}}, Section{0.5 * length_m, head_kg, {}}},
+  const kernel::Halves halves = kernel::paper_racquet_halves(mass_kg, head_to_handle_mass_ratio);
+  Implement implement = from_sections(
+      {Section{0.5 * length_m, halves.handle_kg, {}}, Section{0.5 * length_m, halves.head_kg, {}}},
       std::move(point_masses));
+  // The halves' sums in closed form, the body the many-case kernels use
+  // (kernels.hpp), so that a paper racquet has one set of bits on every path.
+  const kernel::System body =
+      kernel::paper_racquet_body(length_m, mass_kg, head_to_handle_mass_ratio);
+  implement.frame_ = MassProperties{body.mass_kg, body.com_from_butt_m, body.I_cm_kg_m2};
+  implement.total_ = add_all(implement.frame_, implement.point_masses_);
+  return implement;
 }
 
 Implement Implement::from_specs(const IndustrySpecs& specs, std::vector<PointMass> point_masses) {

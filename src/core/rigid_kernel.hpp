@@ -39,26 +39,38 @@ inline double section_inertia(double m, double l, double arm) {
   return m * (l * l / 12.0 + arm * arm);
 }
 
+// The paper racquet's handle and head masses, M / (1 + r) and M r / (1 + r),
+// as M q and M r q with q = 1 / (1 + r).
+struct Halves {
+  double handle_kg, head_kg;
+};
+inline Halves paper_racquet_halves(double M, double r) {
+  const double q = 1.0 / (1.0 + r);
+  return Halves{M * q, M * r * q};
+}
+
 // Cross (2004) Table I racquet (Implement::paper_racquet without point
-// masses): two uniform halves of length L/2, head M r / (1 + r) beyond the
-// handle M / (1 + r); the sums section_mass_properties() makes, in its order.
+// masses): two uniform halves of length h = L/2, the head M r / (1 + r)
+// beyond the handle M / (1 + r). Their sums in closed form, with q as above
+// (one division):
+//   x_cm = h (1 + 3 r) q / 2,   I_cm = M h^2 (1/12 + r q^2),
+// section_mass_properties() of the two halves to round-off (r = 1 is the
+// uniform beam's L/2 and M L^2 / 12). The mass is the halves' sum, the
+// number section_mass_properties() checks against the model's range.
 inline System paper_racquet_body(double L, double M, double r) {
   const double h = 0.5 * L;
-  const double handle = M / (1.0 + r);
-  const double head = M * r / (1.0 + r);
-  const double mass = (0.0 + handle) + head;
-  const double first =
-      (0.0 + section_first_moment(handle, 0.0, h)) + section_first_moment(head, 0.0 + h, h);
-  const double com = first / mass;
-  const double inertia = (0.0 + section_inertia(handle, h, (0.0 + 0.5 * h) - com)) +
-                         section_inertia(head, h, ((0.0 + h) + 0.5 * h) - com);
+  const double q = 1.0 / (1.0 + r);
+  const double mass = M * q + M * r * q;
+  const double com = 0.5 * h * (1.0 + 3.0 * r) * q;
+  const double inertia = M * h * h * (1.0 / 12.0 + r * q * q);
   return System{mass, com, inertia};
 }
 
-// Cross (2004) Eq. (17): M_eff = M / (1 + M b^2 / I_cm), b = x - x_cm; M at the centre of mass.
+// Cross (2004) Eq. (17): M_eff = M / (1 + M b^2 / I_cm), b = x - x_cm, written
+// M I_cm / (I_cm + M b^2) (one division); M at the centre of mass.
 inline double effective_mass(double M, double c, double I, double x) {
   const double b = x - c;
-  const double general = M / (1.0 + M * b * b / I);
+  const double general = M * I / (I + M * b * b);
   return b == 0.0 ? M : general;
 }
 
@@ -79,9 +91,10 @@ inline double ball_impulse(double ball_mass_kg, double ball_speed_m_s, double ap
   return ball_mass_kg * (1.0 + apparent_cor) * ball_speed_m_s;
 }
 
-// F0 = pi J / (2 T), the peak of the half-sine carrying J (Eq. 15 with the above).
+// F0 = pi J / (2 T), the peak of the half-sine carrying J (Eq. 15 with the
+// above), written J (pi / (2 T)): a loop over impacts of one duration divides once.
 inline double half_sine_peak_force(double impulse_N_s, double impact_duration_s) {
-  return std::numbers::pi * impulse_N_s / (2.0 * impact_duration_s);
+  return impulse_N_s * (std::numbers::pi / (2.0 * impact_duration_s));
 }
 
 // Cross (2004) Eq. (13): h + I_cm / (M h) from the butt; `at_wrist` when h = 0.
