@@ -356,3 +356,31 @@ def test_columnwise_with_a_scalar_setting():
         for name in PAPER_OUTPUTS:
             assert np.array_equal(scalar[name], array[name], equal_nan=True), name
         assert scalar["ok"].any() == (speed == 30.0)
+
+
+def test_large_outputs_reuse_no_live_array():
+    """Outputs of 2 MB and more come from mappings kept for reuse once their arrays are
+    freed: a later call never writes into an array still held, and a reused mapping is
+    written whole (the numbers of a fresh evaluation, not the last call's)."""
+    base = ROOT / "designs" / "table1" / "row1.json"
+    n = 300_000  # 2.4 MB an output
+    rng = np.random.default_rng(26)
+
+    def columns():
+        return {"implement.length_m": rng.uniform(0.6, 0.75, n),
+                "implement.mass_kg": rng.uniform(0.2, 0.4, n),
+                "impact.from_tip_m": rng.uniform(0.0, 0.3, n)}
+
+    first_columns, second_columns = columns(), columns()
+    first = sweetspot.evaluate_many(base, first_columns, outputs=PAPER_OUTPUTS)
+    kept = {name: first[name].copy() for name in PAPER_OUTPUTS}
+    second = sweetspot.evaluate_many(base, second_columns, outputs=PAPER_OUTPUTS)
+    for name in PAPER_OUTPUTS:
+        assert np.array_equal(first[name], kept[name]), name
+        assert not np.shares_memory(first[name], second[name]), name
+        assert first[name].flags.writeable and first[name].flags.c_contiguous
+    del first
+    again = sweetspot.evaluate_many(base, first_columns, outputs=PAPER_OUTPUTS)
+    for name in PAPER_OUTPUTS:
+        assert np.array_equal(again[name], kept[name]), name
+        assert not np.shares_memory(again[name], second[name]), name
