@@ -67,7 +67,7 @@ bool is_design_path(std::string_view name) {
       const std::string& pointer = it->second.pointer;
       const std::string user_key = pointer.substr(pointer.rfind('/') + 1);
       if (si_key != user_key)
-        detail += " (the file's " + user_key + ": " + it->second.given + ", converted to SI)";
+        detail += " (the file's " + user_key + ": " + given_text(it->second) + ", converted to SI)";
       throw InputError(source, pointer, detail);
     }
     if (name.starts_with("implement/sections") && name.ends_with("/EI_N_m2")) {

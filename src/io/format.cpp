@@ -444,7 +444,7 @@ std::string inputs_markdown(const DesignFile& file, const Evaluation& e) {
     const std::string_view key =
         std::string_view(origin.pointer).substr(origin.pointer.rfind('/') + 1);
     const std::string_view unit = unit_of_key(key);
-    md += fmt::format("- `{}` = {}{}{}\n", origin.pointer, md_cell(origin.given),
+    md += fmt::format("- `{}` = {}{}{}\n", origin.pointer, md_cell(given_text(origin)),
                       unit.empty() ? "" : " ", unit);
   }
   const Design& d = file.design;
@@ -548,9 +548,9 @@ std::optional<std::pair<std::string, Json>> given_elsewhere(const DesignFile& fi
   const std::string& pointer = origin->second.pointer;
   if (std::string_view(pointer).substr(pointer.rfind('/') + 1) == name.substr(name.rfind('/') + 1))
     return std::nullopt;
-  Json given = Json::parse(origin->second.given, nullptr, false);
+  const Json& given = origin->second.given;
   if (!given.is_number()) return std::nullopt;
-  return std::pair{pointer, std::move(given)};
+  return std::pair{pointer, given};
 }
 
 }  // namespace evaluation_tree_detail

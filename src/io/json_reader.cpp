@@ -216,6 +216,10 @@ std::string brief(const Json& value) {
   return text;
 }
 
+std::string given_text(const KeyOrigin& origin) {
+  return origin.given.is_null() ? std::string() : brief(origin.given);
+}
+
 namespace {
 
 // The length of the valid UTF-8 sequence starting at text[i], 0 if none.
@@ -654,7 +658,7 @@ void ObjectReader::record(std::string_view canonical_key, std::string_view key) 
   name.append(canonical_key);
   const auto it = object_.find(key);
   keys_->insert_or_assign(std::move(name),
-                          KeyOrigin{pointer_of(key), it == object_.end() ? "" : brief(*it)});
+                          KeyOrigin{pointer_of(key), it == object_.end() ? Json() : *it});
 }
 
 void ObjectReader::mark_read(const std::string& own_key) {

@@ -143,9 +143,12 @@ void override_fields(Json& document, const Json& patch);
 // key and quote the user's own value.
 struct KeyOrigin {
   std::string pointer;
-  std::string given;  // brief() of the value in the file
+  Json given;  // the value in the file (null when absent), formatted only for a message
 };
 using KeyMap = std::map<std::string, KeyOrigin>;
+
+// The value as the file gave it, as brief() writes it; "" when absent.
+std::string given_text(const KeyOrigin& origin);
 
 // What is said of `key`, unknown where `expected` are the keys accepted:
 // "unknown key; the mass is given as mass_kg or mass_g (expected one of: ...)"
