@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -22,10 +23,34 @@ std::string type_name(py::handle value) {
   return py::str(py::type::handle_of(value).attr("__name__")).cast<std::string>();
 }
 
-io::Json to_json(py::handle value, const std::string& source, const std::string& pointer,
-                 int depth) {
+// Where a value sits in the document: its parent's place and its key (or
+// index). Written out as a JSON pointer only for an error message.
+struct Place {
+  const Place* parent = nullptr;
+  std::string_view key;   // a dict's key, or
+  std::size_t index = 0;  // a list's index when key is empty and is_index
+  bool is_index = false;
+};
+
+std::string pointer_of(const Place* place) {
+  if (!place || !place->parent) return "";
+  std::string pointer = pointer_of(place->parent);
+  pointer += '/';
+  pointer += place->is_index ? std::to_string(place->index) : io::escape_pointer_token(place->key);
+  return pointer;
+}
+
+// A str's text as UTF-8, without a copy where Python keeps it.
+std::string_view utf8_of(py::handle text) {
+  Py_ssize_t size = 0;
+  const char* data = PyUnicode_AsUTF8AndSize(text.ptr(), &size);
+  if (!data) throw py::error_already_set();
+  return {data, static_cast<std::size_t>(size)};
+}
+
+io::Json to_json(py::handle value, const std::string& source, const Place& place, int depth) {
   if (depth > io::kMaxJsonDepth) {
-    throw io::InputError(source, pointer,
+    throw io::InputError(source, pointer_of(&place),
                          fmt::format("nested deeper than {} levels", io::kMaxJsonDepth));
   }
   if (value.is_none()) return nullptr;
@@ -37,7 +62,7 @@ io::Json to_json(py::handle value, const std::string& source, const std::string&
     const unsigned long long u = PyLong_AsUnsignedLongLong(value.ptr());
     if (PyErr_Occurred()) {
       PyErr_Clear();
-      throw io::InputError(source, pointer,
+      throw io::InputError(source, pointer_of(&place),
                            "expected a number a JSON document can hold, got an integer of " +
                                std::to_string(py::int_(value.attr("bit_length")()).cast<long>()) +
                                " bits");
@@ -47,7 +72,7 @@ io::Json to_json(py::handle value, const std::string& source, const std::string&
   if (PyFloat_Check(value.ptr())) {
     const double x = PyFloat_AsDouble(value.ptr());
     if (!std::isfinite(x)) {
-      throw io::InputError(source, pointer,
+      throw io::InputError(source, pointer_of(&place),
                            "expected a finite number, got " + py::repr(value).cast<std::string>());
     }
     return x;
@@ -57,13 +82,13 @@ io::Json to_json(py::handle value, const std::string& source, const std::string&
     io::Json object = io::Json::object();
     for (const auto& [key, item] : py::reinterpret_borrow<py::dict>(value)) {
       if (!PyUnicode_Check(key.ptr())) {
-        throw io::InputError(source, pointer,
+        throw io::InputError(source, pointer_of(&place),
                              "expected keys that are str, got the " + type_name(key) + " " +
                                  py::repr(key).cast<std::string>());
       }
-      const std::string name = key.cast<std::string>();
-      object[name] =
-          to_json(item, source, pointer + "/" + io::escape_pointer_token(name), depth + 1);
+      const std::string_view name = utf8_of(key);
+      const Place child{&place, name};
+      object.emplace(std::string(name), to_json(item, source, child, depth + 1));
     }
     return object;
   }
@@ -71,20 +96,21 @@ io::Json to_json(py::handle value, const std::string& source, const std::string&
     io::Json array = io::Json::array();
     std::size_t i = 0;
     for (const py::handle item : value) {
-      array.push_back(to_json(item, source, pointer + "/" + std::to_string(i++), depth + 1));
+      const Place child{&place, {}, i++, true};
+      array.push_back(to_json(item, source, child, depth + 1));
     }
     return array;
   }
   // NumPy's scalars: an integer type has __index__, a floating one __float__.
   if (py::hasattr(value, "__index__"))
-    return to_json(py::reinterpret_borrow<py::object>(value).attr("__index__")(), source, pointer,
+    return to_json(py::reinterpret_borrow<py::object>(value).attr("__index__")(), source, place,
                    depth);
   if (py::hasattr(value, "__float__") && !py::hasattr(value, "__len__")) {
     PyObject* number = PyNumber_Float(value.ptr());
     if (!number) throw py::error_already_set();
-    return to_json(py::reinterpret_steal<py::object>(number), source, pointer, depth);
+    return to_json(py::reinterpret_steal<py::object>(number), source, place, depth);
   }
-  throw io::InputError(source, pointer,
+  throw io::InputError(source, pointer_of(&place),
                        "expected a JSON value (dict, list, str, int, float, bool or None), got a " +
                            type_name(value));
 }
@@ -112,11 +138,30 @@ py::str shared_text(std::string_view text) {
     std::size_t operator()(std::string_view t) const { return std::hash<std::string_view>{}(t); }
   };
   static auto* table = new std::unordered_map<std::string, py::str, Hash, std::equal_to<>>();
-  const auto it = table->find(text);
-  if (it != table->end()) return it->second;
-  py::str made = text_of(text);
-  if (table->size() < kSharedTexts) table->emplace(std::string(text), made);
-  return made;
+  // In front of the table, a cache by the text's address and length: most
+  // texts are the same literals and tables' strings call after call, so a hit
+  // costs a comparison of the text with the entry's, not a hash of it. A text
+  // at an address another held before compares unequal and takes the table.
+  struct Recent {
+    const char* data = nullptr;
+    std::size_t size = 0;
+    const std::string* text = nullptr;  // the table's key (never freed)
+    PyObject* str = nullptr;            // the table's str (never freed)
+  };
+  constexpr std::size_t kRecent = 1024;  // a power of two
+  static auto* recent = new std::array<Recent, kRecent>();
+  const auto address = reinterpret_cast<std::uintptr_t>(text.data());
+  Recent& slot = (*recent)[((address >> 3) ^ (address >> 13) ^ text.size()) & (kRecent - 1)];
+  if (slot.data == text.data() && slot.size == text.size() && *slot.text == text)
+    return py::reinterpret_borrow<py::str>(slot.str);
+  auto it = table->find(text);
+  if (it == table->end()) {
+    py::str made = text_of(text);
+    if (table->size() >= kSharedTexts) return made;
+    it = table->emplace(std::string(text), std::move(made)).first;
+  }
+  slot = Recent{text.data(), text.size(), &it->first, it->second.ptr()};
+  return it->second;
 }
 
 // io::write_evaluation()'s node for a Python dict.
@@ -177,7 +222,7 @@ Document read_document(py::handle value) {
   Document document;
   if (PyDict_Check(value.ptr())) {
     document.source = "<dict>";
-    document.json = to_json(value, document.source, "", 1);
+    document.json = to_json(value, document.source, Place{}, 1);
     return document;
   }
   if (PyUnicode_Check(value.ptr())) {

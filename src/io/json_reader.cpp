@@ -133,9 +133,14 @@ class StrictBuilder : public nlohmann::json_sax<Json> {
 
 }  // namespace
 
-std::string escape_pointer_token(std::string_view token) {
-  if (token.find_first_of("~/") == std::string_view::npos) return std::string(token);
-  std::string out;
+namespace {
+
+// `token` escaped for a JSON pointer (RFC 6901: ~ as ~0, / as ~1), appended to `out`.
+void append_pointer_token(std::string& out, std::string_view token) {
+  if (std::none_of(token.begin(), token.end(), [](char c) { return c == '~' || c == '/'; })) {
+    out.append(token);
+    return;
+  }
   for (const char c : token) {
     if (c == '~')
       out += "~0";
@@ -144,6 +149,13 @@ std::string escape_pointer_token(std::string_view token) {
     else
       out += c;
   }
+}
+
+}  // namespace
+
+std::string escape_pointer_token(std::string_view token) {
+  std::string out;
+  append_pointer_token(out, token);
   return out;
 }
 
@@ -643,7 +655,9 @@ bool ObjectReader::has(std::string_view key) const { return object_.contains(key
 std::string ObjectReader::pointer_of(std::string_view key) const {
   std::string pointer;
   pointer.reserve(pointer_.size() + 1 + key.size());
-  return pointer.append(pointer_).append("/").append(escape_pointer_token(key));
+  pointer.append(pointer_).push_back('/');
+  append_pointer_token(pointer, key);
+  return pointer;
 }
 
 void ObjectReader::fail(std::string_view key, const std::string& detail) const {
