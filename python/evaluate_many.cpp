@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstring>
 #include <exception>
 #include <limits>
 #include <memory>
@@ -84,8 +85,14 @@ class Rows {
       for (std::size_t begin = from; begin < to; begin += kChunk) {
         const std::size_t end = std::min(to, begin + kChunk);
         rigid_->run(views_, begin, end, rigid_wanted_, outputs_, answered);
-        for (std::size_t row = begin; row < end; ++row) {
-          if (!answered[row - begin]) run_rows(row, row + 1);
+        // Rarely any: memchr skips to each (a byte at a time was 5 % of a million rows).
+        const unsigned char* const first = answered.data();
+        const unsigned char* const last = first + (end - begin);
+        for (const unsigned char* left = first;
+             (left = static_cast<const unsigned char*>(std::memchr(left, 0, last - left)));
+             ++left) {
+          const std::size_t row = begin + static_cast<std::size_t>(left - first);
+          run_rows(row, row + 1);
         }
       }
       return;
