@@ -46,24 +46,26 @@ struct Halves {
 };
 inline Halves paper_racquet_halves(double M, double r) {
   const double q = 1.0 / (1.0 + r);
-  return Halves{M * q, M * r * q};
+  return Halves{M * q, M * (r * q)};
 }
 
 // Cross (2004) Table I racquet (Implement::paper_racquet without point
 // masses): two uniform halves of length h = L/2, the head M r / (1 + r)
 // beyond the handle M / (1 + r). Their sums in closed form, with q as above
 // (one division):
-//   x_cm = h (1 + 3 r) q / 2,   I_cm = M h^2 (1/12 + r q^2),
+//   x_cm = h (q + 3 r q) / 2,   I_cm = M h^2 (1/12 + (r q) q),
 // section_mass_properties() of the two halves to round-off (r = 1 is the
-// uniform beam's L/2 and M L^2 / 12). The mass is the halves' sum, the
-// number section_mass_properties() checks against the model's range.
+// uniform beam's L/2 and M L^2 / 12); r q = r / (1 + r) is formed first, so
+// that no step overflows however large r is. The mass is the halves' sum,
+// the number section_mass_properties() checks against the model's range.
 inline System paper_racquet_body(double L, double M, double r) {
   const double h = 0.5 * L;
+  const Halves halves = paper_racquet_halves(M, r);
   const double q = 1.0 / (1.0 + r);
-  const double mass = M * q + M * r * q;
-  const double com = 0.5 * h * (1.0 + 3.0 * r) * q;
-  const double inertia = M * h * h * (1.0 / 12.0 + r * q * q);
-  return System{mass, com, inertia};
+  const double rq = r * q;
+  const double com = 0.5 * h * (q + 3.0 * rq);
+  const double inertia = M * h * h * (1.0 / 12.0 + rq * q);
+  return System{halves.handle_kg + halves.head_kg, com, inertia};
 }
 
 // Cross (2004) Eq. (17): M_eff = M / (1 + M b^2 / I_cm), b = x - x_cm, written
