@@ -40,13 +40,17 @@ struct ProfileStation {
   double diameter_m = 0.0;   // [m], > 0
 };
 
-// A solid round implement of one material (a wood bat, a tool handle, a rod)
-// by its profile: the diameter at stations butt to tip, a straight taper
-// between them. The first station is the butt (0), the last the tip.
+// A round implement of one material (a wood bat, an aluminium or composite
+// bat, a tool handle, a rod) by its profile: the diameter at stations butt to
+// tip, a straight taper between them, solid or a shell of one wall
+// thickness. The first station is the butt (0), the last the tip.
 struct RoundProfile {
   std::vector<ProfileStation> stations;  // at least two, from_butt_m strictly increasing
-  double density_kg_m3 = 0.0;            // > 0 (ash and maple about 650-700)
+  double density_kg_m3 = 0.0;            // > 0 (ash and maple about 650-700, aluminium 2700)
   double youngs_modulus_Pa = 0.0;        // > 0, along the grain (wood about 1e10-1.5e10)
+  // [m], 0 for a solid implement, else in (0, half the smallest diameter]: a
+  // shell whose inner diameter is d - 2 wall (half the diameter is solid there).
+  double wall_m = 0.0;
 };
 
 // The longest slice profile_sections() cuts (a longer implement than 2 m is
@@ -55,11 +59,12 @@ inline constexpr double kProfileSlice_m = 0.005;
 
 // The profile as sections: each interval between stations cut into equal
 // slices no longer than kProfileSlice_m. A slice's mass is the density times
-// its frustum's volume, pi h (d1^2 + d1 d2 + d2^2) / 12 (exact); its bending
-// stiffness E pi d^4 / 64 at its middle diameter (Euler-Bernoulli, a solid
-// circle). A uniform profile is exact; a taper's centre of mass, inertia and
+// its frustum's volume, pi h (d1^2 + d1 d2 + d2^2) / 12 (exact), less its
+// bore's of the inner diameters d - 2 wall for a shell; its bending stiffness
+// E pi (d^4 - d_i^4) / 64 at its middle diameter (Euler-Bernoulli, a circle or
+// a tube). A uniform profile is exact; a taper's centre of mass, inertia and
 // stiffness are right to O((h / L)^2). Throws FieldError naming
-// "profile/N/..." , "density_kg_m3" or "youngs_modulus_Pa".
+// "profile/N/...", "density_kg_m3", "youngs_modulus_Pa" or "wall_m".
 std::vector<Section> profile_sections(const RoundProfile& profile);
 
 // An implement (racquet, bat, beam) from butt (x = 0) to tip (x = L): a frame

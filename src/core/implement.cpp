@@ -116,6 +116,16 @@ std::vector<Section> profile_sections(const RoundProfile& profile) {
   }
   detail::require_in_range(detail::Element{"profile", s.size() - 1, "from_butt_m"},
                            s.back().from_butt_m, 0.0, kMaxLength_m, "m");
+  const double wall = profile.wall_m;
+  detail::require_in_range("wall_m", wall, 0.0, kMaxLength_m, "m");
+  const auto thinnest = std::min_element(
+      s.begin(), s.end(), [](const auto& a, const auto& b) { return a.diameter_m < b.diameter_m; });
+  if (!(wall <= 0.5 * thinnest->diameter_m)) {
+    throw FieldError("wall_m", "must be at most half the profile's smallest diameter (" +
+                                   detail::format_number(thinnest->diameter_m) + " m at station " +
+                                   std::to_string(thinnest - s.begin()) + "), got " +
+                                   detail::format_number(wall) + " m");
+  }
   constexpr double kPi = 3.14159265358979323846;
   const double rho = profile.density_kg_m3, E = profile.youngs_modulus_Pa;
   const double slice_m = std::max(kProfileSlice_m, s.back().from_butt_m / 400.0);
@@ -126,12 +136,17 @@ std::vector<Section> profile_sections(const RoundProfile& profile) {
     const double h = length / static_cast<double>(n);
     const double d0 = s[k].diameter_m, d1 = s[k + 1].diameter_m;
     const auto diameter = [&](double t) { return d0 + (d1 - d0) * t; };
+    // The frustum's a^2 + a b + b^2 and the disc's d^4, less the bore's (none when solid).
+    const auto frustum = [](double a, double b) { return a * a + a * b + b * b; };
+    const auto fourth = [](double d) { return d * d * d * d; };
     for (std::size_t i = 0; i < n; ++i) {
       const double a = diameter(static_cast<double>(i) / static_cast<double>(n));
       const double b = diameter(static_cast<double>(i + 1) / static_cast<double>(n));
       const double mid = diameter((static_cast<double>(i) + 0.5) / static_cast<double>(n));
-      sections.push_back(Section{h, rho * kPi * h * (a * a + a * b + b * b) / 12.0,
-                                 E * kPi * mid * mid * mid * mid / 64.0});
+      const double area_sum =
+          wall == 0.0 ? frustum(a, b) : frustum(a, b) - frustum(a - 2.0 * wall, b - 2.0 * wall);
+      const double disc = wall == 0.0 ? fourth(mid) : fourth(mid) - fourth(mid - 2.0 * wall);
+      sections.push_back(Section{h, rho * kPi * h * area_sum / 12.0, E * kPi * disc / 64.0});
     }
   }
   return sections;

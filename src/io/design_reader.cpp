@@ -167,6 +167,7 @@ RoundProfile read_profile(ObjectReader& r, const std::string& source, KeyMap* ke
   profile.youngs_modulus_Pa =
       find_spelling("implement", modulus_key)->scale.to_si(*r.number(modulus_key));
   r.record("youngs_modulus_Pa", modulus_key);
+  profile.wall_m = r.quantity("wall", Dimension::kLength).value_or(0.0);
   return profile;
 }
 
@@ -392,7 +393,7 @@ ImplementRead read_implement(const Json& document, const std::string& source, Ke
     if (r.has("profile")) {
       const RoundProfile profile = read_profile(r, source, keys);
       static const std::vector<std::string> kKeys =
-          with_head_keys({"profile", "density_kg_m3", "youngs_modulus", "point_masses"});
+          with_head_keys({"profile", "density_kg_m3", "youngs_modulus", "wall", "point_masses"});
       r.finish(kKeys);
       const double length_m = profile.stations.back().from_butt_m;
       if (std::isfinite(length_m) && length_m > 0.0) place(length_m);

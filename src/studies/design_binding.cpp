@@ -122,6 +122,8 @@ const std::vector<FieldSetter>& field_setters() {
        [](D& x, std::size_t, double v) { x.implement.profile.density_kg_m3 = v; }, true},
       {"implement", "youngs_modulus", "", profile,
        [](D& x, std::size_t, double v) { x.implement.profile.youngs_modulus_Pa = v; }, true},
+      {"implement", "wall", "", profile,
+       [](D& x, std::size_t, double v) { x.implement.profile.wall_m = v; }, true},
       // Entry N of the file's list, whatever it holds (a clock pair is one
       // entry; its mass is each piece's).
       {"implement/point_masses/N", "mass", "",

@@ -130,6 +130,38 @@ TEST_CASE("A tapered profile has the cone frustum's exact mass, and its centre a
   CHECK(Implement::from_profile(same).mass_properties().mass_kg == Approx(M).epsilon(1e-13));
 }
 
+TEST_CASE(
+    "A shell profile of one diameter is the tube: rho pi (d^2 - d_i^2) L / 4, E pi (d^4 - d_i^4) / "
+    "64") {
+  constexpr double kPi = 3.14159265358979323846;
+  const double L = 0.81, d = 0.066, wall = 0.0025, rho = 2700.0, E = 7.1e10;
+  const double di = d - 2 * wall;
+  const RoundProfile tube{{{0.0, d}, {L, d}}, rho, E, wall};
+  for (const Section& s : profile_sections(tube)) {
+    CHECK(s.EI_N_m2.value() ==
+          Approx(E * kPi * (d * d * d * d - di * di * di * di) / 64.0).epsilon(kRoundOff));
+  }
+  const MassProperties body = Implement::from_profile(tube).mass_properties();
+  const double M = rho * kPi * (d * d - di * di) / 4.0 * L;
+  CHECK(body.mass_kg == Approx(M).epsilon(kRoundOff));
+  CHECK(body.com_from_butt_m == Approx(L / 2).epsilon(kRoundOff));
+  CHECK(body.I_cm_kg_m2 == Approx(M * L * L / 12).epsilon(1e-12));
+  // A wall of half the diameter is the solid rod; a tapered shell weighs the
+  // solid taper less the solid taper of its bore (d - 2 wall at each station).
+  const RoundProfile full{{{0.0, d}, {L, d}}, rho, E, d / 2};
+  const RoundProfile solid{{{0.0, d}, {L, d}}, rho, E};
+  check_same_body(Implement::from_profile(full).mass_properties(),
+                  Implement::from_profile(solid).mass_properties());
+  const double d0 = 0.03, d1 = 0.066;
+  const RoundProfile shell{{{0.0, d0}, {L, d1}}, rho, E, wall};
+  const RoundProfile outer{{{0.0, d0}, {L, d1}}, rho, E};
+  const RoundProfile bore{{{0.0, d0 - 2 * wall}, {L, d1 - 2 * wall}}, rho, E};
+  CHECK(Implement::from_profile(shell).mass_properties().mass_kg ==
+        Approx(Implement::from_profile(outer).mass_properties().mass_kg -
+               Implement::from_profile(bore).mass_properties().mass_kg)
+            .epsilon(kRoundOff));
+}
+
 TEST_CASE("A profile names the station or the material it cannot take") {
   const auto message = [](const RoundProfile& p) {
     try {
@@ -147,6 +179,11 @@ TEST_CASE("A profile names the station or the material it cannot take") {
              Catch::StartsWith("profile/2/from_butt_m: must be beyond"));
   CHECK_THAT(message({{{0.0, 0.05}, {0.8, 0.0}}, 650.0, 1e10}),
              Catch::StartsWith("profile/1/diameter_m"));
+  CHECK_THAT(message({{{0.0, 0.05}, {0.8, 0.03}}, 650.0, 1e10, 0.0151}),
+             Catch::StartsWith("wall_m: must be at most half the profile's smallest diameter "
+                               "(0.03 m at station 1)"));
+  CHECK_THAT(message({{{0.0, 0.05}, {0.8, 0.06}}, 650.0, 1e10, -1e-3}),
+             Catch::StartsWith("wall_m: must be in"));
   CHECK_THAT(message({{{0.0, 0.05}, {0.8, 0.06}}, -1.0, 1e10}), Catch::StartsWith("density_kg_m3"));
   CHECK_THAT(message({{{0.0, 0.05}, {0.8, 0.06}}, 650.0, 1e13}),
              Catch::StartsWith("youngs_modulus_Pa"));
