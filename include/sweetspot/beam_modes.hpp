@@ -70,20 +70,35 @@ struct TimoshenkoSection {
 TimoshenkoSection rectangular_timoshenko_section(double shear_modulus_Pa, double width_m,
                                                  double thickness_m);
 
-// The cross-section a Timoshenko beam is made of: a solid rectangle of
-// `width_m` bending across its `thickness_m`, a solid circle of `diameter_m`,
-// or a tube of that outer diameter and `wall_m` (0 < wall <= diameter / 2; a
-// wall of half the diameter is the solid circle), of Poisson's ratio
-// `poisson_ratio` in [0, 0.5].
+// The cross-section a Timoshenko beam is made of, of Poisson's ratio
+// `poisson_ratio` in [0, 0.5]:
+//   rectangle      solid, `width_m` across, bending across its `thickness_m`;
+//   circle         solid, of `diameter_m`;
+//   hollow_circle  a tube of that outer diameter and `wall_m` (0 < wall <=
+//                  diameter / 2; a wall of half the diameter is the circle);
+//   ellipse        solid, of axes `width_m` across and `thickness_m` in the
+//                  direction of bending;
+//   box            a hollow rectangle of those outer sizes and one `wall_m`
+//                  (0 < wall < min(width, thickness) / 2).
 struct CrossSection {
-  enum class Shape { kRectangle, kCircle, kHollowCircle };
+  enum class Shape { kRectangle, kCircle, kHollowCircle, kEllipse, kBox };
   Shape shape = Shape::kRectangle;
-  double width_m = 0.0;      // rectangle
-  double thickness_m = 0.0;  // rectangle, in the direction of bending
+  double width_m = 0.0;      // rectangle, ellipse, box: across the direction of bending
+  double thickness_m = 0.0;  // rectangle, ellipse, box: in the direction of bending
   double diameter_m = 0.0;   // circle and tube: the outer diameter
-  double wall_m = 0.0;       // tube
+  double wall_m = 0.0;       // tube and box
   double poisson_ratio = 0.0;
 };
+
+// A rectangle, an ellipse and a box are sized by a width and a thickness,
+// a circle and a tube by an outer diameter; a tube and a box have a wall.
+constexpr bool sized_by_width(CrossSection::Shape shape) {
+  return shape == CrossSection::Shape::kRectangle || shape == CrossSection::Shape::kEllipse ||
+         shape == CrossSection::Shape::kBox;
+}
+constexpr bool has_wall(CrossSection::Shape shape) {
+  return shape == CrossSection::Shape::kHollowCircle || shape == CrossSection::Shape::kBox;
+}
 
 // The shear coefficient kappa of a cross-section, Cowper (1966), "The shear
 // coefficient in Timoshenko's beam theory", J. Appl. Mech. 33, 335, Table 1:
@@ -91,13 +106,28 @@ struct CrossSection {
 //   circle        6 (1 + nu) / (7 + 6 nu)              (6/7 at nu = 0)
 //   tube, m = r_inner / r_outer:
 //     6 (1 + nu) (1 + m^2)^2 / ((7 + 6 nu) (1 + m^2)^2 + (20 + 12 nu) m^2),
-//   the circle at m = 0 and the thin tube's 2 (1 + nu) / (4 + 3 nu) as m -> 1.
+//   the circle at m = 0 and the thin tube's 2 (1 + nu) / (4 + 3 nu) as m -> 1;
+//   ellipse, m = thickness / width (the semi-axis in the direction of bending
+//   over the one across):
+//     12 (1 + nu) m^2 (3 m^2 + 1) / ((40 + 37 nu) m^4 + (16 + 10 nu) m^2 + nu),
+//   the circle at m = 1; at nu = 0, 0.9 for a blade on edge (m -> inf) and 0.75
+//   for a flat one (m -> 0), the closed forms of the shear flow's energy;
+//   box, Cowper's thin-walled box on the wall's centre line, b = width - wall
+//   across and h = thickness - wall deep, m = n = b / h (Cowper's
+//   m = b t_flange / (h t_web) with one wall):
+//     10 (1 + nu) (1 + 3 m)^2 / ((12 + 72 m + 150 m^2 + 90 m^3)
+//       + nu (11 + 66 m + 135 m^2 + 90 m^3) + 10 n^2 ((3 + nu) m + 3 m^2)),
+//   20 (1 + nu) / (48 + 39 nu) for a square tube. It is the thin wall's
+//   expression: exact at nu = 0 as the wall thins (the shear flow's energy),
+//   an estimate for a thick one (docs/model.md).
 // Throws std::invalid_argument for a section no shape above describes.
 double shear_coefficient(const CrossSection& section);
 
 // kappa G A and r = sqrt(I / A) of the section: A = w t and r = t / sqrt(12)
 // for the rectangle, A = pi (R^2 - r_i^2) and r = sqrt(R^2 + r_i^2) / 2 for
-// the circle (r_i = 0) and the tube. Throws std::invalid_argument as above.
+// the circle (r_i = 0) and the tube, A = pi w t / 4 and r = t / 4 for the
+// ellipse, and the box's outer rectangle less its bore for A and I.
+// Throws std::invalid_argument as above.
 TimoshenkoSection timoshenko_section(double shear_modulus_Pa, const CrossSection& section);
 
 struct ModeOptions {

@@ -126,18 +126,30 @@ void validate(const Design& d) {
       detail::require_positive(name, value, "m");
       detail::require_in_range(name, value, 0.0, kMaxLength_m, "m");
     };
-    if (c.shape == CrossSection::Shape::kRectangle) {
+    using Shape = CrossSection::Shape;
+    if (sized_by_width(c.shape)) {
       size("frame/cross_section/width_m", c.width_m);
       size("frame/cross_section/thickness_m", c.thickness_m);
     } else {
       size("frame/cross_section/diameter_m", c.diameter_m);
     }
-    if (c.shape == CrossSection::Shape::kHollowCircle) {
+    if (c.shape == Shape::kHollowCircle) {
       size("frame/cross_section/wall_m", c.wall_m);
       if (!(c.wall_m <= 0.5 * c.diameter_m)) {
         throw FieldError("frame/cross_section/wall_m",
                          "must be at most half the diameter, " +
                              detail::format_number(0.5 * c.diameter_m) + " m, got " +
+                             detail::format_number(c.wall_m) + " m");
+      }
+    }
+    if (c.shape == Shape::kBox) {
+      size("frame/cross_section/wall_m", c.wall_m);
+      const double half = 0.5 * std::min(c.width_m, c.thickness_m);
+      if (!(c.wall_m < half)) {
+        throw FieldError("frame/cross_section/wall_m",
+                         "must be under half the smaller side, " + detail::format_number(half) +
+                             " m (a wall that fills the box is the rectangle: give shape "
+                             "rectangle), got " +
                              detail::format_number(c.wall_m) + " m");
       }
     }

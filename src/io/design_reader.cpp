@@ -28,6 +28,20 @@ namespace {
 constexpr std::string_view kDesignParts[] = {"implement", "frame",  "strings", "hand",   "forearm",
                                              "ball",      "impact", "swing",   "support"};
 
+// /frame/cross_section/shape: each shape's name in a design file.
+constexpr std::pair<std::string_view, CrossSection::Shape> kSectionShapes[] = {
+    {"rectangle", CrossSection::Shape::kRectangle},
+    {"circle", CrossSection::Shape::kCircle},
+    {"hollow_circle", CrossSection::Shape::kHollowCircle},
+    {"ellipse", CrossSection::Shape::kEllipse},
+    {"box", CrossSection::Shape::kBox}};
+
+std::string section_shape_name(CrossSection::Shape shape) {
+  for (const auto& [name, s] : kSectionShapes)
+    if (s == shape) return std::string(name);
+  return "rectangle";
+}
+
 bool is_design_path(std::string_view name) {
   const std::string_view part = name.substr(0, name.find('/'));
   if (std::find(std::begin(kDesignParts), std::end(kDesignParts), part) == std::end(kDesignParts))
@@ -566,46 +580,48 @@ struct Reading {
 // /frame/cross_section: the shape and its sizes (Cowper's shear coefficient
 // for the shape, beam_modes.hpp), each size the shape's own.
 CrossSection read_cross_section(ObjectReader& c) {
-  using Shape = CrossSection::Shape;
-  static constexpr std::pair<std::string_view, Shape> kShapes[] = {
-      {"rectangle", Shape::kRectangle},
-      {"circle", Shape::kCircle},
-      {"hollow_circle", Shape::kHollowCircle}};
   CrossSection section;
   if (const auto name = c.string("shape")) {
-    const auto* found = std::find_if(std::begin(kShapes), std::end(kShapes),
+    const auto* found = std::find_if(std::begin(kSectionShapes), std::end(kSectionShapes),
                                      [&](const auto& k) { return k.first == *name; });
-    if (found == std::end(kShapes))
-      c.fail("shape", "expected rectangle, circle or hollow_circle, got " + brief(Json(*name)));
+    if (found == std::end(kSectionShapes)) {
+      c.fail("shape", "expected rectangle, circle, hollow_circle, ellipse or box, got " +
+                          brief(Json(*name)));
+    }
     section.shape = found->second;
   }
   const auto width = c.quantity("width", Dimension::kLength);
   const auto thickness = c.quantity("thickness", Dimension::kLength);
   const auto diameter = c.quantity("diameter", Dimension::kLength);
   const auto wall = c.quantity("wall", Dimension::kLength);
-  const auto refuse = [&](std::string_view stem, Dimension dimension, const char* why) {
+  const auto refuse = [&](std::string_view stem, Dimension dimension, const std::string& why) {
     c.fail(c.one_of(spellings(stem, dimension)), why);
   };
-  if (section.shape == Shape::kRectangle) {
-    if (!width || !thickness)
-      c.fail("", "a rectangle needs width_m and thickness_m (for Timoshenko theory)");
-    if (diameter) refuse("diameter", Dimension::kLength, "is a circle's: give shape circle");
-    if (wall) refuse("wall", Dimension::kLength, "is a tube's: give shape hollow_circle");
+  static constexpr std::string_view kWords[] = {"a rectangle", "a circle", "a tube", "an ellipse",
+                                                "a box"};
+  const std::string shape(kWords[static_cast<int>(section.shape)]);
+  if (sized_by_width(section.shape)) {
+    if (diameter) {
+      refuse("diameter", Dimension::kLength,
+             "is a circle's: " + shape + " has a width and a thickness");
+    }
+    if (!width || !thickness) {
+      c.fail("", shape + " needs width_m and thickness_m (for Timoshenko theory)");
+    }
     section.width_m = *width;
     section.thickness_m = *thickness;
   } else {
-    const std::string shape = section.shape == Shape::kCircle ? "a circle" : "a tube";
-    const std::string rectangle_size = "is a rectangle's: " + shape + " has a diameter";
-    if (width) refuse("width", Dimension::kLength, rectangle_size.c_str());
-    if (thickness) refuse("thickness", Dimension::kLength, rectangle_size.c_str());
+    const std::string sized = "is a rectangle's: " + shape + " has a diameter";
+    if (width) refuse("width", Dimension::kLength, sized);
+    if (thickness) refuse("thickness", Dimension::kLength, sized);
     if (!diameter) c.fail("", shape + " needs diameter_m (its outer diameter)");
     section.diameter_m = *diameter;
-    if (section.shape == Shape::kHollowCircle) {
-      if (!wall) c.fail("", "a tube needs wall_m (its wall's thickness)");
-      section.wall_m = *wall;
-    } else if (wall) {
-      refuse("wall", Dimension::kLength, "is a tube's: give shape hollow_circle");
-    }
+  }
+  if (has_wall(section.shape)) {
+    if (!wall) c.fail("", shape + " needs wall_m (its wall's thickness)");
+    section.wall_m = *wall;
+  } else if (wall) {
+    refuse("wall", Dimension::kLength, "is a hollow section's: give shape hollow_circle or box");
   }
   section.poisson_ratio = c.number("poisson_ratio").value_or(0.0);
   return section;
@@ -1481,16 +1497,16 @@ Json design_to_json(const DesignFile& file) {
     Json& section = frame[si_key("frame", "cross_section")] = Json::object();
     put(section, "frame/cross_section", "shear_modulus_Pa", *d.stiffness.shear_modulus_Pa);
     const CrossSection& c = d.stiffness.cross_section;
-    if (c.shape == CrossSection::Shape::kRectangle) {
+    using Shape = CrossSection::Shape;
+    if (c.shape != Shape::kRectangle)
+      section[si_key("frame/cross_section", "shape")] = section_shape_name(c.shape);
+    if (sized_by_width(c.shape)) {
       put(section, "frame/cross_section", "width", c.width_m);
       put(section, "frame/cross_section", "thickness", c.thickness_m);
     } else {
-      section[si_key("frame/cross_section", "shape")] =
-          c.shape == CrossSection::Shape::kCircle ? "circle" : "hollow_circle";
       put(section, "frame/cross_section", "diameter", c.diameter_m);
-      if (c.shape == CrossSection::Shape::kHollowCircle)
-        put(section, "frame/cross_section", "wall", c.wall_m);
     }
+    if (has_wall(c.shape)) put(section, "frame/cross_section", "wall", c.wall_m);
     if (c.poisson_ratio != 0.0)
       put(section, "frame/cross_section", "poisson_ratio", c.poisson_ratio);
   }

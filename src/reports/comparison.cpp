@@ -411,20 +411,24 @@ const std::vector<InputField>& input_fields() {
       {Part::kFrame, "shear modulus", "Pa", 1.0,
        [](D d) { return given(d.stiffness.shear_modulus_Pa); }},
       {Part::kFrame, "cross-section's width", "mm", 1000.0,
-       [](D d) -> std::optional<double> { return d.stiffness.cross_section.width_m; }},
+       [](D d) -> std::optional<double> {
+         if (!sized_by_width(d.stiffness.cross_section.shape)) return std::nullopt;
+         return d.stiffness.cross_section.width_m;
+       }},
       {Part::kFrame, "cross-section's thickness", "mm", 1000.0,
-       [](D d) -> std::optional<double> { return d.stiffness.cross_section.thickness_m; }},
+       [](D d) -> std::optional<double> {
+         if (!sized_by_width(d.stiffness.cross_section.shape)) return std::nullopt;
+         return d.stiffness.cross_section.thickness_m;
+       }},
       {Part::kFrame, "cross-section's diameter", "mm", 1000.0,
        [](D d) -> std::optional<double> {
-         const CrossSection& c = d.stiffness.cross_section;
-         if (c.shape == CrossSection::Shape::kRectangle) return std::nullopt;
-         return c.diameter_m;
+         if (sized_by_width(d.stiffness.cross_section.shape)) return std::nullopt;
+         return d.stiffness.cross_section.diameter_m;
        }},
-      {Part::kFrame, "tube's wall", "mm", 1000.0,
+      {Part::kFrame, "cross-section's wall", "mm", 1000.0,
        [](D d) -> std::optional<double> {
          const CrossSection& c = d.stiffness.cross_section;
-         if (c.shape != CrossSection::Shape::kHollowCircle) return std::nullopt;
-         return c.wall_m;
+         return has_wall(c.shape) ? std::optional(c.wall_m) : std::nullopt;
        }},
       {Part::kStrings, "tension", "N", 1.0,
        [](D d) { return d.strings ? std::optional(d.strings->tension_N) : std::nullopt; },

@@ -323,6 +323,112 @@ TEST_CASE("Each section shape has Cowper's shear coefficient") {
       std::invalid_argument);
 }
 
+// The ellipse's coefficient (Cowper's Table 1) is the circle's when its axes
+// are equal, and at nu = 0 reaches the two limits the elementary (Jourawski)
+// shear stresses give in closed form: a blade on edge (thickness >> width)
+// carries tau = V Q / (I b) across each narrow strip, kappa = I^2 / (A int
+// Q^2 / b dy) = 72 / 80; a flat ellipse's strips share the shear as their
+// bending stiffness h^3, kappa = (5/6) (int h^3)^2 / (int h int h^5) = 3/4.
+TEST_CASE(
+    "An ellipse's shear coefficient is the circle's when round, and a blade's or a plate's "
+    "in the limits") {
+  using Shape = CrossSection::Shape;
+  for (const double nu : {0.0, 0.3, 0.5}) {
+    const CrossSection round{
+        .shape = Shape::kEllipse, .width_m = 0.03, .thickness_m = 0.03, .poisson_ratio = nu};
+    const CrossSection circle{.shape = Shape::kCircle, .diameter_m = 0.03, .poisson_ratio = nu};
+    CHECK(shear_coefficient(round) == Approx(shear_coefficient(circle)).epsilon(kRoundOff));
+  }
+  const auto ellipse = [](double width, double thickness) {
+    return shear_coefficient(
+        CrossSection{.shape = Shape::kEllipse, .width_m = width, .thickness_m = thickness});
+  };
+  CHECK(ellipse(1e-6, 1.0) == Approx(72.0 / 80.0).epsilon(1e-11));
+  CHECK(ellipse(1.0, 1e-6) == Approx(0.75).epsilon(1e-11));
+  // The ratios past any a racquet has neither overflow nor lose the leading term.
+  CHECK(ellipse(1e-300, 1.0) == Approx(72.0 / 80.0).epsilon(kRoundOff));
+  CHECK(ellipse(1.0, 1e-300) == Approx(0.75).epsilon(kRoundOff));
+  // Between them it moves monotonically through the circle's 6/7.
+  double previous = ellipse(1.0, 1e-3);
+  for (double m = 2e-3; m < 1e3; m *= 2.0) {
+    const double kappa = ellipse(1.0, m);
+    CHECK(kappa > previous);
+    previous = kappa;
+  }
+}
+
+namespace {
+
+// The energy of the elementary shear flow around a thin box's centre line at
+// nu = 0: b across and h deep, one wall t. q rises linearly along each half
+// flange from the flange's middle, then along each web as the area above it
+// grows; kappa = V^2 / (A int q^2 / t ds). Three-point Gauss-Legendre is
+// exact for q^2, a polynomial of degree 4 on each stretch.
+double thin_box_shear_energy_coefficient(double b, double h, double t) {
+  const double inertia = 2.0 * t * b * (h / 2) * (h / 2) + 2.0 * t * h * h * h / 12.0;
+  const double area = 2.0 * t * (b + h);
+  const auto gauss = [](auto f, double from, double to) {
+    const double half = 0.5 * (to - from), mid = 0.5 * (to + from), x = std::sqrt(0.6);
+    return half *
+           (5.0 / 9.0 * f(mid - half * x) + 8.0 / 9.0 * f(mid) + 5.0 / 9.0 * f(mid + half * x));
+  };
+  const auto flange = [&](double s) {
+    const double q = t * (h / 2) * s / inertia;
+    return q * q / t;
+  };
+  const auto web = [&](double u) {
+    const double q = (t * (h / 2) * (b / 2) + t * (h / 2 * u - u * u / 2)) / inertia;
+    return q * q / t;
+  };
+  const double energy = 4.0 * gauss(flange, 0.0, b / 2) + 2.0 * gauss(web, 0.0, h);
+  return 1.0 / (area * energy);
+}
+
+}  // namespace
+
+// Cowper's thin-walled box, taken on the wall's centre line, is at nu = 0 the
+// energy of the elementary shear flow for every width and depth, and a square
+// tube's 20 (1 + nu) / (48 + 39 nu) at every nu.
+TEST_CASE("A box's shear coefficient is the energy of its shear flow, and a square tube's") {
+  using Shape = CrossSection::Shape;
+  for (const auto& [width, thickness] :
+       {std::pair{0.02, 0.02}, {0.015, 0.03}, {0.04, 0.012}, {0.2, 0.01}, {0.005, 0.3}}) {
+    const double wall = 1e-4;
+    INFO(width << " x " << thickness);
+    const CrossSection box{
+        .shape = Shape::kBox, .width_m = width, .thickness_m = thickness, .wall_m = wall};
+    CHECK(shear_coefficient(box) ==
+          Approx(thin_box_shear_energy_coefficient(width - wall, thickness - wall, wall))
+              .epsilon(1e-12));
+  }
+  for (const double nu : {0.0, 0.3, 0.5}) {
+    const CrossSection square{.shape = Shape::kBox,
+                              .width_m = 0.02,
+                              .thickness_m = 0.02,
+                              .wall_m = 0.002,
+                              .poisson_ratio = nu};
+    CHECK(shear_coefficient(square) ==
+          Approx(20.0 * (1.0 + nu) / (48.0 + 39.0 * nu)).epsilon(kRoundOff));
+  }
+  // A flat box falls as 3 (h / b)^2 with no underflow on the way; past the
+  // smallest number it is 0, never NaN (the design then refuses its shear
+  // parameter).
+  const double flat = shear_coefficient(
+      CrossSection{.shape = Shape::kBox, .width_m = 1.0, .thickness_m = 4e-100, .wall_m = 1e-100});
+  CHECK(flat == Approx(3.0 * 3e-100 * 3e-100).epsilon(1e-12));  // h = 3e-100, b = 1
+  const double flattest = shear_coefficient(
+      CrossSection{.shape = Shape::kBox, .width_m = 1.0, .thickness_m = 4e-300, .wall_m = 1e-300});
+  CHECK(flattest == 0.0);
+  CHECK_THROWS_AS(shear_coefficient(CrossSection{
+                      .shape = Shape::kBox, .width_m = 0.02, .thickness_m = 0.03, .wall_m = 0.01}),
+                  std::invalid_argument);
+  CHECK_THROWS_AS(
+      shear_coefficient(CrossSection{.shape = Shape::kBox, .width_m = 0.02, .thickness_m = 0.03}),
+      std::invalid_argument);
+  CHECK_THROWS_AS(shear_coefficient(CrossSection{.shape = Shape::kEllipse, .width_m = 0.02}),
+                  std::invalid_argument);
+}
+
 // A = pi (R^2 - r^2) and I = pi (R^4 - r^4) / 4 about a diameter: the radius of
 // gyration sqrt(I / A), and kappa G A, for a tube, a circle and a rectangle.
 TEST_CASE("A section's shear stiffness and radius of gyration are those of its area and inertia") {
@@ -336,6 +442,27 @@ TEST_CASE("A section's shear stiffness and radius of gyration are those of its a
   const TimoshenkoSection c = timoshenko_section(G, {.shape = Shape::kCircle, .diameter_m = 2 * R});
   CHECK(c.radius_of_gyration_m == Approx(R / 2).epsilon(kRoundOff));
   CHECK(c.shear_stiffness_N == Approx(6.0 / 7.0 * G * kPi * R * R).epsilon(kRoundOff));
+  // An ellipse of axes w and t: A = pi w t / 4, I = pi w t^3 / 64.
+  const TimoshenkoSection e =
+      timoshenko_section(G, {.shape = Shape::kEllipse, .width_m = 0.03, .thickness_m = 0.018});
+  const double ellipse_area = kPi * 0.03 * 0.018 / 4;
+  CHECK(e.radius_of_gyration_m ==
+        Approx(std::sqrt(kPi * 0.03 * std::pow(0.018, 3) / 64 / ellipse_area)).epsilon(kRoundOff));
+  CHECK(
+      e.shear_stiffness_N ==
+      Approx(shear_coefficient({.shape = Shape::kEllipse, .width_m = 0.03, .thickness_m = 0.018}) *
+             G * ellipse_area)
+          .epsilon(kRoundOff));
+  // A box as two flanges and two webs: I by the parallel-axis theorem.
+  const double w = 0.025, d = 0.03, wall = 0.003;
+  const CrossSection box{.shape = Shape::kBox, .width_m = w, .thickness_m = d, .wall_m = wall};
+  const TimoshenkoSection x = timoshenko_section(G, box);
+  const double box_area = 2 * w * wall + 2 * wall * (d - 2 * wall);
+  const double box_inertia =
+      2 * (w * std::pow(wall, 3) / 12 + w * wall * std::pow((d - wall) / 2, 2)) +
+      2 * wall * std::pow(d - 2 * wall, 3) / 12;
+  CHECK(x.radius_of_gyration_m == Approx(std::sqrt(box_inertia / box_area)).epsilon(kRoundOff));
+  CHECK(x.shear_stiffness_N == Approx(shear_coefficient(box) * G * box_area).epsilon(kRoundOff));
   // The rectangle through the shape is the rectangle of before, to the bit.
   const TimoshenkoSection a = rectangular_timoshenko_section(G, 0.04, 0.019);
   const TimoshenkoSection b = timoshenko_section(G, {.width_m = 0.04, .thickness_m = 0.019});

@@ -90,6 +90,15 @@ TEST_CASE("A round cross-section gives the modes of the rectangle with its shear
   REQUIRE(b.size() == 3);
   for (std::size_t k = 0; k < a.size(); ++k)
     CHECK(a[k].frequency_Hz == Approx(b[k].frequency_Hz).epsilon(1e-12));
+  // An ellipse with equal axes is that circle: its area, inertia and Cowper's
+  // coefficient (here through the ellipse's expression) are the circle's.
+  Design ellipse = circle;
+  ellipse.stiffness.cross_section = CrossSection{
+      .shape = Shape::kEllipse, .width_m = 0.064, .thickness_m = 0.064, .poisson_ratio = 0.35};
+  const std::vector<Mode> e = modes(ellipse);
+  REQUIRE(e.size() == 3);
+  for (std::size_t k = 0; k < e.size(); ++k)
+    CHECK(e[k].frequency_Hz == Approx(a[k].frequency_Hz).epsilon(1e-12));
   Design tube = circle;
   tube.stiffness.cross_section.shape = Shape::kHollowCircle;
   tube.stiffness.cross_section.wall_m = 0.004;

@@ -642,6 +642,12 @@ TEST_CASE("design_to_json writes only the field table's SI keys, and they read b
                {"length_m": 0.4, "mass_kg": 0.16, "EI_N_m2": 400}]},
                "frame": {"cor_rigid": 0.85, "cross_section": {"shear_modulus_Pa": 3e9,
                "width_cm": 2, "thickness_cm": 1}}})",
+           R"({"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8},
+               "frame": {"EI_N_m2": 300, "cross_section": {"shear_modulus_Pa": 3e9,
+               "shape": "ellipse", "width_mm": 24, "thickness_mm": 15, "poisson_ratio": 0.3}}})",
+           R"({"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8},
+               "frame": {"EI_N_m2": 300, "cross_section": {"shear_modulus_Pa": 3e9,
+               "shape": "box", "width_mm": 24, "thickness_mm": 15, "wall_mm": 2}}})",
            R"({"implement": {"length_m": 0.7, "mass_kg": 0.25,
                "head_to_handle_mass_ratio": 0.8}, "frame": {"RA": 65},
                "strings": {"tension_lb": 55, "bed_mass_g": 6, "bed_damping_ratio": 0.01},
@@ -762,6 +768,45 @@ TEST_CASE("A grip is read by its tightness, its stiffness and damping unless the
   CHECK(swept.grip_damping_N_s_m2 == kLightGrip.damping_N_s_m2);
   CHECK(hand(R"({"grip": "tight", "grip_damping_N_s_m2": 10})").grip_stiffness_N_m2 ==
         kTightGrip.stiffness_N_m2);
+}
+
+}  // namespace sweetspot::io
+
+namespace sweetspot::io {
+
+TEST_CASE(
+    "An ellipse and a box are read with their sizes, and a size of another shape is refused") {
+  const std::string frame = R"({"implement": {"length_m": 0.7, "mass_kg": 0.25,
+      "head_to_handle_mass_ratio": 0.8}, "frame": {"EI_N_m2": 300, "cross_section":
+      {"shear_modulus_Pa": 3e9, )";
+  const auto section_of = [&](const std::string& rest) {
+    return read((frame + rest + "}}}").c_str()).design.stiffness.cross_section;
+  };
+  const CrossSection e = section_of(R"("shape": "ellipse", "width_mm": 24, "thickness_mm": 15)");
+  CHECK(e.shape == CrossSection::Shape::kEllipse);
+  CHECK(e.width_m == 0.024);
+  CHECK(e.thickness_m == 0.015);
+  const CrossSection b =
+      section_of(R"("shape": "box", "width_in": 1, "thickness_cm": 2, "wall_mm": 2)");
+  CHECK(b.shape == CrossSection::Shape::kBox);
+  CHECK(b.width_m == 0.0254);
+  CHECK(b.thickness_m == 0.02);
+  CHECK(b.wall_m == 0.002);
+  const auto error = [&](const std::string& rest) {
+    return error_of((frame + rest + "}}}").c_str());
+  };
+  CHECK(has(error(R"("shape": "box", "width_mm": 24, "thickness_mm": 15)"),
+            "/frame/cross_section: a box needs wall_m"));
+  CHECK(has(error(R"("shape": "box", "width_mm": 24, "thickness_mm": 15, "wall_mm": 7.5)"),
+            "/frame/cross_section/wall_mm"));
+  CHECK(has(error(R"("shape": "box", "width_mm": 24, "thickness_mm": 15, "wall_mm": 7.5)"),
+            "give shape rectangle"));
+  CHECK(has(error(R"("shape": "ellipse", "width_mm": 24, "thickness_mm": 15, "wall_mm": 2)"),
+            "/frame/cross_section/wall_mm"));
+  CHECK(has(error(R"("shape": "ellipse", "diameter_mm": 24)"), "/frame/cross_section/diameter_mm"));
+  CHECK(has(error(R"("shape": "ellipse", "width_mm": 24)"),
+            "/frame/cross_section: an ellipse needs width_m and thickness_m"));
+  CHECK(has(error(R"("shape": "oval", "width_mm": 24)"), "ellipse or box"));
 }
 
 }  // namespace sweetspot::io

@@ -329,13 +329,22 @@ DrawnDesign draw_design(Rng& rng, const std::string& fidelity, double typical_sh
     if (draw.chance(0.12)) {
       Json section;
       section["shear_modulus_Pa"] = draw(kShearModulus);
-      // A rectangle (the default, or named), a circle or a tube (its wall up
-      // to half the diameter), of a Poisson's ratio in [0, 0.5] or none.
+      // A rectangle (the default, or named), an ellipse or a box (its wall
+      // under half the smaller side), a circle or a tube (its wall up to half
+      // the diameter), of a Poisson's ratio in [0, 0.5] or none.
       const double shape = rng.unit();
       if (shape < 0.5) {
-        if (draw.chance(0.3)) section["shape"] = "rectangle";
-        put(rng, section, "width", kLength, draw(kSectionSize));
-        put(rng, section, "thickness", kLength, draw(kSectionSize));
+        if (shape < 0.3) {
+          if (draw.chance(0.3)) section["shape"] = "rectangle";
+        } else {
+          section["shape"] = shape < 0.4 ? "ellipse" : "box";
+        }
+        const double width = put(rng, section, "width", kLength, draw(kSectionSize));
+        const double thickness = put(rng, section, "thickness", kLength, draw(kSectionSize));
+        if (section.value("shape", "") == "box") {
+          put(rng, section, "wall", kLength,
+              0.5 * std::min(width, thickness) * (0.01 + 0.98 * rng.unit()));
+        }
       } else {
         const double diameter = put(rng, section, "diameter", kLength, draw(kSectionSize));
         if (shape < 0.75) {

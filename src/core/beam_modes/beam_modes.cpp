@@ -39,9 +39,11 @@ TimoshenkoSection rectangular_timoshenko_section(double shear_modulus_Pa, double
 
 namespace {
 
+using Shape = CrossSection::Shape;
+
 // The tube's radius ratio m = r_inner / r_outer in [0, 1), 0 for a solid circle.
 double radius_ratio(const CrossSection& section) {
-  if (section.shape == CrossSection::Shape::kCircle) return 0.0;
+  if (section.shape == Shape::kCircle) return 0.0;
   const double outer = 0.5 * section.diameter_m;
   return (outer - section.wall_m) / outer;
 }
@@ -51,13 +53,19 @@ void check_section(const CrossSection& section) {
     throw std::invalid_argument("poisson_ratio: must be in [0, 0.5], got " +
                                 format_number(section.poisson_ratio));
   }
-  if (section.shape == CrossSection::Shape::kRectangle) {
+  if (sized_by_width(section.shape)) {
     detail::require_positive("width_m", section.width_m, "m");
     detail::require_positive("thickness_m", section.thickness_m, "m");
+    const double half = 0.5 * std::min(section.width_m, section.thickness_m);
+    if (section.shape == Shape::kBox && !(section.wall_m > 0.0 && section.wall_m < half)) {
+      throw std::invalid_argument(
+          "wall_m: must be in (0, min(width, thickness) / 2 = " + format_number(half) +
+          ") m, got " + format_number(section.wall_m));
+    }
     return;
   }
   detail::require_positive("diameter_m", section.diameter_m, "m");
-  if (section.shape == CrossSection::Shape::kHollowCircle &&
+  if (section.shape == Shape::kHollowCircle &&
       !(section.wall_m > 0.0 && section.wall_m <= 0.5 * section.diameter_m)) {
     throw std::invalid_argument(
         "wall_m: must be in (0, diameter / 2 = " + format_number(0.5 * section.diameter_m) +
@@ -70,8 +78,47 @@ void check_section(const CrossSection& section) {
 double shear_coefficient(const CrossSection& section) {
   check_section(section);
   const double nu = section.poisson_ratio;
-  if (section.shape == CrossSection::Shape::kRectangle)
-    return 10.0 * (1.0 + nu) / (12.0 + 11.0 * nu);
+  switch (section.shape) {
+    case Shape::kRectangle:
+      return 10.0 * (1.0 + nu) / (12.0 + 11.0 * nu);
+    case Shape::kEllipse: {
+      const double m2 =
+          (section.thickness_m / section.width_m) * (section.thickness_m / section.width_m);
+      // Divided through by m^4 where m > 1, so that a blade on edge neither
+      // overflows nor loses its leading terms.
+      if (m2 > 1.0) {
+        const double u = 1.0 / m2;
+        return 12.0 * (1.0 + nu) * (3.0 + u) /
+               ((40.0 + 37.0 * nu) + (16.0 + 10.0 * nu) * u + nu * u * u);
+      }
+      // Divided through by m^2 where m <= 1; nu / m^2 is left out at nu = 0,
+      // where a flat ellipse's m^2 may underflow.
+      return 12.0 * (1.0 + nu) * (3.0 * m2 + 1.0) /
+             ((40.0 + 37.0 * nu) * m2 + (16.0 + 10.0 * nu) + (nu > 0.0 ? nu / m2 : 0.0));
+    }
+    case Shape::kBox: {
+      const double b = section.width_m - section.wall_m;
+      const double h = section.thickness_m - section.wall_m;
+      // Cowper's m and n are both b / h with one wall. Where m > 1 numerator
+      // and denominator are divided by m^4 (u = 1 / m), so that a flat box
+      // neither overflows nor loses its leading terms.
+      if (b > h) {
+        const double u = h / b;
+        return 10.0 * (1.0 + nu) * (u + 3.0) * (u + 3.0) * u * u /
+               (u * (90.0 + u * (150.0 + u * (72.0 + 12.0 * u))) +
+                nu * u * (90.0 + u * (135.0 + u * (66.0 + 11.0 * u))) +
+                10.0 * ((3.0 + nu) * u + 3.0));
+      }
+      const double m = b / h;
+      return 10.0 * (1.0 + nu) * (1.0 + 3.0 * m) * (1.0 + 3.0 * m) /
+             ((12.0 + m * (72.0 + m * (150.0 + 90.0 * m))) +
+              nu * (11.0 + m * (66.0 + m * (135.0 + 90.0 * m))) +
+              10.0 * m * m * ((3.0 + nu) * m + 3.0 * m * m));
+    }
+    case Shape::kCircle:
+    case Shape::kHollowCircle:
+      break;
+  }
   const double m = radius_ratio(section);
   const double c = (1.0 + m * m) * (1.0 + m * m);
   return 6.0 * (1.0 + nu) * c / ((7.0 + 6.0 * nu) * c + (20.0 + 12.0 * nu) * m * m);
@@ -80,9 +127,24 @@ double shear_coefficient(const CrossSection& section) {
 TimoshenkoSection timoshenko_section(double shear_modulus_Pa, const CrossSection& section) {
   detail::require_positive("shear_modulus_Pa", shear_modulus_Pa, "Pa");
   const double kappa = shear_coefficient(section);
-  if (section.shape == CrossSection::Shape::kRectangle) {
-    return {kappa * shear_modulus_Pa * section.width_m * section.thickness_m,
-            section.thickness_m / std::sqrt(12.0)};
+  const double w = section.width_m;
+  const double t = section.thickness_m;
+  switch (section.shape) {
+    case Shape::kRectangle:
+      return {kappa * shear_modulus_Pa * w * t, t / std::sqrt(12.0)};
+    case Shape::kEllipse:
+      return {kappa * shear_modulus_Pa * 0.25 * std::numbers::pi * w * t, 0.25 * t};
+    case Shape::kBox: {
+      // The outer rectangle less its bore: I / A = (w t^3 - wi ti^3) / (12 (w t - wi ti)).
+      const double wi = w - 2.0 * section.wall_m;
+      const double ti = t - 2.0 * section.wall_m;
+      const double area = w * t - wi * ti;
+      const double second_moment = (w * t * t * t - wi * ti * ti * ti) / 12.0;
+      return {kappa * shear_modulus_Pa * area, std::sqrt(second_moment / area)};
+    }
+    case Shape::kCircle:
+    case Shape::kHollowCircle:
+      break;
   }
   const double outer = 0.5 * section.diameter_m;
   const double inner = radius_ratio(section) * outer;
