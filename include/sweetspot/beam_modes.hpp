@@ -79,9 +79,14 @@ TimoshenkoSection rectangular_timoshenko_section(double shear_modulus_Pa, double
 //   ellipse        solid, of axes `width_m` across and `thickness_m` in the
 //                  direction of bending;
 //   box            a hollow rectangle of those outer sizes and one `wall_m`
-//                  (0 < wall < min(width, thickness) / 2).
+//                  (0 < wall < min(width, thickness) / 2);
+//   profile        no sizes of its own: each section of an implement given by
+//                  its profile is the circle or tube of that section's
+//                  RoundSlice (implement.hpp), so the section changes along a
+//                  tapered bat (flexible_frame() reads it; the functions below
+//                  refuse it, having no sizes).
 struct CrossSection {
-  enum class Shape { kRectangle, kCircle, kHollowCircle, kEllipse, kBox };
+  enum class Shape { kRectangle, kCircle, kHollowCircle, kEllipse, kBox, kProfile };
   Shape shape = Shape::kRectangle;
   double width_m = 0.0;      // rectangle, ellipse, box: across the direction of bending
   double thickness_m = 0.0;  // rectangle, ellipse, box: in the direction of bending
@@ -91,10 +96,14 @@ struct CrossSection {
 };
 
 // A rectangle, an ellipse and a box are sized by a width and a thickness,
-// a circle and a tube by an outer diameter; a tube and a box have a wall.
+// a circle and a tube by an outer diameter; a tube and a box have a wall; a
+// profile has no size of its own.
 constexpr bool sized_by_width(CrossSection::Shape shape) {
   return shape == CrossSection::Shape::kRectangle || shape == CrossSection::Shape::kEllipse ||
          shape == CrossSection::Shape::kBox;
+}
+constexpr bool sized_by_diameter(CrossSection::Shape shape) {
+  return shape == CrossSection::Shape::kCircle || shape == CrossSection::Shape::kHollowCircle;
 }
 constexpr bool has_wall(CrossSection::Shape shape) {
   return shape == CrossSection::Shape::kHollowCircle || shape == CrossSection::Shape::kBox;
@@ -122,6 +131,10 @@ constexpr bool has_wall(CrossSection::Shape shape) {
 //   an estimate for a thick one (docs/model.md).
 // Throws std::invalid_argument for a section no shape above describes.
 double shear_coefficient(const CrossSection& section);
+
+// The circle (a wall of 0) or the tube of a profile's slice, of Poisson's
+// ratio `poisson_ratio`: what CrossSection::Shape::kProfile makes each section.
+CrossSection round_cross_section(const RoundSlice& slice, double poisson_ratio);
 
 // kappa G A and r = sqrt(I / A) of the section: A = w t and r = t / sqrt(12)
 // for the rectangle, A = pi (R^2 - r_i^2) and r = sqrt(R^2 + r_i^2) / 2 for

@@ -25,6 +25,15 @@ struct Section {
   std::optional<double> EI_N_m2;  // bending stiffness [N m^2], > 0; only the modes need it
 };
 
+// The round cross-section of a slice cut from a profile (profile_sections()):
+// its outer diameter at the slice's middle and its wall, 0 for a solid slice.
+// Timoshenko's terms can then come from each slice's own section
+// (CrossSection::Shape::kProfile).
+struct RoundSlice {
+  double diameter_m = 0.0;  // [m], > 0
+  double wall_m = 0.0;      // [m], 0 (solid) or in (0, diameter / 2]
+};
+
 // Measured industry specifications of a frame: they fix its rigid-body
 // properties but not its mass distribution.
 struct IndustrySpecs {
@@ -64,8 +73,10 @@ inline constexpr double kProfileSlice_m = 0.005;
 // E pi (d^4 - d_i^4) / 64 at its middle diameter (Euler-Bernoulli, a circle or
 // a tube). A uniform profile is exact; a taper's centre of mass, inertia and
 // stiffness are right to O((h / L)^2). Throws FieldError naming
-// "profile/N/...", "density_kg_m3", "youngs_modulus_Pa" or "wall_m".
-std::vector<Section> profile_sections(const RoundProfile& profile);
+// "profile/N/...", "density_kg_m3", "youngs_modulus_Pa" or "wall_m". Given
+// `slices`, it receives each section's round cross-section, one per section.
+std::vector<Section> profile_sections(const RoundProfile& profile,
+                                      std::vector<RoundSlice>* slices = nullptr);
 
 // An implement (racquet, bat, beam) from butt (x = 0) to tip (x = L): a frame
 // plus point masses. Immutable; every factory validates its arguments and throws
@@ -101,11 +112,18 @@ class Implement {
   const std::vector<Section>& sections() const { return sections_; }
   const std::vector<PointMass>& point_masses() const { return point_masses_; }
   bool has_mass_distribution() const { return !sections_.empty(); }
+  // Each section's round cross-section where the implement was given by its
+  // profile (one per section), else empty.
+  const std::vector<RoundSlice>& round_slices() const { return round_slices_; }
+  // The profile it was given by, if it was.
+  const std::optional<RoundProfile>& profile() const { return profile_; }
 
  private:
   Implement() = default;
   double length_m_ = 0.0;
   std::vector<Section> sections_;
+  std::vector<RoundSlice> round_slices_;
+  std::optional<RoundProfile> profile_;
   std::vector<PointMass> point_masses_;
   MassProperties frame_;
   MassProperties total_;

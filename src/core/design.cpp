@@ -130,8 +130,17 @@ void validate(const Design& d) {
     if (sized_by_width(c.shape)) {
       size("frame/cross_section/width_m", c.width_m);
       size("frame/cross_section/thickness_m", c.thickness_m);
-    } else {
+    } else if (sized_by_diameter(c.shape)) {
       size("frame/cross_section/diameter_m", c.diameter_m);
+    }
+    if (c.shape == Shape::kProfile) {
+      const bool from_profile = !d.implement.round_slices().empty() &&
+                                d.implement.round_slices().size() == d.implement.sections().size();
+      if (!from_profile) {
+        throw FieldError("frame/cross_section/shape",
+                         "profile takes each section's circle or tube from implement.profile: "
+                         "give the implement by its profile, or the section's own shape and sizes");
+      }
     }
     if (c.shape == Shape::kHollowCircle) {
       size("frame/cross_section/wall_m", c.wall_m);

@@ -75,18 +75,37 @@ FlexibleFrame flexible_frame(const Design& design) {
                        ? implement.sections()
                        : fitted_sections(implement.length_m(), implement.frame_mass_properties());
   if (stiffness.shear_modulus_Pa) {
-    const TimoshenkoSection t =
-        timoshenko_section(*stiffness.shear_modulus_Pa, stiffness.cross_section);
     frame.options.method = ModeOptions::Method::kFiniteElement;
     frame.options.theory = ModeOptions::Theory::kTimoshenko;
     // kappa G A can underflow to 0 (or overflow) for inputs each inside
     // its range: the cross-section is then no beam's, named as the input.
-    if (!(t.shear_stiffness_N > 0.0 && std::isfinite(t.shear_stiffness_N))) {
-      throw FieldError("frame/cross_section",
-                       "the shear stiffness kappa G A must be > 0 and finite, got " +
-                           detail::format_number(t.shear_stiffness_N) + " N");
+    const auto checked = [](const TimoshenkoSection& t) {
+      if (!(t.shear_stiffness_N > 0.0 && std::isfinite(t.shear_stiffness_N))) {
+        throw FieldError("frame/cross_section",
+                         "the shear stiffness kappa G A must be > 0 and finite, got " +
+                             detail::format_number(t.shear_stiffness_N) + " N");
+      }
+      return t;
+    };
+    const CrossSection& shape = stiffness.cross_section;
+    if (shape.shape == CrossSection::Shape::kProfile) {
+      // Each slice its own circle or tube (validate() has checked that the
+      // implement was given by its profile).
+      const std::vector<RoundSlice>& slices = implement.round_slices();
+      if (slices.size() != frame.sections.size()) {
+        throw FieldError("frame/cross_section/shape",
+                         "profile: the implement must be given by its profile");
+      }
+      frame.options.timoshenko.clear();
+      for (const RoundSlice& slice : slices) {
+        frame.options.timoshenko.push_back(checked(timoshenko_section(
+            *stiffness.shear_modulus_Pa, round_cross_section(slice, shape.poisson_ratio))));
+      }
+    } else {
+      frame.options.timoshenko.assign(
+          frame.sections.size(),
+          checked(timoshenko_section(*stiffness.shear_modulus_Pa, stiffness.cross_section)));
     }
-    frame.options.timoshenko.assign(frame.sections.size(), t);
   }
   if (stiffness.EI_N_m2) detail::require_positive("frame/EI_N_m2", *stiffness.EI_N_m2, "N m^2");
   for (Section& s : frame.sections) {
@@ -124,10 +143,10 @@ FlexibleFrame flexible_frame(const Design& design) {
     // The beam's shear parameter 12 EI / (kappa G A L^2): past
     // kMaxShearParameter bending is no part of the frame's compliance and the
     // elements' matrices leave floating point (NaN modes).
-    const double kGA = frame.options.timoshenko.front().shear_stiffness_N;
     const double L = implement.length_m();
-    for (const Section& s : frame.sections) {
-      const double shear_parameter = 12.0 * (*s.EI_N_m2 / kGA) / L / L;
+    for (std::size_t i = 0; i < frame.sections.size(); ++i) {
+      const double kGA = frame.options.timoshenko[i].shear_stiffness_N;
+      const double shear_parameter = 12.0 * (*frame.sections[i].EI_N_m2 / kGA) / L / L;
       if (!(shear_parameter <= kMaxShearParameter)) {
         throw FieldError("frame/cross_section",
                          "the shear parameter 12 EI/(kappa G A L^2) must be at most " +

@@ -86,7 +86,8 @@ Implement Implement::from_sections(std::vector<Section> sections,
   return implement;
 }
 
-std::vector<Section> profile_sections(const RoundProfile& profile) {
+std::vector<Section> profile_sections(const RoundProfile& profile,
+                                      std::vector<RoundSlice>* slices) {
   const std::vector<ProfileStation>& s = profile.stations;
   if (s.size() < 2) {
     throw FieldError("profile", "needs at least two stations (the butt and the tip), got " +
@@ -147,6 +148,7 @@ std::vector<Section> profile_sections(const RoundProfile& profile) {
           wall == 0.0 ? frustum(a, b) : frustum(a, b) - frustum(a - 2.0 * wall, b - 2.0 * wall);
       const double disc = wall == 0.0 ? fourth(mid) : fourth(mid) - fourth(mid - 2.0 * wall);
       sections.push_back(Section{h, rho * kPi * h * area_sum / 12.0, E * kPi * disc / 64.0});
+      if (slices) slices->push_back(RoundSlice{mid, wall});
     }
   }
   return sections;
@@ -154,7 +156,12 @@ std::vector<Section> profile_sections(const RoundProfile& profile) {
 
 Implement Implement::from_profile(const RoundProfile& profile,
                                   std::vector<PointMass> point_masses) {
-  return from_sections(profile_sections(profile), std::move(point_masses));
+  std::vector<RoundSlice> slices;
+  std::vector<Section> sections = profile_sections(profile, &slices);
+  Implement implement = from_sections(std::move(sections), std::move(point_masses));
+  implement.round_slices_ = std::move(slices);
+  implement.profile_ = profile;
+  return implement;
 }
 
 Implement Implement::paper_racquet(double length_m, double mass_kg,

@@ -29,6 +29,11 @@ class Key {
       add(s.mass_kg);
       add(s.EI_N_m2);
     }
+    add(static_cast<double>(implement.round_slices().size()));
+    for (const RoundSlice& r : implement.round_slices()) {
+      add(r.diameter_m);
+      add(r.wall_m);
+    }
     add(static_cast<double>(implement.point_masses().size()));
     for (const PointMass& p : implement.point_masses()) {
       add(p.from_butt_m);

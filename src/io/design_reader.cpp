@@ -34,7 +34,8 @@ constexpr std::pair<std::string_view, CrossSection::Shape> kSectionShapes[] = {
     {"circle", CrossSection::Shape::kCircle},
     {"hollow_circle", CrossSection::Shape::kHollowCircle},
     {"ellipse", CrossSection::Shape::kEllipse},
-    {"box", CrossSection::Shape::kBox}};
+    {"box", CrossSection::Shape::kBox},
+    {"profile", CrossSection::Shape::kProfile}};
 
 std::string section_shape_name(CrossSection::Shape shape) {
   for (const auto& [name, s] : kSectionShapes)
@@ -585,7 +586,7 @@ CrossSection read_cross_section(ObjectReader& c) {
     const auto* found = std::find_if(std::begin(kSectionShapes), std::end(kSectionShapes),
                                      [&](const auto& k) { return k.first == *name; });
     if (found == std::end(kSectionShapes)) {
-      c.fail("shape", "expected rectangle, circle, hollow_circle, ellipse or box, got " +
+      c.fail("shape", "expected rectangle, circle, hollow_circle, ellipse, box or profile, got " +
                           brief(Json(*name)));
     }
     section.shape = found->second;
@@ -597,10 +598,18 @@ CrossSection read_cross_section(ObjectReader& c) {
   const auto refuse = [&](std::string_view stem, Dimension dimension, const std::string& why) {
     c.fail(c.one_of(spellings(stem, dimension)), why);
   };
-  static constexpr std::string_view kWords[] = {"a rectangle", "a circle", "a tube", "an ellipse",
-                                                "a box"};
+  static constexpr std::string_view kWords[] = {"a rectangle", "a circle", "a tube",
+                                                "an ellipse",  "a box",    "a profile"};
   const std::string shape(kWords[static_cast<int>(section.shape)]);
-  if (sized_by_width(section.shape)) {
+  if (section.shape == CrossSection::Shape::kProfile) {
+    const std::string own =
+        "is one section's size: a profile's sections take theirs from "
+        "implement.profile";
+    if (width) refuse("width", Dimension::kLength, own);
+    if (thickness) refuse("thickness", Dimension::kLength, own);
+    if (diameter) refuse("diameter", Dimension::kLength, own);
+    if (wall) refuse("wall", Dimension::kLength, own + " (its wall, implement.wall)");
+  } else if (sized_by_width(section.shape)) {
     if (diameter) {
       refuse("diameter", Dimension::kLength,
              "is a circle's: " + shape + " has a width and a thickness");
@@ -620,7 +629,7 @@ CrossSection read_cross_section(ObjectReader& c) {
   if (has_wall(section.shape)) {
     if (!wall) c.fail("", shape + " needs wall_m (its wall's thickness)");
     section.wall_m = *wall;
-  } else if (wall) {
+  } else if (wall && section.shape != CrossSection::Shape::kProfile) {
     refuse("wall", Dimension::kLength, "is a hollow section's: give shape hollow_circle or box");
   }
   section.poisson_ratio = c.number("poisson_ratio").value_or(0.0);
@@ -1450,7 +1459,22 @@ Json design_to_json(const DesignFile& file) {
   Json j;
   put(j, "", "name", file.name);
   Json& impl = j[si_key("", "implement")];
-  if (implement.has_mass_distribution()) {
+  // A profile whose slices give the frame's cross-section is written as the
+  // profile (its slices' sections alone would lose their diameters).
+  if (implement.profile() && d.stiffness.shear_modulus_Pa &&
+      d.stiffness.cross_section.shape == CrossSection::Shape::kProfile) {
+    const RoundProfile& profile = *implement.profile();
+    Json& stations = impl[si_key("implement", "profile")] = Json::array();
+    for (const ProfileStation& s : profile.stations) {
+      Json station = Json::object();
+      put(station, "implement/profile/N", "from_butt", s.from_butt_m);
+      put(station, "implement/profile/N", "diameter", s.diameter_m);
+      stations.push_back(std::move(station));
+    }
+    put(impl, "implement", "density_kg_m3", profile.density_kg_m3);
+    put(impl, "implement", "youngs_modulus", profile.youngs_modulus_Pa);
+    if (profile.wall_m != 0.0) put(impl, "implement", "wall", profile.wall_m);
+  } else if (implement.has_mass_distribution()) {
     Json& sections = impl[si_key("implement", "sections")] = Json::array();
     for (const Section& s : implement.sections()) {
       Json section = Json::object();
@@ -1503,7 +1527,7 @@ Json design_to_json(const DesignFile& file) {
     if (sized_by_width(c.shape)) {
       put(section, "frame/cross_section", "width", c.width_m);
       put(section, "frame/cross_section", "thickness", c.thickness_m);
-    } else {
+    } else if (sized_by_diameter(c.shape)) {
       put(section, "frame/cross_section", "diameter", c.diameter_m);
     }
     if (has_wall(c.shape)) put(section, "frame/cross_section", "wall", c.wall_m);

@@ -422,7 +422,7 @@ const std::vector<InputField>& input_fields() {
        }},
       {Part::kFrame, "cross-section's diameter", "mm", 1000.0,
        [](D d) -> std::optional<double> {
-         if (sized_by_width(d.stiffness.cross_section.shape)) return std::nullopt;
+         if (!sized_by_diameter(d.stiffness.cross_section.shape)) return std::nullopt;
          return d.stiffness.cross_section.diameter_m;
        }},
       {Part::kFrame, "cross-section's wall", "mm", 1000.0,

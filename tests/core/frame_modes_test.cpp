@@ -63,6 +63,73 @@ TEST_CASE("Held in the hand the beam rings at about 171 Hz, damped, its free-end
 // Timoshenko beam: the design's section reaches the modes through its shape
 // alone. The tube of the same outer diameter spreads its area outwards: more
 // rotary inertia and a softer shear at the same EI and mass, so every mode falls.
+namespace {
+
+// A round implement of the paper beam's length by its profile: a wood rod,
+// uniform or tapered from a handle to a barrel, solid or a shell.
+Design round_rod(const std::vector<ProfileStation>& stations, double wall_m = 0.0) {
+  const RoundProfile profile{
+      .stations = stations, .density_kg_m3 = 650.0, .youngs_modulus_Pa = 1.2e10, .wall_m = wall_m};
+  Design d{Implement::from_profile(profile)};
+  d.stiffness.shear_modulus_Pa = 9e8;
+  d.stiffness.cross_section =
+      CrossSection{.shape = CrossSection::Shape::kProfile, .poisson_ratio = 0.35};
+  return d;
+}
+
+std::vector<double> free_frequencies(const Design& d) {
+  FlexibleFrame frame = flexible_frame(d);
+  frame.options.rel_tol = kMinRelTol;
+  std::vector<double> f;
+  for (const Mode& m : free_modes(frame.sections, frame.point_masses, frame.options).modes)
+    f.push_back(m.frequency_Hz);
+  return f;
+}
+
+}  // namespace
+
+// shape "profile": each slice of a round implement is the circle or tube of
+// its own diameter. On a uniform rod or tube every slice is the same section,
+// so the modes are those of that one circle or tube given by its sizes; on a
+// taper they are below Euler-Bernoulli's, and reach them as G grows.
+TEST_CASE("A profile's sections are each its own circle or tube") {
+  using Shape = CrossSection::Shape;
+  const std::vector<ProfileStation> uniform{{0.0, 0.05}, {0.72, 0.05}};
+  for (const double wall : {0.0, 0.004}) {
+    INFO("wall " << wall);
+    const Design profile = round_rod(uniform, wall);
+    Design sized = profile;
+    sized.stiffness.cross_section =
+        wall == 0.0
+            ? CrossSection{.shape = Shape::kCircle, .diameter_m = 0.05, .poisson_ratio = 0.35}
+            : CrossSection{.shape = Shape::kHollowCircle,
+                           .diameter_m = 0.05,
+                           .wall_m = wall,
+                           .poisson_ratio = 0.35};
+    const std::vector<double> a = free_frequencies(profile), b = free_frequencies(sized);
+    REQUIRE(a.size() == b.size());
+    for (std::size_t k = 0; k < a.size(); ++k) CHECK(a[k] == Approx(b[k]).epsilon(kRoundOff));
+  }
+  const std::vector<ProfileStation> bat{{0.0, 0.025}, {0.3, 0.026}, {0.55, 0.05}, {0.72, 0.064}};
+  const Design timoshenko = round_rod(bat);
+  Design euler = timoshenko;
+  euler.stiffness.shear_modulus_Pa.reset();
+  Design stiff = timoshenko;
+  stiff.stiffness.shear_modulus_Pa = 1e20;
+  const std::vector<double> t = free_frequencies(timoshenko), e = free_frequencies(euler),
+                            s = free_frequencies(stiff);
+  REQUIRE(t.size() == e.size());
+  for (std::size_t k = 0; k < t.size(); ++k) {
+    CHECK(t[k] < e[k]);
+    CHECK(s[k] > t[k]);
+  }
+  // A design not given by its profile has no slices to take the shape from.
+  Design beam = paper_beam();
+  beam.stiffness.shear_modulus_Pa = 1e9;
+  beam.stiffness.cross_section = CrossSection{.shape = Shape::kProfile};
+  CHECK_THROWS_WITH(validate(beam), Catch::Contains("frame/cross_section/shape"));
+}
+
 TEST_CASE("A round cross-section gives the modes of the rectangle with its shear and inertia") {
   using Shape = CrossSection::Shape;
   const CrossSection round{.shape = Shape::kCircle, .diameter_m = 0.064, .poisson_ratio = 0.35};

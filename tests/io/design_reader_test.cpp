@@ -806,7 +806,30 @@ TEST_CASE(
   CHECK(has(error(R"("shape": "ellipse", "diameter_mm": 24)"), "/frame/cross_section/diameter_mm"));
   CHECK(has(error(R"("shape": "ellipse", "width_mm": 24)"),
             "/frame/cross_section: an ellipse needs width_m and thickness_m"));
-  CHECK(has(error(R"("shape": "oval", "width_mm": 24)"), "ellipse or box"));
+  CHECK(has(error(R"("shape": "oval", "width_mm": 24)"), "ellipse, box or profile"));
+}
+
+}  // namespace sweetspot::io
+
+namespace sweetspot::io {
+
+TEST_CASE("A profile's cross-section has no sizes, is written back, and needs a profile") {
+  const std::string bat = R"({"implement": {"profile": [{"from_butt_cm": 0, "diameter_cm": 2.5},
+      {"from_butt_cm": 84, "diameter_cm": 6.6}], "density_kg_m3": 650, "youngs_modulus_GPa": 12},
+      "frame": {"cross_section": {"shear_modulus_Pa": 9e8, "shape": "profile", )";
+  const DesignFile read_once = read((bat + R"("poisson_ratio": 0.35}}})").c_str());
+  CHECK(read_once.design.stiffness.cross_section.shape == CrossSection::Shape::kProfile);
+  const Json written = design_to_json(read_once);
+  CHECK(written["frame"]["cross_section"] ==
+        Json::parse(R"({"shear_modulus_Pa": 9e8, "shape": "profile", "poisson_ratio": 0.35})"));
+  CHECK(design_to_json(read_design(written, "again.json")) == written);
+  CHECK(has(error_of((bat + R"("diameter_mm": 60}}})").c_str()),
+            "/frame/cross_section/diameter_mm: is one section's size"));
+  CHECK(has(error_of((bat + R"("wall_mm": 2}}})").c_str()), "/frame/cross_section/wall_mm"));
+  CHECK(has(error_of(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25,
+      "head_to_handle_mass_ratio": 0.8}, "frame": {"EI_N_m2": 300, "cross_section":
+      {"shear_modulus_Pa": 9e8, "shape": "profile"}}})"),
+            "/frame/cross_section/shape: profile takes each section's circle or tube"));
 }
 
 }  // namespace sweetspot::io

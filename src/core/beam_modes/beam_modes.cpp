@@ -49,6 +49,11 @@ double radius_ratio(const CrossSection& section) {
 }
 
 void check_section(const CrossSection& section) {
+  if (section.shape == Shape::kProfile) {
+    throw std::invalid_argument(
+        "shape: a profile's sections are each the circle or tube of its own slice, not one "
+        "section with sizes");
+  }
   if (!(section.poisson_ratio >= 0.0 && section.poisson_ratio <= 0.5)) {
     throw std::invalid_argument("poisson_ratio: must be in [0, 0.5], got " +
                                 format_number(section.poisson_ratio));
@@ -117,11 +122,23 @@ double shear_coefficient(const CrossSection& section) {
     }
     case Shape::kCircle:
     case Shape::kHollowCircle:
+    case Shape::kProfile:  // refused by check_section()
       break;
   }
   const double m = radius_ratio(section);
   const double c = (1.0 + m * m) * (1.0 + m * m);
   return 6.0 * (1.0 + nu) * c / ((7.0 + 6.0 * nu) * c + (20.0 + 12.0 * nu) * m * m);
+}
+
+CrossSection round_cross_section(const RoundSlice& slice, double poisson_ratio) {
+  if (slice.wall_m == 0.0) {
+    return {
+        .shape = Shape::kCircle, .diameter_m = slice.diameter_m, .poisson_ratio = poisson_ratio};
+  }
+  return {.shape = Shape::kHollowCircle,
+          .diameter_m = slice.diameter_m,
+          .wall_m = slice.wall_m,
+          .poisson_ratio = poisson_ratio};
 }
 
 TimoshenkoSection timoshenko_section(double shear_modulus_Pa, const CrossSection& section) {
@@ -144,6 +161,7 @@ TimoshenkoSection timoshenko_section(double shear_modulus_Pa, const CrossSection
     }
     case Shape::kCircle:
     case Shape::kHollowCircle:
+    case Shape::kProfile:  // refused by check_section()
       break;
   }
   const double outer = 0.5 * section.diameter_m;
