@@ -133,37 +133,23 @@ void validate(const Design& d) {
     } else if (sized_by_diameter(c.shape)) {
       size("frame/cross_section/diameter_m", c.diameter_m);
     }
-    if (c.shape == Shape::kProfile) {
-      const bool from_profile = !d.implement.round_slices().empty() &&
-                                d.implement.round_slices().size() == d.implement.sections().size();
-      if (!from_profile) {
-        throw FieldError("frame/cross_section/shape",
-                         "profile takes each section's circle or tube from implement.profile: "
-                         "give the implement by its profile, or the section's own shape and sizes");
-      }
-    }
-    if (c.shape == Shape::kHollowCircle) {
-      size("frame/cross_section/wall_m", c.wall_m);
-      if (!(c.wall_m <= 0.5 * c.diameter_m)) {
-        throw FieldError("frame/cross_section/wall_m",
-                         "must be at most half the diameter, " +
-                             detail::format_number(0.5 * c.diameter_m) + " m, got " +
-                             detail::format_number(c.wall_m) + " m");
-      }
-    }
-    if (c.shape == Shape::kBox) {
-      size("frame/cross_section/wall_m", c.wall_m);
-      const double half = 0.5 * std::min(c.width_m, c.thickness_m);
-      if (!(c.wall_m < half)) {
-        throw FieldError("frame/cross_section/wall_m",
-                         "must be under half the smaller side, " + detail::format_number(half) +
-                             " m (a wall that fills the box is the rectangle: give shape "
-                             "rectangle), got " +
-                             detail::format_number(c.wall_m) + " m");
-      }
+    if (c.shape == Shape::kProfile && !d.implement.profile()) {
+      throw FieldError("frame/cross_section/shape",
+                       "profile takes each section's circle or tube from implement.profile: "
+                       "give the implement by its profile, or the section's own shape and sizes");
     }
     detail::require_in_range("frame/cross_section/poisson_ratio", c.poisson_ratio, 0.0,
                              kMaxPoissonRatio, "");
+    if (has_wall(c.shape)) size("frame/cross_section/wall_m", c.wall_m);
+    // The shape's own rules (a wall inside its section): shear_coefficient()'s,
+    // named under this path.
+    if (c.shape != Shape::kProfile) {
+      try {
+        shear_coefficient(c);
+      } catch (const std::invalid_argument& error) {
+        rethrow_under("frame/cross_section/", error);
+      }
+    }
   }
   detail::require_in_range("impact/off_axis_m", d.impact_off_axis_m, -L, L, "m");
   std::optional<HeadEllipse> outline;  // the head to the hoop's outer edge

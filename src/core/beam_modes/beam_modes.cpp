@@ -65,7 +65,8 @@ void check_section(const CrossSection& section) {
     if (section.shape == Shape::kBox && !(section.wall_m > 0.0 && section.wall_m < half)) {
       throw std::invalid_argument(
           "wall_m: must be in (0, min(width, thickness) / 2 = " + format_number(half) +
-          ") m, got " + format_number(section.wall_m));
+          ") m (a wall that fills the box is the rectangle: give shape rectangle), got " +
+          format_number(section.wall_m) + " m");
     }
     return;
   }
