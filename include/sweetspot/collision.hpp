@@ -10,6 +10,9 @@
 // the ball's incident velocity; everything at rest but the ball at t = 0):
 //  * ball: mass m at y, pressed into the strings by x = y - s > 0 through a
 //    contact law F = k x^n + b x^p x' (BallContactLaw), never pulling (F >= 0);
+//    or a ball of two masses (BallBody), the law on its front mass m_f and a
+//    back mass joined to it by a stiffening spring and a dashpot, x the
+//    front's y_f - s (collision/bodies.hpp);
 //  * string bed: a mass m_s at s on a spring k_s (the membrane stiffness of
 //    string_bed.hpp) and a dashpot c_s to the frame at the impact point;
 //  * frame: at the impact point x_F it moves as w = u + sum_k phi_k(x_F) q_k,
@@ -124,6 +127,9 @@ struct CollisionResult {
   double contact_time_s = 0.0;  // first touch to the last separation [s]
   double in_contact_s = 0.0;    // the sum of the contacts' durations [s]
   double peak_force_N = 0.0;    // the largest ball force
+  // The most the ball's centre of mass came towards what it touches, y - s:
+  // the compression a drop test measures (one mass: the law's x; two masses:
+  // the front's x plus m_b/m of the internal compression).
   double peak_ball_compression_m = 0.0;
   double peak_string_deflection_m = 0.0;  // max |s - w|
   double impulse_N_s = 0.0;               // int F_b dt, the ball's loss of momentum
@@ -141,7 +147,7 @@ struct CollisionResult {
   double implement_rigid_J = 0.0;  // 1/2 M_eff u'^2
   double vibration_J = 0.0;  // modes + string bed + what the modal damping took during the run
   double modal_damping_loss_J = 0.0;  // part of vibration_J
-  double ball_loss_J = 0.0;
+  double ball_loss_J = 0.0;  // the law's loss, and a two-mass ball's internal dashpot and ring
   double strings_loss_J = 0.0;
   double step_s = 0.0;
   int steps = 0;

@@ -22,7 +22,15 @@
 namespace sweetspot {
 
 const char* to_string(BallLawForm form) {
-  return form == BallLawForm::kHysteretic ? "hysteretic" : "power";
+  switch (form) {
+    case BallLawForm::kHysteretic:
+      return "hysteretic";
+    case BallLawForm::kTwoMass:
+      return "two_mass";
+    case BallLawForm::kPower:
+      break;
+  }
+  return "power";
 }
 
 namespace {
@@ -69,11 +77,35 @@ std::string hysteretic_problem(const HystereticBallLaw& h) {
   return {};
 }
 
+// The body's problem, if any: two masses for the two-mass form, one for the others.
+std::string body_problem(BallLawForm form, const BallBody& b) {
+  using detail::format_number;
+  if (form != BallLawForm::kTwoMass) {
+    if (b.front_mass_fraction == 1.0) return {};
+    return std::string("body.front_mass_fraction: the ") + to_string(form) +
+           " law's ball is one mass (1), got " + format_number(b.front_mass_fraction);
+  }
+  if (!(b.front_mass_fraction > 0.0 && b.front_mass_fraction < 1.0))
+    return "body.front_mass_fraction: must be in (0, 1) for two masses, got " +
+           format_number(b.front_mass_fraction);
+  if (!(b.internal_stiffness > 0.0 && b.internal_stiffness <= kMaxBallStiffness))
+    return "body.internal_stiffness: must be in (0, " + format_number(kMaxBallStiffness) +
+           "] N/m, got " + format_number(b.internal_stiffness);
+  if (!(b.internal_cubic_stiffness >= 0.0 && b.internal_cubic_stiffness <= kMaxBallStiffness))
+    return "body.internal_cubic_stiffness: must be in [0, " + format_number(kMaxBallStiffness) +
+           "] N/m^3, got " + format_number(b.internal_cubic_stiffness);
+  if (!(b.internal_damping_ratio >= 0.0 && b.internal_damping_ratio < 1.0))
+    return "body.internal_damping_ratio: must be in [0, 1), got " +
+           format_number(b.internal_damping_ratio);
+  return {};
+}
+
 }  // namespace
 
 std::string BallContactLaw::validate() const {
   using detail::format_number;
-  if (form == BallLawForm::kHysteretic) return hysteretic_problem(hysteretic);
+  if (std::string why = body_problem(form, body); !why.empty()) return why;
+  if (is_hysteretic(form)) return hysteretic_problem(hysteretic);
   if (!(stiffness > 0.0 && stiffness <= kMaxBallStiffness))
     return "stiffness: must be in (0, " + format_number(kMaxBallStiffness) + "], got " +
            format_number(stiffness);
@@ -90,7 +122,7 @@ std::string BallContactLaw::validate() const {
 }
 
 double contact_elastic_energy(const BallContactLaw& law, double compression_m) {
-  if (law.form == BallLawForm::kHysteretic)
+  if (is_hysteretic(law.form))
     return collision_detail::HystereticLaw(law.hysteretic).energy(compression_m);
   return collision_detail::PowerLaw(law).energy(compression_m);
 }
@@ -142,7 +174,12 @@ namespace {
 
 bool same_law(const BallContactLaw& a, const BallContactLaw& b) {
   const HystereticBallLaw &h = a.hysteretic, &g = b.hysteretic;
-  return a.stiffness == b.stiffness && a.exponent == b.exponent && a.damping == b.damping &&
+  const BallBody &p = a.body, &r = b.body;
+  return p.front_mass_fraction == r.front_mass_fraction &&
+         p.internal_stiffness == r.internal_stiffness &&
+         p.internal_cubic_stiffness == r.internal_cubic_stiffness &&
+         p.internal_damping_ratio == r.internal_damping_ratio && a.stiffness == b.stiffness &&
+         a.exponent == b.exponent && a.damping == b.damping &&
          a.damping_exponent == b.damping_exponent && a.form == b.form &&
          h.shell_stiffness == g.shell_stiffness && h.shell_compression == g.shell_compression &&
          h.stiffening == g.stiffening && h.wall_stiffness == g.wall_stiffness &&
@@ -164,10 +201,12 @@ BallContactLaw solve_rigid_surface_cor(const BallContactLaw& law, double ball_ma
   double lo = power ? std::log(kMaxBallDamping * 1e-21)
                     : -std::max({h.shell_unloading - 1.0, h.stiffening_unloading - 2.0,
                                  h.wall_unloading - 1.0});
-  if (!power && cor == 0.0) {
+  if (law.form == BallLawForm::kHysteretic && cor == 0.0) {
     *loss = std::numeric_limits<double>::infinity();  // a plastic ball
     return out;
   }
+  // (A two-mass ball whose contact is plastic still rebounds: its back half
+  // comes back off the internal spring. Its deadest is searched for below.)
   const auto excess = [&](double p) {
     *loss = power ? std::exp(p) : p;
     return rigid_surface_cor(out, ball_mass_kg) - cor;
@@ -234,24 +273,42 @@ StaticLoop static_loop(const BallContactLaw& law, double force_N, double max_com
     loop.return_deformation_m = loop.forward_deformation_m;
     return loop;
   }
-  // The relaxed ball: its wall alone, no shell, no stiffening, no damping.
+  // The relaxed ball: its wall alone, no shell, no stiffening, no damping;
+  // a two-mass ball's internal spring G in series with it (at rest the two
+  // halves carry the same force, and the ball's deformation is the sum of theirs).
   HystereticBallLaw relaxed = law.hysteretic;
   relaxed.shell_stiffness = relaxed.stiffening = relaxed.damping = 0.0;
   collision_detail::HystereticLaw ball(relaxed);
-  if (!(ball.backbone(max_compression_m) >= force_N))
+  const bool two = law.form == BallLawForm::kTwoMass;
+  const double ki = law.body.internal_stiffness, k3 = law.body.internal_cubic_stiffness;
+  // The internal spring's compression under a force f (G rises from 0).
+  const auto inner = [&](double f) {
+    if (!two || f <= 0.0) return 0.0;
+    const auto excess = [&](double d) { return d * (ki + k3 * d * d) - f; };
+    const double hi = f / ki;  // G(d) >= k_i d
+    return brent_root(excess, 0.0, hi, -f, excess(hi), 1e-15 * hi);
+  };
+  // The wall's compression at max_compression_m in all.
+  const auto rest = [&](double x) { return x + inner(ball.backbone(x)) - max_compression_m; };
+  const double wall_max = two ? brent_root(rest, 0.0, max_compression_m, -max_compression_m,
+                                           rest(max_compression_m), 1e-15 * max_compression_m)
+                              : max_compression_m;
+  if (!(ball.backbone(wall_max) >= force_N))
     throw std::invalid_argument("the relaxed ball reaches " +
-                                detail::format_number(ball.backbone(max_compression_m)) +
+                                detail::format_number(ball.backbone(wall_max)) +
                                 " N at max_compression_m, short of force_N");
   // Where the branch in force (increasing in x) crosses force_N below `hi`.
   const auto crossing = [&](double hi) {
     const auto excess = [&](double x) { return ball.force(x) - force_N; };
     return brent_root(excess, 0.0, hi, -force_N, excess(hi), 1e-15 * hi);
   };
-  loop.forward_deformation_m = crossing(max_compression_m);
-  const double work_in = ball.backbone_work(max_compression_m);
-  ball.commit(max_compression_m);
-  loop.return_deformation_m = crossing(max_compression_m);
-  loop.loop_energy_J = work_in - ball.energy(max_compression_m);
+  const double inner_at_force = inner(force_N);
+  loop.forward_deformation_m = crossing(wall_max) + inner_at_force;
+  const double work_in = ball.backbone_work(wall_max);
+  ball.commit(wall_max);
+  loop.return_deformation_m = crossing(wall_max) + inner_at_force;
+  // (The internal spring returns what it took: the loop is the wall's.)
+  loop.loop_energy_J = work_in - ball.energy(wall_max);
   return loop;
 }
 
@@ -365,37 +422,34 @@ class Contacts {
 
 // The linear part (frame modes, string bed, ball) solved over a step of
 // length h for the one unknown, the ball force F_b: the compression at the
-// step's end x1 = a - c F_b and the string force F_s = P + Q F_b.
+// step's end x1 = a - c F_b and the string force F_s = P + Q F_b. (A
+// two-mass ball's internal gradient g adds h A1 g to a: internal_part().)
 struct LinearPart {
   double a, c, P = 0.0, Q = 1.0;
 };
 
-LinearPart linear_part(const Ball& ball, const Bed& bed, double B_w, ModalState::Start modal,
-                       double h) {
-  const double A_w = modal.A_w, m = ball.m;
+LinearPart linear_part(const Ball& ball, Ball::Start front, const Bed& bed, double B_w,
+                       ModalState::Start modal, double h) {
+  const double A_w = modal.A_w;
   LinearPart lp;
   if (bed.present) {
     const double kappa = bed.kappa, ms = bed.ms;
     const double D = 1.0 + kappa * (0.5 * h / ms + B_w);
     lp.P = (kappa * (bed.vs - A_w) + bed.ks * (bed.s - modal.w0)) / D;
     lp.Q = kappa * 0.5 * h / (ms * D);
-    lp.a = ball.x + h * (ball.vy - bed.vs + 0.5 * h * lp.P / ms);
-    lp.c = h * (0.5 * h / m + 0.5 * h * (1.0 - lp.Q) / ms);
+    lp.a = ball.x + h * (front.A0 - bed.vs + 0.5 * h * lp.P / ms);
+    lp.c = h * (front.B + 0.5 * h * (1.0 - lp.Q) / ms);
   } else {
-    lp.a = ball.x + h * (ball.vy - A_w);
-    lp.c = h * (0.5 * h / m + B_w);
+    lp.a = ball.x + h * (front.A0 - A_w);
+    lp.c = h * (front.B + B_w);
   }
   return lp;
 }
 
-// The ball under F and the string bed between F and F_s over the step, at
-// their midpoint velocities (without strings s follows the frame point at
-// w_dot_mid). Returns the bed's velocity relative to the frame point at the
-// midpoint (0 without strings).
-double move_ball_and_bed(Ball& ball, Bed& bed, double h, double F, double Fs, double w_dot_mid) {
-  const double vy_mid = ball.vy - 0.5 * h / ball.m * F;
-  ball.y += h * vy_mid;
-  ball.vy = 2.0 * vy_mid - ball.vy;
+// The string bed between F and F_s over the step, at its midpoint velocity
+// (without strings s follows the frame point at w_dot_mid). Returns the
+// bed's velocity relative to the frame point at the midpoint (0 without strings).
+double move_bed(Bed& bed, double h, double F, double Fs, double w_dot_mid) {
   double vs_mid = w_dot_mid, rel = 0.0;
   if (bed.present) {
     vs_mid = bed.vs + 0.5 * h / bed.ms * (F - Fs);
@@ -407,12 +461,13 @@ double move_ball_and_bed(Ball& ball, Bed& bed, double h, double F, double Fs, do
 }
 
 // The step's share of the impulse, the peaks and the force history, for a
-// step from t of length h under F ending at compression x and frame point w.
+// step from t of length h under F ending at compression x (the front's),
+// the ball's centre of mass `centre` closer to the bed, and frame point w.
 void record_step(const CollisionOptions& options, double t, double h, double F, double x,
-                 const Bed& bed, double w, CollisionResult& res) {
+                 double centre, const Bed& bed, double w, CollisionResult& res) {
   res.impulse_N_s += h * F;
   if (F > res.peak_force_N) res.peak_force_N = F;
-  if (x > res.peak_ball_compression_m) res.peak_ball_compression_m = x;
+  if (centre > res.peak_ball_compression_m) res.peak_ball_compression_m = centre;
   if (bed.present)
     res.peak_string_deflection_m =
         std::max(res.peak_string_deflection_m, x > 0.0 ? std::abs(bed.s - w) : 0.0);
@@ -443,7 +498,54 @@ bool gone_for_good(const Ball& ball, const Bed& bed, const ModalState& modes, do
     e_osc +=
         0.5 * bed.ks * (bed.s - w) * (bed.s - w) + 0.5 * bed.ms * (bed.vs - uF) * (bed.vs - uF);
   const double reach = std::sqrt(2.0 * e_osc * compliance);
-  return ball.x + 2.0 * reach < 0.0;
+  return ball.x + 2.0 * (reach + ball.internal_reach()) < 0.0;
+}
+
+// The step's ball force F and, for a two-mass ball, its internal spring's
+// discrete gradient g: for a given g the force is solve_force()'s on the
+// compression a + h A1 g - c F, and g must be the gradient from d to the
+// internal compression that F and g leave, psi(g) = g - G(d, d1(F(g), g)) = 0.
+// psi rises with slope >= 1 (a larger g pushes the front on, and F takes up
+// less than all of it), so the root is unique and within |psi(g0)| of any g0.
+struct BallForces {
+  double F, g;
+};
+template <BallLaw Law>
+BallForces solve_ball_forces(const Law& law, const Ball& ball, const Ball::Start& front,
+                             const LinearPart& lp, double h, double guess, double force_floor,
+                             double g_guess) {
+  // (Each solve starts from the last one's force: the g's are close.)
+  double last = guess;
+  const auto force_at = [&](double g) {
+    return last = collision_detail::solve_force(law, ball.x, ball.u_x, lp.a + h * front.A1 * g,
+                                                lp.c, h, last, force_floor);
+  };
+  if (!ball.two_masses()) return {force_at(0.0), 0.0};
+  const auto psi = [&](double g) {
+    return g - ball.inner_gradient(ball.inner_end(h, force_at(g), g));
+  };
+  // Secant steps from g_guess and g_guess - psi (psi' >= 1: the root lies
+  // between them), kept in the bracket; psi is nearly linear over a step, so
+  // two or three evaluations usually do. Brent's method if they do not.
+  double g0 = g_guess, p0 = psi(g0);
+  if (p0 == 0.0) return {force_at(g0), g0};
+  double g1 = g0 - p0, p1 = psi(g1);
+  double lo = p0 < 0.0 ? g0 : g1, hi = p0 < 0.0 ? g1 : g0;
+  double p_lo = p0 < 0.0 ? p0 : p1, p_hi = p0 < 0.0 ? p1 : p0;
+  const double tol = 1e-14 * (std::abs(g0) + std::abs(g1) + force_floor);
+  for (int it = 0; it < 8 && std::abs(p1) > tol; ++it) {
+    if (p1 < 0.0 && g1 > lo) lo = g1, p_lo = p1;
+    if (p1 > 0.0 && g1 < hi) hi = g1, p_hi = p1;
+    const double next = g1 - p1 * (g1 - g0) / (p1 - p0);
+    if (!(next > lo && next < hi)) break;
+    g0 = g1, p0 = p1;
+    g1 = next, p1 = psi(g1);
+  }
+  if (!(std::abs(p1) <= tol)) {
+    if (p_lo > 0.0 || p_hi < 0.0) return {force_at(g1), g1};  // (round-off in the bracket)
+    g1 = brent_root(psi, lo, hi, p_lo, p_hi, tol);
+  }
+  return {force_at(g1), g1};
 }
 
 // One run of the integrator (collision.hpp) at options' step, for any ball law.
@@ -452,11 +554,11 @@ bool gone_for_good(const Ball& ball, const Bed& bed, const ModalState& modes, do
 template <BallLaw Law>
 CollisionResult integrate(const FrameAtImpact& frame,
                           const std::optional<StringBedDynamics>& strings, double m, Law law,
-                          double v1, const CollisionOptions& options) {
-  const StepMesh mesh(frame, strings, m, law, v1, options);
+                          const BallBody& body, double v1, const CollisionOptions& options) {
+  const StepMesh mesh(frame, strings, m, law, body, v1, options);
   const double inv_M = frame.inverse_effective_mass_per_kg;
   ModalState modes(frame);
-  Ball ball{m, v1};
+  Ball ball(m, v1, body);
   Bed bed(strings, m);
   // The static compliance at the impact point: the modes and the string bed [m/N].
   double compliance = modes.static_compliance();
@@ -474,29 +576,36 @@ CollisionResult integrate(const FrameAtImpact& frame,
     res.contact_time_s = last_separation;
   };
 
-  double t = 0.0;
+  double t = 0.0, inner_gradient = 0.0;  // the last step's internal gradient
   long n = 0;
   for (; n < mesh.max_steps() && t < options.max_time_s; ++n) {
-    const double closing_speed = ball.vy - bed.vs;
+    const double closing_speed = ball.front_velocity() - bed.vs;
     contacts.begin_step(t, ball.x, closing_speed);
     const double h = mesh.next({ball.x, closing_speed, contacts.since_onset(t), ball.x_dot,
                                 history.f_prev, history.f_prev2, modes.step()});
-    if (modes.set_step(h)) bed.set_step(h);
+    if (modes.set_step(h)) {
+      bed.set_step(h);
+      ball.set_step(h);
+    }
     const ModalState::Start start = modes.begin_step();
-    const LinearPart lp = linear_part(ball, bed, modes.compliance_rate(), start, h);
-    const double F = collision_detail::solve_force(law, ball.x, ball.u_x, lp.a, lp.c, h,
-                                                   history.guess(h), mesh.force_floor());
+    const Ball::Start front = ball.begin_step(h);
+    const LinearPart lp = linear_part(ball, front, bed, modes.compliance_rate(), start, h);
+    const auto [F, g] = solve_ball_forces(law, ball, front, lp, h, history.guess(h),
+                                          mesh.force_floor(), inner_gradient);
     const double Fs = bed.present ? lp.P + lp.Q * F : F;
     // The linear part's update with the midpoint velocities.
     const ModalState::Advance modal = modes.advance(Fs);
     ledger.book_modal_damping(h, modal.damping_power);
-    const double rel = move_ball_and_bed(ball, bed, h, F, Fs, modal.w_dot_mid);
+    ledger.book_ball_internal_damping(h, ball.advance(h, F, g));
+    inner_gradient = g;
+    const double rel = move_bed(bed, h, F, Fs, modal.w_dot_mid);
     if (bed.present) ledger.book_strings(bed.cs, h, rel);
-    const double x_old = ball.x, x_new = ball.y - bed.s;
+    const double x_old = ball.x, x_new = ball.front() - bed.s;
     if constexpr (requires { law.commit(x_new); }) law.commit(x_new);
     const double u_new = law.energy(x_new);
     ledger.book_ball(F, x_new - x_old, u_new - ball.u_x);
-    record_step(options, t, h, F, x_new, bed, start.w0 + h * modal.w_dot_mid, res);
+    record_step(options, t, h, F, x_new, ball.centre_compression(bed.s), bed,
+                start.w0 + h * modal.w_dot_mid, res);
     ball.compress_to(x_new, u_new, h);
     history.push(F, h);
     t += h;
@@ -524,10 +633,10 @@ CollisionResult run(const FrameAtImpact& frame, const std::optional<StringBedDyn
                     double ball_mass_kg, const BallContactLaw& law, double speed_m_s,
                     const CollisionOptions& options) {
   check_arguments(frame, strings, ball_mass_kg, law, speed_m_s, options);
-  if (law.form == BallLawForm::kHysteretic)
-    return integrate(frame, strings, ball_mass_kg, HystereticLaw(law.hysteretic), speed_m_s,
-                     options);
-  return integrate(frame, strings, ball_mass_kg, PowerLaw(law), speed_m_s, options);
+  if (is_hysteretic(law.form))
+    return integrate(frame, strings, ball_mass_kg, HystereticLaw(law.hysteretic), law.body,
+                     speed_m_s, options);
+  return integrate(frame, strings, ball_mass_kg, PowerLaw(law), law.body, speed_m_s, options);
 }
 
 // (4 fine - coarse) / 3: the h^2 term of two runs at h and h/2 cancelled.

@@ -434,7 +434,8 @@ const std::vector<DesignField>& design_fields() {
        {},
        "law",
        "power",
-       "power (k x^n + b x^p x'), hysteretic (the buckling, hysteretic ball)",
+       "power (k x^n + b x^p x'), hysteretic (the buckling, hysteretic ball), two_mass (the "
+       "hysteretic ball of two masses, whose far side moves on)",
        ""},
       {"ball/contact",
        "stiffness",

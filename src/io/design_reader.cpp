@@ -1100,21 +1100,20 @@ void read_ball(ObjectReader& top, Reading& in) {
   if (const Json* contact = ball.reader().child("contact")) {
     // The ball's contact law (ball_contact.hpp): the power law F = k x^n +
     // b x^p x', the calibrated tennis ball for every coefficient not given, or
-    // the hysteretic tennis ball by name.
+    // the hysteretic or the two-mass tennis ball by name.
     ObjectReader c(*contact, "/ball/contact", "ball/contact", in.source, in.keys);
     c.check_known(design_keys("ball/contact"));
     const std::optional<std::string> law = c.string("law");
-    if (law && *law != "power" && *law != "hysteretic")
-      c.fail("law", "expected \"power\" or \"hysteretic\", got \"" + *law + "\"");
+    if (law && *law != "power" && *law != "hysteretic" && *law != "two_mass")
+      c.fail("law", "expected \"power\", \"hysteretic\" or \"two_mass\", got \"" + *law + "\"");
     if (law) c.record("law", "law");  // listed with the inputs as given
-    if (law == "hysteretic") {
+    if (law == "hysteretic" || law == "two_mass") {
       for (const char* coefficient : {"stiffness", "exponent", "damping", "damping_exponent"}) {
         if (c.has(coefficient))
-          c.fail(coefficient,
-                 "is a coefficient of the power law, not of the hysteretic ball "
-                 "(give \"law\": \"power\" or leave it out)");
+          c.fail(coefficient, "is a coefficient of the power law, not of the " + *law +
+                                  " ball (give \"law\": \"power\" or leave it out)");
       }
-      in.design.ball_contact = kHystereticTennisBallLaw;
+      in.design.ball_contact = law == "two_mass" ? kTwoMassTennisBallLaw : kHystereticTennisBallLaw;
     } else {
       in.design.ball_contact.stiffness = c.number("stiffness").value_or(kTennisBallLaw.stiffness);
       in.design.ball_contact.exponent = c.number("exponent").value_or(kTennisBallLaw.exponent);
@@ -1581,7 +1580,7 @@ Json design_to_json(const DesignFile& file) {
     put(ball, "ball", "cor_on_rigid_surface", *d.ball.cor_on_rigid_surface);
   const BallContactLaw& c = d.ball_contact;
   const BallContactLaw& t = kTennisBallLaw;
-  if (c.form == BallLawForm::kHysteretic) {
+  if (is_hysteretic(c.form)) {
     ball[si_key("ball", "contact")] = Json{{"law", to_string(c.form)}};
   } else if (c.stiffness != t.stiffness || c.exponent != t.exponent || c.damping != t.damping ||
              c.damping_exponent != t.damping_exponent) {

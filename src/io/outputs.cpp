@@ -179,7 +179,8 @@ const std::array kOutputs{
                "contact time of the solved collision, first touch to the ball's last separation",
                &collision<&CollisionResult::contact_time_s>, kNeedsCollision, false, true, true},
     OutputSpec{"peak_ball_compression_m", "m",
-               "largest compression of the ball in the solved collision (its law's x)",
+               "largest compression of the ball in the solved collision: how far its centre "
+               "came towards what it hit (one mass: its law's x)",
                &collision<&CollisionResult::peak_ball_compression_m>, kNeedsCollision, false, true,
                true},
     OutputSpec{"static_forward_deformation_m", "m",

@@ -212,6 +212,65 @@ TEST_CASE("The ITF's slow test on the relaxed hysteretic ball: its loop and its 
         Approx(std::pow(kItfStaticForce_N / kTennisBallLaw.stiffness, 1.0 / 1.5)).epsilon(1e-14));
 }
 
+TEST_CASE("The ITF's slow test on the two-mass ball: its wall in series with the internal spring") {
+  const StaticLoop loop = static_loop(kTwoMassTennisBallLaw);
+  // The calibration: the middles of the ITF's 5.6-7.4 mm and 8.0-10.8 mm.
+  CHECK(loop.forward_deformation_m == Approx(6.5e-3).epsilon(1e-9));
+  CHECK(loop.return_deformation_m == Approx(9.4e-3).epsilon(1e-9));
+  // In series: the internal spring G(d) = k_i d + k_3 d^3 carries the test's
+  // force over d, the wall the rest, up to 1 in in all; the loop is the wall's,
+  // k xw^2 / 2 - k xw^2 / (q + 1) at the wall's share xw.
+  const HystereticBallLaw& h = kTwoMassTennisBallLaw.hysteretic;
+  const BallBody& b = kTwoMassTennisBallLaw.body;
+  const auto G = [&](double d) {
+    return d * (b.internal_stiffness + b.internal_cubic_stiffness * d * d);
+  };
+  const double d80 = loop.forward_deformation_m - kItfStaticForce_N / h.wall_stiffness;
+  CHECK(G(d80) == Approx(kItfStaticForce_N).epsilon(1e-12));
+  const double k = h.wall_stiffness, q = h.wall_unloading;
+  // xw solves xw + d(k xw) = 1 in, d(F) the internal spring's compression at F.
+  double lo = 0.0, hi = kItfStaticMaxCompression_m;
+  for (int i = 0; i < 200; ++i) {
+    const double xw = 0.5 * (lo + hi), f = k * xw;
+    double dlo = 0.0, dhi = f / b.internal_stiffness;
+    for (int j = 0; j < 200; ++j) (G(0.5 * (dlo + dhi)) < f ? dlo : dhi) = 0.5 * (dlo + dhi);
+    (xw + 0.5 * (dlo + dhi) < kItfStaticMaxCompression_m ? lo : hi) = xw;
+  }
+  const double xw = 0.5 * (lo + hi);
+  CHECK(loop.loop_energy_J == Approx(0.5 * k * xw * xw - k * xw * xw / (q + 1.0)).epsilon(1e-9));
+  // With no internal compliance to speak of, the wall's own loop.
+  BallContactLaw stiff = kTwoMassTennisBallLaw;
+  stiff.body.internal_stiffness = 1e15;
+  stiff.body.internal_cubic_stiffness = 0.0;
+  BallContactLaw one = stiff;
+  one.form = BallLawForm::kHysteretic;
+  one.body = BallBody{};
+  CHECK(static_loop(stiff).forward_deformation_m ==
+        Approx(static_loop(one).forward_deformation_m).epsilon(1e-9));
+  CHECK(static_loop(stiff).return_deformation_m ==
+        Approx(static_loop(one).return_deformation_m).epsilon(1e-9));
+}
+
+TEST_CASE("A ball's body: two masses for the two-mass law, one for the others") {
+  BallContactLaw law = kTwoMassTennisBallLaw;
+  CHECK(law.validate().empty());
+  law.body.front_mass_fraction = 1.0;
+  CHECK(law.validate().find("front_mass_fraction") != std::string::npos);
+  law = kTwoMassTennisBallLaw;
+  law.body.internal_stiffness = 0.0;
+  CHECK(law.validate().find("internal_stiffness") != std::string::npos);
+  law = kTwoMassTennisBallLaw;
+  law.body.internal_cubic_stiffness = -1.0;
+  CHECK(law.validate().find("internal_cubic_stiffness") != std::string::npos);
+  law = kTwoMassTennisBallLaw;
+  law.body.internal_damping_ratio = 1.0;
+  CHECK(law.validate().find("internal_damping_ratio") != std::string::npos);
+  law = kHystereticTennisBallLaw;
+  law.body.front_mass_fraction = 0.5;  // a hysteretic ball of one mass given a second
+  CHECK(law.validate().find("one mass") != std::string::npos);
+  CHECK(std::string(to_string(BallLawForm::kTwoMass)) == "two_mass");
+}
+
 TEST_CASE("The hysteretic law refuses a branch above its backbone and a field out of range") {
   BallContactLaw law = kHystereticTennisBallLaw;
   CHECK(law.validate().empty());

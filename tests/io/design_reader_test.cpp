@@ -729,6 +729,14 @@ TEST_CASE("A ball's law is read by name and its rigid-surface COR as given, both
   CHECK(twice.design.ball_contact.form == BallLawForm::kHysteretic);
   CHECK(twice.design.ball.cor_on_rigid_surface == 0.3);
   CHECK(!ball("{}").design.ball.cor_on_rigid_surface);
+  // The two-mass ball by name, its body with it, and back under its name.
+  const DesignFile two = ball(R"({"contact": {"law": "two_mass"}})");
+  CHECK(two.design.ball_contact.form == BallLawForm::kTwoMass);
+  CHECK(two.design.ball_contact.body.front_mass_fraction ==
+        kTwoMassTennisBallLaw.body.front_mass_fraction);
+  CHECK(design_to_json(two).dump().find("\"two_mass\"") != std::string::npos);
+  CHECK(read_design(design_to_json(two), "again.json").design.ball_contact.form ==
+        BallLawForm::kTwoMass);
   const auto error = [&](const std::string& value) {
     return error_of((racquet + value + "}").c_str());
   };
@@ -736,6 +744,8 @@ TEST_CASE("A ball's law is read by name and its rigid-surface COR as given, both
   CHECK(has(error(R"({"contact": {"law": "hysteretic", "damping": 5}})"),
             "/ball/contact/damping: is a coefficient of the power law"));
   CHECK(has(error(R"({"contact": {"law": 1}})"), "/ball/contact/law"));
+  CHECK(has(error(R"({"contact": {"law": "two_mass", "exponent": 2}})"),
+            "/ball/contact/exponent: is a coefficient of the power law, not of the two_mass ball"));
   CHECK(has(error(R"({"cor_on_rigid_surface": "high"})"), "/ball/cor_on_rigid_surface"));
 }
 

@@ -412,7 +412,7 @@ DrawnDesign draw_design(Rng& rng, const std::string& fidelity, double typical_sh
   if (draw.chance(collision ? 0.45 : 0.2)) {
     Json contact = Json::object();
     if (rng.chance(0.3)) {
-      contact["law"] = "hysteretic";  // by name, no coefficients
+      contact["law"] = rng.chance(0.5) ? "hysteretic" : "two_mass";  // by name, no coefficients
     } else {
       if (draw.chance(0.7)) contact["stiffness"] = draw(kContactStiffness);
       if (draw.chance(0.6)) contact["exponent"] = draw(kContactExponent);
@@ -616,6 +616,7 @@ std::optional<Truth> read_truth(const Json& document) {
   t.ball_exponent = number(contact, "exponent").value_or(sweetspot::kTennisBallLaw.exponent);
   t.ball_hysteretic =
       contact.is_object() && contact.contains("law") && contact["law"] == "hysteretic";
+  t.ball_two_mass = contact.is_object() && contact.contains("law") && contact["law"] == "two_mass";
   const Json& impact = part(document, "impact");
   if (const auto from_tip = si(impact, "from_tip", kLength)) t.impact_from_butt_m = L - *from_tip;
   if (const auto from_butt = si(impact, "from_butt", kLength)) t.impact_from_butt_m = *from_butt;

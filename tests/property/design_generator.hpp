@@ -113,6 +113,9 @@ struct Truth {
   double ball_stiffness = 0.0, ball_exponent = 0.0;
   // ball.contact.law "hysteretic": its loading work (backbones of ball_contact.hpp) instead.
   bool ball_hysteretic = false;
+  // ball.contact.law "two_mass": its compression is its centre's, which no
+  // one law's stored energy bounds (its internal spring holds some too).
+  bool ball_two_mass = false;
   std::optional<double> impact_from_butt_m;  // absent: the code's default
   double impact_off_axis_m = 0.0;
 };

@@ -16,6 +16,8 @@ class EnergyLedger {
  public:
   // The ball's damping over a step: the work F dx less the stored energy's change dU.
   void book_ball(double force, double dx, double du) { ball_loss_ += force * dx - du; }
+  // A two-mass ball's internal dashpot over a step of length h at power 2 z_i w_i q'^2.
+  void book_ball_internal_damping(double h, double power) { ball_loss_ += h * power; }
   // The strings' dashpot c_s over a step of length h at relative velocity rel.
   void book_strings(double cs, double h, double rel) { strings_loss_ += cs * h * rel * rel; }
   // The modal damping over a step of length h at power sum 2 z w q'^2.
@@ -63,7 +65,8 @@ inline void EnergyLedger::report(const Ball& ball, const Bed& bed, const ModalSt
   res.implement_rigid_J = rigid;
   res.vibration_J = vibration + res.string_bed_energy_J;
   res.modal_damping_loss_J = modal_damping_loss_;
-  res.ball_loss_J = ball_loss_;
+  // What the ball's two halves still ring with is the ball's: it leaves as heat.
+  res.ball_loss_J = ball_loss_ + ball.internal_energy();
   res.strings_loss_J = strings_loss_;
 }
 

@@ -32,7 +32,7 @@ class StepMesh {
  public:
   template <BallLaw Law>
   StepMesh(const FrameAtImpact& frame, const std::optional<StringBedDynamics>& strings, double m,
-           const Law& law, double v1, const CollisionOptions& options)
+           const Law& law, const BallBody& body, double v1, const CollisionOptions& options)
       : steps_per_contact_(options.steps_per_contact) {
     // Time step from the linearised contact: the ball's secant stiffness at
     // its elastic peak compression on a rigid surface, in series with the strings.
@@ -50,10 +50,21 @@ class StepMesh {
     // binds for the calibrated ball at any tension in the strings' range.
     double frame_mobility = frame.inverse_effective_mass_per_kg;  // [1/kg], instantaneous
     for (const ModeAtImpact& md : frame.modes) frame_mobility += md.phi * md.phi;
+    // (A two-mass ball touches with its front mass, and its halves ring at
+    // w_i = sqrt(k_i / mu_i).)
     const double partner_mobility = strings ? 1.0 / strings->mass_kg : frame_mobility;
-    const double mu_ball = m / (1.0 + m * partner_mobility);
+    const double m_front = body.front_mass_fraction * m;
+    const double mu_ball = m_front / (1.0 + m_front * partner_mobility);
     const double x_ball = law.peak_compression(mu_ball, v1);
     double t_fast = kPi * std::sqrt(mu_ball / law.secant_stiffness(x_ball));
+    if (body.two_masses()) {
+      // At its stiffest: the internal spring's slope k_i + 3 k_3 d^2 where it
+      // would store all the ball's energy (k_i d^2 / 2 + k_3 d^4 / 4 = m v1^2 / 2).
+      const double mu_i = m_front * (m - m_front) / m, ki = body.internal_stiffness;
+      const double k3 = body.internal_cubic_stiffness, e = 0.5 * m * v1 * v1;
+      const double d2 = k3 > 0.0 ? (std::sqrt(ki * ki + 4.0 * k3 * e) - ki) / k3 : 2.0 * e / ki;
+      t_fast = std::min(t_fast, kPi * std::sqrt(mu_i / (ki + 3.0 * k3 * d2)));
+    }
     if (strings) {
       const double mu_bed = strings->mass_kg / (1.0 + strings->mass_kg * frame_mobility);
       t_fast = std::min(t_fast, kPi * std::sqrt(mu_bed / strings->stiffness_N_m));
