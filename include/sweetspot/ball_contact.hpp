@@ -133,17 +133,20 @@ inline constexpr BallContactLaw kHystereticTennisBallLaw{
 // Cross, Sports Eng. 2, 1999), which one mass cannot reach with a 6 mm
 // squeeze, and to the apparent COR of 0.40 mid-strings at 50 m/s (Cross 2004
 // Sec. VI: "about 0.4"), which a linear internal spring misses (0.25): G
-// stiffens. tests/core/collision_test.cpp recomputes each.
+// stiffens; and so that it leaves the surface still compressed, its centre
+// short of where it touched (Cross, Am. J. Phys. 67, 222, 1999, for every
+// ball he dropped), its COR falling with speed from 3 to 50 m/s.
+// tests/core/collision_test.cpp recomputes each.
 inline constexpr BallContactLaw kTwoMassTennisBallLaw{
     kTennisBallLaw.stiffness,
     kTennisBallLaw.exponent,
     kTennisBallLaw.damping,
     kTennisBallLaw.damping_exponent,
     BallLawForm::kTwoMass,
-    HystereticBallLaw{95674.9391903843, 9.15639285152465e-4, 1.0999738348796751e7,
-                      28590.74975938266, 1.0147336922426746, 5.989425593297962, 1.9117544377107318,
-                      133.57524887306366, 0.0},
-    BallBody{0.528264957504608, 21132.984207113583, 3.725262785627248e7, 0.011635715252420036}};
+    HystereticBallLaw{69531.67605741009, 1.3323948987784388e-3, 5.610793381568909e6,
+                      65250.01248842569, 1.0009091755661441, 11.827013398442473, 3.051190579382525,
+                      30.747956455208215, 0.0},
+    BallBody{0.5057181705840291, 14058.065604957594, 4.052479014432263e7, 0.05382218494280447}};
 inline constexpr double kTennisBallDiameter_m = 0.065;
 
 // Defaults of the string bed's moving mass and loss (docs/model.md, "The solved
