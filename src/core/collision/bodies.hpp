@@ -45,13 +45,10 @@ struct Ball {
 
   void set_step(double h) { damp = two_masses() ? 1.0 / (1.0 + 0.5 * h * ci / mu) : 1.0; }
 
-  // The internal spring's discrete gradient from d to d1, and its derivative in d1.
+  // The internal spring's discrete gradient from d to d1.
   double inner_gradient(double d1) const {
     const double s = d + d1;
     return 0.5 * ki * s + 0.25 * k3 * s * (d * d + d1 * d1);
-  }
-  double inner_gradient_slope(double d1) const {
-    return 0.5 * ki + 0.25 * k3 * ((d + d1) * (d + d1) + 2.0 * d1 * d1);
   }
   double inner_energy(double dd) const { return dd * dd * (0.5 * ki + 0.25 * k3 * dd * dd); }
 
