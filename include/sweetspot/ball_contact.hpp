@@ -147,7 +147,8 @@ inline constexpr BallContactLaw kTwoMassTennisBallLaw{
                       65250.01248842569, 1.0009091755661441, 11.827013398442473, 3.051190579382525,
                       30.747956455208215, 0.0},
     BallBody{0.5057181705840291, 14058.065604957594, 4.052479014432263e7, 0.05382218494280447}};
-inline constexpr double kTennisBallDiameter_m = 0.065;
+// The middle of the ITF's 6.54-6.86 cm (Rules of Tennis, Appendix I).
+inline constexpr double kTennisBallDiameter_m = 0.067;
 
 // Defaults of the string bed's moving mass and loss (docs/model.md, "The solved
 // collision"): a few grams of string move with the ball (1-8 g plausible), and

@@ -104,6 +104,9 @@ struct Ball {
   // the contact law's loss is set to match it (with_rigid_surface_cor(),
   // collision.hpp) where the collision is solved; none, the law as given.
   std::optional<double> cor_on_rigid_surface = std::nullopt;
+  // [m], in (0, kMaxLength_m]: a solved collision that squeezes the ball by
+  // more than its radius (its centre past what it hits) is refused.
+  double diameter_m = kTennisBallDiameter_m;
 };
 
 // What holds the implement when the ball hits it (docs/model.md, "Supports").

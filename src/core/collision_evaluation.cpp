@@ -106,6 +106,34 @@ FrameAtImpact DesignCollision::frame_at(double from_butt_m, double off_axis_m) c
   return frame;
 }
 
+namespace {
+
+// The input to name when the ball is squeezed past its radius: of those that
+// set the squeeze, the one furthest in ratio from the calibrated racquet's
+// ball (collision_suspect()'s rule), the speed on a tie.
+Suspect squeeze_suspect(const Design& d) {
+  const struct {
+    const char* field;
+    double value, reference;
+  } candidates[] = {{"ball/speed_m_s", d.ball.speed_m_s, 50.0},
+                    {"ball/diameter_m", d.ball.diameter_m, kTennisBallDiameter_m},
+                    {"strings/tension_N", d.strings ? d.strings->tension_N : 250.0, 250.0},
+                    {"ball/contact/stiffness", d.ball_contact.stiffness, kTennisBallLaw.stiffness},
+                    {"ball/mass_kg", d.ball.mass_kg, kTennisBallMass_kg}};
+  Suspect worst{candidates[0].field, candidates[0].value};
+  double worst_ratio = -1.0;
+  for (const auto& c : candidates) {
+    const double ratio = std::abs(std::log(c.value / c.reference));
+    if (ratio > worst_ratio) {
+      worst_ratio = ratio;
+      worst = {c.field, c.value};
+    }
+  }
+  return worst;
+}
+
+}  // namespace
+
 CollisionResult DesignCollision::at(double from_butt_m, double off_axis_m,
                                     const CollisionOptions& options) const {
   const Design& design = design_;
@@ -136,6 +164,14 @@ CollisionResult DesignCollision::at(double from_butt_m, double off_axis_m,
            "the contact lasts " + detail::format_significant(r.contact_time_s) + " s, outside [" +
                detail::format_number(kMinDuration_s) + ", " +
                detail::format_number(kMaxDuration_s) + "] s");
+  }
+  // Squeezed by more than its radius, the ball's centre would have passed what
+  // it hits: the contact law has been taken beyond any ball.
+  if (const double radius = 0.5 * design.ball.diameter_m; !(r.peak_ball_compression_m < radius)) {
+    refuse(squeeze_suspect(design),
+           "the ball is squeezed by " + detail::format_significant(r.peak_ball_compression_m) +
+               " m, more than its radius of " + detail::format_number(radius) +
+               " m: its centre would have passed what it hits");
   }
   const double M_eff = 1.0 / frame.inverse_effective_mass_per_kg;  // inf: immovable
   if (const std::string why =

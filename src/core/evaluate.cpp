@@ -204,8 +204,20 @@ Evaluation evaluate(const Design& design, Fidelity fidelity, const EvaluationOpt
                          " m/s, below the model's least speed of " +
                          detail::format_number(kMinSpeed_m_s) + " m/s");
   }
-  Evaluation e = evaluate_at_rest(
-      in_play, fidelity, {.rel_tol = options.rel_tol, .modes = options.modes, .validated = false});
+  Evaluation e;
+  try {
+    e = evaluate_at_rest(in_play, fidelity,
+                         {.rel_tol = options.rel_tol, .modes = options.modes, .validated = false});
+  } catch (const ModelRefusal& refusal) {
+    // The collision saw the meeting speed, which is not the file's ball speed:
+    // the swing that added V is the input to name.
+    if (refusal.field() != "ball/speed_m_s") throw;
+    throw ModelRefusal("swing/angular_speed_rad_s", swing.angular_speed_rad_s,
+                       refusal.detail() + " (the ball and the racquet meet at " +
+                           detail::format_number(in_play.ball.speed_m_s) + " m/s: the ball's " +
+                           detail::format_number(design.ball.speed_m_s) + " and the racquet's " +
+                           detail::format_number(V) + ")");
+  }
   e.swing = swing;
   e.swing_assumed = false;
   e.incoming_speed_m_s = design.ball.speed_m_s;

@@ -1097,6 +1097,8 @@ void read_ball(ObjectReader& top, Reading& in) {
   in.design.ball.speed_m_s =
       ball.get("speed", Dimension::kSpeed, "speed_m_s", in.defaults.ball.speed_m_s);
   in.design.ball.cor_on_rigid_surface = ball.reader().number("cor_on_rigid_surface");
+  in.design.ball.diameter_m =
+      ball.get("diameter", Dimension::kLength, "diameter_m", in.defaults.ball.diameter_m);
   if (const Json* contact = ball.reader().child("contact")) {
     // The ball's contact law (ball_contact.hpp): the power law F = k x^n +
     // b x^p x', the calibrated tennis ball for every coefficient not given, or
@@ -1576,6 +1578,7 @@ Json design_to_json(const DesignFile& file) {
   Json& ball = j[si_key("", "ball")] = Json::object();
   put(ball, "ball", "mass", d.ball.mass_kg);
   put(ball, "ball", "speed", d.ball.speed_m_s);
+  put(ball, "ball", "diameter", d.ball.diameter_m);
   if (d.ball.cor_on_rigid_surface)
     put(ball, "ball", "cor_on_rigid_surface", *d.ball.cor_on_rigid_surface);
   const BallContactLaw& c = d.ball_contact;

@@ -156,5 +156,40 @@ TEST_CASE("A solved collision breaking each ledger invariant is refused, naming 
   CHECK(collision_suspect(d, 5.0).field == "frame/fundamental_free_Hz");
 }
 
+TEST_CASE("A ball squeezed past its radius is refused, naming what squeezed it") {
+  // The calibrated racquet's ball reaches its radius between 60 and 70 m/s:
+  // answered below, refused above, and the answer given a wider ball is the
+  // squeeze the refusal saw, past the 6.7 cm ball's radius.
+  Design d = tour_100_strung();
+  const double radius = 0.5 * kTennisBallDiameter_m;
+  d.ball.speed_m_s = 60.0;
+  const Evaluation below = evaluate(d, Fidelity::kCollision);
+  CHECK(below.details->collision->peak_ball_compression_m < radius);
+  d.ball.speed_m_s = 70.0;
+  try {
+    evaluate(d, Fidelity::kCollision);
+    FAIL("a ball squeezed past its radius was answered");
+  } catch (const ModelRefusal& refusal) {
+    CHECK(refusal.field() == "ball/speed_m_s");
+    CHECK(refusal.value() == 70.0);
+    CHECK_THAT(refusal.what(), Catch::Contains("more than its radius"));
+  }
+  Design wide = d;
+  wide.ball.diameter_m = 0.1;
+  const double squeeze =
+      evaluate(wide, Fidelity::kCollision).details->collision->peak_ball_compression_m;
+  CHECK(squeeze > radius);
+  CHECK(squeeze < 0.5 * wide.ball.diameter_m);
+  // A ball far smaller than a tennis ball is the input named.
+  Design small = tour_100_strung();
+  small.ball.diameter_m = 0.005;
+  try {
+    evaluate(small, Fidelity::kCollision);
+    FAIL("a 5 mm ball squeezed by centimetres was answered");
+  } catch (const ModelRefusal& refusal) {
+    CHECK(refusal.field() == "ball/diameter_m");
+  }
+}
+
 }  // namespace
 }  // namespace sweetspot

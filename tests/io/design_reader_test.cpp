@@ -580,6 +580,7 @@ TEST_CASE("Each field's default in the table is the reader's and the schema's") 
       {"forearm/equivalent_mass_kg", a.forearm_equivalent_mass_kg},
       {"ball/mass_kg", a.ball.mass_kg},
       {"ball/speed_m_s", a.ball.speed_m_s},
+      {"ball/diameter_m", a.ball.diameter_m},
       {"ball/contact/stiffness", a.ball_contact.stiffness},
       {"ball/contact/exponent", a.ball_contact.exponent},
       {"ball/contact/damping", a.ball_contact.damping},

@@ -6,6 +6,8 @@
 #include <set>
 #include <string>
 
+#include "sweetspot/collision.hpp"
+
 namespace sweetspot::io {
 namespace {
 
@@ -35,6 +37,7 @@ TEST_CASE("On a rig the player's outputs are absent, on a rigid surface all but 
   d.strings->tension_N = 250.0;
   d.cor_given = false;
   d.impact_from_butt_m = 0.5;
+  d.ball.speed_m_s = kDropTestSpeed_m_s;  // the drop tests' rigs
   for (const Support::Kind kind : {Support::Kind::kHeadClamped, Support::Kind::kRigidSurface}) {
     d.support.kind = kind;
     const Evaluation e = evaluate(d, Fidelity::kCollision);

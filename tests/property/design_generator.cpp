@@ -77,6 +77,8 @@ const Range kForearm{1e-6, 1e12, true, 0.0, 1e12, 0.3, 1.0};
 // ball: mass in (0, 1e6] kg, speed in (0, kMaxSpeed_m_s = 1e4] m/s.
 const Range kBallMass{1e-6, 1e6, true, kTiny, 1e6, 0.05, 0.16};
 const Range kBallSpeed{1e-6, 1e4, true, kTiny, 1e4, 5.0, 60.0};
+// ball: diameter in (0, kMaxLength_m = 100] m.
+const Range kBallDiameter{1e-4, 100.0, true, kTiny, 100.0, 0.06, 0.075};
 // swing.hpp: angular speed in (0, kMaxAngularSpeed_rad_s = 100] rad/s, pivot
 // in [0, kMaxPivotBeyondButt_m = 3] m beyond the butt, the speed at the impact
 // in (0, kMaxSpeed_m_s = 1e4] m/s.
@@ -409,6 +411,7 @@ DrawnDesign draw_design(Rng& rng, const std::string& fidelity, double typical_sh
   Json ball = Json::object();
   if (draw.chance(0.4)) put(rng, ball, "mass", kMass, draw(kBallMass));
   if (draw.chance(0.6)) put(rng, ball, "speed", kSpeed, draw(kBallSpeed));
+  if (draw.chance(0.2)) put(rng, ball, "diameter", kLength, draw(kBallDiameter));
   if (draw.chance(collision ? 0.45 : 0.2)) {
     Json contact = Json::object();
     if (rng.chance(0.3)) {
@@ -607,6 +610,7 @@ std::optional<Truth> read_truth(const Json& document) {
   const Json& ball = part(document, "ball");
   t.ball_mass_kg = si(ball, "mass", kMass).value_or(0.057);
   t.ball_speed_m_s = si(ball, "speed", kSpeed).value_or(50.0);
+  t.ball_diameter_m = si(ball, "diameter", kLength).value_or(sweetspot::kTennisBallDiameter_m);
   const Json& swing = part(document, "swing");
   t.swing_angular_speed_rad_s = number(swing, "angular_speed_rad_s");
   t.swing_speed_at_impact_m_s = si(swing, "speed_at_impact", kSpeed);

@@ -97,6 +97,7 @@ struct Truth {
   std::optional<HeadShape> head;
   std::optional<double> twistweight_kg_m2;
   double ball_mass_kg = 0.057, ball_speed_m_s = 50.0;
+  double ball_diameter_m = 0.067;
   // A swing (swing.hpp): the racquet's speed at the impact, given or omega (pivot + x).
   std::optional<double> swing_angular_speed_rad_s, swing_speed_at_impact_m_s;
   double swing_pivot_beyond_butt_m = 0.0;

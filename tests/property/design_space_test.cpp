@@ -408,6 +408,10 @@ std::vector<Finding> judge_answer(const Json& document, const Evaluation& e,
                number(eq17->M_eff_kg) + " kg at " + number(impact) + " m from the butt");
   }
   j.at_most("apparent COR above the COR", "apparent_cor", e.apparent_cor, e.cor, kCorRoundOff);
+  // The ball squeezed by less than its radius: further, its centre would pass what it hits.
+  if (collision)
+    j.at_most("ball squeezed past its radius", "peak_ball_compression_m",
+              collision->peak_ball_compression_m, 0.5 * truth->ball_diameter_m, 0.0);
   if (eq17) {
     const double Me = eq17->M_eff_kg;
     const double bound = -m / (Me + m);  // Eq. (16) at e = 0
@@ -970,10 +974,22 @@ Trial through_commands(const Sandbox& box, const Json& design, const std::string
             "evaluate " + t.level + ", " + command + " " + level);
   };
 
+  // compare and report answer for the player and the arm: a rig that evaluate
+  // answers, which has neither, they refuse naming /support (require_player(),
+  // evaluate.hpp).
+  const auto support = design.find("support");
+  const bool rig_file = support != design.end() &&
+                        !(support->is_string() && (*support == "free" || *support == "hand"));
+  const auto refuses_rig = [&](const std::string& command, const Run& r) {
+    if (!rig_file || !t.answered) return false;
+    if (r.status != 2 || r.err.find(": /support: ") == std::string::npos)
+      found(command + " does not refuse a rig naming /support", r.err);
+    return true;
+  };
   if (wanted("compare")) {  // with itself
     const Run r = box.run("compare design.json design.json --format json");
     const std::optional<Json> j = r.status == 0 ? parse(r.out) : std::nullopt;
-    if (agrees("compare", j.has_value(), r.err) && j) {
+    if (!refuses_rig("compare", r) && agrees("compare", j.has_value(), r.err) && j) {
       for (const Json& one : (*j)["designs"]) {
         same("compare", numbers_of(one["values"]), "");
         same_fidelity("compare", one.value("fidelity", ""));
@@ -983,7 +999,7 @@ Trial through_commands(const Sandbox& box, const Json& design, const std::string
   if (with_report && wanted("report")) {  // its page, to the digits it prints
     fs::remove(box.path("report.html"));
     const Run r = box.run("report design.json --html report.html");
-    if (agrees("report", r.status == 0, r.err) && r.status == 0) {
+    if (!refuses_rig("report", r) && agrees("report", r.status == 0, r.err) && r.status == 0) {
       const auto cells = report_cells(slurp(box.path("report.html")));
       if (cells.empty()) found("report prints no outputs", r.out);
       for (const io::OutputSpec& spec : io::output_specs()) {
