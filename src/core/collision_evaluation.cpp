@@ -171,7 +171,10 @@ CollisionResult DesignCollision::at(double from_butt_m, double off_axis_m,
     refuse(squeeze_suspect(design),
            "the ball is squeezed by " + detail::format_significant(r.peak_ball_compression_m) +
                " m, more than its radius of " + detail::format_number(radius) +
-               " m: its centre would have passed what it hits");
+               " m: its centre would have passed what it hits" +
+               (design.ball_contact.form == BallLawForm::kPower
+                    ? "; the hysteretic ball (ball.contact.law) stiffens as it squeezes"
+                    : ""));
   }
   const double M_eff = 1.0 / frame.inverse_effective_mass_per_kg;  // inf: immovable
   if (const std::string why =
