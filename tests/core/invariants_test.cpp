@@ -156,6 +156,16 @@ TEST_CASE("A solved collision breaking each ledger invariant is refused, naming 
   CHECK(collision_suspect(d, 5.0).field == "frame/fundamental_free_Hz");
 }
 
+// The refusal of the solved collision of `d`: "field: detail", empty if answered.
+std::string collision_refusal(const Design& d) {
+  try {
+    evaluate(d, Fidelity::kCollision);
+  } catch (const ModelRefusal& refusal) {
+    return refusal.what();
+  }
+  return {};
+}
+
 TEST_CASE("A ball squeezed past its radius is refused, naming what squeezed it") {
   // The calibrated racquet's ball reaches its radius between 60 and 70 m/s:
   // answered below, refused above, and the answer given a wider ball is the
@@ -166,14 +176,9 @@ TEST_CASE("A ball squeezed past its radius is refused, naming what squeezed it")
   const Evaluation below = evaluate(d, Fidelity::kCollision);
   CHECK(below.details->collision->peak_ball_compression_m < radius);
   d.ball.speed_m_s = 70.0;
-  try {
-    evaluate(d, Fidelity::kCollision);
-    FAIL("a ball squeezed past its radius was answered");
-  } catch (const ModelRefusal& refusal) {
-    CHECK(refusal.field() == "ball/speed_m_s");
-    CHECK(refusal.value() == 70.0);
-    CHECK_THAT(refusal.what(), Catch::Contains("more than its radius"));
-  }
+  const std::string refused = collision_refusal(d);
+  CHECK(refused.starts_with("ball/speed_m_s: "));
+  CHECK_THAT(refused, Catch::Contains("more than its radius"));
   Design wide = d;
   wide.ball.diameter_m = 0.1;
   const double squeeze =
@@ -183,12 +188,7 @@ TEST_CASE("A ball squeezed past its radius is refused, naming what squeezed it")
   // A ball far smaller than a tennis ball is the input named.
   Design small = tour_100_strung();
   small.ball.diameter_m = 0.005;
-  try {
-    evaluate(small, Fidelity::kCollision);
-    FAIL("a 5 mm ball squeezed by centimetres was answered");
-  } catch (const ModelRefusal& refusal) {
-    CHECK(refusal.field() == "ball/diameter_m");
-  }
+  CHECK(collision_refusal(small).starts_with("ball/diameter_m: "));
 }
 
 }  // namespace
