@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -61,6 +62,35 @@ double golden_section_max(F&& f, double lo, double hi, double tolerance_m) {
   return 0.5 * (lo + hi);
 }
 
+// The point of the string bed's long axis [m from the tip] where `value` of
+// the evaluation there is largest, and that evaluation, by golden-section
+// search to `tolerance_m`. A point the model refuses (a ball squeezed past its
+// radius where the frame gives less) counts as -infinity, so the search keeps
+// to the points it answers; where it ends on one it refuses, the best point it
+// answered is the answer (std::nullopt when it answered none).
+template <class Value>
+std::optional<SpotOutcome> max_along_axis(const io::DesignFile& design, std::string_view fidelity,
+                                          double rel_tol, double tolerance_m, Value value) {
+  const auto [lo, hi] = string_bed_axis(design);
+  std::optional<SpotOutcome> best_answered;
+  const auto value_at = [&](double from_tip) {
+    try {
+      SpotOutcome here{from_tip, evaluate_at(design, from_tip, fidelity, rel_tol)};
+      const double v = value(here.evaluation);
+      if (!best_answered || v > value(best_answered->evaluation)) best_answered = std::move(here);
+      return v;
+    } catch (const io::InputError&) {
+      return -std::numeric_limits<double>::infinity();
+    }
+  };
+  const double best = golden_section_max(value_at, lo, hi, tolerance_m);
+  try {
+    return SpotOutcome{best, evaluate_at(design, best, fidelity, rel_tol)};
+  } catch (const io::InputError&) {
+    return best_answered;
+  }
+}
+
 void require_tolerance(double tolerance_m) {
   if (!(tolerance_m > 0.0)) {
     throw std::invalid_argument("tolerance_m: must be > 0 m, got " + std::to_string(tolerance_m));
@@ -74,12 +104,8 @@ std::optional<SpotOutcome> best_rebound_on_axis(const io::DesignFile& design, do
   require_tolerance(tolerance_m);
   if (!design.design.strings || !has_stiffness(design.design) || design.design.cor_rigid)
     return std::nullopt;
-  const auto [lo, hi] = string_bed_axis(design);
-  auto cor_at = [&](double from_tip) {
-    return evaluate_at(design, from_tip, "collision", rel_tol).apparent_cor;
-  };
-  const double best = golden_section_max(cor_at, lo, hi, tolerance_m);
-  return SpotOutcome{best, evaluate_at(design, best, "collision", rel_tol)};
+  return max_along_axis(design, "collision", rel_tol, tolerance_m,
+                        [](const Evaluation& e) { return e.apparent_cor; });
 }
 
 std::optional<SpotOutcome> power_point_on_axis(const io::DesignFile& design,
@@ -87,12 +113,8 @@ std::optional<SpotOutcome> power_point_on_axis(const io::DesignFile& design,
                                                double tolerance_m) {
   require_tolerance(tolerance_m);
   if (!is_racquet(design)) return std::nullopt;
-  const auto [lo, hi] = string_bed_axis(design);
-  auto shot_at = [&](double from_tip) {
-    return evaluate_at(design, from_tip, fidelity, rel_tol).shot_speed_m_s;
-  };
-  const double best = golden_section_max(shot_at, lo, hi, tolerance_m);
-  return SpotOutcome{best, evaluate_at(design, best, fidelity, rel_tol)};
+  return max_along_axis(design, fidelity, rel_tol, tolerance_m,
+                        [](const Evaluation& e) { return e.shot_speed_m_s; });
 }
 
 Evaluation with_power_point(const io::DesignFile& design, Evaluation evaluation, double rel_tol) {

@@ -103,7 +103,9 @@ inline constexpr double kBestReboundTolerance_m = 0.005;
 // throat-side of the node (5.5 cm on designs/racquets/tour-100-strung.json,
 // 17.7 cm from the tip; the node is 12.2 cm). std::nullopt when the
 // design lacks what the collision needs (a string tension, the frame's
-// stiffness, no cor_rigid). Throws like io::evaluate_design_file.
+// stiffness, no cor_rigid). A point the model refuses (io::InputError) is
+// left out of the search: where it ends on one, the best point it answered
+// (std::nullopt if none).
 std::optional<SpotOutcome> best_rebound_on_axis(const io::DesignFile& design, double rel_tol,
                                                 double tolerance_m = kBestReboundTolerance_m);
 
@@ -115,8 +117,8 @@ std::optional<SpotOutcome> best_rebound_on_axis(const io::DesignFile& design, do
 // best_rebound_on_axis() is. Its racquet speed V grows towards the tip while
 // e_A falls there, so it lies tip-side of the best rebound; the rigid model
 // with a given COR has its best rebound at the centre of mass. std::nullopt
-// for a design without a racquet head (is_racquet()). Throws like
-// io::evaluate_design_file.
+// for a design without a racquet head (is_racquet()). Points the model refuses
+// are left out as there.
 std::optional<SpotOutcome> power_point_on_axis(const io::DesignFile& design,
                                                std::string_view fidelity, double rel_tol,
                                                double tolerance_m = kBestReboundTolerance_m);
