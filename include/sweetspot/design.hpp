@@ -31,6 +31,9 @@ inline constexpr double kMinSpeed_m_s = 1e-3;
 // rigid-body bound on the apparent COR by round-off alone).
 inline constexpr double kMinBallMass_kg = 1e-4;
 inline constexpr double kMinImplementMass_kg = 1e-3;
+// The smallest ball, 0.1 mm across: a squeeze compared with its radius below
+// that is round-off of the contact's step.
+inline constexpr double kMinBallDiameter_m = 1e-4;
 // A grip a million times stiffer (and its dashpot a hundred thousand times
 // stronger) than the calibrated hand: past these the hand is rigid for every
 // mode the model resolves.
@@ -104,7 +107,7 @@ struct Ball {
   // the contact law's loss is set to match it (with_rigid_surface_cor(),
   // collision.hpp) where the collision is solved; none, the law as given.
   std::optional<double> cor_on_rigid_surface = std::nullopt;
-  // [m], in (0, kMaxLength_m]: a solved collision that squeezes the ball by
+  // [m], in [kMinBallDiameter_m, kMaxLength_m]: a solved collision that squeezes the ball by
   // more than its radius (its centre past what it hits) is refused.
   double diameter_m = kTennisBallDiameter_m;
 };

@@ -42,7 +42,8 @@ void validate(const Design& d) {
   detail::require_positive("ball/mass_kg", d.ball.mass_kg, "kg");
   detail::require_in_range("ball/mass_kg", d.ball.mass_kg, kMinBallMass_kg, kMaxMass_kg, "kg");
   detail::require_positive("ball/diameter_m", d.ball.diameter_m, "m");
-  detail::require_in_range("ball/diameter_m", d.ball.diameter_m, 0.0, kMaxLength_m, "m");
+  detail::require_in_range("ball/diameter_m", d.ball.diameter_m, kMinBallDiameter_m, kMaxLength_m,
+                           "m");
   // The implement's own parts are bounded where they are built; in all it
   // weighs at least kMinImplementMass_kg.
   if (!(d.implement.mass_properties().mass_kg >= kMinImplementMass_kg)) {

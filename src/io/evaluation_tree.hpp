@@ -86,6 +86,8 @@ void write_evaluation(Node& root, const DesignFile& file, const Evaluation& e) {
     input("forearm/equivalent_mass_kg", d.forearm_equivalent_mass_kg, "kg");
     input("ball/mass_kg", d.ball.mass_kg, "kg");
     input("ball/speed_m_s", d.ball.speed_m_s, "m/s");
+    // What the solved collision's squeeze is held to (its radius).
+    if (e.details && e.details->collision) input("ball/diameter_m", d.ball.diameter_m, "m");
     input("impact/from_butt_m", d.impact_from_butt_m, "m");
     if (d.stiffness.RA) input("frame/RA", *d.stiffness.RA, "");
   }

@@ -480,6 +480,8 @@ std::string inputs_markdown(const DesignFile& file, const Evaluation& e) {
   }
   rest += line("ball/mass_kg", "ball mass", d.ball.mass_kg, "kg");
   rest += line("ball/speed_m_s", "ball speed", d.ball.speed_m_s, "m/s");
+  if (e.details && e.details->collision)
+    rest += line("ball/diameter_m", "ball diameter", d.ball.diameter_m, "m");
   if (!rest.empty())
     md += "\nDefaulted or derived (defaults are Cross (2004) Table I, top row):\n\n" + rest;
   if (plate) return md + "\nNo implement: the ball meets a rigid plate.\n";

@@ -554,9 +554,18 @@ void check_start(const Study& study, const std::string& source) {
     }
   }();
   try {
-    evaluate_in(study, at_start);
-  } catch (const std::invalid_argument& e) {
-    io::rethrow_in(at_start, e);
+    try {
+      evaluate_in(study, at_start);
+    } catch (const std::invalid_argument& e) {
+      io::rethrow_in(at_start, e);
+    }
+  } catch (const io::InputError& e) {
+    // A start the model cannot answer (a ball squeezed past its radius at the
+    // start's speed) is the study's to move: its variables' start.
+    if (!e.model_refused()) throw;
+    throw io::InputError(source, "/variables",
+                         "the model cannot answer the start point: " + std::string(e.what()) +
+                             "; give each variable a start it answers");
   }
   if (!study.over_impacts) return;
   const double length_m = at_start.design.implement.length_m();

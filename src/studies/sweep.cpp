@@ -131,7 +131,12 @@ class SweepWorker {
     document_[pointers_[0]] = v;
     if (pointers_.size() == 2) document_[pointers_[1]] = y;
     const io::DesignFile design = io::read_design_lean(document_, study_.design_source);
-    evaluation_ = evaluate_in(study_, design);
+    try {
+      evaluation_ = evaluate_in(study_, design);
+    } catch (const std::invalid_argument& e) {
+      // Read again with the key map, to name the user's key ("/ball/diameter_cm").
+      io::rethrow_in(io::read_design(document_, study_.design_source), e);
+    }
     share_row(design.design, row);
     return &evaluation_;
   }
