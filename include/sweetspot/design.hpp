@@ -31,8 +31,8 @@ inline constexpr double kMinSpeed_m_s = 1e-3;
 // rigid-body bound on the apparent COR by round-off alone).
 inline constexpr double kMinBallMass_kg = 1e-4;
 inline constexpr double kMinImplementMass_kg = 1e-3;
-// The smallest ball, 0.1 mm across: a squeeze compared with its radius below
-// that is round-off of the contact's step.
+// The smallest ball, 0.1 mm across, as the lightest is 0.1 g: the range the
+// model is held to (no ball law was verified on one), not a measured limit.
 inline constexpr double kMinBallDiameter_m = 1e-4;
 // A grip a million times stiffer (and its dashpot a hundred thousand times
 // stronger) than the calibrated hand: past these the hand is rigid for every

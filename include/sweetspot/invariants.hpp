@@ -26,11 +26,15 @@ struct Evaluation;
 // its stated range is a FieldError from validate(), exit 2).
 class ModelRefusal : public FieldError {
  public:
-  ModelRefusal(std::string field, double value, std::string detail);
+  // `reason`: what broke, without the input blamed for it (detail when empty),
+  // so that a caller who knows better whom to blame can say so in its words.
+  ModelRefusal(std::string field, double value, std::string detail, std::string reason = {});
   double value() const { return value_; }
+  const std::string& reason() const { return reason_; }
 
  private:
   double value_;
+  std::string reason_;
 };
 
 // Round-off allowed in the invariants, relative to the ball's incident kinetic
@@ -65,6 +69,14 @@ struct Suspect {
   double value = 0.0;
 };
 Suspect collision_suspect(const Design& design, double fundamental_free_Hz);
+
+// The input to name when the solved collision squeezes the ball past its
+// radius: of those that set the squeeze, the one furthest in ratio from the
+// calibrated racquet's in the direction that squeezes more (a faster, heavier
+// ball; a smaller one; a softer law, its stiffness lower or its exponent
+// higher; a tighter bed), the speed when none is (the law itself squeezes
+// past the radius).
+Suspect squeeze_suspect(const Design& design);
 
 // Throws ModelRefusal when broken_invariant(e, design) is not empty, naming
 // the input most likely to have taken the model out of its range.

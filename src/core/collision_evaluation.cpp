@@ -106,39 +106,6 @@ FrameAtImpact DesignCollision::frame_at(double from_butt_m, double off_axis_m) c
   return frame;
 }
 
-namespace {
-
-// The input to name when the ball is squeezed past its radius: of those that
-// set the squeeze, the one furthest in ratio from the calibrated racquet's in
-// the direction that squeezes more (a faster, heavier ball; a smaller one; a
-// softer law, its stiffness lower or its exponent higher; a tighter bed); the
-// speed when none is (the law itself squeezes past the radius).
-Suspect squeeze_suspect(const Design& d) {
-  const struct {
-    const char* field;
-    double value, reference;
-    int squeezes;  // +1: more squeeze above the reference, -1: below it
-  } candidates[] = {
-      {"ball/speed_m_s", d.ball.speed_m_s, 50.0, +1},
-      {"ball/diameter_m", d.ball.diameter_m, kTennisBallDiameter_m, -1},
-      {"ball/contact/stiffness", d.ball_contact.stiffness, kTennisBallLaw.stiffness, -1},
-      {"ball/contact/exponent", d.ball_contact.exponent, kTennisBallLaw.exponent, +1},
-      {"strings/tension_N", d.strings ? d.strings->tension_N : 250.0, 250.0, +1},
-      {"ball/mass_kg", d.ball.mass_kg, kTennisBallMass_kg, +1}};
-  Suspect worst{candidates[0].field, candidates[0].value};
-  double worst_ratio = 0.0;
-  for (const auto& c : candidates) {
-    const double ratio = c.squeezes * std::log(c.value / c.reference);
-    if (ratio > worst_ratio) {
-      worst_ratio = ratio;
-      worst = {c.field, c.value};
-    }
-  }
-  return worst;
-}
-
-}  // namespace
-
 CollisionResult DesignCollision::at(double from_butt_m, double off_axis_m,
                                     const CollisionOptions& options) const {
   const Design& design = design_;
@@ -150,7 +117,8 @@ CollisionResult DesignCollision::at(double from_butt_m, double off_axis_m,
     throw ModelRefusal(blame.field, blame.value,
                        "the solved collision cannot answer this design (" + why + "); " +
                            detail::format_number(blame.value) +
-                           " is the input furthest from the racquet it was verified on");
+                           " is the input furthest from the racquet it was verified on",
+                       why);
   };
   if (!r.separated) {
     refuse(collision_suspect(design, f1), "the ball has not left the strings for good after " +

@@ -212,15 +212,13 @@ Evaluation evaluate(const Design& design, Fidelity fidelity, const EvaluationOpt
     // The collision saw the meeting speed, which is not the file's ball speed:
     // the swing that added V is the input to name, with the speeds that met.
     if (refusal.field() != "ball/speed_m_s") throw;
-    std::string why = refusal.detail();
-    const std::string blamed = "; " + detail::format_number(refusal.value()) +
-                               " is the input furthest from the racquet it was verified on";
-    if (why.ends_with(blamed)) why.resize(why.size() - blamed.size());
     throw ModelRefusal("swing/angular_speed_rad_s", swing.angular_speed_rad_s,
-                       why + " at the speed the ball and the racquet meet, " +
+                       "the solved collision cannot answer this design (" + refusal.reason() +
+                           ") at the speed the ball and the racquet meet, " +
                            detail::format_number(in_play.ball.speed_m_s) + " m/s (the ball's " +
                            detail::format_number(design.ball.speed_m_s) + " and the racquet's " +
-                           detail::format_number(V) + ")");
+                           detail::format_number(V) + ")",
+                       refusal.reason());
   }
   e.swing = swing;
   e.swing_assumed = false;

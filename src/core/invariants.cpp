@@ -1,6 +1,7 @@
 #include "sweetspot/invariants.hpp"
 
 #include <cmath>
+#include <span>
 #include <string>
 #include <utility>
 
@@ -11,8 +12,10 @@
 
 namespace sweetspot {
 
-ModelRefusal::ModelRefusal(std::string field, double value, std::string detail)
-    : FieldError(std::move(field), std::move(detail)), value_(value) {}
+ModelRefusal::ModelRefusal(std::string field, double value, std::string detail, std::string reason)
+    : FieldError(std::move(field), detail),
+      value_(value),
+      reason_(reason.empty() ? std::move(detail) : std::move(reason)) {}
 
 namespace {
 
@@ -168,11 +171,44 @@ std::string broken_invariant(const Evaluation& e, const Design& d) {
   return {};
 }
 
+namespace {
+
+// The calibrated racquet the solved collision was verified on
+// (designs/racquets/tour-100-strung.json): its ball's speed, its bed's
+// tension and its frame's free fundamental.
+constexpr double kVerifiedSpeed_m_s = 50.0;
+constexpr double kVerifiedTension_N = 250.0;
+constexpr double kVerifiedFundamental_Hz = 155.0;
+
+// A design input against the verified racquet's: `squeezes` +1 counts it only
+// above its reference, -1 only below, 0 either way.
+struct Candidate {
+  const char* field;
+  double value, reference;
+  int squeezes = 0;
+};
+
+// The candidate furthest in ratio from its reference (in its direction); the
+// first when none is away from it.
+const Candidate& furthest(std::span<const Candidate> candidates) {
+  const Candidate* worst = &candidates.front();
+  double worst_distance = 0.0;
+  for (const Candidate& c : candidates) {
+    const double log_ratio = std::log(c.value / c.reference);
+    const double distance = c.squeezes == 0 ? std::abs(log_ratio) : c.squeezes * log_ratio;
+    if (distance > worst_distance) {
+      worst_distance = distance;
+      worst = &c;
+    }
+  }
+  return *worst;
+}
+
+double tension_of(const Design& d) { return d.strings ? d.strings->tension_N : kVerifiedTension_N; }
+
+}  // namespace
+
 Suspect collision_suspect(const Design& d, double fundamental_free_Hz) {
-  struct Candidate {
-    const char* field;
-    double value, reference;
-  };
   const char* frame_field = d.stiffness.RA                    ? "frame/RA"
                             : d.stiffness.fundamental_free_Hz ? "frame/fundamental_free_Hz"
                                                               : "frame/EI_N_m2";
@@ -181,28 +217,32 @@ Suspect collision_suspect(const Design& d, double fundamental_free_Hz) {
       // A ball deader (or livelier) than the calibrated one's; a dead one (0) first.
       {"ball/cor_on_rigid_surface", d.ball.cor_on_rigid_surface.value_or(kTennisBallDropTestCor),
        kTennisBallDropTestCor},
-      {"strings/tension_N", d.strings ? d.strings->tension_N : 250.0, 250.0},
+      {"strings/tension_N", tension_of(d), kVerifiedTension_N},
       {"strings/bed_mass_kg", d.string_bed_mass_kg, kStringBedMass_kg},
-      {"ball/speed_m_s", d.ball.speed_m_s, 50.0},
+      {"ball/speed_m_s", d.ball.speed_m_s, kVerifiedSpeed_m_s},
       {"ball/mass_kg", d.ball.mass_kg, kTennisBallMass_kg},
-      {frame_field, fundamental_free_Hz, 155.0},
+      {frame_field, fundamental_free_Hz, kVerifiedFundamental_Hz},
   };
-  const Candidate* worst = &candidates[0];
-  double worst_ratio = -1.0;
-  for (const Candidate& c : candidates) {
-    const double ratio = std::abs(std::log(c.value / c.reference));
-    if (ratio > worst_ratio) {
-      worst_ratio = ratio;
-      worst = &c;
-    }
-  }
-  double value = worst->value;
-  if (worst->field == frame_field) {
+  const Candidate& worst = furthest(candidates);
+  double value = worst.value;
+  if (worst.field == frame_field) {
     value = d.stiffness.RA                    ? *d.stiffness.RA
             : d.stiffness.fundamental_free_Hz ? *d.stiffness.fundamental_free_Hz
                                               : d.stiffness.EI_N_m2.value_or(0.0);
   }
-  return {worst->field, value};
+  return {worst.field, value};
+}
+
+Suspect squeeze_suspect(const Design& d) {
+  const Candidate candidates[] = {
+      {"ball/speed_m_s", d.ball.speed_m_s, kVerifiedSpeed_m_s, +1},
+      {"ball/diameter_m", d.ball.diameter_m, kTennisBallDiameter_m, -1},
+      {"ball/contact/stiffness", d.ball_contact.stiffness, kTennisBallLaw.stiffness, -1},
+      {"ball/contact/exponent", d.ball_contact.exponent, kTennisBallLaw.exponent, +1},
+      {"strings/tension_N", tension_of(d), kVerifiedTension_N, +1},
+      {"ball/mass_kg", d.ball.mass_kg, kTennisBallMass_kg, +1}};
+  const Candidate& worst = furthest(candidates);
+  return {worst.field, worst.value};
 }
 
 void check_invariants(const Evaluation& e, const Design& design) {

@@ -154,6 +154,19 @@ TEST_CASE("A solved collision breaking each ledger invariant is refused, naming 
   slow.ball.speed_m_s = 1e-9;
   CHECK(collision_suspect(slow, 155.0).field == "ball/speed_m_s");
   CHECK(collision_suspect(d, 5.0).field == "frame/fundamental_free_Hz");
+  // A squeeze names only what squeezes more: a slack bed squeezes less, so a
+  // fast ball on it is the speed's; a light ball squeezes less, so a small
+  // light one is its diameter's; at the calibrated racquet, the speed.
+  Design slack_fast = d;
+  slack_fast.strings->tension_N = 20.0;
+  slack_fast.ball.speed_m_s = 160.0;
+  CHECK(collision_suspect(slack_fast, 155.0).field == "strings/tension_N");
+  CHECK(squeeze_suspect(slack_fast).field == "ball/speed_m_s");
+  Design small_light = d;
+  small_light.ball.mass_kg = 0.010;
+  small_light.ball.diameter_m = 0.02;
+  CHECK(squeeze_suspect(small_light).field == "ball/diameter_m");
+  CHECK(squeeze_suspect(d).field == "ball/speed_m_s");
 }
 
 // The refusal of the solved collision of `d`: "field: detail", empty if answered.
