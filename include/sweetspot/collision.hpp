@@ -252,6 +252,12 @@ class DesignCollision {
   // kMaxDuration_s], or the result breaks an invariant above.
   CollisionResult at(double from_butt_m, double off_axis_m,
                      const CollisionOptions& options = {}) const;
+  // The same with the ball arriving at `speed_m_s` (> 0) instead of the
+  // design's ball.speed_m_s: a swung racquet meets the ball at a speed that
+  // moves with the impact point (meeting_at(), evaluate.hpp). A refusal names
+  // ball/speed_m_s with this speed as the speed's value.
+  CollisionResult at_speed(double from_butt_m, double off_axis_m, double speed_m_s,
+                           const CollisionOptions& options = {}) const;
 
   const ResponseModel& model() const { return model_; }
   // The ball's law as solved (ball.cor_on_rigid_surface applied).

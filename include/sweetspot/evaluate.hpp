@@ -12,7 +12,9 @@
 #include "sweetspot/collision.hpp"
 #include "sweetspot/design.hpp"
 #include "sweetspot/frame_modes.hpp"
+#include "sweetspot/invariants.hpp"
 #include "sweetspot/rigid_impact.hpp"
+#include "sweetspot/swing.hpp"
 
 namespace sweetspot {
 
@@ -219,6 +221,28 @@ struct EvaluationOptions {
 // this for many evaluations of one design are in kernels.hpp.
 Evaluation evaluate(const Design& design, Fidelity fidelity = Fidelity::kRigid,
                     const EvaluationOptions& options = {});
+
+// Where a swung racquet (Design::swing) meets the ball: the swing scaled to
+// the design's swingweight, the racquet's speed V there and the speed the two
+// meet at, v_in + V, at which every number of the impact is solved (the
+// collision in the frame moving with the impact point, swing.hpp).
+struct Meeting {
+  Swing swing;
+  double racquet_speed_m_s = 0.0;  // V at the impact point [m/s]
+  double speed_m_s = 0.0;          // v_in + V [m/s]
+};
+
+// The meeting of a design with a swing at `from_butt_m` from the butt.
+// Throws FieldError naming "swing/angular_speed_rad_s" when they meet below
+// the model's least speed (kMinSpeed_m_s).
+Meeting meeting_at(const Design& design, double from_butt_m);
+
+// A refusal of the impact solved at `meeting`'s speed, said of the design: a
+// refusal blaming the ball's speed (which the design did not give, the
+// meeting did) is rethrown naming the swing, with the speeds that met; any
+// other is rethrown as it is. Call it from the handler that caught `refusal`.
+[[noreturn]] void rethrow_at_meeting(const ModelRefusal& refusal, const Design& design,
+                                     const Meeting& meeting);
 
 // Throws FieldError naming "support" when the design is on a rig (is_rig()),
 // which only the solved collision answers: `what` names what was asked (the

@@ -24,7 +24,8 @@ namespace sweetspot {
 // other fields are left as they are (a sweep that outputs only these). Returns
 // false, `e` untouched, where only evaluate() answers as it would: a COR or a
 // duration to derive (cor_rigid, a string tension), an impact off the long
-// axis, or a result that is not finite (evaluate() refuses it, saying why).
+// axis, a swing (solved at the speed the ball and the racquet meet), or a
+// result that is not finite (evaluate() refuses it, saying why).
 // For a validated design the rigid model's invariants (Fidelity) follow from
 // Eqs. (15)-(17) once every number is finite, so this check is theirs.
 bool evaluate_rigid_outcome(const Design& design, Evaluation& e);
@@ -42,11 +43,15 @@ RigidCase rigid_case(const Design& design);
 // The rigid model of one design at many impact points (a player's spread of
 // hits, a sweep along the strings): what does not depend on the impact point
 // is computed once. at() allocates nothing and does not check the impact
-// point (keep it on the implement). The design's COR and duration are used as
-// given: a design with cor_rigid or a string tension is refused.
+// point (keep it on the implement). The design's COR, duration and ball speed
+// are used as given: a design with cor_rigid, a string tension or a swing
+// (whose meeting speed moves with the impact point) is refused; ask
+// impact_sweep_answers() first.
+bool impact_sweep_answers(const Design& design);
 class ImpactSweep {
  public:
-  // Validates the design; throws std::invalid_argument like evaluate().
+  // Validates the design; throws std::invalid_argument like evaluate(), and
+  // for a design impact_sweep_answers() turns away.
   explicit ImpactSweep(const Design& design);
   // At the design's distance off the axis (Design::impact_off_axis_m).
   Evaluation at(double impact_from_butt_m) const;

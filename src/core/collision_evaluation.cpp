@@ -108,10 +108,23 @@ FrameAtImpact DesignCollision::frame_at(double from_butt_m, double off_axis_m) c
 
 CollisionResult DesignCollision::at(double from_butt_m, double off_axis_m,
                                     const CollisionOptions& options) const {
-  const Design& design = design_;
+  return at_speed(from_butt_m, off_axis_m, design_.ball.speed_m_s, options);
+}
+
+CollisionResult DesignCollision::at_speed(double from_butt_m, double off_axis_m, double speed_m_s,
+                                          const CollisionOptions& options) const {
   const FrameAtImpact frame = frame_at(from_butt_m, off_axis_m);
-  CollisionResult r = collide(frame, bed_, design.ball.mass_kg, design.ball_contact,
-                              design.ball.speed_m_s, options);
+  CollisionResult r =
+      collide(frame, bed_, design_.ball.mass_kg, design_.ball_contact, speed_m_s, options);
+  // The design as hit, for the refusals' blame: its ball at this speed.
+  std::optional<Design> hit;
+  const auto as_hit = [&]() -> const Design& {
+    if (speed_m_s == design_.ball.speed_m_s) return design_;
+    hit.emplace(design_);
+    hit->ball.speed_m_s = speed_m_s;
+    return *hit;
+  };
+  const Design& design = design_;
   const double f1 = model_.modes.empty() ? 155.0 : model_.modes.front().mode.frequency_Hz;
   const auto refuse = [&](const Suspect& blame, const std::string& why) {
     throw ModelRefusal(blame.field, blame.value,
@@ -121,19 +134,19 @@ CollisionResult DesignCollision::at(double from_butt_m, double off_axis_m,
                        why);
   };
   if (!r.separated) {
-    refuse(collision_suspect(design, f1), "the ball has not left the strings for good after " +
-                                              detail::format_number(options.max_time_s) +
-                                              " s and " + std::to_string(r.contacts) +
-                                              (r.contacts == 1 ? " contact" : " contacts"));
+    refuse(collision_suspect(as_hit(), f1), "the ball has not left the strings for good after " +
+                                                detail::format_number(options.max_time_s) +
+                                                " s and " + std::to_string(r.contacts) +
+                                                (r.contacts == 1 ? " contact" : " contacts"));
   }
   if (!(r.step_error <= kMaxStepError)) {
-    refuse(collision_suspect(design, f1),
+    refuse(collision_suspect(as_hit(), f1),
            "the step does not resolve the contact: the apparent COR changes by " +
                detail::format_significant(r.step_error) + " when the step halves, more than " +
                detail::format_number(kMaxStepError));
   }
   if (!(r.contact_time_s >= kMinDuration_s && r.contact_time_s <= kMaxDuration_s)) {
-    refuse(collision_suspect(design, f1),
+    refuse(collision_suspect(as_hit(), f1),
            "the contact lasts " + detail::format_significant(r.contact_time_s) + " s, outside [" +
                detail::format_number(kMinDuration_s) + ", " +
                detail::format_number(kMaxDuration_s) + "] s");
@@ -141,7 +154,7 @@ CollisionResult DesignCollision::at(double from_butt_m, double off_axis_m,
   // Squeezed by more than its radius, the ball's centre would have passed what
   // it hits: the contact law has been taken beyond any ball.
   if (const double radius = 0.5 * design.ball.diameter_m; !(r.peak_ball_compression_m < radius)) {
-    refuse(squeeze_suspect(design),
+    refuse(squeeze_suspect(as_hit()),
            "the ball is squeezed by " + detail::format_significant(r.peak_ball_compression_m) +
                " m, more than its radius of " + detail::format_number(radius) +
                " m: its centre would have passed what it hits" +
@@ -153,7 +166,7 @@ CollisionResult DesignCollision::at(double from_butt_m, double off_axis_m,
   if (const std::string why =
           broken_invariant(r, design.ball.mass_kg, M_eff, bed_ ? design.string_bed_mass_kg : 0.0);
       !why.empty()) {
-    refuse(collision_suspect(design, f1), why);
+    refuse(collision_suspect(as_hit(), f1), why);
   }
   return r;
 }

@@ -175,6 +175,34 @@ void require_player(const Design& design, std::string_view what) {
                                   "support free or hand");
 }
 
+Meeting meeting_at(const Design& design, double from_butt_m) {
+  Meeting m;
+  m.swing =
+      scaled_to_swingweight(*design.swing, swingweight_kg_m2(design.implement.mass_properties()));
+  m.racquet_speed_m_s = racquet_speed_m_s(m.swing, from_butt_m);
+  m.speed_m_s = design.ball.speed_m_s + m.racquet_speed_m_s;
+  if (!(m.speed_m_s >= kMinSpeed_m_s)) {
+    throw FieldError("swing/angular_speed_rad_s",
+                     "the ball and the racquet meet at " + detail::format_significant(m.speed_m_s) +
+                         " m/s, below the model's least speed of " +
+                         detail::format_number(kMinSpeed_m_s) + " m/s");
+  }
+  return m;
+}
+
+void rethrow_at_meeting(const ModelRefusal& refusal, const Design& design, const Meeting& meeting) {
+  // The collision saw the meeting speed, which is not the file's ball speed:
+  // the swing that added V is the input to name, with the speeds that met.
+  if (refusal.field() != "ball/speed_m_s") throw;
+  throw ModelRefusal("swing/angular_speed_rad_s", meeting.swing.angular_speed_rad_s,
+                     "the solved collision cannot answer this design (" + refusal.reason() +
+                         ") at the speed the ball and the racquet meet, " +
+                         detail::format_significant(meeting.speed_m_s) + " m/s (the ball's " +
+                         detail::format_significant(design.ball.speed_m_s) + " and the racquet's " +
+                         detail::format_significant(meeting.racquet_speed_m_s) + ")",
+                     refusal.reason());
+}
+
 Evaluation evaluate(const Design& design, Fidelity fidelity, const EvaluationOptions& options) {
   if (fidelity != Fidelity::kCollision) {
     require_player(design, "the " + std::string(to_string(fidelity)) + " model");
@@ -191,35 +219,19 @@ Evaluation evaluate(const Design& design, Fidelity fidelity, const EvaluationOpt
   // with the impact point is the one of a ball arriving at v_in + V onto the
   // racquet at rest (swing.hpp).
   validate(design);
-  const Swing swing =
-      scaled_to_swingweight(*design.swing, swingweight_kg_m2(design.implement.mass_properties()));
-  const double V = racquet_speed_m_s(swing, design.impact_from_butt_m);
+  const Meeting meeting = meeting_at(design, design.impact_from_butt_m);
   Design in_play = design;
   in_play.swing.reset();
-  in_play.ball.speed_m_s = design.ball.speed_m_s + V;
-  if (!(in_play.ball.speed_m_s >= kMinSpeed_m_s)) {
-    throw FieldError("swing/angular_speed_rad_s",
-                     "the ball and the racquet meet at " +
-                         detail::format_number(in_play.ball.speed_m_s) +
-                         " m/s, below the model's least speed of " +
-                         detail::format_number(kMinSpeed_m_s) + " m/s");
-  }
+  in_play.ball.speed_m_s = meeting.speed_m_s;
   Evaluation e;
   try {
     e = evaluate_at_rest(in_play, fidelity,
                          {.rel_tol = options.rel_tol, .modes = options.modes, .validated = false});
   } catch (const ModelRefusal& refusal) {
-    // The collision saw the meeting speed, which is not the file's ball speed:
-    // the swing that added V is the input to name, with the speeds that met.
-    if (refusal.field() != "ball/speed_m_s") throw;
-    throw ModelRefusal("swing/angular_speed_rad_s", swing.angular_speed_rad_s,
-                       "the solved collision cannot answer this design (" + refusal.reason() +
-                           ") at the speed the ball and the racquet meet, " +
-                           detail::format_number(in_play.ball.speed_m_s) + " m/s (the ball's " +
-                           detail::format_number(design.ball.speed_m_s) + " and the racquet's " +
-                           detail::format_number(V) + ")",
-                       refusal.reason());
+    rethrow_at_meeting(refusal, design, meeting);
   }
+  const Swing& swing = meeting.swing;
+  const double V = meeting.racquet_speed_m_s;
   e.swing = swing;
   e.swing_assumed = false;
   e.incoming_speed_m_s = design.ball.speed_m_s;

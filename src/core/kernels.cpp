@@ -149,7 +149,8 @@ Evaluation evaluate_unchecked(const Design& d) {
 }
 
 bool evaluate_rigid_outcome(const Design& d, Evaluation& e) {
-  if (d.cor_rigid || d.strings || d.impact_off_axis_m != 0.0 || is_rig(d.support)) return false;
+  if (d.cor_rigid || d.strings || d.swing || d.impact_off_axis_m != 0.0 || is_rig(d.support))
+    return false;
   const MassProperties& body = d.implement.mass_properties();
   const MassProperties system = hand_held_system(d);
   // The case impact_part() builds: on the axis, the twist is 0 whatever the polar inertia.
@@ -175,12 +176,17 @@ RigidCase rigid_case(const Design& design) {
                  twist_per_kg(polar_inertia_kg_m2(design), design.impact_off_axis_m));
 }
 
+bool impact_sweep_answers(const Design& design) {
+  return !design.cor_rigid && !design.strings && !design.swing;
+}
+
 ImpactSweep::ImpactSweep(const Design& design)
     : design_(design), system_(hand_held_system(design)) {
   require_player(design, "the rigid model at many impacts");
-  if (design.cor_rigid || design.strings) {
-    throw FieldError("frame/cor_rigid",
-                     "ImpactSweep evaluates the rigid model with a given COR and duration");
+  if (!impact_sweep_answers(design)) {
+    throw FieldError(design.swing ? "swing" : "frame/cor_rigid",
+                     "ImpactSweep evaluates the rigid model at rest with a given COR and "
+                     "duration");
   }
   validate(design_);
   base_ = design_part(design_, design_.implement.mass_properties(), system_);

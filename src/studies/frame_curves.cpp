@@ -9,6 +9,7 @@
 #include "io/format.hpp"
 #include "studies/sweet_spots.hpp"
 #include "sweetspot/collision.hpp"
+#include "sweetspot/evaluate.hpp"
 #include "sweetspot/rigid_impact.hpp"
 
 namespace sweetspot::studies {
@@ -60,7 +61,10 @@ std::vector<FramePoint> frame_curves(const Design& design, double step_m, Fideli
       continue;
     }
     try {
-      const CollisionResult r = collision->at(e.impact_from_butt_m, 0.0);
+      // A swung racquet meets the ball at v_in + V there, as evaluate() solves it.
+      const double speed_m_s =
+          design.swing ? meeting_at(design, e.impact_from_butt_m).speed_m_s : design.ball.speed_m_s;
+      const CollisionResult r = collision->at_speed(e.impact_from_butt_m, 0.0, speed_m_s);
       points.push_back({d, e.wrist_force_ratio, r.apparent_cor,
                         peak_wrist_force(e.wrist_force_ratio, r.peak_force_N)});
     } catch (const std::invalid_argument&) {

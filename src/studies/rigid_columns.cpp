@@ -49,7 +49,8 @@ std::optional<RigidColumns> RigidColumns::compile(const CompiledDesign& compiled
   const Design& design = d.design;
   if (d.implement.form != Form::kHeadToHandleRatio || !d.implement.point_masses.empty() ||
       design.strings || design.cor_rigid || design.impact_off_axis_m != 0.0 || d.head_area_m2 ||
-      is_rig(design.support) || d.impact_place == io::ImpactPlace::kCentreOfStrings) {
+      design.swing || is_rig(design.support) ||
+      d.impact_place == io::ImpactPlace::kCentreOfStrings) {
     return std::nullopt;
   }
   RigidColumns columns;

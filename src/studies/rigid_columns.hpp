@@ -31,10 +31,11 @@ class RigidColumns {
   // The design's column-wise path, or std::nullopt unless: it is a racquet
   // in the paper's parametrisation (length, mass, head-to-handle ratio) with
   // no point masses, a given COR and impact duration (no string tension, no
-  // cor_rigid), held by a player (no rig), hit on the long axis at a point given from the tip or
-  // the butt; and each binding sets one of its numbers: the implement's length, mass or ratio, the
-  // hand's mass or centre, the forearm's equivalent mass, the ball's mass or speed, the COR, the
-  // duration, the impact point.
+  // cor_rigid), held by a player (no rig) and hit at rest (no swing: evaluate() solves a swung
+  // racquet at the speed the ball and the racquet meet, which moves with the impact point), on
+  // the long axis at a point given from the tip or the butt; and each binding sets one of its
+  // numbers: the implement's length, mass or ratio, the hand's mass or centre, the forearm's
+  // equivalent mass, the ball's mass or speed, the COR, the duration, the impact point.
   static std::optional<RigidColumns> compile(const CompiledDesign& design);
 
   // Rows [from, to) of `columns` (binding i's values in column i):

@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
 #include "io/parallel.hpp"
 #include "sweetspot/collision.hpp"
+#include "sweetspot/evaluate.hpp"
 #include "sweetspot/frame_modes.hpp"
 #include "sweetspot/impact_response.hpp"
 #include "sweetspot/kernels.hpp"
@@ -76,6 +78,10 @@ StringBedMap string_bed_map(const Design& design, const StringBedMapOptions& opt
   // independent, so threads may take any of them.
   const auto column = [&](int i) {
     const double x = x0 + (i + 0.5) * dx;
+    // A swung racquet meets the ball at v_in + V(x), as evaluate() solves it.
+    std::optional<Meeting> meeting;
+    if (design.swing) meeting = meeting_at(design, x);
+    const double speed_m_s = meeting ? meeting->speed_m_s : design.ball.speed_m_s;
     // With a given duration the vibration per unit impulse depends on x only.
     std::optional<double> column_kappa;
     if (model && !design.strings)
@@ -92,6 +98,7 @@ StringBedMap string_bed_map(const Design& design, const StringBedMapOptions& opt
       p.on_bed = on_string_bed(bed, x, y);
       if (!p.on_bed) continue;
       RigidCase c = base;
+      c.ball_speed_m_s = speed_m_s;
       c.impact_from_butt_m = x;
       c.impact_twist_per_kg = impact_twist_per_kg(y, *polar);
       if (design.strings) {
@@ -105,7 +112,13 @@ StringBedMap string_bed_map(const Design& design, const StringBedMapOptions& opt
         // The solved collision's rebound, force and vibration; the wrist
         // feels the rigid model's share of the solved peak force (Eq. 11),
         // as evaluate() at Fidelity::kCollision.
-        const CollisionResult r = collision->at(x, y);
+        CollisionResult r;
+        try {
+          r = collision->at_speed(x, y, speed_m_s);
+        } catch (const ModelRefusal& refusal) {
+          if (meeting) rethrow_at_meeting(refusal, design, *meeting);
+          throw;
+        }
         p.apparent_cor = r.apparent_cor;
         p.peak_wrist_force_N = peak_wrist_force(o.wrist_force_ratio, r.peak_force_N);
         p.peak_twist_torque_N_m = r.peak_force_N * std::abs(y);
@@ -121,7 +134,7 @@ StringBedMap string_bed_map(const Design& design, const StringBedMapOptions& opt
         const double energy_J = 0.5 * o.impulse_N_s * o.impulse_N_s * kappa;
         // The energy ledger of evaluate(): the frame cannot keep more than the
         // ball loses; past that the prescribed pulse does not hold (no value).
-        const double v1 = design.ball.speed_m_s;
+        const double v1 = speed_m_s;
         const double ball_loss_J =
             0.5 * design.ball.mass_kg * v1 * v1 * (1.0 - o.apparent_cor * o.apparent_cor);
         if (energy_J <= ball_loss_J * (1.0 + 1e-12)) p.vibration_energy_J = energy_J;

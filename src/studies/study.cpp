@@ -711,7 +711,7 @@ double objective_of(const Study& study, const Design& design) {
   const auto from_butt = [&](int k) { return spread_from_butt(spread, L, k); };
   // The rigid model at many impacts shares everything but the impact (ImpactSweep).
   std::optional<ImpactSweep> rigid;
-  if (study.fidelity == Fidelity::kRigid && !d.cor_rigid && !d.strings) rigid.emplace(d);
+  if (study.fidelity == Fidelity::kRigid && impact_sweep_answers(d)) rigid.emplace(d);
   double reduced = spread.reduce == ImpactSpread::Reduce::kMax ? -kPenalty : 0.0;
   for (int k = 0; k < spread.points; ++k) {
     const double x = from_butt(k);

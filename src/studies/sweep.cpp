@@ -143,7 +143,7 @@ class SweepWorker {
 
   // The row's design kept for the next points when only the impact changes along it.
   void share_row(const Design& design, std::size_t row) {
-    if (impact_ && !design.cor_rigid && !design.strings) {
+    if (impact_ && impact_sweep_answers(design)) {
       shared_.emplace(design);
       shared_row_ = row;
       length_m_ = design.implement.length_m();

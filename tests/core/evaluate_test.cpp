@@ -135,6 +135,14 @@ TEST_CASE("An impact sweep gives exactly what evaluating each impact gives") {
   Design derived = table_design(kTableI[0]);
   derived.cor_rigid = 0.85;
   CHECK_THROWS_AS(ImpactSweep(derived), std::invalid_argument);
+  // A swung racquet meets the ball at a speed that moves with the impact
+  // point: no shared rigid path answers it, evaluate() does.
+  Design swung = table_design(kTableI[0]);
+  swung.swing = Swing{20.0, 0.6, std::nullopt};
+  CHECK_FALSE(impact_sweep_answers(swung));
+  CHECK_THROWS_AS(ImpactSweep(swung), std::invalid_argument);
+  Evaluation untouched;
+  CHECK_FALSE(evaluate_rigid_outcome(swung, untouched));
 }
 
 TEST_CASE("Many rigid cases at once give exactly what evaluating each design gives") {

@@ -62,6 +62,7 @@
 #include "io/outputs.hpp"
 #include "io/plot.hpp"
 #include "reports/summary.hpp"
+#include "studies/sweep.hpp"
 #include "sweetspot/ball_contact.hpp"
 #include "sweetspot/evaluate.hpp"
 #include "sweetspot/head_geometry.hpp"
@@ -1019,23 +1020,35 @@ Trial through_commands(const Sandbox& box, const Json& design, const std::string
     }
   }
   if (wanted("sweep")) {  // one point, setting a number of the file to its own value
-    const Json study{{"name", "one point"},
-                     {"design", "design.json"},
-                     {"fidelity", t.level},
-                     {"variables", Json::array({Json{{"path", pointer}, {"values", {value}}}})},
-                     {"outputs", sweep_outputs(t.level)}};
-    box.write("sweep.json", study.dump(2));
-    const Run r = box.run("sweep sweep.json --format json");
-    const std::optional<Json> row =
-        r.status == 0 ? parse(r.out.substr(0, r.out.find('\n'))) : std::nullopt;
-    const bool ok = row && row->is_object() && row->value("error", Json()).is_null();
-    if (agrees("sweep", ok,
-               (row ? row->value("error", Json()).dump() : r.err) + " (setting " + pointer + ")") &&
-        ok) {
-      Json outputs = *row;
-      outputs.erase(pointer);
-      outputs.erase("error");
-      same("sweep", numbers_of(outputs), " (setting " + pointer + ")");
+    // Every output of the level; at the rigid level also the rigid outcome's
+    // alone, which a sweep computes by a shorter path (evaluate_rigid_outcome()).
+    std::vector<Json> output_sets{sweep_outputs(t.level)};
+    if (t.level == "rigid") {
+      Json names = Json::array();
+      for (const std::string_view name : sweetspot::studies::rigid_outcome_outputs())
+        names.push_back(std::string(name));
+      output_sets.push_back(names);
+    }
+    for (const Json& outputs_asked : output_sets) {
+      const Json study{{"name", "one point"},
+                       {"design", "design.json"},
+                       {"fidelity", t.level},
+                       {"variables", Json::array({Json{{"path", pointer}, {"values", {value}}}})},
+                       {"outputs", outputs_asked}};
+      box.write("sweep.json", study.dump(2));
+      const Run r = box.run("sweep sweep.json --format json");
+      const std::optional<Json> row =
+          r.status == 0 ? parse(r.out.substr(0, r.out.find('\n'))) : std::nullopt;
+      const bool ok = row && row->is_object() && row->value("error", Json()).is_null();
+      if (agrees(
+              "sweep", ok,
+              (row ? row->value("error", Json()).dump() : r.err) + " (setting " + pointer + ")") &&
+          ok) {
+        Json outputs = *row;
+        outputs.erase(pointer);
+        outputs.erase("error");
+        same("sweep", numbers_of(outputs), " (setting " + pointer + ")");
+      }
     }
   }
   if (wanted("optimize")) {  // the start only, then its best design evaluated again

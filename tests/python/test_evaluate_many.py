@@ -215,11 +215,15 @@ def paper_columns(rows, seed, hostile=False):
     return columns
 
 
-@pytest.mark.parametrize("hostile", [False, True])
-def test_columnwise_equals_every_output_path(hostile):
+@pytest.mark.parametrize("hostile,swung", [(False, False), (True, False), (False, True)])
+def test_columnwise_equals_every_output_path(hostile, swung):
     """The paper's outputs alone (the column-wise path) equal, bit for bit and error for
-    error, the same rows evaluated with every output (one design at a time)."""
+    error, the same rows evaluated with every output (one design at a time); a swung
+    racquet's rows too, each solved at the speed its ball and racquet meet."""
     base = ROOT / "designs" / "table1" / "row1.json"
+    if swung:
+        base = json.loads(base.read_text())
+        base["swing"] = {"angular_speed_rad_s": 20.0, "pivot_beyond_butt_m": 0.6}
     columns = paper_columns(3000, 7, hostile)
     fast = sweetspot.evaluate_many(base, columns, threads=2, outputs=PAPER_OUTPUTS)
     full = sweetspot.evaluate_many(base, columns, threads=1)

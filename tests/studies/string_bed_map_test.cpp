@@ -11,6 +11,7 @@
 
 #include "sweetspot/evaluate.hpp"
 #include "sweetspot/string_bed.hpp"
+#include "sweetspot/swing.hpp"
 
 namespace sweetspot::studies {
 namespace {
@@ -134,6 +135,42 @@ TEST_CASE("A collision map is evaluate() at collision fidelity at each point, bi
       if (a.on_bed) CHECK(same_bits(a.apparent_cor, b.apparent_cor));
     }
   }
+}
+
+TEST_CASE("A swung racquet's map is evaluate() at each point, at the speed they meet there") {
+  // The ball at 20 m/s onto a racquet turning at 20 rad/s about a pivot 60 cm
+  // beyond the butt: the meeting speed, 20 + 20 (0.6 + x), moves with x.
+  Design d = racquet();
+  d.ball.speed_m_s = 20.0;
+  d.swing = Swing{20.0, 0.6, std::nullopt};
+  const bool solved = GENERATE(false, true);
+  if (solved) {
+    d.strings = StringBed{};
+    d.stiffness.fundamental_free_Hz = 150.0;
+    d.cor_given = false;
+  }
+  const Fidelity fidelity = solved ? Fidelity::kCollision : Fidelity::kRigid;
+  const studies::StringBedMap map = string_bed_map(d, grid(5, 3, fidelity));
+  Design at_rest = d;
+  at_rest.swing.reset();
+  const studies::StringBedMap unswung = string_bed_map(at_rest, grid(5, 3, fidelity));
+  int checked = 0;
+  for (std::size_t k = 0; k < map.points.size(); ++k) {
+    const studies::StringBedMapPoint& p = map.points[k];
+    if (!p.on_bed) continue;
+    Design at = d;
+    at.impact_from_butt_m = p.from_butt_m;
+    at.impact_off_axis_m = p.off_axis_m;
+    const Evaluation e = evaluate(at, fidelity);
+    CHECK(p.apparent_cor == Approx(e.apparent_cor).epsilon(kRoundOff));
+    CHECK(p.peak_wrist_force_N == Approx(e.peak_wrist_force_N).epsilon(kRoundOff));
+    CHECK(p.peak_twist_torque_N_m == Approx(e.peak_twist_torque_N_m).epsilon(kRoundOff));
+    if (solved) CHECK(same_bits(*p.vibration_energy_J, *e.vibration_energy_J));
+    // The meeting speed is more than twice the ball's: the wrist takes more.
+    CHECK(p.peak_wrist_force_N > 1.5 * unswung.points[k].peak_wrist_force_N);
+    ++checked;
+  }
+  CHECK(checked > 5);
 }
 
 TEST_CASE("A map shared among threads is the map of one thread, bit for bit, and says how far") {

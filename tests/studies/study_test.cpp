@@ -448,9 +448,9 @@ TEST_CASE(
     "A sweep along the impact shares each row's design and writes what reading every point "
     "writes") {
   // The oracle is the sweep that reads and evaluates every point on its own:
-  // sharing a row's design (ImpactSweep) and splitting the grid among threads
-  // must change no byte, including the rows that fail (off the implement, a
-  // negative ball speed) and a second sweep whose first variable is not the impact.
+  // sharing a row's design (ImpactSweep), computing the rigid outcome alone and splitting the grid
+  // among threads must change no byte, including the rows that fail (off the implement, a negative
+  // ball speed) and a second sweep whose first variable is not the impact.
   const char* texts[] = {
       R"({"design": {"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8},
                      "ball": {"speed_m_s": 50}, "impact": {"from_tip_cm": 5}},
@@ -463,7 +463,14 @@ TEST_CASE(
           "variables": [{"path": "/impact/from_butt_m", "min": 0, "max": 0.7, "points": 30}]})",
       R"({"design": "../table1/row1.json", "outputs": ["wrist_force_ratio"],
           "variables": [{"path": "/hand/mass_kg", "min": 0, "max": 0.6, "points": 25},
-                        {"path": "/impact/from_tip_m", "values": [0.05, 0.8]}]})"};
+                        {"path": "/impact/from_tip_m", "values": [0.05, 0.8]}]})",
+      // A swung racquet: each impact meets the ball at its own speed, v_in + V(x).
+      R"({"design": {"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8},
+                     "hand": {"mass_kg": 0.5}, "ball": {"speed_m_s": 20}, "impact": {"from_tip_cm": 5},
+                     "swing": {"angular_speed_rad_s": 20, "pivot_beyond_butt_m": 0.6}},
+          "outputs": ["peak_wrist_force_N", "impulse_N_s"],
+          "variables": [{"path": "/impact/from_tip_cm", "min": -5, "max": 80, "points": 30},
+                        {"path": "/hand/mass_kg", "values": [0.4, 0.5]}]})"};
   for (const char* text : texts) {
     const studies::Study study =
         studies::read_study(nlohmann::json::parse(text), "sweep.json", studies());
@@ -477,12 +484,12 @@ TEST_CASE(
       }
       return std::pair{csv.str(), y};
     };
-    const auto reference = sweep(studies::SweepOptions{1, false, false});
+    const auto reference = sweep(studies::SweepOptions{1, false, false, false});
     const bool has_failed_rows = reference.first.find("must be") != std::string::npos;
     CHECK(has_failed_rows == (text != texts[1]));  // the first and last grids reach bad points
     for (const studies::SweepOptions options :
          {studies::SweepOptions{1, true}, studies::SweepOptions{3, true},
-          studies::SweepOptions{2, false}}) {
+          studies::SweepOptions{2, false}, studies::SweepOptions{1, false, true, true}}) {
       INFO(text << " with " << options.threads << " threads, sharing " << options.share_rows);
       const auto result = sweep(options);
       CHECK(result.first == reference.first);
