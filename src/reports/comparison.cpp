@@ -970,9 +970,12 @@ std::string wrist_along_frame_html(const std::vector<ComparedDesign>& designs) {
                          reports::html_escape(designs[k].design.name));
   std::string html = reports::html_figure(
       plot, "plot-wrist",
-      "The peak force on the wrist (rigid model, Cross 2004 Eqs. 11 and 17) for a hit at each "
-      "point along the frame, one line per design (" +
-          lines + "): least at each design's hand-held COP.");
+      "The peak force on the wrist for a hit at each point along the frame, one line per "
+      "design (" +
+          lines +
+          "): the share of the peak force on the strings that reaches the wrist (Cross 2004, Eq. "
+          "11), of the rigid model's force (Eqs. 15-17) or, where a design solves the collision, "
+          "the solved one; least at each design's hand-held COP.");
   html +=
       "<details><summary>The numbers behind this plot</summary><div class=\"table-wrap\">"
       "<table id=\"curve\"><thead><tr><th class=\"num\">impact from the tip (cm)</th>";
