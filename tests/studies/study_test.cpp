@@ -421,6 +421,29 @@ TEST_CASE(
   CHECK_THAT(error_of("[0.2, 0.1]"), Catch::StartsWith("/objective/over_impacts/from_tip_m/1:"));
 }
 
+TEST_CASE("A robust objective over a spread of hits off a swung racquet is evaluate() at each") {
+  // Each hit of the spread meets the ball at its own speed, v_in + V(x): the
+  // worst case is the largest of evaluate() at the spread's points.
+  const studies::Study study = studies::read_study(
+      nlohmann::json::parse(R"({"design": {"implement": {"length_m": 0.7, "mass_kg": 0.25,
+          "head_to_handle_mass_ratio": 0.8}, "frame": {"cor": 0.8},
+          "strings": {"impact_duration_ms": 4}, "hand": {"mass_kg": 0.5}, "ball": {"speed_m_s": 20},
+          "swing": {"angular_speed_rad_s": 20, "pivot_beyond_butt_m": 0.6}},
+        "fidelity": "rigid",
+        "variables": [{"path": "/hand/mass_kg", "min": 0.3, "max": 0.6}],
+        "objective": {"output": "peak_wrist_force_N",
+                      "over_impacts": {"from_tip_m": [0.05, 0.3], "points": 6, "reduce": "max"}}})"),
+      "study.json", studies());
+  const io::DesignFile file = studies::design_at(study, std::vector<double>{0.5});
+  double worst = 0.0;
+  for (int k = 0; k < 6; ++k) {
+    Design at = file.design;
+    at.impact_from_butt_m = 0.7 - (0.05 + 0.05 * k);
+    worst = std::max(worst, evaluate(at, Fidelity::kRigid).peak_wrist_force_N);
+  }
+  CHECK(studies::objective_of(study, file) == Approx(worst).epsilon(1e-12));
+}
+
 TEST_CASE("Optimizer tolerances are refused under their own keys") {
   const auto error_of = [](const char* tolerances) {
     try {
