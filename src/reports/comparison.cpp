@@ -329,11 +329,14 @@ enum class Part {
   kHand,
   kForearm,
   kBall,
-  kImpact
+  kImpact,
+  kSupport,
+  kSwing
 };
 
 constexpr const char* kPartNames[] = {"the implement", "the implement", "the frame", "the strings",
-                                      "the hand",      "the forearm",   "the ball",  "the impact"};
+                                      "the hand",      "the forearm",   "the ball",  "the impact",
+                                      "the support",   "the swing"};
 // What goes before a field's name in a list of several parts' fields ("the
 // ball's speed"); the implement's own fields read on their own ("head size").
 constexpr const char* kPossessives[] = {"",
@@ -343,7 +346,9 @@ constexpr const char* kPossessives[] = {"",
                                         "the hand's ",
                                         "the forearm's ",
                                         "the ball's ",
-                                        "the impact's "};
+                                        "the impact's ",
+                                        "the support: ",
+                                        "the swing's "};
 
 // The players' side of a comparison: the hand, the forearm, the ball and
 // the impact. The rest is the implement (its frame and strings included).
@@ -480,6 +485,12 @@ const std::vector<InputField>& input_fields() {
        [](D d) -> std::optional<double> { return d.implement.length_m() - d.impact_from_butt_m; }},
       {Part::kImpact, "distance off the axis", "cm", 100.0,
        [](D d) -> std::optional<double> { return d.impact_off_axis_m; }},
+      {Part::kSwing, "angular speed", "rad/s", 1.0,
+       [](D d) { return d.swing ? std::optional(d.swing->angular_speed_rad_s) : std::nullopt; }},
+      {Part::kSwing, "pivot beyond the butt", "cm", 100.0,
+       [](D d) { return d.swing ? std::optional(d.swing->pivot_beyond_butt_m) : std::nullopt; }},
+      {Part::kSwing, "reference swingweight", "kg·cm²", 1e4,
+       [](D d) { return d.swing ? given(d.swing->reference_swingweight_kg_m2) : std::nullopt; }},
   };
   return kFields;
 }
@@ -544,6 +555,14 @@ std::vector<std::pair<Part, std::string>> field_differences(const Design& a, con
     if (!same_number(va, vb))
       out.emplace_back(f.part, fmt::format("{} {}", f.name, from_to(va, vb, f.factor, f.unit)));
   }
+  // What is named, not numbered: what holds the implement (free or the hand:
+  // compare refuses a rig) and the ball's law.
+  if (a.support.kind != b.support.kind)
+    out.emplace_back(Part::kSupport,
+                     fmt::format("{} → {}", to_string(a.support.kind), to_string(b.support.kind)));
+  if (a.ball_contact.form != b.ball_contact.form)
+    out.emplace_back(Part::kBall, fmt::format("contact law {} → {}", to_string(a.ball_contact.form),
+                                              to_string(b.ball_contact.form)));
   using SectionField = std::function<std::optional<double>(const Section&)>;
   list_differences<Section>(
       Part::kMassDistribution, "section", "sections", a.implement.sections(),

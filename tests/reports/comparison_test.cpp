@@ -124,6 +124,14 @@ TEST_CASE("compare names every input of the read design that differs, by its par
       {"/ball/contact", io::Json{{"stiffness", 1e6}}, "only the ball differs: contact stiffness"},
       {"/impact/from_tip_m", 0.18, "only the impact differs: distance from the tip 16 → 18 cm"},
       {"/impact/off_axis_m", 0.02, "only the impact differs: distance off the axis 0 → 2 cm"},
+      // What is named, not numbered: the ball's law, what holds the implement
+      // (a player's: compare refuses a rig).
+      {"/ball/contact", io::Json{{"law", "hysteretic"}},
+       "only the ball differs: contact law power → hysteretic"},
+      {"/support", "hand", "only the support differs: free → hand"},
+      {"/swing", io::Json{{"angular_speed_rad_s", 15}, {"pivot_beyond_butt_m", 0.6}},
+       "only the swing differs: angular speed none → 15 rad/s and pivot beyond the butt none → "
+       "60 cm"},
   };
   for (const Change& change : changes) {
     INFO(change.pointer);
@@ -134,7 +142,9 @@ TEST_CASE("compare names every input of the read design that differs, by its par
     const bool player = std::string(change.pointer).starts_with("/hand") ||
                         std::string(change.pointer).starts_with("/forearm") ||
                         std::string(change.pointer).starts_with("/ball") ||
-                        std::string(change.pointer).starts_with("/impact");
+                        std::string(change.pointer).starts_with("/impact") ||
+                        std::string(change.pointer).starts_with("/support") ||
+                        std::string(change.pointer).starts_with("/swing");
     CHECK((sentence.find("the same implement") != std::string::npos) == player);
   }
 }
