@@ -81,8 +81,15 @@ bool is_design_path(std::string_view name) {
       const std::string si_key = name.substr(name.rfind('/') + 1);
       const std::string& pointer = it->second.pointer;
       const std::string user_key = pointer.substr(pointer.rfind('/') + 1);
-      if (si_key != user_key)
+      // The same quantity in another unit ("tension_lb" for "tension_N") is
+      // converted; another quantity ("measured_ring_Hz", "balance_pts_hl") is
+      // what the model derived this one from, which it names.
+      const std::string stem = si_key.substr(0, si_key.rfind('_') + 1);
+      if (si_key != user_key && user_key.starts_with(stem))
         detail += " (the file's " + user_key + ": " + given_text(it->second) + ", converted to SI)";
+      else if (si_key != user_key)
+        detail += " (" + si_key + ", derived from the file's " + user_key + ": " +
+                  given_text(it->second) + ")";
       throw InputError(source, pointer, detail);
     }
     if (name.starts_with("implement/sections") && name.ends_with("/EI_N_m2")) {

@@ -321,6 +321,24 @@ TEST_CASE("A core error names the key the file used and quotes the value it gave
   CHECK_THAT(si.detail(), Catch::EndsWith("got -1e-300 kg"));
 }
 
+TEST_CASE("A refusal of a quantity the model derived says what it was derived from") {
+  // The bed's tension solved from a tap-tone ring, then a ball squeezed past
+  // its radius: the ring is the key named, the tension (in N) is not called
+  // the ring converted to SI.
+  const InputError e = error_of(R"({"implement": {"length_in": 27, "mass_g": 318,
+      "balance_cm": 32.5, "swingweight_kg_cm2": 325, "headsize_sq_in": 100},
+      "frame": {"RA": 66}, "strings": {"measured_ring_Hz": 1100}, "ball": {"speed_m_s": 62}})",
+                                "collision");
+  CHECK(e.pointer() == "/strings/measured_ring_Hz");
+  CHECK_THAT(e.detail(), Catch::EndsWith("(tension_N, derived from the file's measured_ring_Hz: "
+                                         "1100)") &&
+                             !Catch::Contains("converted to SI"));
+  // The same quantity in another unit is converted.
+  const InputError lb = error_of(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25,
+      "head_to_handle_mass_ratio": 0.8}, "strings": {"tension_lb": 1e-9}})");
+  CHECK_THAT(lb.detail(), Catch::Contains("(the file's tension_lb: 1e-09, converted to SI)"));
+}
+
 TEST_CASE("A section error found while evaluating keeps the /implement prefix") {
   // A micrometre stretch of another EI, which finite elements cannot resolve.
   const InputError e = error_of(R"({"implement": {"sections": [
