@@ -120,6 +120,10 @@ StringBedMap string_bed_map(const Design& design, const StringBedMapOptions& opt
           throw;
         }
         p.apparent_cor = r.apparent_cor;
+        // Held in the hand, the impact moves implement and hand: M_eff is the
+        // solved collision's (evaluate() at Fidelity::kCollision), not Eq. 17's.
+        if (design.support.kind == Support::Kind::kHand)
+          p.effective_mass_kg = 1.0 / collision->frame_at(x, y).inverse_effective_mass_per_kg;
         p.peak_wrist_force_N = peak_wrist_force(o.wrist_force_ratio, r.peak_force_N);
         p.peak_twist_torque_N_m = r.peak_force_N * std::abs(y);
         p.vibration_energy_J = r.vibration_J;

@@ -111,6 +111,9 @@ TEST_CASE("A collision map is evaluate() at collision fidelity at each point, bi
   d.strings = StringBed{};
   d.stiffness.fundamental_free_Hz = 150.0;
   d.cor_given = false;
+  // Free, or in the hand's grip (whose impact moves implement and hand: its
+  // own effective mass).
+  d.support.kind = GENERATE(Support::Kind::kFree, Support::Kind::kHand);
   const studies::StringBedMap map = string_bed_map(d, grid(6, 5, Fidelity::kCollision));
   REQUIRE(map.node_free_from_butt_m);
   int checked = 0;
@@ -121,6 +124,7 @@ TEST_CASE("A collision map is evaluate() at collision fidelity at each point, bi
     at.impact_off_axis_m = p.off_axis_m;
     const Evaluation e = evaluate(at, Fidelity::kCollision);
     CHECK(same_bits(p.apparent_cor, e.apparent_cor));
+    CHECK(same_bits(p.effective_mass_kg, e.effective_mass_kg));
     CHECK(same_bits(p.peak_wrist_force_N, e.peak_wrist_force_N));
     CHECK(same_bits(*p.vibration_energy_J, *e.vibration_energy_J));
     CHECK(same_bits(p.peak_twist_torque_N_m, e.peak_twist_torque_N_m));
