@@ -40,6 +40,12 @@ Evaluation evaluate_unchecked(const Design& design);
 // (cor_rigid) needs the response model and throws std::invalid_argument.
 RigidCase rigid_case(const Design& design);
 
+// The shot of a design without a swing, as evaluate() reports it at
+// e.impact_from_butt_m: the incoming speed the ball's, the racquet's speed
+// the assumed groundstroke's there (e.swing, kTypicalGroundstroke) and the
+// shot off it at e.apparent_cor.
+void put_assumed_shot(const Design& design, Evaluation& e);
+
 // The rigid model of one design at many impact points (a player's spread of
 // hits, a sweep along the strings): what does not depend on the impact point
 // is computed once. at() allocates nothing and does not check the impact

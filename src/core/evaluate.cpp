@@ -210,9 +210,7 @@ Evaluation evaluate(const Design& design, Fidelity fidelity, const EvaluationOpt
   if (!design.swing) {
     // The laboratory's impact; the shot the assumed groundstroke would give.
     Evaluation e = evaluate_at_rest(design, fidelity, options);
-    e.incoming_speed_m_s = design.ball.speed_m_s;
-    e.racquet_speed_m_s = racquet_speed_m_s(e.swing, e.impact_from_butt_m);
-    e.shot_speed_m_s = shot_speed_m_s(e.apparent_cor, e.incoming_speed_m_s, e.racquet_speed_m_s);
+    put_assumed_shot(design, e);
     return e;
   }
   // The racquet is free during the contact: the collision in the frame moving

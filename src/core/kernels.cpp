@@ -201,7 +201,14 @@ Evaluation ImpactSweep::at(double impact_from_butt_m, double off_axis_m) const {
   impact_part(design_, design_.implement.mass_properties(), system_, impact_from_butt_m, off_axis_m,
               e);
   check_invariants(e, design_);
+  put_assumed_shot(design_, e);
   return e;
+}
+
+void put_assumed_shot(const Design& design, Evaluation& e) {
+  e.incoming_speed_m_s = design.ball.speed_m_s;
+  e.racquet_speed_m_s = racquet_speed_m_s(e.swing, e.impact_from_butt_m);
+  e.shot_speed_m_s = shot_speed_m_s(e.apparent_cor, e.incoming_speed_m_s, e.racquet_speed_m_s);
 }
 
 }  // namespace sweetspot

@@ -721,6 +721,9 @@ std::string frame_html(const Evaluation& e, const std::vector<studies::FramePoin
                         fidelity_of(e) == Fidelity::kCollision
                             ? "The ball's rebound over its speed from the solved collision of "
                               "ball, strings and flexible frame at each point"
+                        : e.cor_derived
+                            ? "The apparent COR (Eq. 16) at the COR derived at each point from "
+                              "the rigid frame's and the vibration the impact leaves there"
                             : "The apparent COR (Eq. 16) at the frame's COR",
                         html_cm(most->from_tip_m), most->apparent_cor));
   html +=

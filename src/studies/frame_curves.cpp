@@ -10,16 +10,20 @@
 #include "studies/sweet_spots.hpp"
 #include "sweetspot/collision.hpp"
 #include "sweetspot/evaluate.hpp"
+#include "sweetspot/mode_cache.hpp"
 #include "sweetspot/rigid_impact.hpp"
 
 namespace sweetspot::studies {
 namespace {
 
-Evaluation evaluate_at(const Design& design, double from_butt_m) {
+// The rigid model at a point of the long axis: at the frame's COR, or at
+// the COR the response model derives there from cor_rigid (which the rigid
+// model alone cannot answer), as evaluate() answers that design.
+Evaluation evaluate_at(const Design& design, double from_butt_m, ModeCache& modes) {
   Design at = design;
   at.impact_from_butt_m = std::clamp(from_butt_m, 0.0, design.implement.length_m());
   at.impact_off_axis_m = 0.0;  // the curves run along the long axis
-  return evaluate(at, Fidelity::kRigid);
+  return evaluate(at, design.cor_rigid ? Fidelity::kResponse : Fidelity::kRigid, {.modes = &modes});
 }
 
 }  // namespace
@@ -54,8 +58,9 @@ std::vector<FramePoint> frame_curves(const Design& design, double step_m, Fideli
     at.push_back(static_cast<double>(i) * step_m);
   if (hi > lo) at.push_back(hi);
   std::vector<FramePoint> points;
+  ModeCache modes;
   for (const double d : at) {
-    const Evaluation e = evaluate_at(design, L - d);
+    const Evaluation e = evaluate_at(design, L - d, modes);
     if (!collision) {
       points.push_back({d, e.wrist_force_ratio, e.apparent_cor, e.peak_wrist_force_N});
       continue;

@@ -30,7 +30,9 @@ inline constexpr double kFrameCurveStep_m = 0.01;
 // the wrist its share |F_w / F| of the solved peak force, as evaluate() does);
 // a point whose collision cannot be solved (a contact time out of range near
 // the butt) is left out. Any other fidelity: the rigid model at the design's
-// COR. Throws std::invalid_argument for a step <= 0, or as DesignCollision.
+// COR, or with cor_rigid at the COR the response model derives at each point
+// (as evaluate() answers it). Throws std::invalid_argument for a step <= 0,
+// or as DesignCollision.
 // A stretch of the long axis [m from the tip], from_tip_m <= to_tip_m.
 struct AxisSpan {
   double from_tip_m = 0.0;

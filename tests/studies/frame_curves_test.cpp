@@ -67,5 +67,46 @@ TEST_CASE("A strung design's curves are the solved collision's, as evaluate() gi
   CHECK(checked >= 4);
 }
 
+TEST_CASE("A derived COR's curves are the response model's at each point, as evaluate() gives") {
+  // With cor_rigid the rigid model alone has no answer: the page drew nothing
+  // (refused) where evaluate answers at the response level.
+  io::DesignFile file = tour_100();
+  Design& d = file.design;
+  d.cor_rigid = 0.85;
+  d.cor_given = false;
+  const Evaluation asked = evaluate(d, Fidelity::kResponse);
+  const std::vector<FramePoint> curve = frame_curves(d, 0.05, frame_curve_fidelity(asked));
+  const double L = d.implement.length_m();
+  REQUIRE(curve.size() > 5);
+  for (const FramePoint& p : curve) {
+    Design at = d;
+    at.impact_from_butt_m = L - p.from_tip_m;
+    const Evaluation e = evaluate(at, Fidelity::kResponse);
+    CHECK(p.apparent_cor == e.apparent_cor);
+    CHECK(p.peak_wrist_force_N == e.peak_wrist_force_N);
+  }
+}
+
+TEST_CASE("A swung strung racquet's curves are its collisions at the speed they meet there") {
+  io::DesignFile file =
+      io::load_design(SWEETSPOT_SOURCE_DIR "/designs/racquets/tour-100-strung.json");
+  Design& d = file.design;
+  d.ball.speed_m_s = 20.0;
+  d.swing = Swing{15.0, 0.6, std::nullopt};
+  const std::vector<FramePoint> curve = frame_curves(d, 0.05, Fidelity::kCollision);
+  const double L = d.implement.length_m();
+  int checked = 0;
+  for (const FramePoint& p : curve) {
+    if (p.from_tip_m < 0.05 || p.from_tip_m > 0.3) continue;
+    Design at = d;
+    at.impact_from_butt_m = L - p.from_tip_m;
+    const Evaluation e = evaluate(at, Fidelity::kCollision);
+    CHECK(p.apparent_cor == e.apparent_cor);
+    CHECK(p.peak_wrist_force_N == e.peak_wrist_force_N);
+    ++checked;
+  }
+  CHECK(checked >= 4);
+}
+
 }  // namespace
 }  // namespace sweetspot::studies

@@ -442,6 +442,24 @@ TEST_CASE("A robust objective over a spread of hits off a swung racquet is evalu
     worst = std::max(worst, evaluate(at, Fidelity::kRigid).peak_wrist_force_N);
   }
   CHECK(studies::objective_of(study, file) == Approx(worst).epsilon(1e-12));
+
+  // At rest, the shared rigid path over the hits: the shot of the assumed
+  // groundstroke at each hit, as evaluate() gives it (it had been 0).
+  io::Json text = nlohmann::json::parse(R"({"design": "../table1/row1.json", "fidelity": "rigid",
+      "variables": [{"path": "/hand/mass_kg", "min": 0.3, "max": 0.6}],
+      "objective": {"output": "shot_speed_m_s", "goal": "maximize",
+                    "over_impacts": {"from_tip_m": [0.1, 0.22], "points": 3, "reduce": "mean"}}})");
+  const studies::Study at_rest = studies::read_study(text, "study.json", studies());
+  const io::DesignFile row = studies::design_at(at_rest, std::vector<double>{0.5});
+  double mean = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    Design at = row.design;
+    at.impact_from_butt_m = 0.7 - (0.1 + 0.06 * k);
+    mean += evaluate(at, Fidelity::kRigid).shot_speed_m_s / 3.0;
+  }
+  CHECK(mean > 20.0);
+  // Maximised: the objective to minimise is its negative.
+  CHECK(studies::objective_of(at_rest, row) == Approx(-mean).epsilon(1e-12));
 }
 
 TEST_CASE("Optimizer tolerances are refused under their own keys") {
@@ -477,7 +495,7 @@ TEST_CASE(
   const char* texts[] = {
       R"({"design": {"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8},
                      "ball": {"speed_m_s": 50}, "impact": {"from_tip_cm": 5}},
-          "outputs": ["peak_wrist_force_N", "rotation_axis_free_from_butt_m"],
+          "outputs": ["peak_wrist_force_N", "rotation_axis_free_from_butt_m", "shot_speed_m_s"],
           "variables": [{"path": "/impact/from_tip_cm", "min": -5, "max": 80, "points": 87},
                         {"path": "/ball/speed_m_s", "values": [-1, 10, 50]}]})",
       R"({"design": {"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8},
