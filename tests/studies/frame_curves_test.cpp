@@ -16,6 +16,25 @@ io::DesignFile tour_100() {
   return io::load_design(SWEETSPOT_SOURCE_DIR "/designs/racquets/tour-100.json");
 }
 
+// Checks each point of `curve` whose distance from the tip `wanted` accepts
+// against evaluate() of the design hit there at `fidelity`: the same rebound
+// and wrist force, bit for bit. Returns how many were checked.
+template <typename Wanted>
+int check_against_evaluate(const Design& d, const std::vector<FramePoint>& curve, Fidelity fidelity,
+                           Wanted wanted) {
+  int checked = 0;
+  for (const FramePoint& p : curve) {
+    if (!wanted(p.from_tip_m)) continue;
+    Design at = d;
+    at.impact_from_butt_m = d.implement.length_m() - p.from_tip_m;
+    const Evaluation e = evaluate(at, fidelity);
+    CHECK(p.apparent_cor == e.apparent_cor);
+    CHECK(p.peak_wrist_force_N == e.peak_wrist_force_N);
+    ++checked;
+  }
+  return checked;
+}
+
 TEST_CASE("The curves along the frame are the rigid model's, and zero wrist force at the COP") {
   const io::DesignFile file = tour_100();
   const Design& d = file.design;
@@ -53,18 +72,10 @@ TEST_CASE("A strung design's curves are the solved collision's, as evaluate() gi
   const Design& d = file.design;
   REQUIRE(needed_fidelity(d) == Fidelity::kCollision);
   const std::vector<FramePoint> curve = frame_curves(d, 0.01, Fidelity::kCollision);
-  const double L = d.implement.length_m();
-  int checked = 0;
-  for (const FramePoint& p : curve) {
-    if (std::lround(p.from_tip_m * 100) % 10 != 5) continue;  // 5, 15, 25, ... cm
-    Design at = d;
-    at.impact_from_butt_m = L - p.from_tip_m;
-    const Evaluation e = evaluate(at, Fidelity::kCollision);
-    CHECK(p.apparent_cor == e.apparent_cor);
-    CHECK(p.peak_wrist_force_N == e.peak_wrist_force_N);
-    ++checked;
-  }
-  CHECK(checked >= 4);
+  // 5, 15, 25, ... cm from the tip.
+  CHECK(check_against_evaluate(d, curve, Fidelity::kCollision, [](double from_tip_m) {
+          return std::lround(from_tip_m * 100) % 10 == 5;
+        }) >= 4);
 }
 
 TEST_CASE("A derived COR's curves are the response model's at each point, as evaluate() gives") {
@@ -76,15 +87,7 @@ TEST_CASE("A derived COR's curves are the response model's at each point, as eva
   d.cor_given = false;
   const Evaluation asked = evaluate(d, Fidelity::kResponse);
   const std::vector<FramePoint> curve = frame_curves(d, 0.05, frame_curve_fidelity(asked));
-  const double L = d.implement.length_m();
-  REQUIRE(curve.size() > 5);
-  for (const FramePoint& p : curve) {
-    Design at = d;
-    at.impact_from_butt_m = L - p.from_tip_m;
-    const Evaluation e = evaluate(at, Fidelity::kResponse);
-    CHECK(p.apparent_cor == e.apparent_cor);
-    CHECK(p.peak_wrist_force_N == e.peak_wrist_force_N);
-  }
+  CHECK(check_against_evaluate(d, curve, Fidelity::kResponse, [](double) { return true; }) > 5);
 }
 
 TEST_CASE("A swung strung racquet's curves are its collisions at the speed they meet there") {
@@ -94,18 +97,9 @@ TEST_CASE("A swung strung racquet's curves are its collisions at the speed they 
   d.ball.speed_m_s = 20.0;
   d.swing = Swing{15.0, 0.6, std::nullopt};
   const std::vector<FramePoint> curve = frame_curves(d, 0.05, Fidelity::kCollision);
-  const double L = d.implement.length_m();
-  int checked = 0;
-  for (const FramePoint& p : curve) {
-    if (p.from_tip_m < 0.05 || p.from_tip_m > 0.3) continue;
-    Design at = d;
-    at.impact_from_butt_m = L - p.from_tip_m;
-    const Evaluation e = evaluate(at, Fidelity::kCollision);
-    CHECK(p.apparent_cor == e.apparent_cor);
-    CHECK(p.peak_wrist_force_N == e.peak_wrist_force_N);
-    ++checked;
-  }
-  CHECK(checked >= 4);
+  CHECK(check_against_evaluate(d, curve, Fidelity::kCollision, [](double from_tip_m) {
+          return from_tip_m >= 0.05 && from_tip_m <= 0.3;
+        }) >= 4);
 }
 
 }  // namespace
