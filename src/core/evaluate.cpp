@@ -179,13 +179,28 @@ Meeting meeting_at(const Design& design, double from_butt_m) {
   Meeting m;
   m.swing =
       scaled_to_swingweight(*design.swing, swingweight_kg_m2(design.implement.mass_properties()));
+  // Scaled to the design's swingweight, the angular speed must stay in the
+  // range a swing is accepted over (swing.hpp), or the reference that scaled
+  // it is what took it out.
+  if (design.swing->reference_swingweight_kg_m2 &&
+      !(m.swing.angular_speed_rad_s <= kMaxAngularSpeed_rad_s)) {
+    throw FieldError(
+        "swing/reference_swingweight_kg_m2",
+        "scales the swing's " + detail::format_significant(design.swing->angular_speed_rad_s) +
+            " rad/s to this racquet's swingweight as " +
+            detail::format_significant(m.swing.angular_speed_rad_s) + " rad/s, above the model's " +
+            detail::format_number(kMaxAngularSpeed_rad_s) + " rad/s; got " +
+            detail::format_number(*design.swing->reference_swingweight_kg_m2) + " kg m^2");
+  }
   m.racquet_speed_m_s = racquet_speed_m_s(m.swing, from_butt_m);
   m.speed_m_s = design.ball.speed_m_s + m.racquet_speed_m_s;
-  if (!(m.speed_m_s >= kMinSpeed_m_s)) {
+  if (!(m.speed_m_s >= kMinSpeed_m_s && m.speed_m_s <= kMaxSpeed_m_s)) {
     throw FieldError("swing/angular_speed_rad_s",
                      "the ball and the racquet meet at " + detail::format_significant(m.speed_m_s) +
-                         " m/s, below the model's least speed of " +
-                         detail::format_number(kMinSpeed_m_s) + " m/s");
+                         " m/s (the ball's " + detail::format_significant(design.ball.speed_m_s) +
+                         " and the racquet's " + detail::format_significant(m.racquet_speed_m_s) +
+                         "), outside the model's [" + detail::format_number(kMinSpeed_m_s) + ", " +
+                         detail::format_number(kMaxSpeed_m_s) + "] m/s");
   }
   return m;
 }

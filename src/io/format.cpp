@@ -390,6 +390,8 @@ std::string_view unit_of_key(std::string_view key) {
   // stiffness EI, N·m².
   static constexpr std::pair<std::string_view, std::string_view> kSuffixes[] = {
       {"EI_N_m2", "N·m²"},
+      {"_rad_s", "rad/s"},
+      {"_rpm", "rpm"},
       {"_km_h", "km/h"},
       {"_m_s", "m/s"},
       {"_mph", "mph"},

@@ -98,12 +98,20 @@ std::vector<std::string> answer_paragraphs(const studies::Study& study,
                         io::significant(study.over_impacts->from_tip_hi_m))
           : std::string();
   // The lead output at the best design and at the start: over a spread of
-  // impacts that is the objective itself.
+  // impacts, the objective turned back into the output (a maximised output
+  // is minimised as its negative; a weight divided out), as the sentence names
+  // it; with several terms or a target, the objective itself.
+  const auto over_spread = [&](double objective) {
+    if (study.objective.size() != 1 || lead.goal == studies::Goal::kTarget)
+      return io::significant(objective, 4);
+    const double sign = lead.goal == studies::Goal::kMaximize ? -1.0 : 1.0;
+    return io::significant(sign * objective / lead.weight, 4);
+  };
   const std::string best_text = study.over_impacts
-                                    ? io::significant(r.summary.objective, 4)
+                                    ? over_spread(r.summary.objective)
                                     : (best_lead ? io::significant(*best_lead, 4) : "—");
   const std::string start_text =
-      study.over_impacts ? (r.start_objective ? io::significant(*r.start_objective, 4) : "no value")
+      study.over_impacts ? (r.start_objective ? over_spread(*r.start_objective) : "no value")
                          : (start_lead ? io::significant(*start_lead, 4) : "no value");
   std::vector<std::string> paragraphs(1);
   std::string& answer = paragraphs.front();
