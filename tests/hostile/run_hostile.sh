@@ -281,9 +281,11 @@ check_one() {
       want=$(printf '%s\n' "$@" | LC_ALL=C sort)
       have=$(find "$dir" -mindepth 1 -maxdepth 1 -printf '%P\n' | LC_ALL=C sort)
       [ "$want" = "$have" ] || why+=("$dir holds [$(echo $have | head -c 200)] expected [$*]") ;;
-    'has~') grep -qaF -- "$2" "$p" || why+=("$1 lacks '$2'") ;;
-    'has~i') grep -qaiF -- "$2" "$p" || why+=("$1 lacks '$2' (in any case)") ;;
-    'has!~') grep -qaF -- "$2" "$p" && why+=("$1 holds '$2': $(grep -m1 -aF -- "$2" "$p" | head -c 120)") ;;
+    # The text is every word after the file (quoted or not), joined by one
+    # space: an unquoted phrase is the whole phrase, not its first word.
+    'has~') local t="${*:2}"; grep -qaF -- "$t" "$p" || why+=("$1 lacks '$t'") ;;
+    'has~i') local t="${*:2}"; grep -qaiF -- "$t" "$p" || why+=("$1 lacks '$t' (in any case)") ;;
+    'has!~') local t="${*:2}"; grep -qaF -- "$t" "$p" && why+=("$1 holds '$t': $(grep -m1 -aF -- "$t" "$p" | head -c 120)") ;;
     has-re) grep -qaE -- "$2" "$p" || why+=("$1 does not match /$2/") ;;
     lines)
       local n
