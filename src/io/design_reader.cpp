@@ -1186,15 +1186,17 @@ void read_swing(ObjectReader& top, Reading& in) {
     r.record("angular_speed_rad_s", key);
   }
   if (!(s.angular_speed_rad_s > 0.0 && s.angular_speed_rad_s <= kMaxAngularSpeed_rad_s)) {
-    const std::string key = rad_s ? "angular_speed_rad_s" : rpm ? "angular_speed_rpm" : "";
-    const double given = rad_s ? *rad_s : rpm ? *rpm : s.angular_speed_rad_s;
-    r.fail(key.empty() ? r.one_of(spellings("speed_at_impact", Dimension::kSpeed)) : key,
-           "the swing's angular speed must be in (0, " + brief(Json(kMaxAngularSpeed_rad_s)) +
-               "] rad/s (" + brief(Json(kMaxAngularSpeed_rad_s * 60.0 / kRadPerRev)) +
-               " rpm), got " + brief(Json(given)) +
-               (rad_s ? " rad/s"
-                : rpm ? " rpm"
-                      : " m/s"));
+    const std::string limit = "the swing's angular speed must be in (0, " +
+                              brief(Json(kMaxAngularSpeed_rad_s)) + "] rad/s (" +
+                              fmt::format("{:.0f}", kMaxAngularSpeed_rad_s * 60.0 / kRadPerRev) + " rpm), got ";
+    if (rad_s) r.fail("angular_speed_rad_s", limit + brief(Json(*rad_s)) + " rad/s");
+    if (rpm) r.fail("angular_speed_rpm", limit + brief(Json(*rpm)) + " rpm");
+    // A speed at the impact point: say the speed the file gave, in its unit,
+    // and the angular speed it makes about the pivot.
+    const std::string key = r.one_of(spellings("speed_at_impact", Dimension::kSpeed));
+    r.fail(key, limit + brief(*r.child(key)) + " " + std::string(unit_of_key(key)) +
+                    " at the impact point, " + brief(Json(*pivot + in.design.impact_from_butt_m)) +
+                    " m from the pivot: " + brief(Json(s.angular_speed_rad_s)) + " rad/s");
   }
   s.reference_swingweight_kg_m2 = r.quantity("reference_swingweight", Dimension::kInertia);
   if (s.reference_swingweight_kg_m2 && !(*s.reference_swingweight_kg_m2 > 0.0)) {
