@@ -6,10 +6,13 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstddef>
+#include <cstdio>
 #include <cstring>
+#include <string>
 #include <vector>
 
 #include "sweetspot/evaluate.hpp"
+#include "sweetspot/invariants.hpp"
 #include "sweetspot/string_bed.hpp"
 #include "sweetspot/swing.hpp"
 
@@ -175,6 +178,53 @@ TEST_CASE("A swung racquet's map is evaluate() at each point, at the speed they 
     ++checked;
   }
   CHECK(checked > 5);
+}
+
+TEST_CASE("A map refused at a point names the first point evaluate() refuses, on any threads") {
+  // The ball at 40 m/s onto a strung racquet turning at 60 rad/s: towards the
+  // tip they meet near 100 m/s, where the ball would be squeezed past its
+  // radius. The map refuses as evaluate() does at the first such point of its
+  // grid (columns from the butt, rows across), and says which.
+  Design d = racquet();
+  d.ball.speed_m_s = 40.0;
+  d.swing = Swing{60.0, 0.6, std::nullopt};
+  d.strings = StringBed{};
+  d.stiffness.fundamental_free_Hz = 150.0;
+  d.cor_given = false;
+  const int columns = 5, rows = 3;
+  Design at_rest = d;
+  at_rest.swing.reset();
+  const studies::StringBedMap layout = string_bed_map(at_rest, grid(columns, rows));
+  std::string expected_field, expected_where;
+  for (int i = 0; i < columns && expected_field.empty(); ++i) {
+    for (int j = 0; j < rows && expected_field.empty(); ++j) {
+      const studies::StringBedMapPoint& p =
+          layout.points[static_cast<std::size_t>(j * columns + i)];
+      if (!p.on_bed) continue;
+      Design at = d;
+      at.impact_from_butt_m = p.from_butt_m;
+      at.impact_off_axis_m = p.off_axis_m;
+      try {
+        (void)evaluate(at, Fidelity::kCollision);
+      } catch (const ModelRefusal& refusal) {
+        expected_field = refusal.field();
+        char where[96];
+        std::snprintf(where, sizeof where, "at the map's point %.3g cm from the tip",
+                      (d.implement.length_m() - p.from_butt_m) * 100.0);
+        expected_where = where;
+      }
+    }
+  }
+  REQUIRE(expected_field == "swing/angular_speed_rad_s");
+  studies::StringBedMapOptions options = grid(columns, rows, Fidelity::kCollision);
+  options.threads = GENERATE(1, 4);
+  CHECK_THROWS_MATCHES(string_bed_map(d, options), ModelRefusal,
+                       Catch::Matchers::Predicate<ModelRefusal>(
+                           [&](const ModelRefusal& refusal) {
+                             return refusal.field() == expected_field &&
+                                    refusal.detail().find(expected_where) != std::string::npos;
+                           },
+                           "names " + expected_field + " and " + expected_where));
 }
 
 TEST_CASE("A map shared among threads is the map of one thread, bit for bit, and says how far") {
