@@ -4,6 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <string>
+#include <vector>
 
 namespace sweetspot::reports {
 namespace {
@@ -34,6 +37,52 @@ std::string paper_says(const io::DesignFile& beam, const std::string& printed) {
   const bool paper_beam = beam.reference.is_object() && beam.reference.contains("source") &&
                           beam.reference["source"].get<std::string>().rfind("Cross (2004)", 0) == 0;
   return paper_beam ? " (paper: " + printed + ")" : "";
+}
+
+// The value most rows share, then each other row's: "50 m/s (row 3: 30 m/s)".
+// The caption says what the rows were computed for, not what the paper's were.
+std::string by_row(const std::vector<studies::Table1Row>& rows,
+                   const std::function<std::string(const studies::Table1Row&)>& value) {
+  std::vector<std::string> values;
+  for (const studies::Table1Row& r : rows) values.push_back(value(r));
+  if (values.empty()) return "";
+  std::string common = values.front();
+  std::size_t most = 0;
+  for (const std::string& v : values) {
+    const auto n = static_cast<std::size_t>(std::count(values.begin(), values.end(), v));
+    if (n > most) most = n, common = v;
+  }
+  std::string others;
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    if (values[k] == common) continue;
+    others += fmt::format("{}row {}: {}", others.empty() ? " (" : "; ", rows[k].row, values[k]);
+  }
+  return common + (others.empty() ? "" : others + ")");
+}
+
+std::string table1_caption(const std::vector<studies::Table1Row>& rows) {
+  const auto cm = [](double m) { return io::significant(m * 100.0, 4) + " cm"; };
+  return fmt::format(
+      "A {} racquet struck {} from the tip by a {} ball at {}; hand centre {} from the butt, "
+      "wrist at the butt.",
+      by_row(rows, [&](const auto& r) { return cm(r.design.design.implement.length_m()); }),
+      by_row(rows,
+             [&](const auto& r) {
+               return cm(r.design.design.implement.length_m() - r.evaluation.impact_from_butt_m);
+             }),
+      by_row(rows,
+             [](const auto& r) {
+               return io::significant(r.design.design.ball.mass_kg * 1000.0, 4) + " g";
+             }),
+      by_row(rows,
+             [](const auto& r) {
+               const Evaluation& e = r.evaluation;
+               const std::string v = io::significant(r.design.design.ball.speed_m_s, 4) + " m/s";
+               if (e.swing_assumed) return v + " relative to the strings";
+               return v + " onto the racquet swung at " + io::significant(e.racquet_speed_m_s, 4) +
+                      " m/s there";
+             }),
+      by_row(rows, [&](const auto& r) { return cm(r.design.design.hand.center_from_butt_m); }));
 }
 
 }  // namespace
@@ -72,11 +121,9 @@ std::string table1_report(const std::vector<studies::Table1Row>& rows, io::Forma
     return csv;
   }
   std::string md =
-      "# Table I of Cross (2004), recomputed\n\n"
-      "A 70 cm racquet struck 5 cm from the tip by a 57 g ball at 50 m/s relative to the "
-      "strings; hand centre 7 cm from the butt, wrist at the butt. Masses in kg, T in ms, forces "
-      "in N. F0 is Eq. (15) with Eqs. (16)-(17); F_w is Eq. (11) times F0. The paper prints "
-      "whole newtons.\n\n"
+      std::string("# Table I of Cross (2004), recomputed\n\n") + table1_caption(rows) +
+      " Masses in kg, T in ms, forces in N. F0 is Eq. (15) with Eqs. (16)-(17); F_w is Eq. (11) "
+      "times F0. The paper prints whole newtons.\n\n"
       "| row | M_b | M1/M2 | e | T | M_h | M_e | M_eff | e_A | F0 | paper F0 | ΔF0 | F_w | "
       "paper F_w | ΔF_w |\n"
       "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";

@@ -4,7 +4,11 @@
 
 #include <catch2/catch.hpp>
 
+#include "io/format.hpp"
+#include "studies/paper.hpp"
+#include "sweetspot/evaluate.hpp"
 #include "sweetspot/rigid_impact.hpp"
+#include "sweetspot/swing.hpp"
 
 namespace sweetspot::reports {
 namespace {
@@ -50,6 +54,36 @@ TEST_CASE("The figures quote the paper's numbers beside the paper's beam only") 
     CHECK(summary.find("paper") == std::string::npos);
     CHECK(summary.find("nan") == std::string::npos);
   }
+}
+
+TEST_CASE("Table I's caption says what its rows were computed for") {
+  // The shipped rows: the paper's set-up, as its Section IV states it.
+  std::vector<studies::Table1Row> rows =
+      studies::compute_table1(std::string(SWEETSPOT_SOURCE_DIR) + "/designs/table1");
+  const auto caption = [&] {
+    const std::string md = reports::table1_report(rows, io::Format::kMarkdown);
+    const std::size_t from = md.find("\n\n") + 2;
+    return md.substr(from, md.find(" Masses in kg") - from);
+  };
+  CHECK(caption() ==
+        "A 70 cm racquet struck 5 cm from the tip by a 57 g ball at 50 m/s relative to the "
+        "strings; hand centre 7 cm from the butt, wrist at the butt.");
+  // Rows edited away from it say so, each by its row, with the speed a swung
+  // racquet adds at the impact as evaluate() computed it.
+  Design& swung = rows[2].design.design;
+  swung.ball.speed_m_s = 30.0;
+  swung.swing = Swing{15.0, 0.6, std::nullopt};
+  rows[2].evaluation = evaluate(swung);
+  Design& moved = rows[4].design.design;
+  moved.impact_from_butt_m = moved.implement.length_m() - 0.10;
+  moved.hand.center_from_butt_m = 0.08;
+  rows[4].evaluation = evaluate(moved);
+  CHECK(caption() ==
+        "A 70 cm racquet struck 5 cm (row 5: 10 cm) from the tip by a 57 g ball at "
+        "50 m/s relative to the strings (row 3: 30 m/s onto the racquet swung at " +
+            io::significant(rows[2].evaluation.racquet_speed_m_s, 4) +
+            " m/s there); hand centre 7 cm (row 5: 8 cm) from the butt, wrist at "
+            "the butt.");
 }
 
 }  // namespace
