@@ -62,9 +62,17 @@ double golden_section_max(F&& f, double lo, double hi, double tolerance_m) {
   return 0.5 * (lo + hi);
 }
 
+// The spacing of the scan that brackets the largest value before the
+// golden-section search: the rebound along a soft frame can have two humps
+// (one each side of the fundamental's antinode), and a search that assumes
+// one finds either.
+inline constexpr double kScanSpacing_m = 0.02;
+inline constexpr int kMinScanIntervals = 8;
+
 // The point of the string bed's long axis [m from the tip] where `value` of
-// the evaluation there is largest, and that evaluation, by golden-section
-// search to `tolerance_m`. A point the model refuses (a ball squeezed past its
+// the evaluation there is largest, and that evaluation: the best of a scan
+// every kScanSpacing_m or closer, then a golden-section search to
+// `tolerance_m` between its neighbours. A point the model refuses (a ball squeezed past its
 // radius where the frame gives less) counts as -infinity, so the search keeps
 // to the points it answers; where it ends on one it refuses, the best point it
 // answered is the answer (std::nullopt when it answered none).
@@ -83,7 +91,18 @@ std::optional<SpotOutcome> max_along_axis(const io::DesignFile& design, std::str
       return -std::numeric_limits<double>::infinity();
     }
   };
-  const double best = golden_section_max(value_at, lo, hi, tolerance_m);
+  const int intervals =
+      std::max(kMinScanIntervals, static_cast<int>(std::ceil((hi - lo) / kScanSpacing_m)));
+  const double step = (hi - lo) / intervals;
+  int best_k = 0;
+  double best_value = -std::numeric_limits<double>::infinity();
+  for (int k = 0; k <= intervals; ++k) {
+    const double v = value_at(k == intervals ? hi : lo + k * step);
+    if (v > best_value) best_value = v, best_k = k;
+  }
+  const double best =
+      golden_section_max(value_at, lo + std::max(0, best_k - 1) * step,
+                         best_k + 1 >= intervals ? hi : lo + (best_k + 1) * step, tolerance_m);
   try {
     return SpotOutcome{best, evaluate_at(design, best, fidelity, rel_tol)};
   } catch (const io::InputError&) {

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "io/design_reader.hpp"
+#include "studies/frame_curves.hpp"
 #include "studies/sweet_spots.hpp"
 
 namespace sweetspot::reports {
@@ -171,6 +172,40 @@ TEST_CASE(
   CHECK(found - spots.node_hand->from_tip_m < a);
   CHECK_THROWS_WITH(studies::best_rebound_on_axis(design, 1e-6, 0.0),
                     Catch::Contains("tolerance_m"));
+}
+
+TEST_CASE(
+    "The best rebound and the power point are the largest along the string bed where the rebound "
+    "has two humps") {
+  // A light, soft junior frame: the rebound dips mid-strings (0.21) between a
+  // hump towards the tip (0.30) and a higher one at the throat (0.42). A search
+  // that assumes one hump had answered the lower.
+  const io::DesignFile design = design_from(R"({
+    "implement": {"length_in": 25, "mass_g": 230, "balance_cm": 33, "swingweight_kg_cm2": 250,
+                  "headsize_sq_in": 105},
+    "frame": {"RA": 60}, "strings": {"tension_lb": 50}})");
+  const Evaluation asked = io::evaluate_design_file(design, "collision", 1e-6);
+  const studies::SweetSpots spots = studies::find_sweet_spots(design, asked, 1e-6);
+  REQUIRE(spots.best_rebound);
+  REQUIRE(spots.power_point);
+  // Brute force every 2.5 mm over the axis the search covers.
+  const studies::AxisSpan span = studies::hit_span(design);
+  double best_cor = -1.0, best_shot = 0.0, cor_x = 0.0, shot_x = 0.0, dip = 1.0;
+  for (double x = span.from_tip_m; x <= span.to_tip_m; x += 0.0025) {
+    io::DesignFile moved = design;
+    moved.design.impact_from_butt_m = asked.length_m - x;
+    const Evaluation e = io::evaluate_design_file(moved, "collision", 1e-6);
+    if (e.apparent_cor > best_cor) best_cor = e.apparent_cor, cor_x = x;
+    if (e.shot_speed_m_s > best_shot) best_shot = e.shot_speed_m_s, shot_x = x;
+    if (std::abs(x - 0.185) < 0.01) dip = std::min(dip, e.apparent_cor);
+  }
+  CHECK(dip < best_cor - 0.1);  // two humps indeed
+  CHECK(spots.best_rebound->from_tip_m ==
+        Approx(cor_x).margin(studies::kBestReboundTolerance_m + 0.00125));
+  CHECK(spots.best_rebound->evaluation.apparent_cor >= best_cor - 1e-3);
+  CHECK(spots.power_point->from_tip_m ==
+        Approx(shot_x).margin(studies::kBestReboundTolerance_m + 0.00125));
+  CHECK(spots.power_point->evaluation.shot_speed_m_s >= best_shot * (1.0 - 1e-3));
 }
 
 }  // namespace sweetspot::reports
