@@ -15,6 +15,7 @@
 #include "core/collision/modal_state.hpp"
 #include "core/collision/step_mesh.hpp"
 #include "sweetspot/errors.hpp"
+#include "sweetspot/invariants.hpp"
 #include "sweetspot/rigid_impact.hpp"
 #include "sweetspot/roots.hpp"
 #include "sweetspot/string_bed.hpp"
@@ -642,12 +643,33 @@ CollisionResult run(const FrameAtImpact& frame, const std::optional<StringBedDyn
 // (4 fine - coarse) / 3: the h^2 term of two runs at h and h/2 cancelled.
 double extrapolated(double coarse, double fine) { return (4.0 * fine - coarse) / 3.0; }
 
+// A lossless ball on an immovable support comes back at exactly its speed; the
+// sum of a run's steps (and its extrapolation) can give it back 1e-15 more.
+// Within kInvariantRoundOff of the incident energy that excess is the sums'
+// round-off, not energy from nowhere: the ball keeps what it brought. (More
+// is check_invariants()'s refusal.)
+CollisionResult kept_within_its_energy(CollisionResult r) {
+  const double excess_J = r.ball_out_J - r.ball_in_J;
+  const double excess_cor = std::abs(r.apparent_cor) - 1.0;
+  if ((excess_J > 0.0 && excess_J <= kInvariantRoundOff * r.ball_in_J) ||
+      (excess_cor > 0.0 && excess_cor <= kInvariantRoundOff)) {
+    const double v1 = -r.ball_velocity_after_m_s / r.apparent_cor;  // |e_A| is ~1 here
+    r.apparent_cor = std::copysign(std::min(1.0, std::abs(r.apparent_cor)), r.apparent_cor);
+    r.ball_velocity_after_m_s = -r.apparent_cor * v1;
+    r.ball_out_J = std::min(r.ball_out_J, r.ball_in_J);
+  }
+  if (r.ball_loss_J < 0.0 && -r.ball_loss_J <= kInvariantRoundOff * r.ball_in_J)
+    r.ball_loss_J = 0.0;
+  return r;
+}
+
 }  // namespace
 
 CollisionResult collide(const FrameAtImpact& frame, const std::optional<StringBedDynamics>& strings,
                         double ball_mass_kg, const BallContactLaw& law, double speed_m_s,
                         const CollisionOptions& options) {
-  if (!options.extrapolate) return run(frame, strings, ball_mass_kg, law, speed_m_s, options);
+  if (!options.extrapolate)
+    return kept_within_its_energy(run(frame, strings, ball_mass_kg, law, speed_m_s, options));
   CollisionOptions o = options;
   o.extrapolate = false;
   o.record_history = false;
@@ -657,7 +679,8 @@ CollisionResult collide(const FrameAtImpact& frame, const std::optional<StringBe
   CollisionResult r = run(frame, strings, ball_mass_kg, law, speed_m_s, o);
   r.step_error = std::abs(r.apparent_cor - coarse.apparent_cor);
   // Only a smooth dependence on h extrapolates: the same number of contacts.
-  if (coarse.contacts != r.contacts || coarse.separated != r.separated) return r;
+  if (coarse.contacts != r.contacts || coarse.separated != r.separated)
+    return kept_within_its_energy(std::move(r));
   for (double CollisionResult::*field :
        {&CollisionResult::contact_time_s, &CollisionResult::in_contact_s,
         &CollisionResult::impulse_N_s, &CollisionResult::ball_velocity_after_m_s,
@@ -680,7 +703,7 @@ CollisionResult collide(const FrameAtImpact& frame, const std::optional<StringBe
   for (std::size_t k = 0; k < r.mode_energy_J.size(); ++k)
     keep_sign(coarse.mode_energy_J[k], r.mode_energy_J[k]);
   r.steps += coarse.steps;
-  return r;
+  return kept_within_its_energy(std::move(r));
 }
 
 }  // namespace sweetspot

@@ -159,7 +159,8 @@ CollisionResult DesignCollision::at_speed(double from_butt_m, double off_axis_m,
                " m, more than its radius of " + detail::format_number(radius) +
                " m: its centre would have passed what it hits" +
                (design.ball_contact.form == BallLawForm::kPower
-                    ? "; the hysteretic ball (ball.contact.law) stiffens as it squeezes"
+                    ? "; the hysteretic ball (ball.contact.law \"hysteretic\"), which stiffens "
+                      "as it squeezes, may answer"
                     : ""));
   }
   const double M_eff = 1.0 / frame.inverse_effective_mass_per_kg;  // inf: immovable

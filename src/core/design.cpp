@@ -202,6 +202,22 @@ void validate(const Design& d) {
               "), got " + detail::format_number(y) + " m");
     }
   }
+  // A ball on the strings lands on the head: a string bed's contact at the
+  // throat or the handle, where there are no strings, is no answer.
+  if (d.strings && outline && !on_string_bed(*outline, d.impact_from_butt_m, 0.0)) {
+    // Said from the tip, as people place a hit on a racquet.
+    const double head_from_tip_m =
+        std::max(0.0, L - outline->center_from_butt_m - outline->semi_length_m);
+    const double head_to_tip_m = L - outline->center_from_butt_m + outline->semi_length_m;
+    throw FieldError("impact/from_butt_m",
+                     "a ball on the strings must land on the head, " +
+                         detail::format_significant(head_from_tip_m) + " to " +
+                         detail::format_significant(head_to_tip_m) +
+                         " m from the tip (to the hoop's outer edge), got " +
+                         detail::format_significant(L - d.impact_from_butt_m) +
+                         " m from the tip: a hit on the throat or the handle is not a string "
+                         "bed's");
+  }
   if (d.impact_off_axis_m != 0.0 && !d.twistweight_kg_m2 && !d.head) {
     throw FieldError(
         "impact/off_axis_m",

@@ -73,19 +73,24 @@ bool is_design_path(std::string_view name) {
          core_name.starts_with("profile"))) {
       name = "implement/" + core_name;
     }
-    const auto it = keys.find(name);
+    auto it = keys.find(name);
+    // The core places the impact from the butt; the file may from the tip.
+    if (it == keys.end() && name == "impact/from_butt_m") it = keys.find("impact/from_tip_m");
     if (it != keys.end()) {
       // The core speaks SI; when the file used another unit or form, quote
       // the file's own value, which the core's SI value may not show (5e-324
       // cm is 0 m).
-      const std::string si_key = name.substr(name.rfind('/') + 1);
+      const std::string si_key = it->first.substr(it->first.rfind('/') + 1);
       const std::string& pointer = it->second.pointer;
       const std::string user_key = pointer.substr(pointer.rfind('/') + 1);
       // The same quantity in another unit ("tension_lb" for "tension_N") is
       // converted; another quantity ("measured_ring_Hz", "balance_pts_hl") is
       // what the model derived this one from, which it names.
       const std::string stem = si_key.substr(0, si_key.rfind('_') + 1);
-      if (si_key != user_key && user_key.starts_with(stem))
+      if (!it->second.derived_by.empty())
+        detail += " (the file's " + user_key + ": " + given_text(it->second) + ", " +
+                  it->second.derived_by + ")";
+      else if (si_key != user_key && user_key.starts_with(stem))
         detail += " (the file's " + user_key + ": " + given_text(it->second) + ", converted to SI)";
       else if (si_key != user_key)
         detail += " (" + si_key + ", derived from the file's " + user_key + ": " +
@@ -851,8 +856,15 @@ std::optional<double> read_strings(ObjectReader& top, Reading& in, const Impleme
     StringFamilyRead both = read_family(r, StringFamilyRead{}, false);
     both.pull_tension_N = r.quantity("tension", Dimension::kForce);
     if (both.pull_tension_N && !(*both.pull_tension_N > 0.0)) {
+      // The range the bed's tension takes (design.hpp), in the file's unit.
       const std::string key = r.one_of(spellings("tension", Dimension::kForce));
-      r.fail(key, "must be > 0, got " + brief(Json(*r.number(key))));
+      const double per_unit = unit_factor(key, "tension", Dimension::kForce).value_or(1.0);
+      const std::string unit(unit_of_key(key));
+      r.fail(key, "must be in [" + significant(kMinTension_N / per_unit, 3) + ", " +
+                      significant(kMaxTension_N / per_unit, 4) + "] " + unit +
+                      " (the string bed's tension, " + significant(kMinTension_N, 3) + " to " +
+                      significant(kMaxTension_N, 4) + " N), got " + brief(Json(*r.number(key))) +
+                      " " + unit);
     }
     const Json* mains_json = r.child("mains");
     const Json* crosses_json = r.child("crosses");
@@ -978,6 +990,10 @@ std::optional<double> read_strings(ObjectReader& top, Reading& in, const Impleme
       // The mains' tension is the bed's: a complaint about it names the mains' key.
       if (in.keys && mains_json && in.keys->count("strings/mains/tension_N"))
         (*in.keys)["strings/tension_N"] = in.keys->at("strings/mains/tension_N");
+      // ... and says that the bed keeps the pull less its loss.
+      if (in.keys && loss > 0.0 && in.keys->count("strings/tension_N"))
+        (*in.keys)["strings/tension_N"].derived_by =
+            "less its tension_loss of " + significant(loss * 100.0, 4) + " %";
       std::string how =
           loss > 0.0 ? "the pull less its tension_loss of " + significant(loss * 100.0, 4) + " %"
                      : "the whole pull, tension_loss 0";
@@ -1188,7 +1204,8 @@ void read_swing(ObjectReader& top, Reading& in) {
   if (!(s.angular_speed_rad_s > 0.0 && s.angular_speed_rad_s <= kMaxAngularSpeed_rad_s)) {
     const std::string limit = "the swing's angular speed must be in (0, " +
                               brief(Json(kMaxAngularSpeed_rad_s)) + "] rad/s (" +
-                              fmt::format("{:.0f}", kMaxAngularSpeed_rad_s * 60.0 / kRadPerRev) + " rpm), got ";
+                              fmt::format("{:.0f}", kMaxAngularSpeed_rad_s * 60.0 / kRadPerRev) +
+                              " rpm), got ";
     if (rad_s) r.fail("angular_speed_rad_s", limit + brief(Json(*rad_s)) + " rad/s");
     if (rpm) r.fail("angular_speed_rpm", limit + brief(Json(*rpm)) + " rpm");
     // A speed at the impact point: say the speed the file gave, in its unit,

@@ -144,6 +144,9 @@ void override_fields(Json& document, const Json& patch);
 struct KeyOrigin {
   std::string pointer;
   Json given;  // the value in the file (null when absent), formatted only for a message
+  // How the model's value came from the given one when not by a unit alone
+  // ("less its tension_loss of 40 %"), for the message; "" for a unit.
+  std::string derived_by = {};
 };
 using KeyMap = std::map<std::string, KeyOrigin>;
 

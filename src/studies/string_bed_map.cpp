@@ -50,6 +50,15 @@ void check_grid(const char* name, int n) {
 StringBedMap string_bed_map(const Design& design, const StringBedMapOptions& options) {
   check_grid("--columns", options.columns);
   check_grid("--rows", options.rows);
+  if (is_rig(design.support)) {
+    // A rig holds the implement still: no wrist, no player, nothing to map.
+    throw FieldError("support",
+                     "a map is of a racquet in play (its wrist force and rebound "
+                     "at each point); a rig (" +
+                         std::string(to_string(design.support.kind)) +
+                         ") has none: ask `sweetspot evaluate` about one point of it, "
+                         "or give support free or hand");
+  }
   if (design.cor_rigid) {
     throw std::invalid_argument(
         "frame/cor_rigid: a map uses the given COR (frame/cor); a COR derived at every point of "

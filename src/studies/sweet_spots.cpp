@@ -169,8 +169,12 @@ SweetSpots find_sweet_spots(const io::DesignFile& design, const Evaluation& aske
     try {
       return SpotOutcome{from_tip, evaluate_at(design, from_tip, fidelity, rel_tol)};
     } catch (const io::InputError& refusal) {
+      // The reason alone: not the file, nor the JSON path of a point the
+      // file did not ask about.
       std::string why = refusal.what();
       if (const auto colon = why.find(": "); colon != std::string::npos)
+        why = why.substr(colon + 2);
+      if (const auto colon = why.find(": "); why.starts_with("/") && colon != std::string::npos)
         why = why.substr(colon + 2);
       spots.unanswered.push_back({what, from_tip, std::move(why)});
       return std::nullopt;

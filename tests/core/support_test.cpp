@@ -52,6 +52,30 @@ Design dropped_on(Support::Kind kind) {
   return d;
 }
 
+TEST_CASE("A lossless ball on a rigid surface comes back at its speed, never above it") {
+  // The sums of the run's steps and their extrapolation give 1 to about 1e-15
+  // either way; above 1 would be energy from nowhere.
+  for (const double stiffness : {3e5, 1e6}) {
+    for (const double exponent : {1.0, 1.5}) {
+      for (const double speed : {2.0, kDropTestSpeed_m_s, 20.0}) {
+        Design d = dropped_on(Support::Kind::kRigidSurface);
+        d.ball_contact = BallContactLaw{stiffness, exponent, 0.0, 0.0};
+        d.ball.speed_m_s = speed;
+        const Evaluation e = evaluate(d, Fidelity::kCollision);
+        INFO("k " << stiffness << ", n " << exponent << ", v " << speed);
+        CHECK(e.apparent_cor <= 1.0);
+        CHECK(e.apparent_cor == Approx(1.0).epsilon(1e-9));
+        CHECK(e.cor <= 1.0);
+        CHECK(e.rebound_speed_m_s <= speed);
+        REQUIRE(e.details);
+        REQUIRE(e.details->collision);
+        CHECK(e.details->collision->ball_out_J <= e.details->collision->ball_in_J);
+        CHECK(e.details->collision->ball_loss_J >= 0.0);
+      }
+    }
+  }
+}
+
 TEST_CASE("On a rigid surface the ball's own collision is the answer, bit for bit") {
   const Design d = dropped_on(Support::Kind::kRigidSurface);
   const Evaluation e = evaluate(d, needed_fidelity(d));
