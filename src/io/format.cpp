@@ -681,6 +681,17 @@ std::string evaluation_report(const DesignFile& file, const Evaluation& e, Forma
       md += fmt::format("| {} | {:.1f} | {} |\n", k + 1, details.vibration_modes[k].first,
                         significant(details.vibration_modes[k].second, 4));
     }
+    if (details.collision && e.vibration_energy_J) {
+      // The ledger's vibration is more than the modes keep: say what else.
+      double modes_J = 0.0;
+      for (const auto& mode : details.vibration_modes) modes_J += mode.second;
+      md += fmt::format(
+          "\nThe modes keep {} J of the {} J the impact put into vibration; the string bed keeps "
+          "{} J and the frame's damping took {} J during the contact.\n",
+          significant(modes_J, 4), significant(*e.vibration_energy_J, 4),
+          significant(details.collision->string_bed_energy_J, 4),
+          significant(details.collision->modal_damping_loss_J, 4));
+    }
   }
   if (const std::string note = evaluation_tree_detail::fidelity_note(e); !note.empty())
     md += "\nNote: " + note + ".\n";

@@ -169,7 +169,8 @@ const std::array kOutputs{
                },
                kNeedsModes, false, true},
     OutputSpec{"vibration_energy_J", "J",
-               "energy the free frame keeps as vibration after the impact",
+               "energy the impact puts into vibration: the frame's modes after it (and, solved, "
+               "the string bed's and what damping took during the contact)",
                [](const Evaluation& e) { return e.vibration_energy_J; }, kNeedsResponse, false,
                true, true},
     OutputSpec{"vibration_share", "", "vibration energy over the ball's incident kinetic energy",
@@ -245,7 +246,8 @@ const std::array kOutputs{
                  return *e.polar_inertia_kg_m2 * kCm2PerM2;
                },
                kNoPolarInertia},
-    OutputSpec{"polar_inertia_kg_m2", "kg m^2", "the same in SI, I_polar",
+    OutputSpec{"polar_inertia_kg_m2", "kg m^2",
+               "I_polar, the twistweight again (in kg m^2 in JSON and CSV)",
                [](const Evaluation& e) { return e.polar_inertia_kg_m2; }, kNoPolarInertia},
     OutputSpec{"impact_off_axis_m", "m",
                "impact point off the long axis, y (> 0 towards 3 o'clock)",

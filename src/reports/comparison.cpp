@@ -153,8 +153,17 @@ std::string toward(double delta_from_tip_m) {
 // "moves 1.4 cm toward the tip (30.5 -> 29 cm from the tip)", or std::nullopt when it does not.
 std::optional<std::string> moved(std::optional<double> before, std::optional<double> after) {
   if (!before || !after || std::fabs(*after - *before) < kPositionThreshold_m) return std::nullopt;
-  return fmt::format("moves {} {} ({} → {} from the tip)", cm_text(std::fabs(*after - *before)),
-                     toward(*after - *before), cm_text(*before), cm_text(*after));
+  // The move is the difference of the printed places: to the half centimetre
+  // when that reads true, else to the millimetre (30.5 -> 29.5 is not 1.5 cm).
+  const auto half_cm = [](double m) { return std::round(m * 200.0) / 2.0; };
+  const double move_cm = half_cm(std::fabs(*after - *before));
+  if (std::fabs(half_cm(*after) - half_cm(*before)) == move_cm) {
+    return fmt::format("moves {} {} ({} → {} from the tip)", cm_text(std::fabs(*after - *before)),
+                       toward(*after - *before), cm_text(*before), cm_text(*after));
+  }
+  const double a = std::round(*before * 1000.0) / 10.0, b = std::round(*after * 1000.0) / 10.0;
+  return fmt::format("moves {:.1f} cm {} ({:.1f} cm → {:.1f} cm from the tip)", std::fabs(b - a),
+                     toward(*after - *before), a, b);
 }
 
 // `value` to `digits` significant figures in fixed notation ("274", "0.95").
@@ -178,10 +187,11 @@ std::string change_sentence(double before, double after, double threshold, std::
   const bool same = std::fabs(after - before) / scale < threshold || std::lround(percent) == 0;
   // Two significant figures (what the model can claim), more only as it
   // takes for the printed pair to differ and to show the percentage stated;
-  // about the same, a third figure at most to tell them apart.
+  // about the same, a third figure at most to tell them apart, and never a
+  // pair whose own change is another (273 -> 276, not 270 -> 280).
   const auto shows = [&](int d) {
     const std::string a = to_figures(before, d), b = to_figures(after, d);
-    if (same) return a != b || d >= 3 || before == after;
+    if (same && (d >= 3 || before == after)) return true;
     if (a == b) return false;
     const double pa = std::stod(a), pb = std::stod(b);
     const double shown = 100.0 * (pb - pa) / (std::fabs(pa) > 0.0 ? std::fabs(pa) : 1.0);
@@ -304,10 +314,23 @@ PlayerWords input_changes(const ComparedDesign& a, const ComparedDesign& b) {
   words.mass_distribution = !changes.empty();
   const auto& sa = a.design.design.strings;
   const auto& sb = b.design.design.strings;
-  if (sa && sb && std::fabs(sa->tension_N - sb->tension_N) >= 0.5 * kNewtonsPerPound) {
-    changes.push_back(fmt::format("strings at {:.0f} lb instead of {:.0f} lb",
-                                  sb->tension_N / kNewtonsPerPound,
-                                  sa->tension_N / kNewtonsPerPound));
+  if (sa && sb &&
+      (std::fabs(sa->tension_N - sb->tension_N) >= 0.5 * kNewtonsPerPound ||
+       std::fabs(sa->cross_tension_N() - sb->cross_tension_N()) >= 0.5 * kNewtonsPerPound)) {
+    // The tension in the bed (the pull less its loss), mains and crosses
+    // apart when either bed has them apart.
+    const auto lb = [](double N) { return N / kNewtonsPerPound; };
+    const std::string in_bed =
+        sa->tension_loss > 0.0 || sb->tension_loss > 0.0 ? " in the bed" : "";
+    if (sa->cross_tension_ratio == 1.0 && sb->cross_tension_ratio == 1.0) {
+      changes.push_back(fmt::format("strings at {:.0f} lb{} instead of {:.0f} lb",
+                                    lb(sb->tension_N), in_bed, lb(sa->tension_N)));
+    } else {
+      changes.push_back(fmt::format(
+          "mains at {:.0f} lb and crosses at {:.0f} lb{} instead of {:.0f} lb and {:.0f} lb",
+          lb(sb->tension_N), lb(sb->cross_tension_N()), in_bed, lb(sa->tension_N),
+          lb(sa->cross_tension_N())));
+    }
     words.tension = true;
   }
   if (ea.modal && eb.modal &&

@@ -17,9 +17,15 @@ std::string feel(const Evaluation& e, bool first = false, bool swinging = false)
       e.peak_wrist_force_N == 0.0 || newton_text(e.peak_wrist_force_N) == "0 N"
           ? std::string("the wrist feels no jolt")
           : "the wrist feels a jolt of " + newton_text(e.peak_wrist_force_N);
+  const char* speed = swinging ? "the speed it meets the strings at" : "its speed";
+  if (ratio_text(e.apparent_cor).starts_with("-")) {
+    // e_A < 0: the racquet gives way faster than the ball is pushed back.
+    return fmt::format("{} and the ball does not come back: it goes on at {} of {}{}", wrist,
+                       ratio_text(-e.apparent_cor), speed,
+                       first ? " (an apparent COR of " + ratio_text(e.apparent_cor) + ")" : "");
+  }
   return fmt::format("{} and the ball comes back at {} of {}{}", wrist, ratio_text(e.apparent_cor),
-                     swinging ? "the speed it meets the strings at" : "its speed",
-                     first ? " (the apparent COR)" : "");
+                     speed, first ? " (the apparent COR)" : "");
 }
 
 }  // namespace
@@ -150,11 +156,15 @@ std::vector<std::string> sweet_spot_sentences(const io::DesignFile& design,
     }
     sentences.push_back(fmt::format(
         "Swung as {} at a ball coming at {:.3g} m/s, the shot is fastest, {:.0f} km/h ({:.0f} "
-        "mph), {} from the tip (the power point){}; from the impact asked about it leaves at "
-        "{:.0f} km/h.",
+        "mph), {} from the tip (the power point){}; {}.",
         swing, asked.incoming_speed_m_s, power.shot_speed_m_s * io::kKmHPerMS,
         power.shot_speed_m_s * io::kMphPerMS, cm_text(spots.power_point->from_tip_m), than_rebound,
-        asked.shot_speed_m_s * io::kKmHPerMS));
+        std::lround(asked.shot_speed_m_s * io::kKmHPerMS) < 0
+            ? fmt::format("from the impact asked about the racquet does not turn it back: it "
+                          "goes on past the racquet at {:.0f} km/h",
+                          -asked.shot_speed_m_s * io::kKmHPerMS)
+            : fmt::format("from the impact asked about it leaves at {:.0f} km/h",
+                          asked.shot_speed_m_s * io::kKmHPerMS)));
     if (power.fidelity != Fidelity::kCollision) {
       // A COR given for the frame is the same at every point: the rebound does not fall
       // towards the tip as a string bed's does, so the power point sits near the balance.
@@ -173,18 +183,24 @@ std::vector<std::string> sweet_spot_sentences(const io::DesignFile& design,
                                     cm_text(spots.centre_of_strings->from_tip_m),
                                     feel(spots.centre_of_strings->evaluation, false, swinging)));
   }
+  // An impact given off the axis alone is placed along it by default.
+  const double off_axis_m = asked.impact_off_axis_m;
+  const std::string off_axis =
+      off_axis_m == 0.0 ? "" : fmt::format(" and {} off the axis", cm_text(std::fabs(off_axis_m)));
+  const char* not_given = off_axis_m == 0.0 ? "no impact was given"
+                                            : "the impact's distance from the tip was not given";
   const std::string where =
-      spots.asked_provenance == "given" ? fmt::format("At the impact asked about, {} from the tip,",
-                                                      cm_text(spots.asked.from_tip_m))
+      spots.asked_provenance == "given"
+          ? fmt::format("At the impact asked about, {} from the tip{},",
+                        cm_text(spots.asked.from_tip_m), off_axis)
       : asked_is_centre
           ? fmt::format(
-                "At the centre of the strings, about {} from the tip (no impact was given, "
-                "so the tables below are for this one),",
-                cm_text(spots.asked.from_tip_m))
-          : fmt::format(
-                "At {} from the tip (no impact was given: {}; the tables below are for "
-                "this one),",
-                cm_text(spots.asked.from_tip_m), spots.asked_provenance);
+                "At the centre of the strings, about {} from the tip{} ({}, so the tables below "
+                "are for this one),",
+                cm_text(spots.asked.from_tip_m), off_axis, not_given)
+          : fmt::format("At {} from the tip{} ({}: {}; the tables below are for this one),",
+                        cm_text(spots.asked.from_tip_m), off_axis, not_given,
+                        spots.asked_provenance);
   sentences.push_back(fmt::format("{} {}.", where, feel(asked, false, swinging)));
   sentences.push_back(
       "Positions are rounded to 0.5 cm and forces to two figures: the hand's place and the "

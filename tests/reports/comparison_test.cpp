@@ -4,6 +4,8 @@
 #include "reports/comparison.hpp"
 
 #include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -186,6 +188,8 @@ TEST_CASE("a change's two values are printed so that they differ and show the pe
   CHECK(change_sentence(238.45, 238.45, 0.02, "N") == "is about the same (240 N → 240 N)");
   CHECK(change_sentence(0.0, 43.01, 0.02, "N·m") == "goes from 0 N·m to 43 N·m");
   CHECK(change_sentence(280.0, 280.1, 0.0, "N") == "is about the same (280 N → 280 N)");
+  // Two figures apart that overstate a change below the threshold (270 -> 280 reads as 4 %).
+  CHECK(change_sentence(273.1, 276.1, 0.02, "N") == "is about the same (273 N → 276 N)");
 }
 
 // The differences of kBase against a variant, as one paragraph, at `fidelity`.
@@ -198,6 +202,40 @@ std::string paragraph(const io::Json& b, const char* fidelity = "rigid") {
   std::string text;
   for (const std::string& s : differences(at(a), at(b))) text += s + " ";
   return text;
+}
+
+TEST_CASE("compare's move of a sweet spot is the difference of the places it prints") {
+  // Lead at the tip moves the hand-held COP by a distance whose half-centimetre
+  // rounding is not the difference of the rounded places: say it to the millimetre.
+  for (const double grams : {4.0, 6.0, 10.0, 16.0}) {
+    io::Json b = io::Json::parse(kBase);
+    b["name"] = "B";
+    b["implement"]["point_masses"].push_back({{"clock", 12}, {"mass_g", grams}});
+    const std::string text = paragraph(b);
+    INFO(text);
+    const std::size_t at = text.find("centre of percussion moves ");
+    REQUIRE(at != std::string::npos);
+    double move = 0.0, from = 0.0, to = 0.0;
+    char unit_a[8], unit_b[8];
+    REQUIRE(std::sscanf(text.c_str() + at,
+                        "centre of percussion moves %lf %7s toward the %*s (%lf cm → %lf %7s",
+                        &move, unit_a, &from, &to, unit_b) == 5);
+    CHECK(std::abs(std::abs(to - from) - move) < 1e-9);
+  }
+}
+
+TEST_CASE("compare says mains and crosses apart when a bed has them apart") {
+  io::Json a = io::Json::parse(kBase);
+  a["strings"] = io::Json::parse(R"({"mains": {"tension_lb": 52}, "crosses": {"tension_lb": 54}})");
+  io::Json b = a;
+  b["name"] = "B";
+  b["strings"]["mains"]["tension_lb"] = 48;
+  std::string text;
+  for (const std::string& s : differences(compared(a), compared(b))) text += s + " ";
+  INFO(text);
+  CHECK(text.find("mains at 48 lb and crosses at 54 lb instead of 52 lb and 54 lb") !=
+        std::string::npos);
+  CHECK(text.find("strings at 48 lb") == std::string::npos);
 }
 
 TEST_CASE("compare says a pair of pieces on the hoop is at 3 and 9 o'clock") {

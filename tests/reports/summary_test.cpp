@@ -175,6 +175,41 @@ TEST_CASE(
 }
 
 TEST_CASE(
+    "A hit the ball goes on through is not called a rebound, and an impact given across "
+    "the axis alone is said to be placed along it by default") {
+  // The light junior frame hit near the throat's edge, 12 cm off the axis: the
+  // racquet gives way faster than the ball is pushed back (e_A < 0).
+  io::DesignFile design = design_from(R"({
+    "implement": {"length_in": 25, "mass_g": 230, "balance_cm": 33, "swingweight_kg_cm2": 250,
+                  "headsize_sq_in": 105},
+    "frame": {"RA": 60}, "strings": {"tension_lb": 50},
+    "impact": {"from_tip_m": 0.2436, "off_axis_m": -0.1188}})");
+  Evaluation asked = io::evaluate_design_file(design, "collision", 1e-6);
+  REQUIRE(asked.apparent_cor < -0.005);
+  REQUIRE(asked.shot_speed_m_s * 3.6 < -0.5);
+  std::string text = sweet_spot_paragraph(design, studies::find_sweet_spots(design, asked, 1e-6));
+  INFO(text);
+  CHECK(contains(text, "the ball does not come back: it goes on at " +
+                           ratio_text(-asked.apparent_cor) + " of its speed"));
+  CHECK(contains(text, "it goes on past the racquet at"));
+  CHECK(contains(text, "12 cm off the axis"));
+  CHECK_FALSE(contains(text, "comes back at -"));
+  CHECK_FALSE(contains(text, "leaves at -"));
+  // Only across the axis: the place along it is the default, said as such.
+  design = design_from(R"({
+    "implement": {"length_in": 27, "mass_g": 318, "balance_cm": 32.5, "swingweight_kg_cm2": 325,
+                  "headsize_sq_in": 100},
+    "frame": {"RA": 66}, "strings": {"tension_lb": 52}, "impact": {"off_axis_cm": 3}})");
+  asked = io::evaluate_design_file(design, "collision", 1e-6);
+  text = sweet_spot_paragraph(design, studies::find_sweet_spots(design, asked, 1e-6));
+  INFO(text);
+  CHECK(contains(text,
+                 "from the tip and 3 cm off the axis (the impact's distance from the tip "
+                 "was not given"));
+  CHECK_FALSE(contains(text, "no impact was given"));
+}
+
+TEST_CASE(
     "The best rebound and the power point are the largest along the string bed where the rebound "
     "has two humps") {
   // A light, soft junior frame: the rebound dips mid-strings (0.21) between a
