@@ -15,6 +15,7 @@
 #include "reports/string_report.hpp"
 #include "studies/design_settings.hpp"
 #include "studies/string_ticket.hpp"
+#include "sweetspot/frame_modes.hpp"
 
 namespace sweetspot::cli {
 namespace {
@@ -93,6 +94,10 @@ void StringCommand::add_to(CLI::App& app) {
 int StringCommand::run() const {
   if (!like.empty() && !target.empty())
     throw CLI::ValidationError("--target", "not with --like: match one bed");
+  if (command->count("--keep") > 0 && like.empty())
+    throw CLI::ValidationError("--keep",
+                               "only with --like OTHER (what of its bed to keep; --target names "
+                               "its own)");
   if (design_path == "-" && like == "-")
     throw CLI::ValidationError("--like: standard input (-) can be read only once");
   const std::vector<studies::Setting> settings_of = studies::parse_settings(settings);
@@ -104,6 +109,15 @@ int StringCommand::run() const {
                          "pattern, mains, crosses)");
   }
   reports::StringAnswer answer{file.name, studies::read_bed(file.design), std::nullopt, ""};
+  // The contact time `evaluate` gives, beside the two springs' estimate, when
+  // the frame's stiffness lets the collision be solved; none when it refuses.
+  if (has_stiffness(file.design) && !is_rig(file.design.support)) {
+    try {
+      answer.solved_contact_time_s =
+          io::evaluate_design_file(file, "collision", 1e-6).impact_duration_s;  // evaluate's --tol
+    } catch (const io::InputError&) {  // a refusal: the estimate alone
+    }
+  }
   if (!like.empty() || !target.empty()) {
     studies::BedQuantity quantity = *studies::parse_bed_quantity(keep);
     double value = 0.0;

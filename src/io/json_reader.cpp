@@ -14,6 +14,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "io/design_fields.hpp"
 #include "io/input_error.hpp"
 
 namespace sweetspot::io {
@@ -449,7 +450,33 @@ std::vector<std::string> alternative_spellings(std::string_view key) {
 FieldOverride::FieldOverride(const std::string& pointer)
     : at_(pointer),
       parent_(at_.parent_pointer()),
-      alternatives_(alternative_spellings(at_.back())) {}
+      alternatives_(alternative_spellings(at_.back())) {
+  // The design's field table spells some quantities in keys of their own
+  // (headsize_sq_in or headsize_cm2; angular_speed_rad_s or _rpm), and a
+  // swing's speed in another form (speed_at_impact): each other spelling of
+  // the row, and of the rows that give it another way, goes too.
+  static constexpr std::string_view kOtherForms[][2] = {{"angular_speed", "speed_at_impact"}};
+  if (at_.empty()) return;
+  const std::string object = design_object_of(
+      parent_.to_string().substr(std::min<std::size_t>(1, parent_.to_string().size())));
+  const auto spelling = find_spelling(object, at_.back());
+  if (!spelling) return;
+  const auto add_row = [&](std::string_view stem) {
+    for (const DesignField& field : design_fields()) {
+      if (field.object != object || field.stem != stem) continue;
+      for (std::string& key : spellings_of(field)) {
+        if (key != at_.back() &&
+            std::find(alternatives_.begin(), alternatives_.end(), key) == alternatives_.end())
+          alternatives_.push_back(std::move(key));
+      }
+    }
+  };
+  add_row(spelling->field->stem);
+  for (const auto& form : kOtherForms) {
+    if (form[0] == spelling->field->stem) add_row(form[1]);
+    if (form[1] == spelling->field->stem) add_row(form[0]);
+  }
+}
 
 void FieldOverride::apply(Json& document, Json value) const {
   Json& parent = document[parent_];

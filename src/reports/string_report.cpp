@@ -104,18 +104,27 @@ std::string markdown(const StringAnswer& a) {
       "machine with itself. The ring is the membrane's fundamental over the head's area; the "
       "dwell is the contact time of the ball and the bed as two springs at the impact point. "
       "The string's own stiffness (the retailer's lb/in) does not enter: at the bed's small "
-      "slopes its stiffness is its tension's.\n",
+      "slopes its stiffness is its tension's.{}\n",
       b.tension_loss > 0.0
           ? fmt::format("the bed holds the pull less {} % (strings.tension_loss)",
                         num(b.tension_loss * 100.0))
           : std::string("the bed holds the whole pull (strings.tension_loss 0; Cross & Bower "
                         "2001 measured about 30 % lost right after stringing: set 0.3 to "
-                        "compare with a reading of a freshly strung frame)"));
+                        "compare with a reading of a freshly strung frame)"),
+      a.solved_contact_time_s
+          ? fmt::format(" With the frame's stiffness, ball, strings and frame are solved together, "
+                        "as `sweetspot evaluate` does: there the ball stays on the strings {} ms "
+                        "(the two springs' dwell above is the estimate the tension matching "
+                        "uses).",
+                        num(*a.solved_contact_time_s * 1e3))
+          : std::string());
   return md;
 }
 
 io::Json json(const StringAnswer& a) {
   io::Json j{{"design", a.name}, {"bed", bed_json(a.bed)}};
+  j["contact_time_s"] =
+      a.solved_contact_time_s ? io::Json(*a.solved_contact_time_s) : io::Json(nullptr);
   if (a.tension) {
     const studies::TensionAnswer& t = *a.tension;
     const double kg = t.rounded_pull_lb * kPoundForce_N / kKilogramForce_N;

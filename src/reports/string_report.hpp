@@ -21,6 +21,9 @@ struct StringAnswer {
   // "the target") and the answer.
   std::optional<studies::TensionAnswer> tension;
   std::string target_from;
+  // The solved collision's contact time at the design's impact, as `evaluate`
+  // gives it, when the frame's stiffness lets it be solved (and it answers).
+  std::optional<double> solved_contact_time_s = std::nullopt;
 };
 
 // Markdown (a sentence a stringer can act on, then the bed's numbers and

@@ -9,6 +9,7 @@
 #include <limits>
 #include <string>
 
+#include "io/design_fields.hpp"
 #include "io/input_error.hpp"
 #include "studies/design_binding.hpp"
 #include "studies/thread_mode_cache.hpp"
@@ -96,6 +97,28 @@ bool respell_in_unit(io::Json& design, const io::Json::json_pointer& pointer) {
         return true;
       }
     }
+  }
+  // A quantity the field table spells in keys of its own (headsize_sq_in and
+  // headsize_cm2, angular_speed_rad_s and _rpm): another of its row's keys, by
+  // the scales the reader applies. A place in points head-light is a form
+  // (it needs the length), not a unit.
+  std::string object = pointer.parent_pointer().to_string();
+  object = io::design_object_of(object.empty() ? object : object.substr(1));
+  const auto spelled = io::find_spelling(object, key);
+  const auto is_unit = [](std::string_view k) { return !k.ends_with("_pts_hl"); };
+  if (!spelled || !is_unit(key)) return false;
+  for (const std::string& other : io::spellings_of(*spelled->field)) {
+    const auto it = parent.find(other);
+    if (other == key || it == parent.end() || !it->is_number() || !is_unit(other)) continue;
+    const auto from = io::find_spelling(object, other);
+    const double si = from->scale.to_si(it->get<double>());
+    const io::UnitScale& to = spelled->scale;
+    const double value =
+        to.power_of_ten != 0 ? io::shift_decimal(si, -to.power_of_ten) : si / to.factor;
+    if (!std::isfinite(value)) return false;
+    parent.erase(other);
+    parent[key] = value;
+    return true;
   }
   return false;
 }

@@ -63,6 +63,24 @@ TEST_CASE("An override of one form of a quantity removes the others beside it") 
         Json::parse(R"({"frame": {"cor_rigid": 0.85}, "strings": {"tension_N": 250.0}})"));
 }
 
+TEST_CASE(
+    "An override of a quantity the field table spells in keys of its own removes the others") {
+  // The head's size in square inches or square centimetres; a swing's speed
+  // in rad/s, rpm or as the racquet's speed at the impact point.
+  Json design = Json::parse(R"({"implement": {"headsize_sq_in": 98},
+                                "swing": {"angular_speed_rpm": 150, "pivot_beyond_butt_cm": 60}})");
+  override_field(design, "/implement/headsize_cm2", 640);
+  override_field(design, "/swing/angular_speed_rad_s", 15);
+  CHECK(design == Json::parse(R"({"implement": {"headsize_cm2": 640},
+                                  "swing": {"angular_speed_rad_s": 15, "pivot_beyond_butt_cm": 60}})"));
+  override_field(design, "/swing/speed_at_impact_mph", 40);
+  CHECK(design["swing"] ==
+        Json::parse(R"({"speed_at_impact_mph": 40, "pivot_beyond_butt_cm": 60})"));
+  override_field(design, "/swing/angular_speed_rpm", 100);
+  CHECK(design["swing"] ==
+        Json::parse(R"({"angular_speed_rpm": 100, "pivot_beyond_butt_cm": 60})"));
+}
+
 TEST_CASE("The key map records the pointer and the value the file wrote") {
   const Json object = Json::parse(R"({"mass_g": 5e-324})");
   KeyMap keys;

@@ -604,6 +604,31 @@ TEST_CASE(
   }
 }
 
+TEST_CASE("A sweep path in another of the field table's keys of the same quantity sweeps it") {
+  // rpm over rad/s, square centimetres over square inches: the design's value
+  // is rewritten in the variable's key by the scales the reader applies, and
+  // starts the search there.
+  const studies::Study study = studies::read_study(io::Json::parse(R"({
+    "design": {"implement": {"length_in": 27, "mass_g": 318, "balance_cm": 32.5,
+                             "swingweight_kg_cm2": 325, "headsize_sq_in": 100},
+               "frame": {"cor": 0.8}, "strings": {"impact_duration_ms": 4},
+               "swing": {"angular_speed_rpm": 150, "pivot_beyond_butt_cm": 60}},
+    "variables": [{"path": "/swing/angular_speed_rad_s", "min": 10, "max": 20, "points": 3},
+                  {"path": "/implement/headsize_cm2", "min": 600, "max": 700, "points": 3}],
+    "outputs": ["twistweight_kg_cm2"]})"),
+                                                   "respell-table.json", ".");
+  CHECK(study.variables[0].start == Approx(150 * 2 * 3.141592653589793 / 60).epsilon(1e-15));
+  CHECK(study.variables[1].start == Approx(645.16).epsilon(1e-15));
+  // A place in points head-light is another form (it needs the length): not converted.
+  CHECK_THROWS_WITH(studies::read_study(io::Json::parse(R"({
+    "design": {"implement": {"length_in": 27, "mass_g": 318, "balance_pts_hl": 4,
+                             "swingweight_kg_cm2": 325}},
+    "variables": [{"path": "/implement/balance_cm", "values": [33]}],
+    "outputs": ["mass_kg"]})"),
+                                        "pts.json", "."),
+                    Catch::Contains("is not in the design"));
+}
+
 TEST_CASE("A sweep path in another unit of a key the design gives sweeps that key") {
   const studies::Study study = studies::read_study(io::Json::parse(R"({
     "design": {"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8},
