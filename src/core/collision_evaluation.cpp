@@ -134,10 +134,21 @@ CollisionResult DesignCollision::at_speed(double from_butt_m, double off_axis_m,
                        why);
   };
   if (!r.separated) {
-    refuse(collision_suspect(as_hit(), f1), "the ball has not left the strings for good after " +
-                                                detail::format_number(options.max_time_s) +
-                                                " s and " + std::to_string(r.contacts) +
-                                                (r.contacts == 1 ? " contact" : " contacts"));
+    // A ball given dead (a COR on a rigid surface near 0) comes back off what
+    // it hits at a crawl, or (plastic) stops there: it is still there when
+    // the run ends.
+    const std::optional<double> dead = design.ball.cor_on_rigid_surface;
+    refuse(collision_suspect(as_hit(), f1),
+           std::string("the ball has not left ") +
+               (bed_                                                  ? "the strings"
+                : design.support.kind == Support::Kind::kRigidSurface ? "the surface"
+                                                                      : "the frame") +
+               " for good after " + detail::format_number(options.max_time_s) + " s and " +
+               std::to_string(r.contacts) + (r.contacts == 1 ? " contact" : " contacts") +
+               (dead && *dead < 0.1
+                    ? "; a ball as dead as cor_on_rigid_surface " + detail::format_number(*dead) +
+                          " comes off it too slowly, or stops: give a livelier one"
+                    : ""));
   }
   if (!(r.step_error <= kMaxStepError)) {
     refuse(collision_suspect(as_hit(), f1),
