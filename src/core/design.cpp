@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -202,21 +203,47 @@ void validate(const Design& d) {
               "), got " + detail::format_number(y) + " m");
     }
   }
-  // A ball on the strings lands on the head: a string bed's contact at the
-  // throat or the handle, where there are no strings, is no answer.
-  if (d.strings && outline && !on_string_bed(*outline, d.impact_from_butt_m, 0.0)) {
-    // Said from the tip, as people place a hit on a racquet.
-    const double head_from_tip_m =
-        std::max(0.0, L - outline->center_from_butt_m - outline->semi_length_m);
-    const double head_to_tip_m = L - outline->center_from_butt_m + outline->semi_length_m;
-    throw FieldError("impact/from_butt_m",
-                     "a ball on the strings must land on the head, " +
-                         detail::format_significant(head_from_tip_m) + " to " +
-                         detail::format_significant(head_to_tip_m) +
-                         " m from the tip (to the hoop's outer edge), got " +
-                         detail::format_significant(L - d.impact_from_butt_m) +
-                         " m from the tip: a hit on the throat or the handle is not a string "
-                         "bed's");
+  // A string bed's impact lands on the strings: not on the hoop, the throat
+  // or the handle, where the contact is the frame's (the head's string bed,
+  // or the default head of the bed's size, as the centre of the strings is
+  // placed; none when that head does not fit). To round-off of the length.
+  if (d.strings) {
+    HeadShape head = d.head.value_or(HeadShape{});
+    if (!d.head)
+      head.area_m2 = std::numbers::pi * d.strings->head_radius_m * d.strings->head_radius_m;
+    std::optional<HeadEllipse> bed;
+    try {
+      bed = string_bed(head, L);
+    } catch (const std::invalid_argument&) {
+    }
+    const double slack = 1e-9;
+    if (bed) {
+      const double u = (d.impact_from_butt_m - bed->center_from_butt_m) / bed->semi_length_m;
+      const double v = d.impact_off_axis_m / bed->semi_width_m;
+      const double from_tip_m = L - d.impact_from_butt_m;
+      const double bed_from_tip_m = L - bed->center_from_butt_m - bed->semi_length_m;
+      const double bed_to_tip_m = L - bed->center_from_butt_m + bed->semi_length_m;
+      if (std::abs(u) > 1.0 + slack) {
+        throw FieldError("impact/from_butt_m",
+                         "a ball on the strings must land on them, " +
+                             detail::format_significant(bed_from_tip_m) + " to " +
+                             detail::format_significant(bed_to_tip_m) +
+                             " m from the tip along the axis, got " +
+                             detail::format_significant(from_tip_m) +
+                             " m from the tip: a hit on the hoop, the throat or the handle is "
+                             "the frame's, not the string bed's");
+      }
+      if (u * u + v * v > 1.0 + slack) {
+        throw FieldError("impact/off_axis_m",
+                         "a ball on the strings must land on them, within " +
+                             detail::format_significant(bed->semi_width_m *
+                                                        std::sqrt(std::max(0.0, 1.0 - u * u))) +
+                             " m either side of the axis " +
+                             detail::format_significant(from_tip_m) + " m from the tip, got " +
+                             detail::format_number(d.impact_off_axis_m) +
+                             " m: a hit on the hoop is the frame's, not the string bed's");
+      }
+    }
   }
   if (d.impact_off_axis_m != 0.0 && !d.twistweight_kg_m2 && !d.head) {
     throw FieldError(

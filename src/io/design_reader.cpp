@@ -943,6 +943,17 @@ std::optional<double> read_strings(ObjectReader& top, Reading& in, const Impleme
         r.record("head_radius_m", head);
       }
       if (in.design.head || !head.empty()) bed.head_radius_m = head_radius_from_area(area_m2);
+      // The bed's radius from the implement's head: a complaint about it names
+      // the head's size as the file gave it.
+      if (in.keys && in.design.head && head.empty()) {
+        for (const std::string& key : keys_of("implement", {"headsize"})) {
+          const auto it = in.keys->find("implement/" + key);
+          if (it == in.keys->end()) continue;
+          KeyOrigin origin = it->second;
+          origin.derived_by = "as the radius in m of a circle of that area";
+          (*in.keys)["strings/head_radius_m"] = origin;
+        }
+      }
       // The spacing: the pattern over the head, each family's, or one for both.
       const auto spacing = r.quantity("string_spacing", Dimension::kLength);
       const bool pattern = r.has("pattern");

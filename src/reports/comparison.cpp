@@ -315,21 +315,19 @@ PlayerWords input_changes(const ComparedDesign& a, const ComparedDesign& b) {
   const auto& sa = a.design.design.strings;
   const auto& sb = b.design.design.strings;
   if (sa && sb &&
-      (std::fabs(sa->tension_N - sb->tension_N) >= 0.5 * kNewtonsPerPound ||
-       std::fabs(sa->cross_tension_N() - sb->cross_tension_N()) >= 0.5 * kNewtonsPerPound)) {
-    // The tension in the bed (the pull less its loss), mains and crosses
-    // apart when either bed has them apart.
-    const auto lb = [](double N) { return N / kNewtonsPerPound; };
+      (sa->tension_N != sb->tension_N || sa->cross_tension_N() != sb->cross_tension_N())) {
+    // The tension in the bed (the pull less its loss) in pounds, to three
+    // figures (52.4 lb), mains and crosses apart when either bed has them apart.
+    const auto lb = [](double N) { return io::significant(N / kNewtonsPerPound, 3) + " lb"; };
     const std::string in_bed =
         sa->tension_loss > 0.0 || sb->tension_loss > 0.0 ? " in the bed" : "";
     if (sa->cross_tension_ratio == 1.0 && sb->cross_tension_ratio == 1.0) {
-      changes.push_back(fmt::format("strings at {:.0f} lb{} instead of {:.0f} lb",
-                                    lb(sb->tension_N), in_bed, lb(sa->tension_N)));
+      changes.push_back(fmt::format("strings at {}{} instead of {}", lb(sb->tension_N), in_bed,
+                                    lb(sa->tension_N)));
     } else {
-      changes.push_back(fmt::format(
-          "mains at {:.0f} lb and crosses at {:.0f} lb{} instead of {:.0f} lb and {:.0f} lb",
-          lb(sb->tension_N), lb(sb->cross_tension_N()), in_bed, lb(sa->tension_N),
-          lb(sa->cross_tension_N())));
+      changes.push_back(fmt::format("mains at {} and crosses at {}{} instead of {} and {}",
+                                    lb(sb->tension_N), lb(sb->cross_tension_N()), in_bed,
+                                    lb(sa->tension_N), lb(sa->cross_tension_N())));
     }
     words.tension = true;
   }
@@ -461,6 +459,9 @@ const std::vector<InputField>& input_fields() {
       {Part::kStrings, "tension", "N", 1.0,
        [](D d) { return d.strings ? std::optional(d.strings->tension_N) : std::nullopt; },
        Within::kStrings},
+      {Part::kStrings, "tension of the crosses", "N", 1.0,
+       [](D d) { return d.strings ? std::optional(d.strings->cross_tension_N()) : std::nullopt; },
+       Within::kStrings, false},
       {Part::kStrings, "spacing", "mm", 1000.0,
        [](D d) { return d.strings ? std::optional(d.strings->string_spacing_m) : std::nullopt; },
        Within::kStrings, false},

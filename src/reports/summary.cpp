@@ -125,11 +125,18 @@ std::vector<std::string> sweet_spot_sentences(const io::DesignFile& design,
   }
   // 3. The point of best rebound (the collision fidelity) slots in here.
   if (spots.best_rebound) {
-    sentences.push_back(fmt::format(
-        "The ball comes back fastest{}, at {:.2g} m/s, {} from the tip, where {}.",
-        swinging ? " relative to the racquet" : "",
-        spots.best_rebound->evaluation.rebound_speed_m_s, cm_text(spots.best_rebound->from_tip_m),
-        feel(spots.best_rebound->evaluation, false, swinging)));
+    const Evaluation& best = spots.best_rebound->evaluation;
+    sentences.push_back(
+        ratio_text(best.apparent_cor).starts_with("-") || ratio_text(best.apparent_cor) == "0.00"
+            // e_A <= 0 everywhere: the best is where the ball goes on slowest.
+            ? fmt::format("Nowhere along the strings does the ball come back{}; it goes on "
+                          "slowest {} from the tip, where {}.",
+                          swinging ? " relative to the racquet" : "",
+                          cm_text(spots.best_rebound->from_tip_m), feel(best, false, swinging))
+            : fmt::format(
+                  "The ball comes back fastest{}, at {:.2g} m/s, {} from the tip, where {}.",
+                  swinging ? " relative to the racquet" : "", best.rebound_speed_m_s,
+                  cm_text(spots.best_rebound->from_tip_m), feel(best, false, swinging)));
   }
   // 3b. The shot off the swinging racquet (swing.hpp), at its power point.
   if (spots.power_point) {
@@ -147,7 +154,7 @@ std::vector<std::string> sweet_spot_sentences(const io::DesignFile& design,
       const double gap = spots.best_rebound->from_tip_m - spots.power_point->from_tip_m;
       than_rebound = cm_text(std::fabs(gap)) == "0 cm"
                          ? std::string(
-                               ", where the ball also rebounds fastest off the racquet "
+                               ", where the ball also rebounds best off the racquet "
                                "at rest")
                          : fmt::format(
                                ", {} {} the tip than the best rebound off the racquet "

@@ -40,8 +40,13 @@ ComparedDesign compare_one(io::DesignFile design, std::string_view fidelity, dou
   const Evaluation asked = io::evaluate_design_file(placed, fidelity, rel_tol);
   SweetSpots spots = find_sweet_spots(placed, asked, rel_tol);
   std::vector<FramePoint> curve;
-  if (along_frame)
-    curve = frame_curves(placed.design, kFrameCurveStep_m, frame_curve_fidelity(asked));
+  // Along the frame; a string bed's hits along its strings alone (design_page()'s span).
+  if (along_frame) {
+    curve = placed.design.strings
+                ? frame_curves(placed.design, kFrameCurveStep_m, frame_curve_fidelity(asked),
+                               hit_span(placed))
+                : frame_curves(placed.design, kFrameCurveStep_m, frame_curve_fidelity(asked));
+  }
   const FreeFrame frame = free_frame_of(placed, asked);
   std::optional<double> centre;
   if (is_racquet(placed)) centre = centre_of_strings_from_tip_m(placed);

@@ -37,7 +37,8 @@ void check_grid(const char* name, int n) {
   if (off_axis_m) {
     where += *off_axis_m == 0.0
                  ? ", on the axis"
-                 : ", " + fmt::format("{:.3g}", std::abs(*off_axis_m) * 100.0) + " cm off the axis";
+                 : ", " + fmt::format("{:.3g}", std::abs(*off_axis_m) * 100.0) +
+                       " cm off the axis toward " + (*off_axis_m > 0.0 ? "3" : "9") + " o'clock";
   }
   if (const auto* refusal = dynamic_cast<const ModelRefusal*>(&error))
     throw ModelRefusal(refusal->field(), refusal->value(), refusal->detail() + where,

@@ -25,6 +25,10 @@ Evaluation evaluate_at(const io::DesignFile& design, double from_tip_m, std::str
   // rebound) lie on the long axis: an off-axis miss is the asked impact's
   // alone, and may not be on the head at another point along the frame.
   moved.design.impact_off_axis_m = 0.0;
+  // The file's impact is not this one: a refusal here is the spot's, not the
+  // file's key's.
+  for (const char* key : {"impact/from_butt_m", "impact/from_tip_m", "impact/off_axis_m"})
+    moved.keys.erase(key);
   return io::evaluate_design_file(moved, fidelity, rel_tol);
 }
 
@@ -193,8 +197,9 @@ SweetSpots find_sweet_spots(const io::DesignFile& design, const Evaluation& aske
     }
   } else {
     spots.node_missing =
-        "give the frame's stiffness (frame.fundamental_free_Hz, the free frame's fundamental "
-        "frequency, or frame.EI_N_m2) to locate the node of least vibration";
+        "give the frame's stiffness (frame.RA, the spec sheet's rating; "
+        "frame.fundamental_free_Hz, the free frame's fundamental frequency; or frame.EI_N_m2) "
+        "to locate the node of least vibration";
   }
   if (fidelity_of(asked) == Fidelity::kCollision)
     spots.best_rebound = best_rebound_on_axis(design, rel_tol, kBestReboundTolerance_m);

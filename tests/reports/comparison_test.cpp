@@ -111,7 +111,7 @@ TEST_CASE("compare names every input of the read design that differs, by its par
        "point mass 1's distance off the axis 0 → 1 cm"},
       {"/frame/fundamental_free_Hz", 170, "the frame's free fundamental 155 → 170 Hz"},
       {"/frame/cor", 0.85, "the frame's COR 0.8 → 0.85"},
-      {"/strings/tension_N", 260, "strings at 58 lb instead of 56 lb"},
+      {"/strings/tension_N", 260, "strings at 58.5 lb instead of 56.2 lb"},
       {"/strings/string_spacing_m", 0.017, "the strings' spacing 16.5 → 17 mm"},
       {"/strings/contact_radius_m", 0.035, "the strings' contact radius 3 → 3.5 cm"},
       // (The strung radius follows the head size above: a different
@@ -236,6 +236,16 @@ TEST_CASE("compare says mains and crosses apart when a bed has them apart") {
   CHECK(text.find("mains at 48 lb and crosses at 54 lb instead of 52 lb and 54 lb") !=
         std::string::npos);
   CHECK(text.find("strings at 48 lb") == std::string::npos);
+  // The crosses alone, by less than a pound: a difference, in pounds.
+  io::Json c = a;
+  c["name"] = "C";
+  c["strings"]["crosses"]["tension_lb"] = 54.4;
+  text.clear();
+  for (const std::string& s : differences(compared(a), compared(c))) text += s + " ";
+  INFO(text);
+  CHECK(text.find("mains at 52 lb and crosses at 54.4 lb instead of 52 lb and 54 lb") !=
+        std::string::npos);
+  CHECK(text.find("the same implement") == std::string::npos);
 }
 
 TEST_CASE("compare says a pair of pieces on the hoop is at 3 and 9 o'clock") {

@@ -8,6 +8,7 @@
 #include "studies/paper.hpp"
 #include "sweetspot/evaluate.hpp"
 #include "sweetspot/rigid_impact.hpp"
+#include "sweetspot/string_bed.hpp"
 #include "sweetspot/swing.hpp"
 
 namespace sweetspot::reports {
@@ -84,6 +85,29 @@ TEST_CASE("Table I's caption says what its rows were computed for") {
             io::significant(rows[2].evaluation.racquet_speed_m_s, 4) +
             " m/s there); hand centre 7 cm (row 5: 8 cm) from the butt, wrist at "
             "the butt.");
+  // Rows that are not the paper's are not said to agree with it to its rounding.
+  const std::string md = reports::table1_report(rows, io::Format::kMarkdown);
+  CHECK(md.find("within the paper's rounding") == std::string::npos);
+  CHECK(md.find("more than the paper's rounding to whole newtons") != std::string::npos);
+}
+
+TEST_CASE("Table I's e and T are those each row was computed with") {
+  // A row strung at a tension derives its duration (Eq. 17's M_eff and the
+  // bed's stiffness): T is that duration, as evaluate() gives it, not the
+  // file's absent one.
+  std::vector<studies::Table1Row> rows =
+      studies::compute_table1(std::string(SWEETSPOT_SOURCE_DIR) + "/designs/table1");
+  Design& strung = rows[2].design.design;
+  strung.strings = StringBed{};
+  rows[2].evaluation = evaluate(strung);
+  const std::string csv = reports::table1_report(rows, io::Format::kCsv);
+  const std::size_t line = csv.find("\n3,");
+  REQUIRE(line != std::string::npos);
+  const std::string row3 = csv.substr(line + 1, csv.find('\n', line + 1) - line - 1);
+  INFO(row3);
+  CHECK(row3.find("," + io::exact(rows[2].evaluation.impact_duration_s) + ",") !=
+        std::string::npos);
+  CHECK(rows[2].evaluation.impact_duration_s != strung.impact_duration_s);
 }
 
 }  // namespace

@@ -71,7 +71,8 @@ TEST_CASE("A strung design's curves are the solved collision's, as evaluate() gi
       io::load_design(SWEETSPOT_SOURCE_DIR "/designs/racquets/tour-100-strung.json");
   const Design& d = file.design;
   REQUIRE(needed_fidelity(d) == Fidelity::kCollision);
-  const std::vector<FramePoint> curve = frame_curves(d, 0.01, Fidelity::kCollision);
+  // Along the strings, where a string bed's hit lands (hit_span()).
+  const std::vector<FramePoint> curve = frame_curves(d, 0.01, Fidelity::kCollision, hit_span(file));
   // 5, 15, 25, ... cm from the tip.
   CHECK(check_against_evaluate(d, curve, Fidelity::kCollision, [](double from_tip_m) {
           return std::lround(from_tip_m * 100) % 10 == 5;
@@ -96,7 +97,7 @@ TEST_CASE("A swung strung racquet's curves are its collisions at the speed they 
   Design& d = file.design;
   d.ball.speed_m_s = 20.0;
   d.swing = Swing{15.0, 0.6, std::nullopt};
-  const std::vector<FramePoint> curve = frame_curves(d, 0.05, Fidelity::kCollision);
+  const std::vector<FramePoint> curve = frame_curves(d, 0.05, Fidelity::kCollision, hit_span(file));
   CHECK(check_against_evaluate(d, curve, Fidelity::kCollision, [](double from_tip_m) {
           return from_tip_m >= 0.05 && from_tip_m <= 0.3;
         }) >= 4);
