@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -70,30 +71,49 @@ double golden_section_max(F&& f, double lo, double hi, double tolerance_m) {
 // golden-section search: the rebound along a soft frame can have two humps
 // (one each side of the fundamental's antinode), and a search that assumes
 // one finds either.
-inline constexpr double kScanSpacing_m = 0.02;
-inline constexpr int kMinScanIntervals = 8;
+inline constexpr double kScanSpacing_m = 0.03;
+inline constexpr int kMinScanIntervals = 6;
+
+// The scan's evaluations, shared by the searches of one design at one
+// fidelity: the best rebound and the power point scan the same points.
+struct ScanCache {
+  std::string fidelity;
+  std::map<double, std::optional<Evaluation>> at;  // std::nullopt: refused there
+};
 
 // The point of the string bed's long axis [m from the tip] where `value` of
 // the evaluation there is largest, and that evaluation: the best of a scan
 // every kScanSpacing_m or closer, then a golden-section search to
-// `tolerance_m` between its neighbours. A point the model refuses (a ball squeezed past its
-// radius where the frame gives less) counts as -infinity, so the search keeps
-// to the points it answers; where it ends on one it refuses, the best point it
-// answered is the answer (std::nullopt when it answered none).
+// `tolerance_m` between its neighbours. A point the model refuses (a ball
+// squeezed past its radius where the frame gives less) counts as -infinity, so
+// the search keeps to the points it answers; where it ends on one it refuses,
+// the best point it answered is the answer (std::nullopt when it answered
+// none). `cache`, when given at this fidelity, holds and keeps the scan's.
 template <class Value>
 std::optional<SpotOutcome> max_along_axis(const io::DesignFile& design, std::string_view fidelity,
-                                          double rel_tol, double tolerance_m, Value value) {
+                                          double rel_tol, double tolerance_m, Value value,
+                                          ScanCache* cache = nullptr) {
   const auto [lo, hi] = string_bed_axis(design);
   std::optional<SpotOutcome> best_answered;
-  const auto value_at = [&](double from_tip) {
-    try {
-      SpotOutcome here{from_tip, evaluate_at(design, from_tip, fidelity, rel_tol)};
-      const double v = value(here.evaluation);
-      if (!best_answered || v > value(best_answered->evaluation)) best_answered = std::move(here);
-      return v;
-    } catch (const io::InputError&) {
-      return -std::numeric_limits<double>::infinity();
+  const auto evaluation_at = [&](double from_tip, bool scanned) -> std::optional<Evaluation> {
+    if (scanned && cache && cache->fidelity == fidelity) {
+      if (const auto it = cache->at.find(from_tip); it != cache->at.end()) return it->second;
     }
+    std::optional<Evaluation> e;
+    try {
+      e = evaluate_at(design, from_tip, fidelity, rel_tol);
+    } catch (const io::InputError&) {
+    }
+    if (scanned && cache && cache->fidelity == fidelity) cache->at.emplace(from_tip, e);
+    return e;
+  };
+  const auto value_of = [&](double from_tip, bool scanned) {
+    const std::optional<Evaluation> e = evaluation_at(from_tip, scanned);
+    if (!e) return -std::numeric_limits<double>::infinity();
+    const double v = value(*e);
+    if (!best_answered || v > value(best_answered->evaluation))
+      best_answered = SpotOutcome{from_tip, *e};
+    return v;
   };
   const int intervals =
       std::max(kMinScanIntervals, static_cast<int>(std::ceil((hi - lo) / kScanSpacing_m)));
@@ -101,43 +121,51 @@ std::optional<SpotOutcome> max_along_axis(const io::DesignFile& design, std::str
   int best_k = 0;
   double best_value = -std::numeric_limits<double>::infinity();
   for (int k = 0; k <= intervals; ++k) {
-    const double v = value_at(k == intervals ? hi : lo + k * step);
+    const double v = value_of(k == intervals ? hi : lo + k * step, true);
     if (v > best_value) best_value = v, best_k = k;
   }
-  const double best =
-      golden_section_max(value_at, lo + std::max(0, best_k - 1) * step,
-                         best_k + 1 >= intervals ? hi : lo + (best_k + 1) * step, tolerance_m);
-  try {
-    return SpotOutcome{best, evaluate_at(design, best, fidelity, rel_tol)};
-  } catch (const io::InputError&) {
-    return best_answered;
-  }
+  const double best = golden_section_max(
+      [&](double x) { return value_of(x, false); }, lo + std::max(0, best_k - 1) * step,
+      best_k + 1 >= intervals ? hi : lo + (best_k + 1) * step, tolerance_m);
+  if (const std::optional<Evaluation> e = evaluation_at(best, false)) return SpotOutcome{best, *e};
+  return best_answered;
 }
 
-void require_tolerance(double tolerance_m) {
+std::optional<SpotOutcome> best_rebound_searched(const io::DesignFile& design, double rel_tol,
+                                                 double tolerance_m, ScanCache* cache) {
   if (!(tolerance_m > 0.0)) {
     throw std::invalid_argument("tolerance_m: must be > 0 m, got " + std::to_string(tolerance_m));
   }
+  if (!design.design.strings || !has_stiffness(design.design) || design.design.cor_rigid)
+    return std::nullopt;
+  return max_along_axis(
+      design, "collision", rel_tol, tolerance_m, [](const Evaluation& e) { return e.apparent_cor; },
+      cache);
+}
+
+std::optional<SpotOutcome> power_point_searched(const io::DesignFile& design,
+                                                std::string_view fidelity, double rel_tol,
+                                                double tolerance_m, ScanCache* cache) {
+  if (!(tolerance_m > 0.0)) {
+    throw std::invalid_argument("tolerance_m: must be > 0 m, got " + std::to_string(tolerance_m));
+  }
+  if (!is_racquet(design)) return std::nullopt;
+  return max_along_axis(
+      design, fidelity, rel_tol, tolerance_m, [](const Evaluation& e) { return e.shot_speed_m_s; },
+      cache);
 }
 
 }  // namespace
 
 std::optional<SpotOutcome> best_rebound_on_axis(const io::DesignFile& design, double rel_tol,
                                                 double tolerance_m) {
-  require_tolerance(tolerance_m);
-  if (!design.design.strings || !has_stiffness(design.design) || design.design.cor_rigid)
-    return std::nullopt;
-  return max_along_axis(design, "collision", rel_tol, tolerance_m,
-                        [](const Evaluation& e) { return e.apparent_cor; });
+  return best_rebound_searched(design, rel_tol, tolerance_m, nullptr);
 }
 
 std::optional<SpotOutcome> power_point_on_axis(const io::DesignFile& design,
                                                std::string_view fidelity, double rel_tol,
                                                double tolerance_m) {
-  require_tolerance(tolerance_m);
-  if (!is_racquet(design)) return std::nullopt;
-  return max_along_axis(design, fidelity, rel_tol, tolerance_m,
-                        [](const Evaluation& e) { return e.shot_speed_m_s; });
+  return power_point_searched(design, fidelity, rel_tol, tolerance_m, nullptr);
 }
 
 Evaluation with_power_point(const io::DesignFile& design, Evaluation evaluation, double rel_tol) {
@@ -201,9 +229,12 @@ SweetSpots find_sweet_spots(const io::DesignFile& design, const Evaluation& aske
         "frame.fundamental_free_Hz, the free frame's fundamental frequency; or frame.EI_N_m2) "
         "to locate the node of least vibration";
   }
+  // Both searches scan the same points: at the same fidelity, once.
+  ScanCache scan{std::string(fidelity), {}};
   if (fidelity_of(asked) == Fidelity::kCollision)
-    spots.best_rebound = best_rebound_on_axis(design, rel_tol, kBestReboundTolerance_m);
-  spots.power_point = power_point_on_axis(design, fidelity, rel_tol, kBestReboundTolerance_m);
+    spots.best_rebound = best_rebound_searched(design, rel_tol, kBestReboundTolerance_m, &scan);
+  spots.power_point =
+      power_point_searched(design, fidelity, rel_tol, kBestReboundTolerance_m, &scan);
   if (is_racquet(design)) {
     const double centre = centre_of_strings_from_tip_m(design);
     spots.centre_of_strings = at(centre, "centre of the strings");

@@ -94,11 +94,12 @@ inline constexpr double kBestReboundTolerance_m = 0.005;
 // The impact point on the long axis of the string bed (head_shape_of(): from
 // one hoop width below the tip to the throat end of the ellipse) where the
 // solved collision (Fidelity::kCollision) returns the ball fastest, i.e. the
-// largest apparent COR e_A, found by golden-section search until the bracket
-// is at most `tolerance_m` wide (> 0, else std::invalid_argument naming
-// "tolerance_m"); the midpoint of the bracket, within tolerance_m / 2 of the
-// maximiser when e_A is unimodal along the bed. The frame's COR e peaks at the
-// fundamental's node (Cross, Am. J. Phys. 68, 1025 (2000)), but e_A = (e M_eff
+// largest apparent COR e_A: the best of a scan every 3 cm or closer (e_A can
+// have two humps along a soft frame), then a golden-section search between
+// its neighbours until the bracket is at most `tolerance_m` wide (> 0, else
+// std::invalid_argument naming "tolerance_m"); the midpoint of the bracket,
+// within tolerance_m / 2 of the maximiser when e_A has one hump there. The frame's COR e peaks at
+// the fundamental's node (Cross, Am. J. Phys. 68, 1025 (2000)), but e_A = (e M_eff
 // - m) / (M_eff + m) also grows with M_eff towards the handle, so the point is
 // throat-side of the node (5.5 cm on designs/racquets/tour-100-strung.json,
 // 17.7 cm from the tip; the node is 12.2 cm). std::nullopt when the
