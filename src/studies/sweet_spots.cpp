@@ -131,11 +131,15 @@ std::optional<SpotOutcome> max_along_axis(const io::DesignFile& design, std::str
   return best_answered;
 }
 
-std::optional<SpotOutcome> best_rebound_searched(const io::DesignFile& design, double rel_tol,
-                                                 double tolerance_m, ScanCache* cache) {
+void require_tolerance(double tolerance_m) {
   if (!(tolerance_m > 0.0)) {
     throw std::invalid_argument("tolerance_m: must be > 0 m, got " + std::to_string(tolerance_m));
   }
+}
+
+std::optional<SpotOutcome> best_rebound_searched(const io::DesignFile& design, double rel_tol,
+                                                 double tolerance_m, ScanCache* cache) {
+  require_tolerance(tolerance_m);
   if (!design.design.strings || !has_stiffness(design.design) || design.design.cor_rigid)
     return std::nullopt;
   return max_along_axis(
@@ -146,9 +150,7 @@ std::optional<SpotOutcome> best_rebound_searched(const io::DesignFile& design, d
 std::optional<SpotOutcome> power_point_searched(const io::DesignFile& design,
                                                 std::string_view fidelity, double rel_tol,
                                                 double tolerance_m, ScanCache* cache) {
-  if (!(tolerance_m > 0.0)) {
-    throw std::invalid_argument("tolerance_m: must be > 0 m, got " + std::to_string(tolerance_m));
-  }
+  require_tolerance(tolerance_m);
   if (!is_racquet(design)) return std::nullopt;
   return max_along_axis(
       design, fidelity, rel_tol, tolerance_m, [](const Evaluation& e) { return e.shot_speed_m_s; },
