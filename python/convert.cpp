@@ -1,6 +1,7 @@
 #include "convert.hpp"
 
 #include <fmt/format.h>
+#include <pybind11/numpy.h>
 
 #include <array>
 #include <cmath>
@@ -101,7 +102,17 @@ io::Json to_json(py::handle value, const std::string& source, const Place& place
     }
     return array;
   }
-  // NumPy's scalars: an integer type has __index__, a floating one __float__.
+  // A NumPy array or scalar is the Python value it holds (item(): a 0-d array's
+  // or a scalar's bool, int, float or complex; tolist(): an array's list), so
+  // np.bool_ stays a bool and np.array(0.3) a float, read as the rest.
+  if (py::isinstance<py::array>(value)) {
+    const py::object held = py::reinterpret_borrow<py::object>(value).attr(
+        py::reinterpret_borrow<py::array>(value).ndim() == 0 ? "item" : "tolist")();
+    return to_json(held, source, place, depth);
+  }
+  if (py::hasattr(value, "dtype") && py::hasattr(value, "item") && !py::hasattr(value, "__len__"))
+    return to_json(py::reinterpret_borrow<py::object>(value).attr("item")(), source, place, depth);
+  // Other integer types have __index__, other floating ones __float__.
   if (py::hasattr(value, "__index__"))
     return to_json(py::reinterpret_borrow<py::object>(value).attr("__index__")(), source, place,
                    depth);

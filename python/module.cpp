@@ -299,6 +299,31 @@ py::dict evaluate_many_py(py::handle base, py::handle columns,
     if (!PyUnicode_Check(pair[0].ptr()))
       throw py::type_error("columns: expected str keys, the dotted names of design fields");
     const std::string field = pair[0].cast<std::string>();
+    // Numbers only, as a design file's: NumPy would take a bool as 1, a
+    // complex number's real part, a masked array's hidden values and an
+    // object column's None as nan.
+    {
+      const py::module_ numpy = py::module_::import("numpy");
+      if (py::isinstance(pair[1], numpy.attr("ma").attr("MaskedArray"))) {
+        throw io::InputError("columns", "",
+                             "column " + studies::shown(field) +
+                                 ": expected an array of numbers, got a masked array (fill or "
+                                 "drop its masked rows first)");
+      }
+      py::object as_array;
+      try {
+        as_array = numpy.attr("asarray")(pair[1]);
+      } catch (const py::error_already_set&) {
+        // Not an array at all (ragged, say): refused below as before.
+      }
+      const char kind = as_array ? as_array.attr("dtype").attr("kind").cast<char>() : 'f';
+      if (kind != 'f' && kind != 'i' && kind != 'u') {
+        throw io::InputError("columns", "",
+                             "column " + studies::shown(field) +
+                                 ": expected an array of numbers (float or int), got " +
+                                 py::str(as_array.attr("dtype")).cast<std::string>() + " values");
+      }
+    }
     py::array_t<double> array;
     try {
       array = py::array_t<double, py::array::forcecast>::ensure(pair[1]);
@@ -930,9 +955,9 @@ target: the specs to reach, a dict of a design file's spelling and a number
     ({"mass_g": 330, "balance_cm": 32, "swingweight_kg_cm2": 330}; twistweight_kg_cm2 too,
     the balance in cm or m from the butt) or the command line's text
     ("mass_g=330,balance_cm=32"); None: only those of `like`.
-places: where lead may go, a str ("12,3/9,handle") or a list of str: clock hours on the
-    hoop (a pair 3/9 takes half at each; the design needs its head size), throat, handle
-    (under the grip, 9 cm from the butt), butt (under the butt cap).
+places: where lead may go, a str ("12,3/9,grip") or a list of str: clock hours on the
+    hoop (a pair 3/9 takes half at each; the design needs its head size), throat, grip
+    (under the grip, 9 cm from the butt), handle or butt (under the butt cap, 2 cm from it).
 like: another design whose mass, balance and swingweight to reach (target wins for the
     specs it names).
 strip_g: the strip of tape the report counts the lead in, in [0.01, 100] g (1 g: about

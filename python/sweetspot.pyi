@@ -69,7 +69,7 @@ def tune(
     strip_g: float = 1.0,
     tol: float = 1e-6,
 ) -> dict[str, Any]:
-    """The least lead, and where (places: clock hours, 3/9, throat, handle, butt), that reaches
+    """The least lead, and where (places: clock hours, 3/9, throat, grip, handle or butt), that reaches
     target specs (mass_g, balance_cm, swingweight_kg_cm2, twistweight_kg_cm2): the lead per
     place, the specs before and reached (SI), misses, the tuned design, the report."""
 

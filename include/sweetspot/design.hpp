@@ -187,6 +187,13 @@ std::optional<double> polar_inertia_kg_m2(const Design& design);
 // Whether the polar inertia is the head's estimate rather than measured.
 bool polar_inertia_estimated(const Design& design);
 
+// The head whose string bed a racquet is hit on: the implement's head when
+// given (a string bed's size given alone is the head's); else the default
+// shape with the string bed's area (pi R^2 of strings.head_radius_m); else the
+// default shape of kDefaultHeadArea_m2. The centre of the strings, the check
+// that a strung impact lands on them and the map's grid all take this one.
+HeadShape racquet_head(const Design& design);
+
 // Throws std::invalid_argument if any value is out of range. The message
 // starts with the value's JSON pointer relative to a design file
 // ("hand/mass_kg: must be >= 0 kg, got -0.5 kg").

@@ -8,6 +8,7 @@
 // file's own key (its unit, its JSON pointer) by lookup, never by reading
 // the message.
 
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -15,17 +16,30 @@ namespace sweetspot {
 
 class FieldError : public std::invalid_argument {
  public:
-  FieldError(std::string field, std::string detail)
+  // The range a value broke, in the SI unit of its field, so the layer that
+  // read it can state the range again in the file's own unit.
+  struct Range {
+    double min = 0.0;       // -inf when there is no lower bound
+    double max = 0.0;       // +inf when there is no upper bound
+    bool min_open = false;  // "> min" rather than ">= min"
+    double value = 0.0;     // the value refused, in SI
+    const char* why = "";   // what sets the range, said after it ("for this mass, ...")
+  };
+
+  FieldError(std::string field, std::string detail, std::optional<Range> range = std::nullopt)
       : std::invalid_argument(field + ": " + detail),
         field_(std::move(field)),
-        detail_(std::move(detail)) {}
+        detail_(std::move(detail)),
+        range_(range) {}
 
   const std::string& field() const { return field_; }
   const std::string& detail() const { return detail_; }
+  const std::optional<Range>& range() const { return range_; }
 
  private:
   std::string field_;
   std::string detail_;
+  std::optional<Range> range_;
 };
 
 // `error` with its field placed under `part` ("frame/" + "cor": "frame/cor"):
@@ -33,7 +47,7 @@ class FieldError : public std::invalid_argument {
 [[noreturn]] inline void rethrow_under(const std::string& part,
                                        const std::invalid_argument& error) {
   if (const auto* field = dynamic_cast<const FieldError*>(&error))
-    throw FieldError(part + field->field(), field->detail());
+    throw FieldError(part + field->field(), field->detail(), field->range());
   throw std::invalid_argument(part + error.what());
 }
 

@@ -61,14 +61,21 @@ inline constexpr double kMinRA = 50.0;
 inline constexpr double kMaxRA = 80.0;
 inline constexpr double kMinRAFrameMass_kg = 0.20;
 inline constexpr double kMaxRAFrameMass_kg = 0.40;
+// Every racquet of the sample is 27-28 in long; the length adds nothing
+// inside it, but a beam's frequency goes as 1/L^2 outside it, so the relation
+// is used for 26-29 in only (a 25 in junior frame of RA 60 would get an adult
+// frame's 149 Hz): give a junior's free fundamental or its EI instead.
+inline constexpr double kMinRALength_m = 26.0 * 0.0254;
+inline constexpr double kMaxRALength_m = 29.0 * 0.0254;
 
 // The free fundamental [Hz] of a strung tennis racquet of stiffness rating
 // `RA` (in [kMinRA, kMaxRA]) and strung frame mass `frame_mass_kg` (in
 // [kMinRAFrameMass_kg, kMaxRAFrameMass_kg], without lead tape added after
-// the rating): f1 = 146.9 (RA/65)^1.115 (m/0.31 kg)^-0.276 (above), within
+// the rating) and length `length_m` (in [kMinRALength_m, kMaxRALength_m]):
+// f1 = 146.9 (RA/65)^1.115 (m/0.31 kg)^-0.276 (above), within
 // kRAFitRmsError_Hz RMS. Throws std::invalid_argument naming "frame/RA" for
 // an RA outside its range or not finite, and naming "frame/RA" with the mass
-// for a frame the fit does not cover.
-double fundamental_free_Hz_from_RA(double RA, double frame_mass_kg);
+// or the length for a frame the fit does not cover.
+double fundamental_free_Hz_from_RA(double RA, double frame_mass_kg, double length_m);
 
 }  // namespace sweetspot

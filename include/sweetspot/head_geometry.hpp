@@ -24,8 +24,14 @@ inline constexpr double kDefaultHeadAspectRatio = 1.35;
 // grommets, 13-18 mm on graphite frames): lead tape sits on its centre line,
 // and the string bed ends this far below the tip.
 inline constexpr double kDefaultHoopWidth_m = 0.015;
-// Lead "in the handle" goes under the butt cap, this far from the butt.
+// Lead "in the handle" goes under the butt cap, this far from the butt (a
+// clock "handle" or "butt" in a design file and in `tune`'s places).
 inline constexpr double kHandleWeightFromButt_m = 0.02;
+// Lead "under the grip" is wrapped along the handle; taken as one point at
+// the middle of a 7-inch (18 cm) handle, 9 cm from the butt (a clock "grip"):
+// a stated assumption of place (a grip's lead spread over its length differs
+// by its own inertia about its middle, under 0.3 kg cm^2 for 10 g over 18 cm).
+inline constexpr double kUnderGripFromButt_m = 0.09;
 
 // The estimate of the polar inertia from the head (estimated_polar_inertia_kg_m2):
 // the hoop carries half the frame's mass, on its centre line, and a set of
@@ -42,9 +48,13 @@ inline constexpr double kStringSetMass_kg = 0.017;
 // report -11 % to +12 % for their geometric model on 416 rackets and up to 25 %
 // with 30 g added: an estimate, not a measurement.
 
+// The head a racquet is given when nothing sizes it: 100 sq in, the inch
+// 0.0254 m exactly.
+inline constexpr double kDefaultHeadArea_m2 = 100.0 * 0.0254 * 0.0254;
+
 // The head's shape: its strung area and the ratio of strung length to width.
 struct HeadShape {
-  double area_m2 = 0.0645;                        // strung area [m^2], > 0 (100 in^2)
+  double area_m2 = kDefaultHeadArea_m2;           // strung area [m^2], > 0
   double aspect_ratio = kDefaultHeadAspectRatio;  // strung length / strung width, >= 1
   double hoop_width_m = kDefaultHoopWidth_m;      // [m], >= 0
 };

@@ -70,6 +70,10 @@ int FigureCommand::run() const {
   OutputOptions{"csv", csv_path}.plan(plan);
   if (!png.empty()) plan.write("--plot", png);
   const io::DesignFile beam = io::load_design(beam_path);
+  if (beam.design.support.kind == Support::Kind::kRigidSurface) {
+    throw io::InputError(beam.source, "/support",
+                         "a rigid surface has no implement, so no beam to draw the figure of");
+  }
   const reports::Figure data = number == 5 ? reports::figure5(beam, studies::figure5_data(beam))
                                            : reports::figure11(beam, studies::figure11_data(beam));
   io::OutputSet outputs;

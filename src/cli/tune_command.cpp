@@ -83,8 +83,9 @@ void TuneCommand::add_to(CLI::App& app) {
   command
       ->add_option("--places", places,
                    "Where lead may go, separated by commas: clock hours on the hoop (12, 10.5; "
-                   "a pair 3/9 takes half the lead at each), throat (6 o'clock), handle (under "
-                   "the grip, 9 cm from the butt), butt (under the butt cap, 2 cm from the butt)")
+                   "a pair 3/9 takes half the lead at each), throat (6 o'clock), grip (under "
+                   "the grip, 9 cm from the butt), butt or handle (under the butt cap, 2 cm "
+                   "from the butt, as a design file's clock \"handle\")")
       ->required();
   command->add_flag("--match", match,
                     "Bring the designs to common specs: the mass, balance and swingweight every "
@@ -111,9 +112,9 @@ void TuneCommand::add_to(CLI::App& app) {
   command->footer(
       "Examples:\n"
       "  sweetspot tune racquet.json --target mass_g=330,balance_cm=32,swingweight_kg_cm2=325 "
-      "--places 12,3/9,handle -o tuned.json\n"
-      "  sweetspot tune racquet.json --like other.json --places 12,3/9,throat,handle\n"
-      "  sweetspot tune --match a.json b.json --places 12,3/9,handle --output-dir matched");
+      "--places 12,3/9,grip -o tuned.json\n"
+      "  sweetspot tune racquet.json --like other.json --places 12,3/9,throat,grip\n"
+      "  sweetspot tune --match a.json b.json --places 12,3/9,grip --output-dir matched");
 }
 
 int TuneCommand::run() const {
@@ -153,7 +154,17 @@ int TuneCommand::run() const {
 
   std::vector<ReadDesign> designs;
   const std::vector<studies::Setting> settings_of = studies::parse_settings(settings);
-  for (const std::string& path : design_paths) designs.push_back(read(path, settings_of));
+  // A ball onto a rigid plate has no implement, so no specs to reach or take.
+  const auto with_implement = [](const io::DesignFile& file) -> const io::DesignFile& {
+    if (file.design.support.kind == Support::Kind::kRigidSurface)
+      throw io::InputError(file.source, "/support",
+                           "a rigid surface has no implement, so no specs to tune or match");
+    return file;
+  };
+  for (const std::string& path : design_paths) {
+    designs.push_back(read(path, settings_of));
+    with_implement(designs.back().file);
+  }
   const double strip_kg = strip_g * 1e-3;
   io::OutputSet outputs;
   std::vector<std::pair<std::string, std::string>> folder_files;  // --output-dir's, made with it
@@ -162,8 +173,8 @@ int TuneCommand::run() const {
   std::string rule;
   if (!match) {
     if (!like.empty()) {
-      const studies::TuneTargets other =
-          studies::targets_from(studies::specs_of(io::load_design(like).design), false);
+      const studies::TuneTargets other = studies::targets_from(
+          studies::specs_of(with_implement(io::load_design(like)).design), false);
       if (!targets.mass_kg) targets.mass_kg = other.mass_kg;
       if (!targets.balance_from_butt_m) targets.balance_from_butt_m = other.balance_from_butt_m;
       if (!targets.swingweight_kg_m2) targets.swingweight_kg_m2 = other.swingweight_kg_m2;

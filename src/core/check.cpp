@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <stdexcept>
 
 #include "sweetspot/errors.hpp"
@@ -41,22 +42,25 @@ std::string format_significant(double value) {
 
 namespace {
 [[noreturn]] void fail(std::string_view name, const std::string& expected, double value,
-                       std::string_view unit) {
+                       std::string_view unit, std::optional<FieldError::Range> range = {}) {
   std::string detail = "must be " + expected + ", got " + format_number(value);
   if (!unit.empty() && std::isfinite(value)) detail += " " + std::string(unit);
-  throw FieldError(std::string(name), std::move(detail));
+  if (range) range->value = value;
+  throw FieldError(std::string(name), std::move(detail), range);
 }
+constexpr double kInf = std::numeric_limits<double>::infinity();
 }  // namespace
 
 void fail_finite(std::string_view name, double value) { fail(name, "a finite number", value, ""); }
 
 void fail_positive(std::string_view name, double value, std::string_view unit) {
-  fail(name, "> 0" + (unit.empty() ? "" : " " + std::string(unit)), value, unit);
+  fail(name, "> 0" + (unit.empty() ? "" : " " + std::string(unit)), value, unit,
+       FieldError::Range{0.0, kInf, true});
 }
 
 void fail_at_least(std::string_view name, double value, double min, std::string_view unit) {
   fail(name, ">= " + format_number(min) + (unit.empty() ? "" : " " + std::string(unit)), value,
-       unit);
+       unit, FieldError::Range{min, kInf});
 }
 
 void fail_in_range(std::string_view name, double value, double min, double max,
@@ -64,7 +68,7 @@ void fail_in_range(std::string_view name, double value, double min, double max,
   fail(name,
        "in [" + format_number(min) + ", " + format_number(max) + "]" +
            (unit.empty() ? "" : " " + std::string(unit)),
-       value, unit);
+       value, unit, FieldError::Range{min, max});
 }
 
 }  // namespace sweetspot::detail

@@ -464,15 +464,15 @@ double move_bed(Bed& bed, double h, double F, double Fs, double w_dot_mid) {
 // The step's share of the impulse, the peaks and the force history, for a
 // step from t of length h under F ending at compression x (the front's),
 // the ball's centre of mass `centre` closer to the bed, and frame point w.
-void record_step(const CollisionOptions& options, double t, double h, double F, double x,
-                 double centre, const Bed& bed, double w, CollisionResult& res) {
+void record_step(const CollisionOptions& options, bool sampled, double t, double h, double F,
+                 double x, double centre, const Bed& bed, double w, CollisionResult& res) {
   res.impulse_N_s += h * F;
   if (F > res.peak_force_N) res.peak_force_N = F;
   if (centre > res.peak_ball_compression_m) res.peak_ball_compression_m = centre;
   if (bed.present)
     res.peak_string_deflection_m =
         std::max(res.peak_string_deflection_m, x > 0.0 ? std::abs(bed.s - w) : 0.0);
-  if (options.record_history) {
+  if (options.record_history && sampled) {
     res.time_s.push_back(t + 0.5 * h);
     res.force_N.push_back(F);
   }
@@ -579,6 +579,11 @@ CollisionResult integrate(const FrameAtImpact& frame,
 
   double t = 0.0, inner_gradient = 0.0;  // the last step's internal gradient
   long n = 0;
+  // The force history keeps every step, or every stride-th where a contact
+  // takes more than kHistoryPerContact steps (a stiff ball): bounded memory.
+  constexpr double kHistoryPerContact = 1e5;
+  const long stride =
+      static_cast<long>(std::max(1.0, std::ceil(mesh.contact_steps() / kHistoryPerContact)));
   for (; n < mesh.max_steps() && t < options.max_time_s; ++n) {
     const double closing_speed = ball.front_velocity() - bed.vs;
     contacts.begin_step(t, ball.x, closing_speed);
@@ -605,7 +610,7 @@ CollisionResult integrate(const FrameAtImpact& frame,
     if constexpr (requires { law.commit(x_new); }) law.commit(x_new);
     const double u_new = law.energy(x_new);
     ledger.book_ball(F, x_new - x_old, u_new - ball.u_x);
-    record_step(options, t, h, F, x_new, ball.centre_compression(bed.s), bed,
+    record_step(options, n % stride == 0, t, h, F, x_new, ball.centre_compression(bed.s), bed,
                 start.w0 + h * modal.w_dot_mid, res);
     ball.compress_to(x_new, u_new, h);
     history.push(F, h);

@@ -133,6 +133,15 @@ CollisionResult DesignCollision::at_speed(double from_butt_m, double off_axis_m,
                            " is the input furthest from the racquet it was verified on",
                        why);
   };
+  if (!r.separated && r.steps == 0) {
+    // Not stepped at all (step_mesh.hpp): the contact alone would take more
+    // steps than a run may, its fastest motion far shorter than the contact.
+    refuse(collision_suspect(as_hit(), f1),
+           "the contact is too stiff to step through: its fastest motion rings in a step of " +
+               detail::format_significant(r.step_s) +
+               " s, more than a million steps for the contact; a ball or strings this stiff "
+               "take the solved collision past what it resolves in bounded time");
+  }
   if (!r.separated) {
     // A ball given dead (a COR on a rigid surface near 0) comes back off what
     // it hits at a crawl, or (plastic) stops there: it is still there when
@@ -143,8 +152,9 @@ CollisionResult DesignCollision::at_speed(double from_butt_m, double off_axis_m,
                (bed_                                                  ? "the strings"
                 : design.support.kind == Support::Kind::kRigidSurface ? "the surface"
                                                                       : "the frame") +
-               " for good after " + detail::format_number(options.max_time_s) + " s and " +
-               std::to_string(r.contacts) + (r.contacts == 1 ? " contact" : " contacts") +
+               " for good within the run's " + detail::format_number(options.max_time_s) +
+               " s (or its bound on steps) and " + std::to_string(r.contacts) +
+               (r.contacts == 1 ? " contact" : " contacts") +
                (dead && *dead < 0.1
                     ? "; a ball as dead as cor_on_rigid_surface " + detail::format_number(*dead) +
                           " comes off it too slowly, or stops: give a livelier one"

@@ -119,7 +119,8 @@ void validate(const Design& d) {
                        "contradicts the frame's EI_N_m2 or fundamental_free_Hz: give the stiffness "
                        "once");
     }
-    fundamental_free_Hz_from_RA(*k.RA, d.implement.frame_mass_properties().mass_kg);  // its range
+    fundamental_free_Hz_from_RA(*k.RA, d.implement.frame_mass_properties().mass_kg,
+                                d.implement.length_m());  // its range
   }
   if (k.shear_modulus_Pa) {
     detail::require_positive("frame/cross_section/shear_modulus_Pa", *k.shear_modulus_Pa, "Pa");
@@ -208,12 +209,9 @@ void validate(const Design& d) {
   // or the default head of the bed's size, as the centre of the strings is
   // placed; none when that head does not fit). To round-off of the length.
   if (d.strings) {
-    HeadShape head = d.head.value_or(HeadShape{});
-    if (!d.head)
-      head.area_m2 = std::numbers::pi * d.strings->head_radius_m * d.strings->head_radius_m;
     std::optional<HeadEllipse> bed;
     try {
-      bed = string_bed(head, L);
+      bed = string_bed(racquet_head(d), L);
     } catch (const std::invalid_argument&) {
     }
     const double slack = 1e-9;
@@ -270,6 +268,14 @@ std::optional<double> polar_inertia_kg_m2(const Design& d) {
 }
 
 bool polar_inertia_estimated(const Design& d) { return !d.twistweight_kg_m2 && d.head; }
+
+HeadShape racquet_head(const Design& d) {
+  if (d.head) return *d.head;
+  HeadShape head;  // the default aspect ratio and hoop width, kDefaultHeadArea_m2
+  if (d.strings)
+    head.area_m2 = std::numbers::pi * d.strings->head_radius_m * d.strings->head_radius_m;
+  return head;
+}
 
 MassProperties hand_held_system(const Design& d) {
   return with_point_mass(d.implement.mass_properties(),

@@ -130,8 +130,8 @@ FlexibleFrame flexible_frame(const Design& design) {
   } else if (stiffness.RA) {
     // RA rates the frame as sold: its fundamental without the design's point
     // masses sets the stiffness, which the point masses then load.
-    const double f1 =
-        fundamental_free_Hz_from_RA(*stiffness.RA, implement.frame_mass_properties().mass_kg);
+    const double f1 = fundamental_free_Hz_from_RA(
+        *stiffness.RA, implement.frame_mass_properties().mass_kg, implement.length_m());
     try {
       frame.sections = scale_EI_to_fundamental(frame.sections, {}, f1, frame.options);
     } catch (const ModelRefusal& r) {
@@ -181,10 +181,29 @@ HandCoupling hand_coupling(const Design& design) {
   // The grip's length within what is left past its start, as the modes
   // check it (validate_hand): a tiny grip at the tip can end at the tip
   // while its start plus its length does not.
-  if (start < 0.0 || end > design.implement.length_m() ||
-      hand.grip_length_m > design.implement.length_m() - start) {
-    throw FieldError("hand/grip_length_m", "the grip " + detail::format_number(start) + " to " +
-                                               detail::format_number(end) +
+  const double L = design.implement.length_m();
+  if (!(hand.grip_length_m <= L)) {
+    throw FieldError("hand/grip_length_m",
+                     "must be at most the implement's length " + detail::format_significant(L) +
+                         " m, got " + detail::format_significant(hand.grip_length_m) + " m");
+  }
+  const double half = 0.5 * hand.grip_length_m;
+  if (hand.center_from_butt_m < half || hand.center_from_butt_m > L - half) {
+    // The rigid model takes the hand as a point anywhere on the implement;
+    // the modes grip the handle over the grip, which must lie on it.
+    throw FieldError("hand/center_from_butt_m",
+                     "must be in [" + detail::format_significant(half) + ", " +
+                         detail::format_significant(L - half) +
+                         "] m for the modes, half the grip (" +
+                         detail::format_significant(hand.grip_length_m) +
+                         " m long) from either end, so the hand grips the implement; got " +
+                         detail::format_significant(hand.center_from_butt_m) + " m");
+  }
+  // Its centre within the range, the grip still past an end by round-off
+  // (a grip of 1e-300 m at the tip): as the modes check it (validate_hand).
+  if (start < 0.0 || end > L || hand.grip_length_m > L - start) {
+    throw FieldError("hand/grip_length_m", "the grip " + detail::format_significant(start) +
+                                               " to " + detail::format_significant(end) +
                                                " m must lie on the implement");
   }
   detail::require_at_least("hand/grip_stiffness_N_m2", hand.grip_stiffness_N_m2, 0.0, "N/m^2");

@@ -219,11 +219,13 @@ Implement Implement::from_specs(const IndustrySpecs& specs, std::vector<PointMas
   // I_cm = SW - M (B - 0.1)^2 must also be a normal number, not an underflow.
   if (!(specs.swingweight_kg_m2 - sw_min >= std::numeric_limits<double>::min()) ||
       specs.swingweight_kg_m2 > sw_max) {
-    throw FieldError("swingweight_kg_m2", "must be in (" + detail::format_significant(sw_min) +
-                                              ", " + detail::format_significant(sw_max) +
-                                              "] kg m^2 for this mass, balance and length, got " +
-                                              detail::format_number(specs.swingweight_kg_m2) +
-                                              " kg m^2");
+    throw FieldError("swingweight_kg_m2",
+                     "must be in (" + detail::format_significant(sw_min) + ", " +
+                         detail::format_significant(sw_max) +
+                         "] kg m^2 for this mass, balance and length, got " +
+                         detail::format_number(specs.swingweight_kg_m2) + " kg m^2",
+                     FieldError::Range{sw_min, sw_max, true, specs.swingweight_kg_m2,
+                                       "for this mass, balance and length"});
   }
   Implement implement;
   implement.length_m_ = L;

@@ -83,17 +83,6 @@ std::vector<PointMass> place_point_masses(const std::vector<PointMassDescription
   return points;
 }
 
-HeadShape racquet_head(const Design& design) {
-  if (design.head) return *design.head;
-  HeadShape head;  // the default aspect ratio and hoop width of head_geometry.hpp
-  head.area_m2 = 100 * kSquareInch_m2;
-  if (design.strings) {
-    const double r = design.strings->head_radius_m;
-    head.area_m2 = std::numbers::pi * r * r;
-  }
-  return head;
-}
-
 double centre_of_strings_from_tip_m(const Design& design) {
   const HeadShape head = racquet_head(design);
   const double length = design.implement.length_m();
@@ -156,6 +145,13 @@ void derive(DesignDescription& d) {
     if (design.head && !same_head_area(*d.head_area_m2, design.head->area_m2))
       throw std::domain_error("strings/head_size_cm2: contradicts implement/headsize_cm2");
     design.strings->head_radius_m = head_radius_from_area(*d.head_area_m2);
+    // One head, one size: the string bed's size given alone is the head's, so
+    // the twist, the map and the page take it as they take implement.headsize.
+    if (!design.head) {
+      HeadShape head;  // the default aspect ratio and hoop width of head_geometry.hpp
+      head.area_m2 = *d.head_area_m2;
+      design.head = head;
+    }
   } else if (design.strings && design.head) {
     design.strings->head_radius_m = head_radius_from_area(design.head->area_m2);
   }

@@ -86,12 +86,7 @@ struct ImplementDescription {
 // resolved again whenever the geometry changes.
 enum class ImpactPlace { kFromTip, kFromButt, kCentreOfStrings };
 
-// The head whose string bed a racquet is hit on: the implement's head when
-// given; else the default shape with the string bed's area (pi R^2 of
-// strings.head_radius_m); else the default shape of 100 sq in.
-HeadShape racquet_head(const Design& design);
-
-// The centre of the string bed of racquet_head() [m from the tip]: 18.15 cm
+// The centre of the string bed of racquet_head() (design.hpp) [m from the tip]: 18.15 cm
 // for 100 sq in with the default shape; half the length when the head would
 // not fit.
 double centre_of_strings_from_tip_m(const Design& design);

@@ -52,6 +52,39 @@ bool is_design_path(std::string_view name) {
          std::string_view::npos;
 }
 
+// A range the core refused a value by, stated again in the unit of the file's
+// key when the file gave the quantity in another unit ("must be in [4.496,
+// 224.8] lb (20 to 1000 N), got 230 lb"), or nothing when it cannot be: no
+// range, a value not a number, no unit in the key. The file's unit is the
+// ratio of the core's SI value to the value the file gave (every scale of
+// the field table is a factor).
+std::optional<std::string> range_in_file_unit(const std::invalid_argument& error,
+                                              const KeyOrigin& origin, const std::string& si_key,
+                                              const std::string& user_key) {
+  const auto* typed = dynamic_cast<const FieldError*>(&error);
+  if (!typed || !typed->range() || !origin.given.is_number()) return std::nullopt;
+  const FieldError::Range& range = *typed->range();
+  const double given = origin.given.get<double>();
+  const double per_unit = range.value / given;  // SI per file unit
+  const std::string unit(unit_of_key(user_key));
+  const std::string si_unit(unit_of_key(si_key));
+  if (!(std::isfinite(per_unit) && per_unit > 0.0) || unit.empty() || si_unit.empty())
+    return std::nullopt;
+  const auto in_unit = [&](double si) { return significant(si / per_unit, 4); };
+  std::string expected;
+  if (std::isfinite(range.min) && std::isfinite(range.max)) {
+    expected = std::string("in ") + (range.min_open ? "(" : "[") + in_unit(range.min) + ", " +
+               in_unit(range.max) + "] " + unit + " (" + significant(range.min, 4) + " to " +
+               significant(range.max, 4) + " " + si_unit + ")";
+    if (*range.why != '\0') expected += std::string(" ") + range.why;
+  } else if (std::isfinite(range.min)) {
+    expected = (range.min_open ? "> " : ">= ") + in_unit(range.min) + " " + unit;
+  } else {
+    return std::nullopt;
+  }
+  return "must be " + expected + ", got " + given_text(origin) + " " + unit;
+}
+
 // The physics core names a bad argument by its canonical SI path relative to
 // the document ("hand/mass_kg: must be ..."), or relative to the implement
 // for its lists ("sections/0/length_m", "point_masses/1/mass_kg"); point the
@@ -90,9 +123,13 @@ bool is_design_path(std::string_view name) {
       if (!it->second.derived_by.empty())
         detail += " (the file's " + user_key + ": " + given_text(it->second) + ", " +
                   it->second.derived_by + ")";
-      else if (si_key != user_key && user_key.starts_with(stem))
-        detail += " (the file's " + user_key + ": " + given_text(it->second) + ", converted to SI)";
-      else if (si_key != user_key)
+      else if (si_key != user_key && user_key.starts_with(stem)) {
+        if (const auto restated = range_in_file_unit(error, it->second, si_key, user_key))
+          detail = *restated;
+        else
+          detail +=
+              " (the file's " + user_key + ": " + given_text(it->second) + ", converted to SI)";
+      } else if (si_key != user_key)
         detail += " (" + si_key + ", derived from the file's " + user_key + ": " +
                   given_text(it->second) + ")";
       throw InputError(source, pointer, detail);
@@ -264,13 +301,20 @@ std::vector<PointMassSpec> read_point_masses(ObjectReader& implement, const std:
           d.clock_hours.push_back(6.0);
           return;
         }
-        if (item.is_string() && item.get<std::string>() == "handle" && value.is_string()) {
+        // Under the butt cap ("handle" or "butt") or under the grip ("grip"), as
+        // `tune` names them.
+        if (item.is_string() && value.is_string() &&
+            (item.get<std::string>() == "handle" || item.get<std::string>() == "butt")) {
           d.handle = true;
           return;
         }
+        if (item.is_string() && value.is_string() && item.get<std::string>() == "grip") {
+          d.from_butt_m = kUnderGripFromButt_m;
+          return;
+        }
         r.fail("clock",
-               "expected an hour in [0, 12], a list of hours ([3, 9]), \"throat\" or "
-               "\"handle\", got " +
+               "expected an hour in [0, 12], a list of hours ([3, 9]), \"throat\", \"grip\" "
+               "or \"handle\" (\"butt\"), got " +
                    brief(value));
       };
       if (value.is_array()) {
@@ -943,6 +987,17 @@ std::optional<double> read_strings(ObjectReader& top, Reading& in, const Impleme
         r.record("head_radius_m", head);
       }
       if (in.design.head || !head.empty()) bed.head_radius_m = head_radius_from_area(area_m2);
+      // One head, one size: the bed's size given alone is the head's (as
+      // build_design() takes it), so the twist, the map and the page know it.
+      if (!in.design.head && !head.empty()) {
+        HeadShape given_head;  // the default aspect ratio and hoop width of head_geometry.hpp
+        given_head.area_m2 = area_m2;
+        in.design.head = given_head;
+        if (in.keys) {  // a complaint about the head names the size the file gave
+          const auto it = in.keys->find("strings/head_radius_m");
+          if (it != in.keys->end()) (*in.keys)["implement/headsize"] = it->second;
+        }
+      }
       // The bed's radius from the implement's head: a complaint about it names
       // the head's size as the file gave it.
       if (in.keys && in.design.head && head.empty()) {
@@ -1594,8 +1649,12 @@ Json design_to_json(const DesignFile& file) {
         put(f, object, "linear_density", density);
       }
     }
-    put(strings, "strings", "head_size",
-        3.141592653589793 * d.strings->head_radius_m * d.strings->head_radius_m * 1e4);
+    // One head, one size: the implement's head gives the bed's (written
+    // above), and the bed's size written here becomes the head's when read
+    // back; the default bed with no head is written as none.
+    if (!d.head && d.strings->head_radius_m != StringBed{}.head_radius_m)
+      put(strings, "strings", "head_size",
+          3.141592653589793 * d.strings->head_radius_m * d.strings->head_radius_m * 1e4);
     put(strings, "strings", "contact_radius", d.strings->contact_radius_m);
   } else {
     put(strings, "strings", "impact_duration", d.impact_duration_s);

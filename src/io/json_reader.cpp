@@ -476,12 +476,33 @@ FieldOverride::FieldOverride(const std::string& pointer)
     if (form[0] == spelling->field->stem) add_row(form[1]);
     if (form[1] == spelling->field->stem) add_row(form[0]);
   }
+  // One head, one size: the implement's head and the string bed's are one
+  // quantity in two objects, so a value given for either replaces both.
+  static constexpr std::string_view kOneQuantity[][2][2] = {
+      {{"implement", "headsize"}, {"strings", "head_size"}}};
+  for (const auto& pair : kOneQuantity) {
+    for (int side = 0; side < 2; ++side) {
+      if (pair[side][0] != object || pair[side][1] != spelling->field->stem) continue;
+      const std::string_view other_object = pair[1 - side][0];
+      elsewhere_ = parent_.parent_pointer() / std::string(other_object);
+      for (const DesignField& field : design_fields()) {
+        if (field.object != other_object || field.stem != pair[1 - side][1]) continue;
+        for (std::string& key : spellings_of(field)) elsewhere_keys_.push_back(std::move(key));
+      }
+    }
+  }
 }
 
 void FieldOverride::apply(Json& document, Json value) const {
   Json& parent = document[parent_];
   if (parent.is_object()) {
     for (const std::string& other : alternatives_) parent.erase(other);
+  }
+  if (!elsewhere_keys_.empty() && document.contains(elsewhere_)) {
+    Json& other = document[elsewhere_];
+    if (other.is_object()) {
+      for (const std::string& key : elsewhere_keys_) other.erase(key);
+    }
   }
   document[at_] = std::move(value);
 }

@@ -131,6 +131,10 @@ class FieldOverride {
   Json::json_pointer at_;
   Json::json_pointer parent_;
   std::vector<std::string> alternatives_;
+  // The same quantity spelled in another object (the head's size as
+  // strings.head_size_in2 for implement.headsize_sq_in): that object and its keys.
+  Json::json_pointer elsewhere_;
+  std::vector<std::string> elsewhere_keys_;
 };
 
 // override_field() for every leaf of `patch` (objects are descended, anything

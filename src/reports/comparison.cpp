@@ -150,17 +150,13 @@ std::string toward(double delta_from_tip_m) {
   return delta_from_tip_m < 0 ? "toward the tip" : "toward the handle";
 }
 
-// "moves 1.4 cm toward the tip (30.5 -> 29 cm from the tip)", or std::nullopt when it does not.
+// "moves 1.4 cm toward the tip (30.7 cm -> 29.3 cm from the tip)", or std::nullopt when it does
+// not.
 std::optional<std::string> moved(std::optional<double> before, std::optional<double> after) {
   if (!before || !after || std::fabs(*after - *before) < kPositionThreshold_m) return std::nullopt;
-  // The move is the difference of the printed places: to the half centimetre
-  // when that reads true, else to the millimetre (30.5 -> 29.5 is not 1.5 cm).
-  const auto half_cm = [](double m) { return std::round(m * 200.0) / 2.0; };
-  const double move_cm = half_cm(std::fabs(*after - *before));
-  if (std::fabs(half_cm(*after) - half_cm(*before)) == move_cm) {
-    return fmt::format("moves {} {} ({} → {} from the tip)", cm_text(std::fabs(*after - *before)),
-                       toward(*after - *before), cm_text(*before), cm_text(*after));
-  }
+  // The move is the difference of the printed places, to the millimetre as
+  // the table beside the words prints them (30.68 -> 29.94 reads 30.7 -> 29.9,
+  // not the half centimetres 30.5 -> 30).
   const double a = std::round(*before * 1000.0) / 10.0, b = std::round(*after * 1000.0) / 10.0;
   return fmt::format("moves {:.1f} cm {} ({:.1f} cm → {:.1f} cm from the tip)", std::fabs(b - a),
                      toward(*after - *before), a, b);
@@ -805,6 +801,15 @@ std::vector<std::string> differences(const ComparedDesign& a, const ComparedDesi
       effects.push_back("the vibration it leaves at the hand (weighted acceleration) " +
                         change_sentence(va, vb, kArmThreshold, "m/s²"));
   }
+  // Lead at 3 and 9 o'clock is there for this: the head's resistance to
+  // twisting, whichever hit is asked about.
+  if (ea.polar_inertia_kg_m2 && eb.polar_inertia_kg_m2 &&
+      std::fabs(*eb.polar_inertia_kg_m2 - *ea.polar_inertia_kg_m2) >=
+          kForceThreshold * std::fabs(*ea.polar_inertia_kg_m2)) {
+    effects.push_back("its twistweight (how it resists twisting on a hit off the axis) " +
+                      change_sentence(*ea.polar_inertia_kg_m2 * 1e4, *eb.polar_inertia_kg_m2 * 1e4,
+                                      kForceThreshold, "kg·cm²"));
+  }
   if (off_axis(a) || off_axis(b)) {
     effects.push_back(fmt::format(
         "the twist of {} (peak torque about the long axis) {}", impact,
@@ -818,7 +823,8 @@ std::vector<std::string> differences(const ComparedDesign& a, const ComparedDesi
   if (effects.empty()) {
     sentences.push_back(
         "No difference that matters at the impact: the sweet spots move less than 0.5 cm, the "
-        "wrist force, the contact time and the vibration at the hand change less than 2 % and "
+        "wrist force, the contact time, the twistweight and the vibration at the hand change less "
+        "than 2 % and "
         "the rebound less than 0.01.");
   } else {
     std::string first = joined(effects);

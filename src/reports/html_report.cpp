@@ -22,16 +22,14 @@
 namespace sweetspot::reports {
 namespace {
 
-using studies::kDefaultHeadArea_m2;
 // The drawn head: an ellipse this much longer than wide (a 100 sq in head is
 // about 34 cm by 25 cm).
 constexpr double kHeadAspect = 1.35;
 // Drawing sizes [cm]: the frame's rim, the handle's width, the throat's
-// length, a tennis ball's diameter (ITF: 6.54-6.86 cm), the profile's depth.
+// length, the profile's depth (the ball is drawn at the design's diameter).
 constexpr double kRim_cm = 1.5;  // as reports/summary.hpp places the centre of the strings
 constexpr double kHandleWidth_cm = 2.8;
 constexpr double kThroat_cm = 14.0;
-constexpr double kBall_cm = 6.7;
 constexpr double kBeamDepth_cm = 2.4;
 
 // A number for an SVG attribute (centimetres, two decimals are plenty).
@@ -162,11 +160,15 @@ std::string hand_and_tape(const io::DesignFile& file, double half_height, bool p
           off_cm > 0 ? 3 : 9);
       continue;
     }
+    // Lead on the axis sits on the frame: from the side across its
+    // thickness; face on, a band around the handle's width (on the hoop at 12
+    // o'clock, in the throat or under the grip), not a strip across the head.
+    const double band = profile ? half_height : std::min(half_height, kHandleWidth_cm / 2 + 0.2);
     svg += fmt::format(
         "<rect class=\"tape\" x=\"{}\" y=\"{}\" width=\"1.6\" height=\"{}\"><title>lead, {:.0f} g, "
         "{} cm from the tip</title></rect>\n",
-        n(std::clamp(x - 0.8, 0.0, L - 1.6)), n(-half_height), n(2 * half_height),
-        p.mass_kg * 1000.0, html_cm(d.implement.length_m() - p.from_butt_m));
+        n(std::clamp(x - 0.8, 0.0, L - 1.6)), n(-band), n(2 * band), p.mass_kg * 1000.0,
+        html_cm(d.implement.length_m() - p.from_butt_m));
   }
   return svg;
 }
@@ -332,19 +334,7 @@ std::string maps_html(const io::DesignFile& file, const studies::PageMaps& maps,
 
 }  // namespace
 
-double drawn_head_area_m2(const io::DesignFile& file, const io::Json& document) {
-  if (file.design.strings) {
-    const double r = file.design.strings->head_radius_m;
-    return M_PI * r * r;
-  }
-  if (file.design.head) return file.design.head->area_m2;
-  if (document.is_object() && document.contains("implement") && document["implement"].is_object()) {
-    const io::Json& implement = document["implement"];
-    if (implement.contains("headsize_sq_in") && implement["headsize_sq_in"].is_number())
-      return implement["headsize_sq_in"].get<double>() * io::kSquareInch_m2;
-  }
-  return kDefaultHeadArea_m2;
-}
+double drawn_head_area_m2(const io::DesignFile& file) { return racquet_head(file.design).area_m2; }
 
 std::string racquet_top_svg(const io::DesignFile& file, const Evaluation& e, double head_area_m2,
                             const std::string& id) {
@@ -388,10 +378,11 @@ std::string racquet_top_svg(const io::DesignFile& file, const Evaluation& e, dou
   // Off the axis towards 3 o'clock is up in this view (the face seen with the
   // tip on the left); a hit on the axis is drawn and titled as before.
   const double off_cm = file.design.impact_off_axis_m * 100.0;
+  const double ball_cm = file.design.ball.diameter_m * 100.0;  // the file's ball, to scale
   svg += fmt::format(
       "<circle class=\"ball\" cx=\"{}\" cy=\"{}\" r=\"{}\"><title>the ball at the impact, {} cm "
       "from the tip{}</title></circle>\n",
-      n(impact), n(off_cm == 0.0 ? 0.0 : -off_cm), n(kBall_cm / 2), n(impact),
+      n(impact), n(off_cm == 0.0 ? 0.0 : -off_cm), n(ball_cm / 2), n(impact),
       off_cm == 0.0 ? std::string()
                     : fmt::format(", {} cm off the axis toward {} o'clock", n(std::fabs(off_cm)),
                                   off_cm > 0 ? 3 : 9));
@@ -413,7 +404,8 @@ std::string side_view_svg(const io::DesignFile& file, const Evaluation& e, doubl
   tape_marks(file, ms);
   const double impact = L - file.design.impact_from_butt_m * 100.0;
   ms.push_back({impact, "impact", ""});
-  const double top = -half - kBall_cm - 12.0;
+  const double ball_cm = file.design.ball.diameter_m * 100.0;  // the file's ball, to scale
+  const double top = -half - ball_cm - 12.0;
   const double bottom = half + 9.0;
   std::string svg = fmt::format(
       "<svg class=\"drawing\" viewBox=\"-2 {} {} {}\" role=\"img\" aria-labelledby=\"side-title\" "
@@ -425,7 +417,7 @@ std::string side_view_svg(const io::DesignFile& file, const Evaluation& e, doubl
   svg += fmt::format(
       "<circle class=\"ball\" cx=\"{}\" cy=\"{}\" r=\"{}\"><title>the ball at the impact</title>"
       "</circle>\n",
-      n(impact), n(-half - kBall_cm / 2), n(kBall_cm / 2));
+      n(impact), n(-half - ball_cm / 2), n(ball_cm / 2));
   for (const Mark& m : marks(file, e, 0.0)) svg += m.symbol + "\n";
   svg += labels(ms, 0.0, top + 1.8);
   svg += ruler(L, half + 3.0);
@@ -492,7 +484,7 @@ std::string racquets_to_scale_html(const std::vector<DrawnRacquet>& racquets,
         "<figure class=\"drawing-figure\" id=\"{0}-{1}\"><div style=\"width: {2:.2f}%\">{3}</div>"
         "<figcaption>{4}</figcaption></figure>\n",
         html_escape(id), k + 1, 100.0 * (L_cm + 4.0) / (longest_cm + 4.0),
-        racquet_top_svg(*r.file, *r.evaluation, drawn_head_area_m2(*r.file, io::Json::object()),
+        racquet_top_svg(*r.file, *r.evaluation, drawn_head_area_m2(*r.file),
                         fmt::format("{}-{}", html_escape(id), k + 1)),
         r.caption_html);
   }
@@ -615,8 +607,8 @@ std::string racquet_html(const io::DesignFile& file, const Evaluation& e,
                       html_cm(file.design.implement.length_m()), e.mass_kg * 1000.0,
                       e.swingweight_kg_m2 * 1e4);
   }
-  const double head_area = drawn_head_area_m2(file, document);
-  const bool head_given = file.design.strings || head_area != kDefaultHeadArea_m2;
+  const double head_area = drawn_head_area_m2(file);
+  const bool head_given = file.design.head.has_value();
   std::string html = "<section id=\"racquet\"><h2>The racquet, to scale</h2>\n";
   html += "<figure class=\"drawing-figure\">" + racquet_top_svg(file, e, head_area) +
           fmt::format(

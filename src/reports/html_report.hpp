@@ -22,7 +22,7 @@ namespace sweetspot::reports {
 // design has strings, the design's head shape (`implement.headsize_sq_in`)
 // when it has one, `implement.headsize_sq_in` of `document` otherwise, else
 // 100 sq in, a mid-size tennis head.
-double drawn_head_area_m2(const io::DesignFile& design, const io::Json& document);
+double drawn_head_area_m2(const io::DesignFile& design);
 
 // The racquet drawn to scale from above and from the side, as inline SVG
 // (centimetres as user units): outline from the length and the head's size,

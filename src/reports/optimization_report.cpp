@@ -363,7 +363,11 @@ std::string lead_place(const io::Json& design, const std::string& pointer) {
   if (const auto clock = entry.find("clock"); clock != entry.end()) {
     if (clock->is_string()) {
       const std::string place = clock->get<std::string>();
-      return place == "throat" ? "at the throat" : place == "handle" ? "at the handle" : "";
+      return place == "throat"   ? "at the throat"
+             : place == "handle" ? "at the handle"
+             : place == "butt"   ? "under the butt cap"
+             : place == "grip"   ? "under the grip"
+                                 : "";
     }
     if (clock->is_number()) return "at " + hour(*clock) + " o'clock";
     if (clock->is_array() && !clock->empty()) {

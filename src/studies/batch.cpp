@@ -282,7 +282,13 @@ class Evaluator {
           }
         }
       } else {
-        io::override_fields(document, io::parse_json(row.text, where));
+        const io::Json patch = io::parse_json(row.text, where);
+        // A row that fails still shows its own name, as a CSV row does.
+        if (patch.is_object()) {
+          const auto name = patch.find("name");
+          if (name != patch.end() && name->is_string()) row.name = name->get<std::string>();
+        }
+        io::override_fields(document, patch);
       }
       if (options_.format == io::Format::kJson) {
         // The design with its inputs' provenance, for a row as complete as `evaluate`'s.

@@ -9,9 +9,7 @@ PageMaps page_maps(const io::DesignFile& file, Fidelity fidelity) {
   PageMaps maps;
   maps.head_assumed = !d.head && !d.twistweight_kg_m2;
   if (maps.head_assumed) {
-    HeadShape head;
-    head.area_m2 = kDefaultHeadArea_m2;
-    d.head = head;
+    d.head = racquet_head(d);  // the string bed's size, else 100 sq in
   }
   StringBedMapOptions options;
   try {

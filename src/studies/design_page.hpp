@@ -17,16 +17,12 @@
 
 namespace sweetspot::studies {
 
-// A mid-size tennis head (100 sq in), assumed for the drawing and the maps
-// when the file does not give one.
-inline constexpr double kDefaultHeadArea_m2 = 100.0 * io::kSquareInch_m2;
-
 // The hand-held modes' relative tolerance on the page (evaluate's default).
 inline constexpr double kPageRelTol = 1e-6;
 
 // The string-bed maps of a page: computed over the design (its head assumed,
-// kDefaultHeadArea_m2, when neither a head nor a twistweight is given), or
-// why not.
+// racquet_head(): the string bed's size, else 100 sq in, when neither a head
+// nor a twistweight is given), or why not.
 struct PageMaps {
   bool head_assumed = false;
   std::optional<StringBedMap> map;

@@ -1,5 +1,6 @@
 #include "studies/response.hpp"
 
+#include "sweetspot/errors.hpp"
 #include "sweetspot/evaluate.hpp"
 #include "sweetspot/rigid_impact.hpp"
 
@@ -26,6 +27,8 @@ io::DesignFile flexible_table1_racquet(const std::string& designs_dir) {
 
 ResponseData compute_response(const io::DesignFile& file, const ResponseRequest& request) {
   try {
+    if (file.design.support.kind == Support::Kind::kRigidSurface)
+      throw FieldError("support", "a rigid surface has no implement, so no response");
     ResponseData data{file, request, times(request.until_s, request.samples), {}, {}, {}};
     ResponseOptions options;
     options.support =

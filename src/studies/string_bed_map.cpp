@@ -74,7 +74,7 @@ StringBedMap string_bed_map(const Design& design, const StringBedMapOptions& opt
         "twistweight_kg_cm2, for the default 100 in^2 head)");
   }
   StringBedMap map;
-  map.bed = string_bed(design.head.value_or(HeadShape{}), design.implement.length_m());
+  map.bed = string_bed(racquet_head(design), design.implement.length_m());
   map.columns = options.columns;
   map.rows = options.rows;
   map.polar_inertia_kg_m2 = *polar;

@@ -504,7 +504,16 @@ void read_sweep_outputs(StudyReading& in, bool default_impact) {
           in.source, at,
           "expected the name of an output of sweetspot evaluate, got " + io::brief(outputs[i]));
     }
-    study.sweep_outputs.push_back(io::find_output(outputs[i].get<std::string>()));
+    const io::OutputSpec* output = io::find_output(outputs[i].get<std::string>());
+    // Each output once, as each variable's path once: a repeat is a column twice.
+    const auto seen = std::find(study.sweep_outputs.begin(), study.sweep_outputs.end(), output);
+    if (seen != study.sweep_outputs.end()) {
+      throw io::InputError(in.source, at,
+                           "repeats /outputs/" +
+                               std::to_string(seen - study.sweep_outputs.begin()) + " (" +
+                               io::brief(outputs[i]) + "): give each output once");
+    }
+    study.sweep_outputs.push_back(output);
   }
   // A sweep of a design that gives no impact says where the default hit.
   const io::OutputSpec* impact_output = io::find_output("impact_from_tip_m");

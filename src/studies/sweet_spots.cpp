@@ -185,7 +185,7 @@ bool is_racquet(const io::DesignFile& design) {
                                                  : io::ImplementDescription::Form::kSections);
 }
 
-HeadShape head_shape_of(const io::DesignFile& design) { return io::racquet_head(design.design); }
+HeadShape head_shape_of(const io::DesignFile& design) { return racquet_head(design.design); }
 
 double centre_of_strings_from_tip_m(const io::DesignFile& design) {
   return io::centre_of_strings_from_tip_m(design.design);

@@ -106,14 +106,15 @@ std::vector<LeadPlace> parse_lead_places(std::string_view text) {
     place.label = std::string(word);
     if (word.empty()) {
       throw std::invalid_argument(fmt::format(
-          "an empty place (item {}; expected clock hours such as 12 or 3/9, throat, handle "
-          "or butt, separated by commas)",
+          "an empty place (item {}; expected clock hours such as 12 or 3/9, throat, grip, "
+          "butt or handle, separated by commas)",
           item));
     } else if (word == "throat") {
       place.kind = LeadPlace::Kind::kThroat;
-    } else if (word == "handle") {
+    } else if (word == "grip") {
       place.kind = LeadPlace::Kind::kUnderGrip;
-    } else if (word == "butt") {
+    } else if (word == "butt" || word == "handle") {
+      // One word, one place: "handle" is the butt cap, as in a design file's clock.
       place.kind = LeadPlace::Kind::kButtCap;
     } else {
       const std::vector<std::string_view> hours = split(word, '/');
@@ -122,7 +123,7 @@ std::vector<LeadPlace> parse_lead_places(std::string_view text) {
         if (!hour || hours.size() > 2 || *hour < 0.0 || *hour > 12.0) {
           throw std::invalid_argument(fmt::format(
               "item {} \"{}\" is not a place (expected an hour in [0, 12] such as 12 or 10.5, a "
-              "pair of hours such as 3/9, throat, handle or butt)",
+              "pair of hours such as 3/9, throat, grip, butt or handle)",
               item, io::one_line(word)));
         }
         place.hours.push_back(*hour == 0.0 ? 12.0 : *hour);
@@ -153,6 +154,10 @@ std::vector<LeadPlace> parse_lead_places(std::string_view text) {
 }
 
 RacquetSpecs specs_of(const Design& design) {
+  // A ball onto a rigid plate has no implement: the Table I racquet the
+  // design carries stands in for none, so it has no specs to reach or take.
+  if (design.support.kind == Support::Kind::kRigidSurface)
+    throw FieldError("support", "a rigid surface has no implement, so no specs to tune");
   const MassProperties& body = design.implement.mass_properties();
   RacquetSpecs specs;
   specs.mass_kg = body.mass_kg;
@@ -572,7 +577,7 @@ io::Json tuned_document(const io::Json& document, const TuneResult& result) {
         entry["clock"] = "handle";
         break;
       case LeadPlace::Kind::kUnderGrip:
-        entry["from_butt_cm"] = kUnderGripFromButt_m * 1e2;
+        entry["clock"] = "grip";
         break;
       case LeadPlace::Kind::kClock:
         if (lead.place.hours.size() == 1)

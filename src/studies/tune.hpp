@@ -31,11 +31,8 @@
 
 namespace sweetspot::studies {
 
-// Lead "under the grip" is wrapped along the handle; taken as one point at
-// the middle of a 7-inch (18 cm) handle, 9 cm from the butt: a stated
-// assumption of place (a grip's lead spread over its length differs by its
-// own inertia about its middle, under 0.3 kg cm^2 for 10 g over 18 cm).
-inline constexpr double kUnderGripFromButt_m = 0.09;
+// Lead under the grip, 9 cm from the butt (head_geometry.hpp).
+using sweetspot::kUnderGripFromButt_m;
 // A "strip" of lead tape: 1/4-inch tape about 4 inches (10 cm) long, 1 g.
 // Standard 1/2-inch tape weighs 0.44-0.5 g per inch (8 in about 3.5 g; A.
 // Vihn, "Lead tape and its application", tennis4you.com), so 1/4-inch tape
@@ -47,16 +44,16 @@ inline constexpr std::size_t kMaxLeadPlaces = 24;
 
 // Where lead may go: a clock position on the hoop (one hour, or a pair
 // such as 3/9 with half the lead at each), the throat (6 o'clock), under the
-// grip (kUnderGripFromButt_m) or under the butt cap (the design file's
-// "handle", kHandleWeightFromButt_m).
+// grip ("grip", kUnderGripFromButt_m) or under the butt cap ("butt" or
+// "handle", as the design file's clock "handle", kHandleWeightFromButt_m).
 struct LeadPlace {
   enum class Kind { kClock, kThroat, kUnderGrip, kButtCap };
   Kind kind = Kind::kClock;
   std::vector<double> hours;  // kClock: one hour, or two (a pair)
-  std::string label;          // as the user wrote it: "12", "3/9", "throat", "handle", "butt"
+  std::string label;          // as the user wrote it: "12", "3/9", "throat", "grip", "butt"
 };
 
-// The places of a --places list ("12,3/9,handle"). Throws
+// The places of a --places list ("12,3/9,grip"). Throws
 // std::invalid_argument naming the item and what is expected for an empty
 // item, an hour outside [0, 12], an unknown name, the same place twice or
 // more than kMaxLeadPlaces places.

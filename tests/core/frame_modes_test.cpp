@@ -186,7 +186,8 @@ TEST_CASE("The modes need a stiffness and a grip on the implement") {
   CHECK_THROWS_WITH(evaluate_modes(d), Catch::StartsWith("frame/EI_N_m2"));
   d = paper_beam();
   d.hand.center_from_butt_m = 0.02;  // a 10 cm grip would start 3 cm beyond the butt
-  CHECK_THROWS_WITH(evaluate_modes(d), Catch::StartsWith("hand/grip_length_m"));
+  CHECK_THROWS_WITH(evaluate_modes(d), Catch::StartsWith("hand/center_from_butt_m: must be in "
+                                                         "[0.05, 0.67] m for the modes"));
 }
 
 TEST_CASE("A modal evaluation carries the rigid one unchanged") {

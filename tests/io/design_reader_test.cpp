@@ -253,8 +253,9 @@ TEST_CASE("A tension outside the verified range is blamed, at the key the file u
   CHECK_THROWS_WITH(
       read(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25, "head_to_handle_mass_ratio": 0.8},
       "strings": {"tension_lb": 1e-9}})"),
-      Catch::StartsWith("test.json: /strings/tension_lb: must be in [20, 1000] N") &&
-          Catch::Contains("the file's tension_lb: 1e-09"));
+      Catch::StartsWith(
+          "test.json: /strings/tension_lb: must be in [4.496, 224.8] lb (20 to 1000 N), got 1e-09 "
+          "lb"));
 }
 
 TEST_CASE("A lean read gives the same design and the same errors, without provenance or key map") {
@@ -333,10 +334,16 @@ TEST_CASE("A refusal of a quantity the model derived says what it was derived fr
   CHECK_THAT(e.detail(), Catch::EndsWith("(tension_N, derived from the file's measured_ring_Hz: "
                                          "1100)") &&
                              !Catch::Contains("converted to SI"));
-  // The same quantity in another unit is converted.
+  // The same quantity in another unit is refused in that unit, its range
+  // too (the SI range beside it).
   const InputError lb = error_of(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25,
       "head_to_handle_mass_ratio": 0.8}, "strings": {"tension_lb": 1e-9}})");
-  CHECK_THAT(lb.detail(), Catch::Contains("(the file's tension_lb: 1e-09, converted to SI)"));
+  CHECK(lb.detail() == "must be in [4.496, 224.8] lb (20 to 1000 N), got 1e-09 lb");
+  const InputError g = error_of(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25,
+      "head_to_handle_mass_ratio": 0.8}, "hand": {"mass_g": -3}})");
+  CHECK(g.pointer() == "/hand/mass_g");
+  CHECK_THAT(g.detail(), Catch::StartsWith("must be in [0, ") && Catch::Contains("] g (0 to ") &&
+                             Catch::EndsWith(" kg), got -3 g"));
 }
 
 TEST_CASE("A section error found while evaluating keeps the /implement prefix") {

@@ -159,6 +159,33 @@ def test_a_non_finite_cell_is_a_failed_row():
     assert math.isnan(many["peak_wrist_force_N"][2])
 
 
+@pytest.mark.parametrize("column, got", [
+    (np.array([True, False]), "bool"),
+    ([True, False], "bool"),
+    (np.array([0.3 + 5j, 0.3]), "complex128"),
+    (np.array([None, 0.3], dtype=object), "object"),
+    (np.ma.masked_array([0.31, 0.3], mask=[True, False]), "masked array"),
+])
+def test_a_column_of_what_is_not_a_number_is_refused(column, got):
+    """A design file takes numbers only; so does a column: NumPy's casts would
+    make a bool 1 kg, drop a complex number's imaginary part, read a masked
+    row's hidden value and an object column's None as nan."""
+    with pytest.raises(sweetspot.InputError, match=r"column \"implement\.mass_kg\": expected an array "
+                       r"of numbers.*" + got):
+        sweetspot.evaluate_many(base_of("rigid"), {"implement.mass_kg": column})
+
+
+def test_numpy_values_in_a_design_are_the_values_they_hold():
+    base = base_of("rigid")
+    as_float = copy.deepcopy(base)
+    as_float["implement"]["mass_kg"] = np.array(base["implement"]["mass_kg"])  # 0-d
+    assert sweetspot.evaluate(as_float)["outputs"] == sweetspot.evaluate(base)["outputs"]
+    as_bool = copy.deepcopy(base)
+    as_bool["implement"]["mass_kg"] = np.True_
+    with pytest.raises(sweetspot.InputError, match="/implement/mass_kg: expected a number, got true"):
+        sweetspot.evaluate(as_bool)
+
+
 class Frame:
     """What evaluate_many reads of a pandas DataFrame (not installed here):
     items() giving each column's name and a Series, an object with __array__."""

@@ -117,13 +117,13 @@ def test_tune_is_the_command_lines_and_its_design_has_the_specs(tmp_path):
                       "swingweight_kg_cm2": 325, "headsize_sq_in": 100},
         "frame": {"RA": 66}, "strings": {"tension_lb": 52}}))
     target = "mass_g=330,balance_cm=32,swingweight_kg_cm2=330"
-    expected = cli_json("tune", racquet, "--target", target, "--places", "12,3/9,handle",
+    expected = cli_json("tune", racquet, "--target", target, "--places", "12,3/9,grip",
                         "--format", "json")
     r = sweetspot.tune(str(racquet), {"mass_g": 330, "balance_cm": 32, "swingweight_kg_cm2": 330},
-                       places=["12", "3/9", "handle"])
+                       places=["12", "3/9", "grip"])
     assert r["report"] == expected
-    assert sweetspot.tune(str(racquet), target, places="12,3/9,handle")["report"] == expected
-    assert r["exact"] and [lead["place"] for lead in r["lead"]] == ["12", "3/9", "handle"]
+    assert sweetspot.tune(str(racquet), target, places="12,3/9,grip")["report"] == expected
+    assert r["exact"] and [lead["place"] for lead in r["lead"]] == ["12", "3/9", "grip"]
     assert math.isclose(r["added_kg"], sum(lead["mass_kg"] for lead in r["lead"]), rel_tol=1e-12)
     for lead in r["lead"]:
         assert lead["mass_kg"] >= 0

@@ -15,6 +15,7 @@
 #include "studies/comparison.hpp"
 #include "studies/design_page.hpp"
 #include "studies/optimization.hpp"
+#include "studies/string_bed_map.hpp"
 #include "studies/study.hpp"
 #include "studies/sweet_spots.hpp"
 #include "sweetspot/evaluate.hpp"
@@ -90,9 +91,48 @@ TEST_CASE("The drawing is to scale: the racquet's length and each marker where t
                       "<ellipse class=\"bed\" cx=\"%lf\" cy=\"0\" rx=\"%lf\" ry=\"%lf\"", &cx, &rx,
                       &ry) == 3);
   CHECK(M_PI * rx * ry == Approx(645.16).epsilon(1e-3));  // two decimals drawn
-  CHECK(reports::drawn_head_area_m2(file, io::Json::object()) == Approx(100 * 0.00064516));
-  CHECK(reports::drawn_head_area_m2(file, io::Json{{"implement", {{"headsize_sq_in", 98}}}}) ==
-        Approx(98 * 0.00064516));
+  CHECK(reports::drawn_head_area_m2(file) == Approx(100 * 0.00064516));
+}
+
+// One head, one size: the drawing, the map's grid and the twist take the
+// head's size wherever the file gives it, the implement's or the string bed's.
+TEST_CASE("The head drawn, mapped and twisted is the size the file gives, in either place") {
+  io::Json implement_head =
+      io::read_json_file(SWEETSPOT_SOURCE_DIR "/designs/racquets/tour-100-strung.json");
+  implement_head["strings"].erase("head_size_in2");
+  implement_head["implement"]["headsize_sq_in"] = 98;
+  io::Json bed_head = implement_head;
+  bed_head["implement"].erase("headsize_sq_in");
+  bed_head["strings"]["head_size_in2"] = 98;
+  const io::DesignFile a = io::read_design(implement_head, "implement.json");
+  const io::DesignFile b = io::read_design(bed_head, "strings.json");
+  CHECK(reports::drawn_head_area_m2(a) == Approx(98 * 0.00064516).epsilon(1e-12));
+  CHECK(reports::drawn_head_area_m2(b) == reports::drawn_head_area_m2(a));
+  REQUIRE(polar_inertia_kg_m2(a.design));
+  REQUIRE(polar_inertia_kg_m2(b.design));
+  CHECK(*polar_inertia_kg_m2(b.design) == *polar_inertia_kg_m2(a.design));
+  studies::StringBedMapOptions options;
+  options.columns = 4;
+  options.rows = 3;
+  options.fidelity = Fidelity::kRigid;
+  const studies::StringBedMap map_a = studies::string_bed_map(a.design, options);
+  const studies::StringBedMap map_b = studies::string_bed_map(b.design, options);
+  CHECK(map_b.bed.semi_length_m == map_a.bed.semi_length_m);
+  CHECK(map_b.bed.center_from_butt_m == map_a.bed.center_from_butt_m);
+  REQUIRE(map_b.points.size() == map_a.points.size());
+  for (std::size_t i = 0; i < map_a.points.size(); ++i)
+    CHECK(map_b.points[i].peak_wrist_force_N == map_a.points[i].peak_wrist_force_N);
+  // No size anywhere: the strings' default bed, on which the map lays its grid
+  // and the impact must land.
+  io::Json no_size = bed_head;
+  no_size["strings"].erase("head_size_in2");
+  no_size["implement"]["twistweight_kg_cm2"] = 15;
+  const io::DesignFile c = io::read_design(no_size, "none.json");
+  const studies::StringBedMap map_c = studies::string_bed_map(c.design, options);
+  const HeadEllipse bed = string_bed(racquet_head(c.design), c.design.implement.length_m());
+  CHECK(map_c.bed.semi_length_m == bed.semi_length_m);
+  CHECK(racquet_head(c.design).area_m2 ==
+        Approx(M_PI * c.design.strings->head_radius_m * c.design.strings->head_radius_m));
 }
 
 // A page that needs nothing but itself: no script, nothing fetched (the

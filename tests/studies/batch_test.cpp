@@ -541,6 +541,23 @@ std::vector<double> sorted_values(const Outcome& out, const std::string& output)
   return values;
 }
 
+TEST_CASE("A failed JSON Lines row keeps its name, as a failed CSV row does") {
+  const std::string jsonl =
+      "{\"name\": \"good\", \"implement\": {\"mass_g\": 300}}\n"
+      "{\"name\": \"bad mass\", \"implement\": {\"mass_g\": -5}}\n";
+  const Outcome lines = run(jsonl, studies::CatalogueFormat::kJsonLines);
+  const Outcome csv = run("name,implement.mass_g\ngood,300\nbad mass,-5\n");
+  REQUIRE(lines.summary.failed == 1);
+  REQUIRE(csv.summary.failed == 1);
+  const auto failed_name = [](const Outcome& o) {
+    for (const io::Json& row : rows_of(o))
+      if (row.contains("error")) return row.value("name", std::string("(none)"));
+    return std::string("(no failed row)");
+  };
+  CHECK(failed_name(lines) == "bad mass");
+  CHECK(failed_name(csv) == "bad mass");
+}
+
 TEST_CASE("Sorted rows come in the output's order, failed rows last, --top keeps the first N") {
   std::string table = "name,implement.mass_g,impact.from_tip_cm\n";
   for (int i = 0; i < 60; ++i)
@@ -733,7 +750,8 @@ TEST_CASE(
     const io::Json& outputs = rows[i]["outputs"];
     CHECK(outputs["fundamental_free_Hz"].get<double>() ==
           Approx(fundamental_free_Hz_from_RA(rows[i]["inputs"]["frame/RA"]["value"].get<double>(),
-                                             outputs["mass_kg"].get<double>()))
+                                             outputs["mass_kg"].get<double>(),
+                                             outputs["length_m"].get<double>()))
               .epsilon(1e-6));
     if (i > 0) {
       CHECK(outputs["peak_wrist_force_N"].get<double>() >=

@@ -77,7 +77,7 @@ TEST_CASE("The least lead for a balance and a swingweight is the least a grid se
   TuneTargets targets;
   targets.balance_from_butt_m = B * 1e-2;
   targets.swingweight_kg_m2 = SW * 1e-4;
-  const TuneResult r = tune(d, targets, parse_lead_places("12,3/9,throat,handle"));
+  const TuneResult r = tune(d, targets, parse_lead_places("12,3/9,throat,grip"));
   REQUIRE(r.exact);
   CHECK(r.reached.balance_from_butt_m * 1e2 == Approx(B).margin(kReachedBalance_cm));
   CHECK(r.reached.swingweight_kg_m2 * 1e4 == Approx(SW).margin(kReachedInertia_kg_cm2));
@@ -117,7 +117,7 @@ TEST_CASE("Targets lead cannot reach give the nearest specs a grid search finds"
   targets.mass_kg = 0.330;
   targets.balance_from_butt_m = 0.32;
   targets.swingweight_kg_m2 = 0.0325;
-  const TuneResult r = tune(d, targets, parse_lead_places("12,3/9,handle"));
+  const TuneResult r = tune(d, targets, parse_lead_places("12,3/9,grip"));
   REQUIRE_FALSE(r.exact);
   const auto miss = [](const Specs& s) {
     return std::hypot(s.mass_g - 330.0, (s.balance_cm - 32.0) * 10.0, s.sw_kg_cm2 - 325.0);
@@ -154,7 +154,7 @@ TEST_CASE("Targets lead cannot reach give the nearest specs a grid search finds"
 TEST_CASE("The tuned design file, read back, has the target specs") {
   const io::DesignFile d = club();
   const TuneTargets targets = parse_tune_targets("mass_g=330,balance_cm=32,swingweight_kg_cm2=330");
-  const TuneResult r = tune(d, targets, parse_lead_places("12,3/9,handle"));
+  const TuneResult r = tune(d, targets, parse_lead_places("12,3/9,grip"));
   REQUIRE(r.exact);
   CHECK(r.added_kg * 1e3 == Approx(12.0).margin(kReachedMass_g));
   const io::DesignFile back = io::read_design(tuned_document(club_document(), r), "tuned.json");
@@ -173,7 +173,7 @@ TEST_CASE("A twistweight target is reached by lead at 3 and 9 o'clock alone") {
   REQUIRE(before.twistweight_kg_m2);
   TuneTargets targets;
   targets.twistweight_kg_m2 = *before.twistweight_kg_m2 + 1e-4;  // +1 kg cm^2
-  const TuneResult r = tune(d, targets, parse_lead_places("12,3/9,handle"));
+  const TuneResult r = tune(d, targets, parse_lead_places("12,3/9,grip"));
   REQUIRE(r.exact);
   const double c = clock_position(*d.design.head, d.design.implement.length_m(), 3.0).off_axis_m;
   CHECK(r.lead[0].mass_kg == 0.0);
@@ -184,7 +184,7 @@ TEST_CASE("A twistweight target is reached by lead at 3 and 9 o'clock alone") {
 TEST_CASE("Lead only adds: a lighter target, or a balance beyond the places, is said so") {
   const io::DesignFile d = club();
   const TuneResult lighter =
-      tune(d, parse_tune_targets("mass_g=300"), parse_lead_places("12,handle"));
+      tune(d, parse_tune_targets("mass_g=300"), parse_lead_places("12,grip"));
   REQUIRE_FALSE(lighter.exact);
   CHECK(lighter.added_kg == 0.0);  // the nearest: no lead at all
   REQUIRE(lighter.misses.size() == 1);
@@ -192,7 +192,7 @@ TEST_CASE("Lead only adds: a lighter target, or a balance beyond the places, is 
 
   // Lead at the throat and below cannot bring the balance up to 60 cm.
   const TuneResult beyond =
-      tune(d, parse_tune_targets("balance_cm=60"), parse_lead_places("throat,handle"));
+      tune(d, parse_tune_targets("balance_cm=60"), parse_lead_places("throat,grip"));
   REQUIRE_FALSE(beyond.exact);
   REQUIRE(beyond.misses.size() == 1);
   CHECK(beyond.misses[0].reason.find("farthest towards the tip (throat)") != std::string::npos);
@@ -206,7 +206,7 @@ TEST_CASE("Matching a racquet with its own copy carrying 10 g at 12 puts 10 g at
   leaded["name"] = "Club racquet + 10 g at 12";
   leaded["implement"]["point_masses"] = io::Json::parse(R"([{"clock": 12, "mass_g": 10}])");
   const std::vector<io::DesignFile> designs{club(), io::read_design(leaded, "leaded.json")};
-  const MatchResult m = match(designs, parse_lead_places("12,3/9,handle"));
+  const MatchResult m = match(designs, parse_lead_places("12,3/9,grip"));
   REQUIRE(m.tuned.size() == 2);
   CHECK(*m.common.mass_kg * 1e3 == Approx(328.0).margin(kReachedMass_g));
   CHECK(m.tuned[0].exact);
@@ -226,8 +226,11 @@ TEST_CASE("Bad targets and places are refused with the item named") {
   CHECK_THROWS_WITH(parse_lead_places("12,13"), Catch::Contains("item 2 \"13\" is not a place"));
   CHECK_THROWS_WITH(parse_lead_places("12,,3"), Catch::Contains("an empty place (item 2"));
   CHECK_THROWS_WITH(parse_lead_places("3/9,9/3"), Catch::Contains("the same place as \"3/9\""));
-  CHECK_THROWS_WITH(parse_lead_places("grip"), Catch::Contains("item 1 \"grip\" is not a place"));
-  CHECK(parse_lead_places("12, 3/9 ,throat,handle,butt,10.5").size() == 6);
+  CHECK_THROWS_WITH(parse_lead_places("hand"), Catch::Contains("item 1 \"hand\" is not a place"));
+  CHECK(parse_lead_places("12, 3/9 ,throat,grip,butt,10.5").size() == 6);
+  // One word, one place: "handle" is the butt cap, as a design file's clock.
+  CHECK_THROWS_WITH(parse_lead_places("handle,butt"),
+                    Catch::Contains("\"butt\" is the same place as \"handle\""));
 }
 
 }  // namespace

@@ -4,6 +4,8 @@
 #include <array>
 #include <cmath>
 
+#include "core/check.hpp"
+#include "sweetspot/errors.hpp"
 #include "sweetspot/roots.hpp"
 
 namespace sweetspot::beam_detail {
@@ -101,13 +103,41 @@ double normalise_and_find_nodes(Mode& mode) {
   return scale;
 }
 
+namespace {
+
+// A beam mode slower than this (a period of 12 days) is no implement's: its
+// stiffness has been given so small against its mass that the arithmetic
+// no longer holds the mode (E = 1e-300 Pa gives 0 Hz and a shape of NaN).
+constexpr double kMinBeamFrequency_Hz = 1e-6;
+
+[[noreturn]] void refuse_unresolved(double frequency_Hz) {
+  throw FieldError(
+      "sections/0/EI_N_m2",
+      "the bending stiffness is too small for the mass: the beam's modes come out " +
+          (std::isfinite(frequency_Hz) ? "at " + detail::format_significant(frequency_Hz) + " Hz"
+                                       : std::string("at no finite frequency")) +
+          ", below " + detail::format_number(kMinBeamFrequency_Hz) +
+          " Hz, where no implement vibrates and the arithmetic does not hold the "
+          "mode; give a stiffness of a real frame");
+}
+
+}  // namespace
+
 void fill_shape_table(ModalResult& result, double length_m, int samples) {
+  const auto beam = [](const Mode& m) { return m.hand_energy_fraction < kHandModeEnergyShare; };
+  for (const Mode& m : result.modes) {
+    if (beam(m) && !(m.frequency_Hz >= kMinBeamFrequency_Hz && std::isfinite(m.frequency_Hz)))
+      refuse_unresolved(m.frequency_Hz);
+  }
   if (samples <= 0) return;
   result.shape_x_m.resize(samples);
   for (int i = 0; i < samples; ++i) result.shape_x_m[i] = length_m * i / (samples - 1);
   for (const Mode& m : result.modes) {
     std::vector<double> w(samples);
-    for (int i = 0; i < samples; ++i) w[i] = mode_shape_at(m, result.shape_x_m[i]);
+    for (int i = 0; i < samples; ++i) {
+      w[i] = mode_shape_at(m, result.shape_x_m[i]);
+      if (beam(m) && !std::isfinite(w[i])) refuse_unresolved(m.frequency_Hz);
+    }
     result.shape_w.push_back(std::move(w));
   }
 }

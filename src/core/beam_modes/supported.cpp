@@ -51,7 +51,17 @@ ModalResult supported_modes(const std::vector<Section>& sections,
          to);
   }
   const Segmentation seg = segment(sections, point_masses, {from, to}, timoshenko_of(options));
-  const Mesh mesh = build_mesh(seg, element_counts(seg, options), options, {from, to});
+  // A support's ends are nodes of the mesh: a segment that ends on one is
+  // its own element at least, never grouped with the next across the support
+  // (a bat's profile groups its short stations).
+  std::vector<int> counts = element_counts(seg, options);
+  for (std::size_t i = 0; i < seg.segments.size(); ++i) {
+    const double end = seg.segments[i].start_m + seg.segments[i].length_m;
+    for (const double x : {from, to}) {
+      if (std::abs(end - x) <= kOnSupport * length) counts[i] = std::max(counts[i], 1);
+    }
+  }
+  const Mesh mesh = build_mesh(seg, counts, options, {from, to});
   const Assembled a = assemble(mesh, nullptr);
   const int n = static_cast<int>(a.K.rows());
   // The DOFs the support leaves free: (w_i, theta_i) at node i.

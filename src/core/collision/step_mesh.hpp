@@ -78,17 +78,23 @@ class StepMesh {
     h_min_ = h_base_ * kRefine;
     // At most 64 steps per base step until max_time_s, and never more than
     // kMaxSteps, counted in double (a contact resolved by a tiny step would
-    // overflow a long). A contact that alone needs more than kMaxSteps is not
-    // stepped at all: the ball is left in contact, which the invariants refuse
-    // (invariants.hpp) at once rather than after minutes of stepping.
-    constexpr double kMaxSteps = 1e8;
-    max_steps_ = t_est_ / h_base_ > kMaxSteps
+    // overflow a long). A contact that alone needs more than kMaxContactSteps
+    // is not stepped at all: the ball is left in contact, which the invariants
+    // refuse (invariants.hpp) at once rather than after minutes of stepping.
+    // The calibrated balls take some 10^2 steps a contact; a stiff ball or a
+    // bed of micrograms up to some 10^7, a linear ball of 1e15 N/m on the
+    // strings 3 10^6 (about 2 s); kMaxSteps bounds the run to some 20 s.
+    constexpr double kMaxSteps = 4e7;
+    constexpr double kMaxContactSteps = 2e7;
+    max_steps_ = t_est_ / h_base_ > kMaxContactSteps
                      ? 0L
                      : static_cast<long>(
                            std::min(kMaxSteps, 64.0 * std::ceil(options.max_time_s / h_base_)));
   }
 
   double base_step() const { return h_base_; }
+  // The steps the contact's estimated duration takes at the base step.
+  double contact_steps() const { return t_est_ / h_base_; }
   double force_floor() const { return force_floor_; }
   long max_steps() const { return max_steps_; }
 
