@@ -47,8 +47,8 @@ std::vector<PointMass> place_point_masses(const std::vector<PointMassDescription
           i, "mass",
           "must be in [0, " + metres(kMaxMass_kg) + "] kg, got " + metres(entry.mass_kg) + " kg");
     }
-    if (entry.handle) {
-      points.push_back(PointMass{std::min(kHandleWeightFromButt_m, L), entry.mass_kg, 0.0});
+    if (entry.handle_from_butt_m) {
+      points.push_back(PointMass{std::min(*entry.handle_from_butt_m, L), entry.mass_kg, 0.0});
       continue;
     }
     if (!entry.clock_hours.empty()) {

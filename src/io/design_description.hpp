@@ -44,7 +44,10 @@ struct PointMassDescription {
   std::optional<double> from_tip_m;   // on (or off) the axis, from the tip
   double off_axis_m = 0.0;            // with from_butt_m or from_tip_m
   std::vector<double> clock_hours;    // a piece at each hour on the hoop
-  bool handle = false;                // under the butt cap
+  // A place on the handle by its word: under the butt cap ("handle", "butt":
+  // kHandleWeightFromButt_m) or under the grip ("grip": kUnderGripFromButt_m),
+  // from the butt, at the butt end of an implement shorter than it.
+  std::optional<double> handle_from_butt_m;
 };
 
 // Why place_point_masses() refused an entry: its index in the file's list,

@@ -303,14 +303,11 @@ std::vector<PointMassSpec> read_point_masses(ObjectReader& implement, const std:
         }
         // Under the butt cap ("handle" or "butt") or under the grip ("grip"), as
         // `tune` names them.
-        if (item.is_string() && value.is_string() &&
-            (item.get<std::string>() == "handle" || item.get<std::string>() == "butt")) {
-          d.handle = true;
-          return;
-        }
-        if (item.is_string() && value.is_string() && item.get<std::string>() == "grip") {
-          d.from_butt_m = kUnderGripFromButt_m;
-          return;
+        if (item.is_string() && value.is_string()) {
+          const std::string word = item.get<std::string>();
+          if (word == "handle" || word == "butt") d.handle_from_butt_m = kHandleWeightFromButt_m;
+          if (word == "grip") d.handle_from_butt_m = kUnderGripFromButt_m;
+          if (d.handle_from_butt_m) return;
         }
         r.fail("clock",
                "expected an hour in [0, 12], a list of hours ([3, 9]), \"throat\", \"grip\" "

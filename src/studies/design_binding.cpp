@@ -138,7 +138,7 @@ const std::vector<FieldSetter>& field_setters() {
       {"implement/point_masses/N", "off_axis", "",
        [](const D& d, std::size_t k) {
          const io::PointMassDescription* e = entry(d, k);
-         return e && !e->handle && e->clock_hours.empty();
+         return e && !e->handle_from_butt_m && e->clock_hours.empty();
        },
        [](D& x, std::size_t k, double v) { x.implement.point_masses[k].off_axis_m = v; }, true},
       {"implement/point_masses/N", "clock", "",

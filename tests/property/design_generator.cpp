@@ -261,7 +261,8 @@ void draw_point_masses(Drawer& draw, Json& implement, double L, bool head) {
           L * draw.within(0.0, 1.0, 0.0, 1.0));
       if (draw.chance(0.3)) put(rng, p, "off_axis", kLength, L * draw.within(-1.0, 1.0, -0.1, 0.1));
     } else if (where == 2) {
-      p["clock"] = "handle";
+      static const char* const kHandleWords[] = {"handle", "butt", "grip"};
+      p["clock"] = kHandleWords[rng.integer(0, 2)];
     } else if (where == 3) {
       p["clock"] = rng.chance(0.5) ? static_cast<double>(rng.integer(0, 12))
                                    : draw.within(0.0, 12.0, 0.0, 12.0);
@@ -581,9 +582,11 @@ std::optional<Truth> read_truth(const Json& document) {
             {from_butt ? *from_butt : L - *from_tip, *m, si(p, "off_axis", kLength).value_or(0.0)});
         continue;
       }
-      if (clock->is_string() && clock->get<std::string>() == "handle") {
-        // Under the butt cap (head_geometry.hpp).
-        t.point_masses.push_back({std::min(kHandleWeightFromButt_m, L), *m, 0.0});
+      if (clock->is_string() && clock->get<std::string>() != "throat") {
+        // Under the butt cap ("handle", "butt") or the grip ("grip"): head_geometry.hpp.
+        const double x =
+            clock->get<std::string>() == "grip" ? kUnderGripFromButt_m : kHandleWeightFromButt_m;
+        t.point_masses.push_back({std::min(x, L), *m, 0.0});
         continue;
       }
       std::vector<double> hours;
