@@ -139,7 +139,7 @@ CollisionResult DesignCollision::at_speed(double from_butt_m, double off_axis_m,
     refuse(collision_suspect(as_hit(), f1),
            "the contact is too stiff to step through: its fastest motion rings in a step of " +
                detail::format_significant(r.step_s) +
-               " s, more than a million steps for the contact; a ball or strings this stiff "
+               " s, more than the 2e7 steps a contact may take; a ball or strings this stiff "
                "take the solved collision past what it resolves in bounded time");
   }
   if (!r.separated) {

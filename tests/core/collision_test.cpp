@@ -403,6 +403,25 @@ TEST_CASE("The long implements catch the ball again and the ledger still closes"
   CHECK(std::abs(ledger_residual(r)) <= kRoundOff * r.ball_in_J);
 }
 
+TEST_CASE("A contact too stiff to step through is not stepped: bounded time and memory") {
+  // The linear ball on a bed of 1e-12 kg at 1000 steps a contact: the bed's
+  // half-period binds the step, about 4e7 steps for the contact, more than
+  // the 2e7 a contact may take (step_mesh.hpp). Nothing is stepped and the
+  // ball is left in contact, which the evaluation refuses; one at 1e-11 kg
+  // and 500 steps a contact (7e6 steps) is answered in the test above.
+  const BallContactLaw linear{40e3, 1.0, 0.0, 0.0};
+  const StringBedDynamics strings{60e3, 1e-12, 0.0};
+  FrameAtImpact body;
+  body.inverse_effective_mass_per_kg = 1.0 / 0.2;
+  CollisionOptions o;
+  o.steps_per_contact = 1000;
+  o.record_history = true;
+  const CollisionResult r = collide(body, strings, kBall_kg, linear, 40.0, o);
+  CHECK(r.steps == 0);
+  CHECK(!r.separated);
+  CHECK(r.time_s.empty());
+}
+
 TEST_CASE("The impulse is the ball's loss of momentum and the implement's gain") {
   const ResponseModel racquet = tour_100_model();
   const double L = tour_100().implement.length_m();
