@@ -5,7 +5,8 @@
 Rigid designs in the paper's parametrisation (Table I's row 1 with the length,
 mass, head/handle mass ratio and impact point varied), evaluated on one thread
 by `sweetspot evaluate --batch` from a CSV file and by sweetspot.evaluate_many
-from NumPy arrays; then a million of them asking for the paper's outputs, by
+from NumPy arrays, and twice them by two Python threads against one call on two
+threads (the GIL released); then a million of them asking for the paper's outputs, by
 evaluate_many's column-wise path and by NumPy's own vectorised implementation
 of the same model (numpy_model.py), side by side; then `import sweetspot` in a
 fresh interpreter and one evaluate(dict). Prints rows per second and the ratios; with
@@ -21,6 +22,7 @@ import platform
 import subprocess
 import sys
 import tempfile
+import threading
 import time
 
 import numpy as np
@@ -109,6 +111,31 @@ def main():
     threads = os.cpu_count() or 1
     wide = best_of(3, lambda: sweetspot.evaluate_many(BASE, columns, threads=threads))
     print(f"  sweetspot.evaluate_many, {threads} threads          {wide:7.3f} s  {rows / wide:10.0f} rows/s")
+    # The GIL released: two Python threads, each one call on one thread, against
+    # one call on two threads over both copies of the rows; into out= arrays made
+    # beforehand, so that both time the rows and not the making of their outputs.
+    # Held, the first would take twice the second. The swingweight takes every row
+    # through the design, not the column-wise kernel.
+    doubled = {k: np.concatenate([v, v]) for k, v in columns.items()}
+    wanted = ["swingweight_kg_cm2", "apparent_cor", "peak_wrist_force_N"]
+    outs = [{name: np.empty(rows) for name in wanted} for _ in range(2)]
+    out_doubled = {name: np.empty(2 * rows) for name in wanted}
+
+    def two_python_threads():
+        pair = [threading.Thread(target=sweetspot.evaluate_many, args=(BASE, columns),
+                                 kwargs={"threads": 1, "outputs": wanted, "out": out})
+                for out in outs]
+        for t in pair:
+            t.start()
+        for t in pair:
+            t.join()
+
+    python_threads = best_of(5, two_python_threads)
+    one_call = best_of(5, lambda: sweetspot.evaluate_many(BASE, doubled, threads=2,
+                                                          outputs=wanted, out=out_doubled))
+    print(f"  twice the rows, 3 outputs, one call on 2 threads {one_call:7.3f} s")
+    print(f"  the same by two Python threads, a call each     {python_threads:7.3f} s"
+          f"  ({python_threads / one_call:.2f}x)")
 
     million = 1_000_000
     rng = np.random.default_rng(2004)
@@ -180,6 +207,10 @@ print(best(lambda: [sweetspot.evaluate(design) and None for _ in range({calls})]
              f"{cli / many:.1f}x the command line", "no per-row Python work: met"),
             (f"`evaluate_many`, the same, {threads} threads", f"{wide:.3f} s",
              f"{many / wide:.1f}x one thread", ""),
+            ("twice those rows (3 outputs, the swingweight's among them), by two Python threads "
+             "each making one call on one thread", f"{python_threads:.3f} s",
+             f"{python_threads / one_call:.2f}x one call on 2 threads ({one_call:.3f} s)",
+             "the GIL released: about 1x, where held would be 2x"),
             ("NumPy's vectorised model (python/numpy_model.py), a million rows, one core",
              f"{1e3 * numpy:.1f} ms", "", ""),
             ("`evaluate_many(outputs=...)`, the same million rows, one core",

@@ -1,12 +1,10 @@
-"""evaluate_many releases the GIL: Python runs beside it, and two threads each
-evaluating on one core take about the time of one on two cores."""
+"""evaluate_many releases the GIL: Python runs beside it, and a second call
+runs while the first is inside."""
 
-import os
 import threading
 import time
 
 import numpy as np
-import pytest
 import sweetspot
 from conftest import ROOT
 
@@ -39,36 +37,32 @@ def test_python_runs_while_rows_are_evaluated():
     assert ticks_during > 100
 
 
-@pytest.mark.skipif((os.cpu_count() or 1) < 2, reason="needs two cores")
-def test_two_python_threads_run_as_two_threads_of_one_call():
-    # The same rows evaluated twice: by two Python threads each calling with
-    # threads=1, and by one call sharing both copies among threads=2. With the
-    # GIL released both keep two cores busy and take about the same time;
-    # held, the first would take twice as long whatever the machine's load.
-    # Into out= arrays made beforehand, so that both sides time the rows and
-    # not the making of their outputs (which runs under the GIL, and whose
-    # page faults depend on the arrays' size). The swingweight takes every row
-    # through the design, not the column-wise kernel.
+def test_a_second_call_runs_while_the_first_is_inside():
+    # Two calls inside the module at once: while one Python thread is in a long
+    # evaluate_many, this thread completes short calls of its own. Held by the
+    # first call (the GIL, or a lock of the module's around its caches), the
+    # second could not begin until the first returned: at most the calls begun
+    # before the first went in would finish. How fast either runs is the
+    # benchmark's (python/benchmark.py), not a test's.
     data = columns()
-    doubled = {k: np.concatenate([v, v]) for k, v in data.items()}
+    few = {k: v[:8] for k, v in data.items()}
     wanted = ["swingweight_kg_cm2", "apparent_cor", "peak_wrist_force_N"]
-    outs = [{name: np.empty(ROWS) for name in wanted} for _ in range(2)]
-    out_doubled = {name: np.empty(2 * ROWS) for name in wanted}
+    inside = threading.Event()
+    done = threading.Event()
 
-    def one(out):
-        sweetspot.evaluate_many(BASE, data, threads=1, outputs=wanted, out=out)
+    def work():
+        inside.set()
+        sweetspot.evaluate_many(BASE, data, threads=1, outputs=wanted)
+        done.set()
 
-    best_python = best_inside = float("inf")
-    for _ in range(3):
-        threads = [threading.Thread(target=one, args=(out,)) for out in outs]
-        start = time.perf_counter()
-        for t in threads:
-            t.start()
-        for t in threads:
-            t.join()
-        best_python = min(best_python, time.perf_counter() - start)
-        start = time.perf_counter()
-        sweetspot.evaluate_many(BASE, doubled, threads=2, outputs=wanted, out=out_doubled)
-        best_inside = min(best_inside, time.perf_counter() - start)
-    print(f"two Python threads {best_python:.3f} s, one call on two threads {best_inside:.3f} s")
-    assert best_python < 1.4 * best_inside
+    worker = threading.Thread(target=work)
+    worker.start()
+    inside.wait()
+    finished_during = 0
+    while not done.is_set():
+        result = sweetspot.evaluate_many(BASE, few, threads=1, outputs=wanted)
+        assert result["ok"].all()
+        if not done.is_set():
+            finished_during += 1
+    worker.join()
+    assert finished_during > 20
