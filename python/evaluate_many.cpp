@@ -136,6 +136,9 @@ class Rows {
       }
       try {
         overrides_[j].apply(document, value);
+      } catch (const io::PathError& e) {
+        note_bad_column(j, e.detail());
+        throw io::InputError(row_name(row), e.pointer(), e.detail());
       } catch (const io::Json::exception&) {
         note_bad_column(j, "the base design holds a value on its path that is not an object");
         throw io::InputError(row_name(row), pointers_[j],

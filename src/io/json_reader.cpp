@@ -493,7 +493,63 @@ FieldOverride::FieldOverride(const std::string& pointer)
   }
 }
 
+namespace {
+
+// Refuses a path that would index a list past its next entry: nlohmann::json
+// would fill the gap with nulls, and the reader then blame the first of them.
+// A list made by the path (absent from the document) is empty: only its entry
+// 0 can be set.
+void check_list_indices(const Json& document, Json::json_pointer at) {
+  std::vector<std::string> tokens;
+  for (; !at.empty(); at.pop_back()) tokens.push_back(at.back());
+  const auto index_of = [](const std::string& token) -> std::optional<std::size_t> {
+    std::size_t index = 0;
+    const char* first = token.data();
+    const char* last = first + token.size();
+    const auto [end, error] = std::from_chars(first, last, index);
+    if (token.empty() || error != std::errc() || end != last) return std::nullopt;
+    return index;
+  };
+  const Json* here = &document;
+  Json::json_pointer walked;
+  for (auto token = tokens.rbegin(); token != tokens.rend(); ++token) {
+    walked /= *token;
+    if (!here) {  // made by the path: a number is an entry of a list made empty
+      const auto index = index_of(*token);
+      if (index && *index > 0)
+        throw PathError(walked.to_string(), "the list is empty: add its first entry, 0");
+      continue;
+    }
+    if (here->is_array()) {
+      const auto index = index_of(*token);
+      if (!index) return;  // not an index: nlohmann's to say
+      const std::size_t size = here->size();
+      if (*index > size) {
+        const std::string n = std::to_string(size);
+        throw PathError(walked.to_string(),
+                        size == 0 ? "the list is empty: add its first entry, 0"
+                                  : "the list has " + n + (size == 1 ? " entry" : " entries") +
+                                        " (0 to " + std::to_string(size - 1) +
+                                        "): set one of them, or add the next, " + n);
+      }
+      here = *index == size ? nullptr : &(*here)[*index];  // the next: a new entry
+    } else if (here->is_object()) {
+      const auto found = here->find(*token);
+      here = found == here->end() ? nullptr : &*found;
+    } else if (here->is_null()) {
+      here = nullptr;
+      if (const auto index = index_of(*token); index && *index > 0)
+        throw PathError(walked.to_string(), "the list is empty: add its first entry, 0");
+    } else {
+      return;  // through a number or a text: nlohmann's to say
+    }
+  }
+}
+
+}  // namespace
+
 void FieldOverride::apply(Json& document, Json value) const {
+  check_list_indices(document, at_);
   Json& parent = document[parent_];
   if (parent.is_object()) {
     for (const std::string& other : alternatives_) parent.erase(other);

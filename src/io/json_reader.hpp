@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <set>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -115,8 +116,27 @@ std::vector<std::string> alternative_spellings(std::string_view key);
 // A JSON pointer's reference token: '~' and '/' escaped (RFC 6901).
 std::string escape_pointer_token(std::string_view token);
 
+// A path an override cannot take: an entry past the end of a list (the next
+// one adds an entry; a later one would leave a gap of nulls). `pointer` is the
+// entry's, `detail` says what the list holds.
+class PathError : public std::invalid_argument {
+ public:
+  PathError(std::string pointer, std::string detail)
+      : std::invalid_argument(pointer + ": " + detail),
+        pointer_(std::move(pointer)),
+        detail_(std::move(detail)) {}
+  const std::string& pointer() const { return pointer_; }
+  const std::string& detail() const { return detail_; }
+
+ private:
+  std::string pointer_;
+  std::string detail_;
+};
+
 // Sets document[pointer] = value, first removing the alternative spellings of
 // the same quantity beside it, so that an override never contradicts a default.
+// Throws PathError for an entry past the end of a list, Json::exception for a
+// path through a value that is not an object.
 void override_field(Json& document, const std::string& pointer, Json value);
 
 // override_field() prepared once for a pointer set in many documents (a CSV

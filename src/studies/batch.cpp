@@ -274,6 +274,10 @@ class Evaluator {
           }
           try {
             columns_[j].apply(document, value);
+          } catch (const io::PathError& e) {
+            row.bad_column = j + 1;
+            row.bad_column_detail = e.detail();
+            throw io::InputError(where, e.pointer(), cell_problem(j, e.detail()));
           } catch (const io::Json::exception&) {
             row.bad_column = j + 1;
             row.bad_column_detail =

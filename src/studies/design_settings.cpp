@@ -69,6 +69,9 @@ void apply_settings(io::Json& document, const std::vector<Setting>& settings) {
   for (const Setting& setting : settings) {
     try {
       io::override_field(document, setting.pointer, setting.value);
+    } catch (const io::PathError& e) {
+      throw io::InputError(std::string(kSource), e.pointer(),
+                           fmt::format("{}: {}", shown(setting.text), e.detail()));
     } catch (const io::Json::exception&) {
       throw io::InputError(std::string(kSource), setting.pointer,
                            fmt::format("{}: the design holds a value on its path that is not an "

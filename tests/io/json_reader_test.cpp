@@ -81,6 +81,34 @@ TEST_CASE(
         Json::parse(R"({"angular_speed_rpm": 100, "pivot_beyond_butt_cm": 60})"));
 }
 
+TEST_CASE("An override sets an entry of a list or adds the next one, and no further") {
+  // nlohmann::json fills a gap with nulls, which the reader would then blame.
+  Json design = Json::parse(R"({"implement": {"point_masses": [{"mass_g": 4, "clock": 12}]}})");
+  override_field(design, "/implement/point_masses/0/mass_g", 5);
+  override_field(design, "/implement/point_masses/1/mass_g", 3);
+  CHECK(design["implement"]["point_masses"] ==
+        Json::parse(R"([{"mass_g": 5, "clock": 12}, {"mass_g": 3}])"));
+  const Json before = design;
+  try {
+    override_field(design, "/implement/point_masses/3/mass_g", 3);
+    FAIL("an entry two past the end was set");
+  } catch (const PathError& e) {
+    CHECK(e.pointer() == "/implement/point_masses/3");
+    CHECK(e.detail() == "the list has 2 entries (0 to 1): set one of them, or add the next, 2");
+  }
+  CHECK(design == before);  // nothing half-set
+  // A list the design does not have is empty: its entry 0 makes it, entry 1 is refused,
+  // whether its object is there or not.
+  for (const char* base : {R"({"implement": {"mass_kg": 0.3}})", R"({})"}) {
+    Json bare = Json::parse(base);
+    CHECK_THROWS_MATCHES(override_field(bare, "/implement/sections/1/length_m", 0.2), PathError,
+                         Catch::Matchers::Message(
+                             "/implement/sections/1: the list is empty: add its first entry, 0"));
+    override_field(bare, "/implement/sections/0/length_m", 0.2);
+    CHECK(bare["implement"]["sections"] == Json::parse(R"([{"length_m": 0.2}])"));
+  }
+}
+
 TEST_CASE("The key map records the pointer and the value the file wrote") {
   const Json object = Json::parse(R"({"mass_g": 5e-324})");
   KeyMap keys;

@@ -113,6 +113,10 @@ def test_columns_are_checked_as_a_catalogues_header(tmp_path):
         sweetspot.evaluate_many(ROW1, {"name": np.ones(1)})
     with pytest.raises(sweetspot.InputError, match="one dimension"):
         sweetspot.evaluate_many(ROW1, {"hand.mass_kg": np.ones((2, 2))})
+    # An entry past the end of a list is the column's fault, as in a catalogue.
+    with pytest.raises(sweetspot.InputError,
+                       match=r'column 1 "implement.point_masses.4.mass_g": the list is empty'):
+        sweetspot.evaluate_many(ROW1, {"implement.point_masses.4.mass_g": np.full(3, 5.0)})
     # A base that is not a design on its own, as --base.
     with pytest.raises(sweetspot.InputError, match=r"^<dict>: /implement: missing"):
         sweetspot.evaluate_many({"hand": {"mass_kg": 0.5}}, {"hand.mass_kg": [0.5]})
