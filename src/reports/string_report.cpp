@@ -17,6 +17,14 @@ constexpr double kLbInPerNM = io::kInch_m / kPoundForce_N;
 
 std::string num(double value, int digits = 3) { return io::significant(value, digits); }
 
+// An answer below 0.6 or above 1.5 times the tension the design is strung at
+// is said to be far from it: a stringer moves a frame by a few pounds, and the
+// 40 to 70 lb that modern tennis racquets are strung at (Solihull Racket
+// Services, "Tension gauge", solihullracketservices.co.uk/tension-gauge)
+// spans these factors.
+constexpr double kFarBelowStrung = 0.6;
+constexpr double kFarAboveStrung = 1.5;
+
 io::Json bed_json(const studies::BedReading& b) {
   return io::Json{{"pull_tension_lb", b.pull_tension_N / kPoundForce_N},
                   {"pull_tension_kg", b.pull_tension_N / kKilogramForce_N},
@@ -75,6 +83,20 @@ std::string markdown(const StringAnswer& a) {
           num(t.exact_pull_N / kPoundForce_N, 4),
           t.keep == studies::BedQuantity::kDwell ? fmt::format("{} ms", num(q_per_lb * 1e3, 2))
                                                  : in_words(t.keep, q_per_lb));
+      // An answer far from the frame's own tension is said to be so: a target
+      // typed from another instrument's scale (an RDC index as lb/in) lands here.
+      const double ratio = t.rounded_pull_lb / (b.pull_tension_N / kPoundForce_N);
+      if (ratio < kFarBelowStrung || ratio > kFarAboveStrung) {
+        md += fmt::format(
+            "That is {} times the tension this design is strung at ({} lb), for a bed {} than "
+            "its own{}.\n\n",
+            num(ratio, 2), num(b.pull_tension_N / kPoundForce_N, 3),
+            ratio < 1.0 ? "far softer" : "far stiffer",
+            t.keep == studies::BedQuantity::kStiffness && a.target_from == "the target"
+                ? ". If the target is an RDC or an ERT reading, it is an index of that "
+                  "instrument's own, not lb/in or kN/m"
+                : "");
+      }
     } else {
       md += fmt::format(
           "**No tension this frame takes gives the {} of {}, {}**: the nearest, {}, gives {}. "
@@ -133,6 +155,7 @@ io::Json json(const StringAnswer& a) {
     j["target_unit"] = std::string(unit_of(t.keep));
     j["target_from"] = a.target_from;
     j["reachable"] = t.reachable;
+    j["tension_to_as_strung"] = t.rounded_pull_lb / (a.bed.pull_tension_N / kPoundForce_N);
     j["tension_lb"] = t.rounded_pull_lb;
     j["tension_kg"] = std::round(kg * 10.0) / 10.0;
     j["crosses_tension_lb"] = t.rounded_cross_pull_lb;

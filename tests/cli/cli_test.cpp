@@ -1645,3 +1645,42 @@ TEST_CASE(
 }
 
 }  // namespace
+
+namespace {
+
+TEST_CASE(
+    "string says when its answer is far from the design's own tension, and that a typed "
+    "stiffness may be another instrument's index") {
+  const Sandbox box;
+  const fs::path ticket = box.file("ticket.json", kTicket);
+  const auto answer = [&](const std::string& target) {
+    const Run md = box.run("string \"" + ticket.string() + "\" --target " + target);
+    const Run json =
+        box.run("string \"" + ticket.string() + "\" --target " + target + " --format json");
+    REQUIRE(md.status == 0);
+    REQUIRE(json.status == 0);
+    return std::pair{md.out, nlohmann::json::parse(json.out)};
+  };
+  // An RDC-like number typed as lb/in: a seventh of the bed's stiffness.
+  const auto [soft, soft_json] = answer("stiffness_lb_in=50");
+  const double ratio = soft_json["tension_to_as_strung"].get<double>();
+  CHECK(ratio == Approx(soft_json["tension_lb"].get<double>() /
+                        soft_json["bed"]["pull_tension_lb"].get<double>()));
+  CHECK(ratio < 0.6);
+  CHECK(soft.find("times the tension this design is strung at") != std::string::npos);
+  CHECK(soft.find("far softer") != std::string::npos);
+  CHECK(soft.find("RDC or an ERT reading") != std::string::npos);
+  // The bed's own stiffness: its own tension, no word.
+  const double own = soft_json["bed"]["string_bed_stiffness_lb_in"].get<double>();
+  const auto [same, same_json] = answer("stiffness_lb_in=" + full_precision(own));
+  CHECK(same_json["tension_to_as_strung"].get<double>() == Approx(1.0).margin(0.02));
+  CHECK(same.find("times the tension this design is strung at") == std::string::npos);
+  // A ring far above: said, and not as another instrument's stiffness.
+  const auto [high, high_json] = answer(
+      "ring_Hz=" + full_precision(2.0 * soft_json["bed"]["string_bed_ring_Hz"].get<double>()));
+  CHECK(high_json["tension_to_as_strung"].get<double>() > 1.5);
+  CHECK(high.find("far stiffer") != std::string::npos);
+  CHECK(high.find("RDC or an ERT reading") == std::string::npos);
+}
+
+}  // namespace
