@@ -609,12 +609,17 @@ std::string racquet_html(const io::DesignFile& file, const Evaluation& e,
   }
   const double head_area = drawn_head_area_m2(file);
   const bool head_given = file.design.head.has_value();
+  // In the unit the file gave it (headsize_cm2, head_size_cm2), else in sq in.
+  const auto head_key = file.keys.find("implement/headsize");
+  const bool in_cm2 =
+      head_given && head_key != file.keys.end() && head_key->second.pointer.ends_with("cm2");
   std::string html = "<section id=\"racquet\"><h2>The racquet, to scale</h2>\n";
   html += "<figure class=\"drawing-figure\">" + racquet_top_svg(file, e, head_area) +
           fmt::format(
-              "<figcaption>From above. The head is drawn as an ellipse of {:.0f} sq in{}; "
+              "<figcaption>From above. The head is drawn as an ellipse of {}{}; "
               "the outline is a sketch, the positions are computed.</figcaption></figure>\n",
-              head_area / io::kSquareInch_m2,
+              in_cm2 ? fmt::format("{:.0f} cm²", head_area * 1e4)
+                     : fmt::format("{:.0f} sq in", head_area / io::kSquareInch_m2),
               head_given ? " (as given)" : " (not given: a mid-size head assumed)");
   html += "<figure class=\"drawing-figure\">" + racquet_side_svg(file, e) +
           "<figcaption>From the side, the ball arriving on the strings.</figcaption></figure>\n";

@@ -135,6 +135,22 @@ TEST_CASE("The head drawn, mapped and twisted is the size the file gives, in eit
         Approx(M_PI * c.design.strings->head_radius_m * c.design.strings->head_radius_m));
 }
 
+TEST_CASE("The drawing's caption gives the head's size in the unit the file gave it") {
+  io::Json document = io::read_json_file(SWEETSPOT_SOURCE_DIR "/designs/racquets/tour-100.json");
+  document["implement"]["headsize_sq_in"] = 98;
+  const auto caption = [](const io::Json& json) {
+    const io::DesignFile file = io::read_design(json, "d.json");
+    const std::string page = reports::design_html_report(file, json, studies::design_page(file));
+    const auto at = page.find("The head is drawn as an ellipse of ");
+    REQUIRE(at != std::string::npos);
+    return page.substr(at, page.find(';', at) - at);
+  };
+  CHECK(caption(document) == "The head is drawn as an ellipse of 98 sq in (as given)");
+  document["implement"].erase("headsize_sq_in");
+  document["implement"]["headsize_cm2"] = 632;
+  CHECK(caption(document) == "The head is drawn as an ellipse of 632 cm² (as given)");
+}
+
 // A page that needs nothing but itself: no script, nothing fetched (the
 // only URLs are SVG's namespaces), one inline stylesheet, a phone's viewport.
 void check_self_contained(const std::string& page) {
