@@ -313,6 +313,7 @@ std::string map_numbers_html(const studies::StringBedMap& map, double L) {
 // mid-size head is assumed, and said.
 std::string maps_html(const io::DesignFile& file, const studies::PageMaps& maps,
                       std::span<const io::RenderedSvg> svgs) {
+  if (!maps.racquet) return "";
   const double L = file.design.implement.length_m();
   std::string html = "<section id=\"maps\"><h2>Over the string bed</h2>\n<!-- sweetspot:maps -->\n";
   if (!maps.map) {
@@ -565,7 +566,8 @@ std::string positions_table_html(const io::DesignFile& file, const Evaluation& e
         "a hit here gives the wrist no jolt (Cross 2004, Eq. 13)");
   if (e.cop_free_from_butt_m)
     row("cop-free", "free COP", *e.cop_free_from_butt_m,
-        "the COP about the handle end of a free racquet (Eq. 5)");
+        fmt::format("the COP about the handle end of the {} when free (Eq. 5)",
+                    studies::is_racquet(file) ? "racquet" : "implement"));
   if (e.modal && e.modal->node_hand_from_butt_m)
     row("node", "node, held", *e.modal->node_hand_from_butt_m,
         "a hit here excites the least vibration");
@@ -663,7 +665,8 @@ FramePlots frame_plots(const io::DesignFile& file, const Evaluation& e,
   const std::pair range{span.from_tip_m * 100.0, span.to_tip_m * 100.0};
   FramePlots plots{io::Plot{fmt::format("What the wrist feels, {}", along),
                             "impact point from the tip (cm)",
-                            "wrist force over the force on the strings",
+                            span.string_bed ? "wrist force over the force on the strings"
+                                            : "wrist force over the force of the impact",
                             range,
                             std::nullopt,
                             {wrist},
@@ -703,9 +706,9 @@ std::string frame_html(const Evaluation& e, const std::vector<studies::FramePoin
                              html_cm(cop_from_tip), span.string_bed ? "strings" : "frame");
   }
   html += html_figure(svgs[0], svgs[1], "plot-wrist",
-                      "The share of the force on the strings that reaches the wrist (Cross 2004, "
-                      "Eq. 11), rigid model: " +
-                          zero + ".");
+                      fmt::format("The share of the force {} that reaches the wrist (Cross 2004, "
+                                  "Eq. 11), rigid model: {}.",
+                                  span.string_bed ? "on the strings" : "of the impact", zero));
   const auto most = std::max_element(
       curve.begin(), curve.end(), [](const studies::FramePoint& a, const studies::FramePoint& b) {
         return a.apparent_cor < b.apparent_cor;
@@ -811,8 +814,9 @@ std::string design_html_report(const io::DesignFile& file, const io::Json& docum
   return html + html_page_close(fmt::format(
                     "Computed by sweetspot ({} model) from <code>{}</code>, after R. Cross, "
                     "\"Center of percussion of hand-held implements\", Am. J. Phys. 72 (2004). "
-                    "Positions are measured from the tip of the racquet.",
-                    to_string(fidelity_of(e)), html_escape(file.source)));
+                    "Positions are measured from the tip of the {}.",
+                    to_string(fidelity_of(e)), html_escape(file.source),
+                    studies::is_racquet(file) ? "racquet" : "implement"));
 }
 
 }  // namespace sweetspot::reports

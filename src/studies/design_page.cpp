@@ -2,11 +2,17 @@
 
 #include <stdexcept>
 
+#include "studies/sweet_spots.hpp"
+
 namespace sweetspot::studies {
 
 PageMaps page_maps(const io::DesignFile& file, Fidelity fidelity) {
-  Design d = file.design;
   PageMaps maps;
+  // A bat or a beam has no string bed to map: a drawn racquet's head would be
+  // an answer about an implement the file does not describe.
+  maps.racquet = is_racquet(file);
+  if (!maps.racquet) return maps;
+  Design d = file.design;
   maps.head_assumed = !d.head && !d.twistweight_kg_m2;
   if (maps.head_assumed) {
     d.head = racquet_head(d);  // the string bed's size, else 100 sq in

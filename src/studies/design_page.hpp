@@ -24,6 +24,7 @@ inline constexpr double kPageRelTol = 1e-6;
 // racquet_head(): the string bed's size, else 100 sq in, when neither a head
 // nor a twistweight is given), or why not.
 struct PageMaps {
+  bool racquet = true;  // false: no head nor strings (a bat, a beam), so no maps
   bool head_assumed = false;
   std::optional<StringBedMap> map;
   std::string refused;  // why there is no map (the refusal's text)

@@ -151,6 +151,26 @@ TEST_CASE("The drawing's caption gives the head's size in the unit the file gave
   CHECK(caption(document) == "The head is drawn as an ellipse of 632 cm² (as given)");
 }
 
+TEST_CASE("A bat's page draws no string bed and calls it neither a racquet nor strung") {
+  // One design, one meaning: the page of an implement without head or strings
+  // has no maps over a head it would have to invent.
+  const io::Json json = io::read_json_file(SWEETSPOT_SOURCE_DIR "/designs/bats/wood-bat-34.json");
+  const io::DesignFile file = io::read_design(json, "bat.json");
+  REQUIRE_FALSE(studies::is_racquet(file));
+  const studies::DesignPage page = studies::design_page(file);
+  CHECK_FALSE(page.maps.racquet);
+  CHECK_FALSE(page.maps.map);
+  const std::string html = reports::design_html_report(file, json, page);
+  CHECK(html.find("id=\"maps\"") == std::string::npos);
+  CHECK(html.find("sq in") == std::string::npos);
+  CHECK(html.find("racquet (Eq. 5)") == std::string::npos);
+  CHECK(html.find("the implement when free (Eq. 5)") != std::string::npos);
+  CHECK(html.find("force on the strings") == std::string::npos);
+  CHECK(html.find("The share of the force of the impact that reaches the wrist") !=
+        std::string::npos);
+  CHECK(html.find("from the tip of the implement.") != std::string::npos);
+}
+
 // A page that needs nothing but itself: no script, nothing fetched (the
 // only URLs are SVG's namespaces), one inline stylesheet, a phone's viewport.
 void check_self_contained(const std::string& page) {
