@@ -759,7 +759,7 @@ py::dict tune_py(py::handle design, py::handle target, py::handle places, py::ha
     const studies::TuneTargets other =
         studies::targets_from(studies::specs_of(other_file->design), false);
     if (!targets.mass_kg) targets.mass_kg = other.mass_kg;
-    if (!targets.balance_from_butt_m) targets.balance_from_butt_m = other.balance_from_butt_m;
+    if (!targets.has_balance()) targets.balance_from_butt_m = other.balance_from_butt_m;
     if (!targets.swingweight_kg_m2) targets.swingweight_kg_m2 = other.swingweight_kg_m2;
   }
   if (targets.empty())
@@ -957,7 +957,7 @@ DESIGN --target ... --places ...`.
 design: a design as a dict, JSON text or path.
 target: the specs to reach, a dict of a design file's spelling and a number
     ({"mass_g": 330, "balance_cm": 32, "swingweight_kg_cm2": 330}; twistweight_kg_cm2 too,
-    the balance in cm or m from the butt) or the command line's text
+    the balance in cm or m from the butt, or balance_pts_hl) or the command line's text
     ("mass_g=330,balance_cm=32"); None: only those of `like`.
 places: where lead may go, a str ("12,3/9,grip") or a list of str: clock hours on the
     hoop (a pair 3/9 takes half at each; the design needs its head size), throat, grip

@@ -70,7 +70,7 @@ def tune(
     tol: float = 1e-6,
 ) -> dict[str, Any]:
     """The least lead, and where (places: clock hours, 3/9, throat, grip, handle or butt), that reaches
-    target specs (mass_g, balance_cm, swingweight_kg_cm2, twistweight_kg_cm2): the lead per
+    target specs (mass_g, balance_cm or balance_pts_hl, swingweight_kg_cm2, twistweight_kg_cm2): the lead per
     place, the specs before and reached (SI), misses, the tuned design, the report."""
 
 def outputs() -> list[dict[str, Any]]:

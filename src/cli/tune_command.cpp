@@ -73,10 +73,11 @@ void TuneCommand::add_to(CLI::App& app) {
       ->required()
       ->expected(1, 64);
   add_set_option(command, settings);
-  command->add_option("--target", target,
-                      "The specs to reach, NAME=VALUE separated by commas: mass_g (or mass_kg), "
-                      "balance_cm (or balance_from_butt_m, from the butt), swingweight_kg_cm2, "
-                      "twistweight_kg_cm2");
+  command->add_option(
+      "--target", target,
+      "The specs to reach, NAME=VALUE separated by commas: mass_g (or mass_kg), "
+      "balance_cm (or balance_from_butt_m, from the butt, or balance_pts_hl), swingweight_kg_cm2, "
+      "twistweight_kg_cm2");
   command->add_option("--like", like,
                       "Reach the mass, balance and swingweight of this other racquet (a design "
                       "file); --target given as well wins for the specs it names");
@@ -176,7 +177,7 @@ int TuneCommand::run() const {
       const studies::TuneTargets other = studies::targets_from(
           studies::specs_of(with_implement(io::load_design(like)).design), false);
       if (!targets.mass_kg) targets.mass_kg = other.mass_kg;
-      if (!targets.balance_from_butt_m) targets.balance_from_butt_m = other.balance_from_butt_m;
+      if (!targets.has_balance()) targets.balance_from_butt_m = other.balance_from_butt_m;
       if (!targets.swingweight_kg_m2) targets.swingweight_kg_m2 = other.swingweight_kg_m2;
     }
     // (its complaints name their option)

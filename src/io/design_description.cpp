@@ -126,6 +126,20 @@ Implement build_implement(const ImplementDescription& d) {
                                points);
 }
 
+std::optional<HeadShape> racquet_head_of(const DesignDescription& d) {
+  if (d.implement.head || !d.head_area_m2) return d.implement.head;
+  HeadShape head;  // the default aspect ratio and hoop width of head_geometry.hpp
+  head.area_m2 = *d.head_area_m2;
+  return head;
+}
+
+Implement build_implement(const DesignDescription& d) {
+  if (d.implement.head || !d.head_area_m2) return build_implement(d.implement);
+  ImplementDescription with_head = d.implement;
+  with_head.head = racquet_head_of(d);
+  return build_implement(with_head);
+}
+
 void derive(DesignDescription& d) {
   Design& design = d.design;
   if (const auto& head = d.implement.head) {
@@ -147,11 +161,7 @@ void derive(DesignDescription& d) {
     design.strings->head_radius_m = head_radius_from_area(*d.head_area_m2);
     // One head, one size: the string bed's size given alone is the head's, so
     // the twist, the map and the page take it as they take implement.headsize.
-    if (!design.head) {
-      HeadShape head;  // the default aspect ratio and hoop width of head_geometry.hpp
-      head.area_m2 = *d.head_area_m2;
-      design.head = head;
-    }
+    if (!design.head) design.head = racquet_head_of(d);
   } else if (design.strings && design.head) {
     design.strings->head_radius_m = head_radius_from_area(design.head->area_m2);
   }

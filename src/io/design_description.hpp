@@ -129,6 +129,15 @@ struct DesignDescription {
 // where read_design() refuses it.
 Implement build_implement(const ImplementDescription& description);
 
+// The racquet's head as the description gives it: the implement's, else the
+// string bed's size given alone (strings.head_size_*) with the default shape;
+// one head, one size, so a lead's clock position is placed on it either way.
+std::optional<HeadShape> racquet_head_of(const DesignDescription& description);
+
+// The implement the whole description gives: build_implement() with the
+// clock positions placed on racquet_head_of().
+Implement build_implement(const DesignDescription& description);
+
 // Recomputes description.design's derived numbers (the head, the equivalent
 // forearm mass, the string bed's radius from strings.head_size_* or else the
 // implement's head, the impact point from the butt) from the description and

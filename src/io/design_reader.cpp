@@ -308,10 +308,35 @@ std::vector<PointMassSpec> read_point_masses(ObjectReader& implement, const std:
           if (word == "handle" || word == "butt") d.handle_from_butt_m = kHandleWeightFromButt_m;
           if (word == "grip") d.handle_from_butt_m = kUnderGripFromButt_m;
           if (d.handle_from_butt_m) return;
+          // Hours joined by '/' ("3/9"), as `tune --places` names a pair.
+          std::vector<double> joined;
+          for (std::size_t start = 0; start <= word.size();) {
+            const std::size_t end = std::min(word.find('/', start), word.size());
+            double h = 0.0;
+            const char* first = word.data() + start;
+            const char* last = word.data() + end;
+            const auto [ptr, error] = std::from_chars(first, last, h);
+            if (first == last || error != std::errc() || ptr != last) {
+              joined.clear();
+              break;
+            }
+            joined.push_back(h);
+            start = end + 1;
+          }
+          if (joined.size() >= 2 && joined.size() <= 12) {
+            for (const double h : joined) {
+              if (!(h >= 0.0 && h <= 12.0)) {
+                r.fail("clock", "an hour must be in [0, 12] (12 the tip, 3 and 9 the sides), got " +
+                                    brief(value));
+              }
+            }
+            d.clock_hours = joined;
+            return;
+          }
         }
         r.fail("clock",
-               "expected an hour in [0, 12], a list of hours ([3, 9]), \"throat\", \"grip\" "
-               "or \"handle\" (\"butt\"), got " +
+               "expected an hour in [0, 12], a list of hours ([3, 9], or \"3/9\"), \"throat\", "
+               "\"grip\" or \"handle\" (\"butt\"), got " +
                    brief(value));
       };
       if (value.is_array()) {
@@ -420,6 +445,24 @@ struct ImplementRead {
   HeadRead head;
 };
 
+// One head, one size: the string bed's size given alone (strings.head_size_*)
+// is the racquet's head, on which a lead's clock position is placed before the
+// strings are read. A value that is no size is left to read_strings() to name.
+std::optional<HeadShape> bed_head_given_alone(const Json& document) {
+  const auto strings = document.find("strings");
+  if (strings == document.end() || !strings->is_object()) return std::nullopt;
+  for (const std::string& key : keys_of("strings", {"head_size"})) {
+    const auto it = strings->find(key);
+    if (it == strings->end()) continue;
+    if (!it->is_number()) return std::nullopt;
+    HeadShape head;  // the default aspect ratio and hoop width of head_geometry.hpp
+    head.area_m2 = find_spelling("strings", key)->scale.to_si(it->get<double>());
+    if (!(head.area_m2 > 0.0 && std::isfinite(head.area_m2))) return std::nullopt;
+    return head;
+  }
+  return std::nullopt;
+}
+
 // `described`, when given, receives the implement's numbers before it is built.
 ImplementRead read_implement(const Json& document, const std::string& source, KeyMap* keys,
                              ImplementDescription* described) {
@@ -455,7 +498,8 @@ ImplementRead read_implement(const Json& document, const std::string& source, Ke
                message.substr(message.find(": ") + 2));
       }
     }
-    points = place_point_masses(point_specs, length_m, head.head, source);
+    points = place_point_masses(point_specs, length_m,
+                                head.head ? head.head : bed_head_given_alone(document), source);
   };
   try {
     if (r.has("profile")) {

@@ -187,7 +187,8 @@ const std::vector<FieldSetter>& field_setters() {
        [](D& x, std::size_t, double v) { x.design.strings->contact_radius_m = v; }},
       {"strings", "head_size", "",
        [](const D& d, std::size_t) { return has_strings(d, 0) && d.head_area_m2; },
-       [](D& x, std::size_t, double v) { x.head_area_m2 = v; }},
+       // The head's size when the implement gives none: clock positions move.
+       [](D& x, std::size_t, double v) { x.head_area_m2 = v; }, true},
       {"hand", "mass", "", always, [](D& x, std::size_t, double v) { x.design.hand.mass_kg = v; }},
       {"hand", "center_from_butt", "", always,
        [](D& x, std::size_t, double v) { x.design.hand.center_from_butt_m = v; }},
@@ -317,7 +318,7 @@ const Design* BoundDesign::at(std::span<const double> values) {
   try {
     if (rebuild) {
       implement_built_ = false;
-      live_.design.implement = io::build_implement(live_.implement);
+      live_.design.implement = io::build_implement(live_);
       implement_built_ = true;
     }
     io::derive(live_);

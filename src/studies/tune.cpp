@@ -8,8 +8,11 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
+#include "io/design_description.hpp"
 #include "io/design_fields.hpp"
+#include "io/format.hpp"
 #include "io/input_error.hpp"
 #include "sweetspot/head_geometry.hpp"
 #include "sweetspot/mass_properties.hpp"
@@ -172,8 +175,8 @@ TuneTargets parse_tune_targets(std::string_view text) {
   TuneTargets targets;
   std::size_t item = 0;
   const char* expected =
-      "expected NAME=VALUE with a name such as mass_g, balance_cm, swingweight_kg_cm2 or "
-      "twistweight_kg_cm2";
+      "expected NAME=VALUE with a name such as mass_g, balance_cm, balance_pts_hl, "
+      "swingweight_kg_cm2 or twistweight_kg_cm2";
   for (std::string_view raw : split(text, ',')) {
     ++item;
     const std::string_view piece = trimmed(raw);
@@ -186,24 +189,25 @@ TuneTargets parse_tune_targets(std::string_view text) {
     const std::string_view value_text = trimmed(piece.substr(equals + 1));
     const std::optional<io::FieldSpelling> spelling = io::find_spelling("implement", name);
     const std::string_view stem = spelling ? spelling->field->stem : std::string_view();
-    if (!spelling || name == "balance_pts_hl" ||
+    if (!spelling ||
         (stem != "mass" && stem != "balance" && stem != "swingweight" && stem != "twistweight")) {
-      throw std::invalid_argument(fmt::format(
-          "item {}: unknown target \"{}\" ({}; the balance in cm or m from the butt, not in "
-          "points)",
-          item, io::one_line(name), expected));
-    }
-    const std::optional<double> value = finite_number(value_text);
-    if (!value || !(*value > 0.0)) {
       throw std::invalid_argument(
-          fmt::format("item {}: {} must be a finite number > 0, got {}", item, name,
-                      value_text.empty() ? std::string("nothing") : io::one_line(value_text)));
+          fmt::format("item {}: unknown target \"{}\" ({})", item, io::one_line(name), expected));
+    }
+    // Points head-light may be negative (head-heavy); every other target is > 0.
+    const bool points = name == "balance_pts_hl";
+    const std::optional<double> value = finite_number(value_text);
+    if (!value || !(points || *value > 0.0)) {
+      throw std::invalid_argument(fmt::format(
+          "item {}: {} must be a finite number{}, got {}", item, name, points ? "" : " > 0",
+          value_text.empty() ? std::string("nothing") : io::one_line(value_text)));
     }
     std::optional<double>& slot = stem == "mass"          ? targets.mass_kg
+                                  : points                ? targets.balance_pts_hl
                                   : stem == "balance"     ? targets.balance_from_butt_m
                                   : stem == "swingweight" ? targets.swingweight_kg_m2
                                                           : targets.twistweight_kg_m2;
-    if (slot) {
+    if (slot || (stem == "balance" && targets.has_balance())) {
       throw std::invalid_argument(
           fmt::format("item {}: the {} is given twice (give each target once)", item, stem));
     }
@@ -549,8 +553,22 @@ void check_targets(const io::DesignFile& design, const TuneTargets& targets,
 
 }  // namespace
 
-TuneResult tune(const io::DesignFile& design, const TuneTargets& targets,
+TuneResult tune(const io::DesignFile& design, const TuneTargets& given,
                 const std::vector<LeadPlace>& places) {
+  TuneTargets targets = given;
+  if (targets.balance_pts_hl) {
+    // From the butt with this racquet's length (lead does not change it).
+    const double L = design.design.implement.length_m();
+    const double points = *std::exchange(targets.balance_pts_hl, std::nullopt);
+    const double limit = io::points_head_light_limit(L);
+    if (!(std::fabs(points) < limit)) {
+      throw std::invalid_argument(fmt::format(
+          "--target: balance_pts_hl must put the balance inside the length ({} cm), "
+          "|points| < {}, got {}",
+          io::significant(L * 100.0, 4), io::significant(limit, 4), io::significant(points, 6)));
+    }
+    targets.balance_from_butt_m = io::balance_from_points_head_light(L, points);
+  }
   check_targets(design, targets, places);
   const PlacedColumns placed = place_all(design, places);
   const RacquetSpecs before = specs_of(design.design);

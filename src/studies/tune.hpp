@@ -76,18 +76,23 @@ RacquetSpecs specs_of(const Design& design);
 struct TuneTargets {
   std::optional<double> mass_kg;
   std::optional<double> balance_from_butt_m;
+  // The balance in points head-light, as a spec sheet gives it: tune() puts it
+  // from the butt with the design's own length (never both balances).
+  std::optional<double> balance_pts_hl;
   std::optional<double> swingweight_kg_m2;
   std::optional<double> twistweight_kg_m2;
+  bool has_balance() const { return balance_from_butt_m || balance_pts_hl; }
   bool empty() const {
-    return !mass_kg && !balance_from_butt_m && !swingweight_kg_m2 && !twistweight_kg_m2;
+    return !mass_kg && !has_balance() && !swingweight_kg_m2 && !twistweight_kg_m2;
   }
 };
 
 // A --target list ("mass_g=330,balance_cm=32,swingweight_kg_cm2=325"): each
-// name a design file's spelling of implement mass, balance (not in points),
-// swingweight or twistweight with its unit (mass_g, balance_cm,
+// name a design file's spelling of implement mass, balance, swingweight or
+// twistweight with its unit (mass_g, balance_cm, balance_pts_hl,
 // swingweight_kg_cm2, twistweight_kg_cm2, ...), each value a finite number
-// > 0. Throws std::invalid_argument naming the item and what is expected.
+// > 0 (points head-light any finite number: negative is head-heavy). Throws
+// std::invalid_argument naming the item and what is expected.
 TuneTargets parse_tune_targets(std::string_view text);
 
 // The targets a racquet's own specs give (for "the specs of this other

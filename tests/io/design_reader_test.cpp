@@ -56,6 +56,48 @@ TEST_CASE("Points head-light count eighths of an inch from the middle towards th
   CHECK(d.design.implement.mass_properties().com_from_butt_m == Approx(0.3302).epsilon(kRoundOff));
 }
 
+TEST_CASE("A lead's clock position is placed on the head the string bed's size gives") {
+  // One head, one size: strings.head_size_in2 alone is implement.headsize_sq_in
+  // with the default shape, for the lead at 12 and at 3 and 9 as for the twist.
+  const Json bed = Json::parse(R"({
+    "implement": {"length_in": 27, "mass_g": 300, "balance_cm": 32.5, "swingweight_kg_cm2": 320,
+                  "point_masses": [{"clock": 12, "mass_g": 3}, {"clock": [3, 9], "mass_g": 2}]},
+    "strings": {"tension_lb": 52, "head_size_in2": 98}})");
+  Json implement = bed;
+  implement["strings"].erase("head_size_in2");
+  implement["implement"]["headsize_sq_in"] = 98;
+  const DesignFile a = read_design(bed, "bed.json");
+  const DesignFile b = read_design(implement, "implement.json");
+  const std::vector<PointMass>& pa = a.design.implement.point_masses();
+  const std::vector<PointMass>& pb = b.design.implement.point_masses();
+  REQUIRE(pa.size() == 3);
+  REQUIRE(pb.size() == 3);
+  for (std::size_t k = 0; k < pa.size(); ++k) {
+    CHECK(pa[k].from_butt_m == pb[k].from_butt_m);
+    CHECK(pa[k].off_axis_m == pb[k].off_axis_m);
+    CHECK(pa[k].mass_kg == pb[k].mass_kg);
+  }
+  CHECK(pa[1].off_axis_m != 0.0);  // 3 o'clock: off the axis, on the hoop
+  // The pair as `tune --places` names it, "3/9", is the list [3, 9].
+  Json joined = bed;
+  joined["implement"]["point_masses"][1]["clock"] = "3/9";
+  const std::vector<PointMass> pj =
+      read_design(joined, "joined.json").design.implement.point_masses();
+  REQUIRE(pj.size() == 3);
+  for (std::size_t k = 0; k < pj.size(); ++k) {
+    CHECK(pj[k].from_butt_m == pa[k].from_butt_m);
+    CHECK(pj[k].off_axis_m == pa[k].off_axis_m);
+  }
+  for (const char* bad : {"3/13", "3/", "/9", "3//9", "3/nine", "3 / 9"}) {
+    INFO(bad);
+    joined["implement"]["point_masses"][1]["clock"] = bad;
+    CHECK_THROWS_WITH(read_design(joined, "joined.json"),
+                      Catch::Contains("/implement/point_masses/1/clock"));
+  }
+  REQUIRE(polar_inertia_kg_m2(a.design));
+  CHECK(*polar_inertia_kg_m2(a.design) == *polar_inertia_kg_m2(b.design));
+}
+
 TEST_CASE("Absent parts take the Table I top-row values and say so") {
   const DesignFile d = read(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25,
                                 "head_to_handle_mass_ratio": 0.8}})");

@@ -133,6 +133,15 @@ const std::vector<Case>& cases() {
         {"/implement/headsize_sq_in", {95.0, 110.0, 0.0, 1e5}},
         {"/implement/head_aspect_ratio", {1.2, 0.5}},
         {"/impact/from_tip_cm", {10.0, 100.0}}}},
+      // The head given as the string bed's size alone (one head, one size):
+      // the clock positions are placed on it and follow it.
+      {R"({"implement": {"length_in": 27, "mass_g": 300, "balance_cm": 32.5, "swingweight_kg_cm2": 320,
+                         "point_masses": [{"clock": 12, "mass_g": 3}, {"clock": [3, 9], "mass_g": 2}]},
+          "frame": {"RA": 66}, "strings": {"tension_lb": 52, "head_size_in2": 100}})",
+       {{"/strings/head_size_in2", {95.0, 110.0, 0.0, 1e5}},
+        {"/implement/point_masses/0/clock", {11.0, 13.0}},
+        {"/implement/point_masses/1/mass_g", {5.0, -1.0}},
+        {"/implement/length_in", {29.0, 10.0}}}},
       // The paper's racquet with a head: the throat follows its length.
       {R"({"implement": {"length_m": 0.7, "mass_kg": 0.3, "head_to_handle_mass_ratio": 0.8,
                          "headsize_cm2": 600, "point_masses": [{"clock": "throat", "mass_g": 5}]}})",

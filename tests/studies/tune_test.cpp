@@ -3,6 +3,8 @@
 // the targets, and the answers whose reasons are known.
 #include "studies/tune.hpp"
 
+#include <fmt/format.h>
+
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
@@ -165,6 +167,29 @@ TEST_CASE("The tuned design file, read back, has the target specs") {
   CHECK(back.name == "Club racquet (tuned)");
 }
 
+TEST_CASE("A balance in points head-light is the balance from the butt of this racquet's length") {
+  // A point is an eighth of an inch from the middle towards the butt; a
+  // negative number is head-heavy. The same lead as the balance in cm.
+  const io::DesignFile d = club();
+  const double L = d.design.implement.length_m();
+  for (const double points : {6.0, 2.5, -1.0}) {
+    const double from_butt_cm = (L / 2.0 - points * 0.0254 / 8.0) * 100.0;
+    const TuneResult in_points =
+        tune(d, parse_tune_targets(fmt::format("mass_g=330,balance_pts_hl={}", points)),
+             parse_lead_places("12,grip"));
+    const TuneResult in_cm =
+        tune(d, parse_tune_targets(fmt::format("mass_g=330,balance_cm={:.17g}", from_butt_cm)),
+             parse_lead_places("12,grip"));
+    REQUIRE(in_points.targets.balance_from_butt_m);
+    CHECK(*in_points.targets.balance_from_butt_m * 100.0 == Approx(from_butt_cm).epsilon(1e-12));
+    CHECK_FALSE(in_points.targets.balance_pts_hl);
+    CHECK(in_points.exact == in_cm.exact);
+    REQUIRE(in_points.lead.size() == in_cm.lead.size());
+    for (std::size_t i = 0; i < in_cm.lead.size(); ++i)
+      CHECK(in_points.lead[i].mass_kg == Approx(in_cm.lead[i].mass_kg).epsilon(1e-9));
+  }
+}
+
 TEST_CASE("A twistweight target is reached by lead at 3 and 9 o'clock alone") {
   // On the axis (12, the grip) lead adds no twistweight: 3/9 must give all
   // of it, m c^2 with c the hoop's half-width.
@@ -222,7 +247,13 @@ TEST_CASE("Bad targets and places are refused with the item named") {
   CHECK_THROWS_WITH(parse_tune_targets("mass_g=-3"),
                     Catch::Contains("must be a finite number > 0"));
   CHECK_THROWS_WITH(parse_tune_targets("mass_g=330,mass_kg=0.33"), Catch::Contains("given twice"));
-  CHECK_THROWS_WITH(parse_tune_targets("balance_pts_hl=4"), Catch::Contains("not in points"));
+  CHECK_THROWS_WITH(parse_tune_targets("balance_pts_hl=4,balance_cm=32"),
+                    Catch::Contains("item 2: the balance is given twice"));
+  CHECK_THROWS_WITH(parse_tune_targets("balance_pts_hl=nan"),
+                    Catch::Contains("balance_pts_hl must be a finite number, got nan"));
+  CHECK_THROWS_WITH(
+      tune(club(), parse_tune_targets("balance_pts_hl=200"), parse_lead_places("12,grip")),
+      Catch::Contains("balance_pts_hl must put the balance inside the length"));
   CHECK_THROWS_WITH(parse_lead_places("12,13"), Catch::Contains("item 2 \"13\" is not a place"));
   CHECK_THROWS_WITH(parse_lead_places("12,,3"), Catch::Contains("an empty place (item 2"));
   CHECK_THROWS_WITH(parse_lead_places("3/9,9/3"), Catch::Contains("the same place as \"3/9\""));
