@@ -550,6 +550,14 @@ BatchSummary run_batch(std::istream& in, const std::string& source, const BatchO
     header = read_header(line, header_at, options.map, options.map_source);
   }
   const std::unique_ptr<io::RowWriter> csv_rows = io::row_writer(io::Format::kCsv);
+  // The output's header, held back until the first rows show no column at
+  // fault (a column the base cannot take is found only on a row): a refused
+  // catalogue writes nothing, not a header.
+  std::string header_text;
+  const auto write_header = [&] {
+    out << header_text;
+    header_text.clear();
+  };
   if (options.format == io::Format::kCsv) {
     // A column passed through keeps its name, which must not be one of the output's own.
     std::vector<std::string_view> own{"line", "name", "error"};
@@ -567,9 +575,7 @@ BatchSummary run_batch(std::istream& in, const std::string& source, const BatchO
     for (const std::size_t k : header.passed) names.push_back(header.names[k]);
     for (const io::OutputSpec& o : io::output_specs()) names.emplace_back(o.name);
     names.emplace_back("error");
-    std::string text;
-    csv_rows->header(std::move(names), text);
-    out << text;
+    csv_rows->header(std::move(names), header_text);
   }
   const Evaluator evaluator(source, options, csv, std::move(header));
   BatchSummary summary;
@@ -610,6 +616,7 @@ BatchSummary run_batch(std::istream& in, const std::string& source, const BatchO
     if (sort_by) {
       for (const Row& row : read) kept->add(row.key, row.out);
     } else {
+      write_header();
       for (const std::string& text : texts) out << text;
     }
     for (Row& row : read) {
@@ -637,6 +644,7 @@ BatchSummary run_batch(std::istream& in, const std::string& source, const BatchO
     if (rows == kBatchChunkRows || chunk_bytes >= kBatchChunkBytes) flush();
   }
   if (rows > 0) flush();
+  write_header();  // a catalogue of no rows: the header alone
   if (sort_by) {
     kept->write(out);
   }
