@@ -563,6 +563,12 @@ void FieldOverride::apply(Json& document, Json value) const {
   document[at_] = std::move(value);
 }
 
+std::vector<std::string> FieldOverride::elsewhere_pointers() const {
+  std::vector<std::string> out;
+  for (const std::string& key : elsewhere_keys_) out.push_back((elsewhere_ / key).to_string());
+  return out;
+}
+
 void override_field(Json& document, const std::string& pointer, Json value) {
   FieldOverride(pointer).apply(document, std::move(value));
 }
@@ -598,6 +604,22 @@ void override_fields(Json& document, const Json& patch) {
   }
   if (!document.is_object()) document = Json::object();
   override_below(document, patch, "");
+  // A quantity spelled in two objects (the head's size as the implement's and
+  // as the string bed's): a leaf set later erased one the patch gave too. Each
+  // leaf the patch gives is put back, so that the design read says whether
+  // the two agree, as it says for a file that gives both.
+  const auto restore = [&](const auto& self, const Json& below,
+                           const std::string& pointer) -> void {
+    for (const auto& [key, value] : below.items()) {
+      const std::string at = pointer + "/" + escape_pointer_token(key);
+      if (value.is_object() && !value.empty()) {
+        self(self, value, at);
+      } else {
+        document[Json::json_pointer(at)] = value;
+      }
+    }
+  };
+  restore(restore, patch, "");
 }
 
 namespace {

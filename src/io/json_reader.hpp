@@ -146,6 +146,9 @@ class FieldOverride {
   // Throws Json::exception when `pointer` is not a JSON pointer.
   explicit FieldOverride(const std::string& pointer);
   void apply(Json& document, Json value) const;
+  // The pointers of the same quantity spelled in another object, which
+  // apply() erases ("/strings/head_size_in2", ... for the implement's head).
+  std::vector<std::string> elsewhere_pointers() const;
 
  private:
   Json::json_pointer at_;

@@ -185,6 +185,17 @@ void check_fields_together(const std::vector<DesignColumn>& fields, const std::s
                                          label, fields[contradicted->second].label));
       }
     }
+    // The same quantity in another object (the head's size as the implement's
+    // and as the string bed's): one head, one size.
+    for (const std::string& other : io::FieldOverride(pointer).elsewhere_pointers()) {
+      const auto contradicted = column_of.find(other);
+      if (contradicted != column_of.end() && contradicted->second < j) {
+        throw io::InputError(
+            where, "",
+            fmt::format("{}: contradicts {}: one head, one size: give the quantity once", label,
+                        fields[contradicted->second].label));
+      }
+    }
   }
 }
 
