@@ -90,7 +90,7 @@ std::string markdown(const StringAnswer& a) {
         md += fmt::format(
             "That is {} times the tension this design is strung at ({} lb), for a bed {} than "
             "its own{}.\n\n",
-            num(ratio, 2), num(b.pull_tension_N / kPoundForce_N, 3),
+            num(ratio, 3), num(b.pull_tension_N / kPoundForce_N, 3),
             ratio < 1.0 ? "far softer" : "far stiffer",
             t.keep == studies::BedQuantity::kStiffness && a.target_from == "the target"
                 ? ". If the target is an RDC or an ERT reading, it is an index of that "

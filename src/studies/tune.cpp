@@ -114,6 +114,7 @@ std::vector<LeadPlace> parse_lead_places(std::string_view text) {
           item));
     } else if (word == "throat") {
       place.kind = LeadPlace::Kind::kThroat;
+      place.hours = {6.0};  // the same place as 6 o'clock
     } else if (word == "grip") {
       place.kind = LeadPlace::Kind::kUnderGrip;
     } else if (word == "butt" || word == "handle") {
@@ -141,7 +142,11 @@ std::vector<LeadPlace> parse_lead_places(std::string_view text) {
       std::vector<double> a = other.hours, b = place.hours;
       std::sort(a.begin(), a.end());
       std::sort(b.begin(), b.end());
-      if (other.kind == place.kind && a == b) {
+      // The throat is 6 o'clock: one place by either name.
+      const auto on_hoop = [](LeadPlace::Kind k) {
+        return k == LeadPlace::Kind::kClock || k == LeadPlace::Kind::kThroat;
+      };
+      if ((other.kind == place.kind || (on_hoop(other.kind) && on_hoop(place.kind))) && a == b) {
         throw std::invalid_argument(
             fmt::format("item {} \"{}\" is the same place as \"{}\" (give each place once)", item,
                         io::one_line(word), other.label));

@@ -49,7 +49,7 @@ inline constexpr std::size_t kMaxLeadPlaces = 24;
 struct LeadPlace {
   enum class Kind { kClock, kThroat, kUnderGrip, kButtCap };
   Kind kind = Kind::kClock;
-  std::vector<double> hours;  // kClock: one hour, or two (a pair)
+  std::vector<double> hours;  // kClock: one hour, or two (a pair); kThroat: 6
   std::string label;          // as the user wrote it: "12", "3/9", "throat", "grip", "butt"
 };
 

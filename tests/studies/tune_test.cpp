@@ -257,6 +257,8 @@ TEST_CASE("Bad targets and places are refused with the item named") {
   CHECK_THROWS_WITH(parse_lead_places("12,13"), Catch::Contains("item 2 \"13\" is not a place"));
   CHECK_THROWS_WITH(parse_lead_places("12,,3"), Catch::Contains("an empty place (item 2"));
   CHECK_THROWS_WITH(parse_lead_places("3/9,9/3"), Catch::Contains("the same place as \"3/9\""));
+  CHECK_THROWS_WITH(parse_lead_places("6,throat"), Catch::Contains("the same place as \"6\""));
+  CHECK_THROWS_WITH(parse_lead_places("throat,6"), Catch::Contains("the same place as \"throat\""));
   CHECK_THROWS_WITH(parse_lead_places("hand"), Catch::Contains("item 1 \"hand\" is not a place"));
   CHECK(parse_lead_places("12, 3/9 ,throat,grip,butt,10.5").size() == 6);
   // One word, one place: "handle" is the butt cap, as a design file's clock.
