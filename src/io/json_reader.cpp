@@ -455,7 +455,13 @@ FieldOverride::FieldOverride(const std::string& pointer)
   // (headsize_sq_in or headsize_cm2; angular_speed_rad_s or _rpm), and a
   // swing's speed in another form (speed_at_impact): each other spelling of
   // the row, and of the rows that give it another way, goes too.
-  static constexpr std::string_view kOtherForms[][2] = {{"angular_speed", "speed_at_impact"}};
+  static constexpr std::string_view kOtherForms[][2] = {
+      {"angular_speed", "speed_at_impact"},
+      // A lead's place: from the butt, from the tip, or on the hoop by the clock.
+      {"clock", "from_butt"},
+      {"clock", "from_tip"}};
+  // A place on the hoop has no offset of its own: a clock given erases one.
+  static constexpr std::string_view kErasedBy[][2] = {{"clock", "off_axis"}};
   if (at_.empty()) return;
   const std::string object = design_object_of(
       parent_.to_string().substr(std::min<std::size_t>(1, parent_.to_string().size())));
@@ -475,6 +481,9 @@ FieldOverride::FieldOverride(const std::string& pointer)
   for (const auto& form : kOtherForms) {
     if (form[0] == spelling->field->stem) add_row(form[1]);
     if (form[1] == spelling->field->stem) add_row(form[0]);
+  }
+  for (const auto& erased : kErasedBy) {
+    if (erased[0] == spelling->field->stem) add_row(erased[1]);
   }
   // One head, one size: the implement's head and the string bed's are one
   // quantity in two objects, so a value given for either replaces both.

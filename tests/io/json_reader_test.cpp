@@ -81,6 +81,23 @@ TEST_CASE(
         Json::parse(R"({"angular_speed_rpm": 100, "pivot_beyond_butt_cm": 60})"));
 }
 
+TEST_CASE(
+    "An override of a lead's place replaces its other forms: from the butt, the tip, or the "
+    "clock") {
+  Json design = Json::parse(R"({"implement": {"point_masses": [
+      {"mass_g": 2, "from_tip_cm": 10, "off_axis_cm": 3}, {"mass_g": 2, "clock": 12}]}})");
+  // A clock places the piece on the hoop: its offset goes with its old place.
+  override_field(design, "/implement/point_masses/0/clock", 3);
+  CHECK(design["implement"]["point_masses"][0] == Json::parse(R"({"mass_g": 2, "clock": 3})"));
+  override_field(design, "/implement/point_masses/1/from_butt_cm", 50);
+  CHECK(design["implement"]["point_masses"][1] ==
+        Json::parse(R"({"mass_g": 2, "from_butt_cm": 50})"));
+  // An offset given keeps the place it is the offset of.
+  override_field(design, "/implement/point_masses/1/off_axis_cm", 2);
+  CHECK(design["implement"]["point_masses"][1] ==
+        Json::parse(R"({"mass_g": 2, "from_butt_cm": 50, "off_axis_cm": 2})"));
+}
+
 TEST_CASE("An override sets an entry of a list or adds the next one, and no further") {
   // nlohmann::json fills a gap with nulls, which the reader would then blame.
   Json design = Json::parse(R"({"implement": {"point_masses": [{"mass_g": 4, "clock": 12}]}})");
