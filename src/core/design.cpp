@@ -167,7 +167,18 @@ void validate(const Design& d) {
     outline->semi_length_m += d.head->hoop_width_m;
     outline->semi_width_m += d.head->hoop_width_m;
   }
-  const double half_width_m = outline ? outline->semi_width_m : kMaxHeadHalfWidth_m;
+  // A round implement given by its profile (a bat) is as wide as its
+  // diameter: its widest for the twist, its own at the impact for a hit.
+  const std::optional<RoundProfile>& profile = d.implement.profile();
+  const bool round = !outline && profile && !profile->stations.empty();
+  double widest_radius_m = 0.0;
+  if (round) {
+    for (const ProfileStation& s : profile->stations)
+      widest_radius_m = std::max(widest_radius_m, 0.5 * s.diameter_m);
+  }
+  const double half_width_m = outline ? outline->semi_width_m
+                              : round ? widest_radius_m
+                                      : kMaxHeadHalfWidth_m;
   if (d.twistweight_kg_m2) {
     // All the frame's mass at the head's edge: the largest polar inertia it can have.
     const double frame_mass_kg = d.implement.frame_mass_properties().mass_kg;
@@ -183,7 +194,24 @@ void validate(const Design& d) {
                            detail::format_number(twistweight) + " kg m^2");
     }
   }
-  if (const double y = d.impact_off_axis_m; y != 0.0) {
+  if (const double y = d.impact_off_axis_m; y != 0.0 && round) {
+    // The radius at the impact, between the profile's stations.
+    const std::vector<ProfileStation>& st = profile->stations;
+    double radius_m = 0.5 * st.back().diameter_m;
+    for (std::size_t k = 1; k < st.size(); ++k) {
+      if (d.impact_from_butt_m > st[k].from_butt_m) continue;
+      const double span = st[k].from_butt_m - st[k - 1].from_butt_m;
+      const double t = span > 0.0 ? (d.impact_from_butt_m - st[k - 1].from_butt_m) / span : 1.0;
+      radius_m = 0.5 * (st[k - 1].diameter_m + t * (st[k].diameter_m - st[k - 1].diameter_m));
+      break;
+    }
+    if (!(std::abs(y) <= radius_m)) {
+      throw FieldError("impact/off_axis_m",
+                       "must land on the implement (within its radius at this impact, " +
+                           detail::format_significant(radius_m) + " m, by its profile), got " +
+                           detail::format_number(y) + " m");
+    }
+  } else if (y != 0.0) {
     const bool on_head = outline ? on_string_bed(*outline, d.impact_from_butt_m, y)
                                  : std::abs(y) <= kMaxHeadHalfWidth_m;
     if (!on_head) {

@@ -67,6 +67,11 @@ StringBedMap string_bed_map(const Design& design, const StringBedMapOptions& opt
   }
   // Validates the design and derives the duration at its own impact point.
   RigidCase base = rigid_case(design);
+  if (!design.head && !design.strings && design.implement.profile()) {
+    throw std::invalid_argument(
+        "implement: a map of the string bed needs a head, and an implement given by its "
+        "profile (a bat) has none: ask `sweetspot evaluate` about a point of it");
+  }
   const std::optional<double> polar = polar_inertia_kg_m2(design);
   if (!polar) {
     throw std::invalid_argument(

@@ -221,6 +221,32 @@ TEST_CASE("An impact off the axis without a polar inertia is refused, naming imp
   CHECK_THROWS_WITH(evaluate(d), Catch::StartsWith("impact/off_axis_m"));
 }
 
+TEST_CASE("A round implement is hit within its radius and twists at most as a shell of it") {
+  // A rod tapering from 4 cm to 8 cm across over 80 cm: 5 cm across 20 cm from
+  // the butt, and at most 4 cm of radius anywhere.
+  RoundProfile taper;
+  taper.stations = {{0.0, 0.04}, {0.8, 0.08}};
+  taper.density_kg_m3 = 650;
+  taper.youngs_modulus_Pa = 1.2e10;
+  Design d{Implement::from_profile(taper)};
+  d.impact_from_butt_m = 0.2;
+  d.twistweight_kg_m2 = 2e-4;
+  d.impact_off_axis_m = 0.025;  // the radius there: on its edge
+  CHECK_NOTHROW(evaluate(d, Fidelity::kRigid));
+  d.impact_off_axis_m = -0.0251;
+  CHECK_THROWS_WITH(evaluate(d, Fidelity::kRigid),
+                    Catch::StartsWith("impact/off_axis_m: must land on the implement") &&
+                        Catch::Contains("0.025 m"));
+  // All the mass 4 cm off the axis is the most twistweight it can have.
+  const double mass = d.implement.mass_properties().mass_kg;
+  d.impact_off_axis_m = 0.0;
+  d.twistweight_kg_m2 = mass * 0.04 * 0.04 * 1.0001;
+  CHECK_THROWS_WITH(evaluate(d, Fidelity::kRigid),
+                    Catch::StartsWith("implement/twistweight_kg_m2"));
+  d.twistweight_kg_m2 = mass * 0.04 * 0.04 * 0.9999;
+  CHECK_NOTHROW(evaluate(d, Fidelity::kRigid));
+}
+
 TEST_CASE(
     "The arrays and the cases give the same twisted outcomes, and no twist given is zero twist") {
   Design d = racquet_design();
