@@ -379,7 +379,17 @@ std::vector<PointMass> place_point_masses(const std::vector<PointMassSpec>& spec
                             : error.key == "where"    ? spec.where_key
                             : error.key == "off_axis" ? spec.off_axis_key
                                                       : error.key;
-    throw InputError(source, key.empty() ? spec.pointer : spec.pointer + "/" + key, error.what());
+    std::string detail = error.what();
+    // A mass given in grams is refused in grams, the range in kg beside it.
+    const auto spelling = find_spelling("implement/point_masses/N", spec.mass_key);
+    if (error.key == "mass" && spelling && spec.mass_key != "mass_kg") {
+      const double per_g = spelling->scale.to_si(1.0);
+      const double given = spec.described.mass_kg / per_g;
+      detail = "must be in [0, " + significant(kMaxMass_kg / per_g, 4) + "] " +
+               std::string(unit_of_key(spec.mass_key)) + " (0 to " + significant(kMaxMass_kg, 4) +
+               " kg), got " + significant(given, 6) + " " + std::string(unit_of_key(spec.mass_key));
+    }
+    throw InputError(source, key.empty() ? spec.pointer : spec.pointer + "/" + key, detail);
   }
 }
 
