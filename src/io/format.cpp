@@ -652,8 +652,11 @@ std::string evaluation_report(const DesignFile& file, const Evaluation& e, Forma
           ? " The mass distribution for the modes was fitted to the specs (quadratic density)."
           : "");
   md += "| quantity | value | unit | output (SI in JSON and CSV) |\n|---|---:|---|---|\n";
+  // A bat has no string bed to ask for.
+  const bool strung = can_be_strung(file.design);
   for (const OutputSpec& output : output_specs()) {
     if (output.needs_modes && !output.value(e)) continue;
+    if (!strung && of_the_string_bed(output) && !output.value(e)) continue;
     // A rig's table holds what the rig gives (the rest is the player's).
     if (is_rig(e.support) && !given_on_rig(output.name, e.support.kind)) continue;
     const auto value = output.value(e);

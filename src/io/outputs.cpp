@@ -347,4 +347,12 @@ const OutputSpec* find_output(std::string_view name) {
   return nullptr;
 }
 
+bool of_the_string_bed(const OutputSpec& output) {
+  return output.name.starts_with("string_bed_") || output.name.starts_with("peak_string_");
+}
+
+bool can_be_strung(const Design& design) {
+  return design.head || design.strings || !design.implement.profile();
+}
+
 }  // namespace sweetspot::io

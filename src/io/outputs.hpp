@@ -32,6 +32,15 @@ struct OutputSpec {
   std::string_view absent_because(const Evaluation& e) const;
 };
 
+// Whether `output` is the string bed's (its tension, stiffness, ring, the
+// strings' deflection).
+bool of_the_string_bed(const OutputSpec& output);
+
+// Whether a design can have a string bed at all: not a round implement given
+// by its profile (a bat) without head or strings, whose tables for people
+// leave the string bed's outputs out rather than ask for strings.
+bool can_be_strung(const Design& design);
+
 // Whether an evaluation on a rig of `kind` gives the output `name`: the
 // ball's impact on the rig and the implement's own numbers (none of them on
 // a rigid surface), nothing of the player (hand, forearm, swing, centres of

@@ -740,14 +740,16 @@ std::string frame_html(const Evaluation& e, const std::vector<studies::FramePoin
   return html + "</tbody></table></div></details>\n</section>\n";
 }
 
-// Every output, in people's units.
-std::string outputs_html(const Evaluation& e) {
+// Every output, in people's units (but the string bed's on a bat, `strung`
+// false: io::can_be_strung()).
+std::string outputs_html(const Evaluation& e, bool strung) {
   std::string html =
       "<section id=\"outputs\"><h2>Every number</h2>\n<div class=\"table-wrap\"><table "
       "id=\"all-outputs\"><thead><tr><th>quantity</th><th class=\"num\">value</th><th>unit</th>"
       "<th>output</th></tr></thead><tbody>\n";
   for (const io::OutputSpec& o : io::output_specs()) {
     const auto value = o.value(e);
+    if (!strung && !value && io::of_the_string_bed(o)) continue;
     const io::AxisQuantity axis = output_axis(o);
     const std::size_t open = axis.label.rfind(" (");
     const std::string words = open == std::string::npos ? axis.label : axis.label.substr(0, open);
@@ -809,7 +811,7 @@ std::string design_html_report(const io::DesignFile& file, const io::Json& docum
   const std::vector<io::RenderedSvg> svgs = io::render_svgs(plots);
   html += frame_html(e, page.curve, page.span, std::span(svgs).first(4));
   html += maps_html(file, page.maps, std::span(svgs).subspan(4));
-  html += outputs_html(e);
+  html += outputs_html(e, io::can_be_strung(file.design));
   html += inputs_html(file, document, e);
   return html + html_page_close(fmt::format(
                     "Computed by sweetspot ({} model) from <code>{}</code>, after R. Cross, "

@@ -169,6 +169,10 @@ TEST_CASE("A bat's page draws no string bed and calls it neither a racquet nor s
   CHECK(html.find("The share of the force of the impact that reaches the wrist") !=
         std::string::npos);
   CHECK(html.find("from the tip of the implement.") != std::string::npos);
+  // Every number but the string bed's, which a bat cannot have.
+  CHECK(html.find("id=\"out-string_bed_tension_N\"") == std::string::npos);
+  CHECK(html.find("id=\"out-peak_string_deflection_m\"") == std::string::npos);
+  CHECK(html.find("id=\"out-peak_wrist_force_N\"") != std::string::npos);
 }
 
 // A page that needs nothing but itself: no script, nothing fetched (the
