@@ -217,6 +217,14 @@ TuneTargets parse_tune_targets(std::string_view text) {
           fmt::format("item {}: the {} is given twice (give each target once)", item, stem));
     }
     slot = spelling->scale.to_si(*value);
+    // A mass no design file holds is no target: lead cannot be written for it.
+    if (stem == "mass" && !(*slot <= kMaxMass_kg)) {
+      const double per_unit = spelling->scale.to_si(1.0);
+      throw std::invalid_argument(fmt::format(
+          "item {}: {} must be at most {} {} ({} kg, the most an implement may weigh), got {}",
+          item, name, io::significant(kMaxMass_kg / per_unit, 4), io::unit_of_key(name),
+          io::significant(kMaxMass_kg, 4), io::one_line(value_text)));
+    }
   }
   return targets;
 }
@@ -573,6 +581,13 @@ TuneResult tune(const io::DesignFile& design, const TuneTargets& given,
           io::significant(L * 100.0, 4), io::significant(limit, 4), io::significant(points, 6)));
     }
     targets.balance_from_butt_m = io::balance_from_points_head_light(L, points);
+  }
+  if (const double L = design.design.implement.length_m();
+      targets.balance_from_butt_m && !(*targets.balance_from_butt_m <= L)) {
+    throw std::invalid_argument(fmt::format(
+        "--target: the balance must lie on the racquet, at most its length ({} cm) "
+        "from the butt, got {} cm",
+        io::significant(L * 100.0, 4), io::significant(*targets.balance_from_butt_m * 100.0, 6)));
   }
   check_targets(design, targets, places);
   const PlacedColumns placed = place_all(design, places);

@@ -249,6 +249,12 @@ TEST_CASE("Bad targets and places are refused with the item named") {
   CHECK_THROWS_WITH(parse_tune_targets("mass_g=330,mass_kg=0.33"), Catch::Contains("given twice"));
   CHECK_THROWS_WITH(parse_tune_targets("balance_pts_hl=4,balance_cm=32"),
                     Catch::Contains("item 2: the balance is given twice"));
+  CHECK_THROWS_WITH(parse_tune_targets("mass_g=1e12"),
+                    Catch::Contains("item 1: mass_g must be at most 1e+09 g"));
+  CHECK_NOTHROW(parse_tune_targets("mass_kg=1e6"));
+  CHECK_THROWS_WITH(
+      tune(club(), parse_tune_targets("balance_cm=100"), parse_lead_places("12,grip")),
+      Catch::Contains("the balance must lie on the racquet"));
   CHECK_THROWS_WITH(parse_tune_targets("balance_pts_hl=nan"),
                     Catch::Contains("balance_pts_hl must be a finite number, got nan"));
   CHECK_THROWS_WITH(
