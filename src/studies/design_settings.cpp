@@ -65,15 +65,18 @@ std::vector<Setting> parse_settings(const std::vector<std::string>& items) {
   return settings;
 }
 
-void apply_settings(io::Json& document, const std::vector<Setting>& settings) {
+void apply_settings(io::Json& document, const std::vector<Setting>& settings,
+                    const std::string& file) {
+  const std::string source =
+      file.empty() ? std::string(kSource) : file + " " + std::string(kSource);
   for (const Setting& setting : settings) {
     try {
       io::override_field(document, setting.pointer, setting.value);
     } catch (const io::PathError& e) {
-      throw io::InputError(std::string(kSource), e.pointer(),
+      throw io::InputError(source, e.pointer(),
                            fmt::format("{}: {}", shown(setting.text), e.detail()));
     } catch (const io::Json::exception&) {
-      throw io::InputError(std::string(kSource), setting.pointer,
+      throw io::InputError(source, setting.pointer,
                            fmt::format("{}: the design holds a value on its path that is not an "
                                        "object",
                                        shown(setting.text)));
@@ -93,7 +96,7 @@ io::DesignFile read_design(io::Json document, const std::string& file,
   for (const Setting& setting : settings) items += (items.empty() ? "" : ", ") + setting.text;
   bool named = false;
   for (const Setting& setting : settings) named = named || setting.field == "name";
-  apply_settings(document, settings);
+  apply_settings(document, settings, file);
   std::string source = file;
   for (const Setting& setting : settings) source += " --set " + setting.text;
   io::DesignFile design = io::read_design(document, source);

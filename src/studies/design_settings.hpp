@@ -29,7 +29,10 @@ std::vector<Setting> parse_settings(const std::vector<std::string>& items);
 
 // `document` with every setting written over it, the other spellings of the
 // same quantity removed beside each (io::override_field).
-void apply_settings(io::Json& document, const std::vector<Setting>& settings);
+// `file` names the design in a refusal ("racquet.json --set: ..."), for a
+// command that reads several.
+void apply_settings(io::Json& document, const std::vector<Setting>& settings,
+                    const std::string& file = "");
 
 // The design file at `path` with `settings` applied. With settings, its
 // source (in every message) is "PATH --set ITEM ..." and its name the
