@@ -261,19 +261,24 @@ class Evaluator {
             continue;
           }
           const std::string_view cell = trimmed(text);
-          double value = 0.0;
-          const auto [end, error] = std::from_chars(cell.data(), cell.data() + cell.size(), value);
+          double number = 0.0;
+          const auto [end, error] = std::from_chars(cell.data(), cell.data() + cell.size(), number);
+          io::Json value = number;
           if (error != std::errc() || end != cell.data() + cell.size() || cell.empty()) {
-            throw io::InputError(where, pointers_[j],
-                                 cell_problem(j, "expected a number, got " + shown_cell(text)));
-          }
-          if (!std::isfinite(value)) {
+            // A lead's clock or a gauge by its word ("3/9", "throat", "16L"), as
+            // --set and the design file take it; the design read says if it is one.
+            if (cell.empty() || !takes_a_word(column.field)) {
+              throw io::InputError(where, pointers_[j],
+                                   cell_problem(j, "expected a number, got " + shown_cell(text)));
+            }
+            value = std::string(cell);
+          } else if (!std::isfinite(number)) {
             throw io::InputError(
                 where, pointers_[j],
                 cell_problem(j, "expected a finite number, got " + shown_cell(text)));
           }
           try {
-            columns_[j].apply(document, value);
+            columns_[j].apply(document, std::move(value));
           } catch (const io::PathError& e) {
             row.bad_column = j + 1;
             row.bad_column_detail = e.detail();

@@ -78,6 +78,10 @@ bool is_text_field(std::string_view field) {
          field == "support" || field == "ball.contact.law" || field == "hand.grip";
 }
 
+bool takes_a_word(std::string_view field) {
+  return field.ends_with(".clock") || field.ends_with(".gauge");
+}
+
 // The header, checked once: every column a design field (or, with a map,
 // mapped onto one or passed through), none given twice, in two units or
 // forms, or inside another; every column of the map in the header.

@@ -54,6 +54,10 @@ std::string design_field_problem(std::string_view field);
 // Columns that hold text, not numbers.
 bool is_text_field(std::string_view field);
 
+// A number or a word: a lead's clock ("throat", "3/9") or a trade gauge
+// ("16L"), as the design file and --set take them.
+bool takes_a_word(std::string_view field);
+
 // A column map written inline, "weight=implement.mass_g,length=implement.length_in".
 // Throws InputError naming `source` and the item for an item without '=', an
 // empty name or field, or a column mapped twice.

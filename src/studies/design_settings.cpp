@@ -28,9 +28,7 @@ io::Json setting_value(const std::string& field, std::string_view text, const st
   io::Json value = io::Json::parse(cell, nullptr, false);
   // A trade gauge that is not a number ("16L"); a lead's clock by its word
   // ("throat", "handle"), as the design file's (a JSON string, quoted, too).
-  if (value.is_discarded() && (field.ends_with(".gauge") || field.ends_with(".clock")) &&
-      !cell.empty())
-    return std::string(cell);
+  if (value.is_discarded() && takes_a_word(field) && !cell.empty()) return std::string(cell);
   if (value.is_string() && field.ends_with(".clock")) return value;
   if (value.is_discarded() || value.is_string() || value.is_null()) {
     throw io::InputError(std::string(kSource), "",
