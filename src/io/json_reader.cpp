@@ -531,7 +531,12 @@ void check_list_indices(const Json& document, Json::json_pointer at) {
     }
     if (here->is_array()) {
       const auto index = index_of(*token);
-      if (!index) return;  // not an index: nlohmann's to say
+      if (!index && *token == "-") return;  // RFC 6901's next entry: nlohmann's to append
+      if (!index) {
+        throw PathError(
+            walked.to_string(),
+            "a list's entry is named by its index, a whole number from 0, got \"" + *token + "\"");
+      }
       const std::size_t size = here->size();
       if (*index > size) {
         const std::string n = std::to_string(size);

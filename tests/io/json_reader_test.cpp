@@ -114,6 +114,10 @@ TEST_CASE("An override sets an entry of a list or adds the next one, and no furt
     CHECK(e.detail() == "the list has 2 entries (0 to 1): set one of them, or add the next, 2");
   }
   CHECK(design == before);  // nothing half-set
+  CHECK_THROWS_MATCHES(
+      override_field(design, "/implement/point_masses/0x1/mass_g", 3), PathError,
+      Catch::Matchers::Message("/implement/point_masses/0x1: a list's entry is named by its index, "
+                               "a whole number from 0, got \"0x1\""));
   // A list the design does not have is empty: its entry 0 makes it, entry 1 is refused,
   // whether its object is there or not.
   for (const char* base : {R"({"implement": {"mass_kg": 0.3}})", R"({})"}) {
