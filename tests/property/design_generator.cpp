@@ -268,7 +268,9 @@ void draw_point_masses(Drawer& draw, Json& implement, double L, bool head) {
                                    : draw.within(0.0, 12.0, 0.0, 12.0);
     } else if (where == 4) {
       Json clock = Json::array();
-      if (rng.chance(0.6)) {
+      if (rng.chance(0.2)) {
+        clock = "3/9";  // the pair as tune --places writes it
+      } else if (rng.chance(0.6)) {
         clock = Json::array({3, 9});
       } else {
         const int count = rng.integer(1, 12);
@@ -582,7 +584,8 @@ std::optional<Truth> read_truth(const Json& document) {
             {from_butt ? *from_butt : L - *from_tip, *m, si(p, "off_axis", kLength).value_or(0.0)});
         continue;
       }
-      if (clock->is_string() && clock->get<std::string>() != "throat") {
+      const bool joined = clock->is_string() && clock->get<std::string>() == "3/9";
+      if (clock->is_string() && clock->get<std::string>() != "throat" && !joined) {
         // Under the butt cap ("handle", "butt") or the grip ("grip"): head_geometry.hpp.
         const double x =
             clock->get<std::string>() == "grip" ? kUnderGripFromButt_m : kHandleWeightFromButt_m;
@@ -592,6 +595,7 @@ std::optional<Truth> read_truth(const Json& document) {
       std::vector<double> hours;
       if (clock->is_number()) hours.push_back(clock->get<double>());
       if (clock->is_string() && clock->get<std::string>() == "throat") hours.push_back(6.0);
+      if (joined) hours = {3.0, 9.0};
       if (clock->is_array()) {
         for (const Json& h : *clock) {
           if (!h.is_number()) return std::nullopt;
