@@ -185,9 +185,7 @@ class Rows {
       }
     } catch (const io::InputError& e) {
       fail(row, e.what());
-      const bool shape_fault = e.detail().starts_with("unknown key") ||
-                               e.detail().starts_with("expected a JSON object") ||
-                               e.detail().starts_with("expected an array");
+      const bool shape_fault = e.shape_fault();
       for (std::size_t j = 0; shape_fault && j < pointers_.size(); ++j) {
         if (pointers_[j] == e.pointer() || pointers_[j].starts_with(e.pointer() + "/")) {
           note_bad_column(j, e.detail());

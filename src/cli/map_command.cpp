@@ -44,7 +44,7 @@ void MapCommand::add_to(CLI::App& app) {
   command
       ->add_option("--threads", threads,
                    "Threads to share the grid's columns (default: all cores); the map is the same")
-      ->check(CLI::Range(1, 1024));
+      ->check(whole_in(1, 1024));
   command->add_flag("--quiet,-q", quiet, "No progress on standard error");
   add_output_option(command, "--plot", plot,
                     "Also render heat maps: FILE-power.png, FILE-shock.png (and FILE-feel.png)");

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/checks.hpp"
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
 #include "io/atomic_file.hpp"
@@ -39,7 +40,7 @@ void OptimizeCommand::add_to(CLI::App& app) {
                    "Threads for independent evaluations (differences, samples of the box) when "
                    "one costs over 0.1 ms, as the modal and collision models do (default: all "
                    "cores); the search and its answer are the same whatever the threads")
-      ->check(CLI::Range(1, optimizer::kMaxThreads));
+      ->check(whole_in(1, optimizer::kMaxThreads));
   command->footer(
       "Examples:\n"
       "  sweetspot optimize designs/studies/1-lowest-wrist-force-table1-ranges.json\n"
@@ -146,7 +147,7 @@ void SweepCommand::add_to(CLI::App& app) {
   command
       ->add_option("--threads", threads,
                    "Threads to use (default: all cores); rows stay in grid order")
-      ->check(CLI::Range(1, 1024));
+      ->check(whole_in(1, 1024));
 }
 
 int SweepCommand::run() const {

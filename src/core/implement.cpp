@@ -9,6 +9,7 @@
 
 #include "core/check.hpp"
 #include "core/rigid_kernel.hpp"
+#include "sweetspot/design.hpp"
 #include "sweetspot/errors.hpp"
 
 namespace sweetspot {
@@ -170,7 +171,7 @@ Implement Implement::paper_racquet(double length_m, double mass_kg,
   detail::require_positive("length_m", length_m, "m");
   detail::require_positive("mass_kg", mass_kg, "kg");
   detail::require_in_range("length_m", length_m, 0.0, kMaxLength_m, "m");
-  detail::require_in_range("mass_kg", mass_kg, 0.0, kMaxMass_kg, "kg");
+  detail::require_in_range("mass_kg", mass_kg, kMinImplementMass_kg, kMaxMass_kg, "kg");
   detail::require_positive("head_to_handle_mass_ratio", head_to_handle_mass_ratio, "");
   // The inertia M L^2 / 12 must be a normal number: name the input that makes
   // it underflow rather than the halves built from it.
@@ -204,7 +205,9 @@ Implement Implement::from_specs(const IndustrySpecs& specs, std::vector<PointMas
   detail::require_positive("length_m", L, "m");
   detail::require_positive("mass_kg", M, "kg");
   detail::require_in_range("length_m", L, 0.0, kMaxLength_m, "m");
-  detail::require_in_range("mass_kg", M, 0.0, kMaxMass_kg, "kg");
+  // The lightest implement the model was verified for (design.hpp): a lighter
+  // one's inertia would reach the underflow of the numbers it is built from.
+  detail::require_in_range("mass_kg", M, kMinImplementMass_kg, kMaxMass_kg, "kg");
   if (!std::isfinite(B) || B <= 0.0 || B >= L) {
     throw FieldError("balance_from_butt_m", "must lie inside the length (0, " +
                                                 detail::format_number(L) + ") m, got " +

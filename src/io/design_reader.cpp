@@ -6,6 +6,7 @@
 #include <charconv>
 #include <cmath>
 #include <iterator>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 #include <tuple>
@@ -68,7 +69,10 @@ std::optional<std::string> range_in_file_unit(const std::invalid_argument& error
   const double per_unit = range.value / given;  // SI per file unit
   const std::string unit(unit_of_key(user_key));
   const std::string si_unit(unit_of_key(si_key));
-  if (!(std::isfinite(per_unit) && per_unit > 0.0) || unit.empty() || si_unit.empty())
+  // A subnormal value has lost the digits the ratio needs (1e-320 g is not
+  // 1e-323 kg to three figures).
+  if (!(std::isfinite(per_unit) && per_unit > 0.0) || unit.empty() || si_unit.empty() ||
+      !(std::fabs(range.value) >= std::numeric_limits<double>::min()))
     return std::nullopt;
   const auto in_unit = [&](double si) { return significant(si / per_unit, 4); };
   std::string expected;
@@ -492,6 +496,13 @@ ImplementRead read_implement(const Json& document, const std::string& source, Ke
   if (it == document.end()) keys = nullptr;  // not the file's: no key of it to name
   ObjectReader r(given, "/implement", "implement", source, keys);
   r.check_known(design_keys("implement"));
+  // Every key left unread is the implement's (check_known), of another form
+  // than the one read: a second implement, not a key nobody knows.
+  const auto given_one_way = [](std::string_view form) {
+    return std::string(kAnotherFormsKey) + " the implement than its " + std::string(form) +
+           ": give it one way (its sections, its profile, length and mass with "
+           "head_to_handle_mass_ratio, or a spec sheet's length, mass, balance and swingweight)";
+  };
   const std::vector<PointMassSpec> point_specs = read_point_masses(r, source, keys);
   const HeadRead head = read_head(r);
   std::vector<PointMass> points;
@@ -516,7 +527,7 @@ ImplementRead read_implement(const Json& document, const std::string& source, Ke
       const RoundProfile profile = read_profile(r, source, keys);
       static const std::vector<std::string> kKeys =
           with_head_keys({"profile", "density_kg_m3", "youngs_modulus", "wall", "point_masses"});
-      r.finish(kKeys);
+      r.finish(kKeys, given_one_way("profile"));
       const double length_m = profile.stations.back().from_butt_m;
       if (std::isfinite(length_m) && length_m > 0.0) place(length_m);
       if (described) {
@@ -540,7 +551,7 @@ ImplementRead read_implement(const Json& document, const std::string& source, Ke
         sections.push_back(read_section(s));
       }
       static const std::vector<std::string> kKeys = with_head_keys({"sections", "point_masses"});
-      r.finish(kKeys);
+      r.finish(kKeys, given_one_way("sections"));
       double total_length_m = 0.0;
       for (const Section& section : sections) total_length_m += section.length_m;
       if (std::isfinite(total_length_m) && total_length_m > 0.0) place(total_length_m);
@@ -560,7 +571,7 @@ ImplementRead read_implement(const Json& document, const std::string& source, Ke
       const double ratio = *r.number("head_to_handle_mass_ratio");
       static const std::vector<std::string> kKeys =
           with_head_keys({"length", "mass", "head_to_handle_mass_ratio", "point_masses"});
-      r.finish(kKeys);
+      r.finish(kKeys, given_one_way("head_to_handle_mass_ratio"));
       place(*length);
       if (described) {
         *described = ImplementDescription{.form = ImplementDescription::Form::kHeadToHandleRatio,
@@ -599,7 +610,7 @@ ImplementRead read_implement(const Json& document, const std::string& source, Ke
       r.fail("", "missing swingweight_kg_cm2 (with the balance it fixes the inertia)");
     static const std::vector<std::string> kKeys =
         with_head_keys({"length", "mass", "balance", "swingweight", "point_masses"});
-    r.finish(kKeys);
+    r.finish(kKeys, given_one_way("balance and swingweight"));
     place(*length);
     if (described) {
       *described = ImplementDescription{.form = ImplementDescription::Form::kSpecs,

@@ -44,6 +44,11 @@ InputError::InputError(std::string source, std::string pointer, std::string deta
       pointer_(std::move(pointer)),
       detail_(std::move(detail)) {}
 
+bool InputError::shape_fault() const {
+  return detail_.starts_with("unknown key") || detail_.starts_with(kAnotherFormsKey) ||
+         detail_.starts_with("expected a JSON object") || detail_.starts_with("expected an array");
+}
+
 bool InputError::model_refused() const {
   if (!nested_ptr()) return false;
   try {

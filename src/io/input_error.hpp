@@ -29,12 +29,20 @@ class InputError : public std::runtime_error, public std::nested_exception {
   const std::string& source() const { return source_; }
   const std::string& pointer() const { return pointer_; }
   const std::string& detail() const { return detail_; }
+  // Whether the design cannot hold the value at its pointer at all (a key the
+  // object does not know, or knows only in another form of it; a number where
+  // it has an object or a list): a catalogue column's fault, not its row's.
+  bool shape_fault() const;
 
  private:
   std::string source_;
   std::string pointer_;
   std::string detail_;
 };
+
+// How the detail of a key of another form of its object begins ("balance_cm"
+// beside an implement's sections): InputError::shape_fault() knows it.
+inline constexpr std::string_view kAnotherFormsKey = "belongs to another way of giving";
 
 // A file that could not be read to its end (exit status 1: not the input's
 // fault). what() is "SOURCE: DETAIL", one line as for InputError.

@@ -892,10 +892,11 @@ const Json* ObjectReader::child(std::string_view key) {
   return &*it;
 }
 
-void ObjectReader::finish(const std::vector<std::string>& expected) const {
+void ObjectReader::finish(const std::vector<std::string>& expected,
+                          std::string_view why_not) const {
   for (const auto& [key, value] : object_.items()) {
     if (std::find(read_.begin(), read_.end(), key) == read_.end())
-      fail(key, unknown_key_detail(key, expected));
+      fail(key, why_not.empty() ? unknown_key_detail(key, expected) : std::string(why_not));
   }
 }
 

@@ -214,8 +214,9 @@ class ObjectReader {
   void record(std::string_view canonical_key, std::string_view key);
 
   // Throws for any key not read (an unknown key), naming the expected keys
-  // (unknown_key_detail()).
-  void finish(const std::vector<std::string>& expected) const;
+  // (unknown_key_detail()); or, when `why_not` is given, saying that (a key
+  // the object knows but this form of it does not take).
+  void finish(const std::vector<std::string>& expected, std::string_view why_not = {}) const;
   // Throws for any key not in `known` (every key the object may hold, in any
   // form), before a missing key is complained of: a misspelt key is named.
   void check_known(const std::vector<std::string>& known) const;

@@ -333,9 +333,7 @@ class Evaluator {
           row.error = io::InputError(e.source(), e.pointer(), cell_problem(j, e.detail())).what();
         }
       }
-      const bool shape_fault = e.detail().starts_with("unknown key") ||
-                               e.detail().starts_with("expected a JSON object") ||
-                               e.detail().starts_with("expected an array");
+      const bool shape_fault = e.shape_fault();
       if (csv_ && !row.bad_column && shape_fault) {
         // A field the design does not have, or a number where the design has
         // an object or a list, is the header's fault, not the row's.

@@ -429,6 +429,33 @@ bool has(const std::string& text, const std::string& part) {
 
 }  // namespace
 
+TEST_CASE("A key of another way of giving the implement is named as that, not as unknown") {
+  const std::string sections_and_balance = error_of(R"({"implement": {
+      "sections": [{"length_cm": 68.58, "mass_g": 305}], "balance_cm": 32.5}})");
+  CHECK(has(sections_and_balance,
+            "/implement/balance_cm: belongs to another way of giving the implement than its "
+            "sections: give it one way"));
+  CHECK_FALSE(has(sections_and_balance, "unknown key"));
+  CHECK(has(error_of(R"({"implement": {"length_in": 27, "mass_g": 305, "balance_cm": 32.5,
+      "swingweight_kg_cm2": 320, "head_to_handle_mass_ratio": 0.8}})"),
+            "/implement/balance_cm: belongs to another way of giving the implement than its "
+            "head_to_handle_mass_ratio"));
+  CHECK(has(error_of(R"({"implement": {"length_in": 27, "mass_g": 305, "balance_cm": 32.5,
+      "swingweight_kg_cm2": 320, "density_kg_m3": 640}})"),
+            "/implement/density_kg_m3: belongs to another way of giving the implement than its "
+            "balance and swingweight"));
+}
+
+TEST_CASE("A mass too small for its digits is refused in SI, not in a unit its ratio garbles") {
+  // 1e-320 g is a subnormal 1e-323 kg: the ratio of the two is 0.000988, not 0.001.
+  const std::string tiny = error_of(R"({"implement": {"length_in": 27, "mass_g": 1e-320,
+      "balance_cm": 32.5, "swingweight_kg_cm2": 320}})");
+  CHECK(has(tiny, "/implement/mass_g: must be in [0.001, 1e+06] kg"));
+  CHECK(has(error_of(R"({"implement": {"length_in": 27, "mass_g": 0.5, "balance_cm": 32.5,
+      "swingweight_kg_cm2": 320}})"),
+            "/implement/mass_g: must be in [1, 1e+09] g (0.001 to 1e+06 kg), got 0.5 g"));
+}
+
 TEST_CASE(
     "A misspelt key is named with the keys it may have meant, before any missing key is "
     "complained of") {

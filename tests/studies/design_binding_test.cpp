@@ -356,7 +356,9 @@ TEST_CASE("A column the base's implement form does not have is the header's erro
     options.compiled = compiled;
     CHECK_THROWS_WITH(
         batch_output(catalogue, options),
-        Catch::StartsWith("catalogue.csv:1: column 2 \"implement.balance_cm\": unknown key"));
+        Catch::StartsWith("catalogue.csv:1: column 2 \"implement.balance_cm\": belongs to "
+                          "another way of giving the implement than its "
+                          "head_to_handle_mass_ratio"));
   }
 }
 
