@@ -170,7 +170,8 @@ void EvaluateCommand::add_to(CLI::App& app) {
           "--units", units,
           "si: CSV and JSON in SI only (stable keys for programs); people: also a "
           "column (CSV) or an outputs_people key (JSON) in cm, g, kg·cm², ms for each "
-          "output in m, kg, kg m^2, s. Markdown is always in people's units. Not with --batch")
+          "output in m, kg, kg m^2, s, and lb for a string tension in N. Markdown is always in "
+          "people's units. Not with --batch")
       ->check(CLI::IsMember({"si", "people"}))
       ->capture_default_str();
   out.add_to(command);

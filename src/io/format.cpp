@@ -368,18 +368,23 @@ PeopleUnit people_unit(std::string_view si_unit) {
   return {si_unit, 1.0, ""};
 }
 
+PeopleUnit people_unit(std::string_view si_unit, std::string_view name) {
+  if (si_unit == "N" && name.ends_with("tension_N")) return {"lb", 1.0 / kPoundForce_N, "_lb"};
+  return people_unit(si_unit);
+}
+
 std::string people_name(std::string_view name, std::string_view si_unit) {
-  const PeopleUnit unit = people_unit(si_unit);
+  const PeopleUnit unit = people_unit(si_unit, name);
   if (unit.suffix.empty()) return std::string(name);
-  for (const std::string_view si_suffix : {"_kg_m2", "_m", "_kg", "_s"}) {
+  for (const std::string_view si_suffix : {"_kg_m2", "_m", "_kg", "_s", "_N"}) {
     if (name.ends_with(si_suffix))
       return std::string(name.substr(0, name.size() - si_suffix.size())) + std::string(unit.suffix);
   }
   return std::string(name) + std::string(unit.suffix);
 }
 
-double people_value(double value_si, std::string_view si_unit) {
-  const double value = value_si * people_unit(si_unit).factor;
+double people_value(double value_si, std::string_view si_unit, std::string_view name) {
+  const double value = value_si * people_unit(si_unit, name).factor;
   if (!std::isfinite(value) || value == 0.0) return value;
   return std::strtod(fmt::format("{:.6g}", value).c_str(), nullptr);
 }
@@ -612,10 +617,10 @@ std::string evaluation_report(const DesignFile& file, const Evaluation& e, Forma
       Json& people = j["outputs_people"];
       people = Json::object();
       for (const OutputSpec& output : output_specs()) {
-        if (people_unit(output.unit).suffix.empty()) continue;
+        if (people_unit(output.unit, output.name).suffix.empty()) continue;
         const auto value = output.value(e);
         people[people_name(output.name, output.unit)] =
-            value ? Json(people_value(*value, output.unit)) : Json(nullptr);
+            value ? Json(people_value(*value, output.unit, output.name)) : Json(nullptr);
       }
     }
     return j.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
@@ -630,10 +635,11 @@ std::string evaluation_report(const DesignFile& file, const Evaluation& e, Forma
     }
     if (people_units) {
       for (const OutputSpec& output : output_specs()) {
-        if (people_unit(output.unit).suffix.empty()) continue;
+        if (people_unit(output.unit, output.name).suffix.empty()) continue;
         header += "," + people_name(output.name, output.unit);
         const auto value = output.value(e);
-        row += "," + (value ? exact(people_value(*value, output.unit)) : std::string());
+        row +=
+            "," + (value ? exact(people_value(*value, output.unit, output.name)) : std::string());
       }
     }
     return header + "\n" + row + "\n";
@@ -660,7 +666,7 @@ std::string evaluation_report(const DesignFile& file, const Evaluation& e, Forma
     // A rig's table holds what the rig gives (the rest is the player's).
     if (is_rig(e.support) && !given_on_rig(output.name, e.support.kind)) continue;
     const auto value = output.value(e);
-    const PeopleUnit unit = people_unit(output.unit);
+    const PeopleUnit unit = people_unit(output.unit, output.name);
     md += fmt::format("| {} | {} | {} | `{}` |\n",
                       md_cell(value ? std::string(output.description)
                                     : std::string(output.description) + "; " +

@@ -70,12 +70,15 @@ struct PeopleUnit {
   std::string_view suffix;  // the key's suffix in that unit ("_cm"), "" when the SI one stands
 };
 PeopleUnit people_unit(std::string_view si_unit);
-// The output's name in people's units: "cop_hand_from_tip_m" -> "cop_hand_from_tip_cm"
-// (the SI name when its unit stays).
+// The same for the output `name`: a string tension in N is read in lb (what a
+// stringing machine is set in), a force in N stays in N.
+PeopleUnit people_unit(std::string_view si_unit, std::string_view name);
+// The output's name in people's units: "cop_hand_from_tip_m" -> "cop_hand_from_tip_cm",
+// "string_bed_tension_N" -> "string_bed_tension_lb" (the SI name when its unit stays).
 std::string people_name(std::string_view name, std::string_view si_unit);
 // A value in people's units for CSV and JSON: six significant digits (the
 // conversion's float noise, 30.676100000000002, is not a digit anyone needs).
-double people_value(double value_si, std::string_view si_unit);
+double people_value(double value_si, std::string_view si_unit, std::string_view name = {});
 // The unit a design key is written in, from its suffix: "tension_lb" -> "lb",
 // "speed_km_h" -> "km/h", "balance_pts_hl" -> "pts head-light"; "" when none.
 std::string_view unit_of_key(std::string_view key);

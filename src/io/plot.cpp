@@ -434,7 +434,7 @@ AxisQuantity output_axis(const OutputSpec& output) {
       break;
     }
   }
-  const PeopleUnit people = people_unit(output.unit);
+  const PeopleUnit people = people_unit(output.unit, output.name);
   return with_unit(words(name), people.unit, people.factor);
 }
 

@@ -914,13 +914,11 @@ std::string comparison_report(const std::vector<ComparedDesign>& designs, io::Fo
     bool any = false;
     for (const ComparedDesign& c : designs) any = any || row.value(c).has_value();
     if (!any) continue;
-    const io::PeopleUnit unit = io::people_unit(row.unit);
-    const bool tension = std::string_view(row.key) == "string_tension_N";
-    md += fmt::format("| {} | {}", row.label, tension ? "lb" : unit.unit);
+    const io::PeopleUnit unit = io::people_unit(row.unit, row.key);
+    md += fmt::format("| {} | {}", row.label, unit.unit);
     for (const ComparedDesign& c : designs) {
       const auto v = row.value(c);
-      md += " | " + (v ? io::significant(tension ? *v / kNewtonsPerPound : *v * unit.factor, 4)
-                       : std::string("—"));
+      md += " | " + (v ? io::significant(*v * unit.factor, 4) : std::string("—"));
     }
     md += " |\n";
   }
@@ -955,9 +953,8 @@ std::string side_by_side_html(const std::vector<ComparedDesign>& designs) {
     bool any = false;
     for (const ComparedDesign& c : designs) any = any || row.value(c).has_value();
     if (!any) continue;
-    const io::PeopleUnit unit = io::people_unit(row.unit);
-    const bool tension = std::string_view(row.key) == "string_tension_N";
-    const std::string shown_unit = tension ? "lb" : std::string(unit.unit);
+    const io::PeopleUnit unit = io::people_unit(row.unit, row.key);
+    const std::string shown_unit(unit.unit);
     html += fmt::format("<tr id=\"cmp-{}\"><td>{}{}<div class=\"means\"><code>{}</code></div></td>",
                         row.key, reports::html_escape(row.label),
                         shown_unit.empty() ? "" : " (" + reports::html_escape(shown_unit) + ")",
@@ -968,7 +965,7 @@ std::string side_by_side_html(const std::vector<ComparedDesign>& designs) {
         html += "<td class=\"num\">—</td>";
         continue;
       }
-      const double people = tension ? *v / kNewtonsPerPound : *v * unit.factor;
+      const double people = *v * unit.factor;
       html += fmt::format("<td class=\"num\">{}<span class=\"si\">{}{}</span></td>",
                           io::significant(people, 4), io::significant(*v, 6),
                           *row.unit ? " " + reports::html_escape(row.unit) : std::string());
@@ -1022,7 +1019,7 @@ std::string wrist_along_frame_html(const std::vector<ComparedDesign>& designs) {
       "The peak force on the wrist for a hit at each point along the frame, one line per "
       "design (" +
           lines +
-          "): the share of the peak force on the strings that reaches the wrist (Cross 2004, Eq. "
+          "): the share of the peak force of the impact that reaches the wrist (Cross 2004, Eq. "
           "11), of the rigid model's force (Eqs. 15-17) or, where a design solves the collision, "
           "the solved one; least at each design's hand-held COP.");
   html +=

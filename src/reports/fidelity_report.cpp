@@ -38,7 +38,7 @@ std::vector<ReportEntry> write_fidelity_report(const std::vector<studies::Fideli
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const studies::FidelityRow& r = rows[i];
     // People's units in the table (ms, mm, cm), SI in the CSV.
-    const io::PeopleUnit unit = io::people_unit(r.unit);
+    const io::PeopleUnit unit = io::people_unit(r.unit, r.output);
     const std::string model = r.model ? io::significant(*r.model * unit.factor, 4) : "—";
     const std::string error = error_percent(r);
     md += fmt::format("| [{}](../designs/{}) | `{}` | {} | {} | {} | {} | {} | {} |\n", r.design,

@@ -483,7 +483,7 @@ std::string outputs_html(const studies::OptimizationResult& r) {
     const io::AxisQuantity axis = output_axis(o);
     const std::string words = words_and_unit(axis).first;
     // In a player's units (g, cm, kg·cm², ms), as the comparison page gives them.
-    const io::PeopleUnit people = io::people_unit(o.unit);
+    const io::PeopleUnit people = io::people_unit(o.unit, o.name);
     const std::string unit(people.unit);
     const auto cell = [&](const std::optional<double>& v) {
       return v ? fmt::format("<td class=\"num\">{}</td>", io::significant(*v * people.factor, 4))

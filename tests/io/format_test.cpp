@@ -293,6 +293,17 @@ TEST_CASE("People's units: cm, g, kg cm^2 and ms, with the key's suffix changed 
   CHECK(exact(people_value(0.306761, "m")) == "30.6761");
 }
 
+TEST_CASE("A string tension is in pounds for people, a force stays in newtons") {
+  // 1 lbf = 4.4482216152605 N exactly (0.45359237 kg x 9.80665 m/s^2).
+  CHECK(people_unit("N", "string_bed_tension_N").unit == "lb");
+  CHECK(people_name("string_bed_tension_N", "N") == "string_bed_tension_lb");
+  CHECK(people_value(0.45359237 * 9.80665 * 52.0, "N", "string_bed_tension_N") == 52.0);
+  CHECK(people_unit("N", "peak_wrist_force_N").unit == "N");
+  CHECK(people_unit("N", "peak_wrist_force_N").suffix.empty());
+  CHECK(people_name("peak_wrist_force_N", "N") == "peak_wrist_force_N");
+  CHECK(people_value(300.0, "N", "peak_wrist_force_N") == 300.0);
+}
+
 TEST_CASE("A design key's unit is read from its suffix, the longest first") {
   CHECK(unit_of_key("tension_lb") == "lb");
   CHECK(unit_of_key("speed_km_h") == "km/h");

@@ -370,7 +370,7 @@ TEST_CASE("The every-number table gives each output in people's units, as evalua
     const std::size_t row = page.find(fmt::format("<tr id=\"out-{}\">", o.name));
     REQUIRE(row != std::string::npos);
     const std::string cells = page.substr(row, page.find("</tr>", row) - row);
-    const io::PeopleUnit unit = io::people_unit(o.unit);
+    const io::PeopleUnit unit = io::people_unit(o.unit, o.name);
     CHECK(cells.find(fmt::format("</td><td>{}</td><td><code>", html_escape(unit.unit))) !=
           std::string::npos);
     for (const char* si : {"kg", "kg·m²", "m", "s"})
