@@ -125,7 +125,8 @@ const std::array kOutputs{
                ""},
     OutputSpec{"impulse_N_s", "N s", "impulse on the implement, m v1 (1 + e_A)",
                [](const Evaluation& e) -> std::optional<double> { return e.impulse_N_s; }, ""},
-    OutputSpec{"peak_impact_force_N", "N", "peak force on the strings, F0 (Eq. 15)",
+    OutputSpec{"peak_impact_force_N", "N",
+               "peak force between ball and implement (on a racquet's strings), F0 (Eq. 15)",
                [](const Evaluation& e) -> std::optional<double> { return e.peak_impact_force_N; },
                ""},
     OutputSpec{"wrist_force_ratio", "",
@@ -199,12 +200,12 @@ const std::array kOutputs{
                true},
     // The shot off a swinging racquet (swing.hpp; Brody; Cross 1999).
     OutputSpec{"racquet_speed_m_s", "m/s",
-               "racquet speed at the impact point, omega (pivot + from butt): the design's swing, "
-               "or the assumed groundstroke",
+               "speed of the implement at the impact point, omega (pivot + from butt): the "
+               "design's swing, or the assumed tennis groundstroke",
                [](const Evaluation& e) -> std::optional<double> { return e.racquet_speed_m_s; },
                ""},
     OutputSpec{"shot_speed_m_s", "m/s",
-               "outgoing ball speed off the swinging racquet, e_A v_in + (1 + e_A) V",
+               "outgoing ball speed off the swinging implement, e_A v_in + (1 + e_A) V",
                [](const Evaluation& e) -> std::optional<double> { return e.shot_speed_m_s; }, ""},
     OutputSpec{
         "shot_speed_km_h", "km/h", "the same in km/h",

@@ -10,14 +10,18 @@ namespace sweetspot::reports {
 namespace {
 
 // "the wrist feels a jolt of 470 N and the ball comes back at 0.42 of its speed"; the
-// first time with "(apparent COR)". Off a swinging racquet, the speed is the one the
-// ball and the strings meet at (the racquet is free during the contact: swing.hpp).
-std::string feel(const Evaluation& e, bool first = false, bool swinging = false) {
+// first time with "(apparent COR)". Off a swinging implement, the speed is the one the
+// ball and the strings (a racquet's) meet at (the implement is free during the contact:
+// swing.hpp).
+std::string feel(const Evaluation& e, bool first = false, bool swinging = false,
+                 bool racquet = true) {
   const std::string wrist =
       e.peak_wrist_force_N == 0.0 || newton_text(e.peak_wrist_force_N) == "0 N"
           ? std::string("the wrist feels no jolt")
           : "the wrist feels a jolt of " + newton_text(e.peak_wrist_force_N);
-  const char* speed = swinging ? "the speed it meets the strings at" : "its speed";
+  const char* speed = !swinging ? "its speed"
+                      : racquet ? "the speed it meets the strings at"
+                                : "the speed it meets the implement at";
   if (ratio_text(e.apparent_cor).starts_with("-")) {
     // e_A < 0: the racquet gives way faster than the ball is pushed back.
     return fmt::format("{} and the ball does not come back: it goes on at {} of {}{}", wrist,
@@ -72,14 +76,16 @@ std::vector<std::string> sweet_spot_sentences(const io::DesignFile& design,
                                               const studies::SweetSpots& spots) {
   std::vector<std::string> sentences;
   const Evaluation& asked = spots.asked.evaluation;
+  const bool racquet = studies::is_racquet(design);
+  const char* thing = racquet ? "racquet" : "implement";
   // 1. Where the sweet spots are, and how far apart.
   if (spots.cop_from_tip_m && spots.node_from_tip_m) {
     sentences.push_back(fmt::format(
         "Held in the hand, this {} has two sweet spots: the centre of percussion, {} from the "
         "tip, where the wrist feels the least jolt, and the node of its fundamental vibration "
         "({:.0f} Hz in the hand), {} from the tip, where the frame vibrates least.",
-        studies::is_racquet(design) ? "racquet" : "implement", cm_text(*spots.cop_from_tip_m),
-        asked.modal->fundamental_hand_Hz, cm_text(*spots.node_from_tip_m)));
+        thing, cm_text(*spots.cop_from_tip_m), asked.modal->fundamental_hand_Hz,
+        cm_text(*spots.node_from_tip_m)));
     const double gap = std::fabs(*spots.cop_from_tip_m - *spots.node_from_tip_m);
     sentences.push_back(cm_text(gap) == "0 cm"
                             ? std::string("The two coincide.")
@@ -91,7 +97,7 @@ std::vector<std::string> sweet_spot_sentences(const io::DesignFile& design,
     sentences.push_back(fmt::format(
         "Held in the hand, this {}'s centre of percussion, where the wrist feels the least jolt, "
         "is {} from the tip.",
-        studies::is_racquet(design) ? "racquet" : "implement", cm_text(*spots.cop_from_tip_m)));
+        thing, cm_text(*spots.cop_from_tip_m)));
     sentences.push_back("The node of least vibration is not located: " + spots.node_missing + ".");
   } else {
     sentences.push_back(
@@ -112,16 +118,16 @@ std::vector<std::string> sweet_spot_sentences(const io::DesignFile& design,
     const Evaluation& cop = spots.cop_hand->evaluation;
     const std::string ball =
         swinging ? fmt::format(
-                       "a ball coming at {} onto the swinging racquet (they meet at {:.3g} "
+                       "a ball coming at {} onto the swinging {} (they meet at {:.3g} "
                        "m/s there)",
-                       speed, cop.incoming_speed_m_s + cop.racquet_speed_m_s)
+                       speed, thing, cop.incoming_speed_m_s + cop.racquet_speed_m_s)
                  : "a ball at " + speed;
-    sentences.push_back(
-        fmt::format("For {}, at the centre of percussion {}.", ball, feel(cop, true, swinging)));
+    sentences.push_back(fmt::format("For {}, at the centre of percussion {}.", ball,
+                                    feel(cop, true, swinging, racquet)));
   }
   if (spots.node_hand) {
-    sentences.push_back(fmt::format("At the node {}.",
-                                    feel(spots.node_hand->evaluation, !spots.cop_hand, swinging)));
+    sentences.push_back(fmt::format(
+        "At the node {}.", feel(spots.node_hand->evaluation, !spots.cop_hand, swinging, racquet)));
   }
   // 3. The point of best rebound (the collision fidelity) slots in here.
   if (spots.best_rebound) {
@@ -132,11 +138,12 @@ std::vector<std::string> sweet_spot_sentences(const io::DesignFile& design,
             ? fmt::format("Nowhere along the strings does the ball come back{}; it goes on "
                           "slowest {} from the tip, where {}.",
                           swinging ? " relative to the racquet" : "",
-                          cm_text(spots.best_rebound->from_tip_m), feel(best, false, swinging))
+                          cm_text(spots.best_rebound->from_tip_m),
+                          feel(best, false, swinging, racquet))
             : fmt::format(
                   "The ball comes back fastest{}, at {:.2g} m/s, {} from the tip, where {}.",
                   swinging ? " relative to the racquet" : "", best.rebound_speed_m_s,
-                  cm_text(spots.best_rebound->from_tip_m), feel(best, false, swinging)));
+                  cm_text(spots.best_rebound->from_tip_m), feel(best, false, swinging, racquet)));
   }
   // 3b. The shot off the swinging racquet (swing.hpp), at its power point.
   if (spots.power_point) {
@@ -186,9 +193,10 @@ std::vector<std::string> sweet_spot_sentences(const io::DesignFile& design,
       spots.centre_of_strings &&
       cm_text(spots.centre_of_strings->from_tip_m) == cm_text(spots.asked.from_tip_m);
   if (spots.centre_of_strings && !asked_is_centre) {
-    sentences.push_back(fmt::format("At the centre of the strings, about {} from the tip, {}.",
-                                    cm_text(spots.centre_of_strings->from_tip_m),
-                                    feel(spots.centre_of_strings->evaluation, false, swinging)));
+    sentences.push_back(
+        fmt::format("At the centre of the strings, about {} from the tip, {}.",
+                    cm_text(spots.centre_of_strings->from_tip_m),
+                    feel(spots.centre_of_strings->evaluation, false, swinging, racquet)));
   }
   // An impact given off the axis alone is placed along it by default.
   const double off_axis_m = asked.impact_off_axis_m;
@@ -208,7 +216,7 @@ std::vector<std::string> sweet_spot_sentences(const io::DesignFile& design,
           : fmt::format("At {} from the tip{} ({}: {}; the tables below are for this one),",
                         cm_text(spots.asked.from_tip_m), off_axis, not_given,
                         spots.asked_provenance);
-  sentences.push_back(fmt::format("{} {}.", where, feel(asked, false, swinging)));
+  sentences.push_back(fmt::format("{} {}.", where, feel(asked, false, swinging, racquet)));
   sentences.push_back(
       "Positions are rounded to 0.5 cm and forces to two figures: the hand's place and the "
       "arm's mass are assumed, not measured.");

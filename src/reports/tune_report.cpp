@@ -141,7 +141,7 @@ std::string markdown(const TunedRacquet& t, double strip_kg) {
         fmt::format("| {} | {:.1f} g{} | {} |\n", where(lead.place), rounded(g, 1), each, strips);
   }
   out += fmt::format("\n{:.1f} g of lead in all.", rounded(r.added_kg * 1e3, 1));
-  if (!t.written.empty()) out += " The tuned racquet is written to " + t.written + ".";
+  if (!t.written.empty()) out += " The tuned design is written to " + t.written + ".";
   out += "\n";
   if (!r.exact) {
     out += "\nWhy:\n\n";

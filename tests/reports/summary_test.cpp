@@ -269,6 +269,23 @@ TEST_CASE("Off a swinging racquet the answer gives the speed ball and strings me
   CHECK_FALSE(contains(text, "For a ball at 0 m/s"));
 }
 
+TEST_CASE("Off a swinging bat the answer speaks of the implement, not of a racquet's strings") {
+  // The same swing on a beam of two sections with no head and no strings (the
+  // paper's beam): it has no strings for the ball to meet.
+  const io::DesignFile design = design_from(R"({
+    "implement": {"sections": [{"length_m": 0.72, "mass_kg": 0.328}]},
+    "frame": {"fundamental_free_Hz": 193},
+    "swing": {"angular_speed_rad_s": 14, "pivot_beyond_butt_cm": 60}, "ball": {"speed_m_s": 0}})");
+  const auto spots = studies::find_sweet_spots(design, evaluate(design.design), 1e-6);
+  const std::string text = sweet_spot_paragraph(design, spots);
+  INFO(text);
+  REQUIRE(spots.cop_hand);
+  CHECK(contains(text, "onto the swinging implement (they meet at"));
+  CHECK(contains(text, "of the speed it meets the implement at"));
+  CHECK_FALSE(contains(text, "racquet"));
+  CHECK_FALSE(contains(text, "strings"));
+}
+
 }  // namespace sweetspot::reports
 
 namespace sweetspot::reports {
