@@ -168,7 +168,7 @@ void validate(const Design& d) {
     outline->semi_width_m += d.head->hoop_width_m;
   }
   // A round implement given by its profile (a bat) is as wide as its
-  // diameter: its widest for the twist, its own at the impact for a hit.
+  // diameter: its widest bounds the twistweight and where lead can sit.
   const std::optional<RoundProfile>& profile = d.implement.profile();
   const bool round = !outline && profile && !profile->stations.empty();
   double widest_radius_m = 0.0;
@@ -194,23 +194,32 @@ void validate(const Design& d) {
                            detail::format_number(twistweight) + " kg m^2");
     }
   }
+  // Lead sits on the implement: within its head's outer edge, a round
+  // implement's widest radius, or the widest head the rules allow.
+  const std::vector<PointMass>& points = d.implement.point_masses();
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (!(std::abs(points[i].off_axis_m) <= half_width_m)) {
+      throw FieldError(detail::indexed("implement/point_masses", i, "off_axis_m"),
+                       "must sit on the implement, within " +
+                           detail::format_significant(half_width_m) + " m of the axis (" +
+                           (outline ? std::string("its head's outer edge")
+                            : round ? std::string("its widest radius, by its profile")
+                                    : std::string("the widest head the rules allow")) +
+                           "), got " + detail::format_number(points[i].off_axis_m) + " m");
+    }
+  }
   if (const double y = d.impact_off_axis_m; y != 0.0 && round) {
-    // The radius at the impact, between the profile's stations.
-    const std::vector<ProfileStation>& st = profile->stations;
-    double radius_m = 0.5 * st.back().diameter_m;
-    for (std::size_t k = 1; k < st.size(); ++k) {
-      if (d.impact_from_butt_m > st[k].from_butt_m) continue;
-      const double span = st[k].from_butt_m - st[k - 1].from_butt_m;
-      const double t = span > 0.0 ? (d.impact_from_butt_m - st[k - 1].from_butt_m) / span : 1.0;
-      radius_m = 0.5 * (st[k - 1].diameter_m + t * (st[k].diameter_m - st[k - 1].diameter_m));
-      break;
-    }
-    if (!(std::abs(y) <= radius_m)) {
-      throw FieldError("impact/off_axis_m",
-                       "must land on the implement (within its radius at this impact, " +
-                           detail::format_significant(radius_m) + " m, by its profile), got " +
-                           detail::format_number(y) + " m");
-    }
+    // A round surface's normal passes through its axis: a ball hitting it off
+    // the axis is pushed through the axis, and is deflected (G. S. Sawicki,
+    // M. Hubbard and W. J. Stronge, Am. J. Phys. 71, 1152, 2003; R. Cross and
+    // A. M. Nathan, Am. J. Phys. 74, 896, 2006), where the twist model turns a
+    // flat face by F0 |y|. Only friction would roll it, which is not modelled.
+    throw FieldError("impact/off_axis_m",
+                     "must be 0 on a round implement (given by its profile, without a head): "
+                     "its surface pushes the ball through its axis, so a hit off the axis "
+                     "deflects the ball rather than twisting the implement, which this model "
+                     "of a flat face does not solve; got " +
+                         detail::format_number(y) + " m");
   } else if (y != 0.0) {
     const bool on_head = outline ? on_string_bed(*outline, d.impact_from_butt_m, y)
                                  : std::abs(y) <= kMaxHeadHalfWidth_m;

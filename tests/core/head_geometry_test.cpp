@@ -221,9 +221,8 @@ TEST_CASE("An impact off the axis without a polar inertia is refused, naming imp
   CHECK_THROWS_WITH(evaluate(d), Catch::StartsWith("impact/off_axis_m"));
 }
 
-TEST_CASE("A round implement is hit within its radius and twists at most as a shell of it") {
-  // A rod tapering from 4 cm to 8 cm across over 80 cm: 5 cm across 20 cm from
-  // the butt, and at most 4 cm of radius anywhere.
+TEST_CASE("A round implement is not hit off its axis, and twists at most as a shell of it") {
+  // A rod tapering from 4 cm to 8 cm across over 80 cm: at most 4 cm of radius.
   RoundProfile taper;
   taper.stations = {{0.0, 0.04}, {0.8, 0.08}};
   taper.density_kg_m3 = 650;
@@ -231,12 +230,11 @@ TEST_CASE("A round implement is hit within its radius and twists at most as a sh
   Design d{Implement::from_profile(taper)};
   d.impact_from_butt_m = 0.2;
   d.twistweight_kg_m2 = 2e-4;
-  d.impact_off_axis_m = 0.025;  // the radius there: on its edge
   CHECK_NOTHROW(evaluate(d, Fidelity::kRigid));
-  d.impact_off_axis_m = -0.0251;
+  // Its surface's normal passes through its axis: no flat face to twist.
+  d.impact_off_axis_m = 0.01;
   CHECK_THROWS_WITH(evaluate(d, Fidelity::kRigid),
-                    Catch::StartsWith("impact/off_axis_m: must land on the implement") &&
-                        Catch::Contains("0.025 m"));
+                    Catch::StartsWith("impact/off_axis_m: must be 0 on a round implement"));
   // All the mass 4 cm off the axis is the most twistweight it can have.
   const double mass = d.implement.mass_properties().mass_kg;
   d.impact_off_axis_m = 0.0;
@@ -245,6 +243,42 @@ TEST_CASE("A round implement is hit within its radius and twists at most as a sh
                     Catch::StartsWith("implement/twistweight_kg_m2"));
   d.twistweight_kg_m2 = mass * 0.04 * 0.04 * 0.9999;
   CHECK_NOTHROW(evaluate(d, Fidelity::kRigid));
+}
+
+TEST_CASE(
+    "Lead sits on the implement: within the head's outer edge, a rod's radius, a rule's head") {
+  // A racquet's head of 100 sq in: its outer edge is the string bed's
+  // semi-width plus the hoop's width.
+  RoundProfile rod;
+  rod.stations = {{0.0, 0.04}, {0.8, 0.08}};
+  rod.density_kg_m3 = 650;
+  rod.youngs_modulus_Pa = 1.2e10;
+  const auto with_lead = [&](double off_axis_m) {
+    return Design{Implement::from_profile(rod, {PointMass{0.7, 0.01, off_axis_m}})};
+  };
+  CHECK_NOTHROW(evaluate(with_lead(0.04), Fidelity::kRigid));
+  CHECK_THROWS_WITH(evaluate(with_lead(-0.0401), Fidelity::kRigid),
+                    Catch::StartsWith("implement/point_masses/0/off_axis_m: must sit on the "
+                                      "implement, within 0.04 m"));
+  Design racquet = racquet_design();
+  const HeadEllipse outer = string_bed(*racquet.head, racquet.implement.length_m());
+  const double edge_m = outer.semi_width_m + racquet.head->hoop_width_m;
+  const auto racquet_with_lead = [&](double off_axis_m) {
+    Design r = racquet;
+    r.implement = Implement::paper_racquet(0.6858, 0.320, 1.0, {PointMass{0.6, 0.01, off_axis_m}});
+    return r;
+  };
+  CHECK_NOTHROW(evaluate(racquet_with_lead(edge_m * 0.999), Fidelity::kRigid));
+  CHECK_THROWS_WITH(evaluate(racquet_with_lead(edge_m * 1.001), Fidelity::kRigid),
+                    Catch::StartsWith("implement/point_masses/0/off_axis_m"));
+  const auto headless = [&](double off_axis_m) {
+    Design r = racquet_with_lead(off_axis_m);
+    r.head.reset();
+    return r;
+  };
+  CHECK_NOTHROW(evaluate(headless(kMaxHeadHalfWidth_m), Fidelity::kRigid));
+  CHECK_THROWS_WITH(evaluate(headless(kMaxHeadHalfWidth_m * 1.001), Fidelity::kRigid),
+                    Catch::StartsWith("implement/point_masses/0/off_axis_m"));
 }
 
 TEST_CASE(
