@@ -600,7 +600,7 @@ ImplementRead read_implement(const Json& document, const std::string& source, Ke
       const double limit = points_head_light_limit(*length);
       if (!(balance > -limit && balance < limit)) {
         r.fail(balance_key, "must put the balance inside the length, |points| < " +
-                                std::to_string(limit) + ", got " + brief(Json(balance)));
+                                significant(limit, 6) + ", got " + significant(balance, 6));
       }
       balance = balance_from_points_head_light(*length, balance);
     }

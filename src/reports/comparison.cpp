@@ -414,7 +414,7 @@ const std::vector<InputField>& input_fields() {
        [](D d) -> std::optional<double> {
          return swingweight_kg_m2(d.implement.frame_mass_properties());
        }},
-      {Part::kImplementShape, "head size", "cm²", 1e4,
+      {Part::kImplementShape, "head size", "sq in", 1.0 / (0.0254 * 0.0254),
        [](D d) { return d.head ? std::optional(d.head->area_m2) : std::nullopt; }, Within::kHead},
       {Part::kImplementShape, "head's aspect ratio", "", 1.0,
        [](D d) { return d.head ? std::optional(d.head->aspect_ratio) : std::nullopt; },
@@ -452,10 +452,10 @@ const std::vector<InputField>& input_fields() {
          const CrossSection& c = d.stiffness.cross_section;
          return has_wall(c.shape) ? std::optional(c.wall_m) : std::nullopt;
        }},
-      {Part::kStrings, "tension", "N", 1.0,
+      {Part::kStrings, "tension", "lb", 1.0 / kNewtonsPerPound,
        [](D d) { return d.strings ? std::optional(d.strings->tension_N) : std::nullopt; },
        Within::kStrings},
-      {Part::kStrings, "tension of the crosses", "N", 1.0,
+      {Part::kStrings, "tension of the crosses", "lb", 1.0 / kNewtonsPerPound,
        [](D d) { return d.strings ? std::optional(d.strings->cross_tension_N()) : std::nullopt; },
        Within::kStrings, false},
       {Part::kStrings, "spacing", "mm", 1000.0,
@@ -467,8 +467,9 @@ const std::vector<InputField>& input_fields() {
       {Part::kStrings, "contact radius", "cm", 100.0,
        [](D d) { return d.strings ? std::optional(d.strings->contact_radius_m) : std::nullopt; },
        Within::kStrings, false},
+      // An input only without a string bed: a bed's tension gives its own.
       {Part::kStrings, "impact duration", "ms", 1000.0,
-       [](D d) -> std::optional<double> { return d.impact_duration_s; }},
+       [](D d) { return d.strings ? std::nullopt : std::optional(d.impact_duration_s); }},
       {Part::kStrings, "moving mass", "g", 1000.0,
        [](D d) -> std::optional<double> { return d.string_bed_mass_kg; }},
       {Part::kStrings, "damping ratio", "", 1.0,

@@ -85,12 +85,12 @@ TEST_CASE("compare names what differs in the implement, never calling it the sam
   // A head on one and not the other: its size, not the shape of a head that is not there.
   io::Json headless = with("/implement/mass_g", 305);
   headless["implement"].erase("headsize_sq_in");
-  CHECK(inputs_sentence(headless) == "B against A: head size 645.2 cm² → none.");
+  CHECK(inputs_sentence(headless) == "B against A: head size 100 sq in → none.");
   // The implement and the ball at once.
   io::Json b = with("/implement/headsize_sq_in", 110);
   b["ball"]["speed_m_s"] = 40;
   CHECK(inputs_sentence(b) ==
-        "B against A: head size 645.2 → 709.7 cm²; and the ball differs: speed 50 → 40 m/s.");
+        "B against A: head size 100 → 110 sq in; and the ball differs: speed 50 → 40 m/s.");
 }
 
 TEST_CASE("compare names every input of the read design that differs, by its part") {
@@ -102,7 +102,7 @@ TEST_CASE("compare names every input of the read design that differs, by its par
   const std::vector<Change> changes{
       {"/implement/length_in", 27.5, "length 68.58 → 69.85 cm"},
       {"/implement/balance_cm", 32.6, "frame balance from the butt 32.5 → 32.6 cm"},
-      {"/implement/headsize_sq_in", 110, "head size 645.2 → 709.7 cm²"},
+      {"/implement/headsize_sq_in", 110, "head size 100 → 110 sq in"},
       {"/implement/head_aspect_ratio", 1.5, "head's aspect ratio 1.35 → 1.5"},
       {"/implement/hoop_width_m", 0.02, "hoop width 1.5 → 2 cm"},
       {"/implement/twistweight_kg_cm2", 15, "twistweight none → 15 kg·cm²"},
@@ -302,4 +302,20 @@ TEST_CASE("compare's arm verdict names each factor's number and which way it poi
   CHECK(rigid.find("no factor of those known") != std::string::npos);
 }
 }  // namespace
+}  // namespace sweetspot::reports
+
+namespace sweetspot::reports {
+
+TEST_CASE("compare says a string tension in lb, and no impact duration a string bed does not use") {
+  // B has no strings: its impact duration (the default 4 ms) is its input,
+  // A's comes from its tension (250 N = 56.2 lb: 250 / 4.4482216152605).
+  io::Json b = with("/strings/impact_duration_ms", 6);
+  b["strings"].erase("tension_N");
+  const std::string sentence = inputs_sentence(b);
+  INFO(sentence);
+  CHECK(sentence.find("the strings' tension 56.2 lb → none") != std::string::npos);
+  CHECK(sentence.find("impact duration none → 6 ms") != std::string::npos);
+  CHECK(sentence.find(" N →") == std::string::npos);
+}
+
 }  // namespace sweetspot::reports
