@@ -199,13 +199,16 @@ void validate(const Design& d) {
   const std::vector<PointMass>& points = d.implement.point_masses();
   for (std::size_t i = 0; i < points.size(); ++i) {
     if (!(std::abs(points[i].off_axis_m) <= half_width_m)) {
-      throw FieldError(detail::indexed("implement/point_masses", i, "off_axis_m"),
-                       "must sit on the implement, within " +
-                           detail::format_significant(half_width_m) + " m of the axis (" +
-                           (outline ? std::string("its head's outer edge")
-                            : round ? std::string("its widest radius, by its profile")
-                                    : std::string("the widest head the rules allow")) +
-                           "), got " + detail::format_number(points[i].off_axis_m) + " m");
+      const char* const edge = outline ? "to sit on the implement (its head's outer edge)"
+                               : round ? "to sit on the implement (its widest radius)"
+                                       : "to sit on the implement (the widest head the rules "
+                                         "allow)";
+      throw FieldError(
+          detail::indexed("implement/point_masses", i, "off_axis_m"),
+          "must be in [" + detail::format_significant(-half_width_m) + ", " +
+              detail::format_significant(half_width_m) + "] m " + edge + ", got " +
+              detail::format_number(points[i].off_axis_m) + " m",
+          FieldError::Range{-half_width_m, half_width_m, false, points[i].off_axis_m, edge});
     }
   }
   if (const double y = d.impact_off_axis_m; y != 0.0 && round) {

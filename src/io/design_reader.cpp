@@ -368,6 +368,19 @@ std::vector<PointMassDescription> descriptions_of(const std::vector<PointMassSpe
   return out;
 }
 
+// "must be in [0, 27] in (0 to 0.6858 m), got 28 in": a place along an
+// implement of length L refused in the unit of the file's key, or "" when the
+// key has no unit of its own (_m: the core's message stands).
+std::string along_in_file_unit(std::string_view key, std::string_view base, double L,
+                               double value_si, std::string_view why = {}) {
+  const std::optional<double> per_unit = unit_factor(key, base, Dimension::kLength);
+  const std::string unit(unit_of_key(key));
+  if (!per_unit || *per_unit == 1.0 || unit.empty()) return {};
+  return "must be in [0, " + significant(L / *per_unit, 6) + "] " + unit + " (0 to " +
+         significant(L, 6) + " m" + std::string(why) + "), got " +
+         significant(value_si / *per_unit, 6) + " " + unit;
+}
+
 // The point masses on an implement of length L with this head (a clock list
 // becomes one point mass per hour); an entry the geometry cannot place is
 // named at the file's entry (the core would name the expanded list's index).
@@ -392,6 +405,14 @@ std::vector<PointMass> place_point_masses(const std::vector<PointMassSpec>& spec
       detail = "must be in [0, " + significant(kMaxMass_kg / per_g, 4) + "] " +
                std::string(unit_of_key(spec.mass_key)) + " (0 to " + significant(kMaxMass_kg, 4) +
                " kg), got " + significant(given, 6) + " " + std::string(unit_of_key(spec.mass_key));
+    }
+    // A place along the implement given in cm or in is refused in that unit.
+    const std::optional<double> along =
+        spec.described.from_tip_m ? spec.described.from_tip_m : spec.described.from_butt_m;
+    if (error.key == "where" && along && !(*along >= 0.0 && *along <= L)) {
+      const std::string restated = along_in_file_unit(
+          spec.where_key, spec.described.from_tip_m ? "from_tip" : "from_butt", L, *along);
+      if (!restated.empty()) detail = restated;
     }
     throw InputError(source, key.empty() ? spec.pointer : spec.pointer + "/" + key, detail);
   }
@@ -1417,9 +1438,13 @@ ImpactRead read_impact(ObjectReader& top, Reading& in, double L, const std::stri
     if (from_tip && from_butt) r.fail("", "give the impact point once: from_tip_m or from_butt_m");
     if (from_tip) {
       if (!(*from_tip >= 0.0 && *from_tip <= L)) {
-        r.fail(r.one_of(spellings("from_tip", Dimension::kLength)),
-               "must be in [0, " + brief(Json(L)) + "] m (on the implement), got " +
-                   brief(Json(*from_tip)) + " m");
+        const std::string key = r.one_of(spellings("from_tip", Dimension::kLength));
+        const std::string restated =
+            along_in_file_unit(key, "from_tip", L, *from_tip, ", on the implement");
+        r.fail(key, !restated.empty()
+                        ? restated
+                        : "must be in [0, " + brief(Json(L)) + "] m (on the implement), got " +
+                              brief(Json(*from_tip)) + " m");
       }
       in.design.impact_from_butt_m = L - *from_tip;
       impact_m = *from_tip;

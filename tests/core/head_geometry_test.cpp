@@ -258,8 +258,9 @@ TEST_CASE(
   };
   CHECK_NOTHROW(evaluate(with_lead(0.04), Fidelity::kRigid));
   CHECK_THROWS_WITH(evaluate(with_lead(-0.0401), Fidelity::kRigid),
-                    Catch::StartsWith("implement/point_masses/0/off_axis_m: must sit on the "
-                                      "implement, within 0.04 m"));
+                    Catch::StartsWith("implement/point_masses/0/off_axis_m: must be in "
+                                      "[-0.04, 0.04] m to sit on the implement (its widest "
+                                      "radius)"));
   Design racquet = racquet_design();
   const HeadEllipse outer = string_bed(*racquet.head, racquet.implement.length_m());
   const double edge_m = outer.semi_width_m + racquet.head->hoop_width_m;

@@ -446,6 +446,29 @@ TEST_CASE("A key of another way of giving the implement is named as that, not as
             "balance and swingweight"));
 }
 
+TEST_CASE("A place along the implement given in cm or in is refused in that unit") {
+  // 27 in = 68.58 cm = 0.6858 m: the range in the key's own unit and in SI.
+  const char* const kSpecs =
+      R"("length_in": 27, "mass_g": 305, "balance_cm": 32.5, "swingweight_kg_cm2": 320)";
+  const auto implement_with = [&](const std::string& rest, const std::string& outside = "") {
+    static std::string text;
+    text = std::string(R"({"implement": {)") + kSpecs + rest + "}" + outside + "}";
+    return error_of(text.c_str());
+  };
+  CHECK(has(implement_with(R"(, "point_masses": [{"from_tip_cm": -5, "mass_g": 3}])"),
+            "/implement/point_masses/0/from_tip_cm: must be in [0, 68.58] cm (0 to 0.6858 m), "
+            "got -5 cm"));
+  CHECK(has(implement_with(R"(, "point_masses": [{"from_butt_in": 30, "mass_g": 3}])"),
+            "/implement/point_masses/0/from_butt_in: must be in [0, 27] in (0 to 0.6858 m), "
+            "got 30 in"));
+  CHECK(has(implement_with("", R"(, "impact": {"from_tip_cm": 80})"),
+            "/impact/from_tip_cm: must be in [0, 68.58] cm (0 to 0.6858 m, on the implement), "
+            "got 80 cm"));
+  // In metres the core's words stand.
+  CHECK(has(implement_with("", R"(, "impact": {"from_tip_m": 0.8})"),
+            "/impact/from_tip_m: must be in [0, 0.6858] m (on the implement), got 0.8 m"));
+}
+
 TEST_CASE("A mass too small for its digits is refused in SI, not in a unit its ratio garbles") {
   // 1e-320 g is a subnormal 1e-323 kg: the ratio of the two is 0.000988, not 0.001.
   const std::string tiny = error_of(R"({"implement": {"length_in": 27, "mass_g": 1e-320,
