@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <regex>
+#include <string>
 
 #include "io/format.hpp"
 
@@ -30,6 +32,27 @@ std::string feel(const Evaluation& e, bool first = false, bool swinging = false,
   }
   return fmt::format("{} and the ball comes back at {} of {}{}", wrist, ratio_text(e.apparent_cor),
                      speed, first ? " (the apparent COR)" : "");
+}
+
+// The model's reason in a coach's units: its lengths in metres ("0.015 to
+// 0.348009 m", "got 0.415369 m") as the rest of the paragraph gives them, in
+// cm to 0.5 cm. A speed (m/s), an area or an inertia (m^2, m²) stays as it is.
+std::string in_centimetres(const std::string& why) {
+  static const std::regex kLength(
+      R"((-?\d+(?:\.\d+)?(?:e[-+]?\d+)?)(?: to (-?\d+(?:\.\d+)?(?:e[-+]?\d+)?))? m(?![\w/^\xC2]))");
+  std::string out;
+  auto from = why.cbegin();
+  for (std::sregex_iterator it(why.begin(), why.end(), kLength), end; it != end; ++it) {
+    const std::smatch& m = *it;
+    out.append(from, m[0].first);
+    std::string text = cm_text(std::stod(m[1].str()));  // "1.5 cm"
+    if (m[2].matched)
+      text = text.substr(0, text.size() - 3) + " to " + cm_text(std::stod(m[2].str()));
+    out += text;
+    from = m[0].second;
+  }
+  out.append(from, why.cend());
+  return out;
 }
 
 }  // namespace
@@ -110,7 +133,7 @@ std::vector<std::string> sweet_spot_sentences(const io::DesignFile& design,
   }
   for (const studies::UnansweredSpot& spot : spots.unanswered)
     sentences.push_back(fmt::format("The model cannot answer a hit at the {}, {} from the tip: {}.",
-                                    spot.what, cm_text(spot.from_tip_m), spot.why));
+                                    spot.what, cm_text(spot.from_tip_m), in_centimetres(spot.why)));
   // 2. What the arm and the ball feel at each.
   const bool swinging = design.design.swing.has_value();
   const std::string speed = fmt::format("{:.3g} m/s", design.design.ball.speed_m_s);

@@ -311,3 +311,30 @@ TEST_CASE("A power point found with a given COR says the COR was taken the same 
 }
 
 }  // namespace sweetspot::reports
+
+namespace sweetspot::reports {
+
+TEST_CASE("A sweet spot the model cannot answer is said why in cm, as the rest of the answer") {
+  // 3 kg under the grip puts the centre of percussion beyond the strings: the
+  // model's reason gives the bed's span and the spot in metres, the answer in cm.
+  const io::DesignFile design = design_from(R"({
+    "implement": {"length_in": 27, "mass_g": 318, "balance_cm": 32.5, "swingweight_kg_cm2": 325,
+                  "headsize_sq_in": 100, "point_masses": [{"clock": "grip", "mass_g": 3000}]},
+    "frame": {"fundamental_free_Hz": 150}, "strings": {"tension_lb": 52}})");
+  const auto spots = studies::find_sweet_spots(design, evaluate(design.design), 1e-6);
+  REQUIRE_FALSE(spots.unanswered.empty());
+  const studies::UnansweredSpot& spot = spots.unanswered.front();
+  INFO(spot.why);
+  REQUIRE(spot.why.find(" m from the tip") != std::string::npos);
+  const std::string text = sweet_spot_paragraph(design, spots);
+  INFO(text);
+  CHECK(text.find("The model cannot answer a hit at the " + spot.what + ", " +
+                  cm_text(spot.from_tip_m) +
+                  " from the tip: a ball on the strings must land on "
+                  "them, 1.5 to ") != std::string::npos);
+  CHECK(text.find(" cm from the tip along the axis, got " + cm_text(spot.from_tip_m)) !=
+        std::string::npos);
+  CHECK(text.find(" m from the tip") == std::string::npos);
+}
+
+}  // namespace sweetspot::reports
