@@ -114,8 +114,8 @@ FlexibleFrame flexible_frame(const Design& design) {
       s.EI_N_m2 = 1.0;  // scaled below
     if (!s.EI_N_m2) {
       throw FieldError("frame/EI_N_m2",
-                       "the modes need the frame's stiffness: give frame EI_N_m2, "
-                       "fundamental_free_Hz, or EI_N_m2 for every section");
+                       "the modes need the frame's stiffness: give frame RA (a racquet's "
+                       "rating), fundamental_free_Hz or EI_N_m2, or EI_N_m2 for every section");
     }
   }
   if (stiffness.fundamental_free_Hz) {
