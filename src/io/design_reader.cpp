@@ -59,6 +59,20 @@ bool is_design_path(std::string_view name) {
 // range, a value not a number, no unit in the key. The file's unit is the
 // ratio of the core's SI value to the value the file gave (every scale of
 // the field table is a factor).
+// "must be in [4.496, 224.8] lb (20 to 1000 N) WHY, got 230 lb": a range
+// [min, max] (SI) stated in a file's unit (per_unit SI in one of it), the SI
+// beside it, and the value as the file gave it.
+std::string range_in_unit(double min, double max, bool min_open, double per_unit,
+                          std::string_view unit, std::string_view si_unit, std::string_view why,
+                          const std::string& given) {
+  std::string text = std::string("must be in ") + (min_open ? "(" : "[") +
+                     significant(min / per_unit, 4) + ", " + significant(max / per_unit, 4) + "] " +
+                     std::string(unit) + " (" + significant(min, 4) + " to " + significant(max, 4) +
+                     " " + std::string(si_unit) + ")";
+  if (!why.empty()) text += " " + std::string(why);
+  return text + ", got " + given + " " + std::string(unit);
+}
+
 std::optional<std::string> range_in_file_unit(const std::invalid_argument& error,
                                               const KeyOrigin& origin, const std::string& si_key,
                                               const std::string& user_key) {
@@ -74,19 +88,14 @@ std::optional<std::string> range_in_file_unit(const std::invalid_argument& error
   if (!(std::isfinite(per_unit) && per_unit > 0.0) || unit.empty() || si_unit.empty() ||
       !(std::fabs(range.value) >= std::numeric_limits<double>::min()))
     return std::nullopt;
-  const auto in_unit = [&](double si) { return significant(si / per_unit, 4); };
-  std::string expected;
   if (std::isfinite(range.min) && std::isfinite(range.max)) {
-    expected = std::string("in ") + (range.min_open ? "(" : "[") + in_unit(range.min) + ", " +
-               in_unit(range.max) + "] " + unit + " (" + significant(range.min, 4) + " to " +
-               significant(range.max, 4) + " " + si_unit + ")";
-    if (*range.why != '\0') expected += std::string(" ") + range.why;
-  } else if (std::isfinite(range.min)) {
-    expected = (range.min_open ? "> " : ">= ") + in_unit(range.min) + " " + unit;
-  } else {
-    return std::nullopt;
+    return range_in_unit(range.min, range.max, range.min_open, per_unit, unit, si_unit, range.why,
+                         given_text(origin));
   }
-  return "must be " + expected + ", got " + given_text(origin) + " " + unit;
+  if (!std::isfinite(range.min)) return std::nullopt;
+  return std::string("must be ") + (range.min_open ? "> " : ">= ") +
+         significant(range.min / per_unit, 4) + " " + unit + ", got " + given_text(origin) + " " +
+         unit;
 }
 
 // The physics core names a bad argument by its canonical SI path relative to
@@ -374,11 +383,10 @@ std::vector<PointMassDescription> descriptions_of(const std::vector<PointMassSpe
 std::string along_in_file_unit(std::string_view key, std::string_view base, double L,
                                double value_si, std::string_view why = {}) {
   const std::optional<double> per_unit = unit_factor(key, base, Dimension::kLength);
-  const std::string unit(unit_of_key(key));
+  const std::string_view unit = unit_of_key(key);
   if (!per_unit || *per_unit == 1.0 || unit.empty()) return {};
-  return "must be in [0, " + significant(L / *per_unit, 6) + "] " + unit + " (0 to " +
-         significant(L, 6) + " m" + std::string(why) + "), got " +
-         significant(value_si / *per_unit, 6) + " " + unit;
+  return range_in_unit(0.0, L, false, *per_unit, unit, "m", why,
+                       significant(value_si / *per_unit, 6));
 }
 
 // The point masses on an implement of length L with this head (a clock list
@@ -401,10 +409,8 @@ std::vector<PointMass> place_point_masses(const std::vector<PointMassSpec>& spec
     const auto spelling = find_spelling("implement/point_masses/N", spec.mass_key);
     if (error.key == "mass" && spelling && spec.mass_key != "mass_kg") {
       const double per_g = spelling->scale.to_si(1.0);
-      const double given = spec.described.mass_kg / per_g;
-      detail = "must be in [0, " + significant(kMaxMass_kg / per_g, 4) + "] " +
-               std::string(unit_of_key(spec.mass_key)) + " (0 to " + significant(kMaxMass_kg, 4) +
-               " kg), got " + significant(given, 6) + " " + std::string(unit_of_key(spec.mass_key));
+      detail = range_in_unit(0.0, kMaxMass_kg, false, per_g, unit_of_key(spec.mass_key), "kg", {},
+                             significant(spec.described.mass_kg / per_g, 6));
     }
     // A place along the implement given in cm or in is refused in that unit.
     const std::optional<double> along =
@@ -1440,7 +1446,7 @@ ImpactRead read_impact(ObjectReader& top, Reading& in, double L, const std::stri
       if (!(*from_tip >= 0.0 && *from_tip <= L)) {
         const std::string key = r.one_of(spellings("from_tip", Dimension::kLength));
         const std::string restated =
-            along_in_file_unit(key, "from_tip", L, *from_tip, ", on the implement");
+            along_in_file_unit(key, "from_tip", L, *from_tip, "on the implement");
         r.fail(key, !restated.empty()
                         ? restated
                         : "must be in [0, " + brief(Json(L)) + "] m (on the implement), got " +

@@ -414,7 +414,7 @@ const std::vector<InputField>& input_fields() {
        [](D d) -> std::optional<double> {
          return swingweight_kg_m2(d.implement.frame_mass_properties());
        }},
-      {Part::kImplementShape, "head size", "sq in", 1.0 / (0.0254 * 0.0254),
+      {Part::kImplementShape, "head size", "sq in", 1.0 / io::kSquareInch_m2,
        [](D d) { return d.head ? std::optional(d.head->area_m2) : std::nullopt; }, Within::kHead},
       {Part::kImplementShape, "head's aspect ratio", "", 1.0,
        [](D d) { return d.head ? std::optional(d.head->aspect_ratio) : std::nullopt; },

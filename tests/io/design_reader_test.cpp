@@ -462,7 +462,7 @@ TEST_CASE("A place along the implement given in cm or in is refused in that unit
             "/implement/point_masses/0/from_butt_in: must be in [0, 27] in (0 to 0.6858 m), "
             "got 30 in"));
   CHECK(has(implement_with("", R"(, "impact": {"from_tip_cm": 80})"),
-            "/impact/from_tip_cm: must be in [0, 68.58] cm (0 to 0.6858 m, on the implement), "
+            "/impact/from_tip_cm: must be in [0, 68.58] cm (0 to 0.6858 m) on the implement, "
             "got 80 cm"));
   // In metres the core's words stand.
   CHECK(has(implement_with("", R"(, "impact": {"from_tip_m": 0.8})"),
