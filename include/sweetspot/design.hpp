@@ -184,6 +184,10 @@ struct Design {
 // point mass; std::nullopt when neither twistweight nor head is given.
 std::optional<double> polar_inertia_kg_m2(const Design& design);
 
+// True for a round implement: one given by its profile (a bat, a rod), which
+// has no head and no string bed (validate() refuses either on it).
+bool is_round(const Design& design);
+
 // Whether the polar inertia is the head's estimate rather than measured.
 bool polar_inertia_estimated(const Design& design);
 

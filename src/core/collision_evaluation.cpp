@@ -30,6 +30,13 @@ DesignCollision::DesignCollision(const Design& design, double rel_tol, ModeCache
 
 void DesignCollision::init(double rel_tol, ModeCache& cache) {
   const Design& design = design_;
+  const Support::Kind support = design.support.kind;
+  if (is_round(design) && support != Support::Kind::kRigidSurface) {
+    throw FieldError("implement/profile",
+                     "the solved collision is a ball on a string bed, and an implement given by "
+                     "its profile (a bat, a rod) has none: evaluate it with --fidelity modal (its "
+                     "frame cor and impact duration) or response (its frame cor_rigid)");
+  }
   if (design.cor_rigid) {
     throw FieldError("frame/cor_rigid",
                      "the solved collision derives the COR itself; give neither cor nor "
@@ -47,7 +54,6 @@ void DesignCollision::init(double rel_tol, ModeCache& cache) {
     design_.ball_contact = with_rigid_surface_cor(design.ball_contact, design.ball.mass_kg,
                                                   *design.ball.cor_on_rigid_surface);
   }
-  const Support::Kind support = design.support.kind;
   immovable_ = support == Support::Kind::kHeadClamped || support == Support::Kind::kRigidSurface;
   if (support == Support::Kind::kRigidSurface) return;  // the ball alone on a plate
   if (!design.strings) {

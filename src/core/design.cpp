@@ -157,6 +157,20 @@ void validate(const Design& d) {
     }
   }
   detail::require_in_range("impact/off_axis_m", d.impact_off_axis_m, -L, L, "m");
+  // A profile is a round implement's: a bat is hit on its barrel, not on a
+  // head's strings, and a string bed would take the hit's stiffness and
+  // duration from strings it does not have.
+  if (is_round(d) && d.head) {
+    throw FieldError("implement/headsize",
+                     "an implement given by its profile is round (a bat, a rod) and has no head: "
+                     "give a racquet by its sections or its spec sheet, or give no head size");
+  }
+  if (is_round(d) && d.strings) {
+    throw FieldError("strings/tension_N",
+                     "an implement given by its profile is round (a bat, a rod) and has no string "
+                     "bed: give the ball's contact by strings.impact_duration_ms, or a racquet by "
+                     "its sections or its spec sheet");
+  }
   std::optional<HeadEllipse> outline;  // the head to the hoop's outer edge
   if (d.head) {
     try {
@@ -170,7 +184,7 @@ void validate(const Design& d) {
   // A round implement given by its profile (a bat) is as wide as its
   // diameter: its widest bounds the twistweight and where lead can sit.
   const std::optional<RoundProfile>& profile = d.implement.profile();
-  const bool round = !outline && profile && !profile->stations.empty();
+  const bool round = is_round(d);
   double widest_radius_m = 0.0;
   if (round) {
     for (const ProfileStation& s : profile->stations)
@@ -308,6 +322,11 @@ std::optional<double> polar_inertia_kg_m2(const Design& d) {
 }
 
 bool polar_inertia_estimated(const Design& d) { return !d.twistweight_kg_m2 && d.head; }
+
+bool is_round(const Design& d) {
+  const std::optional<RoundProfile>& profile = d.implement.profile();
+  return profile && !profile->stations.empty();
+}
 
 HeadShape racquet_head(const Design& d) {
   if (d.head) return *d.head;

@@ -216,6 +216,7 @@ RoundProfile read_profile(ObjectReader& r, const std::string& source, KeyMap* ke
     r.fail("profile", "expected an array of at least two stations (the butt and the tip), got " +
                           brief(*list));
   }
+  r.record("profile", "profile");  // a complaint about the whole profile names it
   const std::vector<std::string>& kKeys = design_keys("implement/profile/N");
   RoundProfile profile;
   for (std::size_t i = 0; i < list->size(); ++i) {
@@ -1184,6 +1185,16 @@ std::optional<double> read_strings(ObjectReader& top, Reading& in, const Impleme
       for (const char* key : {"pattern", "tension_loss", "material", "gauge", "gauge_mm"}) {
         if (r.has(key))
           r.fail(key, "describes a string bed: give its tension (strings.tension_lb)");
+      }
+      for (const char* stem : {"string_spacing", "contact_radius"}) {
+        const std::string key = r.one_of(spellings(stem, Dimension::kLength));
+        if (!key.empty())
+          r.fail(key, "describes a string bed: give its tension (strings.tension_lb)");
+      }
+      if (const std::string key = r.one_of(keys_of("strings", {"head_size"})); !key.empty()) {
+        r.fail(key,
+               "is the string bed's size: give its tension (strings.tension_lb), or the head's "
+               "size as implement.headsize_sq_in");
       }
       if (!both.linear_density_kg_m) {
         // nothing: no bed

@@ -895,8 +895,13 @@ const Json* ObjectReader::child(std::string_view key) {
 void ObjectReader::finish(const std::vector<std::string>& expected,
                           std::string_view why_not) const {
   for (const auto& [key, value] : object_.items()) {
-    if (std::find(read_.begin(), read_.end(), key) == read_.end())
-      fail(key, why_not.empty() ? unknown_key_detail(key, expected) : std::string(why_not));
+    if (std::find(read_.begin(), read_.end(), key) != read_.end()) continue;
+    if (!why_not.empty()) fail(key, std::string(why_not));
+    // A key this object knows that nothing given here reads: not "unknown".
+    if (std::find(expected.begin(), expected.end(), key) != expected.end())
+      fail(key, "is not read beside what else " + (pointer_.empty() ? "the file" : pointer_) +
+                    " gives: it belongs with keys that are missing");
+    fail(key, unknown_key_detail(key, expected));
   }
 }
 

@@ -67,7 +67,7 @@ StringBedMap string_bed_map(const Design& design, const StringBedMapOptions& opt
   }
   // Validates the design and derives the duration at its own impact point.
   RigidCase base = rigid_case(design);
-  if (!design.head && !design.strings && design.implement.profile()) {
+  if (is_round(design)) {
     throw std::invalid_argument(
         "implement: a map of the string bed needs a head, and an implement given by its "
         "profile (a bat) has none: ask `sweetspot evaluate` about a point of it");

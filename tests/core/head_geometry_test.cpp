@@ -245,6 +245,38 @@ TEST_CASE("A round implement is not hit off its axis, and twists at most as a sh
   CHECK_NOTHROW(evaluate(d, Fidelity::kRigid));
 }
 
+TEST_CASE("A round implement has no head, no string bed and no solved collision") {
+  RoundProfile rod;
+  rod.stations = {{0.0, 0.04}, {0.8, 0.08}};
+  rod.density_kg_m3 = 650;
+  rod.youngs_modulus_Pa = 1.2e10;
+  Design d{Implement::from_profile(rod)};
+  d.impact_from_butt_m = 0.65;
+  CHECK(is_round(d));
+  CHECK_NOTHROW(evaluate(d, Fidelity::kModal));
+  // A head would make it a racquet, and strings a racquet's hit.
+  Design headed = d;
+  headed.head = HeadShape{};
+  CHECK_THROWS_WITH(evaluate(headed, Fidelity::kRigid),
+                    Catch::StartsWith("implement/headsize: an implement given by its profile is "
+                                      "round (a bat, a rod) and has no head"));
+  Design strung = d;
+  strung.strings = StringBed{};
+  CHECK_THROWS_WITH(evaluate(strung, Fidelity::kRigid),
+                    Catch::StartsWith("strings/tension_N: an implement given by its profile is "
+                                      "round (a bat, a rod) and has no string bed"));
+  // The solved collision is a ball on a string bed: the bat's is refused
+  // naming its profile, before its frame COR.
+  d.cor_given = false;
+  CHECK_THROWS_WITH(evaluate(d, Fidelity::kCollision),
+                    Catch::StartsWith("implement/profile: the solved collision is a ball on a "
+                                      "string bed"));
+  d.cor_given = true;
+  CHECK_THROWS_WITH(evaluate(d, Fidelity::kCollision), Catch::StartsWith("implement/profile"));
+  // A racquet of sections is not round.
+  CHECK_FALSE(is_round(Design{Implement::paper_racquet(0.70, 0.25, 0.8)}));
+}
+
 TEST_CASE(
     "Lead sits on the implement: within the head's outer edge, a rod's radius, a rule's head") {
   // A racquet's head of 100 sq in: its outer edge is the string bed's

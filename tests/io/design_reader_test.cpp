@@ -469,6 +469,34 @@ TEST_CASE("A place along the implement given in cm or in is refused in that unit
             "/impact/from_tip_m: must be in [0, 0.6858] m (on the implement), got 0.8 m"));
 }
 
+TEST_CASE("A bat has no head and no string bed, and a bed's keys need its tension") {
+  const char* const kBat = R"("implement": {"profile": [{"from_butt_cm": 0, "diameter_cm": 3},
+      {"from_butt_cm": 84, "diameter_cm": 6.6}], "density_kg_m3": 640, "youngs_modulus_GPa": 12.5})";
+  const auto bat_with = [&](const std::string& rest) {
+    static std::string text;
+    text = std::string("{") + kBat + rest + "}";
+    return error_of(text.c_str());
+  };
+  CHECK(bat_with("") == "");
+  CHECK(bat_with(R"(, "strings": {"impact_duration_ms": 0.7})") == "");
+  CHECK(has(bat_with(R"(, "strings": {"tension_lb": 55})"),
+            "/strings/tension_lb: an implement given by its profile is round (a bat, a rod) and "
+            "has no string bed"));
+  CHECK(has(bat_with(R"(, "strings": {"head_size_in2": 100, "tension_lb": 55})"),
+            "/strings/head_size_in2: an implement given by its profile is round (a bat, a rod) "
+            "and has no head"));
+  // Without a tension, a string bed's keys are not read: each says what it lacks.
+  for (const char* key : {"string_spacing_cm", "contact_radius_mm"}) {
+    CHECK(has(bat_with(std::string(R"(, "strings": {")") + key + R"(": 1.6})"),
+              std::string("/strings/") + key +
+                  ": describes a string bed: give its tension (strings.tension_lb)"));
+  }
+  const std::string bed_size = error_of(R"({"implement": {"length_in": 27, "mass_g": 305,
+      "balance_cm": 32.5, "swingweight_kg_cm2": 320}, "strings": {"head_size_in2": 100}})");
+  CHECK(has(bed_size, "/strings/head_size_in2: is the string bed's size: give its tension"));
+  CHECK_FALSE(has(bed_size, "unknown"));
+}
+
 TEST_CASE("A mass too small for its digits is refused in SI, not in a unit its ratio garbles") {
   // 1e-320 g is a subnormal 1e-323 kg: the ratio of the two is 0.000988, not 0.001.
   const std::string tiny = error_of(R"({"implement": {"length_in": 27, "mass_g": 1e-320,

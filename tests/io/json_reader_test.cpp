@@ -45,6 +45,26 @@ TEST_CASE("Text made valid UTF-8 replaces each stray byte and keeps the rest") {
   CHECK_NOTHROW(Json(valid_utf8("bad\xC3(name")).dump());
 }
 
+TEST_CASE("A known key that nothing read is not called unknown") {
+  const Json object = Json::parse(R"({"mass_kg": 0.3, "spacing_m": 0.02})");
+  ObjectReader r(object, "/strings", "strings", "d.json", nullptr);
+  CHECK(r.number("mass_kg") == 0.3);
+  try {
+    r.finish({"mass_kg", "spacing_m"});
+    FAIL("finish() passed a key nothing read");
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    CHECK(message.find("/strings/spacing_m: is not read beside what else /strings gives") !=
+          std::string::npos);
+    CHECK(message.find("unknown") == std::string::npos);
+  }
+  // A key it does not know stays unknown.
+  const Json typo = Json::parse(R"({"mass_kg": 0.3, "spacnig_m": 0.02})");
+  ObjectReader t(typo, "/strings", "strings", "d.json", nullptr);
+  t.number("mass_kg");
+  CHECK_THROWS_WITH(t.finish({"mass_kg", "spacing_m"}), Catch::Contains("unknown key"));
+}
+
 TEST_CASE("A quantity's alternative spellings cover its units and its other forms") {
   CHECK(lists(alternative_spellings("mass_g"), "mass_kg"));
   CHECK(lists(alternative_spellings("tension_lb"), "tension_N"));
