@@ -26,20 +26,26 @@ class FieldError : public std::invalid_argument {
     const char* why = "";   // what sets the range, said after it ("for this mass, ...")
   };
 
-  FieldError(std::string field, std::string detail, std::optional<Range> range = std::nullopt)
-      : std::invalid_argument(field + ": " + detail),
+  // `after` ends the detail and is said again after a range restated in
+  // another unit (": it would fit a mass of 0.19 to 0.63 kg ...").
+  FieldError(std::string field, std::string detail, std::optional<Range> range = std::nullopt,
+             std::string after = {})
+      : std::invalid_argument(field + ": " + detail + after),
         field_(std::move(field)),
-        detail_(std::move(detail)),
-        range_(range) {}
+        detail_(detail + after),
+        range_(range),
+        after_(std::move(after)) {}
 
   const std::string& field() const { return field_; }
   const std::string& detail() const { return detail_; }
   const std::optional<Range>& range() const { return range_; }
+  const std::string& after() const { return after_; }
 
  private:
   std::string field_;
   std::string detail_;
   std::optional<Range> range_;
+  std::string after_;
 };
 
 // `error` with its field placed under `part` ("frame/" + "cor": "frame/cor"):
@@ -47,7 +53,9 @@ class FieldError : public std::invalid_argument {
 [[noreturn]] inline void rethrow_under(const std::string& part,
                                        const std::invalid_argument& error) {
   if (const auto* field = dynamic_cast<const FieldError*>(&error))
-    throw FieldError(part + field->field(), field->detail(), field->range());
+    throw FieldError(part + field->field(),
+                     field->detail().substr(0, field->detail().size() - field->after().size()),
+                     field->range(), field->after());
   throw std::invalid_argument(part + error.what());
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -13,7 +14,22 @@
 #include "sweetspot/errors.hpp"
 
 namespace sweetspot {
+
 namespace {
+
+// Two significant figures, without an exponent from 1e-6 to 1e6 (1900,
+// 0.19, 0.000012).
+std::string two_figures(double value) {
+  char buffer[48];
+  if (!(value >= 1e-6 && value < 1e6)) {
+    std::snprintf(buffer, sizeof buffer, "%.2g", value);
+    return buffer;
+  }
+  const int second = static_cast<int>(std::floor(std::log10(value))) - 1;  // its place
+  const double rounded = std::round(value / std::pow(10.0, second)) * std::pow(10.0, second);
+  std::snprintf(buffer, sizeof buffer, "%.*f", std::max(0, -second), rounded);
+  return buffer;
+}
 
 MassProperties add_all(MassProperties body, const std::vector<PointMass>& point_masses) {
   for (const PointMass& point : point_masses) body = with_point_mass(body, point);
@@ -222,13 +238,37 @@ Implement Implement::from_specs(const IndustrySpecs& specs, std::vector<PointMas
   // I_cm = SW - M (B - 0.1)^2 must also be a normal number, not an underflow.
   if (!(specs.swingweight_kg_m2 - sw_min >= std::numeric_limits<double>::min()) ||
       specs.swingweight_kg_m2 > sw_max) {
+    // What the others would have to be for this swingweight, with the rest
+    // as given: the range scales with the mass, and the balance moves it,
+    // so a mass or balance in the wrong unit shows here.
+    const double per_kg = specs.swingweight_kg_m2 / M;  // SW / M [m^2]
+    const double a0 = kSwingweightAxisFromButt_m;
+    const double mass_from_kg = specs.swingweight_kg_m2 / (arm * arm + B * (L - B));
+    const double mass_to_kg = specs.swingweight_kg_m2 / (arm * arm);
+    // (B - a0)^2 < SW / M <= (B - a0)^2 + B (L - B), the second
+    // B (L - 2 a0) + a0^2 >= SW / M.
+    const double balance_from_m =
+        std::max({0.0, a0 - std::sqrt(per_kg), (per_kg - a0 * a0) / (L - 2.0 * a0)});
+    const double balance_to_m = std::min(L, a0 + std::sqrt(per_kg));
+    std::string after;
+    if (std::isfinite(mass_from_kg) && mass_from_kg > 0.0 && mass_to_kg > mass_from_kg) {
+      after =
+          ": it would fit a mass of " + two_figures(mass_from_kg) +
+          (std::isfinite(mass_to_kg) ? " to " + two_figures(mass_to_kg) + " kg" : " kg or more");
+      if (L > 2.0 * a0 && balance_to_m > balance_from_m) {
+        after += ", or a balance of " + two_figures(100.0 * balance_from_m) + " to " +
+                 two_figures(100.0 * balance_to_m) + " cm from the butt";
+      }
+      after += ", the others as given";
+    }
     throw FieldError("swingweight_kg_m2",
                      "must be in (" + detail::format_significant(sw_min) + ", " +
                          detail::format_significant(sw_max) +
                          "] kg m^2 for this mass, balance and length, got " +
                          detail::format_number(specs.swingweight_kg_m2) + " kg m^2",
                      FieldError::Range{sw_min, sw_max, true, specs.swingweight_kg_m2,
-                                       "for this mass, balance and length"});
+                                       "for this mass, balance and length"},
+                     after);
   }
   Implement implement;
   implement.length_m_ = L;

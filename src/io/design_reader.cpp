@@ -90,12 +90,13 @@ std::optional<std::string> range_in_file_unit(const std::invalid_argument& error
     return std::nullopt;
   if (std::isfinite(range.min) && std::isfinite(range.max)) {
     return range_in_unit(range.min, range.max, range.min_open, per_unit, unit, si_unit, range.why,
-                         given_text(origin));
+                         given_text(origin)) +
+           typed->after();
   }
   if (!std::isfinite(range.min)) return std::nullopt;
   return std::string("must be ") + (range.min_open ? "> " : ">= ") +
          significant(range.min / per_unit, 4) + " " + unit + ", got " + given_text(origin) + " " +
-         unit;
+         unit + typed->after();
 }
 
 // The physics core names a bad argument by its canonical SI path relative to

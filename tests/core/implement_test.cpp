@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "sweetspot/errors.hpp"
+
 namespace sweetspot {
 namespace {
 
@@ -85,6 +87,31 @@ TEST_CASE("Impossible implements are refused with the argument named") {
   // Nor above what all the mass at the two ends gives: M B (L - B) more.
   CHECK_THROWS_WITH(Implement::from_specs({0.686, 0.3, 0.32, 0.01452 + 0.3 * 0.32 * 0.366 + 1e-6}),
                     Catch::Contains("swingweight_kg_m2"));
+}
+
+TEST_CASE("A swingweight that no mass fits says which mass and balance it would fit") {
+  // 27 in, 32.5 cm, 320 kg cm^2 at 318 kg (grams meant). SW in (M a^2, M (a^2 + B (L - B))]
+  // with a = B - 0.1 m: M from SW / (a^2 + B (L - B)) = 0.1906 to SW / a^2 = 0.6321 kg;
+  // B from (SW / M - a0^2) / (L - 2 a0) and a0 - sqrt(SW / M) to a0 + sqrt(SW / M).
+  const double L = 0.6858, B = 0.325, SW = 0.032;
+  CHECK_THROWS_WITH(Implement::from_specs({L, 318.0, B, SW}),
+                    Catch::EndsWith(": it would fit a mass of 0.19 to 0.63 kg, or a balance of "
+                                    "9.0 to 11 cm from the butt, the others as given"));
+  // The ends of the stated ranges, just inside them, are specs the model builds.
+  const double a = B - 0.1;
+  CHECK_NOTHROW(Implement::from_specs({L, SW / (a * a + B * (L - B)) * 1.0001, B, SW}));
+  CHECK_NOTHROW(Implement::from_specs({L, SW / (a * a) * 0.9999, B, SW}));
+  const double per_kg = SW / 318.0;
+  CHECK_NOTHROW(Implement::from_specs({L, 318.0, 0.1 - std::sqrt(per_kg) + 1e-5, SW}));
+  CHECK_NOTHROW(Implement::from_specs({L, 318.0, 0.1 + std::sqrt(per_kg) - 1e-5, SW}));
+  // The hint survives being placed under a part of the design.
+  try {
+    rethrow_under("implement/", FieldError("swingweight_kg_m2", "must be", std::nullopt, ": hint"));
+  } catch (const FieldError& e) {
+    CHECK(e.detail() == "must be: hint");
+    CHECK(e.after() == ": hint");
+    CHECK(std::string(e.what()) == "implement/swingweight_kg_m2: must be: hint");
+  }
 }
 
 TEST_CASE("A round profile of one diameter is the uniform rod: rho pi d^2 L / 4, E pi d^4 / 64") {
