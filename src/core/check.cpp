@@ -34,9 +34,9 @@ void validate_point_masses(const std::vector<PointMass>& point_masses, double le
   }
 }
 
-std::string format_significant(double value, int digits) {
+std::string format_significant(double value) {
   char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.*g", digits, value);
+  std::snprintf(buffer, sizeof buffer, "%.6g", value);
   return buffer;
 }
 

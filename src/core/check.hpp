@@ -16,8 +16,8 @@ namespace sweetspot::detail {
 
 // Shortest round-trip text of a double ("0.25", "1e-09", "inf").
 std::string format_number(double value);
-// Six significant digits (or `digits`), for computed bounds in messages.
-std::string format_significant(double value, int digits = 6);
+// Six significant digits, for computed bounds in messages.
+std::string format_significant(double value);
 
 // The name of a field of a list element as a relative JSON pointer,
 // "point_masses/1/mass_kg", so the JSON layer can point at the file's key.
