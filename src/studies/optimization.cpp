@@ -251,6 +251,22 @@ OptimizationResult run_optimization(const Study& study) {
                            "optimize needs a range: give \"min\" < \"max\" (the values span only " +
                                io::significant(v.min) + ")");
     }
+    // A bound the design cannot take at all, its other inputs as given (a
+    // mass of -1 kg): the search would meet it only as an infeasible corner.
+    // A sweep walks such a range and says where each point is refused.
+    for (const auto& [side, bound] : {std::pair{"min", v.min}, std::pair{"max", v.max}}) {
+      io::Json document = study.design_document;
+      document[io::Json::json_pointer(v.pointer)] = bound;
+      try {
+        io::read_design(document, study.design_source);
+      } catch (const io::InputError& e) {
+        if (e.pointer() != v.pointer) continue;  // another input's, or several together
+        throw io::InputError(study.source, "/variables/" + std::to_string(i),
+                             std::string(side) + " " + io::exact(bound) + " is no value of " +
+                                 v.pointer +
+                                 " (the design's other inputs as given): " + e.detail());
+      }
+    }
   }
   const optimizer::Problem problem = make_problem(study);
   optimizer::Summary summary = minimize(problem, study.options);

@@ -247,6 +247,38 @@ TEST_CASE("Bad studies are refused with the study's JSON path") {
              Catch::StartsWith("/constraints/0"));
 }
 
+TEST_CASE("optimize refuses a bound the design cannot take alone; a sweep walks it") {
+  const auto study_of = [](const char* variable) {
+    return studies::read_study(
+        nlohmann::json::parse(std::string(R"({"design": "../table1/row1.json", "variables": [)") +
+                              variable +
+                              R"(], "objective": {"output": "peak_wrist_force_N"},
+                              "outputs": ["peak_wrist_force_N"]})"),
+        "study.json", studies());
+  };
+  const auto refusal = [](const studies::Study& study) {
+    try {
+      run_optimization(study);
+    } catch (const io::InputError& e) {
+      return e.pointer() + ": " + e.detail();
+    }
+    return std::string("(no error)");
+  };
+  // The design's own range of each input (a mass > 0 kg, a COR in [0, 1]).
+  CHECK(refusal(study_of(R"({"path": "/implement/mass_kg", "min": -1, "max": 0.4})")) ==
+        "/variables/0: min -1 is no value of /implement/mass_kg (the design's other inputs as "
+        "given): must be > 0 kg, got -1 kg");
+  CHECK_THAT(refusal(study_of(R"({"path": "/frame/cor", "min": 0.6, "max": 1.2})")),
+             Catch::StartsWith("/variables/0: max 1.2 is no value of /frame/cor") &&
+                 Catch::EndsWith("must be in [0, 1], got 1.2"));
+  // A sweep of the same range says where each point is refused.
+  const studies::Study sweep = study_of(R"({"path": "/frame/cor", "min": 0.6, "max": 1.2,
+      "points": 4})");
+  std::ostringstream rows;
+  CHECK_NOTHROW(studies::run_sweep(sweep, rows, [](std::size_t, std::size_t) {}));
+  CHECK(rows.str().find("must be in [0, 1]") != std::string::npos);
+}
+
 TEST_CASE("An infeasible study says so and returns the least violating design") {
   studies::Study study = studies::load_study(studies() + "4-robust-lowest-worst-wrist-force.json");
   study.constraints[0].max = 100.0;  // no racquet in the box swings that lightly
