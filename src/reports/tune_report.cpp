@@ -16,7 +16,8 @@ using studies::LeadPlace;
 using studies::RacquetSpecs;
 using studies::TuneTargets;
 
-std::string where(const LeadPlace& place) {
+// `round`: a bat's (an implement given by its profile), whose butt is its knob.
+std::string where(const LeadPlace& place, bool round) {
   switch (place.kind) {
     case LeadPlace::Kind::kThroat:
       return "the throat (6 o'clock)";
@@ -24,7 +25,7 @@ std::string where(const LeadPlace& place) {
       return fmt::format("under the grip ({:g} cm from the butt)",
                          studies::kUnderGripFromButt_m * 1e2);
     case LeadPlace::Kind::kButtCap:
-      return fmt::format("under the butt cap ({:g} cm from the butt)",
+      return fmt::format("{} ({:g} cm from the butt)", round ? "at the knob" : "under the butt cap",
                          kHandleWeightFromButt_m * 1e2);
     case LeadPlace::Kind::kClock:
       if (place.hours.size() == 2)
@@ -111,6 +112,7 @@ const Effect kEffects[] = {
 
 std::string markdown(const TunedRacquet& t, double strip_kg) {
   const studies::TuneResult& r = t.result;
+  const bool round = is_round(t.before.design.design);
   std::string out = fmt::format("## {}\n\n", t.before.design.name);
   out += r.exact ? "The targets are reached with lead at the places given.\n\n"
                  : "**The targets cannot be reached** with lead at these places; the nearest "
@@ -137,8 +139,8 @@ std::string markdown(const TunedRacquet& t, double strip_kg) {
         pieces > 1 ? fmt::format("{:.1f} at each",
                                  rounded(lead.mass_kg / strip_kg / static_cast<double>(pieces), 1))
                    : fmt::format("{:.1f}", rounded(lead.mass_kg / strip_kg, 1));
-    out +=
-        fmt::format("| {} | {:.1f} g{} | {} |\n", where(lead.place), rounded(g, 1), each, strips);
+    out += fmt::format("| {} | {:.1f} g{} | {} |\n", where(lead.place, round), rounded(g, 1), each,
+                       strips);
   }
   out += fmt::format("\n{:.1f} g of lead in all.", rounded(r.added_kg * 1e3, 1));
   if (!t.written.empty()) out += " The tuned design is written to " + t.written + ".";
@@ -184,7 +186,7 @@ io::Json json_of(const TunedRacquet& t, double strip_kg) {
                         {"off_axis_cm", p.off_axis_m * 1e2}});
     }
     lead.push_back({{"place", l.place.label},
-                    {"where", where(l.place)},
+                    {"where", where(l.place, is_round(t.before.design.design))},
                     {"mass_g", l.mass_kg * 1e3},
                     {"strips", l.mass_kg / strip_kg},
                     {"pieces", pieces}});

@@ -251,6 +251,12 @@ std::vector<PointMass> unit_pieces(const io::DesignFile& file, const LeadPlace& 
       return {PointMass{std::min(kHandleWeightFromButt_m, L), 1.0, 0.0}};
     case LeadPlace::Kind::kThroat:
     case LeadPlace::Kind::kClock: {
+      if (is_round(d)) {
+        throw std::invalid_argument(fmt::format(
+            "--places: \"{}\" is on a racquet's hoop, and {} is round (given by its profile, "
+            "a bat): give grip or butt (the knob)",
+            place.label, io::one_line(file.source)));
+      }
       if (!d.head) {
         throw std::invalid_argument(
             fmt::format("--places: \"{}\" is on the hoop, which needs the head "

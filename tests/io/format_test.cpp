@@ -172,6 +172,29 @@ TEST_CASE("The fidelity note says when the impact barely excites the frame, with
   CHECK(note_of(152.0, Fidelity::kModal).empty());
 }
 
+TEST_CASE(
+    "A bat's spec line is a bat's: ounces, and the inertia about the pivot 6 in from the knob") {
+  // A uniform rod 80 cm long, 5 cm across, of wood at 600 kg/m^3: M = rho pi d^2 L / 4,
+  // balance L / 2, and about the pivot 6 in (0.1524 m) from the knob
+  // M L^2 / 12 + M (L / 2 - 0.1524)^2 (the parallel axes).
+  constexpr double kPi = 3.14159265358979323846;
+  const double L = 0.8, dia = 0.05, M = 600.0 * kPi * dia * dia / 4.0 * L;
+  DesignFile file{
+      "rod.json", "",    Design{Implement::from_profile({{{0.0, dia}, {L, dia}}, 600.0, 1e10})},
+      "",         {},    Json::object(),
+      {},         "auto"};
+  file.design.impact_from_butt_m = 0.6;
+  const std::string md =
+      evaluation_report(file, evaluate(file.design, Fidelity::kRigid), Format::kMarkdown);
+  const double moi_kg_cm2 = (M * L * L / 12.0 + M * (L / 2 - 0.1524) * (L / 2 - 0.1524)) * 1e4;
+  CHECK_THAT(md, Catch::Contains("mass " + significant(M * 1000, 4) + " g (" +
+                                 significant(M / 0.028349523125, 4) +
+                                 " oz), balance 40 cm "
+                                 "(15.75 in) from the knob, moment of inertia " +
+                                 significant(moi_kg_cm2, 4) + " kg·cm² about a pivot 6 in"));
+  CHECK_THAT(md, !Catch::Contains("pts head-"));
+}
+
 TEST_CASE("An evaluation's CSV and Markdown apply their format's rule to a hostile name") {
   DesignFile file{"a\nb.json",
                   "=cmd|x\n# injected\x1b[2J",
