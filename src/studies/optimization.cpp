@@ -241,7 +241,7 @@ io::Json printed_design(const Study& study, std::span<const double> x, const io:
   return printed;
 }
 
-OptimizationResult run_optimization(const Study& study) {
+void check_can_optimize(const Study& study) {
   if (study.objective.empty())
     throw io::InputError(study.source, "/objective", "missing: optimize needs an objective");
   for (std::size_t i = 0; i < study.variables.size(); ++i) {
@@ -268,6 +268,10 @@ OptimizationResult run_optimization(const Study& study) {
       }
     }
   }
+}
+
+OptimizationResult run_optimization(const Study& study) {
+  check_can_optimize(study);
   const optimizer::Problem problem = make_problem(study);
   optimizer::Summary summary = minimize(problem, study.options);
   if (minimizes_square(study)) {

@@ -75,4 +75,9 @@ io::Json printed_design(const Study& study, std::span<const double> x, const io:
 // values; a difference is named in `inconsistency`.
 OptimizationResult run_optimization(const Study& study);
 
+// What run_optimization() refuses before any search, as io::InputError: no
+// objective, a variable without a range, a bound the design cannot take by
+// itself (its other inputs as given).
+void check_can_optimize(const Study& study);
+
 }  // namespace sweetspot::studies
