@@ -650,10 +650,9 @@ std::string utf8_argument(py::handle value, const char* name, const char* expect
       PyUnicode_Check(value.ptr()) ? PyUnicode_AsUTF8AndSize(value.ptr(), &size) : nullptr;
   if (!text) {
     PyErr_Clear();
-    throw io::InputError(
-        name, "",
-        std::string("expected ") + expected + ", got " +
-            io::brief(io::Json(io::valid_utf8(py::repr(value).cast<std::string>()))));
+    throw io::InputError(name, "",
+                         std::string("expected ") + expected + ", got " +
+                             io::brief(io::valid_utf8(py::repr(value).cast<std::string>())));
   }
   return std::string(text, static_cast<std::size_t>(size));
 }
@@ -671,8 +670,7 @@ std::string comma_text(py::handle value, const char* name) {
   for (const py::handle item : value) {
     const std::string one = utf8_argument(item, name, "a str or a list of str");
     if (one.find(',') != std::string::npos)
-      throw io::InputError(name, "",
-                           "a list's item holds a comma, got " + io::brief(io::Json(one)));
+      throw io::InputError(name, "", "a list's item holds a comma, got " + io::brief(one));
     if (!text.empty()) text += ',';
     text += one;
   }
@@ -686,18 +684,16 @@ std::string target_text(py::handle value) {
   for (const auto& [key, item] : py::reinterpret_borrow<py::dict>(value)) {
     const std::string name = utf8_argument(key, "target", "a dict of a spec's name and a number");
     if (name.find_first_of(",=") != std::string::npos)
-      throw io::InputError("target", "",
-                           "a spec's name holds ',' or '=', got " + io::brief(io::Json(name)));
+      throw io::InputError("target", "", "a spec's name holds ',' or '=', got " + io::brief(name));
     // Any real number (NumPy's too), not a bool or a str.
     PyObject* number = PyNumber_Check(item.ptr()) && !PyBool_Check(item.ptr())
                            ? PyNumber_Float(item.ptr())
                            : nullptr;
     if (!number) {
       PyErr_Clear();
-      throw io::InputError(
-          "target", "",
-          "expected a dict of a spec's name and a number, got " + name + ": " +
-              io::brief(io::Json(io::valid_utf8(py::repr(item).cast<std::string>()))));
+      throw io::InputError("target", "",
+                           "expected a dict of a spec's name and a number, got " + name + ": " +
+                               io::brief(io::valid_utf8(py::repr(item).cast<std::string>())));
     }
     const double x = PyFloat_AsDouble(number);
     Py_DECREF(number);

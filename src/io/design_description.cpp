@@ -24,7 +24,7 @@ bool same_head_area(double a_m2, double b_m2) {
 
 namespace {
 
-std::string metres(double value) { return brief(Json(value)); }
+std::string metres(double value) { return brief(value); }
 
 double length_of(const ImplementDescription& d) {
   if (d.form == ImplementDescription::Form::kProfile)

@@ -442,18 +442,18 @@ HeadRead read_head(ObjectReader& r) {
     const double given = *r.number(key);
     HeadShape head;
     head.area_m2 = find_spelling("implement", key)->scale.to_si(given);
-    if (!(head.area_m2 > 0.0)) r.fail(key, "must be > 0, got " + brief(Json(given)));
+    if (!(head.area_m2 > 0.0)) r.fail(key, "must be > 0, got " + brief(given));
     if (const auto aspect = r.number("head_aspect_ratio")) {
       if (!(*aspect >= 1.0 && *aspect <= 10.0)) {
         r.fail("head_aspect_ratio",
-               "must be in [1, 10] (strung length over width), got " + brief(Json(*aspect)));
+               "must be in [1, 10] (strung length over width), got " + brief(*aspect));
       }
       head.aspect_ratio = *aspect;
     }
     if (const auto hoop = r.quantity("hoop_width", Dimension::kLength)) {
       if (!(*hoop >= 0.0 && *hoop <= 1.0)) {
         r.fail(r.one_of(spellings("hoop_width", Dimension::kLength)),
-               "must be in [0, 1] m, got " + brief(Json(*hoop)) + " m");
+               "must be in [0, 1] m, got " + brief(*hoop) + " m");
       }
       head.hoop_width_m = *hoop;
     }
@@ -469,7 +469,7 @@ HeadRead read_head(ObjectReader& r) {
   out.twistweight_kg_m2 = r.quantity("twistweight", Dimension::kInertia);
   if (out.twistweight_kg_m2 && !(*out.twistweight_kg_m2 > 0.0)) {
     r.fail(r.one_of(spellings("twistweight", Dimension::kInertia)),
-           "must be > 0, got " + brief(Json(*out.twistweight_kg_m2 * 1e4)) + " kg cm^2");
+           "must be > 0, got " + brief(*out.twistweight_kg_m2 * 1e4) + " kg cm^2");
   }
   return out;
 }
@@ -734,7 +734,7 @@ CrossSection read_cross_section(ObjectReader& c) {
                                      [&](const auto& k) { return k.first == *name; });
     if (found == std::end(kSectionShapes)) {
       c.fail("shape", "expected rectangle, circle, hollow_circle, ellipse, box or profile, got " +
-                          brief(Json(*name)));
+                          brief(*name));
     }
     section.shape = found->second;
   }
@@ -837,7 +837,7 @@ StringMaterial read_material(ObjectReader& r, StringMaterial fallback) {
   for (const auto& [known, material] : kNames)
     if (*name == known) return material;
   r.fail("material", "expected one of natural_gut, nylon, multifilament, polyester, kevlar, got " +
-                         brief(Json(*name)));
+                         brief(*name));
 }
 
 // The trade's gauges and the middle of each one's diameter range [m] (the
@@ -872,9 +872,8 @@ std::optional<double> read_gauge(ObjectReader& r, std::optional<double> fallback
     }
   }
   if (!(gauge_m >= kMinGauge_m && gauge_m <= kMaxGauge_m)) {
-    r.fail(key, "must be in [" + brief(Json(kMinGauge_m * 1e3)) + ", " +
-                    brief(Json(kMaxGauge_m * 1e3)) + "] mm, got " + brief(Json(gauge_m * 1e3)) +
-                    " mm");
+    r.fail(key, "must be in [" + brief(kMinGauge_m * 1e3) + ", " + brief(kMaxGauge_m * 1e3) +
+                    "] mm, got " + brief(gauge_m * 1e3) + " mm");
   }
   r.record("gauge_m", key);
   return gauge_m;
@@ -905,11 +904,11 @@ StringFamilyRead read_family(ObjectReader& r, const StringFamilyRead& inherited,
     }
     if (f.pull_tension_N && !(*f.pull_tension_N > 0.0)) {
       const std::string key = r.one_of(spellings("tension", Dimension::kForce));
-      r.fail(key, "must be > 0, got " + brief(Json(*r.number(key))));
+      r.fail(key, "must be > 0, got " + brief(*r.number(key)));
     }
     if (f.spacing_m && !(*f.spacing_m > 0.0)) {
       const std::string key = r.one_of(spellings("spacing", Dimension::kLength));
-      r.fail(key, "must be > 0, got " + brief(Json(*r.number(key))));
+      r.fail(key, "must be > 0, got " + brief(*r.number(key)));
     }
     if (!f.pull_tension_N) f.pull_tension_N = inherited.pull_tension_N;
   }
@@ -936,9 +935,9 @@ StringFamilyRead read_family(ObjectReader& r, const StringFamilyRead& inherited,
   if (const auto mu = r.quantity("linear_density", Dimension::kLinearDensity)) {
     if (!(*mu >= kMinStringLinearDensity_kg_m && *mu <= kMaxStringLinearDensity_kg_m)) {
       r.fail(r.one_of(spellings("linear_density", Dimension::kLinearDensity)),
-             "must be in [" + brief(Json(kMinStringLinearDensity_kg_m * 1e3)) + ", " +
-                 brief(Json(kMaxStringLinearDensity_kg_m * 1e3)) + "] g/m, got " +
-                 brief(Json(*mu * 1e3)) + " g/m");
+             "must be in [" + brief(kMinStringLinearDensity_kg_m * 1e3) + ", " +
+                 brief(kMaxStringLinearDensity_kg_m * 1e3) + "] g/m, got " + brief(*mu * 1e3) +
+                 " g/m");
     }
     f.linear_density_kg_m = mu;
   }
@@ -972,8 +971,7 @@ std::pair<int, int> read_pattern(ObjectReader& r) {
     read = crosses_error == std::errc() && after_crosses == end;
   }
   if (!read || mains < 4 || mains > 40 || crosses < 4 || crosses > 40) {
-    r.fail("pattern",
-           "expected mains x crosses, each 4-40, such as \"16x19\", got " + brief(Json(text)));
+    r.fail("pattern", "expected mains x crosses, each 4-40, such as \"16x19\", got " + brief(text));
   }
   return {mains, crosses};
 }
@@ -995,11 +993,11 @@ std::optional<double> read_strings(ObjectReader& top, Reading& in, const Impleme
       const std::string key = r.one_of(spellings("tension", Dimension::kForce));
       const double per_unit = unit_factor(key, "tension", Dimension::kForce).value_or(1.0);
       const std::string unit(unit_of_key(key));
-      r.fail(key, "must be in [" + significant(kMinTension_N / per_unit, 3) + ", " +
-                      significant(kMaxTension_N / per_unit, 4) + "] " + unit +
-                      " (the string bed's tension, " + significant(kMinTension_N, 3) + " to " +
-                      significant(kMaxTension_N, 4) + " N), got " + brief(Json(*r.number(key))) +
-                      " " + unit);
+      const std::string given = brief(*r.number(key));
+      r.fail(key, per_unit == 1.0 ? "must be in [" + significant(kMinTension_N, 4) + ", " +
+                                        significant(kMaxTension_N, 4) + "] N, got " + given + " N"
+                                  : range_in_unit(kMinTension_N, kMaxTension_N, false, per_unit,
+                                                  unit, "N", "", given));
     }
     const Json* mains_json = r.child("mains");
     const Json* crosses_json = r.child("crosses");
@@ -1036,13 +1034,12 @@ std::optional<double> read_strings(ObjectReader& top, Reading& in, const Impleme
          {std::tuple{measured_ring, "measured_ring", Dimension::kFrequency},
           std::tuple{measured_stiffness, "measured_stiffness", Dimension::kSpringRate}}) {
       if (value && !(*value > 0.0))
-        r.fail(r.one_of(spellings(stem, dimension)), "must be > 0, got " + brief(Json(*value)));
+        r.fail(r.one_of(spellings(stem, dimension)), "must be > 0, got " + brief(*value));
     }
     const double loss = r.number("tension_loss").value_or(0.0);
     if (!(loss >= 0.0 && loss <= kMaxTensionLoss)) {
-      r.fail("tension_loss", "must be in [0, " + brief(Json(kMaxTensionLoss)) +
-                                 "] (the share of the pull the bed loses), got " +
-                                 brief(Json(loss)));
+      r.fail("tension_loss", "must be in [0, " + brief(kMaxTensionLoss) +
+                                 "] (the share of the pull the bed loses), got " + brief(loss));
     }
     const bool has_bed = mains.pull_tension_N || measured_ring || measured_stiffness;
     in.string_ticket = mains_json || measured_ring || measured_stiffness || r.has("pattern") ||
@@ -1068,7 +1065,7 @@ std::optional<double> read_strings(ObjectReader& top, Reading& in, const Impleme
       if (!head.empty()) {
         const double given = *r.number(head);
         area_m2 = find_spelling("strings", head)->scale.to_si(given);
-        if (!(area_m2 > 0)) r.fail(head, "must be > 0, got " + brief(Json(*r.number(head))));
+        if (!(area_m2 > 0)) r.fail(head, "must be > 0, got " + brief(*r.number(head)));
         if (in.design.head && !same_head_area(area_m2, in.design.head->area_m2)) {
           r.fail(head, "contradicts /implement/" + implement.head.key +
                            ": one head, one size: give it once, as implement." +
@@ -1110,7 +1107,7 @@ std::optional<double> read_strings(ObjectReader& top, Reading& in, const Impleme
       }
       if (spacing && !(*spacing > 0.0)) {
         const std::string key = r.one_of(spellings("string_spacing", Dimension::kLength));
-        r.fail(key, "must be > 0, got " + brief(Json(*r.number(key))));
+        r.fail(key, "must be > 0, got " + brief(*r.number(key)));
       }
       double main_spacing = spacing.value_or(bed.string_spacing_m);
       double cross_spacing = main_spacing;
@@ -1125,8 +1122,8 @@ std::optional<double> read_strings(ObjectReader& top, Reading& in, const Impleme
         main_spacing = *mains.spacing_m;
         cross_spacing = *crosses.spacing_m;
         if (!(main_spacing > 0.0 && cross_spacing > 0.0)) {
-          r.fail("mains", "spacing must be > 0, got " + brief(Json(main_spacing)) + " and " +
-                              brief(Json(cross_spacing)) + " m");
+          r.fail("mains", "spacing must be > 0, got " + brief(main_spacing) + " and " +
+                              brief(cross_spacing) + " m");
         }
       }
       bed.string_spacing_m = std::sqrt(main_spacing * cross_spacing);
@@ -1142,7 +1139,7 @@ std::optional<double> read_strings(ObjectReader& top, Reading& in, const Impleme
       if (!(bed.tension_N > 0.0 && std::isfinite(bed.cross_tension_ratio) &&
             bed.cross_tension_ratio > 0.0)) {
         r.fail(mains_json ? "mains" : r.one_of(spellings("tension", Dimension::kForce)),
-               "the tension must be > 0, got " + brief(Json(bed.tension_N)) + " N");
+               "the tension must be > 0, got " + brief(bed.tension_N) + " N");
       }
       // The mains' tension is the bed's: a complaint about it names the mains' key.
       if (in.keys && mains_json && in.keys->count("strings/mains/tension_N"))
@@ -1241,7 +1238,7 @@ void read_hand(ObjectReader& top, Reading& in) {
                             in.defaults.hand.grip_damping_N_s_m2};
   if (const std::optional<std::string> grip = r.string("grip")) {
     const auto tightness = grip_tightness(*grip);
-    if (!tightness) r.fail("grip", std::string(kGripExpected) + ", got " + brief(Json(*grip)));
+    if (!tightness) r.fail("grip", std::string(kGripExpected) + ", got " + brief(*grip));
     r.record("grip", "grip");  // listed with the inputs as given
     fallback = grip_coefficients(*tightness);
   }
@@ -1266,7 +1263,7 @@ std::optional<double> read_forearm(ObjectReader& top, Reading& in) {
       try {
         in.design.forearm_equivalent_mass_kg = forearm_equivalent_mass(forearm_mass);  // Eq. (7)
       } catch (const std::invalid_argument&) {
-        r.fail(key, "must be >= 0 kg, got " + brief(Json(forearm_mass)) + " kg");
+        r.fail(key, "must be >= 0 kg, got " + brief(forearm_mass) + " kg");
       }
       r.record("equivalent_mass_kg", key);
       in.note("forearm/equivalent_mass_kg", "derived from forearm/mass_kg (Eq. 7)");
@@ -1342,8 +1339,8 @@ void read_swing(ObjectReader& top, Reading& in) {
   }
   const std::string pivot_key = r.one_of(spellings("pivot_beyond_butt", Dimension::kLength));
   if (!(*pivot >= 0.0 && *pivot <= kMaxPivotBeyondButt_m)) {
-    r.fail(pivot_key, "must be in [0, " + brief(Json(kMaxPivotBeyondButt_m)) + "] m, got " +
-                          brief(Json(*pivot)) + " m");
+    r.fail(pivot_key,
+           "must be in [0, " + brief(kMaxPivotBeyondButt_m) + "] m, got " + brief(*pivot) + " m");
   }
   Swing s;
   s.pivot_beyond_butt_m = *pivot;
@@ -1357,8 +1354,8 @@ void read_swing(ObjectReader& top, Reading& in) {
     const std::string key = r.one_of(spellings("speed_at_impact", Dimension::kSpeed));
     const double arm = *pivot + in.design.impact_from_butt_m;
     if (!(*at_impact > 0.0 && *at_impact <= kMaxSpeed_m_s)) {
-      r.fail(key, "must be in (0, " + brief(Json(kMaxSpeed_m_s)) + "] m/s, got " +
-                      brief(Json(*at_impact)) + " m/s");
+      r.fail(key,
+             "must be in (0, " + brief(kMaxSpeed_m_s) + "] m/s, got " + brief(*at_impact) + " m/s");
     }
     if (!(arm > 0.0)) {
       r.fail(key,
@@ -1369,24 +1366,23 @@ void read_swing(ObjectReader& top, Reading& in) {
     r.record("angular_speed_rad_s", key);
   }
   if (!(s.angular_speed_rad_s > 0.0 && s.angular_speed_rad_s <= kMaxAngularSpeed_rad_s)) {
-    const std::string limit = "the swing's angular speed must be in (0, " +
-                              brief(Json(kMaxAngularSpeed_rad_s)) + "] rad/s (" +
-                              fmt::format("{:.0f}", kMaxAngularSpeed_rad_s * 60.0 / kRadPerRev) +
-                              " rpm), got ";
-    if (rad_s) r.fail("angular_speed_rad_s", limit + brief(Json(*rad_s)) + " rad/s");
-    if (rpm) r.fail("angular_speed_rpm", limit + brief(Json(*rpm)) + " rpm");
+    const std::string limit =
+        "the swing's angular speed must be in (0, " + brief(kMaxAngularSpeed_rad_s) + "] rad/s (" +
+        fmt::format("{:.0f}", kMaxAngularSpeed_rad_s * 60.0 / kRadPerRev) + " rpm), got ";
+    if (rad_s) r.fail("angular_speed_rad_s", limit + brief(*rad_s) + " rad/s");
+    if (rpm) r.fail("angular_speed_rpm", limit + brief(*rpm) + " rpm");
     // A speed at the impact point: say the speed the file gave, in its unit,
     // and the angular speed it makes about the pivot.
     const std::string key = r.one_of(spellings("speed_at_impact", Dimension::kSpeed));
     r.fail(key, limit + brief(*r.child(key)) + " " + std::string(unit_of_key(key)) +
-                    " at the impact point, " + brief(Json(*pivot + in.design.impact_from_butt_m)) +
-                    " m from the pivot: " + brief(Json(s.angular_speed_rad_s)) + " rad/s");
+                    " at the impact point, " + brief(*pivot + in.design.impact_from_butt_m) +
+                    " m from the pivot: " + brief(s.angular_speed_rad_s) + " rad/s");
   }
   s.reference_swingweight_kg_m2 = r.quantity("reference_swingweight", Dimension::kInertia);
   if (s.reference_swingweight_kg_m2 && !(*s.reference_swingweight_kg_m2 > 0.0)) {
     r.fail(r.one_of(spellings("reference_swingweight", Dimension::kInertia)),
            "must be > 0 (the swingweight of the racquet the swing was measured with), got " +
-               brief(Json(*s.reference_swingweight_kg_m2)));
+               brief(*s.reference_swingweight_kg_m2));
   }
   r.finish(design_keys("swing"));
   in.design.swing = s;
@@ -1461,8 +1457,8 @@ ImpactRead read_impact(ObjectReader& top, Reading& in, double L, const std::stri
             along_in_file_unit(key, "from_tip", L, *from_tip, "on the implement");
         r.fail(key, !restated.empty()
                         ? restated
-                        : "must be in [0, " + brief(Json(L)) + "] m (on the implement), got " +
-                              brief(Json(*from_tip)) + " m");
+                        : "must be in [0, " + brief(L) + "] m (on the implement), got " +
+                              brief(*from_tip) + " m");
       }
       in.design.impact_from_butt_m = L - *from_tip;
       impact_m = *from_tip;

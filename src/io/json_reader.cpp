@@ -15,6 +15,7 @@
 #include <utility>
 
 #include "io/design_fields.hpp"
+#include "io/format.hpp"
 #include "io/input_error.hpp"
 
 namespace sweetspot::io {
@@ -228,6 +229,8 @@ std::string brief(const Json& value) {
   if (text.size() > 60) text = text.substr(0, 57) + "...";
   return text;
 }
+
+std::string brief(double value) { return std::isfinite(value) ? exact(value) : brief(Json(value)); }
 
 std::string given_text(const KeyOrigin& origin) {
   return origin.given.is_null() ? std::string() : brief(origin.given);

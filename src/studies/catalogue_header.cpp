@@ -61,7 +61,7 @@ std::string_view trimmed(std::string_view text) {
 }
 
 // A cell or column name quoted for a message, shortened like brief().
-std::string shown(std::string_view text) { return io::brief(io::Json(io::valid_utf8(text))); }
+std::string shown(std::string_view text) { return io::brief(io::valid_utf8(text)); }
 
 bool is_text_field(std::string_view field) {
   // The stringer's words: a material, a pattern, a trade gauge ("16L"; a

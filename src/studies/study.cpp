@@ -180,8 +180,7 @@ StudyVariable read_variable(io::ObjectReader& r, io::Json& design, int grid_poin
   if (v.values.empty() || min || max) {
     if (!min || !max) r.fail("", "missing \"min\" and \"max\" (the variable's bounds)");
     if (!(*min < *max)) {
-      r.fail("min", "must be < max, got min " + io::brief(io::Json(*min)) + " and max " +
-                        io::brief(io::Json(*max)));
+      r.fail("min", "must be < max, got min " + io::brief(*min) + " and max " + io::brief(*max));
     }
     v.min = *min;
     v.max = *max;
@@ -189,9 +188,8 @@ StudyVariable read_variable(io::ObjectReader& r, io::Json& design, int grid_poin
     for (std::size_t k = 0; k < v.values.size(); ++k) {
       if (!(v.values[k] >= v.min && v.values[k] <= v.max)) {
         throw io::InputError(r.source(), value_pointer(k),
-                             "must lie within [min, max] = [" + io::brief(io::Json(v.min)) + ", " +
-                                 io::brief(io::Json(v.max)) + "], got " +
-                                 io::brief(io::Json(v.values[k])));
+                             "must lie within [min, max] = [" + io::brief(v.min) + ", " +
+                                 io::brief(v.max) + "], got " + io::brief(v.values[k]));
       }
     }
   } else {
@@ -200,14 +198,14 @@ StudyVariable read_variable(io::ObjectReader& r, io::Json& design, int grid_poin
   }
   const auto points = r.number("points");
   if (points && !(*points >= 1 && *points <= kMaxGridPoints && *points == std::floor(*points))) {
-    r.fail("points", "must be a whole number in [1, 1e7], got " + io::brief(io::Json(*points)));
+    r.fail("points", "must be a whole number in [1, 1e7], got " + io::brief(*points));
   }
   if (v.values.empty())
     v.values = linspace(v.min, v.max, points ? static_cast<int>(*points) : grid_points);
   const auto start = r.number("start");
   if (start && !(*start >= v.min && *start <= v.max)) {
-    r.fail("start", "must lie within [min, max] = [" + io::brief(io::Json(v.min)) + ", " +
-                        io::brief(io::Json(v.max)) + "], got " + io::brief(io::Json(*start)));
+    r.fail("start", "must lie within [min, max] = [" + io::brief(v.min) + ", " + io::brief(v.max) +
+                        "], got " + io::brief(*start));
   }
   v.start =
       start ? *start : (current >= v.min && current <= v.max ? current : 0.5 * (v.min + v.max));
@@ -232,7 +230,7 @@ ObjectiveTerm read_term(io::ObjectReader& r, bool allow_spread) {
   if (term.goal != Goal::kTarget && target) r.fail("target", "only goal \"target\" takes a target");
   term.target = target.value_or(0.0);
   term.weight = r.number("weight").value_or(1.0);
-  if (!(term.weight > 0)) r.fail("weight", "must be > 0, got " + io::brief(io::Json(term.weight)));
+  if (!(term.weight > 0)) r.fail("weight", "must be > 0, got " + io::brief(term.weight));
   std::vector<std::string> keys{"output", "goal", "target", "weight"};
   if (allow_spread) keys.insert(keys.end(), {"over_impacts", "terms"});
   r.finish(keys);
@@ -260,7 +258,7 @@ ImpactSpread read_spread(io::ObjectReader& r) {
   }
   const double points = r.number("points").value_or(8);
   if (!(points >= 2 && points <= 1000 && points == std::floor(points))) {
-    r.fail("points", "must be a whole number in [2, 1000], got " + io::brief(io::Json(points)));
+    r.fail("points", "must be a whole number in [2, 1000], got " + io::brief(points));
   }
   spread.points = static_cast<int>(points);
   const auto reduce = r.string("reduce").value_or("max");
@@ -346,7 +344,7 @@ int read_grid_points(StudyReading& in) {
     io::ObjectReader g(*grid, "/grid", "grid", in.source, nullptr);
     const auto points = g.number("points");
     if (points && !(*points >= 1 && *points <= kMaxGridPoints && *points == std::floor(*points))) {
-      g.fail("points", "must be a whole number in [1, 1e7], got " + io::brief(io::Json(*points)));
+      g.fail("points", "must be a whole number in [1, 1e7], got " + io::brief(*points));
     }
     if (points) grid_points = static_cast<int>(*points);
     g.finish({"points"});
@@ -375,8 +373,7 @@ void read_variables(StudyReading& in, int grid_points) {
     total *= static_cast<double>(study.variables[i].values.size());
   }
   if (total > kMaxGridTotal) {
-    in.top.fail("variables",
-                "a grid of " + io::brief(io::Json(total)) + " points is more than 1e8");
+    in.top.fail("variables", "a grid of " + io::brief(total) + " points is more than 1e8");
   }
 }
 
@@ -425,12 +422,11 @@ StudyConstraint read_constraint(io::ObjectReader& r) {
   if (!c.min && !c.max && !c.equals) r.fail("", "give \"min\", \"max\" or \"equals\"");
   if (c.equals && (c.min || c.max)) r.fail("equals", "give either \"equals\" or \"min\"/\"max\"");
   if (c.min && c.max && !(*c.min <= *c.max)) {
-    r.fail("min", "must be <= max, got min " + io::brief(io::Json(*c.min)) + " and max " +
-                      io::brief(io::Json(*c.max)));
+    r.fail("min", "must be <= max, got min " + io::brief(*c.min) + " and max " + io::brief(*c.max));
   }
   c.tolerance = r.number("tolerance");
   if (c.tolerance && !(*c.tolerance > 0))
-    r.fail("tolerance", "must be > 0, got " + io::brief(io::Json(*c.tolerance)));
+    r.fail("tolerance", "must be > 0, got " + io::brief(*c.tolerance));
   r.finish({"output", "min", "max", "equals", "tolerance"});
   return c;
 }
@@ -450,7 +446,7 @@ void read_tolerances(StudyReading& in) {
   io::ObjectReader t(*tolerances, "/tolerances", "", in.source, nullptr);
   const auto positive = [&](std::string_view key, double fallback) {
     const auto value = t.number(key);
-    if (value && !(*value > 0)) t.fail(key, "must be > 0, got " + io::brief(io::Json(*value)));
+    if (value && !(*value > 0)) t.fail(key, "must be > 0, got " + io::brief(*value));
     return value.value_or(fallback);
   };
   o.x_tolerance_rel = positive("x_rel", o.x_tolerance_rel);
@@ -460,7 +456,7 @@ void read_tolerances(StudyReading& in) {
     if (!(*max_evaluations >= 1 && *max_evaluations <= 1e9 &&
           *max_evaluations == std::floor(*max_evaluations))) {
       t.fail("max_evaluations",
-             "must be a whole number in [1, 1e9], got " + io::brief(io::Json(*max_evaluations)));
+             "must be a whole number in [1, 1e9], got " + io::brief(*max_evaluations));
     }
     o.max_evaluations = static_cast<int>(*max_evaluations);
   }
@@ -485,8 +481,7 @@ void read_algorithm_options(StudyReading& in) {
   }
   if (const auto seed = in.top.number("seed")) {
     if (!(*seed >= 0 && *seed <= 4294967295.0 && *seed == std::floor(*seed))) {
-      in.top.fail("seed",
-                  "must be a whole number in [0, 4294967295], got " + io::brief(io::Json(*seed)));
+      in.top.fail("seed", "must be a whole number in [0, 4294967295], got " + io::brief(*seed));
     }
     o.seed = static_cast<unsigned long>(*seed);
   }
@@ -564,8 +559,7 @@ void read_fidelity(StudyReading& in) {
   }
   if (const auto tolerance = in.top.number("modal_tolerance")) {
     if (!(*tolerance >= kMinRelTol && *tolerance <= kMaxRelTol)) {
-      in.top.fail("modal_tolerance",
-                  "must be in [1e-08, 0.1], got " + io::brief(io::Json(*tolerance)));
+      in.top.fail("modal_tolerance", "must be in [1e-08, 0.1], got " + io::brief(*tolerance));
     }
     study.modal_tolerance = *tolerance;
   }
@@ -602,11 +596,11 @@ void check_start(const Study& study, const std::string& source) {
   if (!study.over_impacts) return;
   const double length_m = at_start.design.implement.length_m();
   if (study.over_impacts->from_tip_hi_m > length_m) {
-    throw io::InputError(
-        source, "/objective/over_impacts/from_tip_m/1",
-        "the farthest impact, " + io::brief(io::Json(study.over_impacts->from_tip_hi_m)) +
-            " m from the tip, is off the implement, which is " + io::brief(io::Json(length_m)) +
-            " m long (at the start); expected at most " + io::brief(io::Json(length_m)) + " m");
+    throw io::InputError(source, "/objective/over_impacts/from_tip_m/1",
+                         "the farthest impact, " + io::brief(study.over_impacts->from_tip_hi_m) +
+                             " m from the tip, is off the implement, which is " +
+                             io::brief(length_m) + " m long (at the start); expected at most " +
+                             io::brief(length_m) + " m");
   }
 }
 
@@ -715,9 +709,8 @@ std::optional<std::string> objective_undefined(const Study& study, const io::Des
     for (int k = 0; k < spread.points; ++k) {
       const double x = spread_from_butt(spread, L, k);
       if (!(x >= 0.0 && x <= L)) {
-        return "the impact " + io::brief(io::Json(spread_from_tip(spread, k))) +
-               " m from the tip is off the implement, which is " + io::brief(io::Json(L)) +
-               " m long";
+        return "the impact " + io::brief(spread_from_tip(spread, k)) +
+               " m from the tip is off the implement, which is " + io::brief(L) + " m long";
       }
       d.impact_from_butt_m = x;
       if (auto why = terms_undefined(

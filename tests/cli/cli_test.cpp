@@ -575,7 +575,7 @@ TEST_CASE(
   CHECK(run.status == 2);
   CHECK(run.out.empty());
   CHECK(run.err.find(study.string() +
-                     ": /objective/over_impacts/from_tip_m/1: the farthest impact, 5.0 m") !=
+                     ": /objective/over_impacts/from_tip_m/1: the farthest impact, 5 m") !=
         std::string::npos);
   CHECK(run.err.find("0.7 m long") != std::string::npos);
 }

@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -43,6 +44,18 @@ TEST_CASE("Text made valid UTF-8 replaces each stray byte and keeps the rest") {
   CHECK(valid_utf8("caf\xC3\xA9") == "caf\xC3\xA9");
   // What nlohmann refuses to write as a string, it now writes.
   CHECK_NOTHROW(Json(valid_utf8("bad\xC3(name")).dump());
+}
+
+TEST_CASE("A number the program holds is quoted shortest; a value of the file as written") {
+  CHECK(brief(-52.0) == "-52");
+  CHECK(brief(0.1) == "0.1");
+  CHECK(brief(0.17000000000000004) == "0.17000000000000004");  // every digit it has
+  CHECK(brief(1e300) == "1e+300");
+  CHECK(brief(std::numeric_limits<double>::infinity()) == "null");  // as JSON has it
+  // The file's own text: a float it wrote as 5.0 stays 5.0, an integer stays one.
+  CHECK(brief(Json::parse("5.0")) == "5.0");
+  CHECK(brief(Json::parse("5")) == "5");
+  CHECK(brief(std::string("16x19")) == "\"16x19\"");
 }
 
 TEST_CASE("A known key that nothing read is not called unknown") {

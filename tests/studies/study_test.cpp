@@ -247,7 +247,7 @@ TEST_CASE("Bad studies are refused with the study's JSON path") {
              Catch::StartsWith("/constraints/0"));
 }
 
-TEST_CASE("optimize refuses a bound the design cannot take alone; a sweep walks it") {
+TEST_CASE("optimize refuses a bound the design cannot take alone, which a sweep walks") {
   const auto study_of = [](const char* variable) {
     return studies::read_study(
         nlohmann::json::parse(std::string(R"({"design": "../table1/row1.json", "variables": [)") +
