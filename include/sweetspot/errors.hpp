@@ -24,6 +24,7 @@ class FieldError : public std::invalid_argument {
     bool min_open = false;  // "> min" rather than ">= min"
     double value = 0.0;     // the value refused, in SI
     const char* why = "";   // what sets the range, said after it ("for this mass, ...")
+    bool max_open = false;  // "< max" rather than "<= max"
   };
 
   // `after` ends the detail and is said again after a range restated in

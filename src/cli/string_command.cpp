@@ -105,8 +105,11 @@ int StringCommand::run() const {
                                                    io::input_name(design_path), settings_of);
   if (!file.design.strings) {
     throw io::InputError(file.source, "/strings",
-                         "no string bed: give strings.tension_lb (or a stringer's ticket: "
-                         "pattern, mains, crosses)");
+                         is_round(file.design)
+                             ? "no string bed: an implement given by its profile is round (a "
+                               "bat, a rod) and has none; `string` answers a racquet's strings"
+                             : "no string bed: give strings.tension_lb (or a stringer's ticket: "
+                               "pattern, mains, crosses)");
   }
   reports::StringAnswer answer{file.name, studies::read_bed(file.design), std::nullopt, ""};
   // The contact time `evaluate` gives, beside the two springs' estimate, when

@@ -127,6 +127,21 @@ FlexibleFrame flexible_frame(const Design& design) {
       throw ModelRefusal("frame/fundamental_free_Hz", *stiffness.fundamental_free_Hz,
                          "the frame's EI scaled to reach it: " + r.detail());
     }
+    // The EI it takes stays in the range a given EI must be in: EI grows as
+    // f^2, so the highest frequency is f sqrt(kMaxEI / the stiffest section's EI).
+    double stiffest = 0.0;
+    for (const Section& s : frame.sections) stiffest = std::max(stiffest, *s.EI_N_m2);
+    const double f = *stiffness.fundamental_free_Hz;
+    if (!(stiffest <= kMaxEI_N_m2)) {
+      const double highest = f * std::sqrt(kMaxEI_N_m2 / stiffest);
+      throw FieldError("frame/fundamental_free_Hz",
+                       "must be in (0, " + detail::format_significant(highest) +
+                           "] Hz for the frame's EI to stay at most " +
+                           detail::format_number(kMaxEI_N_m2) + " N m^2, got " +
+                           detail::format_number(f) + " Hz",
+                       FieldError::Range{0.0, highest, true, f,
+                                         "for the frame's EI to stay at most 1e+12 N m^2"});
+    }
   } else if (stiffness.RA) {
     // RA rates the frame as sold: its fundamental without the design's point
     // masses sets the stiffness, which the point masses then load.
@@ -197,7 +212,10 @@ HandCoupling hand_coupling(const Design& design) {
                          "] m for the modes, half the grip (" +
                          detail::format_significant(hand.grip_length_m) +
                          " m long) from either end, so the hand grips the implement; got " +
-                         detail::format_significant(hand.center_from_butt_m) + " m");
+                         detail::format_significant(hand.center_from_butt_m) + " m",
+                     FieldError::Range{half, L - half, false, hand.center_from_butt_m,
+                                       "for the modes, half the grip from either end, so the "
+                                       "hand grips the implement"});
   }
   // Its centre within the range, the grip still past an end by round-off
   // (a grip of 1e-300 m at the tip): as the modes check it (validate_hand).

@@ -225,9 +225,10 @@ Implement Implement::from_specs(const IndustrySpecs& specs, std::vector<PointMas
   // one's inertia would reach the underflow of the numbers it is built from.
   detail::require_in_range("mass_kg", M, kMinImplementMass_kg, kMaxMass_kg, "kg");
   if (!std::isfinite(B) || B <= 0.0 || B >= L) {
-    throw FieldError("balance_from_butt_m", "must lie inside the length (0, " +
-                                                detail::format_number(L) + ") m, got " +
-                                                detail::format_number(B) + " m");
+    throw FieldError("balance_from_butt_m",
+                     "must lie inside the length (0, " + detail::format_number(L) + ") m, got " +
+                         detail::format_number(B) + " m",
+                     FieldError::Range{0.0, L, true, B, "inside the length", true});
   }
   detail::require_positive("swingweight_kg_m2", specs.swingweight_kg_m2, "kg m^2");
   // A body on [0, L] with its centre of mass at B has 0 < I_cm <= M B (L - B)

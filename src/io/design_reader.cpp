@@ -8,6 +8,7 @@
 #include <iterator>
 #include <limits>
 #include <optional>
+#include <regex>
 #include <stdexcept>
 #include <tuple>
 #include <utility>
@@ -64,39 +65,60 @@ bool is_design_path(std::string_view name) {
 // beside it, and the value as the file gave it.
 std::string range_in_unit(double min, double max, bool min_open, double per_unit,
                           std::string_view unit, std::string_view si_unit, std::string_view why,
-                          const std::string& given) {
+                          const std::string& given, bool max_open = false) {
   std::string text = std::string("must be in ") + (min_open ? "(" : "[") +
-                     significant(min / per_unit, 4) + ", " + significant(max / per_unit, 4) + "] " +
-                     std::string(unit) + " (" + significant(min, 4) + " to " + significant(max, 4) +
-                     " " + std::string(si_unit) + ")";
+                     significant(min / per_unit, 4) + ", " + significant(max / per_unit, 4) +
+                     (max_open ? ") " : "] ") + std::string(unit) + " (" + significant(min, 4) +
+                     " to " + significant(max, 4) + " " + std::string(si_unit) + ")";
   if (!why.empty()) text += " " + std::string(why);
   return text + ", got " + given + " " + std::string(unit);
 }
 
 std::optional<std::string> range_in_file_unit(const std::invalid_argument& error,
                                               const KeyOrigin& origin, const std::string& si_key,
-                                              const std::string& user_key) {
+                                              const std::string& user_key,
+                                              const std::string& canonical) {
   const auto* typed = dynamic_cast<const FieldError*>(&error);
   if (!typed || !typed->range() || !origin.given.is_number()) return std::nullopt;
   const FieldError::Range& range = *typed->range();
   const double given = origin.given.get<double>();
-  const double per_unit = range.value / given;  // SI per file unit
+  double per_unit = range.value / given;  // SI per file unit
+  if (given == 0.0) {
+    // 0 in any unit: the unit's factor from the field table ("hand/...": the
+    // object "hand"; "implement/point_masses/2/...": "implement/point_masses/N").
+    std::string object = canonical.substr(0, canonical.rfind('/'));
+    object = std::regex_replace(object, std::regex("/[0-9]+(/|$)"), "/N$1");
+    if (const auto spelling = find_spelling(object, user_key))
+      per_unit = spelling->scale.to_si(1.0);
+  }
   const std::string unit(unit_of_key(user_key));
   const std::string si_unit(unit_of_key(si_key));
   // A subnormal value has lost the digits the ratio needs (1e-320 g is not
   // 1e-323 kg to three figures).
   if (!(std::isfinite(per_unit) && per_unit > 0.0) || unit.empty() || si_unit.empty() ||
-      !(std::fabs(range.value) >= std::numeric_limits<double>::min()))
+      (range.value != 0.0 && !(std::fabs(range.value) >= std::numeric_limits<double>::min())))
     return std::nullopt;
   if (std::isfinite(range.min) && std::isfinite(range.max)) {
     return range_in_unit(range.min, range.max, range.min_open, per_unit, unit, si_unit, range.why,
-                         given_text(origin)) +
+                         given_text(origin), range.max_open) +
            typed->after();
   }
   if (!std::isfinite(range.min)) return std::nullopt;
   return std::string("must be ") + (range.min_open ? "> " : ">= ") +
          significant(range.min / per_unit, 4) + " " + unit + ", got " + given_text(origin) + " " +
          unit + typed->after();
+}
+
+// Whether two keys spell one field of the table in two units ("speed_m_s"
+// and "speed_km_h", whose stems a split at the last '_' tells apart).
+bool same_field(std::string_view a, std::string_view b) {
+  for (const DesignField& field : design_fields()) {
+    const std::vector<std::string> keys = spellings_of(field);
+    if (std::find(keys.begin(), keys.end(), a) != keys.end() &&
+        std::find(keys.begin(), keys.end(), b) != keys.end())
+      return true;
+  }
+  return false;
 }
 
 // The physics core names a bad argument by its canonical SI path relative to
@@ -137,8 +159,9 @@ std::optional<std::string> range_in_file_unit(const std::invalid_argument& error
       if (!it->second.derived_by.empty())
         detail += " (the file's " + user_key + ": " + given_text(it->second) + ", " +
                   it->second.derived_by + ")";
-      else if (si_key != user_key && user_key.starts_with(stem)) {
-        if (const auto restated = range_in_file_unit(error, it->second, si_key, user_key))
+      else if (si_key != user_key && (user_key.starts_with(stem) || same_field(si_key, user_key))) {
+        if (const auto restated =
+                range_in_file_unit(error, it->second, si_key, user_key, it->first))
           detail = *restated;
         else
           detail +=
@@ -539,6 +562,9 @@ ImplementRead read_implement(const Json& document, const std::string& source, Ke
   // it places the clock positions, and a head too long for the implement is
   // named at its key.
   const auto place = [&](double length_m) {
+    // A length that is no length is the builder's to name, at its key: no
+    // head or lead is placed on it (each builder refuses it before using them).
+    if (!(length_m > 0.0 && std::isfinite(length_m))) return;
     if (head.head) {
       try {
         (void)string_bed(*head.head, length_m);

@@ -23,7 +23,8 @@ constexpr std::string_view kNeedsModes =
     "and evaluate with --fidelity modal or auto";
 
 constexpr std::string_view kNoPolarInertia =
-    "no polar inertia: give implement/twistweight_kg_cm2 or implement/headsize_sq_in";
+    "no polar inertia: give implement/twistweight_kg_cm2 (or a racquet's "
+    "implement/headsize_sq_in)";
 constexpr std::string_view kNeedsResponse =
     "needs the response model: give the frame's stiffness and evaluate with --fidelity response "
     "(or auto with frame cor_rigid)";

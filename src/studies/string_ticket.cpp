@@ -17,8 +17,11 @@ using io::kPoundForce_N;
 const StringBed& bed_of(const Design& design) {
   if (!design.strings) {
     throw std::invalid_argument(
-        "strings: the design has no string bed: give strings.tension_lb (or a ticket: pattern, "
-        "mains, crosses)");
+        is_round(design)
+            ? "strings: the design is given by its profile, a round implement (a bat, a rod), "
+              "which has no string bed"
+            : "strings: the design has no string bed: give strings.tension_lb (or a ticket: "
+              "pattern, mains, crosses)");
   }
   return *design.strings;
 }

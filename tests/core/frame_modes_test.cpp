@@ -92,6 +92,21 @@ std::vector<double> free_frequencies(const Design& d) {
 // its own diameter. On a uniform rod or tube every slice is the same section,
 // so the modes are those of that one circle or tube given by its sizes; on a
 // taper they are below Euler-Bernoulli's, and reach them as G grows.
+TEST_CASE("A fundamental is refused where the EI it takes passes the range a given EI has") {
+  // The highest fundamental is the one a frame of the largest EI allowed has:
+  // EI grows as f^2 when every section is scaled alike.
+  Design stiffest{Implement::paper_racquet(0.70, 0.25, 0.8)};
+  stiffest.stiffness.EI_N_m2 = kMaxEI_N_m2;
+  const double highest = evaluate(stiffest, Fidelity::kModal).modal->fundamental_free_Hz;
+  Design d{Implement::paper_racquet(0.70, 0.25, 0.8)};
+  d.stiffness.fundamental_free_Hz = highest * (1.0 - 1e-6);
+  CHECK_NOTHROW(evaluate(d, Fidelity::kModal));
+  d.stiffness.fundamental_free_Hz = highest * (1.0 + 1e-6);
+  CHECK_THROWS_WITH(evaluate(d, Fidelity::kModal),
+                    Catch::StartsWith("frame/fundamental_free_Hz: must be in (0, ") &&
+                        Catch::Contains("for the frame's EI to stay at most 1e+12 N m^2"));
+}
+
 TEST_CASE("A profile's sections are each its own circle or tube") {
   using Shape = CrossSection::Shape;
   const std::vector<ProfileStation> uniform{{0.0, 0.05}, {0.72, 0.05}};

@@ -46,14 +46,16 @@ TEST_CASE("Text made valid UTF-8 replaces each stray byte and keeps the rest") {
   CHECK_NOTHROW(Json(valid_utf8("bad\xC3(name")).dump());
 }
 
-TEST_CASE("A number the program holds is quoted shortest; a value of the file as written") {
+TEST_CASE("A number is quoted as the shortest text that reads back to it") {
   CHECK(brief(-52.0) == "-52");
   CHECK(brief(0.1) == "0.1");
   CHECK(brief(0.17000000000000004) == "0.17000000000000004");  // every digit it has
   CHECK(brief(1e300) == "1e+300");
   CHECK(brief(std::numeric_limits<double>::infinity()) == "null");  // as JSON has it
-  // The file's own text: a float it wrote as 5.0 stays 5.0, an integer stays one.
-  CHECK(brief(Json::parse("5.0")) == "5.0");
+  // A value of the file the same way: 1e9 not as JSON's 1000000000.0.
+  CHECK(brief(Json::parse("1e9")) == "1000000000");
+  CHECK(brief(Json::parse("2.5e-7")) == "2.5e-07");
+  CHECK(brief(Json::parse("5.0")) == "5");
   CHECK(brief(Json::parse("5")) == "5");
   CHECK(brief(std::string("16x19")) == "\"16x19\"");
 }
