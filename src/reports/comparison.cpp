@@ -391,6 +391,11 @@ struct InputField {
   // Derived from the head's size when the file gives one: not named again
   // when the head size itself differs.
   bool follows_head = false;
+  // What a design without the value has instead ("none"; the COR the solved
+  // collision derives is "derived").
+  const char* absent = "none";
+  // The evaluation derived it (the COR of the solved collision): no input.
+  bool derived_by_evaluation = false;
 };
 
 template <typename T>
@@ -424,7 +429,8 @@ const std::vector<InputField>& input_fields() {
        Within::kHead, false},
       {Part::kImplementShape, "twistweight", "kg·cm²", 1e4,
        [](D d) { return given(d.twistweight_kg_m2); }},
-      {Part::kFrame, "COR", "", 1.0, [](D d) -> std::optional<double> { return d.cor; }},
+      {Part::kFrame, "COR", "", 1.0, [](D d) -> std::optional<double> { return d.cor; },
+       Within::kDesign, true, false, "derived", true},
       {Part::kFrame, "COR on a rigid frame", "", 1.0, [](D d) { return given(d.cor_rigid); }},
       {Part::kFrame, "EI", "N·m²", 1.0, [](D d) { return given(d.stiffness.EI_N_m2); }},
       {Part::kFrame, "free fundamental", "Hz", 1.0,
@@ -524,15 +530,15 @@ bool same_number(std::optional<double> a, std::optional<double> b) {
 
 // "50 → 40 m/s": as many digits as it takes to tell the two apart.
 std::string from_to(std::optional<double> a, std::optional<double> b, double factor,
-                    std::string_view unit) {
+                    std::string_view unit, std::string_view absent = "none") {
   int digits = 4;
   const auto text = [&](std::optional<double> v) {
-    return v ? io::significant(*v * factor, digits) : std::string("none");
+    return v ? io::significant(*v * factor, digits) : std::string(absent);
   };
   while (digits < 17 && text(a) == text(b)) ++digits;
   const std::string with_unit = unit.empty() ? "" : " " + std::string(unit);
   // "645.2 cm² → none": the unit goes with the number.
-  if (a && !b) return fmt::format("{}{} → none", text(a), with_unit);
+  if (a && !b) return fmt::format("{}{} → {}", text(a), with_unit, absent);
   return fmt::format("{} → {}{}", text(a), text(b), b ? with_unit : "");
 }
 
@@ -558,7 +564,9 @@ void list_differences(
 }
 
 // Every input that differs between the two read designs, field by field, by part.
-std::vector<std::pair<Part, std::string>> field_differences(const Design& a, const Design& b) {
+// `a_derived`, `b_derived`: whether each evaluation derived its COR.
+std::vector<std::pair<Part, std::string>> field_differences(const Design& a, const Design& b,
+                                                            bool a_derived, bool b_derived) {
   std::vector<std::pair<Part, std::string>> out;
   const auto one_has = [&](Within within) {
     return within == Within::kHead      ? a.head.has_value() != b.head.has_value()
@@ -572,9 +580,11 @@ std::vector<std::pair<Part, std::string>> field_differences(const Design& a, con
   for (const InputField& f : input_fields()) {
     if (!f.first && one_has(f.within)) continue;
     if (f.follows_head && head_differs) continue;
-    const auto va = f.value(a), vb = f.value(b);
+    const auto va = f.derived_by_evaluation && a_derived ? std::nullopt : f.value(a);
+    const auto vb = f.derived_by_evaluation && b_derived ? std::nullopt : f.value(b);
     if (!same_number(va, vb))
-      out.emplace_back(f.part, fmt::format("{} {}", f.name, from_to(va, vb, f.factor, f.unit)));
+      out.emplace_back(f.part,
+                       fmt::format("{} {}", f.name, from_to(va, vb, f.factor, f.unit, f.absent)));
   }
   // What is named, not numbered: what holds the implement (free or the hand:
   // compare refuses a rig) and the ball's law.
@@ -627,7 +637,9 @@ std::string inputs_sentence(const ComparedDesign& a, const ComparedDesign& b) {
   std::vector<Part> players_parts;
   std::map<Part, std::vector<std::string>> by_part;
   bool racquet_differs = false;
-  for (const auto& [part, text] : field_differences(a.design.design, b.design.design)) {
+  for (const auto& [part, text] :
+       field_differences(a.design.design, b.design.design, a.spots.asked.evaluation.cor_derived,
+                         b.spots.asked.evaluation.cor_derived)) {
     if (is_racquet(part)) {
       racquet_differs = true;
       const bool said = (part == Part::kMassDistribution && words.mass_distribution) ||
@@ -1069,11 +1081,18 @@ std::string comparison_html(const std::vector<ComparedDesign>& designs) {
       "</code> gives it).</p>\n" +
       side_by_side_html(designs) + "</section>\n";
 
-  html +=
-      "<section id=\"racquets\"><h2>The racquets, to one scale</h2>\n<p>Each from above, tip "
-      "on the left: the balance point (triangle), the hand-held COP (red dot), the node (blue "
-      "diamond, when the frame's stiffness is known), the lead (orange) and the ball at the "
-      "impact (off the axis where the hit is, 3 o'clock up).</p>\n";
+  // Racquets, bats (given by a profile), or implements when both.
+  const auto round_count = std::count_if(designs.begin(), designs.end(),
+                                         [](const auto& c) { return is_round(c.design.design); });
+  const std::string things = round_count == 0 ? "racquets"
+                             : round_count == static_cast<std::ptrdiff_t>(designs.size())
+                                 ? "bats"
+                                 : "implements";
+  html += "<section id=\"racquets\"><h2>The " + things +
+          ", to one scale</h2>\n<p>Each from above, tip "
+          "on the left: the balance point (triangle), the hand-held COP (red dot), the node (blue "
+          "diamond, when the frame's stiffness is known), the lead (orange) and the ball at the "
+          "impact (off the axis where the hit is, 3 o'clock up).</p>\n";
   std::vector<reports::DrawnRacquet> drawn;
   for (const ComparedDesign& c : designs)
     drawn.push_back({&c.design, &c.spots.asked.evaluation, reports::html_escape(c.design.name)});
@@ -1089,7 +1108,8 @@ std::string comparison_html(const std::vector<ComparedDesign>& designs) {
   return html + reports::html_page_close(
                     "Computed by sweetspot from " + sources +
                     ", after R. Cross, \"Center of percussion of hand-held implements\", Am. J. "
-                    "Phys. 72 (2004). Positions are measured from the tip of the racquet.");
+                    "Phys. 72 (2004). Positions are measured from the tip of each of the " +
+                    things + ".");
 }
 
 }  // namespace sweetspot::reports

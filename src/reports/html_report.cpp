@@ -642,7 +642,7 @@ FramePlots frame_plots(const io::DesignFile& file, const Evaluation& e,
                        const std::vector<studies::FramePoint>& curve, studies::AxisSpan span) {
   const Design& d = file.design;
   const double L = d.implement.length_m();
-  io::PlotSeries wrist{"wrist force / string force, |F_w / F|", {}, {}, "lines lw 2.5"};
+  io::PlotSeries wrist{"wrist force / impact force, |F_w / F|", {}, {}, "lines lw 2.5"};
   io::PlotSeries cor{"apparent COR e_A", {}, {}, "lines lw 2.5"};
   cor.color = io::plot_color(1);
   for (const studies::FramePoint& p : curve) {

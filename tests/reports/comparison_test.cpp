@@ -93,6 +93,21 @@ TEST_CASE("compare names what differs in the implement, never calling it the sam
         "B against A: head size 100 → 110 sq in; and the ball differs: speed 50 → 40 m/s.");
 }
 
+TEST_CASE("compare names a COR the solved collision derived against one given") {
+  // At the rigid fidelity the default 0.8 is the COR used; solved, the
+  // collision derives its own, and a given 0.8 is then a difference.
+  const io::Json a = io::Json::parse(kBase);
+  const io::Json b = with("/frame/cor", 0.8);
+  const auto at = [](const io::Json& document, const char* fidelity) {
+    return studies::compare_one(
+        io::read_design(document, document["name"].get<std::string>() + ".json"), fidelity, 1e-6);
+  };
+  CHECK(differences(at(a, "rigid"), at(b, "rigid")).front() ==
+        "B against A: the same implement, held and hit the same way.");
+  CHECK(differences(at(a, "auto"), at(b, "auto")).front() ==
+        "B against A: the frame's COR derived → 0.8.");
+}
+
 TEST_CASE("compare names every input of the read design that differs, by its part") {
   struct Change {
     const char* pointer;
