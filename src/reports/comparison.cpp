@@ -1088,8 +1088,11 @@ std::string comparison_html(const std::vector<ComparedDesign>& designs) {
                              : round_count == static_cast<std::ptrdiff_t>(designs.size())
                                  ? "bats"
                                  : "implements";
-  html += "<section id=\"racquets\"><h2>The " + things +
-          ", to one scale</h2>\n<p>Each from above, tip "
+  html += "<section id=\"racquets\"><h2>The " + things + ", to one scale</h2>\n<p>" +
+          (things == "racquets" ? "Each from above"
+           : things == "bats"   ? "Each from the side"
+                                : "Each racquet from above and each bat from the side") +
+          ", tip "
           "on the left: the balance point (triangle), the hand-held COP (red dot), the node (blue "
           "diamond, when the frame's stiffness is known), the lead (orange) and the ball at the "
           "impact (off the axis where the hit is, 3 o'clock up).</p>\n";

@@ -399,7 +399,8 @@ namespace {
 // `half` cm either side of the axis), the hand, the tape, the ball arriving
 // on the face (from above in this view), the marks and the ruler.
 std::string side_view_svg(const io::DesignFile& file, const Evaluation& e, double half,
-                          const std::string& title_html, const std::string& body) {
+                          const std::string& title_html, const std::string& body,
+                          const std::string& id = "side") {
   const double L = file.design.implement.length_m() * 100.0;
   std::vector<Mark> ms = marks(file, e, 0.0);
   tape_marks(file, ms);
@@ -409,10 +410,10 @@ std::string side_view_svg(const io::DesignFile& file, const Evaluation& e, doubl
   const double top = -half - ball_cm - 12.0;
   const double bottom = half + 9.0;
   std::string svg = fmt::format(
-      "<svg class=\"drawing\" viewBox=\"-2 {} {} {}\" role=\"img\" aria-labelledby=\"side-title\" "
-      "xmlns=\"http://www.w3.org/2000/svg\"><title id=\"side-title\">{} from the side, "
-      "to scale</title>\n",
-      n(top), n(L + 4), n(bottom - top), title_html);
+      "<svg class=\"drawing\" viewBox=\"-2 {0} {1} {2}\" role=\"img\" "
+      "aria-labelledby=\"{4}-title\" xmlns=\"http://www.w3.org/2000/svg\"><title "
+      "id=\"{4}-title\">{3} from the side, to scale</title>\n",
+      n(top), n(L + 4), n(bottom - top), title_html, html_escape(id));
   svg += body;
   svg += hand_and_tape(file, half, true);
   svg += fmt::format(
@@ -442,7 +443,7 @@ std::string racquet_side_svg(const io::DesignFile& file, const Evaluation& e) {
 // per length (the profile's own diameter); without it, the widths follow the
 // square root of the mass per length, the widest kBeamDepth_cm.
 std::string implement_side_svg(const io::DesignFile& file, const Evaluation& e,
-                               std::optional<double> density_kg_m3) {
+                               std::optional<double> density_kg_m3, const std::string& id) {
   const Implement& implement = file.design.implement;
   const double L = implement.length_m() * 100.0;
   double widest_mu = 0.0;
@@ -467,7 +468,7 @@ std::string implement_side_svg(const io::DesignFile& file, const Evaluation& e,
     from_butt -= s->length_m * 100.0;
   }
   return side_view_svg(file, e, half, html_escape(file.name),
-                       fmt::format("<path class=\"shaft\" d=\"{}{}Z\"/>\n", outline, lower));
+                       fmt::format("<path class=\"shaft\" d=\"{}{}Z\"/>\n", outline, lower), id);
 }
 
 std::string racquets_to_scale_html(const std::vector<DrawnRacquet>& racquets,
@@ -475,6 +476,18 @@ std::string racquets_to_scale_html(const std::vector<DrawnRacquet>& racquets,
   double longest_cm = 0.0;
   for (const DrawnRacquet& r : racquets)
     longest_cm = std::max(longest_cm, r.file->design.implement.length_m() * 100.0);
+  // A racquet from above; an implement that is none (a bat) from the side, as
+  // its own page draws it, a profile at its own diameters.
+  const auto drawing = [](const DrawnRacquet& r, const std::string& drawing_id) {
+    const io::DesignFile& file = *r.file;
+    if (!studies::is_racquet(file) && file.design.implement.has_mass_distribution()) {
+      const auto& profile = file.design.implement.profile();
+      return implement_side_svg(file, *r.evaluation,
+                                profile ? std::optional(profile->density_kg_m3) : std::nullopt,
+                                drawing_id);
+    }
+    return racquet_top_svg(file, *r.evaluation, drawn_head_area_m2(file), html_escape(drawing_id));
+  };
   std::string html;
   for (std::size_t k = 0; k < racquets.size(); ++k) {
     const DrawnRacquet& r = racquets[k];
@@ -485,9 +498,7 @@ std::string racquets_to_scale_html(const std::vector<DrawnRacquet>& racquets,
         "<figure class=\"drawing-figure\" id=\"{0}-{1}\"><div style=\"width: {2:.2f}%\">{3}</div>"
         "<figcaption>{4}</figcaption></figure>\n",
         html_escape(id), k + 1, 100.0 * (L_cm + 4.0) / (longest_cm + 4.0),
-        racquet_top_svg(*r.file, *r.evaluation, drawn_head_area_m2(*r.file),
-                        fmt::format("{}-{}", html_escape(id), k + 1)),
-        r.caption_html);
+        drawing(r, fmt::format("{}-{}", id, k + 1)), r.caption_html);
   }
   // The numbers behind the drawings: where each marker sits, from the tip.
   html += fmt::format(

@@ -36,8 +36,9 @@ std::string racquet_side_svg(const io::DesignFile& design, const Evaluation& eva
 // sections' outline, each as wide as the solid circle of its mass per length
 // at `density_kg_m3` (a profile's own diameters), or, without it, widths
 // following the square root of the mass per length.
+// `id` names the drawing's title element, unique on its page.
 std::string implement_side_svg(const io::DesignFile& design, const Evaluation& evaluation,
-                               std::optional<double> density_kg_m3);
+                               std::optional<double> density_kg_m3, const std::string& id = "side");
 
 // A racquet to draw beside others: its file, its evaluation (both outlive
 // the call) and a caption (markup).

@@ -415,5 +415,20 @@ TEST_CASE(
         std::string::npos);
 }
 
+TEST_CASE("Implements drawn to one scale: a racquet from above, a bat from the side") {
+  const io::DesignFile racquet =
+      io::load_design(SWEETSPOT_SOURCE_DIR "/designs/racquets/tour-100.json");
+  const io::DesignFile bat = io::load_design(SWEETSPOT_SOURCE_DIR "/designs/bats/wood-bat-34.json");
+  const Evaluation e_racquet = evaluate(racquet.design, Fidelity::kRigid);
+  const Evaluation e_bat = evaluate(bat.design, Fidelity::kRigid);
+  const std::string bat_only = racquets_to_scale_html({{&bat, &e_bat, "bat"}}, "drawing");
+  CHECK(bat_only.find("from the side, to scale") != std::string::npos);
+  CHECK(bat_only.find("class=\"bed\"") == std::string::npos);  // no string bed on a bat
+  const std::string both =
+      racquets_to_scale_html({{&racquet, &e_racquet, "racquet"}, {&bat, &e_bat, "bat"}}, "drawing");
+  CHECK(both.find("class=\"bed\"") != std::string::npos);
+  CHECK(both.find("id=\"drawing-1-title\"") != std::string::npos);
+  CHECK(both.find("id=\"drawing-2-title\"") != std::string::npos);
+}
 }  // namespace
 }  // namespace sweetspot::reports
