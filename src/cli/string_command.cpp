@@ -22,6 +22,13 @@ namespace {
 
 // --target NAME=VALUE: the quantity and its value in SI.
 std::pair<studies::BedQuantity, double> parse_target(const std::string& text) {
+  // The tension that reaches one measurement: two would over-determine it.
+  if (text.find(',') != std::string::npos) {
+    throw CLI::ValidationError("--target",
+                               "one target: the tension is solved to reach one of the bed's "
+                               "stiffness, ring or dwell, got " +
+                                   io::one_line(text));
+  }
   const auto eq = text.find('=');
   const std::string name = text.substr(0, eq);
   double value = 0.0;

@@ -8,7 +8,6 @@
 #include <iterator>
 #include <limits>
 #include <optional>
-#include <regex>
 #include <stdexcept>
 #include <tuple>
 #include <utility>
@@ -86,8 +85,15 @@ std::optional<std::string> range_in_file_unit(const std::invalid_argument& error
   if (given == 0.0) {
     // 0 in any unit: the unit's factor from the field table ("hand/...": the
     // object "hand"; "implement/point_masses/2/...": "implement/point_masses/N").
-    std::string object = canonical.substr(0, canonical.rfind('/'));
-    object = std::regex_replace(object, std::regex("/[0-9]+(/|$)"), "/N$1");
+    std::string object;
+    const std::size_t last = canonical.rfind('/');  // npos: a key of the document
+    for (std::size_t from = 0; last != std::string::npos && from < last;) {
+      const std::size_t to = std::min(canonical.find('/', from), last);
+      const std::string part = canonical.substr(from, to - from);
+      const bool index = !part.empty() && part.find_first_not_of("0123456789") == std::string::npos;
+      object += (object.empty() ? "" : "/") + (index ? std::string("N") : part);
+      from = to + 1;
+    }
     if (const auto spelling = find_spelling(object, user_key))
       per_unit = spelling->scale.to_si(1.0);
   }

@@ -284,21 +284,23 @@ PlayerWords input_changes(const ComparedDesign& a, const ComparedDesign& b) {
       // A pair of equal pieces on the hoop, one each side ("at 3 and 9 o'clock").
       if (k + 1 < pb.size() && hour(k) && hour(k + 1) && pb[k].mass_kg == pb[k + 1].mass_kg &&
           *hour(k) + *hour(k + 1) == 12) {
-        changes.push_back(fmt::format("{:.3g} g of added mass at {} and {} o'clock ({:.3g} g each)",
-                                      2.0 * pb[k].mass_kg * 1000, std::min(*hour(k), *hour(k + 1)),
-                                      std::max(*hour(k), *hour(k + 1)), pb[k].mass_kg * 1000));
+        changes.push_back(fmt::format(
+            "{} g of added mass at {} and {} o'clock ({} g each)",
+            io::significant(2.0 * pb[k].mass_kg * 1000, 3), std::min(*hour(k), *hour(k + 1)),
+            std::max(*hour(k), *hour(k + 1)), io::significant(pb[k].mass_kg * 1000, 3)));
         ++k;
         continue;
       }
-      changes.push_back(fmt::format("{:.3g} g of added mass {} from the tip", pb[k].mass_kg * 1000,
+      changes.push_back(fmt::format("{} g of added mass {} from the tip",
+                                    io::significant(pb[k].mass_kg * 1000, 3),
                                     cm_text(eb.length_m - pb[k].from_butt_m)));
     }
     lead_described = true;
   }
   const double dm = eb.mass_kg - ea.mass_kg;
   if (!lead_described && std::fabs(dm) >= 0.0005)
-    changes.push_back(
-        fmt::format("{:.3g} g {}", std::fabs(dm) * 1000, dm > 0 ? "heavier" : "lighter"));
+    changes.push_back(fmt::format("{} g {}", io::significant(std::fabs(dm) * 1000, 3),
+                                  dm > 0 ? "heavier" : "lighter"));
   const double db = eb.balance_from_butt_m - ea.balance_from_butt_m;
   if (std::fabs(db) >= 0.001)
     changes.push_back(fmt::format("the balance {:.2g} cm {}", std::fabs(db) * 100,

@@ -20,6 +20,10 @@ namespace sweetspot {
 namespace {
 
 constexpr double kRoundOff = 1e-12;  // relative, for sums of a few terms
+
+// A wooden rod tapering from 4 cm to 8 cm across over 80 cm: a bat's shape,
+// at most 4 cm of radius.
+RoundProfile tapered_rod() { return {{{0.0, 0.04}, {0.8, 0.08}}, 650.0, 1.2e10}; }
 constexpr double kSquareInch_m2 = 0.0254 * 0.0254;
 
 // A 27 in racquet of 320 g, 100 in^2 head, Table I's player and ball.
@@ -222,12 +226,7 @@ TEST_CASE("An impact off the axis without a polar inertia is refused, naming imp
 }
 
 TEST_CASE("A round implement is not hit off its axis, and twists at most as a shell of it") {
-  // A rod tapering from 4 cm to 8 cm across over 80 cm: at most 4 cm of radius.
-  RoundProfile taper;
-  taper.stations = {{0.0, 0.04}, {0.8, 0.08}};
-  taper.density_kg_m3 = 650;
-  taper.youngs_modulus_Pa = 1.2e10;
-  Design d{Implement::from_profile(taper)};
+  Design d{Implement::from_profile(tapered_rod())};
   d.impact_from_butt_m = 0.2;
   d.twistweight_kg_m2 = 2e-4;
   CHECK_NOTHROW(evaluate(d, Fidelity::kRigid));
@@ -246,11 +245,7 @@ TEST_CASE("A round implement is not hit off its axis, and twists at most as a sh
 }
 
 TEST_CASE("A round implement has no head, no string bed and no solved collision") {
-  RoundProfile rod;
-  rod.stations = {{0.0, 0.04}, {0.8, 0.08}};
-  rod.density_kg_m3 = 650;
-  rod.youngs_modulus_Pa = 1.2e10;
-  Design d{Implement::from_profile(rod)};
+  Design d{Implement::from_profile(tapered_rod())};
   d.impact_from_butt_m = 0.65;
   CHECK(is_round(d));
   CHECK_NOTHROW(evaluate(d, Fidelity::kModal));
@@ -281,12 +276,8 @@ TEST_CASE(
     "Lead sits on the implement: within the head's outer edge, a rod's radius, a rule's head") {
   // A racquet's head of 100 sq in: its outer edge is the string bed's
   // semi-width plus the hoop's width.
-  RoundProfile rod;
-  rod.stations = {{0.0, 0.04}, {0.8, 0.08}};
-  rod.density_kg_m3 = 650;
-  rod.youngs_modulus_Pa = 1.2e10;
   const auto with_lead = [&](double off_axis_m) {
-    return Design{Implement::from_profile(rod, {PointMass{0.7, 0.01, off_axis_m}})};
+    return Design{Implement::from_profile(tapered_rod(), {PointMass{0.7, 0.01, off_axis_m}})};
   };
   CHECK_NOTHROW(evaluate(with_lead(0.04), Fidelity::kRigid));
   CHECK_THROWS_WITH(evaluate(with_lead(-0.0401), Fidelity::kRigid),
