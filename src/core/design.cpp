@@ -205,7 +205,10 @@ void validate(const Design& d) {
                            "] kg m^2 (at most the frame's " +
                            detail::format_significant(frame_mass_kg) + " kg all " +
                            detail::format_significant(half_width_m) + " m off the axis), got " +
-                           detail::format_number(twistweight) + " kg m^2");
+                           detail::format_number(twistweight) + " kg m^2",
+                       FieldError::Range{kMinTwistweight_kg_m2, most_kg_m2, false, twistweight,
+                                         "(at most the frame's mass all at its half-width off "
+                                         "the axis)"});
     }
   }
   // Lead sits on the implement: within its head's outer edge, a round
