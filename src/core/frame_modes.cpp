@@ -134,13 +134,12 @@ FlexibleFrame flexible_frame(const Design& design) {
     const double f = *stiffness.fundamental_free_Hz;
     if (!(stiffest <= kMaxEI_N_m2)) {
       const double highest = f * std::sqrt(kMaxEI_N_m2 / stiffest);
-      throw FieldError("frame/fundamental_free_Hz",
-                       "must be in (0, " + detail::format_significant(highest) +
-                           "] Hz for the frame's EI to stay at most " +
-                           detail::format_number(kMaxEI_N_m2) + " N m^2, got " +
-                           detail::format_number(f) + " Hz",
-                       FieldError::Range{0.0, highest, true, f,
-                                         "for the frame's EI to stay at most 1e+12 N m^2"});
+      throw FieldError(
+          "frame/fundamental_free_Hz",
+          "must be in (0, " + detail::format_significant(highest) +
+              "] Hz for the frame's EI to stay at most " + detail::format_number(kMaxEI_N_m2) +
+              " N m^2, got " + detail::format_number(f) + " Hz",
+          FieldError::Range{0.0, highest, true, f, "for the frame's EI to stay in its range"});
     }
   } else if (stiffness.RA) {
     // RA rates the frame as sold: its fundamental without the design's point

@@ -156,8 +156,8 @@ std::string broken_invariant(const Evaluation& e, const Design& d) {
     // extrapolated together with the vibration's (its rebound speed is
     // extrapolated apart, and its square differs from the ledger's ball_out_J
     // by the step's error, which a lossless rig shows as 1e-7 of the energy).
-    const std::optional<CollisionResult>& solved =
-        e.details ? e.details->collision : std::optional<CollisionResult>{};
+    const CollisionResult* solved =
+        e.details && e.details->collision ? &*e.details->collision : nullptr;
     const double lost = solved ? solved->ball_in_J - solved->ball_out_J : ball_in - ball_out;
     if (!(vibration <= lost + tol_J))
       return "the frame keeps " + number(vibration) + " J as vibration, more than the " +

@@ -85,15 +85,9 @@ std::optional<std::string> range_in_file_unit(const std::invalid_argument& error
   if (given == 0.0) {
     // 0 in any unit: the unit's factor from the field table ("hand/...": the
     // object "hand"; "implement/point_masses/2/...": "implement/point_masses/N").
-    std::string object;
-    const std::size_t last = canonical.rfind('/');  // npos: a key of the document
-    for (std::size_t from = 0; last != std::string::npos && from < last;) {
-      const std::size_t to = std::min(canonical.find('/', from), last);
-      const std::string part = canonical.substr(from, to - from);
-      const bool index = !part.empty() && part.find_first_not_of("0123456789") == std::string::npos;
-      object += (object.empty() ? "" : "/") + (index ? std::string("N") : part);
-      from = to + 1;
-    }
+    const std::size_t last = canonical.rfind('/');
+    const std::string object =
+        last == std::string::npos ? "" : design_object_of(canonical.substr(0, last));
     if (const auto spelling = find_spelling(object, user_key))
       per_unit = spelling->scale.to_si(1.0);
   }
@@ -115,16 +109,15 @@ std::optional<std::string> range_in_file_unit(const std::invalid_argument& error
          unit + typed->after();
 }
 
-// Whether two keys spell one field of the table in two units ("speed_m_s"
-// and "speed_km_h", whose stems a split at the last '_' tells apart).
-bool same_field(std::string_view a, std::string_view b) {
-  for (const DesignField& field : design_fields()) {
-    const std::vector<std::string> keys = spellings_of(field);
-    if (std::find(keys.begin(), keys.end(), a) != keys.end() &&
-        std::find(keys.begin(), keys.end(), b) != keys.end())
-      return true;
-  }
-  return false;
+// Whether two keys of the object of `canonical` ("ball/speed_m_s") spell one
+// field of the table in two units ("speed_m_s" and "speed_km_h", whose stems
+// a split at the last '_' tells apart).
+bool same_field(const std::string& canonical, std::string_view a, std::string_view b) {
+  const std::size_t last = canonical.rfind('/');
+  const std::string object =
+      last == std::string::npos ? "" : design_object_of(canonical.substr(0, last));
+  const auto field_a = find_spelling(object, a), field_b = find_spelling(object, b);
+  return field_a && field_b && field_a->field == field_b->field;
 }
 
 // The physics core names a bad argument by its canonical SI path relative to
@@ -165,7 +158,8 @@ bool same_field(std::string_view a, std::string_view b) {
       if (!it->second.derived_by.empty())
         detail += " (the file's " + user_key + ": " + given_text(it->second) + ", " +
                   it->second.derived_by + ")";
-      else if (si_key != user_key && (user_key.starts_with(stem) || same_field(si_key, user_key))) {
+      else if (si_key != user_key &&
+               (user_key.starts_with(stem) || same_field(it->first, si_key, user_key))) {
         if (const auto restated =
                 range_in_file_unit(error, it->second, si_key, user_key, it->first))
           detail = *restated;

@@ -496,16 +496,16 @@ std::string inputs_markdown(const DesignFile& file, const Evaluation& e) {
   // inertia about the pivot 6 in from the knob that ASTM F2398 measures it
   // on), or a racquet's (points head-light, the swingweight 10 cm from the butt).
   if (is_round(d)) {
-    constexpr double kOunce_kg = 0.028349523125;
-    constexpr double kBatPivot_m = 6 * 0.0254;
+    constexpr double kOunce_kg = 0.028349523125;  // the avoirdupois ounce
+    constexpr double kBatPivot_m = 6 * kInch_m;
     const double arm = e.balance_from_butt_m - kBatPivot_m;
     md += fmt::format(
         "\nThe implement as a bat's spec sheet says it: length {} cm ({} in), mass {} g ({} oz), "
         "balance {} cm ({} in) from the knob, moment of inertia {} kg·cm² about a pivot 6 in "
         "(15.24 cm) from the knob (the bat standards' ASTM F2398).\n",
-        people_text(e.length_m * 100), people_text(e.length_m / 0.0254),
+        people_text(e.length_m * 100), people_text(e.length_m / kInch_m),
         people_text(e.mass_kg * 1000), people_text(e.mass_kg / kOunce_kg),
-        people_text(e.balance_from_butt_m * 100), people_text(e.balance_from_butt_m / 0.0254),
+        people_text(e.balance_from_butt_m * 100), people_text(e.balance_from_butt_m / kInch_m),
         people_text((e.I_cm_kg_m2 + e.mass_kg * arm * arm) * 1e4));
   } else {
     const double points_head_light = (0.5 * e.length_m - e.balance_from_butt_m) / kPointHeadLight_m;

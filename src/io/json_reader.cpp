@@ -225,16 +225,14 @@ Json read_json_file(const std::string& path) {
 }
 
 std::string brief(const Json& value) {
-  // A number as the shortest text that reads back to it (1e+09, not the
-  // 1000000000.0 JSON writes for a double).
+  // A number as the shortest text that reads back to it (52, 1000000000),
+  // not the 52.0 and 1000000000.0 JSON writes for a double.
   if (value.is_number_float() && std::isfinite(value.get<double>()))
     return exact(value.get<double>());
   std::string text = value.dump(-1, ' ', false, Json::error_handler_t::replace);
   if (text.size() > 60) text = text.substr(0, 57) + "...";
   return text;
 }
-
-std::string brief(double value) { return std::isfinite(value) ? exact(value) : brief(Json(value)); }
 
 std::string given_text(const KeyOrigin& origin) {
   return origin.given.is_null() ? std::string() : brief(origin.given);

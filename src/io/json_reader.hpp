@@ -50,10 +50,8 @@ std::string read_input_file(const std::string& path, std::size_t limit_bytes);
 Json read_json_file(const std::string& path);
 
 // Text for a JSON value in an error message, shortened to ~60 characters.
+// A number is the shortest text that reads back to it (52, not JSON's 52.0).
 std::string brief(const Json& value);
-// A number the program holds (a converted or computed value) as the shortest
-// text that reads back to it: 52, not the 52.0 JSON writes for a double.
-std::string brief(double value);
 
 // The offset of the first byte of `text` that does not start a valid UTF-8
 // sequence; std::string_view::npos when all of it is UTF-8.

@@ -471,6 +471,17 @@ std::string implement_side_svg(const io::DesignFile& file, const Evaluation& e,
                        fmt::format("<path class=\"shaft\" d=\"{}{}Z\"/>\n", outline, lower), id);
 }
 
+namespace {
+
+// The profile's density, when the implement is given by one: it draws the
+// profile's own diameters.
+std::optional<double> profile_density_kg_m3(const io::DesignFile& file) {
+  const std::optional<RoundProfile>& profile = file.design.implement.profile();
+  return profile ? std::optional(profile->density_kg_m3) : std::nullopt;
+}
+
+}  // namespace
+
 std::string racquets_to_scale_html(const std::vector<DrawnRacquet>& racquets,
                                    const std::string& id) {
   double longest_cm = 0.0;
@@ -481,10 +492,7 @@ std::string racquets_to_scale_html(const std::vector<DrawnRacquet>& racquets,
   const auto drawing = [](const DrawnRacquet& r, const std::string& drawing_id) {
     const io::DesignFile& file = *r.file;
     if (!studies::is_racquet(file) && file.design.implement.has_mass_distribution()) {
-      const auto& profile = file.design.implement.profile();
-      return implement_side_svg(file, *r.evaluation,
-                                profile ? std::optional(profile->density_kg_m3) : std::nullopt,
-                                drawing_id);
+      return implement_side_svg(file, *r.evaluation, profile_density_kg_m3(file), drawing_id);
     }
     return racquet_top_svg(file, *r.evaluation, drawn_head_area_m2(file), html_escape(drawing_id));
   };
@@ -595,15 +603,9 @@ std::string positions_table_html(const io::DesignFile& file, const Evaluation& e
 
 // The racquet drawn to scale from above and from the side, and the numbers
 // behind the drawing.
-std::string racquet_html(const io::DesignFile& file, const Evaluation& e,
-                         const io::Json& document) {
+std::string racquet_html(const io::DesignFile& file, const Evaluation& e) {
   if (!studies::is_racquet(file) && file.design.implement.has_mass_distribution()) {
-    // The profile's density, when the file gives one, draws its true diameters.
-    std::optional<double> density;
-    if (document.is_object() && document.contains("implement") &&
-        document["implement"].is_object() && document["implement"].contains("density_kg_m3") &&
-        document["implement"]["density_kg_m3"].is_number())
-      density = document["implement"]["density_kg_m3"].get<double>();
+    const std::optional<double> density = profile_density_kg_m3(file);
     std::string html = "<section id=\"racquet\"><h2>The implement, to scale</h2>\n";
     html += "<figure class=\"drawing-figure\">" + implement_side_svg(file, e, density) +
             fmt::format(
@@ -811,7 +813,7 @@ std::string design_html_report(const io::DesignFile& file, const io::Json& docum
   std::string html = html_page_open(file.name, description_of(document));
   html += "<section id=\"answer\"><h2>The answer</h2>\n<div class=\"answer\">\n" +
           answer_html(file, page.spots) + "</div></section>\n";
-  html += racquet_html(file, e, document);
+  html += racquet_html(file, e);
   // Every plot of the page drawn by one gnuplot: the two curves, each wide
   // and narrow, then the maps over the string bed.
   const FramePlots frame = frame_plots(file, e, page.curve, page.span);
