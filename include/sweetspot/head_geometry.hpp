@@ -27,11 +27,17 @@ inline constexpr double kDefaultHoopWidth_m = 0.015;
 // Lead "in the handle" goes under the butt cap, this far from the butt (a
 // clock "handle" or "butt" in a design file and in `tune`'s places).
 inline constexpr double kHandleWeightFromButt_m = 0.02;
+// The handle below the throat: 7 in (18 cm) long, and at most as wide as the
+// corners of the largest grip, an octagon of 4 3/4 in (12.07 cm) around (grip
+// sizes run from 4 to 4 3/4 in), whose circumradius is its perimeter / (16
+// sin(pi/8)), 1.97 cm.
+inline constexpr double kHandleLength_m = 0.18;
+inline constexpr double kLargestGripCircumference_m = 4.75 * 0.0254;
 // Lead "under the grip" is wrapped along the handle; taken as one point at
-// the middle of a 7-inch (18 cm) handle, 9 cm from the butt (a clock "grip"):
+// the middle of the handle, 9 cm from the butt (a clock "grip"):
 // a stated assumption of place (a grip's lead spread over its length differs
 // by its own inertia about its middle, under 0.3 kg cm^2 for 10 g over 18 cm).
-inline constexpr double kUnderGripFromButt_m = 0.09;
+inline constexpr double kUnderGripFromButt_m = kHandleLength_m / 2.0;
 
 // The estimate of the polar inertia from the head (estimated_polar_inertia_kg_m2):
 // the hoop carries half the frame's mass, on its centre line, and a set of
@@ -89,6 +95,25 @@ struct FacePoint {
 // y = +C and -C, 12 at the tip, 6 at the throat. `hours` in [0, 12] (0 is 12);
 // throws std::invalid_argument naming "clock" otherwise.
 FacePoint clock_position(const HeadShape& head, double length_m, double hours);
+
+// The largest head the ITF's rules allow (Rules of Tennis, Rule 4): a strung
+// surface at most 15.5 in (39.4 cm) long and 11.5 in (29.2 cm) wide in a frame
+// at most 12.5 in (31.7 cm) wide, so a hoop of (12.5 - 11.5) / 2 in. The
+// outline where lead can sit on a racquet whose head is not given.
+inline constexpr HeadShape kLargestLegalHead{
+    .area_m2 = 0.25 * 3.14159265358979323846 * 15.5 * 11.5 * 0.0254 * 0.0254,
+    .aspect_ratio = 15.5 / 11.5,
+    .hoop_width_m = 0.5 * 0.0254};
+
+// The racquet's half-width in the plane of the face `from_butt_m` from the
+// butt: where lead can sit off its axis. Its outline is the handle (up to
+// kHandleLength_m, or the implement's length if shorter, as wide as the
+// largest grip's corners), the throat as the straight lines from the handle's
+// end tangent to the hoop's outer edge (the ellipse of semi-axes a + w and
+// c + w: the hull of the handle's end and the hoop, which contains the throat's
+// arms), and the hoop's outer edge; 0 outside the implement. An upper bound of
+// a real racquet's outline, not its shape.
+double face_half_width_m(const HeadShape& head, double length_m, double from_butt_m);
 
 // The polar inertia about the long axis of a frame of mass `frame_mass_kg`
 // with this head, estimated (see kHoopMassShare):

@@ -78,6 +78,10 @@ inline constexpr double kProfileSlice_m = 0.005;
 std::vector<Section> profile_sections(const RoundProfile& profile,
                                       std::vector<RoundSlice>* slices = nullptr);
 
+// The profile's diameter at `from_butt_m`, straight between its stations
+// (validated by profile_sections()); 0 outside the implement [m].
+double profile_diameter_m(const RoundProfile& profile, double from_butt_m);
+
 // An implement (racquet, bat, beam) from butt (x = 0) to tip (x = L): a frame
 // plus point masses. Immutable; every factory validates its arguments and throws
 // std::invalid_argument naming the argument and its value.

@@ -182,7 +182,7 @@ void validate(const Design& d) {
     outline->semi_width_m += d.head->hoop_width_m;
   }
   // A round implement given by its profile (a bat) is as wide as its
-  // diameter: its widest bounds the twistweight and where lead can sit.
+  // diameter: its widest bounds the twistweight.
   const std::optional<RoundProfile>& profile = d.implement.profile();
   const bool round = is_round(d);
   double widest_radius_m = 0.0;
@@ -211,21 +211,39 @@ void validate(const Design& d) {
                                          "the axis)"});
     }
   }
-  // Lead sits on the implement: within its head's outer edge, a round
-  // implement's widest radius, or the widest head the rules allow.
+  // Lead sits on the implement where it is put: within a racquet's outline
+  // there (its handle, throat or hoop), a round implement's radius there, or
+  // the widest head the rules allow when no head is given.
   const std::vector<PointMass>& points = d.implement.point_masses();
+  bool legal_head_fits = !round && !d.head && !points.empty();
+  if (legal_head_fits) {
+    try {
+      string_bed(kLargestLegalHead, L);
+    } catch (const FieldError&) {
+      legal_head_fits = false;
+    }
+  }
   for (std::size_t i = 0; i < points.size(); ++i) {
-    if (!(std::abs(points[i].off_axis_m) <= half_width_m)) {
-      const char* const edge = outline ? "to sit on the implement (its head's outer edge)"
-                               : round ? "to sit on the implement (its widest radius)"
-                                       : "to sit on the implement (the widest head the rules "
-                                         "allow)";
-      throw FieldError(
-          detail::indexed("implement/point_masses", i, "off_axis_m"),
-          "must be in [" + detail::format_significant(-half_width_m) + ", " +
-              detail::format_significant(half_width_m) + "] m " + edge + ", got " +
-              detail::format_number(points[i].off_axis_m) + " m",
-          FieldError::Range{-half_width_m, half_width_m, false, points[i].off_axis_m, edge});
+    const double x = points[i].from_butt_m;
+    const double here_m = round             ? 0.5 * profile_diameter_m(*profile, x)
+                          : d.head          ? face_half_width_m(*d.head, L, x)
+                          : legal_head_fits ? face_half_width_m(kLargestLegalHead, L, x)
+                                            : kMaxHeadHalfWidth_m;
+    if (!(std::abs(points[i].off_axis_m) <= here_m)) {
+      const char* const edge =
+          round    ? "to sit on the implement where it is put (its radius there)"
+          : d.head ? "to sit on the racquet where it is put (its handle, as wide as the largest "
+                     "grip, the throat from the handle to the hoop, or the hoop's outer edge)"
+          : legal_head_fits
+              ? "to sit on the racquet where it is put (its handle, as wide as the largest grip, "
+                "the throat, or the largest hoop the rules allow: give the head's size for its "
+                "own)"
+              : "to sit on the implement (the widest head the rules allow)";
+      throw FieldError(detail::indexed("implement/point_masses", i, "off_axis_m"),
+                       "must be in [" + detail::format_significant(-here_m) + ", " +
+                           detail::format_significant(here_m) + "] m " + edge + ", got " +
+                           detail::format_number(points[i].off_axis_m) + " m",
+                       FieldError::Range{-here_m, here_m, false, points[i].off_axis_m, edge});
     }
   }
   if (const double y = d.impact_off_axis_m; y != 0.0 && round) {

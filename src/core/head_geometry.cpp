@@ -60,6 +60,34 @@ FacePoint clock_position(const HeadShape& head, double length_m, double hours) {
   return FacePoint{bed.center_from_butt_m + r * cos_t, r * sin_t};
 }
 
+double face_half_width_m(const HeadShape& head, double length_m, double from_butt_m) {
+  const HeadEllipse bed = string_bed(head, length_m);
+  const double A = bed.semi_length_m + head.hoop_width_m;
+  const double C = bed.semi_width_m + head.hoop_width_m;
+  const double xc = bed.center_from_butt_m;
+  const double x = from_butt_m;
+  if (!(x >= 0.0 && x <= length_m)) return 0.0;
+  const double h = kLargestGripCircumference_m / (16.0 * std::sin(std::numbers::pi / 8.0));
+  const double handle_end = std::min(kHandleLength_m, length_m);
+  double half = x <= handle_end ? h : 0.0;
+  if (const double u = (x - xc) / A; std::abs(u) <= 1.0) {
+    half = std::max(half, C * std::sqrt(1.0 - u * u));
+  }
+  // The tangent from the handle's end (p, q) in the ellipse's units: the line
+  // x cos t / A + y sin t / C = 1 through it has p cos t + q sin t = 1, so
+  // t = phi -+ acos(1 / R), R = |(p, q)|, phi its angle; the upper tangent is
+  // the smaller t. None when the handle's end is inside the hoop.
+  const double p = (handle_end - xc) / A, q = h / C;
+  if (const double R = std::hypot(p, q); R > 1.0 && x > handle_end) {
+    const double t = std::atan2(q, p) - std::acos(1.0 / R);
+    const double tangent_x = xc + A * std::cos(t), tangent_y = C * std::sin(t);
+    if (x < tangent_x) {
+      half = std::max(half, h + (tangent_y - h) * (x - handle_end) / (tangent_x - handle_end));
+    }
+  }
+  return half;
+}
+
 double estimated_polar_inertia_kg_m2(const HeadShape& head, double length_m, double frame_mass_kg) {
   detail::require_positive("frame mass", frame_mass_kg, "kg");
   const HeadEllipse bed = string_bed(head, length_m);

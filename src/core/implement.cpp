@@ -171,6 +171,20 @@ std::vector<Section> profile_sections(const RoundProfile& profile,
   return sections;
 }
 
+double profile_diameter_m(const RoundProfile& profile, double from_butt_m) {
+  const std::vector<ProfileStation>& s = profile.stations;
+  if (s.empty() || !(from_butt_m >= s.front().from_butt_m && from_butt_m <= s.back().from_butt_m))
+    return 0.0;
+  const auto after = std::upper_bound(
+      s.begin(), s.end(), from_butt_m,
+      [](double x, const ProfileStation& station) { return x < station.from_butt_m; });
+  if (after == s.end()) return s.back().diameter_m;
+  const ProfileStation& a = *(after - 1);
+  const ProfileStation& b = *after;
+  const double t = (from_butt_m - a.from_butt_m) / (b.from_butt_m - a.from_butt_m);
+  return a.diameter_m + (b.diameter_m - a.diameter_m) * t;
+}
+
 Implement Implement::from_profile(const RoundProfile& profile,
                                   std::vector<PointMass> point_masses) {
   std::vector<RoundSlice> slices;

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstring>
 #include <numbers>
+#include <vector>
 
 #include "sweetspot/design.hpp"
 #include "sweetspot/evaluate.hpp"
@@ -225,6 +226,97 @@ TEST_CASE("An impact off the axis without a polar inertia is refused, naming imp
   CHECK_THROWS_WITH(evaluate(d), Catch::StartsWith("impact/off_axis_m"));
 }
 
+// The upper edge of the convex hull of `points` at x: the highest point of
+// every segment between two of them that spans x (brute force, O(n^2)).
+double hull_top(const std::vector<FacePoint>& points, double x) {
+  double top = -1.0;
+  for (const FacePoint& a : points) {
+    for (const FacePoint& b : points) {
+      if (a.from_butt_m <= x && x <= b.from_butt_m && a.from_butt_m < b.from_butt_m) {
+        const double t = (x - a.from_butt_m) / (b.from_butt_m - a.from_butt_m);
+        top = std::max(top, a.off_axis_m + t * (b.off_axis_m - a.off_axis_m));
+      }
+    }
+  }
+  return top;
+}
+
+TEST_CASE(
+    "A racquet's outline is its handle, the hull of the handle's end and the hoop, and 0 off it") {
+  const double L = 0.6858;
+  const HeadShape head{100.0 * kSquareInch_m2};
+  const HeadEllipse bed = string_bed(head, L);
+  const double A = bed.semi_length_m + head.hoop_width_m;
+  const double C = bed.semi_width_m + head.hoop_width_m;
+  // The largest grip's octagon, 4 3/4 in around: its corners' circumradius.
+  const double side = 4.75 * 0.0254 / 8.0;
+  const double grip = side / (2.0 * std::sin(std::numbers::pi / 8.0));
+  CHECK(face_half_width_m(head, L, 0.0) == Approx(grip).epsilon(kRoundOff));
+  CHECK(face_half_width_m(head, L, kHandleLength_m) == Approx(grip).epsilon(kRoundOff));
+  CHECK(face_half_width_m(head, L, bed.center_from_butt_m) == Approx(C).epsilon(kRoundOff));
+  CHECK(face_half_width_m(head, L, L) == Approx(0.0).margin(1e-6));
+  CHECK(face_half_width_m(head, L, -0.01) == 0.0);
+  CHECK(face_half_width_m(head, L, L + 0.01) == 0.0);
+  // Beyond the handle, the convex hull of the handle's end and the hoop's
+  // outer edge, sampled densely: the tangent's closed form against brute force.
+  std::vector<FacePoint> hull{{kHandleLength_m, grip}, {kHandleLength_m, -grip}};
+  constexpr int kSamples = 2000;
+  for (int i = 0; i < kSamples; ++i) {
+    const double t = 2.0 * std::numbers::pi * i / kSamples;
+    hull.push_back({bed.center_from_butt_m + A * std::cos(t), C * std::sin(t)});
+  }
+  for (double x = kHandleLength_m + 0.005; x < L - 0.005; x += 0.01) {
+    INFO("x = " << x);
+    // The sampled polygon lies inside the ellipse: within its chord's sagitta.
+    CHECK(face_half_width_m(head, L, x) == Approx(hull_top(hull, x)).margin(2e-6));
+  }
+}
+
+TEST_CASE(
+    "Lead sits where it is put: a racquet's handle, throat or hoop, a round implement's radius") {
+  Design d = racquet_design();
+  const double L = d.implement.length_m();
+  const auto with_lead = [&](double from_butt_m, double off_axis_m) {
+    Design lead = d;
+    lead.implement = Implement::paper_racquet(L, 0.320, 1.0, {{from_butt_m, 0.005, off_axis_m}});
+    return lead;
+  };
+  const double grip = face_half_width_m(*d.head, L, 0.02);
+  CHECK_NOTHROW(evaluate(with_lead(0.02, 0.99 * grip), Fidelity::kRigid));
+  CHECK_THROWS_WITH(evaluate(with_lead(0.02, 1.01 * grip), Fidelity::kRigid),
+                    Catch::StartsWith("implement/point_masses/0/off_axis_m: must be in") &&
+                        Catch::Contains("its handle, as wide as the largest grip"));
+  const FacePoint three = clock_position(*d.head, L, 3.0);
+  CHECK_NOTHROW(evaluate(with_lead(three.from_butt_m, three.off_axis_m), Fidelity::kRigid));
+  // At its widest, the hoop's outer edge: the string bed's semi-width and the hoop.
+  const HeadEllipse bed = string_bed(*d.head, L);
+  const double edge = bed.semi_width_m + d.head->hoop_width_m;
+  CHECK_NOTHROW(evaluate(with_lead(bed.center_from_butt_m, -0.999 * edge), Fidelity::kRigid));
+  CHECK_THROWS_WITH(evaluate(with_lead(bed.center_from_butt_m, -1.001 * edge), Fidelity::kRigid),
+                    Catch::StartsWith("implement/point_masses/0/off_axis_m"));
+  // Without a head: the largest head the rules allow, 12.5 in across its frame.
+  d.head.reset();
+  CHECK_THROWS_WITH(evaluate(with_lead(0.02, 0.138), Fidelity::kRigid),
+                    Catch::Contains("the largest hoop the rules allow"));
+  const HeadEllipse legal = string_bed(kLargestLegalHead, L);
+  CHECK(legal.semi_width_m + kLargestLegalHead.hoop_width_m == Approx(6.25 * 0.0254));
+  CHECK_NOTHROW(
+      evaluate(with_lead(legal.center_from_butt_m, 0.999 * 6.25 * 0.0254), Fidelity::kRigid));
+  CHECK_THROWS_WITH(
+      evaluate(with_lead(legal.center_from_butt_m, 1.001 * 6.25 * 0.0254), Fidelity::kRigid),
+      Catch::StartsWith("implement/point_masses/0/off_axis_m"));
+  // A round implement: its radius where the lead sits, 2 cm at the butt and
+  // 3.5 cm at 0.6 m of the rod tapering from 4 to 8 cm across.
+  CHECK(profile_diameter_m(tapered_rod(), 0.6) == Approx(0.07).epsilon(kRoundOff));
+  CHECK(profile_diameter_m(tapered_rod(), 0.9) == 0.0);
+  Design rod{Implement::from_profile(tapered_rod(), {{0.6, 0.005, 0.0349}})};
+  rod.impact_from_butt_m = 0.7;
+  CHECK_NOTHROW(evaluate(rod, Fidelity::kRigid));
+  rod.implement = Implement::from_profile(tapered_rod(), {{0.0, 0.005, 0.0201}});
+  CHECK_THROWS_WITH(evaluate(rod, Fidelity::kRigid),
+                    Catch::Contains("its radius there") && Catch::Contains("0.02]"));
+}
+
 TEST_CASE("A round implement is not hit off its axis, and twists at most as a shell of it") {
   Design d{Implement::from_profile(tapered_rod())};
   d.impact_from_butt_m = 0.2;
@@ -270,39 +362,6 @@ TEST_CASE("A round implement has no head, no string bed and no solved collision"
   CHECK_THROWS_WITH(evaluate(d, Fidelity::kCollision), Catch::StartsWith("implement/profile"));
   // A racquet of sections is not round.
   CHECK_FALSE(is_round(Design{Implement::paper_racquet(0.70, 0.25, 0.8)}));
-}
-
-TEST_CASE(
-    "Lead sits on the implement: within the head's outer edge, a rod's radius, a rule's head") {
-  // A racquet's head of 100 sq in: its outer edge is the string bed's
-  // semi-width plus the hoop's width.
-  const auto with_lead = [&](double off_axis_m) {
-    return Design{Implement::from_profile(tapered_rod(), {PointMass{0.7, 0.01, off_axis_m}})};
-  };
-  CHECK_NOTHROW(evaluate(with_lead(0.04), Fidelity::kRigid));
-  CHECK_THROWS_WITH(evaluate(with_lead(-0.0401), Fidelity::kRigid),
-                    Catch::StartsWith("implement/point_masses/0/off_axis_m: must be in "
-                                      "[-0.04, 0.04] m to sit on the implement (its widest "
-                                      "radius)"));
-  Design racquet = racquet_design();
-  const HeadEllipse outer = string_bed(*racquet.head, racquet.implement.length_m());
-  const double edge_m = outer.semi_width_m + racquet.head->hoop_width_m;
-  const auto racquet_with_lead = [&](double off_axis_m) {
-    Design r = racquet;
-    r.implement = Implement::paper_racquet(0.6858, 0.320, 1.0, {PointMass{0.6, 0.01, off_axis_m}});
-    return r;
-  };
-  CHECK_NOTHROW(evaluate(racquet_with_lead(edge_m * 0.999), Fidelity::kRigid));
-  CHECK_THROWS_WITH(evaluate(racquet_with_lead(edge_m * 1.001), Fidelity::kRigid),
-                    Catch::StartsWith("implement/point_masses/0/off_axis_m"));
-  const auto headless = [&](double off_axis_m) {
-    Design r = racquet_with_lead(off_axis_m);
-    r.head.reset();
-    return r;
-  };
-  CHECK_NOTHROW(evaluate(headless(kMaxHeadHalfWidth_m), Fidelity::kRigid));
-  CHECK_THROWS_WITH(evaluate(headless(kMaxHeadHalfWidth_m * 1.001), Fidelity::kRigid),
-                    Catch::StartsWith("implement/point_masses/0/off_axis_m"));
 }
 
 TEST_CASE(
