@@ -262,21 +262,27 @@ void validate(const Design& d) {
     const bool on_head = outline ? on_string_bed(*outline, d.impact_from_butt_m, y)
                                  : std::abs(y) <= kMaxHeadHalfWidth_m;
     if (!on_head) {
+      const double here_m =
+          outline
+              ? outline->semi_width_m *
+                    std::sqrt(std::max(
+                        0.0, 1.0 - std::pow((d.impact_from_butt_m - outline->center_from_butt_m) /
+                                                outline->semi_length_m,
+                                            2)))
+              : kMaxHeadHalfWidth_m;
       throw FieldError(
           "impact/off_axis_m",
           "must land on the head (" +
               std::string(outline ? "inside the hoop's outer edge, " +
-                                        detail::format_significant(
-                                            outline->semi_width_m *
-                                            std::sqrt(std::max(
-                                                0.0, 1.0 - std::pow((d.impact_from_butt_m -
-                                                                     outline->center_from_butt_m) /
-                                                                        outline->semi_length_m,
-                                                                    2)))) +
+                                        detail::format_significant(here_m) +
                                         " m either side of the axis at this impact"
                                   : "within " + detail::format_number(kMaxHeadHalfWidth_m) +
                                         " m of the axis, the widest head the rules allow") +
-              "), got " + detail::format_number(y) + " m");
+              "), got " + detail::format_number(y) + " m",
+          FieldError::Range{-here_m, here_m, false, y,
+                            outline ? "to land on the head (inside the hoop's outer edge where "
+                                      "the ball lands along the axis)"
+                                    : "to land on the head (the widest the rules allow)"});
     }
   }
   // A string bed's impact lands on the strings: not on the hoop, the throat
@@ -297,24 +303,30 @@ void validate(const Design& d) {
       const double bed_from_tip_m = L - bed->center_from_butt_m - bed->semi_length_m;
       const double bed_to_tip_m = L - bed->center_from_butt_m + bed->semi_length_m;
       if (std::abs(u) > 1.0 + slack) {
-        throw FieldError("impact/from_butt_m",
-                         "a ball on the strings must land on them, " +
-                             detail::format_significant(bed_from_tip_m) + " to " +
-                             detail::format_significant(bed_to_tip_m) +
-                             " m from the tip along the axis, got " +
-                             detail::format_significant(from_tip_m) +
-                             " m from the tip: a hit on the hoop, the throat or the handle is "
-                             "the frame's, not the string bed's");
+        throw FieldError(
+            "impact/from_butt_m",
+            "a ball on the strings must land on them, " +
+                detail::format_significant(bed_from_tip_m) + " to " +
+                detail::format_significant(bed_to_tip_m) + " m from the tip along the axis, got " +
+                detail::format_significant(from_tip_m) +
+                " m from the tip: a hit on the hoop, the throat or the handle is "
+                "the frame's, not the string bed's",
+            FieldError::Range{L - bed_to_tip_m, L - bed_from_tip_m, false, d.impact_from_butt_m,
+                              "to land on the strings (a hit on the hoop, the throat "
+                              "or the handle is the frame's, not the string bed's)"});
       }
       if (u * u + v * v > 1.0 + slack) {
+        const double here_m = bed->semi_width_m * std::sqrt(std::max(0.0, 1.0 - u * u));
         throw FieldError("impact/off_axis_m",
                          "a ball on the strings must land on them, within " +
-                             detail::format_significant(bed->semi_width_m *
-                                                        std::sqrt(std::max(0.0, 1.0 - u * u))) +
-                             " m either side of the axis " +
+                             detail::format_significant(here_m) + " m either side of the axis " +
                              detail::format_significant(from_tip_m) + " m from the tip, got " +
                              detail::format_number(d.impact_off_axis_m) +
-                             " m: a hit on the hoop is the frame's, not the string bed's");
+                             " m: a hit on the hoop is the frame's, not the string bed's",
+                         FieldError::Range{-here_m, here_m, false, d.impact_off_axis_m,
+                                           "to land on the strings where the ball lands along "
+                                           "the axis (a hit on the hoop is the frame's, not the "
+                                           "string bed's)"});
       }
     }
   }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -29,10 +30,22 @@ HeadEllipse string_bed(const HeadShape& head, double length_m) {
   const double a = head.aspect_ratio * c;
   const double overall_m = 2.0 * a + 2.0 * head.hoop_width_m;
   if (!(overall_m <= length_m)) {
-    throw FieldError("headsize", "a head of " + detail::format_significant(head.area_m2) +
-                                     " m^2 is " + detail::format_significant(overall_m) +
-                                     " m long with its hoop, longer than the implement (" +
-                                     detail::format_number(length_m) + " m)");
+    // The largest area of this aspect whose length with its hoop is L:
+    // a = L / 2 - w, area = pi a^2 / aspect.
+    const double longest_a = 0.5 * length_m - head.hoop_width_m;
+    std::optional<FieldError::Range> range;
+    if (longest_a > 0.0) {
+      range = FieldError::Range{0.0, std::numbers::pi * longest_a * longest_a / head.aspect_ratio,
+                                true, head.area_m2,
+                                "for the head of its aspect, with its hoop, to fit the "
+                                "implement's length"};
+    }
+    throw FieldError("headsize",
+                     "a head of " + detail::format_significant(head.area_m2) + " m^2 is " +
+                         detail::format_significant(overall_m) +
+                         " m long with its hoop, longer than the implement (" +
+                         detail::format_number(length_m) + " m)",
+                     range);
   }
   return HeadEllipse{length_m - head.hoop_width_m - a, a, c};
 }

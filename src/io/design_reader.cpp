@@ -67,8 +67,11 @@ std::string range_in_unit(double min, double max, bool min_open, double per_unit
                           const std::string& given, bool max_open = false) {
   std::string text = std::string("must be in ") + (min_open ? "(" : "[") +
                      significant(min / per_unit, 4) + ", " + significant(max / per_unit, 4) +
-                     (max_open ? ") " : "] ") + std::string(unit) + " (" + significant(min, 4) +
-                     " to " + significant(max, 4) + " " + std::string(si_unit) + ")";
+                     (max_open ? ") " : "] ") + std::string(unit);
+  // The SI beside it, when the core's name says its unit ("headsize" does not).
+  if (!si_unit.empty())
+    text += " (" + significant(min, 4) + " to " + significant(max, 4) + " " + std::string(si_unit) +
+            ")";
   if (!why.empty()) text += " " + std::string(why);
   return text + ", got " + given + " " + std::string(unit);
 }
@@ -95,7 +98,7 @@ std::optional<std::string> range_in_file_unit(const std::invalid_argument& error
   const std::string si_unit(unit_of_key(si_key));
   // A subnormal value has lost the digits the ratio needs (1e-320 g is not
   // 1e-323 kg to three figures).
-  if (!(std::isfinite(per_unit) && per_unit > 0.0) || unit.empty() || si_unit.empty() ||
+  if (!(std::isfinite(per_unit) && per_unit > 0.0) || unit.empty() ||
       (range.value != 0.0 && !(std::fabs(range.value) >= std::numeric_limits<double>::min())))
     return std::nullopt;
   if (std::isfinite(range.min) && std::isfinite(range.max)) {
@@ -142,8 +145,23 @@ bool same_field(const std::string& canonical, std::string_view a, std::string_vi
       name = "implement/" + core_name;
     }
     auto it = keys.find(name);
-    // The core places the impact from the butt; the file may from the tip.
-    if (it == keys.end() && name == "impact/from_butt_m") it = keys.find("impact/from_tip_m");
+    // The core places the impact from the butt; the file may from the tip,
+    // where a range the core gives from the butt is turned about the tip:
+    // with the tip at L = x + t, [a, b] from the butt is [L - b, L - a].
+    std::optional<FieldError> from_tip;
+    if (it == keys.end() && name == "impact/from_butt_m") {
+      it = keys.find("impact/from_tip_m");
+      const std::string key =
+          it == keys.end() ? "" : it->second.pointer.substr(it->second.pointer.rfind('/') + 1);
+      const auto spelling = find_spelling("impact", key);
+      if (typed && typed->range() && spelling && it->second.given.is_number()) {
+        const FieldError::Range& r = *typed->range();
+        const double t = spelling->scale.to_si(it->second.given.get<double>());
+        const double L = r.value + t;
+        from_tip.emplace(typed->field(), detail,
+                         FieldError::Range{L - r.max, L - r.min, r.max_open, t, r.why, r.min_open});
+      }
+    }
     if (it != keys.end()) {
       // The core speaks SI; when the file used another unit or form, quote
       // the file's own value, which the core's SI value may not show (5e-324
@@ -160,8 +178,8 @@ bool same_field(const std::string& canonical, std::string_view a, std::string_vi
                   it->second.derived_by + ")";
       else if (si_key != user_key &&
                (user_key.starts_with(stem) || same_field(it->first, si_key, user_key))) {
-        if (const auto restated =
-                range_in_file_unit(error, it->second, si_key, user_key, it->first))
+        if (const auto restated = range_in_file_unit(from_tip ? *from_tip : error, it->second,
+                                                     si_key, user_key, it->first))
           detail = *restated;
         else
           detail +=
@@ -570,8 +588,16 @@ ImplementRead read_implement(const Json& document, const std::string& source, Ke
         (void)string_bed(*head.head, length_m);
       } catch (const std::invalid_argument& error) {
         const std::string message = error.what();
-        r.fail(r.one_of({"headsize_sq_in", "headsize_cm2"}),
-               message.substr(message.find(": ") + 2));
+        const auto* typed = dynamic_cast<const FieldError*>(&error);
+        if (typed && typed->range()) {
+          // The largest head that fits, in the file's unit of area.
+          const FieldError::Range& range = *typed->range();
+          r.fail(head.key, range_in_unit(range.min, range.max, range.min_open,
+                                         find_spelling("implement", head.key)->scale.to_si(1.0),
+                                         unit_of_key(head.key), "m²", range.why,
+                                         brief(*r.number(head.key)), range.max_open));
+        }
+        r.fail(head.key, message.substr(message.find(": ") + 2));
       }
     }
     points = place_point_masses(point_specs, length_m,

@@ -3,13 +3,16 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <cstdio>
 #include <map>
+#include <numbers>
 #include <string>
 #include <vector>
 
 #include "io/design_fields.hpp"
 #include "io/input_error.hpp"
 #include "sweetspot/evaluate.hpp"
+#include "sweetspot/head_geometry.hpp"
 #include "sweetspot/string_bed.hpp"
 
 namespace sweetspot::io {
@@ -386,6 +389,65 @@ TEST_CASE("A refusal of a quantity the model derived says what it was derived fr
   CHECK(g.pointer() == "/hand/mass_g");
   CHECK_THAT(g.detail(), Catch::StartsWith("must be in [0, ") && Catch::Contains("] g (0 to ") &&
                              Catch::EndsWith(" kg), got -3 g"));
+}
+
+// The range [a, b] of a refusal "must be in [a, b] UNIT ...".
+std::pair<double, double> range_of(const std::string& detail) {
+  double a = 0.0, b = 0.0;
+  const std::size_t open = detail.find_first_of("[(");
+  REQUIRE(open != std::string::npos);
+  REQUIRE(std::sscanf(detail.c_str() + open + 1, "%lf, %lf", &a, &b) == 2);
+  return {a, b};
+}
+
+TEST_CASE(
+    "A place off the head or the strings, or a head too long, is refused in the file's unit") {
+  // A 70 cm racquet strung with a 100 sq in head: its bed is an ellipse of
+  // aspect 1.35 whose far end is the hoop's 1.5 cm below the tip.
+  const std::string racquet = R"({"implement": {"length_cm": 70, "mass_g": 300,
+      "balance_cm": 33, "swingweight_kg_cm2": 320}, "strings": {"tension_N": 250,
+      "head_size_in2": 100}, "impact": )";
+  const double in2 = 0.0254 * 0.0254;
+  const HeadEllipse bed = string_bed(HeadShape{100.0 * in2}, 0.70);
+  const InputError tip = error_of(racquet + R"({"from_tip_cm": 40}})", "collision");
+  const InputError butt = error_of(racquet + R"({"from_butt_cm": 20}})", "collision");
+  CHECK(tip.pointer() == "/impact/from_tip_cm");
+  CHECK(butt.pointer() == "/impact/from_butt_cm");
+  CHECK_THAT(tip.detail(), Catch::Contains("] cm (") && Catch::EndsWith("got 40 cm"));
+  CHECK_THAT(butt.detail(), Catch::Contains("] cm (") && Catch::EndsWith("got 20 cm"));
+  // From the tip, the range from the butt turned about the tip (4 figures).
+  const auto [tip_a, tip_b] = range_of(tip.detail());
+  const auto [butt_a, butt_b] = range_of(butt.detail());
+  CHECK(tip_a == Approx(70.0 - butt_b).margin(0.01));
+  CHECK(tip_b == Approx(70.0 - butt_a).margin(0.01));
+  CHECK(tip_a == Approx(1.5).epsilon(1e-3));
+  CHECK(tip_b == Approx((0.015 + 2.0 * bed.semi_length_m) * 100.0).epsilon(1e-3));
+  // Off the axis on the strings: the ellipse's half-width where the ball lands.
+  const InputError off =
+      error_of(racquet + R"({"from_butt_cm": 51, "off_axis_cm": 13}})", "collision");
+  CHECK(off.pointer() == "/impact/off_axis_cm");
+  const double u = (0.51 - bed.center_from_butt_m) / bed.semi_length_m;
+  const auto [off_a, off_b] = range_of(off.detail());
+  CHECK(off_b == Approx(100.0 * bed.semi_width_m * std::sqrt(1.0 - u * u)).epsilon(1e-3));
+  CHECK(off_a == -off_b);
+  CHECK_THAT(off.detail(), Catch::EndsWith("got 13 cm"));
+  // A head too long: the largest of its aspect whose length and hoop are the
+  // implement's, pi (L / 2 - w)^2 / aspect, in the unit the file gave it.
+  const double largest_in2 =
+      std::numbers::pi * std::pow(0.35 - 0.015, 2) / kDefaultHeadAspectRatio / in2;
+  for (const char* key : {R"("strings": {"tension_N": 250, "head_size_in2": 1000})",
+                          R"("implement": {"length_cm": 70, "mass_g": 300, "balance_cm": 33,
+                               "swingweight_kg_cm2": 320, "headsize_sq_in": 1000})"}) {
+    std::string text = std::string(R"({"implement": {"length_cm": 70, "mass_g": 300,
+        "balance_cm": 33, "swingweight_kg_cm2": 320}, )") +
+                       key + "}";
+    if (std::string(key).starts_with(R"("implement")"))
+      text = std::string("{") + key + R"(, "frame": {"cor": 0.8}})";
+    const InputError head = error_of(text, "collision");
+    INFO(head.what());
+    CHECK_THAT(head.detail(), Catch::Contains("] sq in ") && Catch::EndsWith("got 1000 sq in"));
+    CHECK(range_of(head.detail()).second == Approx(largest_in2).epsilon(1e-3));
+  }
 }
 
 TEST_CASE("A section error found while evaluating keeps the /implement prefix") {
