@@ -1533,7 +1533,7 @@ ImpactRead read_impact(ObjectReader& top, Reading& in, double L, const std::stri
         }
       } else {
         in.design.impact_from_butt_m = L - kPaperImpactFromTip_m;
-        in.note("impact/from_butt_m", "default (5 cm from the tip)");
+        in.note("impact/from_butt_m", "default: 5 cm from the tip, as in the paper's Table I");
       }
     }
     if (const auto off_axis = r.quantity("off_axis", Dimension::kLength)) {

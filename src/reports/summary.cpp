@@ -168,6 +168,15 @@ std::vector<std::string> sweet_spot_sentences(const io::DesignFile& design,
                   swinging ? " relative to the racquet" : "", best.rebound_speed_m_s,
                   cm_text(spots.best_rebound->from_tip_m), feel(best, false, swinging, racquet)));
   }
+  // The impact the tables are for, by its name: the one asked about, or the
+  // default (the centre of the strings, or where the paper's Table I hits).
+  const bool asked_is_centre =
+      spots.centre_of_strings &&
+      cm_text(spots.centre_of_strings->from_tip_m) == cm_text(spots.asked.from_tip_m);
+  const std::string asked_name =
+      spots.asked_provenance == "given" ? "the impact asked about"
+      : asked_is_centre                 ? "the centre of the strings"
+                        : "the impact " + cm_text(spots.asked.from_tip_m) + " from the tip";
   // 3b. The shot off the swinging racquet (swing.hpp), at its power point.
   if (spots.power_point) {
     const Evaluation& power = spots.power_point->evaluation;
@@ -197,10 +206,10 @@ std::vector<std::string> sweet_spot_sentences(const io::DesignFile& design,
         swing, asked.incoming_speed_m_s, power.shot_speed_m_s * io::kKmHPerMS,
         power.shot_speed_m_s * io::kMphPerMS, cm_text(spots.power_point->from_tip_m), than_rebound,
         std::lround(asked.shot_speed_m_s * io::kKmHPerMS) < 0
-            ? fmt::format("from the impact asked about the racquet does not turn it back: it "
-                          "goes on past the racquet at {:.0f} km/h",
-                          -asked.shot_speed_m_s * io::kKmHPerMS)
-            : fmt::format("from the impact asked about it leaves at {:.0f} km/h",
+            ? fmt::format("from {} the racquet does not turn it back: it goes on past the "
+                          "racquet at {:.0f} km/h",
+                          asked_name, -asked.shot_speed_m_s * io::kKmHPerMS)
+            : fmt::format("from {} it leaves at {:.0f} km/h", asked_name,
                           asked.shot_speed_m_s * io::kKmHPerMS)));
     if (power.fidelity != Fidelity::kCollision) {
       // A COR given for the frame is the same at every point: the rebound does not fall
@@ -212,9 +221,6 @@ std::vector<std::string> sweet_spot_sentences(const io::DesignFile& design,
     }
   }
   // 4. The centre of the strings and the impact asked about.
-  const bool asked_is_centre =
-      spots.centre_of_strings &&
-      cm_text(spots.centre_of_strings->from_tip_m) == cm_text(spots.asked.from_tip_m);
   if (spots.centre_of_strings && !asked_is_centre) {
     sentences.push_back(
         fmt::format("At the centre of the strings, about {} from the tip, {}.",
@@ -236,9 +242,10 @@ std::vector<std::string> sweet_spot_sentences(const io::DesignFile& design,
                 "At the centre of the strings, about {} from the tip{} ({}, so the tables below "
                 "are for this one),",
                 cm_text(spots.asked.from_tip_m), off_axis, not_given)
-          : fmt::format("At {} from the tip{} ({}: {}; the tables below are for this one),",
-                        cm_text(spots.asked.from_tip_m), off_axis, not_given,
-                        spots.asked_provenance);
+          : fmt::format(
+                "At {} from the tip{}, where the paper's Table I hits ({}, so the "
+                "tables below are for this one),",
+                cm_text(spots.asked.from_tip_m), off_axis, not_given);
   sentences.push_back(fmt::format("{} {}.", where, feel(asked, false, swinging, racquet)));
   sentences.push_back(
       "Positions are rounded to 0.5 cm and forces to two figures: the hand's place and the "

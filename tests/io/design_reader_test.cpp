@@ -648,7 +648,8 @@ TEST_CASE(
   const DesignFile paper = read(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25,
       "head_to_handle_mass_ratio": 0.8}})");
   CHECK(paper.design.impact_from_butt_m == 0.7 - 0.05);
-  CHECK(paper.provenance.at("impact/from_butt_m") == "default (5 cm from the tip)");
+  CHECK(paper.provenance.at("impact/from_butt_m") ==
+        "default: 5 cm from the tip, as in the paper's Table I");
 }
 
 TEST_CASE("The implement's head size is the string bed's, a second, different one is refused") {

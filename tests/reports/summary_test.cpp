@@ -112,6 +112,24 @@ TEST_CASE(
       contains(text, cm_text(spots.cop_hand->from_tip_m - spots.node_hand->from_tip_m) + " apart"));
   CHECK(contains(text, newton_text(spots.node_hand->evaluation.peak_wrist_force_N)));
   CHECK(contains(text, "no impact was given"));
+  // The shot is from the impact the tables are for, named as the default it is.
+  CHECK(contains(text, "from the centre of the strings it leaves at"));
+  CHECK_FALSE(contains(text, "asked about"));
+}
+
+TEST_CASE(
+    "A paper design without an impact is hit where the paper's Table I hits, 5 cm from the tip") {
+  const io::DesignFile design = design_from(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25,
+      "head_to_handle_mass_ratio": 0.8}})");
+  const Evaluation asked = io::evaluate_design_file(design, "", 1e-6);
+  CHECK(asked.length_m - asked.impact_from_butt_m == Approx(0.05).epsilon(1e-12));
+  const std::string text =
+      sweet_spot_paragraph(design, studies::find_sweet_spots(design, asked, 1e-6));
+  CHECK(contains(text,
+                 "At 5 cm from the tip, where the paper's Table I hits (no impact was given, "
+                 "so the tables below are for this one)"));
+  CHECK_FALSE(contains(text, "asked about"));
+  CHECK_FALSE(contains(text, "(5 cm"));
 }
 
 TEST_CASE("Without the stiffness the sentences say which input would locate the node") {
