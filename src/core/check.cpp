@@ -34,9 +34,15 @@ void validate_point_masses(const std::vector<PointMass>& point_masses, double le
   }
 }
 
-std::string format_significant(double value) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.6g", value);
+std::string format_significant(double value, int digits) {
+  if (value == 0.0) return "0";  // no "-0"
+  char buffer[48];
+  const double scale = std::pow(10.0, std::floor(std::log10(std::fabs(value))) + 1 - digits);
+  const double rounded = std::round(value / scale) * scale;
+  if (std::fabs(rounded) >= std::pow(10.0, digits) && std::fabs(rounded) < 1e6)
+    std::snprintf(buffer, sizeof buffer, "%.0f", rounded);
+  else
+    std::snprintf(buffer, sizeof buffer, "%.*g", digits, value);
   return buffer;
 }
 

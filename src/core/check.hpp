@@ -16,8 +16,10 @@ namespace sweetspot::detail {
 
 // Shortest round-trip text of a double ("0.25", "1e-09", "inf").
 std::string format_number(double value);
-// Six significant digits, for computed bounds in messages.
-std::string format_significant(double value);
+// `digits` significant digits, for computed bounds in messages: %g, except
+// that an everyday size below a million is written whole rather than with
+// an exponent ("1510", not "1.5e+03", for 1510 to 3 digits); 0 is "0".
+std::string format_significant(double value, int digits = 6);
 
 // The name of a field of a list element as a relative JSON pointer,
 // "point_masses/1/mass_kg", so the JSON layer can point at the file's key.

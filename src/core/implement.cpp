@@ -17,20 +17,6 @@ namespace sweetspot {
 
 namespace {
 
-// Two significant figures, without an exponent from 1e-6 to 1e6 (1900,
-// 0.19, 0.000012).
-std::string two_figures(double value) {
-  char buffer[48];
-  if (!(value >= 1e-6 && value < 1e6)) {
-    std::snprintf(buffer, sizeof buffer, "%.2g", value);
-    return buffer;
-  }
-  const int second = static_cast<int>(std::floor(std::log10(value))) - 1;  // its place
-  const double rounded = std::round(value / std::pow(10.0, second)) * std::pow(10.0, second);
-  std::snprintf(buffer, sizeof buffer, "%.*f", std::max(0, -second), rounded);
-  return buffer;
-}
-
 MassProperties add_all(MassProperties body, const std::vector<PointMass>& point_masses) {
   for (const PointMass& point : point_masses) body = with_point_mass(body, point);
   return body;
@@ -268,11 +254,12 @@ Implement Implement::from_specs(const IndustrySpecs& specs, std::vector<PointMas
     std::string after;
     if (std::isfinite(mass_from_kg) && mass_from_kg > 0.0 && mass_to_kg > mass_from_kg) {
       after =
-          ": it would fit a mass of " + two_figures(mass_from_kg) +
-          (std::isfinite(mass_to_kg) ? " to " + two_figures(mass_to_kg) + " kg" : " kg or more");
+          ": it would fit a mass of " + detail::format_significant(mass_from_kg, 2) +
+          (std::isfinite(mass_to_kg) ? " to " + detail::format_significant(mass_to_kg, 2) + " kg"
+                                     : " kg or more");
       if (L > 2.0 * a0 && balance_to_m > balance_from_m) {
-        after += ", or a balance of " + two_figures(100.0 * balance_from_m) + " to " +
-                 two_figures(100.0 * balance_to_m) + " cm from the butt";
+        after += ", or a balance of " + detail::format_significant(100.0 * balance_from_m, 2) +
+                 " to " + detail::format_significant(100.0 * balance_to_m, 2) + " cm from the butt";
       }
       after += ", the others as given";
     }

@@ -11,6 +11,7 @@
 #include <string>
 #include <utility>
 
+#include "core/check.hpp"
 #include "io/evaluation_tree.hpp"
 #include "io/json_reader.hpp"
 #include "io/outputs.hpp"
@@ -25,14 +26,7 @@ std::optional<Format> parse_format(std::string_view text) {
 }
 
 std::string significant(double value, int digits) {
-  if (value == 0.0) return "0";  // no "-0"
-  // %g turns to an exponent from 10^digits up: an everyday size (below a
-  // million) is written whole instead, rounded to its digits ("1510 Hz").
-  const double scale = std::pow(10.0, std::floor(std::log10(std::fabs(value))) + 1 - digits);
-  const double rounded = std::round(value / scale) * scale;
-  if (std::fabs(rounded) >= std::pow(10.0, digits) && std::fabs(rounded) < 1e6)
-    return fmt::format("{:.0f}", rounded);
-  return fmt::format("{:.{}g}", value, digits);
+  return detail::format_significant(value, digits);
 }
 
 std::string exact(double value) {

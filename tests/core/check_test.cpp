@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
 
 namespace sweetspot::detail {
 namespace {
@@ -18,6 +19,25 @@ TEST_CASE("Numbers in messages are the shortest text that reads back to the same
   CHECK(format_number(std::numeric_limits<double>::infinity()) == "inf");
   CHECK(format_number(std::nan("")) == "nan");
   CHECK(format_significant(1.0 / 3.0) == "0.333333");
+}
+
+TEST_CASE("A computed bound keeps its significant digits and writes an everyday size whole") {
+  // Read back, the text is the value to half a unit of its last digit.
+  for (const int digits : {2, 4, 6}) {
+    for (const double value : {0.1906, 9.04, 11.3, 1510.4, 5.339e5, 1.234567e7, 3.2e-9, -0.6321}) {
+      const std::string text = format_significant(value, digits);
+      INFO(value << " to " << digits << ": " << text);
+      const double back = std::stod(text);
+      CHECK(std::fabs(back - value) <=
+            0.5 * std::pow(10.0, std::floor(std::log10(std::fabs(value))) + 1 - digits) *
+                (1 + 1e-12));
+      // No exponent below a million.
+      CHECK((text.find('e') == std::string::npos) ==
+            (std::fabs(value) >= 1e-4 && std::fabs(back) < 1e6));
+    }
+  }
+  CHECK(format_significant(-0.0, 2) == "0");
+  CHECK(format_significant(1510.4, 3) == "1510");
 }
 
 TEST_CASE("Each check throws naming the argument, the range and the value") {

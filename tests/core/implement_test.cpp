@@ -96,7 +96,7 @@ TEST_CASE("A swingweight that no mass fits says which mass and balance it would 
   const double L = 0.6858, B = 0.325, SW = 0.032;
   CHECK_THROWS_WITH(Implement::from_specs({L, 318.0, B, SW}),
                     Catch::EndsWith(": it would fit a mass of 0.19 to 0.63 kg, or a balance of "
-                                    "9.0 to 11 cm from the butt, the others as given"));
+                                    "9 to 11 cm from the butt, the others as given"));
   // The ends of the stated ranges, just inside them, are specs the model builds.
   const double a = B - 0.1;
   CHECK_NOTHROW(Implement::from_specs({L, SW / (a * a + B * (L - B)) * 1.0001, B, SW}));
