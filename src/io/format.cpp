@@ -25,6 +25,11 @@ std::optional<Format> parse_format(std::string_view text) {
   return std::nullopt;
 }
 
+double bat_pivot_inertia_kg_m2(const Evaluation& e) {
+  const double arm = e.balance_from_butt_m - kBatPivot_m;
+  return e.I_cm_kg_m2 + e.mass_kg * arm * arm;
+}
+
 std::string significant(double value, int digits) {
   return detail::format_significant(value, digits);
 }
@@ -490,9 +495,6 @@ std::string inputs_markdown(const DesignFile& file, const Evaluation& e) {
   // inertia about the pivot 6 in from the knob that ASTM F2398 measures it
   // on), or a racquet's (points head-light, the swingweight 10 cm from the butt).
   if (is_round(d)) {
-    constexpr double kOunce_kg = 0.028349523125;  // the avoirdupois ounce
-    constexpr double kBatPivot_m = 6 * kInch_m;
-    const double arm = e.balance_from_butt_m - kBatPivot_m;
     md += fmt::format(
         "\nThe implement as a bat's spec sheet says it: length {} cm ({} in), mass {} g ({} oz), "
         "balance {} cm ({} in) from the knob, moment of inertia {} kg·cm² about a pivot 6 in "
@@ -500,7 +502,7 @@ std::string inputs_markdown(const DesignFile& file, const Evaluation& e) {
         people_text(e.length_m * 100), people_text(e.length_m / kInch_m),
         people_text(e.mass_kg * 1000), people_text(e.mass_kg / kOunce_kg),
         people_text(e.balance_from_butt_m * 100), people_text(e.balance_from_butt_m / kInch_m),
-        people_text((e.I_cm_kg_m2 + e.mass_kg * arm * arm) * 1e4));
+        people_text(bat_pivot_inertia_kg_m2(e) * 1e4));
   } else {
     const double points_head_light = (0.5 * e.length_m - e.balance_from_butt_m) / kPointHeadLight_m;
     md += fmt::format(

@@ -59,6 +59,13 @@ bool csv_plain(std::string_view text);
 std::string xml_chars(std::string_view text);
 
 // A speed as people read it: km/h and mph per m/s (a mile is 1609.344 m).
+// A bat's spec sheet: its mass in avoirdupois ounces, and its moment of
+// inertia about the pivot 6 in (15.24 cm) from the knob that the bat
+// standards' ASTM F2398 measures it on: I_cm + M (B - 6 in)^2 [kg m^2].
+inline constexpr double kOunce_kg = 0.028349523125;
+inline constexpr double kBatPivot_m = 6 * kInch_m;
+double bat_pivot_inertia_kg_m2(const Evaluation& e);
+
 inline constexpr double kKmHPerMS = 3.6;
 inline constexpr double kMphPerMS = 3600.0 / 1609.344;
 

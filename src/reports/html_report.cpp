@@ -438,30 +438,33 @@ std::string racquet_side_svg(const io::DesignFile& file, const Evaluation& e) {
 }
 
 // An implement that is not a racquet (the paper's beam, a bat) from the
-// side, to scale along its length: its outline from its sections. With the
-// profile's density, each section is as wide as the solid circle of its mass
-// per length (the profile's own diameter); without it, the widths follow the
-// square root of the mass per length, the widest kBeamDepth_cm.
+// side, to scale along its length: its outline from its sections. An
+// implement given by its profile is drawn at the profile's outer diameter,
+// a hollow one too (a tube seen from the side); otherwise the widths follow
+// the square root of the mass per length, the widest kBeamDepth_cm.
 std::string implement_side_svg(const io::DesignFile& file, const Evaluation& e,
-                               std::optional<double> density_kg_m3, const std::string& id) {
+                               const std::string& id) {
   const Implement& implement = file.design.implement;
+  const std::optional<RoundProfile>& profile = implement.profile();
   const double L = implement.length_m() * 100.0;
   double widest_mu = 0.0;
   for (const Section& s : implement.sections())
     widest_mu = std::max(widest_mu, s.mass_kg / s.length_m);
-  const auto width_cm = [&](const Section& s) {
+  // A section's width, its middle `middle_m` from the butt.
+  const auto width_cm = [&](const Section& s, double middle_m) {
+    if (profile) return 100.0 * profile_diameter_m(*profile, middle_m);
     const double mu = s.mass_kg / s.length_m;
-    if (density_kg_m3) return 100.0 * std::sqrt(4.0 * mu / (M_PI * *density_kg_m3));
     return widest_mu > 0.0 ? kBeamDepth_cm * std::sqrt(mu / widest_mu) : kBeamDepth_cm;
   };
-  double half = 0.0;
-  for (const Section& s : implement.sections()) half = std::max(half, width_cm(s) / 2);
   std::string outline;  // the top edge tip to butt, then the bottom edge back
   std::string lower;
+  double half = 0.0;
   double from_butt = L;
   const std::vector<Section>& sections = implement.sections();
   for (auto s = sections.rbegin(); s != sections.rend(); ++s) {
-    const double x0 = L - from_butt, x1 = x0 + s->length_m * 100.0, w = width_cm(*s) / 2;
+    const double x0 = L - from_butt, x1 = x0 + s->length_m * 100.0;
+    const double w = width_cm(*s, (from_butt - 50.0 * s->length_m) / 100.0) / 2;
+    half = std::max(half, w);
     outline +=
         fmt::format("{}{} {} L{} {} ", outline.empty() ? "M" : "L", n(x0), n(-w), n(x1), n(-w));
     lower = fmt::format("L{} {} L{} {} ", n(x1), n(w), n(x0), n(w)) + lower;
@@ -470,17 +473,6 @@ std::string implement_side_svg(const io::DesignFile& file, const Evaluation& e,
   return side_view_svg(file, e, half, html_escape(file.name),
                        fmt::format("<path class=\"shaft\" d=\"{}{}Z\"/>\n", outline, lower), id);
 }
-
-namespace {
-
-// The profile's density, when the implement is given by one: it draws the
-// profile's own diameters.
-std::optional<double> profile_density_kg_m3(const io::DesignFile& file) {
-  const std::optional<RoundProfile>& profile = file.design.implement.profile();
-  return profile ? std::optional(profile->density_kg_m3) : std::nullopt;
-}
-
-}  // namespace
 
 std::string racquets_to_scale_html(const std::vector<DrawnRacquet>& racquets,
                                    const std::string& id) {
@@ -492,7 +484,7 @@ std::string racquets_to_scale_html(const std::vector<DrawnRacquet>& racquets,
   const auto drawing = [](const DrawnRacquet& r, const std::string& drawing_id) {
     const io::DesignFile& file = *r.file;
     if (!studies::is_racquet(file) && file.design.implement.has_mass_distribution()) {
-      return implement_side_svg(file, *r.evaluation, profile_density_kg_m3(file), drawing_id);
+      return implement_side_svg(file, *r.evaluation, drawing_id);
     }
     return racquet_top_svg(file, *r.evaluation, drawn_head_area_m2(file), html_escape(drawing_id));
   };
@@ -605,17 +597,27 @@ std::string positions_table_html(const io::DesignFile& file, const Evaluation& e
 // behind the drawing.
 std::string racquet_html(const io::DesignFile& file, const Evaluation& e) {
   if (!studies::is_racquet(file) && file.design.implement.has_mass_distribution()) {
-    const std::optional<double> density = profile_density_kg_m3(file);
+    const bool round = is_round(file.design);
     std::string html = "<section id=\"racquet\"><h2>The implement, to scale</h2>\n";
-    html += "<figure class=\"drawing-figure\">" + implement_side_svg(file, e, density) +
+    html += "<figure class=\"drawing-figure\">" + implement_side_svg(file, e) +
             fmt::format(
                 "<figcaption>From the side, the ball arriving from above. {}</figcaption>"
                 "</figure>\n",
-                density ? "The outline is the profile's diameter along its length."
-                        : "Each section's width follows the square root of its mass per "
-                          "length (its diameter, were it round and of one material); the "
-                          "widths are a sketch, the positions are computed.");
+                round ? "The outline is the profile's diameter along its length."
+                      : "Each section's width follows the square root of its mass per "
+                        "length (its diameter, were it round and of one material); the "
+                        "widths are a sketch, the positions are computed.");
     html += positions_table_html(file, e);
+    // A bat's spec sheet (io/format.hpp), or the paper's swingweight axis.
+    if (is_round(file.design)) {
+      return html + fmt::format(
+                        "<p>Length {} cm ({:.1f} in), mass {:.0f} g ({:.1f} oz), moment of "
+                        "inertia {:.0f} kg·cm² about a pivot 6 in (15.24 cm) from the knob (the "
+                        "bat standards' ASTM F2398).</p>\n</section>\n",
+                        html_cm(file.design.implement.length_m()),
+                        file.design.implement.length_m() / io::kInch_m, e.mass_kg * 1000.0,
+                        e.mass_kg / io::kOunce_kg, io::bat_pivot_inertia_kg_m2(e) * 1e4);
+    }
     return html + fmt::format(
                       "<p>Length {} cm, mass {:.0f} g, inertia about the axis 10 cm from the butt "
                       "{:.0f} kg·cm².</p>\n</section>\n",

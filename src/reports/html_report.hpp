@@ -32,13 +32,13 @@ double drawn_head_area_m2(const io::DesignFile& design);
 std::string racquet_top_svg(const io::DesignFile& design, const Evaluation& evaluation,
                             double head_area_m2, const std::string& id = "top");
 std::string racquet_side_svg(const io::DesignFile& design, const Evaluation& evaluation);
-// An implement that is not a racquet (a beam, a bat) from the side: its
-// sections' outline, each as wide as the solid circle of its mass per length
-// at `density_kg_m3` (a profile's own diameters), or, without it, widths
-// following the square root of the mass per length.
-// `id` names the drawing's title element, unique on its page.
+// An implement that is not a racquet (the paper's beam, a bat) from the
+// side, to scale along its length: an implement given by its profile at the
+// profile's outer diameters (a hollow one too, as a tube looks from the
+// side), another at widths following the square root of its sections' mass
+// per length. `id` names the drawing's title element, unique on its page.
 std::string implement_side_svg(const io::DesignFile& design, const Evaluation& evaluation,
-                               std::optional<double> density_kg_m3, const std::string& id = "side");
+                               const std::string& id = "side");
 
 // A racquet to draw beside others: its file, its evaluation (both outlive
 // the call) and a caption (markup).

@@ -198,34 +198,45 @@ const std::string kHostile = "<script>alert(1)</script> & \"Pro\" <b>'98'</b>";
 const std::string kHostileEscaped =
     "&lt;script&gt;alert(1)&lt;/script&gt; &amp; &quot;Pro&quot; &lt;b&gt;&#39;98&#39;&lt;/b&gt;";
 
-TEST_CASE("A bat by its profile is drawn as its diameters, not as a racquet") {
+TEST_CASE("A bat by its profile is drawn as its diameters, hollow or solid, not as a racquet") {
   // Two diameters, 3 cm for the handle and 6 cm for the barrel, a 4 cm taper between: the
-  // outline's half-widths are 1.5 and 3 cm, read back from the drawn path.
-  const io::Json document = io::parse_json(R"({"implement": {"profile": [
+  // outline's half-widths are 1.5 and 3 cm, read back from the drawn path. A shell (an
+  // aluminium bat) looks from the side as wide as a solid bat of its diameters.
+  for (const char* wall : {"", R"(, "wall_cm": 0.3)"}) {
+    INFO("wall: " << wall);
+    const io::Json document = io::parse_json(std::string(R"({"implement": {"profile": [
       {"from_butt_cm": 0, "diameter_cm": 3}, {"from_butt_cm": 40, "diameter_cm": 3},
       {"from_butt_cm": 44, "diameter_cm": 6}, {"from_butt_cm": 80, "diameter_cm": 6}],
-      "density_kg_m3": 650, "youngs_modulus_GPa": 12}, "impact": {"from_tip_cm": 15}})",
-                                           "bat.json");
-  const io::DesignFile file = io::read_design(document, "bat.json");
-  const std::string svg = implement_side_svg(file, evaluate(file.design), 650.0);
-  const auto at = svg.find("class=\"shaft\" d=\"");
-  REQUIRE(at != std::string::npos);
-  std::string path = svg.substr(at + 18, svg.find('"', at + 18) - at - 18);
-  for (char& c : path) {
-    if (c == 'M' || c == 'L' || c == 'Z') c = ' ';
+      "density_kg_m3": 650, "youngs_modulus_GPa": 12)") +
+                                                 wall + R"(}, "impact": {"from_tip_cm": 15}})",
+                                             "bat.json");
+    const io::DesignFile file = io::read_design(document, "bat.json");
+    const Evaluation e = evaluate(file.design);
+    const std::string svg = implement_side_svg(file, e);
+    const auto at = svg.find("class=\"shaft\" d=\"");
+    REQUIRE(at != std::string::npos);
+    std::string path = svg.substr(at + 18, svg.find('"', at + 18) - at - 18);
+    for (char& c : path) {
+      if (c == 'M' || c == 'L' || c == 'Z') c = ' ';
+    }
+    std::istringstream in(path);
+    double x = 0.0, y = 0.0, widest = 0.0, narrowest = 1e9;
+    while (in >> x >> y) {
+      widest = std::max(widest, std::abs(y));
+      narrowest = std::min(narrowest, std::abs(y));
+    }
+    CHECK(widest == Approx(3.0).epsilon(1e-3));
+    CHECK(narrowest == Approx(1.5).epsilon(1e-3));
+    // The page draws the implement, not a head, and gives its inertia about
+    // the bat standards' pivot: I_cm + M (B - 6 in)^2.
+    const std::string page = design_html_report(file, document, studies::design_page(file));
+    CHECK(page.find("The implement, to scale") != std::string::npos);
+    CHECK(page.find("class=\"bed\"") == std::string::npos);
+    const double arm = e.balance_from_butt_m - 6 * 0.0254;
+    CHECK(page.find(fmt::format("moment of inertia {:.0f} kg·cm² about a pivot 6 in",
+                                (e.I_cm_kg_m2 + e.mass_kg * arm * arm) * 1e4)) !=
+          std::string::npos);
   }
-  std::istringstream in(path);
-  double x = 0.0, y = 0.0, widest = 0.0, narrowest = 1e9;
-  while (in >> x >> y) {
-    widest = std::max(widest, std::abs(y));
-    narrowest = std::min(narrowest, std::abs(y));
-  }
-  CHECK(widest == Approx(3.0).epsilon(1e-3));
-  CHECK(narrowest == Approx(1.5).epsilon(1e-3));
-  // The page draws the implement, not a head.
-  const std::string page = design_html_report(file, document, studies::design_page(file));
-  CHECK(page.find("The implement, to scale") != std::string::npos);
-  CHECK(page.find("class=\"bed\"") == std::string::npos);
 }
 
 TEST_CASE("Backticked names become code, everything else in a sentence is escaped") {
