@@ -27,11 +27,13 @@ inline constexpr double kDefaultHoopWidth_m = 0.015;
 // Lead "in the handle" goes under the butt cap, this far from the butt (a
 // clock "handle" or "butt" in a design file and in `tune`'s places).
 inline constexpr double kHandleWeightFromButt_m = 0.02;
-// The handle below the throat: 7 in (18 cm) long, and at most as wide as the
+// The handle below the throat: 7 in (18 cm) long on a 27 in racquet (in
+// proportion on a shorter one, a junior's), and at most as wide as the
 // corners of the largest grip, an octagon of 4 3/4 in (12.07 cm) around (grip
 // sizes run from 4 to 4 3/4 in), whose circumradius is its perimeter / (16
 // sin(pi/8)), 1.97 cm.
 inline constexpr double kHandleLength_m = 0.18;
+inline constexpr double kHandleRacquetLength_m = 27 * 0.0254;
 inline constexpr double kLargestGripCircumference_m = 4.75 * 0.0254;
 // Lead "under the grip" is wrapped along the handle; taken as one point at
 // the middle of the handle, 9 cm from the butt (a clock "grip"):
@@ -106,13 +108,14 @@ inline constexpr HeadShape kLargestLegalHead{
     .hoop_width_m = 0.5 * 0.0254};
 
 // The racquet's half-width in the plane of the face `from_butt_m` from the
-// butt: where lead can sit off its axis. Its outline is the handle (up to
-// kHandleLength_m, or the implement's length if shorter, as wide as the
-// largest grip's corners), the throat as the straight lines from the handle's
-// end tangent to the hoop's outer edge (the ellipse of semi-axes a + w and
-// c + w: the hull of the handle's end and the hoop, which contains the throat's
-// arms), and the hoop's outer edge; 0 outside the implement. An upper bound of
-// a real racquet's outline, not its shape.
+// butt: where lead can sit off its axis. Its outline is the handle
+// (kHandleLength_m on a 27 in racquet, in proportion on a shorter one, as
+// wide as the largest grip's corners; no head reaches over it), the throat
+// as the straight lines from the handle's end tangent to the hoop's outer
+// edge (the ellipse of semi-axes a + w and c + w: the hull of the handle's
+// end and the hoop, which contains the throat's arms), and the hoop's outer
+// edge; 0 outside the implement. An upper bound of a real racquet's
+// outline, not its shape.
 double face_half_width_m(const HeadShape& head, double length_m, double from_butt_m);
 
 // The polar inertia about the long axis of a frame of mass `frame_mass_kg`

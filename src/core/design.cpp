@@ -156,7 +156,8 @@ void validate(const Design& d) {
       }
     }
   }
-  detail::require_in_range("impact/off_axis_m", d.impact_off_axis_m, -L, L, "m");
+  // How far off the axis the ball may land is the head's to say, below.
+  detail::require_finite("impact/off_axis_m", d.impact_off_axis_m);
   // A profile is a round implement's: a bat is hit on its barrel, not on a
   // head's strings, and a string bed would take the hit's stiffness and
   // duration from strings it does not have.
@@ -180,6 +181,26 @@ void validate(const Design& d) {
     }
     outline->semi_length_m += d.head->hoop_width_m;
     outline->semi_width_m += d.head->hoop_width_m;
+    // The hand holds the handle, not the head: the hoop's outer edge ends
+    // beyond where the hand is (a head of this aspect that fills the length
+    // beyond it, pi (a - w)^2 / aspect with 2 a = L - hand, is the largest).
+    const double bottom_m = outline->center_from_butt_m - outline->semi_length_m;
+    const double hand_m = d.hand.center_from_butt_m;
+    if (d.hand.mass_kg > 0.0 && !(bottom_m > hand_m)) {
+      const double longest_a = 0.5 * (L - hand_m) - d.head->hoop_width_m;
+      std::optional<FieldError::Range> range;
+      if (longest_a > 0.0) {
+        range = FieldError::Range{
+            0.0, std::numbers::pi * longest_a * longest_a / d.head->aspect_ratio, true,
+            d.head->area_m2, "for the head of its aspect, with its hoop, to end beyond the hand"};
+      }
+      throw FieldError("implement/headsize",
+                       "a head of " + detail::format_significant(d.head->area_m2) +
+                           " m^2 reaches " + detail::format_significant(bottom_m) +
+                           " m from the butt with its hoop, over the hand at " +
+                           detail::format_significant(hand_m) + " m",
+                       range);
+    }
   }
   // A round implement given by its profile (a bat) is as wide as its
   // diameter: its widest bounds the twistweight.
@@ -258,31 +279,41 @@ void validate(const Design& d) {
                      "deflects the ball rather than twisting the implement, which this model "
                      "of a flat face does not solve; got " +
                          detail::format_number(y) + " m");
-  } else if (y != 0.0) {
-    const bool on_head = outline ? on_string_bed(*outline, d.impact_from_butt_m, y)
-                                 : std::abs(y) <= kMaxHeadHalfWidth_m;
+  } else if (y != 0.0 && !d.strings) {
+    // On the head: inside the hoop's outer edge where the ball lands along the
+    // axis; without a head given, inside the largest the rules allow. (A ball
+    // on the strings must land on them, which is checked below.)
+    std::optional<HeadEllipse> legal_outline;
+    if (!outline) {
+      try {
+        legal_outline = string_bed(kLargestLegalHead, L);
+        legal_outline->semi_length_m += kLargestLegalHead.hoop_width_m;
+        legal_outline->semi_width_m += kLargestLegalHead.hoop_width_m;
+      } catch (const FieldError&) {
+      }
+    }
+    const HeadEllipse* const edge = outline ? &*outline : legal_outline ? &*legal_outline : nullptr;
+    const bool on_head =
+        edge ? on_string_bed(*edge, d.impact_from_butt_m, y) : std::abs(y) <= kMaxHeadHalfWidth_m;
     if (!on_head) {
       const double here_m =
-          outline
-              ? outline->semi_width_m *
-                    std::sqrt(std::max(
-                        0.0, 1.0 - std::pow((d.impact_from_butt_m - outline->center_from_butt_m) /
-                                                outline->semi_length_m,
-                                            2)))
-              : kMaxHeadHalfWidth_m;
-      throw FieldError(
-          "impact/off_axis_m",
-          "must land on the head (" +
-              std::string(outline ? "inside the hoop's outer edge, " +
-                                        detail::format_significant(here_m) +
-                                        " m either side of the axis at this impact"
-                                  : "within " + detail::format_number(kMaxHeadHalfWidth_m) +
-                                        " m of the axis, the widest head the rules allow") +
-              "), got " + detail::format_number(y) + " m",
-          FieldError::Range{-here_m, here_m, false, y,
-                            outline ? "to land on the head (inside the hoop's outer edge where "
-                                      "the ball lands along the axis)"
-                                    : "to land on the head (the widest the rules allow)"});
+          edge ? edge->semi_width_m *
+                     std::sqrt(std::max(
+                         0.0, 1.0 - std::pow((d.impact_from_butt_m - edge->center_from_butt_m) /
+                                                 edge->semi_length_m,
+                                             2)))
+               : kMaxHeadHalfWidth_m;
+      const char* const why =
+          outline ? "to land on the head (inside the hoop's outer edge where the ball lands "
+                    "along the axis)"
+          : edge  ? "to land on the head (inside the largest hoop the rules allow where the ball "
+                    "lands along the axis: give the head's size for its own)"
+                  : "to land on the head (the widest the rules allow)";
+      throw FieldError("impact/off_axis_m",
+                       "must be in [" + detail::format_significant(-here_m) + ", " +
+                           detail::format_significant(here_m) + "] m " + why + ", got " +
+                           detail::format_number(y) + " m",
+                       FieldError::Range{-here_m, here_m, false, y, why});
     }
   }
   // A string bed's impact lands on the strings: not on the hoop, the throat

@@ -81,11 +81,11 @@ double face_half_width_m(const HeadShape& head, double length_m, double from_but
   const double x = from_butt_m;
   if (!(x >= 0.0 && x <= length_m)) return 0.0;
   const double h = kLargestGripCircumference_m / (16.0 * std::sin(std::numbers::pi / 8.0));
-  const double handle_end = std::min(kHandleLength_m, length_m);
-  double half = x <= handle_end ? h : 0.0;
-  if (const double u = (x - xc) / A; std::abs(u) <= 1.0) {
-    half = std::max(half, C * std::sqrt(1.0 - u * u));
-  }
+  // The handle, in proportion on a racquet shorter than 27 in; no head on it.
+  const double handle_end = kHandleLength_m * std::min(1.0, length_m / kHandleRacquetLength_m);
+  if (x <= handle_end) return h;
+  double half = 0.0;
+  if (const double u = (x - xc) / A; std::abs(u) <= 1.0) half = C * std::sqrt(1.0 - u * u);
   // The tangent from the handle's end (p, q) in the ellipse's units: the line
   // x cos t / A + y sin t / C = 1 through it has p cos t + q sin t = 1, so
   // t = phi -+ acos(1 / R), R = |(p, q)|, phi its angle; the upper tangent is

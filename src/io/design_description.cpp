@@ -72,10 +72,11 @@ std::vector<PointMass> place_point_masses(const std::vector<PointMassDescription
       throw PointMassError(i, "where",
                            "must be in [0, " + metres(L) + "] m, got " + metres(given) + " m");
     }
-    if (!(entry.off_axis_m >= -L && entry.off_axis_m <= L)) {
+    // How far off the axis is the outline's to say where the lead sits
+    // (the design's validation), in the file's unit.
+    if (!std::isfinite(entry.off_axis_m)) {
       throw PointMassError(i, "off_axis",
-                           "must be in [-" + metres(L) + ", " + metres(L) + "] m, got " +
-                               metres(entry.off_axis_m) + " m");
+                           "must be a finite number, got " + metres(entry.off_axis_m));
     }
     const double x = entry.from_butt_m ? *entry.from_butt_m : L - given;
     points.push_back(PointMass{x, entry.mass_kg, entry.off_axis_m});

@@ -317,6 +317,53 @@ TEST_CASE(
                     Catch::Contains("its radius there") && Catch::Contains("0.02]"));
 }
 
+TEST_CASE("A head ends beyond the hand, and off the axis a ball lands on the largest legal head") {
+  Design d = racquet_design();
+  const double L = d.implement.length_m();
+  // The largest head of its aspect whose hoop ends at the hand: 2 (a + w) = L - hand.
+  const double a = 0.5 * (L - d.hand.center_from_butt_m) - d.head->hoop_width_m;
+  const double largest_m2 = std::numbers::pi * a * a / d.head->aspect_ratio;
+  d.head->area_m2 = 0.999 * largest_m2;
+  CHECK_NOTHROW(evaluate(d, Fidelity::kRigid));
+  d.head->area_m2 = 1.001 * largest_m2;
+  try {
+    evaluate(d, Fidelity::kRigid);
+    FAIL("a head over the hand was accepted");
+  } catch (const FieldError& error) {
+    CHECK(error.field() == "implement/headsize");
+    REQUIRE(error.range());
+    CHECK(error.range()->max == Approx(largest_m2).epsilon(kRoundOff));
+  }
+  // Without a head, a twistweight: the largest head the rules allow, whose
+  // strung ellipse and hoop end at the tip, so nothing off the axis lands
+  // at the tip or on the handle.
+  d.head.reset();
+  d.twistweight_kg_m2 = 15e-4;
+  const HeadEllipse legal = string_bed(kLargestLegalHead, L);
+  const double edge = legal.semi_width_m + kLargestLegalHead.hoop_width_m;
+  d.impact_from_butt_m = legal.center_from_butt_m;
+  d.impact_off_axis_m = 0.999 * edge;
+  CHECK_NOTHROW(evaluate(d, Fidelity::kRigid));
+  for (const double x : {L, 0.08, legal.center_from_butt_m}) {
+    d.impact_from_butt_m = x;
+    d.impact_off_axis_m = x == legal.center_from_butt_m ? 1.001 * edge : 0.01;
+    CHECK_THROWS_WITH(evaluate(d, Fidelity::kRigid),
+                      Catch::StartsWith("impact/off_axis_m: must be in") &&
+                          Catch::Contains("the largest hoop the rules allow"));
+  }
+}
+
+TEST_CASE("A shorter racquet's handle is shorter in proportion, and no head reaches over it") {
+  // A 19 in junior: its handle is 19/27 of 18 cm; the largest legal head,
+  // 16.5 in long with its hoop, would reach 6.4 cm from the butt.
+  const double L = 19 * 0.0254;
+  const double handle = kHandleLength_m * 19.0 / 27.0;
+  const double grip = face_half_width_m(kLargestLegalHead, L, 0.0);
+  CHECK(face_half_width_m(kLargestLegalHead, L, 0.999 * handle) == grip);
+  CHECK(face_half_width_m(kLargestLegalHead, L, 1.001 * handle) > grip);
+  CHECK(face_half_width_m(kLargestLegalHead, 27 * 0.0254, 0.999 * kHandleLength_m) == grip);
+}
+
 TEST_CASE("A round implement is not hit off its axis, and twists at most as a shell of it") {
   Design d{Implement::from_profile(tapered_rod())};
   d.impact_from_butt_m = 0.2;
