@@ -253,8 +253,27 @@ std::string impact_words(const ComparedDesign& a, const ComparedDesign& b) {
         "tip)",
         cm_text(a.spots.asked.from_tip_m), cm_text(b.spots.asked.from_tip_m));
   }
+  const bool asked_a = a.spots.asked_provenance == "given";
+  const bool asked_b = b.spots.asked_provenance == "given";
+  if (asked_a != asked_b) {
+    // One file asks about an impact, the other takes its default.
+    const auto told = [](const ComparedDesign& c) {
+      return where_hit(c) +
+             (c.spots.asked_provenance == "given" ? " as the file asks" : " by default");
+    };
+    return fmt::format("a hit at each one's own impact ({}; {})", told(a), told(b));
+  }
   return fmt::format("a hit at the impact each {} ({} and {})",
                      defaults ? "is given by default" : "asks about", where_hit(a), where_hit(b));
+}
+
+// Where a design's spread of hits on the arm is centred: the centre of its
+// strings, the impact its file asks about, or the default impact.
+// Without its article: "centre of the strings".
+std::string around_words(const ComparedDesign& c) {
+  if (c.arm.around_centre_of_strings) return "centre of the strings";
+  if (c.spots.asked_provenance == "given") return "impact asked about";
+  return "default impact, " + cm_text(c.spots.asked.from_tip_m) + " from the tip";
 }
 
 // The inputs that differ, in a player's words, and which differences of the
@@ -746,12 +765,10 @@ std::vector<std::string> arm_sentences(const ComparedDesign& a, const ComparedDe
     if (clause.points > 0) for_b.emplace_back(name);
     if (clause.points < 0) for_a.emplace_back(name);
   }
-  const std::string where =
-      la.around_centre_of_strings && lb.around_centre_of_strings
-          ? "around the centre of the strings"
-      : !la.around_centre_of_strings && !lb.around_centre_of_strings
-          ? "around the impact asked about"
-          : "around the centre of the strings (without strings, the impact asked about)";
+  const std::string where = around_words(a) == around_words(b)
+                                ? "around the " + around_words(a)
+                                : fmt::format("around the first's {}, and the second's {}",
+                                              around_words(a), around_words(b));
   std::vector<std::string> out;
   const bool grid = la.spread.size() == 9 && lb.spread.size() == 9;
   out.push_back(fmt::format(
@@ -871,8 +888,7 @@ std::string comparison_report(const std::vector<ComparedDesign>& designs, io::Fo
       arm["spread"] = io::Json::array();
       for (const studies::SpreadPoint& p : c.arm.spread)
         arm["spread"].push_back({{"from_tip_m", p.from_tip_m}, {"off_axis_m", p.off_axis_m}});
-      arm["around"] =
-          c.arm.around_centre_of_strings ? "the centre of the strings" : "the impact asked about";
+      arm["around"] = "the " + around_words(c);
       const std::pair<const char*, const studies::ArmFactor*> factors[] = {
           {"peak_wrist_force_N", &c.arm.peak_wrist_force_N},
           {"hand_vibration_weighted_m_s2", &c.arm.hand_weighted_acceleration_m_s2},

@@ -298,6 +298,27 @@ TEST_CASE("compare tells two racquets hit at their own default points as such") 
         std::string::npos);
 }
 
+TEST_CASE("compare tells an impact asked about from another file's default, each by its name") {
+  // The first asks about 16 cm from the tip; the second gives none and is
+  // hit at the centre of its strings; a paper beam without one, 5 cm from the tip.
+  io::Json b = io::Json::parse(kBase);
+  b["name"] = "B";
+  b.erase("impact");
+  const std::string text = paragraph(b);
+  INFO(text);
+  CHECK(text.find("a hit at each one's own impact (16 cm from the tip as the file asks; at the "
+                  "centre of the strings (") != std::string::npos);
+  CHECK(text.find(") by default)") != std::string::npos);
+  CHECK(text.find("asks about") == std::string::npos);
+  io::Json beam = io::Json::parse(R"({"name": "beam", "implement": {"length_m": 0.7,
+      "mass_kg": 0.3, "head_to_handle_mass_ratio": 0.8}})");
+  const std::string arm = paragraph(beam);
+  INFO(arm);
+  CHECK(arm.find("around the first's centre of the strings, and the second's default impact, "
+                 "5 cm from the tip") != std::string::npos);
+  CHECK(arm.find("impact asked about") == std::string::npos);
+}
+
 TEST_CASE("compare's arm verdict names each factor's number and which way it points") {
   // A softer frame at the modal fidelity: the rigid body's numbers do not
   // change, the vibration at the hand grows (tests/studies/arm_load_test.cpp).
