@@ -493,8 +493,12 @@ HeadRead read_head(ObjectReader& r) {
     }
     if (const auto hoop = r.quantity("hoop_width", Dimension::kLength)) {
       if (!(*hoop >= 0.0 && *hoop <= 1.0)) {
-        r.fail(r.one_of(spellings("hoop_width", Dimension::kLength)),
-               "must be in [0, 1] m, got " + brief(*hoop) + " m");
+        const std::string hoop_key = r.one_of(spellings("hoop_width", Dimension::kLength));
+        r.fail(
+            hoop_key,
+            range_in_unit(0.0, 1.0, false, find_spelling("implement", hoop_key)->scale.to_si(1.0),
+                          unit_of_key(hoop_key), unit_of_key(hoop_key) == "m" ? "" : "m", "",
+                          brief(*r.number(hoop_key))));
       }
       head.hoop_width_m = *hoop;
     }
