@@ -5,6 +5,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "io/format.hpp"
 #include "io/json_reader.hpp"
 #include "sweetspot/rigid_impact.hpp"
 
@@ -48,7 +49,16 @@ std::vector<PointMass> place_point_masses(const std::vector<PointMassDescription
           "must be in [0, " + metres(kMaxMass_kg) + "] kg, got " + metres(entry.mass_kg) + " kg");
     }
     if (entry.handle_from_butt_m) {
-      points.push_back(PointMass{std::min(*entry.handle_from_butt_m, L), entry.mass_kg, 0.0});
+      // Under the butt cap (2 cm) or the grip (9 cm): a place on a handle
+      // that this implement, shorter, does not have.
+      if (!(*entry.handle_from_butt_m <= L)) {
+        throw PointMassError(
+            i, "clock",
+            "places the mass " + significant(*entry.handle_from_butt_m * 100.0, 4) +
+                " cm from the butt, beyond the implement's " + significant(L * 100.0, 4) +
+                " cm: give its place by from_butt or from_tip");
+      }
+      points.push_back(PointMass{*entry.handle_from_butt_m, entry.mass_kg, 0.0});
       continue;
     }
     if (!entry.clock_hours.empty()) {

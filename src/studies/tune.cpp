@@ -246,9 +246,16 @@ std::vector<PointMass> unit_pieces(const io::DesignFile& file, const LeadPlace& 
   const double L = d.implement.length_m();
   switch (place.kind) {
     case LeadPlace::Kind::kUnderGrip:
-      return {PointMass{std::min(kUnderGripFromButt_m, L), 1.0, 0.0}};
-    case LeadPlace::Kind::kButtCap:
-      return {PointMass{std::min(kHandleWeightFromButt_m, L), 1.0, 0.0}};
+    case LeadPlace::Kind::kButtCap: {
+      const double x = place.kind == LeadPlace::Kind::kUnderGrip ? kUnderGripFromButt_m
+                                                                 : kHandleWeightFromButt_m;
+      if (!(x <= L)) {
+        throw std::invalid_argument(fmt::format(
+            "--places: \"{}\" is {} cm from the butt, beyond the {} cm of {}", place.label,
+            io::significant(x * 100.0, 4), io::significant(L * 100.0, 4), file.source));
+      }
+      return {PointMass{x, 1.0, 0.0}};
+    }
     case LeadPlace::Kind::kThroat:
     case LeadPlace::Kind::kClock: {
       if (is_round(d)) {
