@@ -107,6 +107,15 @@ inline constexpr HeadShape kLargestLegalHead{
     .aspect_ratio = 15.5 / 11.5,
     .hoop_width_m = 0.5 * 0.0254};
 
+// The largest grip's half-width across its corners [m], 1.97 cm.
+double grip_half_width_m();
+
+// The largest head an implement of `length_m` can have when its head is not
+// given: kLargestLegalHead, or, on one too short to hold it beyond its
+// handle (a junior's racquet, a paddle), the largest of its aspect and hoop
+// that ends at the handle; std::nullopt when none does (under about 3.4 cm).
+std::optional<HeadShape> largest_legal_head(double length_m);
+
 // The racquet's half-width in the plane of the face `from_butt_m` from the
 // butt: where lead can sit off its axis. Its outline is the handle
 // (kHandleLength_m on a 27 in racquet, in proportion on a shorter one, as

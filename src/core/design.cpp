@@ -236,20 +236,15 @@ void validate(const Design& d) {
   // there (its handle, throat or hoop), a round implement's radius there, or
   // the widest head the rules allow when no head is given.
   const std::vector<PointMass>& points = d.implement.point_masses();
-  bool legal_head_fits = !round && !d.head && !points.empty();
-  if (legal_head_fits) {
-    try {
-      string_bed(kLargestLegalHead, L);
-    } catch (const FieldError&) {
-      legal_head_fits = false;
-    }
-  }
+  const std::optional<HeadShape> legal_head =
+      !round && !d.head ? largest_legal_head(L) : std::nullopt;
+  const bool legal_head_fits = legal_head.has_value();
   for (std::size_t i = 0; i < points.size(); ++i) {
     const double x = points[i].from_butt_m;
     const double here_m = round             ? 0.5 * profile_diameter_m(*profile, x)
                           : d.head          ? face_half_width_m(*d.head, L, x)
-                          : legal_head_fits ? face_half_width_m(kLargestLegalHead, L, x)
-                                            : kMaxHeadHalfWidth_m;
+                          : legal_head_fits ? face_half_width_m(*legal_head, L, x)
+                                            : grip_half_width_m();
     if (!(std::abs(points[i].off_axis_m) <= here_m)) {
       const char* const edge =
           round    ? "to sit on the implement where it is put (its radius there)"
@@ -257,9 +252,9 @@ void validate(const Design& d) {
                      "grip, the throat from the handle to the hoop, or the hoop's outer edge)"
           : legal_head_fits
               ? "to sit on the racquet where it is put (its handle, as wide as the largest grip, "
-                "the throat, or the largest hoop the rules allow: give the head's size for its "
-                "own)"
-              : "to sit on the implement (the widest head the rules allow)";
+                "the throat, or the largest hoop the rules allow that fits beyond the handle: "
+                "give the head's size for its own)"
+              : "to sit on the implement (as wide as the largest grip, too short for a head)";
       throw FieldError(detail::indexed("implement/point_masses", i, "off_axis_m"),
                        "must be in [" + detail::format_significant(-here_m) + ", " +
                            detail::format_significant(here_m) + "] m " + edge + ", got " +
@@ -285,16 +280,15 @@ void validate(const Design& d) {
     // on the strings must land on them, which is checked below.)
     std::optional<HeadEllipse> legal_outline;
     if (!outline) {
-      try {
-        legal_outline = string_bed(kLargestLegalHead, L);
-        legal_outline->semi_length_m += kLargestLegalHead.hoop_width_m;
-        legal_outline->semi_width_m += kLargestLegalHead.hoop_width_m;
-      } catch (const FieldError&) {
+      if (const std::optional<HeadShape> legal = largest_legal_head(L)) {
+        legal_outline = string_bed(*legal, L);
+        legal_outline->semi_length_m += legal->hoop_width_m;
+        legal_outline->semi_width_m += legal->hoop_width_m;
       }
     }
     const HeadEllipse* const edge = outline ? &*outline : legal_outline ? &*legal_outline : nullptr;
     const bool on_head =
-        edge ? on_string_bed(*edge, d.impact_from_butt_m, y) : std::abs(y) <= kMaxHeadHalfWidth_m;
+        edge ? on_string_bed(*edge, d.impact_from_butt_m, y) : std::abs(y) <= grip_half_width_m();
     if (!on_head) {
       const double here_m =
           edge ? edge->semi_width_m *
@@ -302,13 +296,14 @@ void validate(const Design& d) {
                          0.0, 1.0 - std::pow((d.impact_from_butt_m - edge->center_from_butt_m) /
                                                  edge->semi_length_m,
                                              2)))
-               : kMaxHeadHalfWidth_m;
+               : grip_half_width_m();
       const char* const why =
           outline ? "to land on the head (inside the hoop's outer edge where the ball lands "
                     "along the axis)"
           : edge  ? "to land on the head (inside the largest hoop the rules allow where the ball "
                     "lands along the axis: give the head's size for its own)"
-                  : "to land on the head (the widest the rules allow)";
+                  : "to land on the implement (as wide as the largest grip, too short for a "
+                    "head)";
       throw FieldError("impact/off_axis_m",
                        "must be in [" + detail::format_significant(-here_m) + ", " +
                            detail::format_significant(here_m) + "] m " + why + ", got " +

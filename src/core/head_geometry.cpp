@@ -73,6 +73,29 @@ FacePoint clock_position(const HeadShape& head, double length_m, double hours) {
   return FacePoint{bed.center_from_butt_m + r * cos_t, r * sin_t};
 }
 
+namespace {
+// The handle of a racquet of this length: kHandleLength_m at 27 in, in
+// proportion below.
+double handle_length_m(double length_m) {
+  return kHandleLength_m * std::min(1.0, length_m / kHandleRacquetLength_m);
+}
+}  // namespace
+
+double grip_half_width_m() {
+  return kLargestGripCircumference_m / (16.0 * std::sin(std::numbers::pi / 8.0));
+}
+
+std::optional<HeadShape> largest_legal_head(double length_m) {
+  HeadShape head = kLargestLegalHead;
+  const double room_m = length_m - handle_length_m(length_m);
+  const double c = std::sqrt(head.area_m2 / (std::numbers::pi * head.aspect_ratio));
+  if (2.0 * (head.aspect_ratio * c + head.hoop_width_m) <= room_m) return head;
+  const double a = 0.5 * room_m - head.hoop_width_m;
+  if (!(a > 0.0)) return std::nullopt;
+  head.area_m2 = std::numbers::pi * a * a / head.aspect_ratio;
+  return head;
+}
+
 double face_half_width_m(const HeadShape& head, double length_m, double from_butt_m) {
   const HeadEllipse bed = string_bed(head, length_m);
   const double A = bed.semi_length_m + head.hoop_width_m;
@@ -80,9 +103,9 @@ double face_half_width_m(const HeadShape& head, double length_m, double from_but
   const double xc = bed.center_from_butt_m;
   const double x = from_butt_m;
   if (!(x >= 0.0 && x <= length_m)) return 0.0;
-  const double h = kLargestGripCircumference_m / (16.0 * std::sin(std::numbers::pi / 8.0));
+  const double h = grip_half_width_m();
   // The handle, in proportion on a racquet shorter than 27 in; no head on it.
-  const double handle_end = kHandleLength_m * std::min(1.0, length_m / kHandleRacquetLength_m);
+  const double handle_end = handle_length_m(length_m);
   if (x <= handle_end) return h;
   double half = 0.0;
   if (const double u = (x - xc) / A; std::abs(u) <= 1.0) half = C * std::sqrt(1.0 - u * u);

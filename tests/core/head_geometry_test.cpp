@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstring>
 #include <numbers>
+#include <optional>
 #include <vector>
 
 #include "sweetspot/design.hpp"
@@ -354,14 +355,29 @@ TEST_CASE("A head ends beyond the hand, and off the axis a ball lands on the lar
 }
 
 TEST_CASE("A shorter racquet's handle is shorter in proportion, and no head reaches over it") {
-  // A 19 in junior: its handle is 19/27 of 18 cm; the largest legal head,
-  // 16.5 in long with its hoop, would reach 6.4 cm from the butt.
+  // A 19 in junior: its handle is 19/27 of 18 cm, over which the largest
+  // legal head, 16.5 in long with its hoop, would reach (to 6.4 cm from the butt).
   const double L = 19 * 0.0254;
   const double handle = kHandleLength_m * 19.0 / 27.0;
   const double grip = face_half_width_m(kLargestLegalHead, L, 0.0);
   CHECK(face_half_width_m(kLargestLegalHead, L, 0.999 * handle) == grip);
   CHECK(face_half_width_m(kLargestLegalHead, L, 1.001 * handle) > grip);
   CHECK(face_half_width_m(kLargestLegalHead, 27 * 0.0254, 0.999 * kHandleLength_m) == grip);
+  CHECK(grip_half_width_m() == grip);
+  // Without a head given, the largest legal head where it fits beyond the
+  // handle (27 in), else the largest of its aspect and hoop that ends at the
+  // handle (19 in), else none (an implement of 3 cm).
+  const std::optional<HeadShape> full = largest_legal_head(27 * 0.0254);
+  REQUIRE(full);
+  CHECK(full->area_m2 == kLargestLegalHead.area_m2);
+  const std::optional<HeadShape> junior = largest_legal_head(L);
+  REQUIRE(junior);
+  CHECK(junior->area_m2 < kLargestLegalHead.area_m2);
+  CHECK(junior->aspect_ratio == kLargestLegalHead.aspect_ratio);
+  const HeadEllipse bed = string_bed(*junior, L);
+  CHECK(bed.center_from_butt_m - bed.semi_length_m - junior->hoop_width_m ==
+        Approx(handle).epsilon(kRoundOff));
+  CHECK_FALSE(largest_legal_head(0.03));
 }
 
 TEST_CASE("A round implement is not hit off its axis, and twists at most as a shell of it") {
