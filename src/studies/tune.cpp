@@ -608,7 +608,20 @@ TuneResult tune(const io::DesignFile& design, const TuneTargets& given,
   const TuneSystem system = tune_system(before, targets, placed.cols);
   const LeadSolution solution =
       solve_lead(system.A, system.b, system.scale, std::vector<double>(places.size(), 1.0));
-  return result_of(design, targets, places, placed, solution.m);
+  TuneResult result = result_of(design, targets, places, placed, solution.m);
+  // A design holds at most kMaxMass_kg at a point: targets that would take
+  // more lead are out of any racquet's reach, and said so by the option.
+  for (const PlacedLead& lead : result.lead) {
+    const double piece_kg = lead.mass_kg / static_cast<double>(lead.pieces.size());
+    if (!(piece_kg <= kMaxMass_kg)) {
+      throw std::invalid_argument(fmt::format(
+          "--target: these specs would take {} g of lead at {}, more than the {} g a design may "
+          "hold at a point",
+          io::significant(lead.mass_kg * 1e3, 3), lead.place.label,
+          io::significant(kMaxMass_kg * 1e3, 3)));
+    }
+  }
+  return result;
 }
 
 io::Json tuned_document(const io::Json& document, const TuneResult& result) {
