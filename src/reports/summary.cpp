@@ -231,8 +231,12 @@ std::vector<std::string> sweet_spot_sentences(const io::DesignFile& design,
   const double off_axis_m = asked.impact_off_axis_m;
   const std::string off_axis =
       off_axis_m == 0.0 ? "" : fmt::format(" and {} off the axis", cm_text(std::fabs(off_axis_m)));
-  const char* not_given = off_axis_m == 0.0 ? "no impact was given"
-                                            : "the impact's distance from the tip was not given";
+  const auto off_axis_note = design.provenance.find("impact/off_axis_m");
+  const bool off_axis_given =
+      off_axis_note != design.provenance.end() && off_axis_note->second == "given";
+  const char* not_given = off_axis_m == 0.0 && !off_axis_given
+                              ? "no impact was given"
+                              : "the impact's distance from the tip was not given";
   const std::string where =
       spots.asked_provenance == "given"
           ? fmt::format("At the impact asked about, {} from the tip{},",

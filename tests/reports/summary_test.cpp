@@ -130,6 +130,13 @@ TEST_CASE(
                  "so the tables below are for this one)"));
   CHECK_FALSE(contains(text, "asked about"));
   CHECK_FALSE(contains(text, "(5 cm"));
+  // An impact given only by its offset, 0, was given: its place along the axis was not.
+  const io::DesignFile offset = design_from(R"({"implement": {"length_m": 0.7, "mass_kg": 0.25,
+      "head_to_handle_mass_ratio": 0.8}, "impact": {"off_axis_cm": 0}})");
+  const std::string on_axis = sweet_spot_paragraph(
+      offset, studies::find_sweet_spots(offset, io::evaluate_design_file(offset, "", 1e-6), 1e-6));
+  CHECK(contains(on_axis, "the impact's distance from the tip was not given"));
+  CHECK_FALSE(contains(on_axis, "no impact was given"));
 }
 
 TEST_CASE("Without the stiffness the sentences say which input would locate the node") {
