@@ -84,6 +84,18 @@ HeadEllipse string_bed(const HeadShape& head, double length_m);
 // Whether (x, y) lies on the string bed (inside or on the ellipse).
 bool on_string_bed(const HeadEllipse& bed, double from_butt_m, double off_axis_m);
 
+// The head to the hoop's outer edge: string_bed() widened by the hoop's
+// width on every side (semi-axes a + w and c + w).
+HeadEllipse hoop_outline(const HeadShape& head, double length_m);
+
+// The ellipse's half-width at `from_butt_m`, c sqrt(1 - u^2) with u the
+// distance from its centre over a; 0 beyond its ends [m].
+double half_width_at(const HeadEllipse& ellipse, double from_butt_m);
+
+// The strung area of a head whose strung semi-length is a: pi a c with
+// c = a / aspect [m^2] (the inverse of string_bed()'s semi-axes).
+double head_area_m2(double semi_length_m, double aspect_ratio);
+
 // A point of the implement in the plane of the face.
 struct FacePoint {
   double from_butt_m = 0.0;  // x [m]

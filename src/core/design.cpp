@@ -175,12 +175,10 @@ void validate(const Design& d) {
   std::optional<HeadEllipse> outline;  // the head to the hoop's outer edge
   if (d.head) {
     try {
-      outline = string_bed(*d.head, L);
+      outline = hoop_outline(*d.head, L);
     } catch (const std::invalid_argument& error) {
       rethrow_under("implement/", error);
     }
-    outline->semi_length_m += d.head->hoop_width_m;
-    outline->semi_width_m += d.head->hoop_width_m;
     // The hand holds the handle, not the head: the hoop's outer edge ends
     // beyond where the hand is (a head of this aspect that fills the length
     // beyond it, pi (a - w)^2 / aspect with 2 a = L - hand, is the largest).
@@ -191,8 +189,8 @@ void validate(const Design& d) {
       std::optional<FieldError::Range> range;
       if (longest_a > 0.0) {
         range = FieldError::Range{
-            0.0, std::numbers::pi * longest_a * longest_a / d.head->aspect_ratio, true,
-            d.head->area_m2, "for the head of its aspect, with its hoop, to end beyond the hand"};
+            0.0, head_area_m2(longest_a, d.head->aspect_ratio), true, d.head->area_m2,
+            "for the head of its aspect, with its hoop, to end beyond the hand"};
       }
       throw FieldError("implement/headsize",
                        "a head of " + detail::format_significant(d.head->area_m2) +
@@ -280,23 +278,14 @@ void validate(const Design& d) {
     // on the strings must land on them, which is checked below.)
     std::optional<HeadEllipse> legal_outline;
     if (!outline) {
-      if (const std::optional<HeadShape> legal = largest_legal_head(L)) {
-        legal_outline = string_bed(*legal, L);
-        legal_outline->semi_length_m += legal->hoop_width_m;
-        legal_outline->semi_width_m += legal->hoop_width_m;
-      }
+      if (const std::optional<HeadShape> legal = largest_legal_head(L))
+        legal_outline = hoop_outline(*legal, L);
     }
     const HeadEllipse* const edge = outline ? &*outline : legal_outline ? &*legal_outline : nullptr;
     const bool on_head =
         edge ? on_string_bed(*edge, d.impact_from_butt_m, y) : std::abs(y) <= grip_half_width_m();
     if (!on_head) {
-      const double here_m =
-          edge ? edge->semi_width_m *
-                     std::sqrt(std::max(
-                         0.0, 1.0 - std::pow((d.impact_from_butt_m - edge->center_from_butt_m) /
-                                                 edge->semi_length_m,
-                                             2)))
-               : grip_half_width_m();
+      const double here_m = edge ? half_width_at(*edge, d.impact_from_butt_m) : grip_half_width_m();
       const char* const why =
           outline ? "to land on the head (inside the hoop's outer edge where the ball lands "
                     "along the axis)"
@@ -342,7 +331,7 @@ void validate(const Design& d) {
                               "or the handle is the frame's, not the string bed's)"});
       }
       if (u * u + v * v > 1.0 + slack) {
-        const double here_m = bed->semi_width_m * std::sqrt(std::max(0.0, 1.0 - u * u));
+        const double here_m = half_width_at(*bed, d.impact_from_butt_m);
         throw FieldError("impact/off_axis_m",
                          "a ball on the strings must land on them, within " +
                              detail::format_significant(here_m) + " m either side of the axis " +

@@ -35,8 +35,7 @@ HeadEllipse string_bed(const HeadShape& head, double length_m) {
     const double longest_a = 0.5 * length_m - head.hoop_width_m;
     std::optional<FieldError::Range> range;
     if (longest_a > 0.0) {
-      range = FieldError::Range{0.0, std::numbers::pi * longest_a * longest_a / head.aspect_ratio,
-                                true, head.area_m2,
+      range = FieldError::Range{0.0, head_area_m2(longest_a, head.aspect_ratio), true, head.area_m2,
                                 "for the head of its aspect, with its hoop, to fit the "
                                 "implement's length"};
     }
@@ -54,6 +53,22 @@ bool on_string_bed(const HeadEllipse& bed, double from_butt_m, double off_axis_m
   const double u = (from_butt_m - bed.center_from_butt_m) / bed.semi_length_m;
   const double v = off_axis_m / bed.semi_width_m;
   return u * u + v * v <= 1.0;
+}
+
+HeadEllipse hoop_outline(const HeadShape& head, double length_m) {
+  HeadEllipse outline = string_bed(head, length_m);
+  outline.semi_length_m += head.hoop_width_m;
+  outline.semi_width_m += head.hoop_width_m;
+  return outline;
+}
+
+double half_width_at(const HeadEllipse& ellipse, double from_butt_m) {
+  const double u = (from_butt_m - ellipse.center_from_butt_m) / ellipse.semi_length_m;
+  return std::abs(u) <= 1.0 ? ellipse.semi_width_m * std::sqrt(1.0 - u * u) : 0.0;
+}
+
+double head_area_m2(double semi_length_m, double aspect_ratio) {
+  return std::numbers::pi * semi_length_m * semi_length_m / aspect_ratio;
 }
 
 FacePoint clock_position(const HeadShape& head, double length_m, double hours) {
@@ -92,23 +107,21 @@ std::optional<HeadShape> largest_legal_head(double length_m) {
   if (2.0 * (head.aspect_ratio * c + head.hoop_width_m) <= room_m) return head;
   const double a = 0.5 * room_m - head.hoop_width_m;
   if (!(a > 0.0)) return std::nullopt;
-  head.area_m2 = std::numbers::pi * a * a / head.aspect_ratio;
+  head.area_m2 = head_area_m2(a, head.aspect_ratio);
   return head;
 }
 
 double face_half_width_m(const HeadShape& head, double length_m, double from_butt_m) {
-  const HeadEllipse bed = string_bed(head, length_m);
-  const double A = bed.semi_length_m + head.hoop_width_m;
-  const double C = bed.semi_width_m + head.hoop_width_m;
-  const double xc = bed.center_from_butt_m;
+  const HeadEllipse outline = hoop_outline(head, length_m);
+  const double A = outline.semi_length_m, C = outline.semi_width_m;
+  const double xc = outline.center_from_butt_m;
   const double x = from_butt_m;
   if (!(x >= 0.0 && x <= length_m)) return 0.0;
   const double h = grip_half_width_m();
   // The handle, in proportion on a racquet shorter than 27 in; no head on it.
   const double handle_end = handle_length_m(length_m);
   if (x <= handle_end) return h;
-  double half = 0.0;
-  if (const double u = (x - xc) / A; std::abs(u) <= 1.0) half = C * std::sqrt(1.0 - u * u);
+  double half = half_width_at(outline, x);
   // The tangent from the handle's end (p, q) in the ellipse's units: the line
   // x cos t / A + y sin t / C = 1 through it has p cos t + q sin t = 1, so
   // t = phi -+ acos(1 / R), R = |(p, q)|, phi its angle; the upper tangent is
